@@ -20,8 +20,8 @@ def stiffness(d, r, n, G):
     same as the textbook ``G d^4 / (8 D^3 n)`` with ``D = 2 r``. Torsion of the wire only
     (shear and curvature corrections to stiffness are below 1 % for index C > 4).
 
-    >>> round(float(stiffness(0.017, 0.06, 8, 83.356525e9)), 1)  # Hamabe case a, N/m
-    6295.2
+    >>> round(float(stiffness(0.017, 0.06, 8, 83.356525e9)), 1)  # Hamabe case a (64.2 kgf/cm), N/m
+    62952.3
     """
     return G * d**4 / (64.0 * r**3 * n)
 
@@ -38,7 +38,7 @@ def wahl_factor(C):
     fibre of the coil. ``K -> 1`` as ``C -> inf``; undefined for ``C <= 1``.
 
     >>> round(float(wahl_factor(7.0)), 4)
-    1.2128
+    1.2129
     """
     C = np.asarray(C, dtype=float)
     return (4.0 * C - 1.0) / (4.0 * C - 4.0) + 0.615 / C
