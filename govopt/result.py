@@ -1,0 +1,152 @@
+"""The one result type: an evaluated (or optimised) design, flowing to JSON, text, Excel, plots.
+
+A :class:`Result` holds SI numbers only; writers format it and never recompute physics.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .analysis.statics import Characteristic, SpringDesign
+from .spec import Design, Spec
+
+#: Relative margin below which a satisfied constraint is reported as active (binding).
+ACTIVE_TOL = 1e-3
+
+
+@dataclass(frozen=True)
+class Check:
+    """One requirement: ``value`` against ``limit`` in the sense ``"<="`` or ``">="`` (SI)."""
+
+    name: str
+    value: float
+    limit: float
+    sense: str
+    unit: str = ""
+    source: str = ""
+    scale: float | None = None
+
+    @property
+    def margin(self) -> float:
+        """Relative margin: positive when satisfied, ``(limit - value)/|limit|`` for ``<=``
+        (divided by ``scale`` instead where the limit is zero)."""
+        scale = self.scale or (abs(self.limit) if self.limit != 0 else 1.0)
+        diff = self.limit - self.value if self.sense == "<=" else self.value - self.limit
+        return diff / scale
+
+    @property
+    def passed(self) -> bool:
+        return self.margin >= -1e-9
+
+    @property
+    def active(self) -> bool:
+        return self.passed and self.margin < ACTIVE_TOL
+
+    def to_dict(self) -> dict:
+        return {"name": self.name, "value": _num(self.value), "limit": _num(self.limit),
+                "sense": self.sense, "unit": self.unit, "margin": _num(self.margin),
+                "passed": self.passed, "active": self.active, "source": self.source}
+
+
+@dataclass
+class Result:
+    """Everything govopt knows about one design (SI)."""
+
+    spec: Spec
+    design: Design
+    spring: SpringDesign
+    statics: Characteristic
+    spring_properties: dict[str, float]
+    checks: list[Check] = field(default_factory=list)
+    k2: np.ndarray | None = None
+    dynamics: dict[str, Any] = field(default_factory=dict)
+    optimisation: dict[str, Any] = field(default_factory=dict)
+    kind: str = "evaluation"
+
+    @property
+    def irregularity(self) -> float:
+        return self.statics.irregularity
+
+    @property
+    def max_stress(self) -> float:
+        return float(np.max(self.statics.stress))
+
+    def check(self, name: str) -> Check:
+        return next(c for c in self.checks if c.name == name)
+
+    def to_dict(self) -> dict:
+        """JSON-ready dict; keys carry their SI unit (``_m``, ``_Pa``, ``_rad_s`` ...)."""
+        st, sd = self.statics, self.spring
+        rows = []
+        for i, a in enumerate(st.alpha):
+            row = {
+                "alpha_deg": math.degrees(a), "omega_rad_s": st.omega[i],
+                "rpm": st.omega[i] * 30.0 / math.pi, "M_z_N_m": st.M_z[i],
+                "M_f_N_m": st.M_f[i], "M_r0_N_m": st.M_r0[i],
+                "spring_force_N": st.spring_force[i], "shear_stress_Pa": st.stress[i],
+            }
+            if self.k2 is not None:
+                row["k2_rad2_s2"] = self.k2[i]
+            rows.append(row)
+        out = {
+            "spec": self.spec.path,
+            "name": self.spec.name,
+            "kind": self.kind,
+            "governor_type": self.spec.governor_type,
+            "fidelity": {
+                "geometry": self.spec.analysis.geometry,
+                "reaction_speed": self.spec.analysis.reaction_speed,
+                "reaction_slope": self.spec.analysis.reaction_slope,
+                "stress_correction": self.spec.material.stress_correction,
+            },
+            "irregularity": self.irregularity,
+            "irregularity_required": self.spec.speed.irregularity,
+            "omega_mean_rad_s": self.spec.speed.omega_mean,
+            "omega_inner_rad_s": st.omega[0],
+            "omega_outer_rad_s": st.omega[-1],
+            "pendulum_mass_kg": sd.m,
+            "pendulum_weight_N": sd.m * 9.80665,
+            "pendulum_inertia_kg_m2": sd.inertia,
+            "spring": {
+                "wire_diameter_m": sd.d,
+                "coil_radius_m": sd.r,
+                "active_turns": sd.n,
+                "stiffness_N_per_m": sd.kappa,
+                "free_half_length_m": sd.l0,
+                "max_shear_stress_Pa": self.max_stress,
+                **self.spring_properties,
+            },
+            "characteristic": rows,
+            "checks": [c.to_dict() for c in self.checks],
+        }
+        if self.k2 is not None:
+            out["k2_rad2_s2"] = list(self.k2)
+        out.update(self.dynamics)
+        out.update(self.optimisation)
+        return _jsonable(out)
+
+
+def _num(x):
+    x = float(x)
+    return x if math.isfinite(x) else (None if math.isnan(x) else ("inf" if x > 0 else "-inf"))
+
+
+def _jsonable(obj):
+    """Numpy scalars and arrays to plain JSON types; non-finite floats to None / "inf"."""
+    if isinstance(obj, dict):
+        return {k: _jsonable(v) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [_jsonable(v) for v in obj]
+    if isinstance(obj, np.ndarray):
+        return _jsonable(obj.tolist())
+    if isinstance(obj, bool | np.bool_):
+        return bool(obj)
+    if isinstance(obj, int | np.integer):
+        return int(obj)
+    if isinstance(obj, float | np.floating):
+        return _num(obj)
+    return obj

@@ -1,0 +1,451 @@
+"""Spec files (TOML with units) -> validated, typed, SI-valued spec objects.
+
+Every error is a :class:`SpecError` naming the file, the key path and what was expected; the CLI
+prints it on one line and exits with code 2. Unknown keys are errors, so a typo cannot pass
+silently. ``Spec.entries`` keeps every input as written and in SI, for reports.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+
+from .errors import GovoptError
+from .units import G_STANDARD, SI_UNITS, UnitError, parse_quantity
+
+GOVERNOR_TYPES = ("shaft",)
+#: Governor types described in the sources but not yet modelled by govopt.
+PLANNED_TYPES = ("watt", "porter", "proell", "hartnell", "spring-loaded", "spring-gravity",
+                 "traction-coil", "traction-flat")
+
+
+class SpecError(GovoptError):
+    """A spec that cannot be used, with the file and key path in the message."""
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One input as written in the spec and in SI."""
+
+    key: str
+    written: str
+    si: float | str
+    unit: str
+
+
+class _Reader:
+    """Reads one TOML table, recording which keys were used; :meth:`finish` rejects the rest."""
+
+    def __init__(self, file: str, table: dict, path: str, entries: list[Entry]):
+        if not isinstance(table, dict):
+            raise SpecError(f"{file}: {path or 'top level'}: expected a table, got {table!r}")
+        self.file, self.table, self.path, self.entries = file, table, path, entries
+        self.used: set[str] = set()
+
+    def key(self, name: str) -> str:
+        return f"{self.path}.{name}" if self.path else name
+
+    def fail(self, name: str, message: str):
+        raise SpecError(f"{self.file}: {self.key(name)}: {message}")
+
+    def has(self, name: str) -> bool:
+        return name in self.table
+
+    def raw(self, name: str, required: bool):
+        self.used.add(name)
+        if name not in self.table:
+            if required:
+                self.fail(name, "missing (required)")
+            return None
+        return self.table[name]
+
+    def quantity(self, name, dimension, *, required=True, default=None, positive=True,
+                 nonnegative=False, low=None, high=None):
+        value = self.raw(name, required)
+        if value is None:
+            return default
+        try:
+            si = parse_quantity(value, dimension)
+        except UnitError as exc:
+            self.fail(name, str(exc))
+        self._check_range(name, value, si, positive, nonnegative, low, high)
+        self.entries.append(Entry(self.key(name), str(value), si, SI_UNITS[dimension]))
+        return si
+
+    def number(self, name, *, required=True, default=None, positive=True, nonnegative=False,
+               low=None, high=None):
+        value = self.raw(name, required)
+        if value is None:
+            return default
+        if isinstance(value, bool) or not isinstance(value, int | float) \
+                or not math.isfinite(value):
+            self.fail(name, f"expected a finite number, got {value!r}")
+        self._check_range(name, value, float(value), positive, nonnegative, low, high)
+        self.entries.append(Entry(self.key(name), str(value), float(value), ""))
+        return float(value)
+
+    def _check_range(self, name, written, si, positive, nonnegative, low, high):
+        if nonnegative and si < 0:
+            self.fail(name, f"must not be negative, got {written!r}")
+        elif positive and not nonnegative and si <= 0:
+            self.fail(name, f"must be positive, got {written!r}")
+        if (low is not None and si <= low) or (high is not None and si >= high):
+            self.fail(name, f"must lie in ({low:g}, {high:g}) in SI, got {written!r}")
+
+    def choice(self, name, choices, default):
+        value = self.raw(name, False)
+        if value is None:
+            return default
+        if value not in choices:
+            self.fail(name, f"expected one of {', '.join(map(repr, choices))}, got {value!r}")
+        self.entries.append(Entry(self.key(name), str(value), value, ""))
+        return value
+
+    def text(self, name, default=""):
+        value = self.raw(name, False)
+        if value is None:
+            return default
+        if not isinstance(value, str):
+            self.fail(name, f"expected a string, got {value!r}")
+        self.entries.append(Entry(self.key(name), value, value, ""))
+        return value
+
+    def boolean(self, name, default):
+        value = self.raw(name, False)
+        if value is None:
+            return default
+        if not isinstance(value, bool):
+            self.fail(name, f"expected true or false, got {value!r}")
+        self.entries.append(Entry(self.key(name), str(value).lower(), str(value).lower(), ""))
+        return value
+
+    def quantities(self, name, dimension, **kw):
+        values = self.raw(name, True)
+        if not isinstance(values, list) or not values:
+            self.fail(name, f"expected a non-empty list of {dimension} strings, got {values!r}")
+        sub = _Reader(self.file, {str(i): v for i, v in enumerate(values)}, self.key(name),
+                      self.entries)
+        sub.key = lambda i: f"{self.key(name)}[{i}]"  # type: ignore[method-assign]
+        return np.array([sub.quantity(str(i), dimension, **kw) for i in range(len(values))])
+
+    def sub(self, name, required=True):
+        value = self.raw(name, required)
+        if value is None:
+            return None
+        return _Reader(self.file, value, self.key(name), self.entries)
+
+    def tables(self, name):
+        values = self.raw(name, False)
+        if values is None:
+            return []
+        if not isinstance(values, list):
+            self.fail(name, "expected an array of tables ([[" + name + "]])")
+        return [_Reader(self.file, v, f"{self.key(name)}[{i}]", self.entries)
+                for i, v in enumerate(values)]
+
+    def weight_or_mass(self, stem, *, required=True, default=None):
+        """``<stem>_weight`` (a force, converted with standard gravity) or ``<stem>_mass``."""
+        w, m = f"{stem}_weight", f"{stem}_mass"
+        if self.has(w) and self.has(m):
+            self.fail(w, f"give either {w} or {m}, not both")
+        if self.has(m):
+            return self.quantity(m, "mass")
+        weight = self.quantity(w, "force", required=required and not self.has(m), default=None)
+        return default if weight is None else weight / G_STANDARD
+
+    def finish(self):
+        unknown = sorted(set(self.table) - self.used)
+        if unknown:
+            self.fail(unknown[0], f"unknown key (allowed here: {', '.join(sorted(self.used))})")
+
+
+ANGLE_RANGE = dict(low=0.0, high=math.pi)
+
+
+@dataclass(frozen=True)
+class Geometry:
+    """Shaft-governor linkage (Hamabe, Fig. 1), SI."""
+
+    a: float
+    rho: float
+    b: float
+    q: float
+    alpha_inner: float
+    alpha_outer: float
+    alpha_normal: float
+
+
+@dataclass(frozen=True)
+class Speed:
+    """Mean speed ``omega0`` and irregularity ``delta0`` with the paper's split of the range."""
+
+    omega_mean: float
+    irregularity: float
+
+    @property
+    def omega_inner(self) -> float:
+        return self.omega_mean * (1.0 - self.irregularity / 2.0)
+
+    @property
+    def omega_outer(self) -> float:
+        return self.omega_mean * (1.0 + self.irregularity / 2.0)
+
+
+@dataclass(frozen=True)
+class ValveGear:
+    eccentricity: float
+    offset: float
+    friction: float
+    steam_load: float
+    weight: float
+    reciprocating_mass: float
+    eccentric_mass: float
+    engine: str
+    table_alpha: np.ndarray = field(repr=False)
+    table_delta: np.ndarray = field(repr=False)
+
+
+@dataclass(frozen=True)
+class Material:
+    allowable_shear_stress: float
+    shear_modulus: float
+    density: float
+    stress_correction: str
+
+
+@dataclass(frozen=True)
+class Design:
+    """A given design: pendulum, spring and (optionally) dash-pot and friction, SI."""
+
+    pendulum_mass: float
+    wire_diameter: float
+    coil_radius: float
+    active_turns: float
+    free_half_length: float | None = None
+    pendulum_inertia: float | None = None
+    dashpot: float | None = None
+    friction_moment: float | None = None
+
+
+@dataclass(frozen=True)
+class Engine:
+    flywheel_inertia: float
+    torque_slope: float
+    insensibility: float = 0.0
+    speed_fluctuation_cos: float = 0.0
+    speed_fluctuation_sin: float = 0.0
+
+
+@dataclass(frozen=True)
+class LoadChange:
+    name: str
+    alpha_from: float
+    alpha_to: float
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """Fidelity settings shared by every analysis."""
+
+    geometry: str = "exact"
+    reaction_speed: str = "local"
+    reaction_slope: bool = True
+    points: int = 31
+    harmonics: int = 12
+    settling_band: float = 0.02
+
+
+@dataclass(frozen=True)
+class Spec:
+    path: str
+    name: str
+    governor_type: str
+    geometry: Geometry
+    speed: Speed
+    valve_gear: ValveGear
+    material: Material
+    design: Design | None
+    engine: Engine | None
+    load_changes: tuple[LoadChange, ...]
+    analysis: Analysis
+    requirements: dict = field(default_factory=dict, repr=False)
+    entries: tuple[Entry, ...] = field(default=(), repr=False)
+
+    def with_analysis(self, **changes) -> Spec:
+        """The same spec with some fidelity settings changed."""
+        return replace(self, analysis=replace(self.analysis, **changes))
+
+    def with_design(self, design: Design) -> Spec:
+        return replace(self, design=design)
+
+
+def load_spec(path: str | Path) -> Spec:
+    """Read and validate a spec file; raises :class:`SpecError` naming file and key."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SpecError(f"{path}: cannot read spec file ({exc.strerror})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SpecError(f"{path}: malformed TOML: {exc}") from None
+    return parse_spec(data, str(path))
+
+
+def parse_spec(data: dict, file: str = "<spec>") -> Spec:
+    """Validate a spec already read into a dict (keys as in the TOML file)."""
+    entries: list[Entry] = []
+    top = _Reader(file, data, "", entries)
+    name = top.text("name", default=Path(file).stem)
+    top.text("description")
+
+    gov = top.sub("governor")
+    gtype = gov.raw("type", True)
+    if gtype in PLANNED_TYPES:
+        gov.fail("type", f"governor type {gtype!r} is described in the sources but not yet "
+                         f"modelled; supported: {', '.join(GOVERNOR_TYPES)}")
+    if gtype not in GOVERNOR_TYPES:
+        gov.fail("type", f"expected one of {', '.join(map(repr, GOVERNOR_TYPES))}, got {gtype!r}")
+    entries.append(Entry("governor.type", gtype, gtype, ""))
+    geometry = Geometry(
+        a=gov.quantity("a", "length"), rho=gov.quantity("rho", "length"),
+        b=gov.quantity("b", "length"), q=gov.quantity("q", "length"),
+        alpha_inner=gov.quantity("alpha_inner", "angle", **ANGLE_RANGE),
+        alpha_outer=gov.quantity("alpha_outer", "angle", **ANGLE_RANGE),
+        alpha_normal=gov.quantity("alpha_normal", "angle", **ANGLE_RANGE),
+    )
+    if not geometry.alpha_inner < geometry.alpha_normal < geometry.alpha_outer:
+        gov.fail("alpha_normal", "expected alpha_inner < alpha_normal < alpha_outer")
+    if geometry.b >= geometry.a:
+        gov.fail("b", "expected b < a (the spring attachment lies between fulcrum and shaft)")
+    gov.finish()
+
+    speed = _speed(top.sub("speed"))
+    valve_gear = _valve_gear(top.sub("valve_gear"), geometry)
+
+    mat = top.sub("material")
+    material = Material(
+        allowable_shear_stress=mat.quantity("allowable_shear_stress", "stress"),
+        shear_modulus=mat.quantity("shear_modulus", "stress"),
+        density=mat.quantity("density", "density", required=False, default=7850.0),
+        stress_correction=mat.choice("stress_correction", ("none", "wahl"), "none"),
+    )
+    mat.finish()
+
+    design = _design(top.sub("design", required=False))
+    eng = top.sub("engine", required=False)
+    engine = None
+    if eng is not None:
+        engine = Engine(
+            flywheel_inertia=eng.quantity("flywheel_inertia", "inertia"),
+            torque_slope=eng.quantity("torque_slope", "torque_per_angle", positive=False),
+            insensibility=eng.number("insensibility", required=False, default=0.0,
+                                     nonnegative=True, high=1.0),
+            speed_fluctuation_cos=eng.quantity("speed_fluctuation_E2", "angular_velocity",
+                                               required=False, default=0.0, positive=False),
+            speed_fluctuation_sin=eng.quantity("speed_fluctuation_F2", "angular_velocity",
+                                               required=False, default=0.0, positive=False),
+        )
+        if engine.torque_slope >= 0:
+            eng.fail("torque_slope", "expected dT/dalpha < 0 (torque falls as the governor "
+                                     "moves out)")
+        eng.finish()
+
+    load_changes = []
+    for i, lc in enumerate(top.tables("load_change")):
+        load_changes.append(LoadChange(
+            name=lc.text("name", default=f"load change {i + 1}"),
+            alpha_from=lc.quantity("from", "angle", **ANGLE_RANGE),
+            alpha_to=lc.quantity("to", "angle", **ANGLE_RANGE),
+        ))
+        lc.finish()
+
+    analysis = _analysis(top.sub("analysis", required=False))
+    top.finish()
+    return Spec(file, name, gtype, geometry, speed, valve_gear, material, design, engine,
+                tuple(load_changes), analysis, entries=tuple(entries))
+
+
+def _speed(sp: _Reader) -> Speed:
+    if sp.has("inner") or sp.has("outer"):
+        for conflicting in ("mean", "irregularity"):
+            if sp.has(conflicting):
+                sp.fail(conflicting, "give either mean and irregularity, or inner and outer")
+        inner = sp.quantity("inner", "angular_velocity")
+        outer = sp.quantity("outer", "angular_velocity")
+        if outer <= inner:
+            sp.fail("outer", "expected outer > inner speed")
+        speed = Speed((inner + outer) / 2.0, 2.0 * (outer - inner) / (outer + inner))
+    else:
+        speed = Speed(sp.quantity("mean", "angular_velocity"),
+                      sp.number("irregularity", high=2.0))
+    sp.finish()
+    return speed
+
+
+def _valve_gear(vg: _Reader, geometry: Geometry) -> ValveGear:
+    table = vg.sub("table")
+    t_alpha = table.quantities("alpha", "angle", **ANGLE_RANGE)
+    t_delta = table.quantities("delta", "angle", **ANGLE_RANGE)
+    if len(t_alpha) != len(t_delta):
+        table.fail("delta", f"expected {len(t_alpha)} values, one per alpha, got {len(t_delta)}")
+    if np.any(np.diff(t_alpha) <= 0):
+        table.fail("alpha", "expected strictly increasing configurations")
+    table.finish()
+    out = ValveGear(
+        eccentricity=vg.quantity("eccentricity", "length"),
+        offset=vg.quantity("offset", "length", nonnegative=True),
+        friction=vg.quantity("friction", "force", nonnegative=True),
+        steam_load=vg.quantity("steam_load", "force", positive=False),
+        weight=vg.quantity("weight", "force", positive=False),
+        reciprocating_mass=vg.weight_or_mass("reciprocating"),
+        eccentric_mass=vg.weight_or_mass("eccentric"),
+        engine=vg.choice("engine", ("vertical", "horizontal"), "vertical"),
+        table_alpha=t_alpha, table_delta=t_delta,
+    )
+    vg.finish()
+    return out
+
+
+def _design(ds: _Reader | None) -> Design | None:
+    if ds is None:
+        return None
+    if ds.has("dashpot_f") and ds.has("dashpot_a1"):
+        ds.fail("dashpot_a1", "give either dashpot_f (f) or dashpot_a1 (Hamabe's a1 = f/3)")
+    dashpot = ds.quantity("dashpot_f", "damping", required=False, nonnegative=True)
+    a1 = ds.quantity("dashpot_a1", "damping", required=False, nonnegative=True)
+    design = Design(
+        pendulum_mass=ds.weight_or_mass("pendulum"),
+        wire_diameter=ds.quantity("wire_diameter", "length"),
+        coil_radius=ds.quantity("coil_radius", "length"),
+        active_turns=ds.number("active_turns"),
+        free_half_length=ds.quantity("free_half_length", "length", required=False),
+        pendulum_inertia=ds.quantity("pendulum_inertia", "inertia", required=False),
+        dashpot=3.0 * a1 if a1 is not None else dashpot,
+        friction_moment=ds.quantity("friction_moment", "moment", required=False,
+                                    nonnegative=True),
+    )
+    if design.wire_diameter >= 2.0 * design.coil_radius:
+        ds.fail("wire_diameter", "expected a wire thinner than the coil diameter 2 r")
+    ds.finish()
+    return design
+
+
+def _analysis(an: _Reader | None) -> Analysis:
+    if an is None:
+        return Analysis()
+    out = Analysis(
+        geometry=an.choice("geometry", ("exact", "series"), "exact"),
+        reaction_speed=an.choice("reaction_speed", ("local", "mean"), "local"),
+        reaction_slope=an.boolean("reaction_slope", True),
+        points=int(an.number("points", required=False, default=31, low=2, high=100001)),
+        harmonics=int(an.number("harmonics", required=False, default=12, low=0, high=1001)),
+        settling_band=an.number("settling_band", required=False, default=0.02, high=1.0),
+    )
+    an.finish()
+    return out
