@@ -64,7 +64,7 @@ class _Reader:
         return self.table[name]
 
     def quantity(self, name, dimension, *, required=True, default=None, positive=True,
-                 nonnegative=False, low=None, high=None):
+                 nonnegative=False, low=None, high=None, range_text=None):
         value = self.raw(name, required)
         if value is None:
             return default
@@ -72,7 +72,7 @@ class _Reader:
             si = parse_quantity(value, dimension)
         except UnitError as exc:
             self.fail(name, str(exc))
-        self._check_range(name, value, si, positive, nonnegative, low, high)
+        self._check_range(name, value, si, positive, nonnegative, low, high, range_text)
         self.entries.append(Entry(self.key(name), str(value), si, SI_UNITS[dimension]))
         return si
 
@@ -88,13 +88,16 @@ class _Reader:
         self.entries.append(Entry(self.key(name), str(value), float(value), ""))
         return float(value)
 
-    def _check_range(self, name, written, si, positive, nonnegative, low, high):
+    def _check_range(self, name, written, si, positive, nonnegative, low, high,
+                     range_text=None):
+        if (low is not None and si <= low) or (high is not None and si >= high):
+            text = range_text or f"({low if low is not None else '-inf'}, "\
+                                 f"{high if high is not None else 'inf'})"
+            self.fail(name, f"must lie in {text}, got {written!r}")
         if nonnegative and si < 0:
             self.fail(name, f"must not be negative, got {written!r}")
         elif positive and not nonnegative and si <= 0:
             self.fail(name, f"must be positive, got {written!r}")
-        if (low is not None and si <= low) or (high is not None and si >= high):
-            self.fail(name, f"must lie in ({low:g}, {high:g}) in SI, got {written!r}")
 
     def choice(self, name, choices, default):
         value = self.raw(name, False)
@@ -163,7 +166,7 @@ class _Reader:
             self.fail(unknown[0], f"unknown key (allowed here: {', '.join(sorted(self.used))})")
 
 
-ANGLE_RANGE = dict(low=0.0, high=math.pi)
+ANGLE_RANGE = dict(low=0.0, high=math.pi, range_text="(0 deg, 180 deg)")
 
 
 @dataclass(frozen=True)

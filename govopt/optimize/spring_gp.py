@@ -1,0 +1,975 @@
+"""Least-mass helical (governor) spring as an exact geometric programme.
+
+The spring is sized in its three design variables wire diameter ``d``, *mean coil radius* ``r``
+(not the diameter) and active turns ``n``; everything is SI. Every requirement is a monomial or a
+posynomial in ``(d, r, n)``, so the problem is a geometric programme (GP): convex in
+``log d, log r, log n``. A solved GP therefore is a *global* optimum, certified by the solver's
+primal-dual gap, and the dual variables are sensitivities
+``d log(objective) / d log(limit)``.
+
+Constraints and their sources (the formulas are those of :mod:`govopt.model.spring`):
+
+=========================  =====================================================================
+``stiffness``              ``G d^4 / (64 r^3 n) = kappa`` (monomial equality) — Hamabe, Example 1
+                           (``n = G d^4 / (64 r^3 kappa)``). In ``stiffness="band"`` mode
+                           ``kappa_min <= G d^4 / (64 r^3 n) <= kappa_max``.
+``allowable stress``       ``16 F_max r / (pi d^3) * K <= k_s`` — Hamabe, Example 1
+                           (``d = (16 F r / (pi k_s))^(1/3)``) with ``K = 1``
+                           (``correction="none"``) or Wahl's factor (Wahl, *Mechanical
+                           Springs*, 1944, eq. 2-12)
+                           ``K = (4C-1)/(4C-4) + 0.615/C = 1 + 0.75/(C-1) + 0.615/C``,
+                           ``C = 2r/d``.
+                           ``1/(C-1)`` is not a posynomial, so an auxiliary ``t >= 1/(C-1)`` is
+                           written as the posynomial ``1/(t C) + 1/C <= 1``; ``K`` is increasing in
+                           ``t``, so ``t = 1/(C-1)`` exactly wherever the stress limit binds.
+``wire diameter``          ``d_min <= d <= d_max`` (catalogue range)
+``coil radius``            ``r_min <= r <= r_max``
+``active turns``           ``n_min <= n <= n_max``
+``spring index``           ``C_min <= 2 r / d <= C_max`` (Wahl 1944, ch. 2: coiling practice)
+``outer diameter``         ``2 r + d <= D_out_max`` (envelope)
+``body length``            ``(n + 1) d <= L_body_max`` (close-wound body must fit)
+``surge frequency``        ``d / (8 pi r^2 n) sqrt(G / (2 rho)) >= f_surge_min`` — Wahl 1944,
+                           ch. 25 (lowest surge frequency, both ends fixed).
+=========================  =====================================================================
+
+Objective: the active-coil mass ``rho (pi d^2 / 4) (2 pi r n)`` (a monomial) by default; also
+``"stress"`` (least corrected stress at ``F_max``), ``"outer diameter"`` and ``"body length"``.
+
+The problem is built once with cvxpy ``Parameter(pos=True)`` for every number (it is DPP), so a
+re-solve with new values skips the compilation. See :func:`benchmark_resolve`.
+
+Main entry points: :class:`SpringGP` (``solve``, ``diagnose``, ``best_discrete``),
+:func:`size_helical_spring`, :func:`best_discrete`, :func:`check_design`.
+"""
+
+from __future__ import annotations
+
+import math
+import threading
+import time
+import warnings
+from collections.abc import Callable, Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import cvxpy as cp
+import numpy as np
+
+from govopt.model import spring
+
+__all__ = [
+    "CORRECTIONS",
+    "DEFAULT_BOUNDS",
+    "OBJECTIVES",
+    "DiscreteSolution",
+    "Diagnosis",
+    "SpringGP",
+    "SpringSolution",
+    "benchmark_resolve",
+    "best_discrete",
+    "check_design",
+    "size_helical_spring",
+]
+
+#: Objectives the GP can minimise (all are posynomials in ``d, r, n``, non-decreasing in ``n``).
+OBJECTIVES = ("mass", "stress", "outer diameter", "body length")
+#: Stress corrections, as in :func:`govopt.model.spring.shear_stress`.
+CORRECTIONS = spring.STRESS_CORRECTIONS
+STIFFNESS_MODES = ("equality", "band")
+
+#: Stand-ins for "no limit" (the GP needs a positive number for every parameter).
+_BIG = 1e6
+_TINY = 1e-9
+
+#: Optional limits and their defaults; ``None`` (or ``inf`` / ``0``) means "no limit".
+#: ``n_min = 1`` and ``3 <= C <= 20`` are coiling practice (Wahl 1944, ch. 2); pass others freely.
+DEFAULT_BOUNDS: dict[str, float | None] = {
+    "d_min": None,
+    "d_max": None,
+    "r_min": None,
+    "r_max": None,
+    "n_min": 1.0,
+    "n_max": None,
+    "C_min": 3.0,
+    "C_max": 20.0,
+    "D_out_max": None,
+    "L_body_max": None,
+    "f_surge_min": None,
+}
+_UPPER_KEYS = {"d_max", "r_max", "n_max", "C_max", "D_out_max", "L_body_max"}
+_MATERIAL_KEYS = ("F_max", "k_s", "G", "density")
+
+#: Clarabel tolerances tighter than its 1e-8 defaults: same solve time here (a few more
+#: iterations), and the KKT residuals of the recovered GP duals drop from ~1e-5 to ~1e-7.
+_CLARABEL_OPTS = {"tol_gap_abs": 1e-10, "tol_gap_rel": 1e-10, "tol_feas": 1e-10,
+                  "tol_ktratio": 1e-8}
+
+#: Statuses that carry a usable design.
+_SOLVED = ("optimal", "optimal_inaccurate")
+
+
+def _default_solver() -> str | None:
+    installed = cp.installed_solvers()
+    for name in ("CLARABEL", "ECOS", "SCS"):
+        if name in installed:
+            return name
+    return None
+
+
+# ----------------------------------------------------------------------------------------------
+# Constraint table
+# ----------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class _Spec:
+    """One named constraint ``g(x) <sense> limit``.
+
+    ``g_exps`` are the exponents of the parameters appearing in ``g`` itself (``g`` is a monomial
+    in the parameters), used to turn duals into parameter sensitivities.
+    """
+
+    name: str
+    limit: str
+    sense: str  # "upper": g <= limit, "lower": g >= limit, "equal": g == limit
+    g: Callable[..., Any]
+    g_exps: tuple[tuple[str, float], ...] = ()
+    source: str = ""
+
+    def log_exponents(self) -> dict[str, float]:
+        """Parameter exponents in cvxpy's ``log(args[0]) - log(args[1])`` for this constraint."""
+        sign = -1.0 if self.sense == "lower" else 1.0  # cvxpy stores g >= c as c <= g
+        out = {k: sign * e for k, e in self.g_exps}
+        out[self.limit] = out.get(self.limit, 0.0) - sign
+        return out
+
+
+def _stress_g(d, r, t, P, correction):
+    base = 16.0 / np.pi * P["F_max"] * r * d**-3
+    if correction == "none":
+        return base
+    # K = 1 + 0.75 t + 0.615 / C with C = 2 r / d, t >= 1 / (C - 1)
+    return 16.0 / np.pi * P["F_max"] * (r * d**-3 + 0.75 * t * r * d**-3 + 0.3075 * d**-2)
+
+
+def _surge_g(d, r, n, P):
+    return d / (8.0 * np.pi) * r**-2 / n * P["G"] ** 0.5 * (2.0 * P["density"]) ** -0.5
+
+
+def _stiffness_g(d, r, n, P):
+    return P["G"] * d**4 / (64.0 * r**3 * n)
+
+
+def _specs(correction: str, stiffness: str) -> list[_Spec]:
+    hamabe = "Hamabe, Example 1"
+    out = []
+    if stiffness == "equality":
+        out.append(_Spec("stiffness", "kappa", "equal",
+                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
+    else:
+        out.append(_Spec("minimum stiffness", "kappa_min", "lower",
+                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
+        out.append(_Spec("maximum stiffness", "kappa_max", "upper",
+                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
+    stress_src = hamabe + ("; Wahl 1944 eq. 2-12" if correction == "wahl" else "")
+    out += [
+        _Spec("allowable stress", "k_s", "upper",
+              lambda d, r, n, t, P: _stress_g(d, r, t, P, correction), (("F_max", 1.0),),
+              stress_src),
+        _Spec("minimum wire diameter", "d_min", "lower", lambda d, r, n, t, P: d),
+        _Spec("maximum wire diameter", "d_max", "upper", lambda d, r, n, t, P: d),
+        _Spec("minimum coil radius", "r_min", "lower", lambda d, r, n, t, P: r),
+        _Spec("maximum coil radius", "r_max", "upper", lambda d, r, n, t, P: r),
+        _Spec("minimum active turns", "n_min", "lower", lambda d, r, n, t, P: n),
+        _Spec("maximum active turns", "n_max", "upper", lambda d, r, n, t, P: n),
+        _Spec("minimum spring index", "C_min", "lower", lambda d, r, n, t, P: 2.0 * r / d,
+              source="Wahl 1944 ch. 2"),
+        _Spec("maximum spring index", "C_max", "upper", lambda d, r, n, t, P: 2.0 * r / d,
+              source="Wahl 1944 ch. 2"),
+        _Spec("outer diameter", "D_out_max", "upper", lambda d, r, n, t, P: 2.0 * r + d),
+        _Spec("body length", "L_body_max", "upper", lambda d, r, n, t, P: (n + 1.0) * d),
+        _Spec("surge frequency", "f_surge_min", "lower",
+              lambda d, r, n, t, P: _surge_g(d, r, n, P), (("G", 0.5), ("density", -0.5)),
+              "Wahl 1944 ch. 25"),
+    ]
+    return out
+
+
+def _objective_expr(objective, d, r, n, t, P, correction):
+    if objective == "mass":
+        return P["density"] * (np.pi**2 / 2.0) * d**2 * r * n
+    if objective == "stress":
+        return _stress_g(d, r, t, P, correction)
+    if objective == "outer diameter":
+        return 2.0 * r + d
+    if objective == "body length":
+        return (n + 1.0) * d
+    raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
+
+
+_OBJECTIVE_EXPS = {"mass": {"density": 1.0}, "stress": {"F_max": 1.0}}
+
+
+def _objective_np(objective, d, r, n, v, correction):
+    """The objective evaluated with the exact formulas of :mod:`govopt.model.spring`."""
+    if objective == "mass":
+        return spring.wire_mass(d, r, n, v["density"])
+    if objective == "stress":
+        return spring.shear_stress(v["F_max"], d, r, correction)
+    if objective == "outer diameter":
+        return 2.0 * r + d
+    if objective == "body length":
+        return (n + 1.0) * d
+    raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
+
+
+def _normalise_status(status: str | None) -> str:
+    if status in (cp.OPTIMAL, cp.OPTIMAL_INACCURATE):
+        return status
+    if status in (cp.INFEASIBLE, cp.INFEASIBLE_INACCURATE):
+        return "infeasible"
+    if status in (cp.UNBOUNDED, cp.UNBOUNDED_INACCURATE):
+        return "unbounded"
+    return str(status) if status is not None else "solver_error"
+
+
+# ----------------------------------------------------------------------------------------------
+# Results
+# ----------------------------------------------------------------------------------------------
+
+
+@dataclass
+class SpringSolution:
+    """A continuous GP design (SI) with its sensitivities.
+
+    ``sensitivities[name]`` is ``d log(objective) / d log(limit of constraint name)``: e.g.
+    ``{'allowable stress': -0.67}`` means 1 % more allowable stress saves 0.67 % of the mass.
+    ``duals`` are the raw log-space multipliers from the solver (``>= 0`` for inequalities).
+    ``parameter_sensitivities[p]`` is ``d log(objective) / d log(p)`` for every parameter.
+    ``stress`` and ``wahl_factor`` are recomputed with :func:`govopt.model.spring.shear_stress`
+    and :func:`~govopt.model.spring.wahl_factor`, not taken from the auxiliary ``t``.
+    """
+
+    status: str
+    objective_name: str
+    correction: str
+    d: float = math.nan
+    r: float = math.nan
+    n: float = math.nan
+    t: float | None = None
+    objective: float = math.nan
+    mass: float = math.nan
+    stiffness: float = math.nan
+    stress: float = math.nan
+    wahl_factor: float = math.nan
+    index: float = math.nan
+    outer_diameter: float = math.nan
+    body_length: float = math.nan
+    surge_frequency: float = math.nan
+    duals: dict[str, float] = field(default_factory=dict)
+    sensitivities: dict[str, float] = field(default_factory=dict)
+    parameter_sensitivities: dict[str, float] = field(default_factory=dict)
+    active: list[str] = field(default_factory=list)
+    certificate: dict[str, Any] = field(default_factory=dict)
+    solver_status: str | None = None
+    solve_time: float = math.nan
+    inputs: dict[str, float] = field(default_factory=dict)
+    extras: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def ok(self) -> bool:
+        """True when the solve produced a design (optimal, possibly inaccurate)."""
+        return self.status in _SOLVED
+
+
+@dataclass
+class Diagnosis:
+    """Why a specification is infeasible, from a relaxed GP.
+
+    Every limit is multiplied (upper limits) or divided (lower limits, both sides of the stiffness
+    equality) by a slack ``s_i >= 1`` and the product of the slacks is minimised.
+
+    ``relaxations[name]`` is the factor to multiply that limit by (``> 1`` raise, ``< 1`` lower)
+    in the least total relaxation; ``conflicting`` the constraints with a positive multiplier in
+    the relaxed problem (the set that cannot hold together), most important first;
+    ``single_fixes[name]`` the factor on that limit alone that restores feasibility when no other
+    limit moves (absent when moving that limit alone cannot help).
+    """
+
+    feasible: bool
+    status: str
+    relaxations: dict[str, float] = field(default_factory=dict)
+    conflicting: list[str] = field(default_factory=list)
+    single_fixes: dict[str, float] = field(default_factory=dict)
+    total_relaxation: float = 1.0
+    design: dict[str, float] = field(default_factory=dict)
+    multipliers: dict[str, float] = field(default_factory=dict)
+
+    def summary(self) -> str:
+        if self.feasible:
+            return "feasible: no limit needs to move"
+        parts = [f"{k} x{v:.4g}" for k, v in self.relaxations.items()]
+        fixes = [f"{k} x{v:.4g}" for k, v in sorted(self.single_fixes.items(),
+                                                      key=lambda kv: abs(math.log(kv[1])))]
+        return ("infeasible: conflicting " + ", ".join(self.conflicting)
+                + "; least relaxation " + ", ".join(parts)
+                + ("; or alone: " + ", ".join(fixes) if fixes else ""))
+
+
+@dataclass
+class DiscreteSolution:
+    """Best design with a catalogue wire, ``n`` on the turn step and ``r`` on its resolution.
+
+    ``continuous_bound`` is the GP optimum with the same stiffness band, a valid lower bound on
+    every discrete design; ``gap = objective / continuous_bound - 1``. ``per_wire`` lists, per
+    catalogue diameter, the GP lower bound with that wire, the best discrete objective found with
+    it (``None`` if none fits) and whether the wire was skipped because its bound could not beat
+    the incumbent.
+    """
+
+    status: str
+    objective_name: str
+    d: float = math.nan
+    r: float = math.nan
+    n: float = math.nan
+    objective: float = math.nan
+    mass: float = math.nan
+    stiffness: float = math.nan
+    stiffness_error: float = math.nan
+    stress: float = math.nan
+    wahl_factor: float = math.nan
+    index: float = math.nan
+    outer_diameter: float = math.nan
+    body_length: float = math.nan
+    surge_frequency: float = math.nan
+    continuous_bound: float = math.nan
+    gap: float = math.nan
+    candidates_checked: int = 0
+    per_wire: list[dict[str, Any]] = field(default_factory=list)
+    continuous: SpringSolution | None = None
+
+    @property
+    def ok(self) -> bool:
+        return self.status == "optimal"
+
+
+# ----------------------------------------------------------------------------------------------
+# Exact check of a design with spring.py
+# ----------------------------------------------------------------------------------------------
+
+
+def check_design(d, r, n, values: Mapping[str, float], correction: str = "wahl",
+                 rtol: float = 1e-9) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+    """Check designs against every constraint with the exact formulas of ``spring.py``.
+
+    Broadcasts over arrays. ``values`` are the :meth:`SpringGP.solve` keywords (``kappa`` for an
+    exact stiffness, or ``kappa_min``/``kappa_max`` for a band). Returns ``(feasible, ratios)``,
+    where ``ratios[name] <= 1`` means satisfied (value/limit for upper limits, limit/value for
+    lower, ``max(k/kappa, kappa/k)`` for the equality); ``feasible`` allows ``rtol``.
+    """
+    v = _complete_values(values, "band" if "kappa" not in values else "equality")
+    d, r, n = (np.asarray(a, dtype=float) for a in (d, r, n))
+    k = spring.stiffness(d, r, n, v["G"])
+    C = spring.spring_index(d, r)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        tau = spring.shear_stress(v["F_max"], d, r, correction)
+        tau = np.where(C > 1.0, tau, np.inf) if correction == "wahl" else tau
+    ratios: dict[str, np.ndarray] = {}
+    if "kappa" in v:
+        ratios["stiffness"] = np.maximum(k / v["kappa"], v["kappa"] / k)
+    else:
+        ratios["minimum stiffness"] = v["kappa_min"] / k
+        ratios["maximum stiffness"] = k / v["kappa_max"]
+    ratios.update({
+        "allowable stress": tau / v["k_s"],
+        "minimum wire diameter": v["d_min"] / d,
+        "maximum wire diameter": d / v["d_max"],
+        "minimum coil radius": v["r_min"] / r,
+        "maximum coil radius": r / v["r_max"],
+        "minimum active turns": v["n_min"] / n,
+        "maximum active turns": n / v["n_max"],
+        "minimum spring index": v["C_min"] / C,
+        "maximum spring index": C / v["C_max"],
+        "outer diameter": (2.0 * r + d) / v["D_out_max"],
+        "body length": (n + 1.0) * d / v["L_body_max"],
+        "surge frequency": v["f_surge_min"] / spring.surge_frequency(d, r, n, v["G"],
+                                                                      v["density"]),
+    })
+    feasible = np.ones(np.broadcast(d, r, n).shape, dtype=bool)
+    for ratio in ratios.values():
+        feasible &= ratio <= 1.0 + rtol
+    return feasible, ratios
+
+
+def _complete_values(values: Mapping[str, float], stiffness: str) -> dict[str, float]:
+    """Validate user values, fill the defaults and replace "no limit" by big/tiny numbers."""
+    kappa_keys = ("kappa",) if stiffness == "equality" else ("kappa_min", "kappa_max")
+    required = kappa_keys + _MATERIAL_KEYS
+    allowed = set(required) | set(DEFAULT_BOUNDS)
+    unknown = set(values) - allowed
+    if unknown:
+        raise TypeError(f"unknown spring GP values {sorted(unknown)}; allowed: {sorted(allowed)}")
+    missing = [k for k in required if values.get(k) is None]
+    if missing:
+        raise TypeError(f"missing required spring GP values {missing}")
+    out: dict[str, float] = {}
+    for key in required:
+        val = float(values[key])
+        if not (math.isfinite(val) and val > 0.0):
+            raise ValueError(f"{key} must be positive and finite, got {values[key]!r}")
+        out[key] = val
+    for key, default in DEFAULT_BOUNDS.items():
+        val = values.get(key, default)
+        if val is None or (key in _UPPER_KEYS and math.isinf(val)) or \
+                (key not in _UPPER_KEYS and val == 0):
+            val = _BIG if key in _UPPER_KEYS else _TINY
+        val = float(val)
+        if not (math.isfinite(val) and val > 0.0):
+            raise ValueError(f"{key} must be positive (or None for no limit), got {val!r}")
+        out[key] = val
+    return out
+
+
+# ----------------------------------------------------------------------------------------------
+# The parameterised GP
+# ----------------------------------------------------------------------------------------------
+
+
+class SpringGP:
+    """Parameterised (DPP) least-mass spring GP, compiled on the first solve, re-solved cheaply.
+
+    >>> gp = SpringGP()                                   # mass objective, Wahl-corrected stress
+    >>> sol = gp.solve(kappa=5e3, F_max=200.0, k_s=600e6, G=79.3e9, density=7850.0)
+    >>> sol.status, sol.sensitivities['allowable stress'] < 0
+    ('optimal', True)
+
+    Values (SI): ``kappa`` (or ``kappa_min`` and ``kappa_max`` with ``stiffness="band"``),
+    ``F_max``, ``k_s``, ``G``, ``density`` (required) and the optional limits of
+    :data:`DEFAULT_BOUNDS`. Each solve uses exactly the values passed (not earlier ones).
+    """
+
+    def __init__(self, objective: str = "mass", correction: str = "wahl",
+                 stiffness: str = "equality", solver: str | None = None,
+                 solver_opts: Mapping[str, Any] | None = None):
+        if objective not in OBJECTIVES:
+            raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
+        if correction not in CORRECTIONS:
+            raise ValueError(f"correction must be one of {CORRECTIONS}, got {correction!r}")
+        if stiffness not in STIFFNESS_MODES:
+            raise ValueError(f"stiffness must be one of {STIFFNESS_MODES}, got {stiffness!r}")
+        self.objective_name = objective
+        self.correction = correction
+        self.stiffness_mode = stiffness
+        self.solver = solver or _default_solver()
+        if self.solver is None:
+            raise RuntimeError("no conic solver for GPs is installed (need Clarabel, ECOS or SCS)")
+        defaults = _CLARABEL_OPTS if self.solver == "CLARABEL" else {}
+        self.solver_opts = {**defaults, **(solver_opts or {})}
+        kappa_keys = ("kappa",) if stiffness == "equality" else ("kappa_min", "kappa_max")
+        self.parameter_names = kappa_keys + _MATERIAL_KEYS + tuple(DEFAULT_BOUNDS)
+        self.params = {k: cp.Parameter(pos=True, name=k) for k in self.parameter_names}
+        self.specs = _specs(correction, stiffness)
+        self.d = cp.Variable(pos=True, name="d")
+        self.r = cp.Variable(pos=True, name="r")
+        self.n = cp.Variable(pos=True, name="n")
+        self.t = cp.Variable(pos=True, name="t") if correction == "wahl" else None
+        self.constraints = {s.name: self._constraint(s) for s in self.specs}
+        self.internal = self._internal()
+        self.objective_expr = self._objective(self.d, self.r, self.n, self.t)
+        self.problem = cp.Problem(cp.Minimize(self.objective_expr),
+                                  list(self.constraints.values()) + self.internal)
+        if not self.problem.is_dgp(dpp=True):  # pragma: no cover - construction guarantees it
+            raise AssertionError("spring GP is not DGP/DPP")
+        self._relaxed: dict[str, Any] | None = None
+        self._band: SpringGP | None = None
+
+    # -- building blocks -----------------------------------------------------------------------
+
+    def _objective(self, d, r, n, t):
+        return _objective_expr(self.objective_name, d, r, n, t, self.params, self.correction)
+
+    def _internal(self) -> list:
+        """Wahl auxiliary ``1/(t C) + 1/C <= 1`` with ``C = 2r/d``, i.e. ``t >= 1/(C - 1)``."""
+        if self.t is None:
+            return []
+        return [self.d / (2.0 * self.r * self.t) + self.d / (2.0 * self.r) <= 1.0]
+
+    def _constraint(self, s: _Spec, slack=None):
+        g = s.g(self.d, self.r, self.n, self.t, self.params)
+        c = self.params[s.limit]
+        if s.sense == "upper":
+            return g <= c if slack is None else g <= c * slack
+        if s.sense == "lower":
+            return g >= c if slack is None else g * slack >= c
+        if slack is None:
+            return g == c
+        return [g <= c * slack, g * slack >= c]
+
+    def values(self, **values) -> dict[str, float]:
+        """The complete, validated parameter values a solve with these keywords would use."""
+        return _complete_values(values, self.stiffness_mode)
+
+    def _assign(self, v: Mapping[str, float]) -> None:
+        for k, p in self.params.items():
+            p.value = v[k]
+
+    def _run(self, problem: cp.Problem) -> tuple[str, Any, float]:
+        """Solve ``problem`` as a GP; returns (status, raw solver output, wall time)."""
+        opts = dict(self.solver_opts)
+        t0 = time.perf_counter()
+        raw = None
+        try:
+            data, chain, inverse = problem.get_problem_data(self.solver, gp=True,
+                                                            solver_opts=opts)
+            raw = chain.solve_via_data(problem, data, False, False, opts)
+            with warnings.catch_warnings():  # "may be inaccurate": reported in the status
+                warnings.simplefilter("ignore", UserWarning)
+                problem.unpack_results(raw, chain, inverse)
+            status = problem.status
+        except cp.error.SolverError:
+            status = None
+        return _normalise_status(status), raw, time.perf_counter() - t0
+
+    # -- solve ---------------------------------------------------------------------------------
+
+    def solve(self, *, certify: bool = False, **values) -> SpringSolution:
+        """Solve for the given values; never raises on infeasibility (``status='infeasible'``).
+
+        ``certificate`` always carries the solver's primal/dual objectives (log space) and gap;
+        ``certify=True`` adds an independent KKT check (stationarity, complementary slackness,
+        feasibility) evaluated from the cvxpy expressions at the returned point.
+        """
+        v = self.values(**values)
+        self._assign(v)
+        status, raw, elapsed = self._run(self.problem)
+        sol = SpringSolution(status=status, objective_name=self.objective_name,
+                             correction=self.correction, solver_status=self.problem.status,
+                             solve_time=elapsed, inputs=v)
+        sol.certificate = self._solver_certificate(raw, status)
+        if status not in _SOLVED:
+            return sol
+        self._fill(sol, v)
+        if certify:
+            sol.certificate.update(self._kkt())
+            sol.certificate["global_optimum"] = bool(
+                sol.certificate["global_optimum"]
+                and sol.certificate["kkt_stationarity"] <= 1e-5
+                and sol.certificate["kkt_complementarity"] <= 1e-6
+                and sol.certificate["kkt_primal_infeasibility"] <= 1e-6)
+        return sol
+
+    def _fill(self, sol: SpringSolution, v: Mapping[str, float]) -> None:
+        d, r, n = (float(x.value) for x in (self.d, self.r, self.n))
+        sol.d, sol.r, sol.n = d, r, n
+        sol.t = float(self.t.value) if self.t is not None else None
+        sol.objective = float(self.problem.value)
+        sol.mass = float(spring.wire_mass(d, r, n, v["density"]))
+        sol.stiffness = float(spring.stiffness(d, r, n, v["G"]))
+        sol.stress = float(spring.shear_stress(v["F_max"], d, r, self.correction))
+        sol.index = float(spring.spring_index(d, r))
+        sol.wahl_factor = float(spring.wahl_factor(sol.index)) if self.correction == "wahl" \
+            else 1.0
+        sol.outer_diameter = 2.0 * r + d
+        sol.body_length = (n + 1.0) * d
+        sol.surge_frequency = float(spring.surge_frequency(d, r, n, v["G"], v["density"]))
+        psens = dict.fromkeys(self.parameter_names, 0.0)
+        psens.update(_OBJECTIVE_EXPS.get(self.objective_name, {}))
+        for s in self.specs:
+            lam = float(np.asarray(self.constraints[s.name].dual_value))
+            sol.duals[s.name] = lam
+            exps = s.log_exponents()
+            sol.sensitivities[s.name] = lam * exps[s.limit]
+            for key, e in exps.items():
+                psens[key] += lam * e
+        sol.parameter_sensitivities = psens
+        _, ratios = check_design(d, r, n, v, self.correction)
+        sol.active = [k for k, q in ratios.items() if q >= 1.0 - 1e-6]
+
+    def _solver_certificate(self, raw, status) -> dict[str, Any]:
+        cert: dict[str, Any] = {"solver": self.solver, "status": status,
+                                "global_optimum": False}
+        pobj = getattr(raw, "obj_val", None)
+        dobj = getattr(raw, "obj_val_dual", None)
+        if isinstance(raw, dict):  # SCS / ECOS style
+            info = raw.get("info", {})
+            pobj, dobj = info.get("pobj", pobj), info.get("dobj", dobj)
+        if pobj is None or dobj is None or not (math.isfinite(pobj) and math.isfinite(dobj)):
+            return cert
+        gap = abs(float(pobj) - float(dobj))
+        cert.update({
+            "primal_objective_log": float(pobj),
+            "dual_objective_log": float(dobj),
+            "duality_gap_log": gap,
+            # objective* >= objective * exp(-gap): a relative suboptimality bound
+            "relative_gap": math.expm1(gap),
+            "primal_residual": float(getattr(raw, "r_prim", math.nan)),
+            "dual_residual": float(getattr(raw, "r_dual", math.nan)),
+            "iterations": int(getattr(raw, "iterations", -1)),
+        })
+        if status == cp.OPTIMAL:
+            value = self.problem.value
+            cert["objective_lower_bound"] = float(value) * math.exp(-gap) if value else math.nan
+            cert["global_optimum"] = gap <= 1e-6
+        return cert
+
+    def _kkt(self, eps: float = 1e-6) -> dict[str, float]:
+        """KKT residuals in log space, evaluated with cvxpy's own expressions.
+
+        In ``y = log x`` the GP is convex, so a point with (numerically) zero residuals is a
+        global minimum — independent of the solver's self-reported gap.
+        """
+        xs = [self.d, self.r, self.n] + ([self.t] if self.t is not None else [])
+        saved = [float(x.value) for x in xs]
+        cons = list(self.constraints.values()) + self.internal
+        duals = np.array([float(np.asarray(c.dual_value)) for c in cons])
+        is_eq = np.array([isinstance(c, cp.constraints.Equality) for c in cons])
+        obj = self.problem.objective.args[0]
+
+        def h(y):
+            for x, yi in zip(xs, y, strict=True):
+                x.value = math.exp(yi)
+            f = math.log(float(obj.value))
+            hs = np.array([math.log(float(c.args[0].value)) - math.log(float(c.args[1].value))
+                           for c in cons])
+            return f, hs
+
+        try:
+            y0 = np.log(saved)
+            _, h0 = h(y0)
+            grad = np.zeros(len(xs))
+            for k in range(len(xs)):
+                e = np.zeros(len(xs))
+                e[k] = eps
+                fp, hp = h(y0 + e)
+                fm, hm = h(y0 - e)
+                grad[k] = (fp - fm) / (2 * eps) + duals @ (hp - hm) / (2 * eps)
+        finally:
+            for x, val in zip(xs, saved, strict=True):
+                x.value = val
+        ineq = ~is_eq
+        return {
+            "kkt_stationarity": float(np.max(np.abs(grad))),
+            "kkt_complementarity": float(np.max(np.abs(duals[ineq] * h0[ineq]), initial=0.0)),
+            "kkt_primal_infeasibility": float(max(np.max(h0[ineq], initial=0.0),
+                                                  np.max(np.abs(h0[is_eq]), initial=0.0))),
+            "kkt_dual_infeasibility": float(max(0.0, -np.min(duals[ineq], initial=0.0))),
+        }
+
+    # -- infeasibility diagnosis ---------------------------------------------------------------
+
+    def _relaxed_problem(self) -> dict[str, Any]:
+        if self._relaxed is None:
+            m = len(self.specs)
+            s = cp.Variable(m, pos=True, name="slack")
+            smax = cp.Parameter(m, pos=True, name="slack_max")
+            cons_by_name: dict[str, list] = {}
+            cons: list = []
+            for i, spec in enumerate(self.specs):
+                c = self._constraint(spec, slack=s[i])
+                c = c if isinstance(c, list) else [c]
+                cons_by_name[spec.name] = c
+                cons += c
+            cons += [s <= smax, s >= 1.0] + self._internal()
+            prob = cp.Problem(cp.Minimize(cp.prod(s)), cons)
+            if not prob.is_dgp(dpp=True):  # pragma: no cover
+                raise AssertionError("relaxed spring GP is not DGP/DPP")
+            self._relaxed = {"problem": prob, "s": s, "smax": smax, "cons": cons_by_name}
+        return self._relaxed
+
+    def diagnose(self, *, fixed: Iterable[str] = (), max_factor: float = 1e6,
+                 **values) -> Diagnosis:
+        """Which limits must move, and by what factor, to make the specification feasible.
+
+        Solves the relaxed GP: every limit is scaled by a slack ``s_i in [1, max_factor]`` (upper
+        limits multiplied, lower limits divided, the stiffness equality widened both ways) and
+        ``prod s_i`` — i.e. ``sum log s_i``, which favours moving few limits — is minimised.
+        Limits named in ``fixed`` may not move. Then, for each movable limit, solves again with
+        only that one free (``single_fixes``).
+        """
+        v = self.values(**values)
+        self._assign(v)
+        rel = self._relaxed_problem()
+        fixed = set(fixed)
+        names = [s.name for s in self.specs]
+        unknown = fixed - set(names)
+        if unknown:
+            raise ValueError(f"unknown constraint names {sorted(unknown)}; known: {names}")
+        free = np.array([1.0 if nm in fixed else max_factor for nm in names])
+        rel["smax"].value = free
+        status, _, _ = self._run(rel["problem"])
+        diag = Diagnosis(feasible=False, status=status)
+        if status not in _SOLVED:
+            return diag
+        s_val = np.asarray(rel["s"].value, dtype=float)
+        diag.total_relaxation = float(np.prod(s_val))
+        diag.feasible = bool(np.all(s_val <= 1.0 + 1e-6))
+        d, r, n = (float(x.value) for x in (self.d, self.r, self.n))
+        diag.design = {"d": d, "r": r, "n": n}
+        factors = self._limit_factors()
+        mult = {nm: float(sum(float(np.asarray(c.dual_value)) for c in rel["cons"][nm]))
+                for nm in names}
+        diag.multipliers = mult
+        if diag.feasible:
+            return diag
+        diag.relaxations = {nm: factors[nm] for i, nm in enumerate(names)
+                            if s_val[i] > 1.0 + 1e-6}
+        diag.conflicting = [nm for nm in sorted(names, key=lambda k: -mult[k])
+                            if mult[nm] > 1e-6]
+        for i, nm in enumerate(names):
+            if nm in fixed:
+                continue
+            only = np.ones(len(names))
+            only[i] = max_factor
+            rel["smax"].value = only
+            st, _, _ = self._run(rel["problem"])
+            if st == cp.OPTIMAL:
+                diag.single_fixes[nm] = self._limit_factors()[nm]
+        return diag
+
+    def _limit_factors(self) -> dict[str, float]:
+        """``g / limit`` for every named constraint at the current variable values."""
+        out = {}
+        for s in self.specs:
+            g = s.g(self.d, self.r, self.n, self.t, self.params)
+            out[s.name] = float(g.value) / float(self.params[s.limit].value)
+        return out
+
+    # -- discrete catalogue --------------------------------------------------------------------
+
+    def best_discrete(self, catalogue_d: Sequence[float], *, turn_step: float = 0.5,
+                      r_step: float = 1e-3, stiffness_tol: float = 0.02, prune: bool = True,
+                      rtol: float = 1e-9, **values) -> DiscreteSolution:
+        """The exact best design with ``d`` from ``catalogue_d``, ``n`` a multiple of
+        ``turn_step`` and ``r`` a multiple of ``r_step``.
+
+        An exact stiffness is out of reach with discrete ``(d, r, n)``, so the discrete design
+        must have ``|k / kappa - 1| <= stiffness_tol`` (in ``stiffness="band"`` mode the given
+        ``kappa_min``/``kappa_max`` are used instead). Method (exact, not heuristic):
+
+        1. the GP with the same stiffness band gives the continuous bound;
+        2. per catalogue wire, the GP with ``d`` fixed gives a lower bound; wires are visited in
+           order of bound and skipped once the bound exceeds the incumbent (``prune``);
+        3. for a visited wire every ``r`` on the grid allowed by the index, radius, envelope,
+           stress and stiffness bounds is enumerated; as every objective is non-decreasing in
+           ``n`` and every limit on ``n`` is one-sided, the least ``n`` on the turn grid above
+           the lower limits is the best ``n`` for that ``(d, r)``;
+        4. each candidate is re-checked with :func:`check_design` (``spring.py`` formulas).
+        """
+        if self.stiffness_mode == "equality":
+            v = self.values(**values)
+            if not 0.0 <= stiffness_tol < 1.0:
+                raise ValueError(f"stiffness_tol must be in [0, 1), got {stiffness_tol!r}")
+            band_values = {k: x for k, x in v.items() if k != "kappa"}
+            band_values["kappa_min"] = v["kappa"] * (1.0 - stiffness_tol)
+            band_values["kappa_max"] = v["kappa"] * (1.0 + stiffness_tol)
+            if self._band is None:
+                self._band = SpringGP(self.objective_name, self.correction, "band",
+                                      self.solver, self.solver_opts)
+            band = self._band
+        else:
+            band_values = self.values(**values)
+            band = self
+        if turn_step <= 0 or r_step <= 0:
+            raise ValueError("turn_step and r_step must be positive")
+        cont = band.solve(**band_values)
+        out = DiscreteSolution(status="infeasible", objective_name=self.objective_name,
+                               continuous=cont)
+        if cont.status == "infeasible":
+            return out
+        out.continuous_bound = cont.objective if cont.ok else 0.0
+        lo, hi = band_values["d_min"] * (1 - rtol), band_values["d_max"] * (1 + rtol)
+        wires = sorted({float(w) for w in catalogue_d if lo <= w <= hi})
+        table = []
+        for w in wires:
+            lb = 0.0
+            if prune:
+                fixed = band.solve(**{**band_values, "d_min": w, "d_max": w})
+                if fixed.status == "infeasible":
+                    lb = math.inf
+                elif fixed.ok:
+                    lb = fixed.objective
+            table.append({"d": w, "lower_bound": lb, "objective": None, "pruned": False})
+        table.sort(key=lambda row: row["lower_bound"])
+        best: tuple | None = None
+        for row in table:
+            incumbent = best[0] if best else math.inf
+            if math.isinf(row["lower_bound"]) or row["lower_bound"] > incumbent * (1 + 1e-6):
+                row["pruned"] = True
+                continue
+            cand, count = _enumerate_wire(row["d"], band_values, self.correction,
+                                          self.objective_name, turn_step, r_step, rtol)
+            out.candidates_checked += count
+            if cand is None:
+                continue
+            row["objective"] = cand[0]
+            if best is None or cand[:2] < best[:2]:
+                best = cand
+        out.per_wire = sorted(table, key=lambda row: row["d"])
+        if best is None:
+            return out
+        obj, mass, d, r, n = best
+        v_used = band_values
+        out.status = "optimal"
+        out.d, out.r, out.n, out.objective, out.mass = d, r, n, obj, mass
+        out.stiffness = float(spring.stiffness(d, r, n, v_used["G"]))
+        kappa = values.get("kappa") or math.sqrt(v_used["kappa_min"] * v_used["kappa_max"])
+        out.stiffness_error = out.stiffness / float(kappa) - 1.0
+        out.stress = float(spring.shear_stress(v_used["F_max"], d, r, self.correction))
+        out.index = float(spring.spring_index(d, r))
+        out.wahl_factor = float(spring.wahl_factor(out.index)) if self.correction == "wahl" \
+            else 1.0
+        out.outer_diameter = 2.0 * r + d
+        out.body_length = (n + 1.0) * d
+        out.surge_frequency = float(spring.surge_frequency(d, r, n, v_used["G"],
+                                                           v_used["density"]))
+        if out.continuous_bound > 0:
+            out.gap = obj / out.continuous_bound - 1.0
+        return out
+
+
+def _enumerate_wire(d, v, correction, objective, turn_step, r_step, rtol,
+                    max_points: int = 5_000_000):
+    """Best ``(objective, mass, d, r, n)`` for one wire over the r grid, or ``None``."""
+    G, F, k_s = v["G"], v["F_max"], v["k_s"]
+    r_lo = max(v["r_min"], v["C_min"] * d / 2.0)
+    r_hi = min(v["r_max"], v["C_max"] * d / 2.0, (v["D_out_max"] - d) / 2.0,
+               # uncorrected stress <= k_s (Wahl's K > 1 only tightens it)
+               math.pi * d**3 * k_s / (16.0 * F),
+               # stiffness >= kappa_min with n >= n_min
+               (G * d**4 / (64.0 * v["n_min"] * v["kappa_min"])) ** (1.0 / 3.0))
+    if r_hi < r_lo * (1 - rtol):
+        return None, 0
+    j_lo = max(1, math.ceil(r_lo / r_step - 1e-9))
+    j_hi = math.floor(r_hi / r_step + 1e-9)
+    if j_hi < j_lo:
+        return None, 0
+    if j_hi - j_lo + 1 > max_points:
+        raise ValueError(f"r grid too fine: {j_hi - j_lo + 1} radii for d = {d}")
+    r = np.arange(j_lo, j_hi + 1, dtype=float) * r_step
+    n_lo = np.maximum(v["n_min"], G * d**4 / (64.0 * r**3 * v["kappa_max"]))
+    n = np.maximum(np.ceil(n_lo / turn_step - 1e-9), 1.0) * turn_step
+    ok, _ = check_design(d, r, n, v, correction, rtol)
+    if not ok.any():
+        return None, r.size
+    r, n = r[ok], n[ok]
+    obj = _objective_np(objective, d, r, n, v, correction) * np.ones_like(r)
+    mass = spring.wire_mass(d, r, n, v["density"])
+    i = int(np.lexsort((mass, obj))[0])
+    return (float(obj[i]), float(mass[i]), float(d), float(r[i]), float(n[i])), int(ok.size)
+
+
+def best_discrete(solution_bounds: Mapping[str, float] | SpringSolution,
+                  catalogue_d: Sequence[float], turn_step: float = 0.5, r_step: float = 1e-3,
+                  *, stiffness_tol: float = 0.02, correction: str = "wahl",
+                  objective: str = "mass", prune: bool = True) -> DiscreteSolution:
+    """Best catalogue design for a specification (see :meth:`SpringGP.best_discrete`).
+
+    ``solution_bounds`` is the dict of :meth:`SpringGP.solve` values, or a continuous
+    :class:`SpringSolution` (its ``inputs``, correction and objective are reused).
+    """
+    if isinstance(solution_bounds, SpringSolution):
+        correction = solution_bounds.correction
+        objective = solution_bounds.objective_name
+        solution_bounds = solution_bounds.inputs
+    gp = _cached_gp(objective, correction)
+    return gp.best_discrete(catalogue_d, turn_step=turn_step, r_step=r_step,
+                            stiffness_tol=stiffness_tol, prune=prune, **solution_bounds)
+
+
+# ----------------------------------------------------------------------------------------------
+# Generic sizing entry point
+# ----------------------------------------------------------------------------------------------
+
+_local = threading.local()
+
+
+def _cached_gp(objective: str, correction: str) -> SpringGP:
+    """One compiled GP per (objective, correction) and thread (parameters are mutated)."""
+    cache = getattr(_local, "cache", None)
+    if cache is None:
+        cache = _local.cache = {}
+    key = (objective, correction)
+    if key not in cache:
+        cache[key] = SpringGP(objective, correction)
+    return cache[key]
+
+
+def size_helical_spring(F_max: float | None = None, stiffness: float | None = None, *,
+                        loads: Sequence[float] | None = None, k_s: float, G: float,
+                        density: float, correction: str = "wahl", objective: str = "mass",
+                        **bounds) -> SpringSolution:
+    """Least-mass helical spring for given loads, material and envelope, as an exact GP.
+
+    Give either ``stiffness`` (N/m) with ``F_max`` (N), or ``loads=(F1, x1, F2, x2)``: two
+    working points (force at deflection), from which ``stiffness = (F2 - F1)/(x2 - x1)`` and
+    ``F_max = max(|F1|, |F2|, F_max)``; the implied preload ``F1 - stiffness x1`` (initial
+    tension of an extension spring) is reported in ``extras``. ``bounds`` are the optional
+    limits of :data:`DEFAULT_BOUNDS` (``d_min``, ``D_out_max``, ``L_body_max``, ...).
+
+    The returned ``certificate`` proves global optimality: a GP is convex in log space, so a
+    solved status with a small primal-dual gap (``duality_gap_log``, a bound on
+    ``log(objective / optimum)``) and small KKT residuals is a global optimum; the entry
+    ``global_optimum`` summarises it.
+    """
+    extras: dict[str, float] = {}
+    if loads is not None:
+        F1, x1, F2, x2 = (float(x) for x in loads)
+        if x2 == x1:
+            raise ValueError("loads need two different deflections")
+        kappa = (F2 - F1) / (x2 - x1)
+        if kappa <= 0:
+            raise ValueError(f"loads give a non-positive stiffness {kappa!r}")
+        if stiffness is not None and not math.isclose(stiffness, kappa, rel_tol=1e-9):
+            raise ValueError(f"stiffness {stiffness!r} contradicts loads (give one of them)")
+        F_max = max(abs(F1), abs(F2), F_max or 0.0)
+        extras = {"preload": F1 - kappa * x1, "stiffness_from_loads": kappa}
+        stiffness = kappa
+    if stiffness is None or F_max is None:
+        raise TypeError("give F_max and stiffness, or loads=(F1, x1, F2, x2)")
+    gp = _cached_gp(objective, correction)
+    sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k_s, G=G, density=density,
+                   **bounds)
+    sol.extras = extras
+    return sol
+
+
+# ----------------------------------------------------------------------------------------------
+# Re-solve benchmark
+# ----------------------------------------------------------------------------------------------
+
+#: Hamabe case a in SI (kgf/cm units converted with 1 kgf = 9.80665 N), spring steel density.
+_EXAMPLE = {
+    "kappa": 59.7 * 9.80665 * 100.0,
+    "F_max": 606.0 * 9.80665,
+    "k_s": 4000.0 * 9.80665e4,
+    "G": 850000.0 * 9.80665e4,
+    "density": 7850.0,
+    "r_max": 0.08,
+    "D_out_max": 0.2,
+    "n_min": 3.0,
+}
+
+
+def benchmark_resolve(n: int = 50, **values) -> dict[str, float]:
+    """Mean wall time of a DPP re-solve vs building and solving a fresh problem.
+
+    Both loops solve the same ``n`` specifications (``k_s`` swept over +-20 %); ``values``
+    override the built-in example (Hamabe case a in SI with Wahl's factor). Returns
+    ``resolve_s``, ``build_s`` (per solve), ``first_solve_s`` (compile + solve), ``ratio``
+    (``build_s / resolve_s``) and ``max_rel_diff`` between the two sets of optima.
+    """
+    base = {**_EXAMPLE, **values}
+    specs = [{**base, "k_s": base["k_s"] * (0.8 + 0.4 * i / max(n - 1, 1))} for i in range(n)]
+    t0 = time.perf_counter()
+    gp = SpringGP()
+    gp.solve(**base)
+    first = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    re = [gp.solve(**s).objective for s in specs]
+    resolve = (time.perf_counter() - t0) / n
+    t0 = time.perf_counter()
+    fresh = [SpringGP().solve(**s).objective for s in specs]
+    build = (time.perf_counter() - t0) / n
+    diff = max(abs(a / b - 1.0) for a, b in zip(re, fresh, strict=True))
+    return {"n": n, "resolve_s": resolve, "build_s": build, "first_solve_s": first,
+            "ratio": build / resolve, "max_rel_diff": diff}

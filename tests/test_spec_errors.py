@@ -1,0 +1,73 @@
+"""Bad specs: one clear line naming file and key, exit code 2, never a traceback."""
+
+import re
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from govopt.cli import app
+
+BASE = Path("specs/hamabe-a.toml").read_text()
+
+
+def _edit(old: str, new: str) -> str:
+    assert old in BASE, old
+    return BASE.replace(old, new, 1)
+
+
+CASES = {
+    "missing key": (_edit('a = "18 cm"', ""), r"governor\.a: missing"),
+    "unknown key": (_edit('b = "3 cm"', 'b = "3 cm"\nbb = "3 cm"'), r"governor\.bb: unknown key"),
+    "stress in cm": (_edit('"4000 kgf/cm^2"', '"4000 cm"'),
+                     r"material\.allowable_shear_stress: .*not a stress"),
+    "negative length": (_edit('rho = "12 cm"', 'rho = "-12 cm"'), r"governor\.rho: must be positive"),
+    "zero length": (_edit('q = "5 cm"', 'q = "0 cm"'), r"governor\.q: must be positive"),
+    "angle outside (0, 180)": (_edit('alpha_outer = "80 deg"', 'alpha_outer = "190 deg"'),
+                               r"governor\.alpha_outer: must lie in"),
+    "zero angle": (_edit('alpha_inner = "50 deg"', 'alpha_inner = "0 deg"'),
+                   r"governor\.alpha_inner: must lie in"),
+    "malformed TOML": (BASE + "\n[speed\n", r"malformed TOML"),
+    "bare number for a length": (_edit('a = "18 cm"', "a = 18"),
+                                 r"governor\.a: expected a length with units"),
+    "unparsable unit": (_edit('a = "18 cm"', 'a = "18 parsecs per"'), r"governor\.a: cannot parse"),
+    "normal outside range": (_edit('alpha_normal = "64 deg + 40 arcmin"', 'alpha_normal = "85 deg"'),
+                             r"governor\.alpha_normal: expected alpha_inner < alpha_normal"),
+    "unknown governor type": (_edit('type = "shaft"', 'type = "steam"'), r"governor\.type: expected"),
+    "planned governor type": (_edit('type = "shaft"', 'type = "porter"'),
+                              r"governor\.type: .*not yet modelled"),
+    "table length mismatch": (_edit('"84 deg", "96 deg"]', '"84 deg"]'),
+                              r"valve_gear\.table\.delta: expected 5 values"),
+    "list item wrong dimension": (_edit('"58 deg"', '"58 cm"'),
+                                  r"valve_gear\.table\.delta\[1\]: .*not a angle"),
+    "irregularity not a number": (_edit("irregularity = 0.12", 'irregularity = "a lot"'),
+                                  r"speed\.irregularity: expected a finite number"),
+    "both weight and mass": (_edit('pendulum_weight = "12 kgf"',
+                                   'pendulum_weight = "12 kgf"\npendulum_mass = "12 kg"'),
+                             r"design\.pendulum_weight: give either"),
+    "positive torque slope": (_edit('"-300 kgf*m/rad"', '"300 kgf*m/rad"'),
+                              r"engine\.torque_slope: expected dT/dalpha < 0"),
+    "unknown top-level table": (BASE + '\n[extras]\nx = 1\n', r"extras: unknown key"),
+    "bad fidelity choice": (BASE + '\n[analysis]\ngeometry = "approximate"\n',
+                            r"analysis\.geometry: expected one of"),
+}
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_bad_spec_exits_2_with_one_line(tmp_path, case):
+    text, pattern = CASES[case]
+    path = tmp_path / "bad.toml"
+    path.write_text(text)
+    result = CliRunner().invoke(app, ["evaluate", str(path)])
+    assert result.exit_code == 2, result.output
+    lines = result.output.strip().splitlines()
+    assert len(lines) == 1, result.output
+    assert lines[0].startswith(f"error: {path}"), lines[0]
+    assert re.search(pattern, lines[0]), lines[0]
+    assert "Traceback" not in result.output
+
+
+def test_missing_file(tmp_path):
+    result = CliRunner().invoke(app, ["evaluate", str(tmp_path / "nope.toml")])
+    assert result.exit_code == 2
+    assert "cannot read spec file" in result.output
