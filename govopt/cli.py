@@ -16,6 +16,8 @@ app = typer.Typer(add_completion=False, no_args_is_help=False,
 
 SPECS = Path(__file__).resolve().parent.parent / "specs"
 DEFAULT_EVALUATE = SPECS / "hamabe-a.toml"
+DEFAULT_DESIGN = SPECS / "hamabe-design.toml"
+REPORTS = Path(__file__).resolve().parent.parent / "reports"
 
 SpecArg = Annotated[Path | None, typer.Argument(help="Spec file (TOML with units).",
                                                show_default=False)]
@@ -66,6 +68,39 @@ def evaluate(
     typer.echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res))
     if xlsx is not None and not json_out:
         typer.echo(f"\nwrote {xlsx}")
+
+
+@app.command()
+def design(
+    spec: SpecArg = None,
+    json_out: JsonOpt = False,
+    output: Annotated[Path | None, typer.Option("-o", "--output",
+                                                help="Write the design as a spec file.")] = None,
+    xlsx: Annotated[Path | None, typer.Option("--xlsx", help="Write an Excel design sheet.")]
+    = None,
+) -> None:
+    """Find the best design for the spec's requirements (default: bundled hamabe-design)."""
+    from .optimize.design import design as run
+    from .report.files import write_design_spec
+    from .report.text import format_result
+
+    if spec is None and xlsx is None:
+        xlsx = REPORTS / "hamabe-design.xlsx"
+    try:
+        res = run(_load(spec, DEFAULT_DESIGN))
+        if output is not None:
+            write_design_spec(res, output)
+        if xlsx is not None:
+            from .report.excel import write_workbook
+
+            write_workbook(res, xlsx)
+    except GovoptError as exc:
+        _fail(str(exc))
+    typer.echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res))
+    if not json_out:
+        for path in (output, xlsx):
+            if path is not None:
+                typer.echo(f"wrote {path}")
 
 
 def main() -> None:

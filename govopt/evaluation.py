@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .analysis import statics
+from .analysis import loadchange, statics
 from .model import spring
 from .result import Check, Result
 from .spec import Design, Spec
@@ -29,21 +29,70 @@ def spring_properties(spec: Spec, sd: statics.SpringDesign) -> dict[str, float]:
 
 
 def evaluate(spec: Spec, design: Design | None = None) -> Result:
-    """Evaluate ``design`` (default: the spec's own ``[design]``) against the spec."""
+    """Evaluate ``design`` (default: the spec's own ``[design]``) against the spec.
+
+    Statics always; the load-change transient (Hamabe Part III) when the spec has engine data,
+    load changes and the design a dash-pot; design-requirement checks (margins, spring index,
+    envelope, surge, bounds) when the spec has ``[requirements]`` or ``[bounds]``.
+    """
     design = design or spec.design
     sd = statics.spring_design(spec, design)
     char = statics.characteristic(spec, sd)
     k2 = statics.restoring_k2(spec, char.alpha, sd, char.omega**2)
+    req = spec.requirements
     w0sq = spec.speed.omega_mean**2
+    margin = req.k2_margin if req else 0.0
     checks = [
         Check("shear stress", float(np.max(char.stress)), spec.material.allowable_shear_stress,
               "<=", "Pa", "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"),
         Check("irregularity", char.irregularity, spec.speed.irregularity, "<=", "",
               "Hamabe Part I: (omega_a - omega_i) / omega_mean"),
-        Check("k^2 > 0 (stability)", float(np.min(k2)), 0.0, ">=", "rad^2/s^2",
+        Check("k^2 > 0 (stability)", float(np.min(k2)), margin * w0sq, ">=", "rad^2/s^2",
               "Hamabe Part II, case 3", scale=w0sq),
-        Check("k^2 < omega0^2 (no resonance)", float(np.max(k2)), w0sq, "<=", "rad^2/s^2",
-              "Hamabe Part II, case 2"),
+        Check("k^2 < omega0^2 (no resonance)", float(np.max(k2)), (1.0 - margin) * w0sq, "<=",
+              "rad^2/s^2", "Hamabe Part II, case 2"),
     ]
-    return Result(spec=spec, design=design, spring=sd, statics=char,
-                  spring_properties=spring_properties(spec, sd), checks=checks, k2=k2)
+    props = spring_properties(spec, sd)
+    dynamics = {}
+    if spec.engine is not None and spec.load_changes and design.dashpot is not None:
+        hm = req.hurwitz_margin if req else 0.0
+        changes = [loadchange.analyse(spec, sd, lc, design.dashpot) for lc in spec.load_changes]
+        dynamics["load_changes"] = changes
+        for lc in changes:
+            checks.append(Check(f"Hurwitz margin eq. (32): {lc['name']}", lc["hurwitz_margin"],
+                                hm, ">=", "", "Hamabe eq. (32): 9 a1 a2 / (a0 a3) - 1",
+                                scale=1.0))
+            checks.append(Check(f"no over-regulation: {lc['name']}", lc["over_regulation_rad"],
+                                0.0, "<=", "rad", "Hamabe Part III",
+                                scale=abs(lc["initial_state"]["xi_rad"])))
+            if req is not None and req.max_settling_time is not None:
+                checks.append(Check(f"settling time: {lc['name']}", lc["settling_time_s"],
+                                    req.max_settling_time, "<=", "s", "Hamabe Part III"))
+    if req is not None:
+        checks += requirement_checks(spec, req, sd, props)
+    return Result(spec=spec, design=design, spring=sd, statics=char, spring_properties=props,
+                  checks=checks, k2=k2, dynamics=dynamics)
+
+
+def requirement_checks(spec: Spec, req, sd: statics.SpringDesign, props) -> list[Check]:
+    """Checks of the design requirements and bounds of `govopt design`."""
+    out = [
+        Check("spring index >= min", props["spring_index"], req.spring_index[0], ">=", ""),
+        Check("spring index <= max", props["spring_index"], req.spring_index[1], "<=", ""),
+        Check("body length within free length", props["body_length_m"], 2.0 * sd.l0, "<=", "m",
+              "close-wound body (n + 1) d within 2 l0"),
+        Check("pendulum mass >= min", sd.m, req.pendulum_mass[0], ">=", "kg"),
+        Check("pendulum mass <= max", sd.m, req.pendulum_mass[1], "<=", "kg"),
+        Check("wire diameter >= min", sd.d, req.wire_diameter[0], ">=", "m"),
+        Check("wire diameter <= max", sd.d, req.wire_diameter[1], "<=", "m"),
+        Check("coil radius >= min", sd.r, req.coil_radius[0], ">=", "m"),
+        Check("coil radius <= max", sd.r, req.coil_radius[1], "<=", "m"),
+        Check("active turns >= min", sd.n, req.active_turns[0], ">=", ""),
+        Check("active turns <= max", sd.n, req.active_turns[1], "<=", ""),
+    ]
+    if req.max_outer_diameter is not None:
+        out.append(Check("outer diameter", 2.0 * sd.r + sd.d, req.max_outer_diameter, "<=", "m"))
+    if req.min_surge_frequency is not None:
+        out.append(Check("surge frequency", props["surge_frequency_Hz"], req.min_surge_frequency,
+                         ">=", "Hz", "Wahl 1944 ch. 25"))
+    return out

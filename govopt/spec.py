@@ -262,6 +262,37 @@ class Analysis:
     settling_band: float = 0.02
 
 
+#: ISO 3 R20 preferred numbers, 1 mm to 25 mm: the default catalogue of wire diameters (m).
+PREFERRED_WIRE = tuple(x / 1000 for x in (
+    1.0, 1.12, 1.25, 1.4, 1.6, 1.8, 2.0, 2.24, 2.5, 2.8, 3.15, 3.55, 4.0, 4.5, 5.0, 5.6, 6.3, 7.1,
+    8.0, 9.0, 10.0, 11.2, 12.5, 14.0, 16.0, 18.0, 20.0, 22.4, 25.0))
+
+OBJECTIVES = ("moving_mass", "spring_mass", "settling_time", "vibration")
+
+
+@dataclass(frozen=True)
+class Requirements:
+    """What `govopt design` must achieve, within which bounds, from which catalogue (SI)."""
+
+    objective: str = "moving_mass"
+    k2_margin: float = 0.05
+    hurwitz_margin: float = 0.1
+    max_settling_time: float | None = None
+    max_vibration: float | None = None
+    spring_index: tuple[float, float] = (4.0, 16.0)
+    max_outer_diameter: float | None = None
+    min_surge_frequency: float | None = None
+    pendulum_mass: tuple[float, float] = (2.0, 20.0)
+    wire_diameter: tuple[float, float] = (0.001, 0.025)
+    coil_radius: tuple[float, float] = (0.01, 0.1)
+    active_turns: tuple[float, float] = (3.0, 30.0)
+    dashpot: tuple[float, float] | None = None
+    wire_diameters: tuple[float, ...] = PREFERRED_WIRE
+    turn_step: float = 0.5
+    coil_radius_step: float = 0.001
+    mass_step: float = 0.25
+
+
 @dataclass(frozen=True)
 class Spec:
     path: str
@@ -275,7 +306,7 @@ class Spec:
     engine: Engine | None
     load_changes: tuple[LoadChange, ...]
     analysis: Analysis
-    requirements: dict = field(default_factory=dict, repr=False)
+    requirements: Requirements | None = None
     entries: tuple[Entry, ...] = field(default=(), repr=False)
 
     def with_analysis(self, **changes) -> Spec:
@@ -369,9 +400,10 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
         lc.finish()
 
     analysis = _analysis(top.sub("analysis", required=False))
+    requirements = _requirements(top)
     top.finish()
     return Spec(file, name, gtype, geometry, speed, valve_gear, material, design, engine,
-                tuple(load_changes), analysis, entries=tuple(entries))
+                tuple(load_changes), analysis, requirements, tuple(entries))
 
 
 def _speed(sp: _Reader) -> Speed:
@@ -452,3 +484,68 @@ def _analysis(an: _Reader | None) -> Analysis:
     )
     an.finish()
     return out
+
+
+def _pair(rd: _Reader, name, dimension, default):
+    """A ``[low, high]`` bound; a bare number list for dimensionless."""
+    value = rd.raw(name, False)
+    if value is None:
+        return default
+    if not isinstance(value, list) or len(value) != 2:
+        rd.fail(name, f"expected [low, high], got {value!r}")
+    if dimension == "dimensionless":
+        sub = _Reader(rd.file, {"low": value[0], "high": value[1]}, rd.key(name), rd.entries)
+        lo, hi = sub.number("low"), sub.number("high")
+    else:
+        lo, hi = rd.quantities(name, dimension)
+    if not lo < hi:
+        rd.fail(name, f"expected low < high, got {value!r}")
+    return (float(lo), float(hi))
+
+
+def _requirements(top: _Reader) -> Requirements | None:
+    """``[requirements]``, ``[bounds]`` and ``[catalogue]`` for `govopt design`."""
+    req, bnd, cat = (top.sub(k, required=False) for k in ("requirements", "bounds", "catalogue"))
+    if req is None and bnd is None and cat is None:
+        return None
+    d = Requirements()
+    kw = {}
+    if req is not None:
+        kw.update(
+            objective=req.choice("objective", OBJECTIVES, d.objective),
+            k2_margin=req.number("k2_margin", required=False, default=d.k2_margin,
+                                 nonnegative=True, high=0.5),
+            hurwitz_margin=req.number("hurwitz_margin", required=False,
+                                      default=d.hurwitz_margin, nonnegative=True),
+            max_settling_time=req.quantity("max_settling_time", "time", required=False),
+            max_vibration=req.quantity("max_vibration", "angle", required=False),
+            spring_index=_pair(req, "spring_index", "dimensionless", d.spring_index),
+            max_outer_diameter=req.quantity("max_outer_diameter", "length", required=False),
+            min_surge_frequency=req.quantity("min_surge_frequency", "frequency",
+                                             required=False),
+        )
+        req.finish()
+    if bnd is not None:
+        weight = _pair(bnd, "pendulum_weight", "force", None)
+        kw.update(
+            pendulum_mass=(weight[0] / G_STANDARD, weight[1] / G_STANDARD) if weight
+            else _pair(bnd, "pendulum_mass", "mass", d.pendulum_mass),
+            wire_diameter=_pair(bnd, "wire_diameter", "length", d.wire_diameter),
+            coil_radius=_pair(bnd, "coil_radius", "length", d.coil_radius),
+            active_turns=_pair(bnd, "active_turns", "dimensionless", d.active_turns),
+            dashpot=_pair(bnd, "dashpot_f", "damping", None),
+        )
+        bnd.finish()
+    if cat is not None:
+        wires = cat.raw("wire_diameters", False)
+        kw.update(
+            wire_diameters=PREFERRED_WIRE if wires in (None, "preferred")
+            else tuple(sorted(cat.quantities("wire_diameters", "length"))),
+            turn_step=cat.number("turn_step", required=False, default=d.turn_step),
+            coil_radius_step=cat.quantity("coil_radius_step", "length", required=False,
+                                          default=d.coil_radius_step),
+            mass_step=cat.quantity("weight_step", "force", required=False,
+                                   default=d.mass_step * G_STANDARD) / G_STANDARD,
+        )
+        cat.finish()
+    return Requirements(**{**d.__dict__, **kw})

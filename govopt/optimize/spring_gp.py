@@ -465,6 +465,7 @@ class SpringGP:
             raise RuntimeError("no conic solver for GPs is installed (need Clarabel, ECOS or SCS)")
         defaults = _CLARABEL_OPTS if self.solver == "CLARABEL" else {}
         self.solver_opts = {**defaults, **(solver_opts or {})}
+        self._fallback_opts = {} if defaults and not solver_opts else None
         kappa_keys = ("kappa",) if stiffness == "equality" else ("kappa_min", "kappa_max")
         self.parameter_names = kappa_keys + _MATERIAL_KEYS + tuple(DEFAULT_BOUNDS)
         self.params = {k: cp.Parameter(pos=True, name=k) for k in self.parameter_names}
@@ -514,21 +515,33 @@ class SpringGP:
             p.value = v[k]
 
     def _run(self, problem: cp.Problem) -> tuple[str, Any, float]:
-        """Solve ``problem`` as a GP; returns (status, raw solver output, wall time)."""
-        opts = dict(self.solver_opts)
+        """Solve ``problem`` as a GP; returns (status, raw solver output, wall time).
+
+        With the tight default Clarabel tolerances a nearly infeasible problem can run out of
+        iterations instead of proving infeasibility; such a solve is repeated once with
+        Clarabel's own tolerances.
+        """
         t0 = time.perf_counter()
+        status, raw = self._run_once(problem, self.solver_opts)
+        if status not in (cp.OPTIMAL, "infeasible") and self._fallback_opts is not None:
+            status, raw = self._run_once(problem, self._fallback_opts)
+        return status, raw, time.perf_counter() - t0
+
+    def _run_once(self, problem: cp.Problem, opts: Mapping[str, Any]) -> tuple[str, Any]:
+        opts = dict(opts)
         raw = None
         try:
             data, chain, inverse = problem.get_problem_data(self.solver, gp=True,
                                                             solver_opts=opts)
             raw = chain.solve_via_data(problem, data, False, False, opts)
-            with warnings.catch_warnings():  # "may be inaccurate": reported in the status
+            with warnings.catch_warnings():  # "may be inaccurate", exp overflow: in the status
                 warnings.simplefilter("ignore", UserWarning)
+                warnings.simplefilter("ignore", RuntimeWarning)
                 problem.unpack_results(raw, chain, inverse)
             status = problem.status
         except cp.error.SolverError:
             status = None
-        return _normalise_status(status), raw, time.perf_counter() - t0
+        return _normalise_status(status), raw
 
     # -- solve ---------------------------------------------------------------------------------
 
@@ -588,6 +601,8 @@ class SpringGP:
     def _solver_certificate(self, raw, status) -> dict[str, Any]:
         cert: dict[str, Any] = {"solver": self.solver, "status": status,
                                 "global_optimum": False}
+        if status not in _SOLVED:
+            return cert
         pobj = getattr(raw, "obj_val", None)
         dobj = getattr(raw, "obj_val_dual", None)
         if isinstance(raw, dict):  # SCS / ECOS style
@@ -601,7 +616,7 @@ class SpringGP:
             "dual_objective_log": float(dobj),
             "duality_gap_log": gap,
             # objective* >= objective * exp(-gap): a relative suboptimality bound
-            "relative_gap": math.expm1(gap),
+            "relative_gap": math.expm1(min(gap, 700.0)),
             "primal_residual": float(getattr(raw, "r_prim", math.nan)),
             "dual_residual": float(getattr(raw, "r_dual", math.nan)),
             "iterations": int(getattr(raw, "iterations", -1)),
@@ -754,6 +769,9 @@ class SpringGP:
            ``n`` and every limit on ``n`` is one-sided, the least ``n`` on the turn grid above
            the lower limits is the best ``n`` for that ``(d, r)``;
         4. each candidate is re-checked with :func:`check_design` (``spring.py`` formulas).
+
+        Raises ``ValueError`` if one wire would need more than 5 million radii (``r_step`` far
+        too fine for the bounds). Designs are accepted with relative tolerance ``rtol``.
         """
         if self.stiffness_mode == "equality":
             v = self.values(**values)

@@ -1,0 +1,464 @@
+"""Whole-governor design: pendulum weight, spring (d, r, n, free length) and dash-pot.
+
+Method (each step uses the statics and dynamics modules as evaluators):
+
+1. For every pendulum mass on the catalogue's weight grid, the statics requirements (irregularity,
+   ``k2_margin omega0^2 <= k^2 <= (1 - k2_margin) omega0^2`` at every configuration, a positive
+   equilibrium speed, a spring in tension, a positive free length) are an interval of admissible
+   stiffness, in closed form (:mod:`govopt.optimize.kappa`).
+2. **Continuous bound**: for each mass, the spring is a geometric programme (cvxpy DGP, built once
+   with parameters and re-solved, :class:`~govopt.optimize.spring_gp.SpringGP`): least mass with
+   the stiffness in that interval, stress from the exact force ``F_n + 2 kappa (l_a - l_n)``,
+   index, envelope, surge, turns and diameter bounds. The dynamics requirements are relaxed here,
+   so the best of these is a true lower bound on any design.
+3. **Discrete design**: every catalogue wire, coil radius on its grid, turns on their step and
+   mass on its grid is checked against the same constraints in closed form (vectorised, exhaustive),
+   and the candidates are visited best first until one also admits a dash-pot with Hamabe's
+   eq. (32) margin, no over-regulation and the settling limit for every load change. The dash-pot's
+   feasible range is found on a log grid (it can be bounded on both sides: too little damping
+   violates eq. 32, too much makes the slow roots a complex pair that overshoots).
+4. The chosen design is re-evaluated with the full :func:`govopt.evaluate`, like the paper's
+   closing check, and its constraints, margins and sensitivities are reported.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..analysis import statics
+from ..analysis import transient as tr
+from ..errors import InfeasibleError
+from ..model import linkage, spring
+from ..spec import Design, Requirements, Spec
+from .kappa import KappaModel
+
+#: Dash-pot grid, as multiples of the least damping that meets eq. (32) with its margin.
+DASHPOT_FACTORS = np.geomspace(1.0, 200.0, 25)
+#: Over-regulation below this fraction of the load change counts as none (rounding level).
+OVER_TOL = 1e-9
+
+
+@dataclass(frozen=True)
+class Grid:
+    """The analysis configurations, with the indices of the ones the requirements refer to."""
+
+    alpha: np.ndarray
+    inner: int
+    outer: int
+    load_changes: tuple[tuple[int, int], ...]
+
+    @classmethod
+    def build(cls, spec: Spec) -> Grid:
+        alpha = statics.configurations(spec)
+        extra = [a for lc in spec.load_changes for a in (lc.alpha_from, lc.alpha_to)]
+        alpha = np.unique(np.concatenate([alpha, extra]))
+        idx = [(int(np.searchsorted(alpha, lc.alpha_from)), int(np.searchsorted(alpha, lc.alpha_to)))
+               for lc in spec.load_changes]
+        return cls(alpha, 0, len(alpha) - 1, tuple(idx))
+
+
+def requirements(spec: Spec) -> Requirements:
+    return spec.requirements or Requirements()
+
+
+def mass_grid(req: Requirements) -> np.ndarray:
+    lo, hi = req.pendulum_mass
+    step = req.mass_step
+    return np.arange(math.ceil(lo / step - 1e-9), math.floor(hi / step + 1e-9) + 1) * step
+
+
+def k2_limits(spec: Spec, req: Requirements) -> tuple[float, float]:
+    w0sq = spec.speed.omega_mean**2
+    return req.k2_margin * w0sq, (1.0 - req.k2_margin) * w0sq
+
+
+# ---------------------------------------------------------------------------------------------
+# Dynamics of candidates (vectorised over candidates and dash-pot values)
+# ---------------------------------------------------------------------------------------------
+
+
+def load_change_problem(spec: Spec, km: KappaModel, grid: Grid, rows, kappa):
+    """Coefficients ``a0, a2, a3`` and initial state of every load change for candidates
+    (mass row ``rows``, stiffness ``kappa``): Hamabe eqs. (27)-(28) and Part III's initial
+    conditions. Shapes: (candidates, load changes)."""
+    g, eng = spec.geometry, spec.engine
+    R = -eng.torque_slope / eng.flywheel_inertia
+    m = km.m[rows, 0][:, None]
+    inertia = km.inertia[rows, 0][:, None]
+    kappa = np.asarray(kappa)[:, None]
+    i1 = np.array([i for i, _ in grid.load_changes])
+    i0 = np.array([j for _, j in grid.load_changes])
+    w2 = km.omega2.x[rows][:, :] * kappa + km.omega2.y[rows]
+    k2 = km.k2.x[rows] * kappa + km.k2.y[rows]
+    omega0 = np.sqrt(np.maximum(w2[:, i0], 0.0))
+    omega1 = np.sqrt(np.maximum(w2[:, i1], 0.0)) * (1.0 + eng.insensibility)
+    alpha0 = grid.alpha[i0]
+    a0, _, a2, a3 = tr.hamabe_coefficients(inertia, 0.0, k2[:, i0], R, omega0, g.a, m, g.rho,
+                                           alpha0)
+    xi0 = (grid.alpha[i1] - alpha0) + 0.0 * a0
+    x = tr.hamabe_initial_conditions(a0, a2, a3, R, xi0, omega1 - omega0)
+    return a0, a2, a3, x
+
+
+def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, rows, kappa,
+                   factors=DASHPOT_FACTORS):
+    """For each candidate: the dash-pot values on a log grid that meet eq. (32) with its margin,
+    give no over-regulation and settle within the limit for every load change; and the one
+    that settles fastest. Returns dict of arrays over candidates."""
+    n = len(rows)
+    if spec.engine is None or not spec.load_changes:
+        return {"feasible": np.ones(n, bool), "f": np.full(n, np.nan),
+                "settling": np.full(n, np.nan), "f_lo": np.full(n, np.nan),
+                "f_hi": np.full(n, np.nan)}
+    a0, a2, a3, (x0, x1, x2) = load_change_problem(spec, km, grid, rows, kappa)
+    # least f meeting 9 a1 a2 >= (1 + margin) a0 a3 for all load changes (eq. 32)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        f_min = np.max((1.0 + req.hurwitz_margin) * a0 * a3 / (3.0 * a2), axis=1)
+    f_min = np.where(np.all(a2 > 0, axis=1), f_min, np.inf)
+    f = f_min[:, None] * factors[None, :]  # (n, F)
+    if req.dashpot is not None:
+        f = np.clip(f, *req.dashpot)
+    fa = f[:, :, None]
+    s = tr.analyse_many(a0[:, None, :], fa / 3.0, a2[:, None, :], a3[:, None, :],
+                        x0[:, None, :], x1[:, None, :], x2[:, None, :],
+                        band=spec.analysis.settling_band)
+    over = s.over_regulation / np.abs(x0[:, None, :])
+    ok = s.stable & (over <= OVER_TOL) & (s.hurwitz_margin >= req.hurwitz_margin * (1 - 1e-12))
+    settle = np.max(s.settling_time, axis=2)
+    if req.max_settling_time is not None:
+        ok = ok & (s.settling_time <= req.max_settling_time)
+    ok = np.all(ok, axis=2) & np.isfinite(f)
+    masked = np.where(ok, settle, np.inf)
+    best = np.argmin(masked, axis=1)
+    idx = np.arange(n)
+    feasible = np.any(ok, axis=1)
+    f_ok = np.where(ok, f, np.nan)
+    with np.errstate(all="ignore"):
+        return {"feasible": feasible, "f": np.where(feasible, f[idx, best], np.nan),
+                "settling": np.where(feasible, masked[idx, best], np.inf),
+                "f_lo": np.nanmin(np.where(feasible[:, None], f_ok, np.inf), axis=1),
+                "f_hi": np.nanmax(np.where(feasible[:, None], f_ok, -np.inf), axis=1)}
+
+
+# ---------------------------------------------------------------------------------------------
+# Springs: exhaustive discrete enumeration, checked in closed form
+# ---------------------------------------------------------------------------------------------
+
+
+def spring_catalogue(req: Requirements):
+    """Every (d, r, n) the catalogue allows within the bounds, as flat arrays."""
+    d = np.array([w for w in req.wire_diameters
+                  if req.wire_diameter[0] - 1e-12 <= w <= req.wire_diameter[1] + 1e-12])
+    rs = req.coil_radius_step
+    r = np.arange(math.ceil(req.coil_radius[0] / rs - 1e-9),
+                  math.floor(req.coil_radius[1] / rs + 1e-9) + 1) * rs
+    ts = req.turn_step
+    n = np.arange(math.ceil(req.active_turns[0] / ts - 1e-9),
+                  math.floor(req.active_turns[1] / ts + 1e-9) + 1) * ts
+    D, Rr, N = np.meshgrid(d, r, n, indexing="ij")
+    return D.ravel(), Rr.ravel(), N.ravel()
+
+
+def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0):
+    """Spring constraints that do not depend on the governor's statics (arrays)."""
+    mat = spec.material
+    C = spring.spring_index(d, r)
+    ok = (C >= req.spring_index[0]) & (C <= req.spring_index[1])
+    ok &= spring.shear_stress(F_max, d, r, mat.stress_correction) <= mat.allowable_shear_stress
+    ok &= (n + 1.0) * d <= 2.0 * l0
+    if req.max_outer_diameter is not None:
+        ok &= 2.0 * r + d <= req.max_outer_diameter
+    if req.min_surge_frequency is not None:
+        ok &= spring.surge_frequency(d, r, n, mat.shear_modulus, mat.density) \
+            >= req.min_surge_frequency
+    return ok
+
+
+def objective_values(req: Requirements, m, spring_mass, settling=None):
+    if req.objective == "spring_mass":
+        return spring_mass
+    if req.objective == "settling_time":
+        return settling
+    return m + spring_mass  # moving mass (the default); vibration handled by the caller
+
+
+@dataclass(frozen=True)
+class Candidate:
+    m: float
+    d: float
+    r: float
+    n: float
+    kappa: float
+    l0: float
+    f: float
+    objective: float
+    settling: float
+    f_lo: float
+    f_hi: float
+
+
+def best_discrete(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, lo, hi,
+                  batch: int = 64, max_checked: int = 4096, dynamics: bool = True
+                  ) -> tuple[Candidate | None, dict]:
+    """Exhaustive search over mass grid x catalogue springs; dynamics checked best first."""
+    d, r, n = spring_catalogue(req)
+    kappa = spring.stiffness(d, r, n, spec.material.shear_modulus)
+    smass = spring.wire_mass(d, r, n, spec.material.density)
+    M = km.m.shape[0]
+    rows, cols = np.nonzero((kappa[None, :] >= lo[:, None]) & (kappa[None, :] <= hi[:, None]))
+    stats = {"springs": int(d.size), "masses": int(M), "combinations": int(d.size) * int(M),
+             "statics_feasible": int(rows.size)}
+    k = kappa[cols]
+    F_max = np.max(km.force.x[rows] * k[:, None] + km.force.y[rows], axis=1)
+    l0 = km.l0.x[rows, 0] + km.l0.y[rows, 0] / k
+    ok = spring_checks(spec, req, d[cols], r[cols], n[cols], F_max, l0)
+    rows, cols, l0 = rows[ok], cols[ok], l0[ok]
+    stats["spring_feasible"] = int(rows.size)
+    m = km.m[rows, 0]
+    if not dynamics:
+        return None, stats
+    if req.objective in ("settling_time", "vibration"):
+        order = _surrogate_order(spec, req, km, grid, rows, kappa[cols])
+    else:
+        order = np.argsort(objective_values(req, m, smass[cols]), kind="stable")
+    checked = 0
+    best = None
+    for start in range(0, min(order.size, max_checked), batch):
+        sel = order[start:start + batch]
+        win = dashpot_window(spec, req, km, grid, rows[sel], kappa[cols[sel]])
+        checked += sel.size
+        if not np.any(win["feasible"]):
+            continue
+        obj = objective_values(req, m[sel], smass[cols[sel]], win["settling"])
+        obj = np.where(win["feasible"], obj, np.inf)
+        j = int(np.argmin(obj))
+        i = sel[j]
+        cand = Candidate(float(m[i]), float(d[cols[i]]), float(r[cols[i]]), float(n[cols[i]]),
+                         float(kappa[cols[i]]), float(l0[i]), float(win["f"][j]), float(obj[j]),
+                         float(win["settling"][j]), float(win["f_lo"][j]), float(win["f_hi"][j]))
+        if best is None or cand.objective < best.objective:
+            best = cand
+        if req.objective in ("moving_mass", "spring_mass"):
+            break  # visited in objective order: the first feasible batch holds the optimum
+    stats["dynamics_checked"] = checked
+    return best, stats
+
+
+def _surrogate_order(spec, req, km, grid, rows, kappa):
+    """Order candidates for objectives that depend on the dash-pot: settling time on a coarse
+    subsample, then nearest neighbours first (a heuristic order; every candidate visited is
+    checked exactly)."""
+    if rows.size == 0:
+        return np.arange(0)
+    key = np.round(np.log(kappa) * 20) + 1000 * rows
+    _, first = np.unique(key, return_index=True)
+    win = dashpot_window(spec, req, km, grid, rows[first], kappa[first])
+    score = np.where(win["feasible"], win["settling"], np.inf)
+    lookup = dict(zip(key[first], score, strict=True))
+    return np.argsort([lookup[k] for k in key], kind="stable")
+
+
+# ---------------------------------------------------------------------------------------------
+# Continuous bound (GP per mass) and the whole design
+# ---------------------------------------------------------------------------------------------
+
+
+def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
+    """Least objective over masses with the spring sized by the GP (dynamics relaxed).
+
+    The GP takes the stiffness band ``[lo, hi]`` of each mass and the force at the outermost
+    configuration at the band's lowest stiffness (a relaxation: the true force only grows with
+    stiffness), so the result is a lower bound on every design, continuous or discrete.
+    """
+    from .spring_gp import SpringGP
+
+    gp = SpringGP(objective="mass", correction=spec.material.stress_correction, stiffness="band")
+    best = None
+    mat = spec.material
+    for i in np.nonzero(lo <= hi)[0]:
+        F_max = float(np.max(km.force.x[i] * lo[i] + km.force.y[i]))
+        l0_min = float(km.l0.x[i, 0] + km.l0.y[i, 0] / lo[i])
+        sol = gp.solve(kappa_min=float(max(lo[i], 1e-9)), kappa_max=float(min(hi[i], 1e12)),
+                       F_max=F_max, k_s=mat.allowable_shear_stress, G=mat.shear_modulus,
+                       density=mat.density, d_min=req.wire_diameter[0],
+                       d_max=req.wire_diameter[1], r_min=req.coil_radius[0],
+                       r_max=req.coil_radius[1], n_min=req.active_turns[0],
+                       n_max=req.active_turns[1], C_min=req.spring_index[0],
+                       C_max=req.spring_index[1], D_out_max=req.max_outer_diameter,
+                       L_body_max=2.0 * l0_min, f_surge_min=req.min_surge_frequency)
+        if not sol.ok:
+            continue
+        m = float(km.m[i, 0])
+        obj = sol.objective if req.objective == "spring_mass" else m + sol.objective
+        if req.objective in ("moving_mass", "spring_mass") and (best is None
+                                                                 or obj < best["objective"]):
+            best = {"objective": obj, "pendulum_mass_kg": m, "wire_diameter_m": sol.d,
+                    "coil_radius_m": sol.r, "active_turns": sol.n, "spring_mass_kg": sol.objective}
+    return best
+
+
+def design(spec: Spec):
+    """Find the best design for the spec's requirements; see the module docstring.
+
+    Raises :class:`~govopt.errors.InfeasibleError` with a diagnosis when no design exists.
+    """
+    from ..evaluation import evaluate
+
+    req = requirements(spec)
+    grid = Grid.build(spec)
+    km = KappaModel.build(spec, mass_grid(req), grid.alpha)
+    k2lo, k2hi = k2_limits(spec, req)
+    lo, hi, parts = km.statics_interval(k2lo, k2hi, spec.speed.irregularity)
+    if not np.any(lo <= hi):
+        raise InfeasibleError(diagnose(spec, req, "statics", parts))
+    cand, stats = best_discrete(spec, req, km, grid, lo, hi)
+    if cand is None:
+        stage = "spring" if stats["spring_feasible"] == 0 else "dynamics"
+        raise InfeasibleError(diagnose(spec, req, stage, parts, stats))
+    bound = continuous_bound(spec, req, km, lo, hi) \
+        if req.objective in ("moving_mass", "spring_mass") else None
+    chosen = Design(pendulum_mass=cand.m, wire_diameter=cand.d, coil_radius=cand.r,
+                    active_turns=cand.n, free_half_length=cand.l0,
+                    dashpot=None if math.isnan(cand.f) else cand.f)
+    res = evaluate(spec.with_design(chosen))
+    res.kind = "design"
+    gap = None if bound is None else (cand.objective - bound["objective"]) / bound["objective"]
+    res.optimisation = {
+        "status": "optimal" if all(c.passed for c in res.checks) else "verification_failed",
+        "objective": {"name": req.objective, "value": cand.objective},
+        "design": {
+            "pendulum_weight_N": cand.m * 9.80665, "pendulum_mass_kg": cand.m,
+            "wire_diameter_m": cand.d, "coil_radius_m": cand.r, "active_turns": cand.n,
+            "free_half_length_m": cand.l0, "dashpot_N_m_s_per_rad": cand.f,
+            "dashpot_feasible_range_N_m_s_per_rad": [cand.f_lo, cand.f_hi],
+        },
+        "continuous_bound": bound,
+        "gap": gap,
+        "search": stats,
+        "constraints": [c.to_dict() for c in res.checks],
+        "sensitivities": sensitivities(spec, req, cand.objective),
+    }
+    return res
+
+
+def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
+    grid = Grid.build(spec)
+    km = KappaModel.build(spec, mass_grid(req), grid.alpha)
+    lo, hi, _ = km.statics_interval(*k2_limits(spec, req), spec.speed.irregularity)
+    if stage == "statics" or not np.any(lo <= hi):
+        return bool(np.any(lo <= hi))
+    cand, stats = best_discrete(spec, req, km, grid, lo, hi, dynamics=stage == "dynamics",
+                                max_checked=512)
+    return stats["spring_feasible"] > 0 if stage == "spring" else cand is not None
+
+
+def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, iters=12):
+    """Smallest factor ``x`` in ``[lo, hi]`` with ``make(x) = (spec, req)`` feasible, by
+    bisection in log space; None if even ``hi`` is not enough."""
+    if not _feasible(*make(hi), stage):
+        return None
+    for _ in range(iters):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (lo, mid) if _feasible(*make(mid), stage) else (mid, hi)
+    return hi
+
+
+def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> str:
+    """Which requirements conflict, and how far each would have to move (a relaxation)."""
+    speed, mat = spec.speed, spec.material
+    moves = []
+
+    def with_irr(x):
+        return replace(spec, speed=replace(speed, irregularity=speed.irregularity * x)), req
+
+    def with_ks(x):
+        return replace(spec, material=replace(mat, allowable_shear_stress=mat
+                                              .allowable_shear_stress * x)), req
+
+    def with_k2(x):
+        return spec, replace(req, k2_margin=req.k2_margin / x)
+
+    def with_hurwitz(x):
+        return spec, replace(req, hurwitz_margin=req.hurwitz_margin / x)
+
+    def with_mass(x):
+        return spec, replace(req, pendulum_mass=(req.pendulum_mass[0] / x,
+                                                 req.pendulum_mass[1] * x))
+
+    if stage == "statics":
+        lows = {k: np.min(v[0]) for k, v in parts.items() if np.any(np.isfinite(v[0]))}
+        highs = {k: np.max(v[1]) for k, v in parts.items() if np.any(np.isfinite(v[1]))}
+        lo_name = max(lows, key=lambda k: np.median(parts[k][0]))
+        hi_name = min(highs, key=lambda k: np.median(parts[k][1]))
+        head = (f"{spec.path}: infeasible: the requirement '{lo_name}' needs a stiffer spring "
+                f"than '{hi_name}' allows at every pendulum weight in the bounds")
+        cands = [("irregularity", with_irr, "x", speed.irregularity),
+                 ("k2_margin", with_k2, "/", req.k2_margin),
+                 ("pendulum weight bounds", with_mass, "widen x", None)]
+    elif stage == "spring":
+        head = (f"{spec.path}: infeasible: no spring in the catalogue and bounds meets the "
+                f"allowable shear stress (with index, envelope and surge limits) at a stiffness "
+                f"the statics allow ({stats['statics_feasible']} mass-spring combinations pass "
+                f"the statics, none the spring checks)")
+        cands = [("allowable_shear_stress", with_ks, "x", mat.allowable_shear_stress),
+                 ("irregularity", with_irr, "x", speed.irregularity)]
+    else:
+        head = (f"{spec.path}: infeasible: every load change over-regulates (or misses the "
+                f"settling limit) at every admissible damping — Hamabe's eq. (32) with margin "
+                f"{req.hurwitz_margin:g} conflicts with 'no over-regulation' "
+                f"({stats['dynamics_checked']} candidates checked)")
+        cands = [("hurwitz_margin", with_hurwitz, "/", req.hurwitz_margin),
+                 ("irregularity", with_irr, "x", speed.irregularity)]
+    for name, make, how, value in cands:
+        x = _relax(spec, req, stage, make)
+        if x is None:
+            continue
+        if how == "x" and value is not None:
+            moves.append(f"{name} {value:g} -> {value * x:.4g} (x{x:.3g})")
+        elif how == "/" and value:
+            moves.append(f"{name} {value:g} -> {value / x:.4g}")
+        elif how == "widen x":
+            moves.append(f"{name} widened x{x:.3g}")
+    tail = ("; it becomes feasible if one of these moves: " + "; ".join(moves)) if moves \
+        else "; no single requirement within a factor of 100 makes it feasible"
+    return head + tail
+
+
+def sensitivities(spec: Spec, req: Requirements, objective: float) -> list[dict]:
+    """Finite-difference sensitivity of the continuous bound to each requirement (+1 %)."""
+    out = []
+    speed, mat = spec.speed, spec.material
+
+    def bound_of(s, r):
+        grid = Grid.build(s)
+        km = KappaModel.build(s, mass_grid(r), grid.alpha)
+        lo, hi, _ = km.statics_interval(*k2_limits(s, r), s.speed.irregularity)
+        b = continuous_bound(s, r, km, lo, hi)
+        return None if b is None else b["objective"]
+
+    if req.objective not in ("moving_mass", "spring_mass"):
+        return out
+    base = bound_of(spec, req)
+    if base is None:
+        return out
+    trials = [
+        ("allowable shear stress k_s", replace(spec, material=replace(
+            mat, allowable_shear_stress=mat.allowable_shear_stress * 1.01)), req),
+        ("irregularity", replace(spec, speed=replace(
+            speed, irregularity=speed.irregularity * 1.01)), req),
+        ("mean speed", replace(spec, speed=replace(speed, omega_mean=speed.omega_mean * 1.01)),
+         req),
+        ("k^2 margin", spec, replace(req, k2_margin=req.k2_margin * 1.01)),
+    ]
+    for name, s, r in trials:
+        b = bound_of(s, r)
+        if b is None:
+            continue
+        pct = 100.0 * (b / base - 1.0)
+        out.append({"requirement": name, "change_percent": 1.0,
+                    "objective_change_percent": pct,
+                    "text": f"+1 % on {name} -> {pct:+.2f} % {req.objective.replace('_', ' ')}"})
+    return out

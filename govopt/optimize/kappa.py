@@ -1,0 +1,137 @@
+"""The shaft governor at fixed pendulum mass as an affine function of the spring stiffness.
+
+With the free length set by equilibrium at the normal configuration and mean speed (Hamabe,
+Example 1), every static quantity the design constraints need is affine in the stiffness
+``kappa`` at fixed pendulum mass ``m``:
+
+* spring moment ``M_f = kappa (A - B l0)`` with ``kappa l0 = (kappa A_n - M_n) / B_n`` (eqs. 2-3),
+  so ``M_f = kappa (A - B A_n / B_n) + M_n B / B_n``;
+* spring force ``F = 2 kappa (l - A_n / B_n) + 2 M_n / B_n`` (eq. 2);
+* equilibrium speed squared ``omega^2`` (eq. 12: numerator affine, denominator independent of
+  kappa);
+* restoring stiffness ``k^2`` (eqs. 18-20, plus the reaction slope, itself affine in omega^2).
+
+So each requirement "for every configuration" becomes an interval of admissible ``kappa``, in
+closed form, for many masses at once. This is what makes the design search exhaustive and fast.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..analysis import statics
+from ..model import linkage
+from ..spec import Spec
+
+
+@dataclass(frozen=True)
+class Affine:
+    """``value = kappa * x + y`` (arrays broadcasting over masses and configurations)."""
+
+    x: np.ndarray
+    y: np.ndarray
+
+    def __call__(self, kappa):
+        return kappa * self.x + self.y
+
+
+def _interval(lo, hi, aff: Affine, bound, sense: str):
+    """Intersect ``[lo, hi]`` with ``{kappa : aff(kappa) sense bound}`` along the last axis."""
+    x, rhs = aff.x, bound - aff.y
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = rhs / x
+    if sense == ">=":
+        lo = np.maximum(lo, np.max(np.where(x > 0, k, -np.inf), axis=-1))
+        hi = np.minimum(hi, np.min(np.where(x < 0, k, np.inf), axis=-1))
+        bad = np.any((x == 0) & (rhs > 0), axis=-1)
+    else:
+        hi = np.minimum(hi, np.min(np.where(x > 0, k, np.inf), axis=-1))
+        lo = np.maximum(lo, np.max(np.where(x < 0, k, -np.inf), axis=-1))
+        bad = np.any((x == 0) & (rhs < 0), axis=-1)
+    return np.where(bad, np.inf, lo), hi
+
+
+@dataclass(frozen=True)
+class KappaModel:
+    """Statics of the governor for masses ``m`` (shape (M, 1)) at configurations ``alpha``."""
+
+    spec: Spec
+    m: np.ndarray
+    alpha: np.ndarray
+    omega2: Affine
+    k2: Affine
+    force: Affine
+    l0: Affine  # kappa * l0 is affine: stored as (x, y) of kappa*l0
+    inertia: np.ndarray
+
+    @classmethod
+    def build(cls, spec: Spec, m, alpha) -> KappaModel:
+        g, an = spec.geometry, spec.analysis
+        m = np.asarray(m, dtype=float).reshape(-1, 1)
+        alpha = np.asarray(alpha, dtype=float)
+        w0 = spec.speed.omega_mean
+        M_n = statics.required_spring_moment(spec, g.alpha_normal, w0, m)  # (M, 1)
+        A_n, B_n, _, _ = linkage.spring_moment_coefficients(g.alpha_normal, g.a, g.b, an.geometry)
+        A, B, dA, dB = linkage.spring_moment_coefficients(alpha, g.a, g.b, an.geometry)
+        mf = Affine(A - B * A_n / B_n, M_n * B / B_n)
+        dmf = Affine(dA - dB * A_n / B_n, M_n * dB / B_n)
+        C_f, C_i = statics.reaction(spec, alpha)
+        lever = m * g.a * g.rho * np.sin(alpha)
+        if an.reaction_speed == "mean":
+            w2 = Affine(mf.x / lever, (mf.y + C_f + w0**2 * C_i) / lever)
+        else:
+            w2 = Affine(mf.x / (lever - C_i), (mf.y + C_f) / (lever - C_i))
+        inertia = g.rho**2 * m
+        cos_term = m * g.a * g.rho * np.cos(alpha)
+        slope_x = dmf.x - w2.x * cos_term
+        slope_y = dmf.y - w2.y * cos_term
+        if an.reaction_slope:
+            s_f = statics.reaction_slope(spec, alpha, 0.0)
+            s_i = statics.reaction_slope(spec, alpha, 1.0) - s_f  # per unit omega^2
+            if an.reaction_speed == "mean":
+                slope_y = slope_y + s_f + w0**2 * s_i
+            else:
+                slope_x = slope_x + w2.x * s_i
+                slope_y = slope_y + s_f + w2.y * s_i
+        ell = linkage.half_length(alpha, g.a, g.b)
+        force = Affine(2.0 * (ell - A_n / B_n) + 0.0 * m, 2.0 * M_n / B_n + 0.0 * alpha)
+        l0 = Affine(A_n / B_n + 0.0 * m, -M_n / B_n)
+        return cls(spec, m, alpha, w2, Affine(slope_x / inertia, slope_y / inertia), force,
+                   l0, inertia)
+
+    def free_half_length(self, kappa):
+        """``l0 = A_n / B_n - M_n / (B_n kappa)`` (Hamabe, Example 1)."""
+        return self.l0.x + self.l0.y / kappa
+
+    def irregularity_affine(self, i_inner: int, i_outer: int, delta: float) -> Affine:
+        """``delta_0 <= delta`` as ``w_a^2 (2 - delta)^2 - w_i^2 (2 + delta)^2 <= 0``."""
+        x = self.omega2.x
+        y = self.omega2.y
+        ca, ci = (2.0 - delta) ** 2, (2.0 + delta) ** 2
+        return Affine(ca * x[..., i_outer] - ci * x[..., i_inner],
+                      ca * y[..., i_outer] - ci * y[..., i_inner])
+
+    def statics_interval(self, k2_low: float, k2_high: float, delta: float,
+                         i_inner: int = 0, i_outer: int = -1):
+        """Admissible ``kappa`` per mass: ``k2_low <= k^2 <= k2_high`` and ``omega^2 > 0`` at every
+        configuration, irregularity ``<= delta``, spring in tension at the innermost
+        configuration, positive free length. Returns ``(lo, hi)``, empty where ``lo > hi``; and
+        a dict of the interval each requirement alone allows (for diagnoses)."""
+        M = self.m.shape[0]
+        start = (np.zeros(M), np.full(M, np.inf))
+        parts = {
+            "k^2 > 0 (stability)": _interval(*start, self.k2, k2_low, ">="),
+            "k^2 < omega0^2 (no resonance)": _interval(*start, self.k2, k2_high, "<="),
+            "equilibrium speed > 0": _interval(*start, self.omega2, 0.0, ">="),
+            "spring in tension": _interval(*start, Affine(self.force.x, self.force.y), 0.0,
+                                           ">="),
+            "free length > 0": _interval(*start, Affine(self.l0.x, self.l0.y), 0.0, ">="),
+        }
+        irr = self.irregularity_affine(i_inner, i_outer, delta)
+        parts["irregularity"] = _interval(*start, Affine(irr.x[:, None], irr.y[:, None]), 0.0,
+                                          "<=")
+        lo = np.max([p[0] for p in parts.values()], axis=0)
+        hi = np.min([p[1] for p in parts.values()], axis=0)
+        return lo, hi, parts
