@@ -1,11 +1,13 @@
 """govopt: design optimisation of governor springs (Hamabe's shaft governor and relatives)."""
 
 from .errors import DesignError, GovoptError, InfeasibleError
+from .analysis.transient import transient
 from .evaluation import evaluate
+from .optimize.design import design
 from .result import Check, Result
 from .spec import Spec, SpecError, load_spec, parse_spec
 
 __version__ = "0.1.0"
 
 __all__ = ["Check", "DesignError", "GovoptError", "InfeasibleError", "Result", "Spec",
-           "SpecError", "evaluate", "load_spec", "parse_spec", "__version__"]
+           "SpecError", "design", "evaluate", "transient", "load_spec", "parse_spec", "__version__"]

@@ -103,6 +103,18 @@ def design(
                 typer.echo(f"wrote {path}")
 
 
+@app.command()
+def bench(
+    quick: Annotated[bool, typer.Option(help="Smaller problem sizes.")] = False,
+) -> None:
+    """Measure speed against a baseline timed in the same run (design, GP, transient)."""
+    from .report import bench as b
+
+    out = {"design": b.design_bench(DEFAULT_DESIGN), "gp_resolve": b.gp_bench(10 if quick else 30),
+           "transient": b.transient_bench(10_000 if quick else 100_000, 20 if quick else 100)}
+    typer.echo(json.dumps(out, indent=2, default=float))
+
+
 def main() -> None:
     """Console-script entry point."""
     try:

@@ -1,0 +1,156 @@
+"""Nonlinear reference for a load change: the full pendulum equation coupled to the flywheel.
+
+Hamabe linearises (Part III, eqs. 23-28): ``sin xi = xi``, ``cos xi = 1``, and drops powers of
+``xi`` and ``eta`` above the first. This module keeps everything::
+
+    I alpha'' + f alpha' = M_z(alpha, omega) - M_f(alpha) - M_r0(alpha, omega)
+    I_fw omega' = (dT/dalpha) (alpha - alpha0)
+
+* ``M_z = omega^2 m a rho sin(alpha)`` (eq. 1), ``M_f`` the spring moment with the spec's
+  geometry (exact eq. 2 by default, the series eq. 3 for the paper's model), ``M_r0`` the valve
+  gear's mean reaction (eq. 11, :func:`statics.reaction`) with its inertia part at the local or
+  the mean speed as the spec says. With ``reaction_slope = false`` the reaction is frozen at its
+  value in the new configuration ``alpha0``: Hamabe's own assumption in Part III ("put A0 in place
+  of M_r ... constant for all configurations"), which is what leaving ``dM_r0/dalpha`` out of
+  ``k^2`` linearises.
+* The engine torque is taken linear in ``alpha`` about the new equilibrium, where it balances the
+  new load: ``T - T_load = (dT/dalpha)(alpha - alpha0)``. Hamabe notes the T-curve (Fig. 10) is
+  very nearly straight, and only ``dT/dalpha`` is given, so this is the engine model of the
+  linear theory; the nonlinearity studied here is the governor's.
+* Start at the old equilibrium: ``alpha(0) = alpha1``, ``alpha'(0) = 0``,
+  ``omega(0) = omega1 (1 + eps)`` with ``omega1`` from the characteristic curve (eq. 12).
+  The end state, if the motion is stable, is ``(alpha0, omega0)`` from the same curve.
+
+Integrated with ``scipy.integrate.solve_ivp`` (DOP853, rtol 1e-10, atol 1e-12 by default).
+:func:`linearisation_error` compares with the exact solution of the linear model (eq. 28, by
+``expm``; :func:`govopt.analysis.friction.linear_response`). Its error is second order in the
+load change (the first neglected terms are ``xi^2``, ``xi eta`` and ``eta^2``), so relative to
+``|xi0|`` it grows linearly with the load change -- except that the valve-gear table is
+interpolated linearly, so ``M_r0`` has a kink at each table row; if ``alpha0`` is a row (as in
+Example 3) the two sides have different slopes and :func:`statics.reaction_slope` takes their
+mean, which leaves a first-order error floor proportional to the jump in slope.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from ..model import linkage
+from ..spec import LoadChange, Spec
+from . import statics
+from .friction import LoadChangeModel, linear_response, load_change_model
+
+__all__ = ["NonlinearResult", "linearisation_error", "net_moment", "nonlinear_load_change"]
+
+
+def net_moment(spec: Spec, sd: statics.SpringDesign, alpha, omega, alpha_frozen=None):
+    """``M_z - M_f - M_r0`` on one pendulum at ``(alpha, omega)`` (eqs. 1, 2/3, 11, 12), N m.
+
+    ``alpha_frozen``: evaluate the valve gear's reaction there instead of at ``alpha`` (the
+    paper's constant-reaction assumption).
+    """
+    g = spec.geometry
+    M_z = linkage.centrifugal_moment(alpha, omega, sd.m, g.a, g.rho)
+    M_f = linkage.spring_moment(alpha, sd.kappa, sd.l0, g.a, g.b, spec.analysis.geometry)
+    C_f, C_i = statics.reaction(spec, alpha if alpha_frozen is None else alpha_frozen)
+    w_r = spec.speed.omega_mean if spec.analysis.reaction_speed == "mean" else omega
+    return M_z - M_f - (C_f + w_r**2 * C_i)
+
+
+@dataclass(frozen=True)
+class NonlinearResult:
+    """Nonlinear load change (SI): ``alpha(t)``, ``alpha'(t)``, ``omega(t)`` at times ``t``."""
+
+    t: np.ndarray
+    alpha: np.ndarray
+    alpha_dot: np.ndarray
+    omega: np.ndarray
+    model: LoadChangeModel  # the linear model of the same load change (alpha0, omega0, ...)
+    nfev: int
+
+    @property
+    def xi(self) -> np.ndarray:
+        """``alpha - alpha0``."""
+        return self.alpha - self.model.alpha0
+
+    @property
+    def eta(self) -> np.ndarray:
+        """``omega - omega0``."""
+        return self.omega - self.model.omega0
+
+    def to_dict(self) -> dict:
+        return {"model": "full pendulum equation + linear engine torque, solve_ivp",
+                "linear_model": self.model.to_dict(), "t_s": self.t.tolist(),
+                "xi_rad": self.xi.tolist(), "xi_dot_rad_per_s": self.alpha_dot.tolist(),
+                "omega_rad_per_s": self.omega.tolist(), "nfev": self.nfev}
+
+
+def _default_times(m: LoadChangeModel, points: int = 2001) -> np.ndarray:
+    A = np.array([[0.0, 1.0, 0.0], [-m.k2, -m.f / m.I, m.C / m.I], [-m.R, 0.0, 0.0]])
+    lam = np.linalg.eigvals(A)
+    slow = float(np.min(np.abs(lam.real[lam.real != 0]))) if np.any(lam.real != 0) else 1.0
+    return np.linspace(0.0, 12.0 / slow, points)
+
+
+def nonlinear_load_change(spec: Spec, sd: statics.SpringDesign | None = None,
+                          load_change: LoadChange | None = None, t=None, *,
+                          dashpot: float | None = None, method: str = "DOP853",
+                          rtol: float = 1e-10, atol: float = 1e-12) -> NonlinearResult:
+    """Integrate the full equations of a load change (see the module docstring).
+
+    ``t``: output times (default: 12 time constants of the slowest linear mode, 2001 points).
+    ``dashpot`` defaults to the design's (0 when absent). Friction is not modelled here.
+    """
+    sd = sd or statics.spring_design(spec)
+    m = load_change_model(spec, sd, load_change, dashpot=dashpot, friction_moment=0.0)
+    t = _default_times(m) if t is None else np.asarray(t, dtype=float)
+    frozen = None if spec.analysis.reaction_slope else m.alpha0
+    eng = spec.engine
+    I, f, a0 = m.I, m.f, m.alpha0
+    Tslope_over_Ifw = eng.torque_slope / eng.flywheel_inertia
+
+    def rhs(_, y):
+        alpha, v, omega = y
+        acc = (float(net_moment(spec, sd, alpha, omega, frozen)) - f * v) / I
+        return (v, acc, Tslope_over_Ifw * (alpha - a0))
+
+    y0 = (m.alpha1, 0.0, m.omega1 * (1.0 + eng.insensibility))
+    sol = solve_ivp(rhs, (float(t[0]), float(t[-1])), y0, method=method, t_eval=t, rtol=rtol,
+                    atol=atol, dense_output=False)
+    if not sol.success:
+        raise RuntimeError(f"nonlinear load change: solve_ivp failed: {sol.message}")
+    return NonlinearResult(t=sol.t, alpha=sol.y[0], alpha_dot=sol.y[1], omega=sol.y[2],
+                           model=m, nfev=int(sol.nfev))
+
+
+def linearisation_error(spec: Spec, sd: statics.SpringDesign | None = None,
+                        load_change: LoadChange | None = None, t=None, **kwargs) -> dict:
+    """Compare the nonlinear reference with the linear model's ``xi(t)`` (eq. 28, exact).
+
+    Both start from the same state; the linear model is :func:`load_change_model` (the exact
+    linearisation of :func:`nonlinear_load_change` about ``(alpha0, omega0)``). Returns SI:
+    ``xi0``, the largest ``|xi_nonlinear - xi_linear|`` over ``t`` (absolute and relative to
+    ``|xi0|``), the time it occurs, the largest speed error difference (absolute, and relative to
+    the largest ``|eta|`` of the linear solution) and the nonlinear final state.
+    """
+    nl = nonlinear_load_change(spec, sd, load_change, t, **kwargs)
+    m = nl.model
+    lin = linear_response(m.I, m.f, m.k2, m.C, m.R, m.xi0, m.eta0, nl.t)
+    dxi = nl.xi - lin[:, 0]
+    deta = nl.eta - lin[:, 2]
+    k = int(np.argmax(np.abs(dxi)))
+    eta_scale = float(np.max(np.abs(lin[:, 2]))) or 1.0
+    return {
+        "load_change_rad": m.alpha0 - m.alpha1, "xi0_rad": m.xi0, "eta0_rad_per_s": m.eta0,
+        "max_abs_error_rad": float(abs(dxi[k])),
+        "max_rel_error": float(abs(dxi[k]) / abs(m.xi0)) if m.xi0 else math.nan,
+        "t_max_error_s": float(nl.t[k]),
+        "max_abs_speed_error_rad_per_s": float(np.max(np.abs(deta))),
+        "max_rel_speed_error": float(np.max(np.abs(deta)) / eta_scale),
+        "final_xi_rad": float(nl.xi[-1]), "final_eta_rad_per_s": float(nl.eta[-1]),
+        "t_end_s": float(nl.t[-1]), "nfev": nl.nfev,
+    }
