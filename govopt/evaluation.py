@@ -68,6 +68,17 @@ def evaluate(spec: Spec, design: Design | None = None) -> Result:
             if req is not None and req.max_settling_time is not None:
                 checks.append(Check(f"settling time: {lc['name']}", lc["settling_time_s"],
                                     req.max_settling_time, "<=", "s", "Hamabe Part III"))
+    if spec.engine is not None and spec.load_changes and design.friction_moment is not None:
+        from .analysis import friction  # only when the design has friction (model what is asked)
+
+        runs = [friction.friction_load_change(spec, sd, lc) for lc in spec.load_changes]
+        dynamics["friction"] = [r.to_dict() for r in runs]
+        for lc, r in zip(spec.load_changes, runs, strict=True):
+            xi0 = lc.alpha_from - lc.alpha_to
+            past = max(0.0, -float(np.sign(xi0)) * float(r.to_dict()["first_stroke_end_rad"]))
+            checks.append(Check(f"friction: no over-regulation after the first stroke: {lc.name}",
+                                past, 0.0, "<=", "rad",
+                                "Hamabe eqs. (42)-(46)", scale=abs(lc.alpha_from - lc.alpha_to)))
     if req is not None:
         checks += requirement_checks(spec, req, sd, props)
     return Result(spec=spec, design=design, spring=sd, statics=char, spring_properties=props,
