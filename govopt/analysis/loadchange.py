@@ -39,8 +39,10 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
     """Roots, Hurwitz margin, over-regulation, settling and a response table (SI, JSON-ready)."""
     a, x, k2 = coefficients(spec, sd, lc, f)
     res = tr.analyse(*a, *x, band=spec.analysis.settling_band)
-    horizon = res.settling_time if np.isfinite(res.settling_time) else 10.0 / max(
-        1e-9, float(np.min(np.abs(res.roots.real))) or 1.0)
+    roots = np.asarray(res.roots, dtype=complex)
+    slowest = float(np.min(np.abs(roots.real)))
+    horizon = res.settling_time if np.isfinite(res.settling_time) else (
+        10.0 / slowest if slowest > 0 else 10.0 * 2 * np.pi / max(float(np.max(roots.imag)), 1e-9))
     t = np.linspace(0.0, 1.5 * horizon, samples)
     xi = tr.transient(*a, *x, t)
     return {
@@ -50,7 +52,7 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
         "coefficients": {"a0": a[0], "a1": a[1], "a2": a[2], "a3": a[3]},
         "initial_state": {"xi_rad": x[0], "xi_dot_rad_s": x[1], "xi_ddot_rad_s2": x[2]},
         "k2_rad2_s2": k2,
-        "roots_per_s": [[float(r.real), float(r.imag)] for r in res.roots],
+        "roots_per_s": [[float(r.real), float(r.imag)] for r in roots],
         "kind": res.kind,
         "hurwitz_margin": float(res.hurwitz_margin),
         "stable": bool(res.stable),
