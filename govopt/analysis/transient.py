@@ -1,0 +1,992 @@
+"""Load change of the shaft governor: the cubic, its stability and a robust transient.
+
+Hamabe, *Disturbing Actions of a Shaft Governor*, Part III.  After a sudden load change the
+pendulum's deviation ``xi`` from its new equilibrium obeys eq. (28)::
+
+    a0 xi''' + 3 a1 xi'' + 3 a2 xi' + a3 xi = 0,
+    a0 = I,  3 a1 = f (dash-pot),  3 a2 = I k^2,  a3 = 2 R omega0 a m rho sin(alpha0),
+
+with characteristic cubic (29) ``a0 s^3 + 3 a1 s^2 + 3 a2 s + a3 = 0``.
+
+Everything here is pure and vectorised: coefficients and initial conditions broadcast against
+each other over any leading shape (many designs at once); a 1-D array of times ``t`` is
+appended as the last axis of the result.
+
+Why not Hamabe's closed forms.  His constants, eqs. (38) and (40), divide by differences of the
+roots, and his root formulas (39), (41) are the trigonometric / Cardano solutions; all of them
+break down at and near repeated roots, which is exactly where a well-damped governor is tuned.
+Instead the response is ``xi(t) = [exp(A t) x0]_0`` for the companion matrix ``A`` of (28) and
+the state ``x0 = (xi, xi', xi'')(0)``, and ``exp(A t)`` is written in Newton (Opitz / Putzer)
+form, valid for *any* eigenvalues ``l1, l2, l3`` including repeated ones::
+
+    exp(A t) = f[l1] I + f[l1,l2] (A - l1 I) + f[l1,l2,l3] (A - l1 I)(A - l2 I),
+
+where ``f[...]`` are divided differences of ``s -> exp(s t)``.  They are computed without any
+division by a small difference of nodes: two-node differences as ``exp(mid) sinh(h)/h``, and
+three-node differences from a Taylor series about the centroid when the nodes are within unit
+distance (in ``z = l t``), otherwise by the usual recurrence divided by the *largest* node
+distance (>= 1), which cannot amplify rounding.  The only inputs from the roots are the roots
+themselves, so the result is as accurate as the roots are *backward* stable (their Vieta
+coefficients match the cubic's), not as accurate as they are forward accurate -- which is what
+makes the method insensitive to (near-)repeated roots.
+"""
+
+from __future__ import annotations
+
+import cmath
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+__all__ = [
+    "TransientResult",
+    "TransientSummary",
+    "analyse",
+    "analyse_many",
+    "classify",
+    "cubic_roots",
+    "discriminant",
+    "hamabe_coefficients",
+    "hamabe_initial_conditions",
+    "hurwitz_margin",
+    "is_stable",
+    "over_regulation_many",
+    "transient",
+    "transient_derivatives",
+]
+
+_EPS = float(np.finfo(float).eps)
+_BLOCK = 1 << 15  # elements per evaluation block (keeps temporaries in cache)
+_SERIES_TERMS = 20  # Taylor terms of the 3-node divided difference (|h| <= 2/3: error < 1e-20)
+_PER_PERIOD = 24  # event-search grid points per period of the fastest oscillation
+_EFOLDS = 4.0  # default horizon: ln(1/band) + this many e-folds of the slowest mode
+
+
+def _floats(*xs):
+    return np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in xs))
+
+
+# --------------------------------------------------------------------------------------------
+# Coefficients, initial conditions, stability
+# --------------------------------------------------------------------------------------------
+
+
+def hamabe_coefficients(I, f, k2, R, omega0, a, m, rho, alpha0):
+    """Coefficients ``(a0, a1, a2, a3)`` of Hamabe's eq. (28) from the design quantities.
+
+    ``a0 = I``, ``3 a1 = f``, ``3 a2 = I k^2``, ``a3 = 2 R omega0 a m rho sin(alpha0)``
+    (Hamabe, Disturbing Actions of a Shaft Governor, eqs. (27)-(28)).  Any consistent units.
+
+    >>> m = 12 / 981
+    >>> [round(float(c), 2) for c in hamabe_coefficients(144 * m, 72, 360, 300 / 43, 25.1, 18,
+    ...                                                      m, 12, np.radians(64 + 40 / 60))]
+    [1.76, 24.0, 211.38, 836.39]
+    """
+    I, f, k2, R, omega0, a, m, rho, alpha0 = _floats(I, f, k2, R, omega0, a, m, rho, alpha0)
+    return I, f / 3.0, I * k2 / 3.0, 2.0 * R * omega0 * a * m * rho * np.sin(alpha0)
+
+
+def hamabe_initial_conditions(a0, a2, a3, R, xi0, eta0):
+    """Initial state ``(xi(0), xi'(0), xi''(0))`` for a sudden load change (Hamabe, Part III).
+
+    ``xi(0) = alpha1 - alpha0``, ``xi'(0) = 0`` and ``a0 xi''(0) = (a3 / R) eta0 - 3 a2 xi(0)``
+    with ``eta0 = omega1' - omega0`` the speed error (Hamabe, Disturbing Actions of a Shaft
+    Governor, the relations preceding eq. (38)).
+
+    >>> x = hamabe_initial_conditions(1.76, 211.2, 840.0, 300 / 43, -0.128, -0.4)
+    >>> [round(float(v), 3) for v in x]
+    [-0.128, 0.0, 18.716]
+    """
+    a0, a2, a3, R, xi0, eta0 = _floats(a0, a2, a3, R, xi0, eta0)
+    xi_ddot0 = ((a3 / R) * eta0 - 3.0 * a2 * xi0) / a0
+    return xi0, np.zeros_like(xi0), xi_ddot0
+
+
+def hurwitz_margin(a0, a1, a2, a3):
+    """Hurwitz margin ``9 a1 a2 / (a0 a3) - 1`` of the cubic (29).
+
+    Hamabe, Disturbing Actions of a Shaft Governor, eq. (32): with all coefficients positive the
+    governor is stable iff ``9 a1 a2 > a0 a3``, i.e. iff this margin is positive.  ``a3 = 0``
+    gives ``+-inf`` (or nan for ``a1 a2 = 0``), without a warning.
+
+    >>> round(float(hurwitz_margin(1.76, 24, 211.2, 840)), 4)   # Example 3, case a
+    29.8571
+    """
+    a0, a1, a2, a3 = _floats(a0, a1, a2, a3)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return 9.0 * a1 * a2 / (a0 * a3) - 1.0
+
+
+def is_stable(a0, a1, a2, a3):
+    """Asymptotic stability of eq. (28): all coefficients of one sign and ``9 a1 a2 > a0 a3``.
+
+    Hamabe, Disturbing Actions of a Shaft Governor, eq. (32) (Hurwitz).  The products are
+    compared directly, so no division is involved.  The boundary (margin exactly 0: an undamped
+    oscillation) is *not* stable.
+    """
+    a0, a1, a2, a3 = _floats(a0, a1, a2, a3)
+    sgn = np.sign(a0)
+    b1, b2, b3 = sgn * a1, sgn * a2, sgn * a3
+    return (sgn != 0) & (b1 > 0) & (b2 > 0) & (b3 > 0) & (9.0 * b1 * b2 > np.abs(a0) * b3)
+
+
+def discriminant(a0, a1, a2, a3):
+    """Hamabe's discriminant ``G^2 + 4 H^3`` of the cubic (29), eq. (37).
+
+    With ``y = a0 s + a1`` (eq. 33) the cubic becomes ``y^3 + 3 H y + G = 0`` with
+    ``H = a0 a2 - a1^2`` and ``G = a0^2 a3 - 3 a0 a1 a2 + 2 a1^3`` (eq. 34).  Eq. (37): a pair of
+    complex roots iff ``G^2 + 4 H^3 > 0``; three distinct real roots iff ``< 0``; a repeated root
+    iff ``= 0``.  The classical discriminant of (29) is ``-27 (G^2 + 4 H^3) / a0^2``.
+
+    Evaluated from the coefficients this suffers cancellation near repeated roots; use
+    :func:`classify` for a decision with a stated tolerance.
+
+    >>> float(discriminant(1.0, 1.0, 1.0, 1.0))   # triple root s = -1
+    0.0
+    """
+    a0, a1, a2, a3 = _floats(a0, a1, a2, a3)
+    H = a0 * a2 - a1 * a1
+    G = a0 * a0 * a3 - 3.0 * a0 * a1 * a2 + 2.0 * a1**3
+    return G * G + 4.0 * H**3
+
+
+# --------------------------------------------------------------------------------------------
+# Roots
+# --------------------------------------------------------------------------------------------
+
+
+def _poly(c, s):
+    return ((c[0] * s + 3.0 * c[1]) * s + 3.0 * c[2]) * s + c[3]
+
+
+def _dpoly(c, s):
+    return (3.0 * c[0] * s + 6.0 * c[1]) * s + 3.0 * c[2]
+
+
+def _vieta_error(c, r):
+    """Componentwise relative backward error of a root triple (rows of r) against the cubic."""
+    r1, r2, r3 = r[:, 0], r[:, 1], r[:, 2]
+    a0, a1, a2, a3 = c
+    tiny = np.finfo(float).tiny
+    e1 = np.abs(r1 + r2 + r3 + 3.0 * a1 / a0) / (np.abs(r1) + np.abs(r2) + np.abs(r3) + tiny)
+    p12, p13, p23 = r1 * r2, r1 * r3, r2 * r3
+    e2 = np.abs(p12 + p13 + p23 - 3.0 * a2 / a0) / (np.abs(p12) + np.abs(p13) + np.abs(p23) + tiny)
+    p = p12 * r3
+    e3 = np.abs(p + a3 / a0) / (np.abs(p) + np.abs(a3 / a0) + tiny)
+    return np.maximum(np.maximum(e1, e2), e3)
+
+
+def _roots_flat(c, polish):
+    """Roots of the rows of c = (a0, a1, a2, a3) (each shape (n,)), unsorted, (n, 3) complex."""
+    n = c.shape[1]
+    out = np.full((n, 3), np.nan + 0j)
+    with np.errstate(all="ignore"):
+        m2, m1, m0 = -3.0 * c[1] / c[0], -3.0 * c[2] / c[0], -c[3] / c[0]
+    ok = np.isfinite(m2) & np.isfinite(m1) & np.isfinite(m0)
+    if not ok.any():
+        return out
+    cc = c[:, ok]
+    M = np.zeros((cc.shape[1], 3, 3))
+    M[:, 0, 0], M[:, 0, 1], M[:, 0, 2] = m2[ok], m1[ok], m0[ok]
+    M[:, 1, 0] = 1.0
+    M[:, 2, 1] = 1.0
+    r0 = np.linalg.eigvals(M).astype(complex)  # balanced QR: backward stable
+    r = r0.copy()
+    cb = cc[:, :, None]
+    with np.errstate(all="ignore"):
+        for _ in range(polish):
+            p = _poly(cb, r)
+            step = p / _dpoly(cb, r)
+            new = r - step
+            better = np.isfinite(new) & (np.abs(_poly(cb, new)) < np.abs(p))
+            r = np.where(better, new, r)
+        # keep the polished triple only where it is also the better factorisation (guards
+        # against two polished roots of a close pair collapsing onto one).
+        keep = _vieta_error(cc, r) <= _vieta_error(cc, r0)
+    r = np.where(keep[:, None], r, r0)
+    # real coefficients: one real root and a conjugate pair, or three real roots
+    order = np.argsort(r.imag, axis=1)
+    r = np.take_along_axis(r, order, axis=1)
+    pair = r[:, 2].imag > 0
+    r[:, 1] = np.where(pair, r[:, 1].real + 0j, r[:, 1])
+    r[:, 0] = np.where(pair, np.conj(r[:, 2]), r[:, 0])
+    out[ok] = r
+    return out
+
+
+def cubic_roots(a0, a1, a2, a3, *, polish=3):
+    """Roots of Hamabe's characteristic cubic (29) ``a0 s^3 + 3 a1 s^2 + 3 a2 s + a3``.
+
+    Returns a complex array of shape ``broadcast(a0, a1, a2, a3).shape + (3,)``, each triple
+    sorted by real part, then imaginary part (a conjugate pair is exactly conjugate, a real root
+    has imaginary part exactly 0).  Method: eigenvalues of the balanced companion matrix (one
+    stacked LAPACK call), then up to ``polish`` Newton steps on the cubic itself, each accepted
+    only if it lowers the residual, and the polished triple kept only if its Vieta coefficients
+    match the cubic at least as well.  This handles stiff spreads (roots 1e-5 .. 1e5) with small
+    relative error in every root; roots of a cluster of multiplicity m are, unavoidably, only
+    accurate to about ``eps**(1/m)``, but the triple stays backward stable, which is all that
+    :func:`transient` needs.  Rows with ``a0 = 0`` or non-finite coefficients give nan.
+    (Hamabe, Disturbing Actions of a Shaft Governor, eq. (29); his (39), (41) are replaced.)
+
+    >>> np.round(cubic_roots(1.0, 2.0, 3.0, 4.0), 6)   # (s + 1)^2 (s + 4): double root to 1e-8
+    array([-4.+0.j, -1.+0.j, -1.+0.j])
+    """
+    a0, a1, a2, a3 = _floats(a0, a1, a2, a3)
+    shape = a0.shape
+    c = np.stack([x.reshape(-1) for x in (a0, a1, a2, a3)])
+    r = _roots_flat(c, polish)
+    r = np.sort(r, axis=-1)  # numpy orders complex lexicographically: real, then imag
+    return r.reshape(shape + (3,))
+
+
+def _pair_separations(r):
+    """Relative separations |ri - rj| / max(|ri|, |rj|) of the pairs (12, 13, 23), (..., 3)."""
+    pairs = ((0, 1), (0, 2), (1, 2))
+    seps = []
+    with np.errstate(invalid="ignore", divide="ignore"):
+        for i, j in pairs:
+            d = np.abs(r[..., i] - r[..., j])
+            s = np.maximum(np.abs(r[..., i]), np.abs(r[..., j]))
+            seps.append(np.where(d == 0, 0.0, d / s))
+    return np.stack(seps, axis=-1)
+
+
+def _classify_roots(r, rtol):
+    seps = _pair_separations(r)
+    repeated = (seps.min(axis=-1) <= rtol) | (seps.max(axis=-1) <= rtol ** (2.0 / 3.0))
+    cplx = np.abs(r.imag).max(axis=-1) > 0
+    bad = ~np.isfinite(r).all(axis=-1)
+    kind = np.where(repeated, "repeated", np.where(cplx, "complex", "real"))
+    return np.where(bad, "invalid", kind)
+
+
+def classify(a0, a1, a2, a3, rtol=1e-6):
+    """Kind of the roots of the cubic (29): ``"real"``, ``"complex"`` or ``"repeated"``.
+
+    Hamabe, Disturbing Actions of a Shaft Governor, eq. (37): the sign of ``G^2 + 4 H^3`` (see
+    :func:`discriminant`) separates three distinct real roots (< 0) from one real root and a
+    complex pair (> 0); zero means a repeated root.  Deciding "zero" needs a tolerance: the
+    roots are called repeated when they can be made to coincide by a relative perturbation of
+    the coefficients of about ``rtol**2``, i.e. when two roots agree to ``rtol`` relative, or
+    all three to ``rtol**(2/3)`` (a double root splits like the square root of a coefficient
+    perturbation, a triple root like the cube root).  The default ``rtol = 1e-6`` sits well
+    above the rounding noise of an exactly repeated root (``sqrt(eps)``, ``eps**(1/3)``).  Outside
+    the tolerance the discriminant's sign is read from the (accurate) roots, equivalent to (37)
+    but free of its cancellation.  Returns a str for scalar input, else an array of str;
+    ``"invalid"`` for rows with ``a0 = 0`` or non-finite coefficients.
+
+    >>> classify(1.76, 24, 211.2, 840), classify(1.76, 15, 211.2, 840), classify(1, 1, 1, 1)
+    ('real', 'complex', 'repeated')
+    """
+    r = cubic_roots(a0, a1, a2, a3)
+    kind = _classify_roots(r, rtol)
+    return str(kind) if kind.ndim == 0 else kind
+
+
+# --------------------------------------------------------------------------------------------
+# Divided differences of exp, and the response
+# --------------------------------------------------------------------------------------------
+
+
+def _sinhc(h):
+    """sinh(h)/h for complex h, exact at 0."""
+    with np.errstate(all="ignore"):
+        out = np.sinh(h) / h
+    small = np.abs(h) < 1e-3
+    if small.any():
+        h2 = h[small] ** 2
+        out[small] = 1.0 + h2 / 6.0 * (1.0 + h2 / 20.0 * (1.0 + h2 / 42.0))
+    return out
+
+
+def _tdd1(la, lb, t, close):
+    """``t * exp[la t, lb t]`` at the masked entries (nodes closer than 1 in ``z = l t``).
+
+    ``exp((za+zb)/2) sinh(h)/h`` with ``h = (zb-za)/2``: no cancellation, exact at ``h = 0``.
+    la, lb are per-row nodes (n,), t and close are (n, T).
+    """
+    rows = np.nonzero(close)[0]
+    tc = t[close]
+    za, zb = la[rows] * tc, lb[rows] * tc
+    h = 0.5 * (zb - za)
+    return tc * np.exp(za + h) * _sinhc(h)
+
+
+def _dd2_series(z1, z2, z3):
+    """exp[z1, z2, z3] for nodes within unit distance: Taylor series about the centroid.
+
+    exp[z1,z2,z3] = exp(c) sum_m H_m(h1,h2,h3)/(m+2)!, with h_i = z_i - c and H_m the complete
+    homogeneous symmetric polynomials (divided differences of z^(m+2)); with sum h_i = 0 they
+    obey H_m = -e2 H_{m-2} + e3 H_{m-3}.  |h_i| <= 2/3, so 20 terms reach 1e-20.
+    """
+    c = (z1 + z2 + z3) / 3.0
+    h1, h2, h3 = z1 - c, z2 - c, z3 - c
+    e2 = h1 * h2 + h1 * h3 + h2 * h3
+    e3 = h1 * h2 * h3
+    hm3 = np.zeros_like(c)
+    hm2 = np.zeros_like(c)
+    hm1 = np.ones_like(c)  # H_0
+    total = 0.5 * hm1
+    fact = 2.0
+    for m in range(1, _SERIES_TERMS):
+        hm = -e2 * hm2 + e3 * hm3
+        fact *= m + 2
+        total = total + hm / fact
+        hm3, hm2, hm1 = hm2, hm1, hm
+    return np.exp(c) * total
+
+
+def _eval_block(nodes, C, t):
+    """Newton-form response.  nodes (n,3) (l1, l2, l3), ordered so that (l1, l3) is the farthest
+    pair; C (n,J,6); t (n or 1, T).  Real or complex arrays (real roots stay real).
+
+    Returns (n, J, T): sum_k Re(C[..., k] * F_k) with F = (exp(z1), t exp[z1,z2],
+    t^2 exp[z1,z2,z3], exp(z2), t exp[z2,z3], exp(z3)), z_i = l_i t (the divided differences of
+    s -> exp(s t)); the derivative orders j > 0 use all six (see _Response).  Where two nodes are 1 or more apart (in z), the
+    first difference is ``(exp(zb) - exp(za)) / (zb - za)``; closer, it is ``exp(mid) sinh(h)/h``.
+    Since |z3 - z1| is the largest node distance, the recurrence
+    ``exp[z1,z2,z3] = (exp[z2,z3] - exp[z1,z2]) / (z3 - z1)`` is used only where that distance
+    is >= 1 (so it cannot amplify rounding), the centroid series where all three nodes are
+    within distance 1.  No division by a small node difference occurs anywhere.
+    """
+    n = nodes.shape[0]
+    t = np.broadcast_to(t, (n, t.shape[-1]))
+    l1, l2, l3 = nodes[:, 0], nodes[:, 1], nodes[:, 2]
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        if np.iscomplexobj(nodes):
+            # one real node and a conjugate pair: exp(l t) = exp(Re l t)(cos qt + i sgn sin qt)
+            q = np.abs(nodes.imag).max(axis=1)
+            qt = q[:, None] * t
+            cq, sq = np.cos(qt), np.sin(qt)
+            es = []
+            for lk in (l1, l2, l3):
+                ex = np.exp(lk.real[:, None] * t)
+                sg = np.sign(lk.imag)[:, None]
+                e = np.empty(t.shape, complex)
+                e.real = ex * cq
+                e.imag = (ex * sq) * sg
+                real = sg[:, 0] == 0
+                if real.any():
+                    e.real[real] = ex[real]
+                es.append(e)
+            e1, e2, e3 = es
+        else:
+            e1, e2, e3 = (np.exp(lk[:, None] * t) for lk in (l1, l2, l3))
+        f1 = (e2 - e1) * (1.0 / (l2 - l1))[:, None]  # t exp[z1, z2]
+        g23 = (e3 - e2) * (1.0 / (l3 - l2))[:, None]  # t exp[z2, z3]
+        close = np.abs(l2 - l1)[:, None] * t < 1.0
+        if close.any():
+            f1[close] = _tdd1(l1, l2, t, close)
+        close = np.abs(l3 - l2)[:, None] * t < 1.0
+        if close.any():
+            g23[close] = _tdd1(l2, l3, t, close)
+        f2 = (g23 - f1) * (1.0 / (l3 - l1))[:, None]  # t^2 exp[z1, z2, z3]
+        close = np.abs(l3 - l1)[:, None] * t < 1.0
+        if close.any():
+            rows = np.nonzero(close)[0]
+            tc = t[close]
+            f2[close] = tc * tc * _dd2_series(l1[rows] * tc, l2[rows] * tc, l3[rows] * tc)
+        out = None
+        nterms = 3 if C.shape[1] == 1 else 6  # xi alone needs only e1, f1, f2
+        for k, F in enumerate((e1, f1, f2, e2, g23, e3)[:nterms]):
+            Ck = C[:, :, k, None]
+            if np.iscomplexobj(F):
+                term = Ck.real * F.real[:, None, :] - Ck.imag * F.imag[:, None, :]
+            else:
+                term = Ck * F[:, None, :]
+            out = term if out is None else out + term
+    return out
+
+
+def _node_order(roots):
+    """Per-row permutation of the roots into Newton nodes (l1, l2, l3): the farthest pair first
+    and last, the one with the larger real part (slower or growing mode) first."""
+    r = roots
+    dist = np.stack(
+        [np.abs(r[:, 0] - r[:, 1]), np.abs(r[:, 0] - r[:, 2]), np.abs(r[:, 1] - r[:, 2])], -1
+    )
+    pairs = np.array([[0, 2, 1], [0, 1, 2], [1, 0, 2]])  # (i, middle, k) for pairs 01, 02, 12
+    far = np.argmax(np.where(np.isfinite(dist), dist, -1.0), axis=1)
+    i, j, k = pairs[far].T
+    rows = np.arange(r.shape[0])
+    swap = r[rows, k].real > r[rows, i].real
+    first = np.where(swap, k, i)
+    last = np.where(swap, i, k)
+    return np.stack([first, j, last], axis=1)
+
+
+class _Response:
+    """Prepared analytic response of many designs (flattened), evaluable at any times."""
+
+    def __init__(self, c, d, roots, order):
+        # c: (4, n) coefficients, d: (3, n) initial state, roots: (n, 3) sorted ascending
+        self.c = c
+        self.roots = roots
+        self.order = order
+        self.nodes = np.take_along_axis(roots, _node_order(roots), axis=1)
+        a0, a1, a2, a3 = c
+        ds = [d[0], d[1], d[2]]
+        with np.errstate(all="ignore"):
+            for k in range(3, order + 3):
+                ds.append(-(3.0 * a1 * ds[k - 1] + 3.0 * a2 * ds[k - 2] + a3 * ds[k - 3]) / a0)
+        self.d = np.stack(ds, axis=-1)  # (n, order+3): xi^(k)(0), for signs and scales only
+        l1, l2, l3 = self.nodes[:, 0], self.nodes[:, 1], self.nodes[:, 2]
+        with np.errstate(all="ignore"):
+            # Newton coefficients of the initial state: x0, (A - l1) x0, (A - l1)(A - l2) x0
+            C0 = d[0].astype(complex)
+            C1 = d[1] - l1 * d[0]
+            C2 = d[2] - (l1 + l2) * d[1] + (l1 * l2) * d[0]
+            # complete homogeneous symmetric polynomials h_m of (l1), (l1,l2), (l1,l2,l3),
+            # m = -2 .. order (index m + 2): divided differences of s^m (Leibniz rule below)
+            zero, one = np.zeros_like(l1), np.ones_like(l1)
+            h1, h2, h3 = [zero, zero, one], [zero, zero, one], [zero, zero, one]
+            for m in range(1, order + 1):
+                h1.append(l1 * h1[-1])
+                h2.append(l2 * h2[-1] + h1[-1])
+                h3.append(l3 * h3[-1] + h2[-1])
+            # xi^(j)(t) = Re sum_k C_{k-1} sum_{m<=k} (s^j)[l1..lm] exp[lm..lk](t)   (Leibniz),
+            # so derivatives come from the exact initial state, not from a fast-mode-dominated
+            # A^j x0.  Terms ordered as F = (e1, f1, f2, e2, g23, e3), see _eval_block.
+            K = np.empty((self.n, order + 1, 6), complex)
+            for j in range(order + 1):
+                K[:, j, 0] = C0 * h1[j + 2]
+                K[:, j, 1] = C1 * h1[j + 2]
+                K[:, j, 2] = C2 * h1[j + 2]
+                K[:, j, 3] = C1 * h2[j + 1]
+                K[:, j, 4] = C2 * h2[j + 1]
+                K[:, j, 5] = C2 * h3[j]
+        self.C = K
+        self._split()
+
+    def _split(self):
+        # rows whose nodes are all real are evaluated in real arithmetic (about 3x faster)
+        real = (self.nodes.imag == 0).all(axis=1)
+        self._groups = (
+            (np.nonzero(real)[0], self.nodes.real, self.C.real),
+            (np.nonzero(~real)[0], self.nodes, self.C),
+        )
+
+    @classmethod
+    def build(cls, a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, order):
+        arrs = _floats(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0)
+        shape = arrs[0].shape
+        flat = np.stack([x.reshape(-1) for x in arrs])
+        roots = np.sort(_roots_flat(flat[:4], 3), axis=-1)
+        return cls(flat[:4], flat[4:], roots, order), shape
+
+    @property
+    def n(self):
+        return self.roots.shape[0]
+
+    def subset(self, idx):
+        new = object.__new__(_Response)
+        new.c, new.roots, new.order = self.c[:, idx], self.roots[idx], self.order
+        new.nodes, new.d, new.C = self.nodes[idx], self.d[idx], self.C[idx]
+        new._split()
+        return new
+
+    def __call__(self, t):
+        """Values (n, J, T): t is 1-D (common times) or (n, T) (per-design times)."""
+        t = np.asarray(t, dtype=float)
+        common = t.ndim == 1
+        T = t.shape[-1]
+        out = np.empty((self.n, self.order + 1, T))
+        step = max(1, _BLOCK // max(T, 1))
+        for rows, nodes, C in self._groups:
+            for s in range(0, rows.size, step):
+                r = rows[s : s + step]
+                tb = t[None, :] if common else t[r]
+                out[r] = _eval_block(nodes[r], C[r], tb)
+        return out
+
+
+class _ScalarResponse:
+    """The same Newton form for one design at one time, in Python complex arithmetic.
+
+    Used by the scalar root finders of :func:`analyse` (a numpy call per point costs ~20x
+    more).  Formulas and branch thresholds are those of :func:`_eval_block`; the tests check
+    the two paths against each other (analyse vs analyse_many) and against references.
+    """
+
+    def __init__(self, nodes, K):
+        self.l = [complex(v) for v in nodes]
+        self.K = [[complex(v) for v in row] for row in K]
+
+    @staticmethod
+    def _tdd1(la, lb, t, ea, eb):
+        if abs(lb - la) * t < 1.0:
+            h = 0.5 * (lb - la) * t
+            sh = 1.0 + h * h / 6.0 * (1.0 + h * h / 20.0 * (1.0 + h * h / 42.0)) \
+                if abs(h) < 1e-3 else cmath.sinh(h) / h
+            return t * cmath.exp(la * t + h) * sh
+        return (eb - ea) / (lb - la)
+
+    def __call__(self, t, j=0):
+        l1, l2, l3 = self.l
+        try:
+            e1, e2, e3 = cmath.exp(l1 * t), cmath.exp(l2 * t), cmath.exp(l3 * t)
+        except OverflowError:
+            return math.inf
+        f1 = self._tdd1(l1, l2, t, e1, e2)
+        g23 = self._tdd1(l2, l3, t, e2, e3)
+        if abs(l3 - l1) * t < 1.0:
+            z1, z2, z3 = l1 * t, l2 * t, l3 * t
+            c = (z1 + z2 + z3) / 3.0
+            h1, h2, h3 = z1 - c, z2 - c, z3 - c
+            e2_, e3_ = h1 * h2 + h1 * h3 + h2 * h3, h1 * h2 * h3
+            hm3, hm2, hm1, total, fact = 0j, 0j, 1 + 0j, 0.5 + 0j, 2.0
+            for m in range(1, _SERIES_TERMS):
+                hm = -e2_ * hm2 + e3_ * hm3
+                fact *= m + 2
+                total += hm / fact
+                hm3, hm2, hm1 = hm2, hm1, hm
+            f2 = t * t * cmath.exp(c) * total
+        else:
+            f2 = (g23 - f1) / (l3 - l1)
+        k = self.K[j]
+        val = k[0] * e1 + k[1] * f1 + k[2] * f2
+        if j:
+            val += k[3] * e2 + k[4] * g23 + k[5] * e3
+        return val.real
+
+
+def transient_derivatives(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t, order=2):
+    """Response of eq. (28) and its derivatives: a tuple ``(xi, xi', ..., xi^(order))``.
+
+    Hamabe, Disturbing Actions of a Shaft Governor, eq. (28) with initial state
+    ``(xi0, xi_dot0, xi_ddot0)``.  Each array has shape ``broadcast(inputs).shape + (len(t),)``.
+    ``xi^(j)(t) = [exp(A t) A^j x0]_0``: the derivatives use the same robust Newton form with the
+    initial derivative sequence ``xi^(k)(0)`` continued by the recurrence of (28), so they are
+    exact derivatives of the returned ``xi`` (not finite differences).  ``order`` may be any
+    integer >= 0 (3 gives ``xi'''`` for checking the ODE).
+    """
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+    if t.ndim != 1:
+        raise ValueError("t must be a 1-D array of times")
+    if order < 0:
+        raise ValueError("order must be >= 0")
+    resp, shape = _Response.build(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, order)
+    vals = resp(t)
+    return tuple(vals[:, j, :].reshape(shape + (t.size,)) for j in range(order + 1))
+
+
+def transient(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t):
+    """Deviation ``xi(t)`` after a load change: the solution of Hamabe's eq. (28).
+
+    Hamabe, Disturbing Actions of a Shaft Governor, eq. (28)
+    ``a0 xi''' + 3 a1 xi'' + 3 a2 xi' + a3 xi = 0`` with ``xi(0) = xi0``, ``xi'(0) = xi_dot0``,
+    ``xi''(0) = xi_ddot0``.  Coefficients and initial values broadcast over any leading shape;
+    ``t`` (1-D) becomes the last axis.  Valid for distinct, repeated and nearly repeated roots
+    alike (see the module docstring); unstable designs give the growing solution (finite as long
+    as it is representable).  Replaces Hamabe's closed forms (30)-(31) with (38)-(41).
+
+    >>> xi = transient(1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, [0.0, 1.0])   # triple root s = -1
+    >>> np.allclose(xi, [1.0, 2.5 * np.exp(-1.0)])
+    True
+    """
+    return transient_derivatives(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t, order=0)[0]
+
+
+# --------------------------------------------------------------------------------------------
+# Analysis of one design: exact events by root finding on the analytic response
+# --------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class TransientResult:
+    """Load-change response of one design (Hamabe, Disturbing Actions of a Shaft Governor, III).
+
+    ``over_regulation`` is the largest excursion of ``xi`` past 0 on the side opposite to
+    ``xi0`` (same units as ``xi``; 0.0 if it never crosses) -- the pendulum passing its new
+    equilibrium.  ``first_arrival_time`` is the first ``t > 0`` with ``xi = 0`` (inf if none).
+    ``settling_time`` is the smallest ``T`` with ``|xi(t)| <= band * |xi0|`` for all ``t >= T``
+    (``|xi0|`` replaced by ``max |xi|`` if ``xi0 = 0``); inf for an unstable design or when the
+    design has not settled within ``horizon`` (then ``truncated`` is True).  ``extrema`` lists
+    ``(t, xi(t))`` at each zero of ``xi'`` in ``(0, horizon]``.  Events of unstable designs are
+    those within ``horizon``.
+    """
+
+    roots: tuple[complex, complex, complex]
+    kind: str
+    stable: bool
+    hurwitz_margin: float
+    over_regulation: float
+    first_arrival_time: float
+    settling_time: float
+    extrema: tuple[tuple[float, float], ...]
+    horizon: float
+    band: float
+    truncated: bool = False
+
+
+def _time_scales(roots):
+    """(lam_max, lam_min, decay, omega) per row of roots (..., 3): finite, positive scales."""
+    mag = np.abs(roots)
+    lam_max = mag.max(axis=-1)
+    nz = np.where(mag > 0, mag, np.inf).min(axis=-1)
+    lam_max = np.where(lam_max > 0, lam_max, 1.0)
+    lam_min = np.where(np.isfinite(nz), nz, lam_max)
+    decay = -roots.real.max(axis=-1)  # > 0 iff every mode decays
+    omega = np.abs(roots.imag).max(axis=-1)
+    return lam_max, lam_min, decay, omega
+
+
+def _default_horizon(roots, band, stable):
+    """A time after which a stable response is far inside the band (vectorised over rows)."""
+    lam_max, lam_min, decay, omega = _time_scales(roots)
+    with np.errstate(divide="ignore"):
+        settle = (math.log(1.0 / band) + _EFOLDS) / np.where(decay > 0, decay, np.nan)
+    grow = np.maximum(roots.real.max(axis=-1), 0.0)
+    with np.errstate(divide="ignore"):
+        unstable = np.minimum(40.0 * 2.0 * np.pi / lam_min, 40.0 / np.where(grow > 0, grow, 0.0))
+    h = np.where(stable & np.isfinite(settle), settle, unstable)
+    return np.where(np.isfinite(h) & (h > 0), h, 40.0 * 2.0 * np.pi / lam_min)
+
+
+def _grid(roots, horizon, max_points):
+    """Event-search grid on [0, horizon] for one design: log-spaced from the fastest time scale
+    plus uniform at _PER_PERIOD points per period; returns (t, truncated)."""
+    lam_max, _, _, omega = (float(v[0]) for v in _time_scales(roots[None, :]))
+    t0 = min(1e-3 / lam_max, 1e-3 * horizon)
+    decades = max(math.log10(horizon / t0), 1.0)
+    parts = [np.array([0.0]), np.geomspace(t0, horizon, int(48 * decades) + 16)]
+    truncated = False
+    if omega > 0:
+        dt = 2.0 * np.pi / omega / _PER_PERIOD
+        n_u = int(math.ceil(horizon / dt))
+        if n_u > max_points:
+            n_u, truncated = max_points, True
+        parts.append(np.linspace(0.0, n_u * dt, n_u + 1))
+    t = np.unique(np.concatenate(parts))
+    if truncated:
+        t = t[t <= n_u * dt]
+    return t, truncated
+
+
+def _tail_ok(t, xi, b):
+    """Whether a stable response is well inside the band over the last quarter of its grid
+    (rows of t, xi; b per row): then the horizon is long enough for settling."""
+    tail = t >= 0.75 * t[..., -1:]
+    return np.max(np.where(tail, np.abs(xi), 0.0), axis=-1) <= 0.25 * b
+
+
+def _brackets(y):
+    """Indices i with a sign change (or exact zero at i+1) between y[i] and y[i+1]."""
+    s = np.sign(y)
+    return np.nonzero((s[:-1] * s[1:] < 0) | ((s[1:] == 0) & (s[:-1] != 0)))[0]
+
+
+def _initial_side(d):
+    """Sign of the first non-zero initial derivative (the side the response starts on)."""
+    for v in d:
+        if v != 0 and np.isfinite(v):
+            return float(np.sign(v))
+    return 0.0
+
+
+def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
+            max_points=200_000):
+    """Analyse the load-change response of one design; returns a :class:`TransientResult`.
+
+    Hamabe, Disturbing Actions of a Shaft Governor, Part III: roots of (29), stability (32),
+    kind (37), and the over-regulation he asks to avoid ("reach the new configuration as soon
+    as possible, but without over-regulation").  Zero crossings, extrema and band crossings are
+    located exactly: sign changes are bracketed on a grid whose spacing follows the roots' time
+    scales (log-spaced from 1e-3 of the fastest time constant, plus 24 points per period of the
+    fastest oscillation), then solved with ``scipy.optimize.brentq`` on the analytic response
+    (``xi``, ``xi'`` or ``|xi| -+ band``).  ``horizon`` defaults to ``(ln(1/band) + 4)/decay``
+    for a stable design (decay = slowest rate), doubled until ``|xi| <= band/4`` over its last
+    quarter, and to a few slow periods (at most e^40 growth) for an unstable one.  An unstable design gives ``stable=False``,
+    ``settling_time=inf`` and finite events within the horizon, never an exception or nan.
+    """
+    if not all(np.ndim(v) == 0 for v in (a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0)):
+        raise ValueError("analyse() takes one design (scalars); use analyse_many() for arrays")
+    if not band > 0:
+        raise ValueError("band must be positive")
+    resp, _ = _Response.build(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, order=1)
+    roots = resp.roots[0]
+    if not np.isfinite(roots).all():
+        raise ValueError("invalid coefficients (a0 must be non-zero and all finite)")
+    stable = bool(is_stable(a0, a1, a2, a3))
+    margin = float(hurwitz_margin(a0, a1, a2, a3))
+    kind = str(_classify_roots(roots, 1e-6))
+    d = resp.d[0]
+    s0 = _initial_side(d)
+
+    point = _ScalarResponse(resp.nodes[0], resp.C[0])
+
+    def f(t, j=0, shift=0.0):
+        return point(t, j) - shift
+
+    H = float(_default_horizon(roots[None, :], band, np.array([stable]))[0]) if horizon is None \
+        else float(horizon)
+    if not H > 0:
+        raise ValueError("horizon must be positive")
+    scale = abs(float(xi0))
+    for attempt in range(8):
+        t, truncated = _grid(roots, H, max_points)
+        y = resp(t)[0]
+        xi, xid = y[0], y[1]
+        if scale == 0.0:
+            scale = float(np.max(np.abs(xi)))
+        b = band * scale
+        if not stable or horizon is not None or truncated or _tail_ok(t, xi, b) or attempt == 7:
+            break
+        H *= 2.0
+    tol = dict(xtol=1e-300, rtol=4 * _EPS, maxiter=200)
+
+    def solve(j, shift, i):
+        lo, hi = t[i], t[i + 1]
+        if f(hi, j, shift) == 0.0:
+            return float(hi)
+        return brentq(f, lo, hi, args=(j, shift), **tol)
+
+    pos = t > 0
+    # zeros of xi (t > 0)
+    ip = np.nonzero(pos)[0][0]
+    zeros = [solve(0, 0.0, i) for i in _brackets(xi[ip - 1 :]) + ip - 1 if t[i + 1] > 0]
+    zeros = [z for z in zeros if z > 0]
+    first_arrival = zeros[0] if zeros else math.inf
+    # extrema: zeros of xi' (t > 0); skip t = 0 itself (xi'(0) = 0 for Hamabe's start)
+    ext_t = [solve(1, 0.0, i) for i in _brackets(xid[ip:]) + ip]
+    ext = tuple((float(te), f(te)) for te in ext_t if te > 0)
+    # over-regulation: largest excursion on the side opposite to the start
+    if s0 == 0.0:
+        over = 0.0
+    else:
+        cands = [-s0 * v for _, v in ext] + [-s0 * float(xi[-1])]
+        over = max([0.0] + [c for c in cands if np.isfinite(c)])
+    # settling: last time |xi| = band * scale
+    if not stable or not np.isfinite(xi).all():
+        settling = math.inf
+    else:
+        g = np.abs(xi) - b
+        if g[-1] > 0:
+            settling, truncated = math.inf, True
+        else:
+            above = np.nonzero(g > 0)[0]
+            if above.size == 0:
+                settling = 0.0
+            else:
+                i = int(above[-1])
+                side = float(np.sign(xi[i]))
+                settling = solve(0, side * b, i)
+    return TransientResult(
+        roots=tuple(complex(r) for r in roots),
+        kind=kind,
+        stable=stable,
+        hurwitz_margin=margin,
+        over_regulation=float(over),
+        first_arrival_time=float(first_arrival),
+        settling_time=float(settling),
+        extrema=ext,
+        horizon=float(t[-1]),
+        band=float(band),
+        truncated=bool(truncated),
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# Many designs at once
+# --------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class TransientSummary:
+    """Vectorised load-change summary over many designs (arrays of the broadcast shape).
+
+    Same meanings as :class:`TransientResult` (``roots`` has a trailing axis of 3).
+    """
+
+    roots: np.ndarray
+    kind: np.ndarray
+    stable: np.ndarray
+    hurwitz_margin: np.ndarray
+    over_regulation: np.ndarray
+    first_arrival_time: np.ndarray
+    settling_time: np.ndarray
+    horizon: np.ndarray
+
+
+def _refine(resp, j, target, lo, hi, iters=100):
+    """Vectorised bracketed Newton for resp_j(t) = target on [lo, hi] (one row per design).
+
+    resp must have order >= j + 1 (the derivative drives Newton); the bracket is kept, and a
+    bisection is forced whenever Newton leaves it or every fourth step.
+    """
+    def ev(x):
+        v = resp(x[:, None])[:, :, 0]
+        return v[:, j] - target, v[:, j + 1]
+
+    flo, _ = ev(lo)
+    x = 0.5 * (lo + hi)
+    done = np.zeros(lo.shape, bool)
+    for k in range(iters):
+        fx, dfx = ev(x)
+        same = np.sign(fx) == np.sign(flo)
+        lo = np.where(same, x, lo)
+        flo = np.where(same, fx, flo)
+        hi = np.where(same, hi, x)
+        with np.errstate(all="ignore"):
+            newton = x - fx / dfx
+        ok = np.isfinite(newton) & (newton > lo) & (newton < hi) & (k % 4 != 3)
+        xn = np.where(ok, newton, 0.5 * (lo + hi))
+        done = done | (fx == 0) | (np.abs(xn - x) <= 2 * _EPS * np.abs(x)) | (hi - lo <= 0)
+        x = np.where(done, x, xn)
+        if done.all():
+            break
+    return x
+
+
+def _events_on_grid(resp, t, y, s0, b, stable):
+    """First arrival, over-regulation and settling for designs sharing a grid width.
+
+    resp: _Response (order >= 2) for n designs; t (n, M) increasing per row, t[:, 0] = 0;
+    y = resp(t); b the band per design.
+    Brackets on the grid, then a vectorised bracketed Newton on the analytic xi or xi'.
+    """
+    n, M = t.shape
+    rows = np.arange(n)
+    xi, xd = y[:, 0], y[:, 1]
+    # --- first arrival: first change of s0*xi from > 0 to <= 0
+    w = s0[:, None] * xi
+    cross = (w[:, 1:] <= 0) & (w[:, :-1] > 0)
+    has = cross.any(axis=1)
+    j = np.argmax(cross, axis=1)
+    arrival = np.full(n, np.inf)
+    exact = has & (w[rows, j + 1] == 0)
+    arrival[exact] = t[rows, j + 1][exact]
+    idx = np.nonzero(has & ~exact)[0]
+    if idx.size:
+        arrival[idx] = _refine(resp.subset(idx), 0, 0.0, t[idx, j[idx]], t[idx, j[idx] + 1])
+    # --- over-regulation: grid maximum of -s0*xi, refined at the zero of xi' next to it
+    v = -w
+    k = np.argmax(v, axis=1)
+    vk = v[rows, k]
+    over = np.where(vk > 0, vk, 0.0)
+    interior = (vk > 0) & (k > 0) & (k < M - 1)
+    idx = np.nonzero(interior)[0]
+    if idx.size:
+        kk = k[idx]
+        left = np.sign(xd[idx, kk - 1]) != np.sign(xd[idx, kk])
+        right = np.sign(xd[idx, kk]) != np.sign(xd[idx, kk + 1])
+        lo = np.where(left, t[idx, kk - 1], t[idx, kk])
+        hi = np.where(left, t[idx, kk], t[idx, kk + 1])
+        ok = left | right
+        idx, lo, hi = idx[ok], lo[ok], hi[ok]
+        if idx.size:
+            sub = resp.subset(idx)
+            te = _refine(sub, 1, 0.0, lo, hi)
+            ve = -s0[idx] * sub(te[:, None])[:, 0, 0]
+            over[idx] = np.maximum(over[idx], ve)
+    # --- settling: last crossing of |xi| = b
+    above = np.abs(xi) > b[:, None]
+    anyab = above.any(axis=1)
+    last = M - 1 - np.argmax(above[:, ::-1], axis=1)
+    settling = np.where(stable, 0.0, np.inf)
+    settling[anyab & (last == M - 1)] = np.inf
+    idx = np.nonzero(stable & anyab & (last < M - 1))[0]
+    if idx.size:
+        li = last[idx]
+        side = np.sign(xi[idx, li])
+        settling[idx] = _refine(resp.subset(idx), 0, side * b[idx], t[idx, li], t[idx, li + 1])
+    return arrival, over, settling
+
+
+def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
+                 n_log=160, per_period=_PER_PERIOD, max_points=1 << 17):
+    """Vectorised :func:`analyse` for many designs (the optimiser's entry point).
+
+    Hamabe, Disturbing Actions of a Shaft Governor, Part III, eqs. (28), (32), (37).  Each design
+    gets its own grid: ``n_log`` log-spaced times from 1e-3 of its fastest time constant to its
+    horizon, plus, if it oscillates, uniform times at ``per_period`` points per period over the
+    whole horizon (at most ``max_points``; a design not settled where its grid ends is reported
+    unsettled, inf).  Designs are processed in batches of equal grid width.  The first zero of
+    ``xi``, the largest opposite-side excursion (at a zero of ``xi'``) and the last band crossing
+    are bracketed on the grid and refined by a vectorised bracketed Newton iteration on the
+    analytic response, so they agree with :func:`analyse` to rounding.  The default horizon is
+    that of :func:`analyse`, doubled for the designs whose tail is not yet well inside the band.
+    Returns a :class:`TransientSummary` (nan events only for invalid coefficients, ``a0 = 0``).
+    """
+    if not band > 0:
+        raise ValueError("band must be positive")
+    resp, shape = _Response.build(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, order=2)
+    c = resp.c
+    n = resp.n
+    roots = resp.roots
+    d = resp.d
+    valid = np.isfinite(roots).all(axis=-1) & np.isfinite(d[:, :3]).all(axis=-1)
+    stable = is_stable(*c) & valid
+    margin = hurwitz_margin(*c)
+    kind = _classify_roots(roots, 1e-6)
+    rr = np.where(valid[:, None], roots, -1.0)
+    if horizon is None:
+        H = _default_horizon(rr, band, stable)
+    else:
+        H = np.broadcast_to(np.asarray(horizon, float), shape).reshape(-1).copy()
+        if not np.all(H > 0):
+            raise ValueError("horizon must be positive")
+    lam_max, _, _, omega = _time_scales(rr)
+    osc = omega > 0
+    dt = np.where(osc, 2.0 * np.pi / np.where(osc, omega, 1.0) / per_period, 0.0)
+    # side the response starts on (sign of the first non-zero initial derivative)
+    s0 = np.zeros(n)
+    for k in range(d.shape[1] - 1, -1, -1):
+        s0 = np.where(d[:, k] != 0, np.sign(d[:, k]), s0)
+    arrival, over, settling = (np.full(n, np.nan) for _ in range(3))
+    u_log = np.linspace(0.0, 1.0, n_log)
+    todo = np.nonzero(valid)[0]
+    for attempt in range(8):
+        n_uni = np.where(osc[todo], np.ceil(np.minimum(H[todo] / np.where(osc[todo], dt[todo],
+                                                                          1.0), max_points)), 0)
+        truncated = n_uni >= max_points
+        H[todo] = np.where(osc[todo], np.minimum(H[todo], n_uni * dt[todo]), H[todo])
+        # batches of equal grid width: uniform parts rounded up to a power of two
+        width = np.where(n_uni > 0, 2 ** np.ceil(np.log2(np.maximum(n_uni, 1))), 0)
+        redo = []
+        for wd in np.unique(width).astype(np.int64):
+            members = todo[width == wd]
+            trunc = truncated[width == wd]
+            per = max(1, (1 << 22) // (n_log + 1 + wd))
+            for s in range(0, members.size, per):
+                idx = members[s : s + per]
+                Hi = H[idx, None]
+                t0 = np.minimum(1e-3 / lam_max[idx, None], 1e-3 * Hi)
+                tl = t0 * (Hi / t0) ** u_log[None, :]
+                tu = Hi * np.linspace(0.0, 1.0, wd + 1)[None, :] if wd else np.zeros((idx.size, 1))
+                t = np.sort(np.concatenate([tl, tu], axis=1), axis=1)
+                sub = resp.subset(idx)
+                y = sub(t)
+                scale = np.abs(d[idx, 0])
+                scale = np.where(scale > 0, scale, np.abs(y[:, 0]).max(axis=1))
+                b = band * scale
+                a_, o_, st_ = _events_on_grid(sub, t, y, s0[idx], b, stable[idx])
+                tail = _tail_ok(t, y[:, 0], b)
+                st_ = np.where(stable[idx] & ~tail & trunc[s : s + per], np.inf, st_)
+                arrival[idx], over[idx], settling[idx] = a_, o_, st_
+                if horizon is None:
+                    redo.append(idx[stable[idx] & ~tail & ~trunc[s : s + per]])
+        todo = np.concatenate(redo) if redo else np.zeros(0, np.int64)
+        if todo.size == 0 or attempt == 6:
+            break
+        H[todo] *= 2.0
+
+    def rs(a):
+        return a.reshape(shape + a.shape[1:])
+
+    return TransientSummary(
+        roots=rs(roots), kind=rs(kind), stable=rs(stable), hurwitz_margin=rs(margin),
+        over_regulation=rs(over), first_arrival_time=rs(arrival), settling_time=rs(settling),
+        horizon=rs(H),
+    )
+
+
+def over_regulation_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, horizon=None):
+    """Over-regulation of many designs at once (see :func:`analyse_many`); 0.0 if none.
+
+    Hamabe, Disturbing Actions of a Shaft Governor, Part III: the largest excursion of ``xi``
+    past the new equilibrium, on the side opposite to ``xi0``.
+    """
+    return analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, horizon=horizon).over_regulation

@@ -1,0 +1,890 @@
+"""Excel workbook of one design: inputs, live spring formulas, characteristic, checks, notes.
+
+:func:`write_workbook` writes one ``.xlsx`` per :class:`~govopt.result.Result` (openpyxl):
+
+* **Spec** — every spec input as written (always a text cell) and in SI.
+* **Design** — the design and the constants the formulas need as yellow *input* cells with
+  workbook-level defined names (``wire_diameter``, ``coil_radius``, ``turns`` ...), and the
+  derived quantities (stiffness, index, Wahl factor, spring force and stress at the ends of the
+  range, utilisation, spring mass, surge frequency, equilibrium speeds and irregularity) as live
+  Excel formulas on those names, each next to govopt's own value.
+* **Characteristic** — the table over ``alpha`` with a chart of speed against configuration.
+* **Dynamics** — ``k^2`` against ``omega0^2`` (chart), and whatever ``result.dynamics`` holds
+  (load changes with response tables and charts, vibration harmonics), or why it is empty.
+* **Checks** — every check with value, limit, margin and PASS/FAIL (conditional formatting), the
+  binding checks, and ``result.optimisation`` when present.
+* **Notes** — method, fidelity, version, date and the sources' equation numbers.
+
+The writer formats only; every number comes from the result or from govopt's own functions
+(the valve-gear reaction constants). The file is written atomically: a temporary file in the
+target's directory, renamed over the target only when complete.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import datetime as _dt
+import math
+import os
+import re
+import stat
+import tempfile
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from openpyxl import Workbook
+from openpyxl.chart import Reference, ScatterChart, Series
+from openpyxl.formatting.rule import FormulaRule
+from openpyxl.styles import Alignment, Font, PatternFill
+from openpyxl.utils import get_column_letter
+from openpyxl.workbook.defined_name import DefinedName
+from openpyxl.worksheet.worksheet import Worksheet
+
+from ..analysis import statics
+from ..errors import GovoptError
+from ..result import ACTIVE_TOL, Result
+from ..units import G_STANDARD
+
+__all__ = ["SHEETS", "build_workbook", "write_workbook"]
+
+#: Sheet names, in workbook order.
+SHEETS = ("Spec", "Design", "Characteristic", "Dynamics", "Checks", "Notes")
+
+_BOLD = Font(bold=True)
+_TITLE = Font(bold=True, size=13)
+_HEADER_FILL = PatternFill("solid", fgColor="D9D9D9")
+_INPUT_FILL = PatternFill("solid", fgColor="FFF2CC")
+_FORMULA_FILL = PatternFill("solid", fgColor="DDEBF7")
+_PASS_FILL = PatternFill("solid", fgColor="C6EFCE", bgColor="C6EFCE")
+_FAIL_FILL = PatternFill("solid", fgColor="FFC7CE", bgColor="FFC7CE")
+_PASS_FONT = Font(color="006100")
+_FAIL_FONT = Font(color="9C0006")
+_WRAP = Alignment(wrap_text=True, vertical="top")
+
+#: Display formats by SI unit (the stored values keep full precision).
+_FORMATS = {
+    "m": "0.000000", "N": "#,##0.000", "Pa": "#,##0", "N/m": "#,##0.00", "kg": "0.000000",
+    "kg*m^2": "0.000000", "rad": "0.000000", "rad/s": "0.000000", "rpm": "0.0000",
+    "N*m": "0.000000", "Hz": "0.000", "": "0.000000", "kg/m^3": "#,##0.00",
+    "m/s^2": "0.00000", "N*m*s/rad": "0.000000", "deg": "0.0000", "rad^2/s^2": "0.000",
+    "s": "0.0000", "N*m/rad": "#,##0.000",
+}
+_GENERAL_FORMAT = "0.000000"
+_RELDIFF_FORMAT = "0.0E+00"
+
+#: Characters that make a spreadsheet treat typed text as something else (formula, number...).
+_FORMULA_LEAD = ("=", "+", "-", "@")
+
+#: Equation sources for the Notes sheet.
+SOURCES = (
+    ("Hamabe eq. 1", "centrifugal moment about the fulcrum, M_z = omega^2 m a rho sin(alpha)"),
+    ("Hamabe eq. 2", "spring half length l = sqrt(a^2 + b^2 - 2 a b cos(alpha)), force "
+                     "F = 2 kappa (l - l0), moment M_f = F a b sin(alpha) / l (exact geometry)"),
+    ("Hamabe eq. 3", "the paper's first-order series for M_f (geometry = 'series')"),
+    ("Hamabe eq. 11", "mean reaction of the valve gear M_r0 = C_f + omega^2 C_i"),
+    ("Hamabe eq. 12", "equilibrium M_f - M_z + M_r0 = 0: the characteristic curve"),
+    ("Hamabe eqs. 18-20", "restoring stiffness k^2 = (dM_f/dalpha - omega^2 m a rho "
+                          "cos(alpha) [+ dM_r0/dalpha]) / I"),
+    ("Hamabe eq. 28", "load change: characteristic equation of governor and engine"),
+    ("Hamabe eq. 32", "forced vibration of the pendulum by the speed fluctuation"),
+    ("Hamabe Example 1", "spring design: kappa = G d^4 / (64 r^3 n), tau = 16 F r / (pi d^3), "
+                         "free half length from equilibrium at the normal configuration"),
+    ("Hamabe Part I", "irregularity delta = 2 (omega_a - omega_i) / (omega_a + omega_i)"),
+    ("Wahl 1944", "A. M. Wahl, Mechanical Springs: index C = 2 r / d, stress factor "
+                  "K = (4C - 1)/(4C - 4) + 0.615/C (eq. 2-12), surge frequency (ch. 25)"),
+)
+
+
+# --------------------------------------------------------------------------------------------
+# public API
+
+
+def write_workbook(result: Result, path: str | os.PathLike) -> Path:
+    """Write the workbook of ``result`` to ``path`` atomically and return the path.
+
+    The workbook is built in memory, saved to a temporary file in the same directory and
+    renamed over ``path``; on any error the temporary file is removed and an existing ``path``
+    is left untouched. An unwritable path raises :class:`~govopt.errors.GovoptError`.
+    """
+    path = Path(path)
+    wb = build_workbook(result)
+    _atomic_save(wb, path)
+    return path
+
+
+def build_workbook(result: Result) -> Workbook:
+    """The workbook of ``result`` in memory (see the module docstring for the sheets)."""
+    wb = Workbook()
+    wb.remove(wb.active)
+    sheets = {name: wb.create_sheet(name) for name in SHEETS}
+    _build_spec(sheets["Spec"], result)
+    _build_design(wb, sheets["Design"], result)
+    _build_characteristic(sheets["Characteristic"], result)
+    _build_dynamics(sheets["Dynamics"], result)
+    _build_checks(sheets["Checks"], result)
+    _build_notes(sheets["Notes"], result)
+    wb.active = sheets["Design"]
+    for ws in wb.worksheets:
+        ws.sheet_view.tabSelected = ws is sheets["Design"]
+    from .. import __version__
+
+    wb.properties.creator = f"govopt {__version__}"
+    wb.properties.title = f"govopt {result.kind}: {result.spec.name}"
+    return wb
+
+
+# --------------------------------------------------------------------------------------------
+# atomic write
+
+
+def _atomic_save(wb: Workbook, path: Path) -> None:
+    directory = path.parent if str(path.parent) else Path(".")
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+    except OSError as exc:
+        raise GovoptError(f"{path}: cannot write workbook ({exc.strerror or exc})") from exc
+    os.close(fd)
+    try:
+        wb.save(tmp)
+        os.chmod(tmp, _file_mode(path))
+        os.replace(tmp, path)
+    except BaseException as exc:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        if isinstance(exc, OSError):
+            raise GovoptError(f"{path}: cannot write workbook ({exc.strerror or exc})") from exc
+        raise
+
+
+def _file_mode(path: Path) -> int:
+    """Permissions for the new file: those of the file it replaces, else 0666 minus umask
+    (mkstemp creates 0600)."""
+    with contextlib.suppress(OSError):
+        return stat.S_IMODE(os.stat(path).st_mode)
+    umask = 0o022
+    with contextlib.suppress(OSError, ValueError), open("/proc/self/status") as fh:
+        for line in fh:
+            if line.startswith("Umask:"):
+                umask = int(line.split()[1], 8)
+    return 0o666 & ~umask
+
+
+# --------------------------------------------------------------------------------------------
+# cell helpers
+
+
+def _scalar(value: Any) -> Any:
+    """A value a cell can hold: finite numbers stay numbers; NaN/inf, complex and anything else
+    become text (an xlsx cannot store NaN)."""
+    if value is None:
+        return None
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    if isinstance(value, int | np.integer):
+        return int(value)
+    if isinstance(value, float | np.floating):
+        x = float(value)
+        return x if math.isfinite(x) else ("nan" if math.isnan(x) else ("inf" if x > 0 else "-inf"))
+    if isinstance(value, complex | np.complexfloating):
+        z = complex(value)
+        return f"{z.real:.10g}{z.imag:+.10g}j"
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        return _scalar(value.item())
+    return str(value)
+
+
+def _is_scalar(value: Any) -> bool:
+    return value is None or isinstance(value, str | bool | int | float | complex | np.generic) \
+        or (isinstance(value, np.ndarray) and value.ndim == 0)
+
+
+def _text_of(value: Any) -> str:
+    """A list or array of scalars as one line of text (e.g. the roots of a characteristic
+    equation)."""
+    if _is_scalar(value):
+        v = _scalar(value)
+        return f"{v:.10g}" if isinstance(v, float) else str(v)
+    return "; ".join(_text_of(v) for v in value)
+
+
+def _set(cell, value, number_format: str | None = None):
+    """Write ``value``; text is always stored as text, never as a formula."""
+    value = _scalar(value)
+    cell.value = value
+    if isinstance(value, str):
+        cell.data_type = "s"
+        if value.startswith(_FORMULA_LEAD):
+            cell.quotePrefix = True  # so re-typing in Excel/Calc keeps it text too
+    elif number_format and isinstance(value, int | float) and not isinstance(value, bool):
+        cell.number_format = number_format
+    return cell
+
+
+def _formula(cell, formula: str, number_format: str | None = None):
+    cell.value = formula if formula.startswith("=") else "=" + formula
+    cell.data_type = "f"
+    if number_format:
+        cell.number_format = number_format
+    return cell
+
+
+def _header(ws: Worksheet, row: int, headers: Iterable[str], col: int = 1) -> None:
+    for j, h in enumerate(headers):
+        c = _set(ws.cell(row, col + j), h)
+        c.font, c.fill = _BOLD, _HEADER_FILL
+        c.alignment = Alignment(wrap_text=True, vertical="center")
+
+
+def _title(ws: Worksheet, row: int, text: str, col: int = 1, font: Font = _TITLE) -> None:
+    _set(ws.cell(row, col), text).font = font
+
+
+def _widths(ws: Worksheet, fixed: Mapping[int, float] | None = None, low=8.0, high=60.0):
+    """Column widths from the text in each column (formulas and numbers count as 14)."""
+    width: dict[int, float] = {}
+    for row in ws.iter_rows():
+        for c in row:
+            if c.value is None:
+                continue
+            n = 14 if c.data_type in ("n", "f") else len(str(c.value)) + 2
+            width[c.column] = max(width.get(c.column, low), min(n, high))
+    for col, w in {**width, **(fixed or {})}.items():
+        ws.column_dimensions[get_column_letter(col)].width = w
+
+
+def _unit_label(unit: str) -> str:
+    return unit.replace("*", " ") if unit else "-"
+
+
+def _fmt(unit: str) -> str:
+    return _FORMATS.get(unit, _GENERAL_FORMAT)
+
+
+def _scatter(title: str, x_title: str, y_title: str, width=18.0, height=9.0) -> ScatterChart:
+    chart = ScatterChart()
+    chart.title, chart.style = title, 13
+    chart.x_axis.title, chart.y_axis.title = x_title, y_title
+    chart.x_axis.delete = chart.y_axis.delete = False  # newer Excel hides axes otherwise
+    chart.width, chart.height = width, height
+    chart.legend.position = "b"
+    return chart
+
+
+def _add_series(chart: ScatterChart, ws: Worksheet, x_col: int, y_col: int, header_row: int,
+                last_row: int) -> None:
+    xs = Reference(ws, min_col=x_col, min_row=header_row + 1, max_row=last_row)
+    ys = Reference(ws, min_col=y_col, min_row=header_row, max_row=last_row)
+    s = Series(ys, xs, title_from_data=True)
+    s.marker.symbol = "none"
+    s.smooth = False
+    chart.series.append(s)
+
+
+# --------------------------------------------------------------------------------------------
+# Spec
+
+
+def _build_spec(ws: Worksheet, res: Result) -> None:
+    spec = res.spec
+    _header(ws, 1, ["key", "value as written", "value (SI)", "SI unit"])
+    ws.freeze_panes = "A2"
+    for i, e in enumerate(spec.entries, start=2):
+        _set(ws.cell(i, 1), e.key)
+        _set(ws.cell(i, 2), e.written)  # always text: a spec string is never a formula
+        _set(ws.cell(i, 3), e.si, "General")
+        _set(ws.cell(i, 4), e.unit)
+    row = len(spec.entries) + 3
+    _set(ws.cell(row, 1), "spec file")
+    _set(ws.cell(row, 2), str(spec.path))
+    _widths(ws, {1: 36, 2: 40, 3: 22, 4: 12})
+
+
+# --------------------------------------------------------------------------------------------
+# Design: input cells with defined names and live formulas
+
+
+_DESIGN_HEADERS = ["quantity", "symbol", "value (SI)", "SI unit", "govopt value",
+                   "rel. difference", "defined name", "formula / source"]
+_VALUE, _GOVOPT, _RELDIFF, _NAME, _NOTE = 3, 5, 6, 7, 8
+
+#: Defined names must not look like a cell reference (A1 or R1C1) or clash with a function.
+_NAME_OK = re.compile(r"^[a-z][a-z_]*$")
+
+
+class _DesignSheet:
+    def __init__(self, wb: Workbook, ws: Worksheet):
+        self.wb, self.ws, self.row = wb, ws, 1
+        _header(ws, 1, _DESIGN_HEADERS)
+        ws.freeze_panes = "A2"
+        self.row = 2
+
+    def _name(self, name: str) -> None:
+        if not _NAME_OK.match(name) or name in self.wb.defined_names:
+            raise ValueError(f"bad or repeated defined name {name!r}")
+        ref = f"'{self.ws.title}'!${get_column_letter(_VALUE)}${self.row}"
+        self.wb.defined_names[name] = DefinedName(name, attr_text=ref)
+        _set(self.ws.cell(self.row, _NAME), name)
+
+    def section(self, text: str) -> None:
+        self.row += 1 if self.row > 2 else 0
+        _title(self.ws, self.row, text, font=_BOLD)
+        self.row += 1
+
+    def _label(self, label, symbol, unit, note):
+        ws = self.ws
+        _set(ws.cell(self.row, 1), label)
+        _set(ws.cell(self.row, 2), symbol)
+        _set(ws.cell(self.row, 4), _unit_label(unit))
+        if note:
+            _set(ws.cell(self.row, _NOTE), note)
+
+    def input(self, name, label, symbol, value, unit, note="") -> None:
+        self._label(label, symbol, unit, note)
+        c = self.ws.cell(self.row, _VALUE)
+        if value is None:
+            c.value = None
+        else:
+            _set(c, float(value), _fmt(unit))
+        c.fill = _INPUT_FILL
+        self._name(name)
+        self.row += 1
+
+    def formula(self, name, label, symbol, formula, unit, govopt_value, note="") -> None:
+        ws, r = self.ws, self.row
+        self._label(label, symbol, unit, note)
+        _formula(ws.cell(r, _VALUE), formula, _fmt(unit)).fill = _FORMULA_FILL
+        _set(ws.cell(r, _GOVOPT), govopt_value, _fmt(unit))
+        v, g = f"{get_column_letter(_VALUE)}{r}", f"{get_column_letter(_GOVOPT)}{r}"
+        _formula(ws.cell(r, _RELDIFF), f"=IF({g}=0,ABS({v}),ABS({v}/{g}-1))", _RELDIFF_FORMAT)
+        self._name(name)
+        self.row += 1
+
+    def text(self, text: str) -> None:
+        c = _set(self.ws.cell(self.row, 1), text)
+        c.font = Font(italic=True)
+        self.row += 1
+
+
+def _build_design(wb: Workbook, ws: Worksheet, res: Result) -> None:
+    spec, sd, ds, props = res.spec, res.spring, res.design, res.spring_properties
+    g, sp, mat, an = spec.geometry, spec.speed, spec.material, spec.analysis
+    st = res.statics
+    s = _DesignSheet(wb, ws)
+    s.section("Inputs (yellow, SI units): edit them and the formulas below follow")
+    s.input("wire_diameter", "wire diameter", "d", sd.d, "m", "design.wire_diameter")
+    s.input("coil_radius", "mean coil radius", "r", sd.r, "m", "design.coil_radius")
+    s.input("turns", "active turns", "n", sd.n, "", "design.active_turns")
+    s.input("free_half_length", "free half length of the spring", "l0", sd.l0, "m",
+            "design.free_half_length" if ds.free_half_length is not None else
+            "govopt: equilibrium at the normal configuration at the mean speed (Hamabe Ex. 1); "
+            "an input here")
+    s.input("pendulum_weight", "pendulum weight", "W", sd.m * G_STANDARD, "N",
+            "design.pendulum_weight (or mass x standard gravity)")
+    s.input("std_gravity", "standard gravity", "g_n", G_STANDARD, "m/s^2",
+            "CGPM 1901; converts the weight to the mass")
+    if ds.pendulum_inertia is not None:
+        s.input("pendulum_inertia", "pendulum moment of inertia about the fulcrum", "I",
+                sd.inertia, "kg*m^2", "design.pendulum_inertia")
+    s.input("dashpot", "dash-pot coefficient", "f", ds.dashpot, "N*m*s/rad",
+            "design.dashpot_f (= 3 a1)" if ds.dashpot is not None
+            else "not given in the spec (blank: no dash-pot)")
+    s.input("friction_moment", "friction moment at the fulcrum", "M_R", ds.friction_moment,
+            "N*m", "design.friction_moment" if ds.friction_moment is not None
+            else "not given in the spec (blank: friction not modelled)")
+    s.input("shear_modulus", "shear modulus", "G", mat.shear_modulus, "Pa",
+            "material.shear_modulus")
+    s.input("allowable_stress", "allowable shear stress", "k_s", mat.allowable_shear_stress,
+            "Pa", "material.allowable_shear_stress")
+    s.input("density", "density of the wire", "rho_w", mat.density, "kg/m^3",
+            "material.density")
+    s.input("link_a", "fulcrum S to shaft axis O", "a", g.a, "m", "governor.a")
+    s.input("link_rho", "fulcrum S to pendulum centre of gravity P", "rho", g.rho, "m",
+            "governor.rho")
+    s.input("link_b", "fulcrum S to spring attachment G", "b", g.b, "m", "governor.b")
+    s.input("alpha_inner", "innermost configuration", "alpha_i", g.alpha_inner, "rad",
+            "governor.alpha_inner")
+    s.input("alpha_normal", "normal configuration", "alpha_n", g.alpha_normal, "rad",
+            "governor.alpha_normal (for reference; l0 above already holds it)")
+    s.input("alpha_outer", "outermost configuration", "alpha_a", g.alpha_outer, "rad",
+            "governor.alpha_outer")
+    s.input("omega_mean", "mean speed", "omega0", sp.omega_mean, "rad/s", "speed.mean")
+    s.input("irregularity_required", "required irregularity (at most)", "delta0",
+            sp.irregularity, "", "speed.irregularity")
+
+    s.section("Valve-gear reaction M_r0 = C_f + omega^2 C_i at the ends of the range "
+              "(constants from govopt, Hamabe eq. 11)")
+    ends = np.array([g.alpha_inner, g.alpha_outer])
+    C_f, C_i = (np.asarray(v, dtype=float) for v in statics.reaction(spec, ends))
+    src = "govopt.analysis.statics.reaction(spec, alpha_{}) (valve-gear table interpolated)"
+    s.input("reaction_cf_inner", "speed-independent reaction at alpha_i", "C_f,i", C_f[0],
+            "N*m", src.format("inner"))
+    s.input("reaction_ci_inner", "inertia reaction coefficient at alpha_i", "C_i,i", C_i[0],
+            "kg*m^2", src.format("inner"))
+    s.input("reaction_cf_outer", "speed-independent reaction at alpha_a", "C_f,a", C_f[1],
+            "N*m", src.format("outer"))
+    s.input("reaction_ci_outer", "inertia reaction coefficient at alpha_a", "C_i,a", C_i[1],
+            "kg*m^2", src.format("outer"))
+
+    s.section("Derived quantities (blue, live formulas) next to govopt's values as written")
+    s.formula("pendulum_mass", "pendulum mass", "m", "=pendulum_weight/std_gravity", "kg",
+              sd.m, "m = W / g_n")
+    if ds.pendulum_inertia is None:
+        s.formula("pendulum_inertia", "pendulum moment of inertia about the fulcrum", "I",
+                  "=link_rho^2*pendulum_mass", "kg*m^2", sd.inertia,
+                  "I = rho^2 m (point mass; design.pendulum_inertia not given)")
+    s.formula("stiffness", "spring stiffness (whole spring)", "kappa",
+              "=shear_modulus*wire_diameter^4/(64*coil_radius^3*turns)", "N/m", sd.kappa,
+              "kappa = G d^4 / (64 r^3 n) (Hamabe Ex. 1)")
+    s.formula("spring_index", "spring index", "C", "=2*coil_radius/wire_diameter", "",
+              props["spring_index"], "C = 2 r / d (Wahl 1944)")
+    s.formula("wahl_factor", "Wahl stress factor", "K",
+              "=(4*spring_index-1)/(4*spring_index-4)+0.615/spring_index", "",
+              props["wahl_factor"], "K = (4C - 1)/(4C - 4) + 0.615/C (Wahl 1944, eq. 2-12)")
+    wahl = mat.stress_correction == "wahl"
+    for tag, i, sym in (("inner", 0, "i"), ("outer", -1, "a")):
+        s.formula(f"half_length_{tag}", f"spring half length at alpha_{sym}", f"l_{sym}",
+                  f"=SQRT(link_a^2+link_b^2-2*link_a*link_b*COS(alpha_{tag}))", "m",
+                  st.half_length[i], "l = sqrt(a^2 + b^2 - 2 a b cos(alpha)) (Hamabe eq. 2)")
+        s.formula(f"spring_force_{tag}", f"spring force at alpha_{sym}", f"F_{sym}",
+                  f"=2*stiffness*(half_length_{tag}-free_half_length)", "N",
+                  st.spring_force[i], "F = 2 kappa (l - l0) (Hamabe eq. 2)")
+        s.formula(f"shear_stress_{tag}", f"shear stress at alpha_{sym}", f"tau_{sym}",
+                  f"=16*ABS(spring_force_{tag})*coil_radius/(PI()*wire_diameter^3)"
+                  + ("*wahl_factor" if wahl else ""), "Pa", st.stress[i],
+                  "tau = 16 |F| r / (pi d^3)" + (" x K (stress_correction = 'wahl')" if wahl
+                                                 else " (stress_correction = 'none')"))
+    s.formula("max_shear_stress", "largest shear stress over the range", "tau_max",
+              "=MAX(shear_stress_inner,shear_stress_outer)", "Pa", res.max_stress,
+              "|F| is largest at an end of the range (l is monotonic in alpha)")
+    s.formula("stress_utilisation", "stress utilisation", "tau_max/k_s",
+              "=max_shear_stress/allowable_stress", "",
+              res.max_stress / mat.allowable_shear_stress, "<= 1 required (Hamabe Ex. 1)")
+    s.formula("spring_mass", "mass of the active coils", "m_s",
+              "=density*PI()*wire_diameter^2/4*2*PI()*coil_radius*turns", "kg",
+              props["mass_kg"], "rho_w (pi d^2/4)(2 pi r n); ends not included")
+    s.formula("surge_frequency", "surge frequency (both ends fixed)", "f_s",
+              "=wire_diameter/(8*PI()*coil_radius^2*turns)*SQRT(shear_modulus/(2*density))",
+              "Hz", props["surge_frequency_Hz"], "d/(8 pi r^2 n) sqrt(G/(2 rho_w)) (Wahl 1944)")
+    s.formula("body_length", "solid body length", "(n+1) d", "=(turns+1)*wire_diameter", "m",
+              props["body_length_m"], "(n + 1) d")
+
+    series = an.geometry == "series"
+    mean = an.reaction_speed == "mean"
+    for tag, i, sym in (("inner", 0, "i"), ("outer", -1, "a")):
+        if series:
+            c = "SQRT(link_a^2+link_b^2)"
+            A = f"2*link_a*link_b*SIN(alpha_{tag})"
+            B = f"({A}/{c}+(link_a*link_b)^2*SIN(2*alpha_{tag})/{c}^3)"
+            mf = f"=stiffness*({A}-{B}*free_half_length)"
+            note = ("M_f = kappa (A - B l0), A = 2 a b sin(alpha), B = A/c + (a b)^2 "
+                    "sin(2 alpha)/c^3, c = sqrt(a^2 + b^2) (Hamabe eq. 3, geometry = 'series')")
+        else:
+            mf = (f"=2*stiffness*(half_length_{tag}-free_half_length)*link_a*link_b"
+                  f"*SIN(alpha_{tag})/half_length_{tag}")
+            note = "M_f = 2 kappa (l - l0) a b sin(alpha) / l (Hamabe eq. 2, geometry = 'exact')"
+        s.formula(f"spring_moment_{tag}", f"spring moment at alpha_{sym}", f"M_f{sym}", mf,
+                  "N*m", st.M_f[i], note)
+    for tag, i, sym in (("inner", 0, "i"), ("outer", -1, "a")):
+        lever = f"pendulum_mass*link_a*link_rho*SIN(alpha_{tag})"
+        if mean:
+            w = (f"=SQRT((spring_moment_{tag}+reaction_cf_{tag}+omega_mean^2*reaction_ci_{tag})"
+                 f"/({lever}))")
+            note = ("omega^2 = (M_f + C_f + omega0^2 C_i) / (m a rho sin(alpha)) "
+                    "(Hamabe eq. 12, reaction_speed = 'mean')")
+        else:
+            w = f"=SQRT((spring_moment_{tag}+reaction_cf_{tag})/({lever}-reaction_ci_{tag}))"
+            note = ("omega^2 = (M_f + C_f) / (m a rho sin(alpha) - C_i) "
+                    "(Hamabe eq. 12, reaction_speed = 'local')")
+        s.formula(f"omega_{tag}", f"equilibrium speed at alpha_{sym}", f"omega_{sym}", w,
+                  "rad/s", st.omega[i], note)
+    for tag, i, sym in (("inner", 0, "i"), ("outer", -1, "a")):
+        s.formula(f"rpm_{tag}", f"equilibrium speed at alpha_{sym}", f"N_{sym}",
+                  f"=omega_{tag}*30/PI()", "rpm", st.omega[i] * 30.0 / math.pi,
+                  "N = 30 omega / pi")
+    s.formula("irregularity", "irregularity", "delta",
+              "=2*(omega_outer-omega_inner)/(omega_outer+omega_inner)", "", res.irregularity,
+              "delta = 2 (omega_a - omega_i)/(omega_a + omega_i) (Hamabe Part I)")
+    s.formula("irregularity_utilisation", "irregularity utilisation", "delta/delta0",
+              "=irregularity/irregularity_required", "", res.irregularity / sp.irregularity,
+              "<= 1 required")
+    s.row += 1
+    s.text("Yellow cells are inputs; blue cells are formulas on the defined names (column G). "
+           "'govopt value' is govopt's result when the workbook was written; 'rel. difference' "
+           "compares the two, so it shows how far an edited design has moved.")
+    s.text("The characteristic table, k^2 and dynamics on the other sheets are govopt values "
+           "and do not follow edits here; re-run govopt for them.")
+    _widths(ws, {1: 44, 2: 12, _VALUE: 18, 4: 10, _GOVOPT: 18, _RELDIFF: 12, _NAME: 24,
+                 _NOTE: 70})
+
+
+# --------------------------------------------------------------------------------------------
+# Characteristic
+
+
+def _build_characteristic(ws: Worksheet, res: Result) -> None:
+    st = res.statics
+    cols: list[tuple[str, Any, str]] = [
+        ("alpha (deg)", np.degrees(st.alpha), "deg"),
+        ("alpha (rad)", st.alpha, "rad"),
+        ("omega (rad/s)", st.omega, "rad/s"),
+        ("speed (rpm)", st.omega * 30.0 / math.pi, "rpm"),
+        ("M_z (N m)", st.M_z, "N*m"),
+        ("M_f (N m)", st.M_f, "N*m"),
+        ("M_r0 (N m)", st.M_r0, "N*m"),
+        ("spring force F (N)", st.spring_force, "N"),
+        ("shear stress tau (Pa)", st.stress, "Pa"),
+        ("half length l (m)", st.half_length, "m"),
+        ("spring arm h (m)", st.arm, "m"),
+    ]
+    if res.k2 is not None:
+        cols.append(("k^2 (rad^2/s^2)", res.k2, "rad^2/s^2"))
+    _header(ws, 1, [c[0] for c in cols])
+    ws.freeze_panes = "B2"
+    n = len(st.alpha)
+    for j, (_, values, unit) in enumerate(cols, start=1):
+        for i in range(n):
+            _set(ws.cell(i + 2, j), values[i], _fmt(unit))
+    chart = _scatter("Characteristic (Hamabe eq. 12)", "configuration alpha (deg)",
+                     "speed (rpm)")
+    _add_series(chart, ws, 1, 4, 1, n + 1)
+    chart.x_axis.scaling.min = math.floor(math.degrees(st.alpha[0]))
+    chart.x_axis.scaling.max = math.ceil(math.degrees(st.alpha[-1]))
+    ws.add_chart(chart, f"{get_column_letter(len(cols) + 2)}2")
+    _widths(ws, {j: 16 for j in range(1, len(cols) + 1)})
+    ws.row_dimensions[1].height = 32
+
+
+# --------------------------------------------------------------------------------------------
+# generic writers for the open-ended dicts (dynamics, optimisation)
+
+
+def _as_list(value: Any) -> list | None:
+    """``value`` as a list when it is a sequence or array (not text or a mapping)."""
+    if _is_scalar(value) or isinstance(value, Mapping):
+        return None
+    try:
+        return list(value)
+    except TypeError:
+        return None
+
+
+def _roots(value: Any) -> Any:
+    """Roots given as ``[re, im]`` pairs become complex numbers (written as ``a+bj`` text)."""
+    items = _as_list(value)
+    if items is None:
+        return value
+    out = []
+    for x in items:
+        pair = _as_list(x)
+        if pair is not None and len(pair) == 2 and all(
+                isinstance(p, int | float | np.integer | np.floating) for p in pair):
+            x = complex(float(pair[0]), float(pair[1]))
+        out.append(x)
+    return out
+
+
+def _records_table(ws: Worksheet, row: int, records: list, col: int = 1) -> tuple[int, list]:
+    """A list of records (dicts) as a table, one row each; fields holding a dict or a list of
+    non-scalars are returned as ``(index, key, value)`` for separate writing."""
+    records = [{k: _roots(v) if "root" in str(k) else v for k, v in r.items()}
+               if isinstance(r, Mapping) else {"value": r} for r in records]
+    keys: list[str] = []
+    nested: list[tuple[int, str, Any]] = []
+    for k, rec in enumerate(records):
+        for key, v in rec.items():
+            items = _as_list(v)
+            if isinstance(v, Mapping) or (items is not None
+                                          and not all(_is_scalar(x) for x in items)):
+                nested.append((k, str(key), v))
+            elif str(key) not in keys:
+                keys.append(str(key))
+    _header(ws, row, ["#", *keys], col)
+    for k, rec in enumerate(records):
+        row += 1
+        _set(ws.cell(row, col), k + 1)
+        by_name = {str(key): v for key, v in rec.items()}
+        for j, key in enumerate(keys, start=1):
+            v = by_name.get(key)
+            items = _as_list(v)
+            if v is None or isinstance(v, Mapping) or (
+                    items is not None and not all(_is_scalar(x) for x in items)):
+                continue
+            _set(ws.cell(row, col + j), v if items is None else _text_of(items), _GENERAL_FORMAT)
+    return row + 2, nested
+
+
+def _columns_table(ws: Worksheet, row: int, data: Mapping, col: int = 1) -> tuple[int, int]:
+    """A dict of equal-length lists as columns; returns (header row, last data row)."""
+    keys = list(data)
+    _header(ws, row, [str(k) for k in keys], col)
+    columns = [_as_list(data[k]) or [] for k in keys]
+    for j, values in enumerate(columns):
+        for i, v in enumerate(values):
+            _set(ws.cell(row + 1 + i, col + j), v, _GENERAL_FORMAT)
+    return row, row + max(len(c) for c in columns)
+
+
+def _is_column_dict(value: Any) -> bool:
+    """A dict of lists of scalars, each longer than one (a response table, say)."""
+    if not isinstance(value, Mapping) or not value:
+        return False
+    columns = [_as_list(v) for v in value.values()]
+    return all(c is not None and len(c) > 1 and all(_is_scalar(x) for x in c) for c in columns)
+
+
+def _columns_chart(ws: Worksheet, data: Mapping, head: int, last: int, col: int,
+                   title: str) -> int:
+    """A chart of columns 2.. against column 1 of a column table; returns the last row the
+    chart covers."""
+    keys = [str(k) for k in data]
+    if len(keys) < 2:
+        return last
+    chart = _scatter(title, keys[0], ", ".join(keys[1:]))
+    for j in range(col + 1, col + len(keys)):
+        _add_series(chart, ws, col, j, head, last)
+    ws.add_chart(chart, f"{get_column_letter(col + len(keys) + 1)}{head}")
+    return max(last, head + 19)
+
+
+def _nested(ws: Worksheet, row: int, name: str, value: Any, col: int) -> int:
+    """A field of a record that did not fit in its table row: a dict or a list of records."""
+    if isinstance(value, Mapping) and not _is_column_dict(value):
+        return _dump(ws, row, value, col) + 1
+    items = _as_list(value)
+    if items is not None and not all(_is_scalar(x) for x in items):
+        return _records_table(ws, row, items, col)[0]
+    return _dump(ws, row, {name: value}, col) + 1
+
+
+def _dump(ws: Worksheet, row: int, data: Mapping, col: int = 1) -> int:
+    """Any nested dict: scalars as ``key | value`` rows, lists of records as tables, dicts of
+    lists as column tables (charted when the key names a response), nested dicts indented.
+    Returns the next free row."""
+    for key, v in data.items():
+        items = _as_list(v)
+        if _is_scalar(v) or (items is None and not isinstance(v, Mapping)):
+            _set(ws.cell(row, col), str(key)).font = _BOLD
+            _set(ws.cell(row, col + 1), v, _GENERAL_FORMAT)
+            row += 1
+            continue
+        _set(ws.cell(row, col), str(key)).font = _BOLD
+        if _is_column_dict(v):
+            head, last = _columns_table(ws, row + 1, v, col)
+            if "response" in str(key):
+                last = _columns_chart(ws, v, head, last, col, str(key))
+            row = last + 2
+        elif isinstance(v, Mapping):
+            row = _dump(ws, row + 1, v, col + 1)
+        elif all(_is_scalar(x) for x in items):
+            if len(items) <= 24:
+                for j, x in enumerate(items, start=1):
+                    _set(ws.cell(row, col + j), x, _GENERAL_FORMAT)
+                row += 1
+            else:
+                for i, x in enumerate(items, start=1):
+                    _set(ws.cell(row + i, col + 1), x, _GENERAL_FORMAT)
+                row += len(items) + 1
+        else:
+            row, nested = _records_table(ws, row + 1, items, col)
+            for k, name, sub in nested:
+                _set(ws.cell(row, col), f"{key} #{k + 1}: {name}").font = _BOLD
+                row = _nested(ws, row + 1, name, sub, col + 1)
+    return row
+
+
+# --------------------------------------------------------------------------------------------
+# Dynamics
+
+
+def _build_dynamics(ws: Worksheet, res: Result) -> None:
+    spec, st = res.spec, res.statics
+    w0sq = spec.speed.omega_mean**2
+    _title(ws, 1, "Dynamics (Hamabe Part II)")
+    ws.freeze_panes = "A2"
+    row = 3
+    if res.k2 is not None:
+        _title(ws, row, "Restoring stiffness k^2 over the range against omega0^2 "
+                        "(Hamabe eqs. 18-20: stable for 0 < k^2 < omega0^2)", font=_BOLD)
+        head = row + 1
+        _header(ws, head, ["alpha (deg)", "k^2 (rad^2/s^2)", "omega0^2 (rad^2/s^2)",
+                           "k^2 / omega0^2"])
+        for i, a in enumerate(st.alpha):
+            r = head + 1 + i
+            _set(ws.cell(r, 1), math.degrees(a), _fmt("deg"))
+            _set(ws.cell(r, 2), res.k2[i], _fmt("rad^2/s^2"))
+            _set(ws.cell(r, 3), w0sq, _fmt("rad^2/s^2"))
+            _set(ws.cell(r, 4), res.k2[i] / w0sq, "0.0000")
+        last = head + len(st.alpha)
+        chart = _scatter("k^2 against omega0^2", "configuration alpha (deg)", "rad^2/s^2")
+        _add_series(chart, ws, 1, 2, head, last)
+        _add_series(chart, ws, 1, 3, head, last)
+        chart.y_axis.scaling.min = min(0.0, float(np.min(res.k2)))
+        ws.add_chart(chart, f"F{head}")
+        row = max(last + 2, head + 20)
+    dyn = res.dynamics or {}
+    if not dyn:
+        why = ("the spec has no [engine] data (flywheel inertia, torque slope), which the "
+               "load-change and vibration analyses need" if spec.engine is None else
+               "this result carries none (statics only); the spec has engine data, so run "
+               "the dynamics analysis to fill this part")
+        _set(ws.cell(row, 1), f"Dynamics were not run: {why}.").font = Font(italic=True)
+        _widths(ws, {1: 16, 2: 18, 3: 20, 4: 16})
+        return
+    for key, value in dyn.items():
+        if key == "load_changes" and isinstance(value, list | tuple):
+            row = _load_changes(ws, row, list(value))
+        elif key == "vibration" and isinstance(value, Mapping):
+            _title(ws, row, "Forced vibration (Hamabe eq. 32)", font=_BOLD)
+            row = _dump(ws, row + 1, value) + 1
+        else:
+            row = _dump(ws, row, {key: value}) + (0 if _is_scalar(value) else 1)
+    _widths(ws, {1: 16, 2: 18, 3: 20, 4: 16})
+
+
+def _load_changes(ws: Worksheet, row: int, changes: list) -> int:
+    _title(ws, row, "Load changes (Hamabe eq. 28: Hurwitz margin, over-regulation, settling)",
+           font=_BOLD)
+    row, nested = _records_table(ws, row + 1, changes)
+    for k, name, sub in nested:
+        rec = changes[k] if isinstance(changes[k], Mapping) else {}
+        label = _text_of(rec.get("name", f"load change {k + 1}"))
+        _title(ws, row, f"{label}: {name}", font=_BOLD)
+        if _is_column_dict(sub):
+            head, last = _columns_table(ws, row + 1, sub)
+            last = _columns_chart(ws, sub, head, last, 1, f"Load change '{label}': {name}")
+            row = last + 2
+        else:
+            row = _nested(ws, row + 1, name, sub, 1)
+    return row
+
+
+# --------------------------------------------------------------------------------------------
+# Checks
+
+
+#: Checks whose value and limit follow the Design sheet's formulas (name -> (value, limit)).
+_LIVE_CHECKS = {
+    "shear stress": ("=max_shear_stress", "=allowable_stress"),
+    "irregularity": ("=irregularity", "=irregularity_required"),
+    "k^2 < omega0^2 (no resonance)": (None, "=omega_mean^2"),
+}
+
+
+def _build_checks(ws: Worksheet, res: Result) -> None:
+    headers = ["check", "value", "sense", "limit", "unit", "margin", "result",
+               "binding (active)", "govopt margin", "source"]
+    _header(ws, 1, headers)
+    ws.freeze_panes = "B2"
+    row = 2
+    for c in res.checks:
+        fmt = _fmt(c.unit) if c.unit else _GENERAL_FORMAT
+        _set(ws.cell(row, 1), c.name)
+        value_f, limit_f = _LIVE_CHECKS.get(c.name, (None, None))
+        if value_f:
+            _formula(ws.cell(row, 2), value_f, fmt)
+        else:
+            _set(ws.cell(row, 2), c.value, fmt)
+        _set(ws.cell(row, 3), c.sense)
+        if limit_f:
+            _formula(ws.cell(row, 4), limit_f, fmt)
+        else:
+            _set(ws.cell(row, 4), c.limit, fmt)
+        _set(ws.cell(row, 5), _unit_label(c.unit))
+        diff = f"(D{row}-B{row})" if c.sense == "<=" else f"(B{row}-D{row})"
+        if c.scale:
+            scale = repr(float(c.scale))
+        else:
+            scale = f"IF(D{row}=0,1,ABS(D{row}))"
+        _formula(ws.cell(row, 6), f"={diff}/{scale}", "0.00%")
+        _formula(ws.cell(row, 7), f'=IF(F{row}>=-1E-9,"PASS","FAIL")')
+        _formula(ws.cell(row, 8), f'=IF(AND(F{row}>=-1E-9,F{row}<{ACTIVE_TOL!r}),"yes","")')
+        _set(ws.cell(row, 9), c.margin, "0.00%")
+        _set(ws.cell(row, 10), c.source)
+        row += 1
+    last = row - 1
+    if res.checks:
+        green = FormulaRule(formula=["$G2=\"PASS\""], fill=_PASS_FILL, font=_PASS_FONT)
+        red = FormulaRule(formula=["$G2=\"FAIL\""], fill=_FAIL_FILL, font=_FAIL_FONT)
+        for rng in (f"F2:G{last}", f"A2:A{last}"):
+            ws.conditional_formatting.add(rng, green)
+            ws.conditional_formatting.add(rng, red)
+    row += 1
+    active = [c.name for c in res.checks if c.active]
+    _set(ws.cell(row, 1), "binding (active) checks").font = _BOLD
+    _set(ws.cell(row, 2), ", ".join(active) if active else "none "
+         f"(a satisfied check is binding when its margin is below {ACTIVE_TOL:g})")
+    row += 1
+    failed = [c.name for c in res.checks if not c.passed]
+    _set(ws.cell(row, 1), "failed checks").font = _BOLD
+    _set(ws.cell(row, 2), ", ".join(failed) if failed else "none")
+    row += 2
+    _title(ws, row, "Optimisation", font=_BOLD)
+    row += 1
+    if res.optimisation:
+        _dump(ws, row, res.optimisation)
+    else:
+        _set(ws.cell(row, 1), "No optimisation in this result: it evaluates a given design "
+             "(no binding constraints or sensitivities to report).").font = Font(italic=True)
+    _widths(ws, {1: 34, 2: 18, 3: 7, 4: 18, 5: 11, 6: 11, 7: 9, 8: 10, 9: 13, 10: 48})
+
+
+# --------------------------------------------------------------------------------------------
+# Notes
+
+
+def _build_notes(ws: Worksheet, res: Result) -> None:
+    from .. import __version__
+
+    spec, an, mat = res.spec, res.spec.analysis, res.spec.material
+    now = _dt.datetime.now(_dt.UTC).replace(microsecond=0).isoformat()
+    rows: list[tuple[str, Any]] = [
+        ("govopt version", __version__),
+        ("written (UTC)", now),
+        ("result kind", res.kind),
+        ("spec file", str(spec.path)),
+        ("spec name", spec.name),
+        ("governor type", spec.governor_type),
+        ("", None),
+        ("Method", None),
+        ("statics", "Characteristic from the equilibrium M_f - M_z + M_r0 = 0 (Hamabe eq. 12) "
+                    "at each configuration alpha, with M_z (eq. 1), M_f (eq. 2 or 3) and the "
+                    "valve gear's mean reaction M_r0 (eq. 11)."),
+        ("spring", "Stiffness G d^4 / (64 r^3 n) and stress 16 F r / (pi d^3) (Hamabe Ex. 1), "
+                   "optionally times Wahl's factor (Wahl 1944); mass and surge frequency of "
+                   "the active coils."),
+        ("stability", "Restoring stiffness k^2 (Hamabe eqs. 18-20), required 0 < k^2 < "
+                      "omega0^2."),
+        ("dynamics", "Load change (eq. 28) and forced vibration (eq. 32) when the spec has "
+                     "engine data: " + ("included" if res.dynamics else "not in this result")),
+        ("", None),
+        ("Fidelity", None),
+        ("analysis.geometry", an.geometry),
+        ("analysis.reaction_speed", an.reaction_speed),
+        ("analysis.reaction_slope", str(an.reaction_slope).lower()),
+        ("analysis.points", an.points),
+        ("analysis.harmonics", an.harmonics),
+        ("analysis.settling_band", an.settling_band),
+        ("material.stress_correction", mat.stress_correction),
+        ("", None),
+        ("Sources", None),
+        *SOURCES,
+        ("", None),
+        ("Workbook", None),
+        ("units", "SI throughout (m, kg, s, N, Pa, rad) unless a header says otherwise."),
+        ("Design sheet", "Yellow input cells carry workbook names (wire_diameter, coil_radius, "
+                         "turns, free_half_length, pendulum_weight, ...); blue cells are live "
+                         "formulas on them, each beside govopt's own value."),
+        ("not live", "Characteristic, k^2, dynamics and checks other than stress and "
+                     "irregularity are govopt's values when the workbook was written."),
+    ]
+    _title(ws, 1, f"govopt {res.kind}: {spec.name}")
+    ws.freeze_panes = "A2"
+    for i, (key, value) in enumerate(rows, start=3):
+        c = _set(ws.cell(i, 1), key)
+        if value is None and key:
+            c.font = _BOLD
+        if value is not None:
+            _set(ws.cell(i, 2), value, "General").alignment = _WRAP
+    _widths(ws, {1: 28, 2: 110})
