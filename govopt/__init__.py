@@ -1,7 +1,7 @@
 """govopt: design optimisation of governor springs (Hamabe's shaft governor and relatives)."""
 
-from .errors import DesignError, GovoptError, InfeasibleError
 from .analysis.transient import transient
+from .errors import DesignError, GovoptError, InfeasibleError
 from .evaluation import evaluate
 from .optimize.design import design
 from .result import Check, Result

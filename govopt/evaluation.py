@@ -68,6 +68,17 @@ def evaluate(spec: Spec, design: Design | None = None) -> Result:
             if req is not None and req.max_settling_time is not None:
                 checks.append(Check(f"settling time: {lc['name']}", lc["settling_time_s"],
                                     req.max_settling_time, "<=", "s", "Hamabe Part III"))
+    if design.dashpot is not None or spec.engine is not None:
+        from .analysis import vibration  # Part II: the valve gear's fluctuating reaction
+
+        vib = vibration.vibration(spec, sd, spec.geometry.alpha_normal,
+                                  dashpot=design.dashpot or 0.0)
+        dynamics["vibration"] = vib.to_dict()
+        dynamics["k2_normal_rad2_s2"] = float(statics.restoring_k2(
+            spec, spec.geometry.alpha_normal, sd, spec.speed.omega_mean**2))
+        if req is not None and req.max_vibration is not None:
+            checks.append(Check("vibration peak-to-peak", dynamics["vibration"]["peak_to_peak_rad"],
+                                req.max_vibration, "<=", "rad", "Hamabe Part II, eqs. (18)-(22)"))
     if spec.engine is not None and spec.load_changes and design.friction_moment is not None:
         from .analysis import friction  # only when the design has friction (model what is asked)
 

@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from .analysis.statics import Characteristic, SpringDesign
+from .analysis.statics import Characteristic, SpringDesign, classify_k2
 from .spec import Design, Spec
 
 #: Relative margin below which a satisfied constraint is reported as active (binding).
@@ -82,6 +82,7 @@ class Result:
         """JSON-ready dict; keys carry their SI unit (``_m``, ``_Pa``, ``_rad_s`` ...)."""
         st, sd = self.statics, self.spring
         rows = []
+        k2_case = None if self.k2 is None else classify_k2(self.k2, self.spec.speed.omega_mean**2)
         for i, a in enumerate(st.alpha):
             row = {
                 "alpha_deg": math.degrees(a), "omega_rad_s": st.omega[i],
@@ -91,6 +92,7 @@ class Result:
             }
             if self.k2 is not None:
                 row["k2_rad2_s2"] = self.k2[i]
+                row["k2_case"] = str(k2_case[i])
             rows.append(row)
         out = {
             "spec": self.spec.path,
@@ -125,6 +127,8 @@ class Result:
         }
         if self.k2 is not None:
             out["k2_rad2_s2"] = list(self.k2)
+            out["k2_cases"] = {c: int(np.sum(k2_case == c))
+                               for c in ("stable", "resonance risk", "unstable")}
         out.update(self.dynamics)
         out.update(self.optimisation)
         return _jsonable(out)

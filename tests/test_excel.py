@@ -7,6 +7,7 @@ import dataclasses
 import math
 import os
 import shutil
+import stat
 import subprocess
 import tomllib
 from pathlib import Path
@@ -18,6 +19,7 @@ import pytest
 import govopt
 from govopt.errors import GovoptError
 from govopt.report import excel
+from govopt.result import Check
 
 ROOT = Path(__file__).resolve().parent.parent
 SPECS = ROOT / "specs"
@@ -26,6 +28,10 @@ BUNDLED = sorted(p.stem for p in SPECS.glob("*.toml")
                  if "design" in tomllib.loads(p.read_text(encoding="utf-8")))
 SOFFICE = shutil.which("soffice") or shutil.which("libreoffice")
 needs_libreoffice = pytest.mark.skipif(SOFFICE is None, reason="LibreOffice (soffice) not on PATH")
+
+#: Workbooks recalculated by LibreOffice (about a second each): the paper's cases a, c, d' and
+#: the other fidelity branches (the rest of the bundled specs differ only in numbers).
+RECALCULATED = ("hamabe-a", "hamabe-c", "hamabe-d-prime", "alt")
 
 #: Relative tolerance between LibreOffice's recalculation and govopt.
 RTOL = 1e-9
@@ -46,7 +52,7 @@ oor:op="fuse"><value>0</value></prop></item>
 # helpers
 
 
-def _alt_spec(**overrides):
+def _alt_spec():
     """hamabe-a with the other fidelity branches (series geometry, reaction at the mean speed,
     Wahl correction), a fixed free length and inertia, and neither dash-pot nor engine."""
     data = tomllib.loads((SPECS / "hamabe-a.toml").read_text())
@@ -58,7 +64,6 @@ def _alt_spec(**overrides):
     design["free_half_length"] = "130 mm"
     design["pendulum_inertia"] = "0.19 kg*m^2"
     del data["engine"], data["load_change"]
-    data.update(overrides)
     return govopt.parse_spec(data, "hamabe-a-alt.toml")
 
 
@@ -164,6 +169,15 @@ def _fake_dynamics(res):
             "sensitivities": {"shear stress": -0.33, "irregularity": 0.0},
         },
         kind="optimisation",
+        # an optimiser's checks: a tighter stress limit and k^2 margin than the spec's own
+        checks=[
+            Check("shear stress", res.max_stress, 0.9 * res.spec.material.allowable_shear_stress,
+                  "<="),
+            Check("irregularity", res.irregularity, res.spec.speed.irregularity, "<="),
+            Check("k^2 < omega0^2 (no resonance)", float(np.max(res.k2)),
+                  0.95 * res.spec.speed.omega_mean**2, "<="),
+            Check("pendulum mass >= min", res.spring.m, res.spring.m, ">="),
+        ],
     )
 
 
@@ -172,7 +186,7 @@ def recalculated(results, workbooks, tmp_path_factory):
     """All the workbooks, an edited one and two special ones, recalculated in one LibreOffice
     run. Returns {key: (written path, LibreOffice output path)}."""
     d = tmp_path_factory.mktemp("lo")
-    files = dict(workbooks)
+    files = {name: workbooks[name] for name in RECALCULATED}
     # the design edited in the workbook: wire diameter 17 mm -> 16 mm
     wb = openpyxl.load_workbook(workbooks["hamabe-a"])
     sheet, ref = _named_cells(wb)["wire_diameter"]
@@ -257,7 +271,7 @@ def test_sheets_charts_and_names(workbooks, results, name):
     assert notes["analysis.geometry"] == res.spec.analysis.geometry
     assert notes["material.stress_correction"] == res.spec.material.stress_correction
     assert {"Hamabe eq. 1", "Hamabe eq. 12", "Hamabe eqs. 18-20", "Hamabe eq. 28",
-            "Hamabe eq. 32", "Wahl 1944"} <= set(notes)
+            "Hamabe eq. 32", "Hamabe eqs. 16-23", "Wahl 1944"} <= set(notes)
 
     spec_rows = list(wb["Spec"].iter_rows(min_row=2, max_row=len(res.spec.entries) + 1,
                                           values_only=True))
@@ -366,9 +380,15 @@ def test_atomic_write_save_failure(tmp_path, results, monkeypatch, existing):
 def test_atomic_write_replaces_and_reports_bad_directory(tmp_path, results):
     target = tmp_path / "w.xlsx"
     target.write_bytes(b"previous")
+    target.chmod(0o640)
     assert excel.write_workbook(results["hamabe-a"], str(target)) == target
     assert openpyxl.load_workbook(target).sheetnames[0] == "Spec"
     assert os.listdir(tmp_path) == ["w.xlsx"]
+    assert stat.S_IMODE(target.stat().st_mode) == 0o640  # the replaced file's permissions
+    umask = os.umask(0o022)
+    os.umask(umask)
+    fresh = excel.write_workbook(results["hamabe-a"], tmp_path / "new.xlsx")
+    assert stat.S_IMODE(fresh.stat().st_mode) == 0o666 & ~umask  # not mkstemp's 0600
     with pytest.raises(GovoptError, match="cannot write workbook"):
         excel.write_workbook(results["hamabe-a"], tmp_path / "missing" / "w.xlsx")
 
@@ -421,7 +441,7 @@ def _compare_all_formulas(written: Path, recalculated: Path, res, *, design_only
 
 @pytest.mark.libreoffice
 @needs_libreoffice
-@pytest.mark.parametrize("name", [*BUNDLED, "alt"])
+@pytest.mark.parametrize("name", RECALCULATED)
 def test_libreoffice_recalculation_matches_govopt(recalculated, results, name):
     written, out = recalculated[name]
     worst = _compare_all_formulas(written, out, results[name])
@@ -474,9 +494,19 @@ def test_libreoffice_keeps_formula_like_text(recalculated):
 
 @pytest.mark.libreoffice
 @needs_libreoffice
-def test_libreoffice_opens_dynamics_workbook(recalculated):
-    _, out = recalculated["dynamics"]
+def test_libreoffice_dynamics_and_optimiser_checks(recalculated, results):
+    res = _fake_dynamics(results["hamabe-a"])
+    written, out = recalculated["dynamics"]
     wb = openpyxl.load_workbook(out, data_only=True)
     assert tuple(wb.sheetnames) == excel.SHEETS
     cells = [c.value for r in wb["Dynamics"].iter_rows() for c in r if c.value is not None]
     assert "hurwitz_margin" in cells
+    # a check limit that is not the spec's own is written as a number, not linked to the input
+    checks = openpyxl.load_workbook(written)["Checks"]
+    assert checks["B2"].value == "=max_shear_stress" and checks["D2"].data_type == "n"
+    assert checks["D4"].data_type == "n"
+    worst = _compare_all_formulas(written, out, res)
+    assert [r[6] for r in wb["Checks"].iter_rows(min_row=2, max_row=5, values_only=True)] == \
+        ["FAIL", "FAIL", "PASS", "PASS"]
+    assert wb["Checks"]["H5"].value == "yes"
+    print(f"dynamics: worst relative difference LibreOffice vs govopt {worst:.2e}")

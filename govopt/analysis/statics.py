@@ -126,6 +126,14 @@ def restoring_k2(spec: Spec, alpha, sd: SpringDesign, omega2):
     return slope / sd.inertia
 
 
+def classify_k2(k2, omega0_sq):
+    """Hamabe Part II's three cases per configuration: ``"stable"`` (case 1,
+    ``0 < k^2 < omega0^2``), ``"resonance risk"`` (case 2, ``k^2 >= omega0^2``: the valve gear's
+    harmonics can resonate), ``"unstable"`` (case 3, ``k^2 <= 0``)."""
+    k2 = np.asarray(k2, dtype=float)
+    return np.where(k2 <= 0, "unstable", np.where(k2 >= omega0_sq, "resonance risk", "stable"))
+
+
 def spring_design(spec: Spec, design: Design | None = None) -> SpringDesign:
     """The pendulum and spring of a given design, with the free length from equilibrium at the
     normal configuration when the design does not fix it (Hamabe, Example 1)."""
@@ -158,7 +166,7 @@ class Characteristic:
 
     @property
     def irregularity(self) -> float:
-        """``delta_0 = (omega_a - omega_i) / omega_mean`` with the mean of the two (Hamabe, Part I)."""
+        """``delta_0 = (omega_a - omega_i) / omega_mean``, mean of the two (Hamabe, Part I)."""
         wi, wa = self.omega[0], self.omega[-1]
         return float(2.0 * (wa - wi) / (wa + wi))
 

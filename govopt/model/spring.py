@@ -47,15 +47,16 @@ def wahl_factor(C):
 def shear_stress(F, d, r, correction: str = "none"):
     """Maximum torsional shear stress in the wire under axial force ``F``.
 
-    Uncorrected: ``tau = 16 F r / (pi d^3)`` — Hamabe, Example 1 (``d = (16 F_a r / (pi k_s))^(1/3)``),
-    i.e. torque ``F r`` on a round bar of diameter ``d``. ``correction="wahl"`` multiplies by
-    :func:`wahl_factor` of the index ``2 r / d``.
+    Uncorrected: ``tau = 16 F r / (pi d^3)`` — Hamabe, Example 1
+    (``d = (16 F_a r / (pi k_s))^(1/3)``), i.e. torque ``F r`` on a round bar of diameter ``d``.
+    ``correction="wahl"`` multiplies by :func:`wahl_factor` of the index ``2 r / d``.
     """
     tau = 16.0 * np.abs(F) * r / (np.pi * d**3)
     if correction == "wahl":
         return tau * wahl_factor(spring_index(d, r))
     if correction != "none":
-        raise ValueError(f"stress correction must be one of {STRESS_CORRECTIONS}, got {correction!r}")
+        raise ValueError(f"stress correction must be one of {STRESS_CORRECTIONS}, "
+                         f"got {correction!r}")
     return tau
 
 
@@ -68,7 +69,7 @@ def wire_diameter_for_stress(F, r, allowable):
 
 
 def turns_for_stiffness(kappa, d, r, G):
-    """Active turns giving stiffness ``kappa``: ``n = G d^4 / (64 r^3 kappa)`` (Hamabe, Example 1)."""
+    """Active turns for stiffness ``kappa``: ``n = G d^4 / (64 r^3 kappa)`` (Hamabe, Ex. 1)."""
     return G * d**4 / (64.0 * r**3 * kappa)
 
 

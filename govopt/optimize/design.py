@@ -31,7 +31,7 @@ import numpy as np
 from ..analysis import statics
 from ..analysis import transient as tr
 from ..errors import InfeasibleError
-from ..model import linkage, spring
+from ..model import spring
 from ..spec import Design, Requirements, Spec
 from .kappa import KappaModel
 
@@ -55,8 +55,8 @@ class Grid:
         alpha = statics.configurations(spec)
         extra = [a for lc in spec.load_changes for a in (lc.alpha_from, lc.alpha_to)]
         alpha = np.unique(np.concatenate([alpha, extra]))
-        idx = [(int(np.searchsorted(alpha, lc.alpha_from)), int(np.searchsorted(alpha, lc.alpha_to)))
-               for lc in spec.load_changes]
+        idx = [(int(np.searchsorted(alpha, lc.alpha_from)),
+                int(np.searchsorted(alpha, lc.alpha_to))) for lc in spec.load_changes]
         return cls(alpha, 0, len(alpha) - 1, tuple(idx))
 
 

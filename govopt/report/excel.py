@@ -87,8 +87,12 @@ SOURCES = (
     ("Hamabe eq. 12", "equilibrium M_f - M_z + M_r0 = 0: the characteristic curve"),
     ("Hamabe eqs. 18-20", "restoring stiffness k^2 = (dM_f/dalpha - omega^2 m a rho "
                           "cos(alpha) [+ dM_r0/dalpha]) / I"),
-    ("Hamabe eq. 28", "load change: characteristic equation of governor and engine"),
-    ("Hamabe eq. 32", "forced vibration of the pendulum by the speed fluctuation"),
+    ("Hamabe eqs. 16-23", "forced vibration of the pendulum by the engine's speed "
+                          "fluctuation: harmonics (eqs. 20-22), dash-pot (eq. 23)"),
+    ("Hamabe eq. 28", "load change of governor and engine: a0 xi''' + 3 a1 xi'' + 3 a2 xi' "
+                      "+ a3 xi = 0 (from eqs. 24-27)"),
+    ("Hamabe eq. 32", "Hurwitz stability of eq. 28: 9 a1 a2 > a0 a3 (margin 9 a1 a2 / (a0 a3) "
+                      "- 1)"),
     ("Hamabe Example 1", "spring design: kappa = G d^4 / (64 r^3 n), tau = 16 F r / (pi d^3), "
                          "free half length from equilibrium at the normal configuration"),
     ("Hamabe Part I", "irregularity delta = 2 (omega_a - omega_i) / (omega_a + omega_i)"),
@@ -142,7 +146,7 @@ def build_workbook(result: Result) -> Workbook:
 def _atomic_save(wb: Workbook, path: Path) -> None:
     directory = path.parent if str(path.parent) else Path(".")
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.tmp", dir=directory)
     except OSError as exc:
         raise GovoptError(f"{path}: cannot write workbook ({exc.strerror or exc})") from exc
     os.close(fd)
@@ -736,7 +740,7 @@ def _build_dynamics(ws: Worksheet, res: Result) -> None:
         if key == "load_changes" and isinstance(value, list | tuple):
             row = _load_changes(ws, row, list(value))
         elif key == "vibration" and isinstance(value, Mapping):
-            _title(ws, row, "Forced vibration (Hamabe eq. 32)", font=_BOLD)
+            _title(ws, row, "Forced vibration (Hamabe eqs. 16-23)", font=_BOLD)
             row = _dump(ws, row + 1, value) + 1
         else:
             row = _dump(ws, row, {key: value}) + (0 if _is_scalar(value) else 1)
@@ -744,8 +748,8 @@ def _build_dynamics(ws: Worksheet, res: Result) -> None:
 
 
 def _load_changes(ws: Worksheet, row: int, changes: list) -> int:
-    _title(ws, row, "Load changes (Hamabe eq. 28: Hurwitz margin, over-regulation, settling)",
-           font=_BOLD)
+    _title(ws, row, "Load changes (Hamabe eq. 28; Hurwitz margin eq. 32; over-regulation, "
+                    "settling)", font=_BOLD)
     row, nested = _records_table(ws, row + 1, changes)
     for k, name, sub in nested:
         rec = changes[k] if isinstance(changes[k], Mapping) else {}
@@ -764,12 +768,26 @@ def _load_changes(ws: Worksheet, row: int, changes: list) -> int:
 # Checks
 
 
-#: Checks whose value and limit follow the Design sheet's formulas (name -> (value, limit)).
-_LIVE_CHECKS = {
-    "shear stress": ("=max_shear_stress", "=allowable_stress"),
-    "irregularity": ("=irregularity", "=irregularity_required"),
-    "k^2 < omega0^2 (no resonance)": (None, "=omega_mean^2"),
-}
+def _live_checks(res: Result) -> dict[str, tuple[str | None, str | None]]:
+    """Checks whose value and limit can follow the Design sheet's formulas: name -> (value
+    formula, limit formula), each only where it is the very quantity govopt checked."""
+    def same(a: float, b: float) -> bool:
+        return math.isclose(a, b, rel_tol=1e-12, abs_tol=0.0)
+
+    spec, out = res.spec, {}
+    for c in res.checks:
+        if c.name == "shear stress":
+            pair = ("=max_shear_stress" if same(c.value, res.max_stress) else None,
+                    "=allowable_stress" if same(c.limit, spec.material.allowable_shear_stress)
+                    else None)
+        elif c.name == "irregularity":
+            pair = ("=irregularity" if same(c.value, res.irregularity) else None,
+                    "=irregularity_required" if same(c.limit, spec.speed.irregularity)
+                    else None)
+        else:
+            continue
+        out[c.name] = pair
+    return out
 
 
 def _build_checks(ws: Worksheet, res: Result) -> None:
@@ -778,10 +796,11 @@ def _build_checks(ws: Worksheet, res: Result) -> None:
     _header(ws, 1, headers)
     ws.freeze_panes = "B2"
     row = 2
+    live = _live_checks(res)
     for c in res.checks:
         fmt = _fmt(c.unit) if c.unit else _GENERAL_FORMAT
         _set(ws.cell(row, 1), c.name)
-        value_f, limit_f = _LIVE_CHECKS.get(c.name, (None, None))
+        value_f, limit_f = live.get(c.name, (None, None))
         if value_f:
             _formula(ws.cell(row, 2), value_f, fmt)
         else:
@@ -856,8 +875,9 @@ def _build_notes(ws: Worksheet, res: Result) -> None:
                    "the active coils."),
         ("stability", "Restoring stiffness k^2 (Hamabe eqs. 18-20), required 0 < k^2 < "
                       "omega0^2."),
-        ("dynamics", "Load change (eq. 28) and forced vibration (eq. 32) when the spec has "
-                     "engine data: " + ("included" if res.dynamics else "not in this result")),
+        ("dynamics", "Load change (eq. 28, stability by Hurwitz eq. 32) and forced vibration "
+                     "(eqs. 16-23) when the spec has engine data: "
+                     + ("included" if res.dynamics else "not in this result")),
         ("", None),
         ("Fidelity", None),
         ("analysis.geometry", an.geometry),

@@ -36,7 +36,8 @@ def format_result(res: Result) -> str:
         rows.append(row)
     out += ["Characteristic (Hamabe eq. 12)", _table(headers, rows), ""]
     out += [
-        f"irregularity          {res.irregularity:.5f}  (required <= {res.spec.speed.irregularity:g})",
+        f"irregularity          {res.irregularity:.5f}  "
+        f"(required <= {res.spec.speed.irregularity:g})",
         f"speed range           {st.omega[0]:.4f} .. {st.omega[-1]:.4f} rad/s  "
         f"({st.omega[0] * 30 / math.pi:.2f} .. {st.omega[-1] * 30 / math.pi:.2f} rpm)",
         f"pendulum              {sd.m:.4g} kg ({to_unit(sd.m * 9.80665, 'force', 'kgf'):.4g} kgf),"
@@ -62,4 +63,37 @@ def format_result(res: Result) -> str:
 
 def format_dynamics(res: Result) -> list[str]:
     """Lines for the dynamics sections present in the result (none for statics only)."""
-    return []
+    out = []
+    vib = res.dynamics.get("vibration")
+    if vib:
+        out += ["Vibration under the valve gear (Hamabe Part II, normal configuration)",
+                f"  k^2 = {vib['k2_rad2_s2']:.1f} 1/s^2, peak-to-peak "
+                f"{math.degrees(vib['peak_to_peak_rad']):.3f} deg "
+                f"(+- {math.degrees(vib['truncation_error_rad']):.2g} deg truncation, "
+                f"{vib['n_harmonics']} harmonics), eccentric travel "
+                f"{vib['eccentric_travel_m'] * 1e3:.3f} mm", ""]
+    for lc in res.dynamics.get("load_changes", []):
+        roots = ", ".join(f"{r:.4g}" if abs(i) < 1e-12 else f"{r:.4g}{i:+.4g}i"
+                          for r, i in lc["roots_per_s"])
+        out += [f"Load change '{lc['name']}' {lc['alpha_from_deg']:.3f} -> "
+                f"{lc['alpha_to_deg']:.3f} deg (Hamabe Part III, eq. 28)",
+                f"  roots {roots} 1/s ({lc['kind']}); Hurwitz margin (eq. 32) "
+                f"{lc['hurwitz_margin']:.4g}; stable: {lc['stable']}",
+                f"  over-regulation {math.degrees(lc['over_regulation_rad']):.4g} deg; settling "
+                f"({100 * lc['settling_band']:g} % band) {lc['settling_time_s']:.4g} s; first "
+                f"arrival {lc['first_arrival_time_s']:.4g} s", ""]
+    opt = res.optimisation
+    if opt:
+        d, b = opt["design"], opt.get("continuous_bound")
+        out += [f"Design ({opt['status']}): objective {opt['objective']['name']} = "
+                f"{opt['objective']['value']:.5g}"
+                + (f", continuous bound {b['objective']:.5g} (gap {100 * opt['gap']:.2f} %)"
+                   if b else ""),
+                f"  dash-pot f = {d['dashpot_N_m_s_per_rad']:.5g} N m s/rad (feasible "
+                f"{d['dashpot_feasible_range_N_m_s_per_rad'][0]:.4g} .. "
+                f"{d['dashpot_feasible_range_N_m_s_per_rad'][1]:.4g} on the search grid)",
+                f"  searched {opt['search']['combinations']} combinations, "
+                f"{opt['search']['statics_feasible']} pass the statics, "
+                f"{opt['search']['spring_feasible']} the spring checks",
+                *[f"  {s['text']}" for s in opt.get("sensitivities", [])], ""]
+    return out
