@@ -267,7 +267,7 @@ PREFERRED_WIRE = tuple(x / 1000 for x in (
     1.0, 1.12, 1.25, 1.4, 1.6, 1.8, 2.0, 2.24, 2.5, 2.8, 3.15, 3.55, 4.0, 4.5, 5.0, 5.6, 6.3, 7.1,
     8.0, 9.0, 10.0, 11.2, 12.5, 14.0, 16.0, 18.0, 20.0, 22.4, 25.0))
 
-OBJECTIVES = ("moving_mass", "spring_mass", "settling_time")
+OBJECTIVES = ("moving_mass", "spring_mass", "settling_time", "vibration")
 
 
 @dataclass(frozen=True)

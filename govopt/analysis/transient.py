@@ -28,7 +28,15 @@ distance (in ``z = l t``), otherwise by the usual recurrence divided by the *lar
 distance (>= 1), which cannot amplify rounding.  The only inputs from the roots are the roots
 themselves, so the result is as accurate as the roots are *backward* stable (their Vieta
 coefficients match the cubic's), not as accurate as they are forward accurate -- which is what
-makes the method insensitive to (near-)repeated roots.
+makes the method insensitive to (near-)repeated roots.  Derivatives ``xi^(j)`` differentiate
+the same Newton form in ``t`` (Leibniz rule for divided differences of ``s^j exp(s t)``), so
+they too start from the exact initial state rather than from the fast-mode-dominated
+``A^j x0``.  The nodes are ordered per design with the farthest pair first and last (the one
+with the larger real part first).
+
+Event analysis (over-regulation, first arrival, settling) is exact root finding on the analytic
+response: :func:`analyse` (one design, ``brentq``) and :func:`analyse_many` (vectorised
+bracketed Newton over many designs).
 """
 
 from __future__ import annotations
@@ -61,7 +69,7 @@ _EPS = float(np.finfo(float).eps)
 _BLOCK = 1 << 15  # elements per evaluation block (keeps temporaries in cache)
 _SERIES_TERMS = 20  # Taylor terms of the 3-node divided difference (|h| <= 2/3: error < 1e-20)
 _PER_PERIOD = 24  # event-search grid points per period of the fastest oscillation
-_EFOLDS = 4.0  # default horizon: ln(1/band) + this many e-folds of the slowest mode
+_EFOLDS = 12.0  # default horizon: ln(1/band) + this many e-folds of the slowest mode
 
 
 def _floats(*xs):
@@ -343,13 +351,14 @@ def _eval_block(nodes, C, t):
     pair; C (n,J,6); t (n or 1, T).  Real or complex arrays (real roots stay real).
 
     Returns (n, J, T): sum_k Re(C[..., k] * F_k) with F = (exp(z1), t exp[z1,z2],
-    t^2 exp[z1,z2,z3], exp(z2), t exp[z2,z3], exp(z3)), z_i = l_i t (the divided differences of
-    s -> exp(s t)); the derivative orders j > 0 use all six (see _Response).  Where two nodes are 1 or more apart (in z), the
-    first difference is ``(exp(zb) - exp(za)) / (zb - za)``; closer, it is ``exp(mid) sinh(h)/h``.
-    Since |z3 - z1| is the largest node distance, the recurrence
-    ``exp[z1,z2,z3] = (exp[z2,z3] - exp[z1,z2]) / (z3 - z1)`` is used only where that distance
-    is >= 1 (so it cannot amplify rounding), the centroid series where all three nodes are
-    within distance 1.  No division by a small node difference occurs anywhere.
+    t^2 exp[z1,z2,z3], exp(z2), t exp[z2,z3], exp(z3)), z_i = l_i t, the divided differences
+    of s -> exp(s t); derivative orders j > 0 use all six (see _Response).
+
+    First differences: ``(exp(zb) - exp(za)) / (zb - za)`` where the nodes are 1 or more apart
+    (in z), ``exp(mid) sinh(h)/h`` where closer.  Second difference: since |z3 - z1| is the
+    largest node distance, ``(exp[z2,z3] - exp[z1,z2]) / (z3 - z1)`` is used only where that
+    distance is >= 1 (it cannot amplify rounding), and the centroid series where all three nodes
+    are within distance 1.  No division by a small node difference occurs anywhere.
     """
     n = nodes.shape[0]
     t = np.broadcast_to(t, (n, t.shape[-1]))
@@ -376,14 +385,15 @@ def _eval_block(nodes, C, t):
             e1, e2, e3 = (np.exp(lk[:, None] * t) for lk in (l1, l2, l3))
         f1 = (e2 - e1) * (1.0 / (l2 - l1))[:, None]  # t exp[z1, z2]
         g23 = (e3 - e2) * (1.0 / (l3 - l2))[:, None]  # t exp[z2, z3]
-        close = np.abs(l2 - l1)[:, None] * t < 1.0
+        at = np.abs(t)
+        close = np.abs(l2 - l1)[:, None] * at < 1.0
         if close.any():
             f1[close] = _tdd1(l1, l2, t, close)
-        close = np.abs(l3 - l2)[:, None] * t < 1.0
+        close = np.abs(l3 - l2)[:, None] * at < 1.0
         if close.any():
             g23[close] = _tdd1(l2, l3, t, close)
         f2 = (g23 - f1) * (1.0 / (l3 - l1))[:, None]  # t^2 exp[z1, z2, z3]
-        close = np.abs(l3 - l1)[:, None] * t < 1.0
+        close = np.abs(l3 - l1)[:, None] * at < 1.0
         if close.any():
             rows = np.nonzero(close)[0]
             tc = t[close]
@@ -442,7 +452,7 @@ class _Response:
             # m = -2 .. order (index m + 2): divided differences of s^m (Leibniz rule below)
             zero, one = np.zeros_like(l1), np.ones_like(l1)
             h1, h2, h3 = [zero, zero, one], [zero, zero, one], [zero, zero, one]
-            for m in range(1, order + 1):
+            for _ in range(order):
                 h1.append(l1 * h1[-1])
                 h2.append(l2 * h2[-1] + h1[-1])
                 h3.append(l3 * h3[-1] + h2[-1])
@@ -487,18 +497,20 @@ class _Response:
         new._split()
         return new
 
-    def __call__(self, t):
-        """Values (n, J, T): t is 1-D (common times) or (n, T) (per-design times)."""
+    def __call__(self, t, nder=None):
+        """Values (n, J, T) of xi, xi', ... up to ``nder`` (default: the prepared order);
+        t is 1-D (common times) or (n, T) (per-design times)."""
         t = np.asarray(t, dtype=float)
         common = t.ndim == 1
         T = t.shape[-1]
-        out = np.empty((self.n, self.order + 1, T))
+        J = self.order + 1 if nder is None else nder + 1
+        out = np.empty((self.n, J, T))
         step = max(1, _BLOCK // max(T, 1))
         for rows, nodes, C in self._groups:
             for s in range(0, rows.size, step):
                 r = rows[s : s + step]
                 tb = t[None, :] if common else t[r]
-                out[r] = _eval_block(nodes[r], C[r], tb)
+                out[r] = _eval_block(nodes[r], C[r, :J], tb)
         return out
 
 
@@ -516,7 +528,7 @@ class _ScalarResponse:
 
     @staticmethod
     def _tdd1(la, lb, t, ea, eb):
-        if abs(lb - la) * t < 1.0:
+        if abs((lb - la) * t) < 1.0:
             h = 0.5 * (lb - la) * t
             sh = 1.0 + h * h / 6.0 * (1.0 + h * h / 20.0 * (1.0 + h * h / 42.0)) \
                 if abs(h) < 1e-3 else cmath.sinh(h) / h
@@ -531,7 +543,7 @@ class _ScalarResponse:
             return math.inf
         f1 = self._tdd1(l1, l2, t, e1, e2)
         g23 = self._tdd1(l2, l3, t, e2, e3)
-        if abs(l3 - l1) * t < 1.0:
+        if abs((l3 - l1) * t) < 1.0:
             z1, z2, z3 = l1 * t, l2 * t, l3 * t
             c = (z1 + z2 + z3) / 3.0
             h1, h2, h3 = z1 - c, z2 - c, z3 - c
@@ -602,8 +614,9 @@ class TransientResult:
     ``xi0`` (same units as ``xi``; 0.0 if it never crosses) -- the pendulum passing its new
     equilibrium.  ``first_arrival_time`` is the first ``t > 0`` with ``xi = 0`` (inf if none).
     ``settling_time`` is the smallest ``T`` with ``|xi(t)| <= band * |xi0|`` for all ``t >= T``
-    (``|xi0|`` replaced by ``max |xi|`` if ``xi0 = 0``); inf for an unstable design or when the
-    design has not settled within ``horizon`` (then ``truncated`` is True).  ``extrema`` lists
+    (``|xi0|`` replaced by ``max |xi|`` if ``xi0 = 0``); inf for an unstable design, or when a
+    stable design has not settled within ``horizon`` (``|xi| <= band |xi0| / 4`` over its last
+    quarter; then ``truncated`` is True).  ``extrema`` lists
     ``(t, xi(t))`` at each zero of ``xi'`` in ``(0, horizon]``.  Events of unstable designs are
     those within ``horizon``.
     """
@@ -640,7 +653,7 @@ def _default_horizon(roots, band, stable):
         settle = (math.log(1.0 / band) + _EFOLDS) / np.where(decay > 0, decay, np.nan)
     grow = np.maximum(roots.real.max(axis=-1), 0.0)
     with np.errstate(divide="ignore"):
-        unstable = np.minimum(40.0 * 2.0 * np.pi / lam_min, 40.0 / np.where(grow > 0, grow, 0.0))
+        unstable = np.minimum(40.0 * 2.0 * np.pi / lam_min, 20.0 / np.where(grow > 0, grow, 0.0))
     h = np.where(stable & np.isfinite(settle), settle, unstable)
     return np.where(np.isfinite(h) & (h > 0), h, 40.0 * 2.0 * np.pi / lam_min)
 
@@ -656,12 +669,13 @@ def _grid(roots, horizon, max_points):
     if omega > 0:
         dt = 2.0 * np.pi / omega / _PER_PERIOD
         n_u = int(math.ceil(horizon / dt))
+        end = horizon
         if n_u > max_points:
-            n_u, truncated = max_points, True
-        parts.append(np.linspace(0.0, n_u * dt, n_u + 1))
+            n_u, truncated, end = max_points, True, max_points * dt
+        parts.append(np.linspace(0.0, end, n_u + 1))
     t = np.unique(np.concatenate(parts))
     if truncated:
-        t = t[t <= n_u * dt]
+        t = t[t <= end]
     return t, truncated
 
 
@@ -673,9 +687,12 @@ def _tail_ok(t, xi, b):
 
 
 def _brackets(y):
-    """Indices i with a sign change (or exact zero at i+1) between y[i] and y[i+1]."""
+    """Indices i with a root in [y[i], y[i+1]]: a sign change, or an isolated exact zero at
+    i+1 between values of opposite sign (runs of exact zeros, i.e. underflow, are not roots)."""
     s = np.sign(y)
-    return np.nonzero((s[:-1] * s[1:] < 0) | ((s[1:] == 0) & (s[:-1] != 0)))[0]
+    change = s[:-1] * s[1:] < 0
+    change[:-1] |= (s[1:-1] == 0) & (s[:-2] * s[2:] < 0)
+    return np.nonzero(change)[0]
 
 
 def _initial_side(d):
@@ -692,13 +709,16 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
 
     Hamabe, Disturbing Actions of a Shaft Governor, Part III: roots of (29), stability (32),
     kind (37), and the over-regulation he asks to avoid ("reach the new configuration as soon
-    as possible, but without over-regulation").  Zero crossings, extrema and band crossings are
-    located exactly: sign changes are bracketed on a grid whose spacing follows the roots' time
-    scales (log-spaced from 1e-3 of the fastest time constant, plus 24 points per period of the
-    fastest oscillation), then solved with ``scipy.optimize.brentq`` on the analytic response
-    (``xi``, ``xi'`` or ``|xi| -+ band``).  ``horizon`` defaults to ``(ln(1/band) + 4)/decay``
-    for a stable design (decay = slowest rate), doubled until ``|xi| <= band/4`` over its last
-    quarter, and to a few slow periods (at most e^40 growth) for an unstable one.  An unstable design gives ``stable=False``,
+    as possible, but without over-regulation").  Events are located exactly, not read off a
+    grid: the zeros of ``xi'`` (the extrema) are bracketed on a grid whose spacing follows the
+    roots' time scales (log-spaced from 1e-3 of the fastest time constant, plus 24 points per
+    period of the fastest oscillation) and solved with ``scipy.optimize.brentq`` on the analytic
+    ``xi'``; ``xi`` is monotone between consecutive extrema, so each zero of ``xi`` and each
+    crossing of ``|xi| = band |xi0|`` is bracketed by two turning points and solved with
+    ``brentq`` on the analytic ``xi``.  ``horizon`` defaults to ``(ln(1/band) + 12)/decay`` for a
+    stable design (decay = slowest rate), doubled until ``|xi| <= band |xi0| / 4`` over its last
+    quarter, and to a few slow periods (at most e^20 growth) for an unstable one; grids are
+    capped at ``max_points`` uniform points.  An unstable design gives ``stable=False``,
     ``settling_time=inf`` and finite events within the horizon, never an exception or nan.
     """
     if not all(np.ndim(v) == 0 for v in (a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0)):
@@ -724,55 +744,83 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
         else float(horizon)
     if not H > 0:
         raise ValueError("horizon must be positive")
+    # a slowest damped pair left alone after a window: stop the grid there, extrapolate settling
+    g_end, _, extrap = _modal_windows(roots[None, :], d[None, :3], np.array([stable]),
+                                      np.array([H]), _PER_PERIOD)
+    extrap = bool(extrap[0])
     scale = abs(float(xi0))
     for attempt in range(8):
-        t, truncated = _grid(roots, H, max_points)
+        t, truncated = _grid(roots, float(g_end[0]) if extrap else H, max_points)
         y = resp(t)[0]
         xi, xid = y[0], y[1]
         if scale == 0.0:
             scale = float(np.max(np.abs(xi)))
         b = band * scale
-        if not stable or horizon is not None or truncated or _tail_ok(t, xi, b) or attempt == 7:
+        if (not stable or horizon is not None or truncated or extrap or _tail_ok(t, xi, b)
+                or attempt == 7):
             break
         H *= 2.0
     tol = dict(xtol=1e-300, rtol=4 * _EPS, maxiter=200)
 
-    def solve(j, shift, i):
-        lo, hi = t[i], t[i + 1]
-        if f(hi, j, shift) == 0.0:
+    def root(j, shift, lo, hi):
+        flo, fhi = f(lo, j, shift), f(hi, j, shift)
+        if fhi == 0.0:
             return float(hi)
+        if not flo * fhi < 0:  # a sign change of rounding noise only (e.g. xi' == 0 exactly)
+            return None
         return brentq(f, lo, hi, args=(j, shift), **tol)
 
-    pos = t > 0
-    # zeros of xi (t > 0)
-    ip = np.nonzero(pos)[0][0]
-    zeros = [solve(0, 0.0, i) for i in _brackets(xi[ip - 1 :]) + ip - 1 if t[i + 1] > 0]
-    zeros = [z for z in zeros if z > 0]
+    # extrema: zeros of xi' for t > 0 (t = 0 itself is a turning point when xi'(0) = 0)
+    ip = int(np.nonzero(t > 0)[0][0])
+    ext_t = [root(1, 0.0, t[i], t[i + 1]) for i in _brackets(xid[ip:]) + ip]
+    ext = tuple((float(te), f(te)) for te in ext_t if te is not None and te > 0)
+    if xi0 == 0:  # band relative to the exact peak |xi| instead of |xi0|
+        scale = max([scale] + [abs(v) for _, v in ext])
+        b = band * scale
+    # between consecutive turning points xi is monotone: every event is bracketed exactly
+    P = [0.0] + [te for te, _ in ext] + [float(t[-1])]
+    X = [float(xi0)] + [v for _, v in ext] + [float(xi[-1])]
+    zeros = []
+    for i in range(len(P) - 1):
+        if X[i + 1] == 0.0 and 0 < i + 1 < len(P) - 1:  # touches 0 at an extremum
+            zeros.append(P[i + 1])
+        elif X[i] * X[i + 1] < 0:
+            z = root(0, 0.0, P[i], P[i + 1])
+            if z is not None:
+                zeros.append(z)
+        if zeros:
+            break
     first_arrival = zeros[0] if zeros else math.inf
-    # extrema: zeros of xi' (t > 0); skip t = 0 itself (xi'(0) = 0 for Hamabe's start)
-    ext_t = [solve(1, 0.0, i) for i in _brackets(xid[ip:]) + ip]
-    ext = tuple((float(te), f(te)) for te in ext_t if te > 0)
     # over-regulation: largest excursion on the side opposite to the start
-    if s0 == 0.0:
-        over = 0.0
-    else:
-        cands = [-s0 * v for _, v in ext] + [-s0 * float(xi[-1])]
-        over = max([0.0] + [c for c in cands if np.isfinite(c)])
-    # settling: last time |xi| = band * scale
-    if not stable or not np.isfinite(xi).all():
+    cands = [-s0 * v for v in X[1:] if np.isfinite(v)]
+    over = max([0.0] + cands) if s0 != 0.0 else 0.0
+    # settling: last time |xi| = band * scale (inf if not settled within the analysed horizon)
+    truncated = bool(stable and not extrap and not _tail_ok(t, xi, b))
+    if extrap and ext and abs(ext[-1][1]) > b:
+        # only the slowest pair is left: extrema every pi/q, heights x exp(-sigma pi/q)
+        te, xe = ext[-1]
+        lam = roots[np.argmax(roots.real)]
+        half = math.pi / abs(lam.imag)
+        k = math.floor(math.log(abs(xe) / b) / (-lam.real * half))
+        while k > 0 and abs(f(te + k * half)) <= b:
+            k -= 1
+        tk = te + k * half
+        settling = root(0, math.copysign(b, f(tk)), tk, tk + half)
+        if settling is None:  # |xi| = b to rounding at the extremum itself
+            settling = tk
+    elif not stable or truncated or not np.isfinite(X).all():
         settling = math.inf
     else:
-        g = np.abs(xi) - b
-        if g[-1] > 0:
+        above = [i for i, v in enumerate(X) if abs(v) > b]
+        if not above:
+            settling = 0.0
+        elif above[-1] == len(P) - 1:
             settling, truncated = math.inf, True
         else:
-            above = np.nonzero(g > 0)[0]
-            if above.size == 0:
-                settling = 0.0
-            else:
-                i = int(above[-1])
-                side = float(np.sign(xi[i]))
-                settling = solve(0, side * b, i)
+            k = above[-1]
+            settling = root(0, math.copysign(b, X[k]), P[k], P[k + 1])
+            if settling is None:  # |xi| = b to rounding at the turning point itself
+                settling = P[k]
     return TransientResult(
         roots=tuple(complex(r) for r in roots),
         kind=kind,
@@ -782,7 +830,7 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
         first_arrival_time=float(first_arrival),
         settling_time=float(settling),
         extrema=ext,
-        horizon=float(t[-1]),
+        horizon=float(H if extrap else t[-1]),
         band=float(band),
         truncated=bool(truncated),
     )
@@ -811,103 +859,216 @@ class TransientSummary:
 
 
 def _refine(resp, j, target, lo, hi, iters=100):
-    """Vectorised bracketed Newton for resp_j(t) = target on [lo, hi] (one row per design).
-
-    resp must have order >= j + 1 (the derivative drives Newton); the bracket is kept, and a
-    bisection is forced whenever Newton leaves it or every fourth step.
+    """Vectorised safeguarded Newton (Numerical Recipes' rtsafe) for resp_j(t) = target on the
+    brackets [lo, hi], one per row of resp (which needs order >= j + 1: the derivative drives
+    Newton).  A Newton step is taken only if it stays inside the bracket and at least halves
+    the step before last; otherwise the bracket is bisected.  Rows stop when the step is at
+    rounding level (|dt| <= 4 eps t) or the residual is exactly zero.
     """
-    def ev(x):
-        v = resp(x[:, None])[:, :, 0]
-        return v[:, j] - target, v[:, j + 1]
+    target = np.broadcast_to(np.asarray(target, float), lo.shape)
+    lo, hi = lo.astype(float).copy(), hi.astype(float).copy()
 
-    flo, _ = ev(lo)
+    def ev(rows, x):
+        sub = resp if rows.size == resp.n else resp.subset(rows)
+        v = sub(x[:, None], nder=j + 1)[:, :, 0]
+        return v[:, j] - target[rows], v[:, j + 1]
+
+    act = np.arange(lo.size)
+    flo = ev(act, lo)[0]
     x = 0.5 * (lo + hi)
-    done = np.zeros(lo.shape, bool)
-    for k in range(iters):
-        fx, dfx = ev(x)
-        same = np.sign(fx) == np.sign(flo)
-        lo = np.where(same, x, lo)
-        flo = np.where(same, fx, flo)
-        hi = np.where(same, hi, x)
+    dx = hi - lo
+    dxold = dx.copy()
+    for _ in range(iters):
+        xa = x[act]
+        fx, dfx = ev(act, xa)
+        same = np.sign(fx) == np.sign(flo[act])
+        la = np.where(same, xa, lo[act])
+        ha = np.where(same, hi[act], xa)
+        flo[act] = np.where(same, fx, flo[act])
+        lo[act], hi[act] = la, ha
         with np.errstate(all="ignore"):
-            newton = x - fx / dfx
-        ok = np.isfinite(newton) & (newton > lo) & (newton < hi) & (k % 4 != 3)
-        xn = np.where(ok, newton, 0.5 * (lo + hi))
-        done = done | (fx == 0) | (np.abs(xn - x) <= 2 * _EPS * np.abs(x)) | (hi - lo <= 0)
-        x = np.where(done, x, xn)
-        if done.all():
+            step = fx / dfx
+        newton = xa - step
+        tol = 4 * _EPS * np.abs(xa)
+        # converged: Newton step at rounding level, residual exactly 0, or bracket exhausted
+        done = (fx == 0) | (np.abs(step) <= tol) | (ha - la <= tol)
+        ok = (np.isfinite(newton) & (newton > la) & (newton < ha)
+              & (np.abs(2.0 * fx) < np.abs(dxold[act] * dfx)))
+        dxold[act] = dx[act]
+        xn = np.where(ok, newton, 0.5 * (la + ha))
+        dx[act] = xn - xa
+        x[act] = np.where(done, np.where(np.isfinite(newton) & (np.abs(step) <= tol), newton, xa),
+                          xn)
+        act = act[~done]
+        if act.size == 0:
             break
     return x
 
 
-def _events_on_grid(resp, t, y, s0, b, stable):
+def _local_max(v):
+    """Interior grid local maxima of the rows of v (>= left neighbour, > right neighbour)."""
+    m = np.zeros(v.shape, bool)
+    m[:, 1:-1] = (v[:, 1:-1] >= v[:, :-2]) & (v[:, 1:-1] > v[:, 2:])
+    return m
+
+
+def _refine_peaks(resp, t, xd, r, k):
+    """Exact extrema next to grid points (r, k) (zeros of xi' in [t_k-1, t_k] or [t_k, t_k+1]).
+
+    Returns the rows, grid indices, times and xi values of those with a bracket.
+    """
+    left = np.sign(xd[r, k - 1]) != np.sign(xd[r, k])
+    right = np.sign(xd[r, k]) != np.sign(xd[r, k + 1])
+    ok = left | right
+    r, k, left = r[ok], k[ok], left[ok]
+    if r.size == 0:
+        z = np.zeros(0)
+        return r, k, z, z
+    lo = np.where(left, t[r, k - 1], t[r, k])
+    hi = np.where(left, t[r, k], t[r, k + 1])
+    sub = resp.subset(r)
+    te = _refine(sub, 1, 0.0, lo, hi)
+    return r, k, te, sub(te[:, None], nder=0)[:, 0, 0]
+
+
+def _exact_max(resp, t, xd, v, sign, clip, amp):
+    """Exact maximum over t > 0 of v = sign * xi per row: the grid maximum, raised to the exact
+    peaks of the lobes that the grid may have clipped (within ``clip * amp`` of it).  For
+    v = |xi| pass sign = None (its interior local maxima are extrema of xi)."""
+    vmax = v.max(axis=1)
+    r, k = np.nonzero(_local_max(v) & (v > 0) & (v >= (vmax - clip * amp)[:, None]))
+    out = np.maximum(vmax, 0.0)
+    if r.size:
+        r, k, te, xe = _refine_peaks(resp, t, xd, r, k)
+        np.maximum.at(out, r, np.abs(xe) if sign is None else sign[r] * xe)
+    return out
+
+
+def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     """First arrival, over-regulation and settling for designs sharing a grid width.
 
     resp: _Response (order >= 2) for n designs; t (n, M) increasing per row, t[:, 0] = 0;
-    y = resp(t); b the band per design.
-    Brackets on the grid, then a vectorised bracketed Newton on the analytic xi or xi'.
+    y = resp(t, nder=1); the band is band * |d0| (or band * max |xi| where d0 = 0).  Events
+    are bracketed on the grid; lobes the grid may have clipped (grid peaks close to zero, to the
+    maximum, or to the band) are refined to their exact extremum first, then every event time
+    is refined by bracketed Newton.
     """
     n, M = t.shape
     rows = np.arange(n)
+    col = np.arange(M)[None, :]
     xi, xd = y[:, 0], y[:, 1]
-    # --- first arrival: first change of s0*xi from > 0 to <= 0
-    w = s0[:, None] * xi
-    cross = (w[:, 1:] <= 0) & (w[:, :-1] > 0)
+    amp = np.abs(xi).max(axis=1)
+    clip = 1.5 * (1.0 - math.cos(math.pi / per_period))  # grid's worst clipping of a lobe
+    scale = np.abs(d0)
+    z = np.nonzero(scale == 0)[0]
+    if z.size:
+        scale[z] = _exact_max(resp.subset(z), t[z], xd[z], np.abs(xi[z]), None, clip, amp[z])
+    b = band * scale
+    v = -s0[:, None] * xi  # > 0 past the new equilibrium
+    lmax = _local_max(v)
+    # --- first arrival: v from < 0 to >= 0 on the grid, or a clipped lobe reaching 0 earlier
+    nxt = np.concatenate([v[:, 2:], v[:, -1:]], axis=1)  # runs of exact 0 (underflow) do not
+    cross = (v[:, :-1] < 0) & ((v[:, 1:] > 0) | ((v[:, 1:] == 0) & (nxt > 0)))  # cross
     has = cross.any(axis=1)
-    j = np.argmax(cross, axis=1)
+    j = np.where(has, np.argmax(cross, axis=1), M)
+    lo = np.where(has, t[rows, np.minimum(j, M - 2)], np.nan)
+    hi = np.where(has, t[rows, np.minimum(j + 1, M - 1)], np.nan)
+    r, k = np.nonzero(lmax & (v < 0) & (v >= -0.02 * amp[:, None]) & (col < j[:, None]))
+    if r.size:
+        r, k, te, xe = _refine_peaks(resp, t, xd, r, k)
+        hit = -s0[r] * xe >= 0
+        r, k, te = r[hit], k[hit], te[hit]
+        first = np.unique(r, return_index=True)[1]  # earliest lobe per row (sorted by k)
+        r, k, te = r[first], k[first], te[first]
+        lo[r], hi[r], has[r] = t[r, k - 1], te, True
     arrival = np.full(n, np.inf)
-    exact = has & (w[rows, j + 1] == 0)
-    arrival[exact] = t[rows, j + 1][exact]
-    idx = np.nonzero(has & ~exact)[0]
+    idx = np.nonzero(has)[0]
     if idx.size:
-        arrival[idx] = _refine(resp.subset(idx), 0, 0.0, t[idx, j[idx]], t[idx, j[idx] + 1])
-    # --- over-regulation: grid maximum of -s0*xi, refined at the zero of xi' next to it
-    v = -w
-    k = np.argmax(v, axis=1)
-    vk = v[rows, k]
-    over = np.where(vk > 0, vk, 0.0)
-    interior = (vk > 0) & (k > 0) & (k < M - 1)
-    idx = np.nonzero(interior)[0]
-    if idx.size:
-        kk = k[idx]
-        left = np.sign(xd[idx, kk - 1]) != np.sign(xd[idx, kk])
-        right = np.sign(xd[idx, kk]) != np.sign(xd[idx, kk + 1])
-        lo = np.where(left, t[idx, kk - 1], t[idx, kk])
-        hi = np.where(left, t[idx, kk], t[idx, kk + 1])
-        ok = left | right
-        idx, lo, hi = idx[ok], lo[ok], hi[ok]
-        if idx.size:
-            sub = resp.subset(idx)
-            te = _refine(sub, 1, 0.0, lo, hi)
-            ve = -s0[idx] * sub(te[:, None])[:, 0, 0]
-            over[idx] = np.maximum(over[idx], ve)
-    # --- settling: last crossing of |xi| = b
-    above = np.abs(xi) > b[:, None]
+        arrival[idx] = _refine(resp.subset(idx), 0, 0.0, lo[idx], hi[idx])
+    # --- over-regulation: grid maximum, and the exact peaks of the lobes that may hold it
+    over = _exact_max(resp, t, xd, v, -s0, clip, amp)
+    # --- settling: last time |xi| = b
+    ax = np.abs(xi)
+    above = ax > b[:, None]
     anyab = above.any(axis=1)
-    last = M - 1 - np.argmax(above[:, ::-1], axis=1)
+    last = np.where(anyab, M - 1 - np.argmax(above[:, ::-1], axis=1), -1)
     settling = np.where(stable, 0.0, np.inf)
     settling[anyab & (last == M - 1)] = np.inf
-    idx = np.nonzero(stable & anyab & (last < M - 1))[0]
+    ok = stable & (last < M - 1)
+    lo = t[rows, np.maximum(last, 0)]
+    hi = t[rows, np.minimum(last + 1, M - 1)]
+    sgn = np.sign(xi[rows, np.maximum(last, 0)])
+    todo = ok & anyab
+    # lobes after the last grid point above the band whose exact peak may still exceed it
+    r, k = np.nonzero(_local_max(ax) & (col > last[:, None]) & (ax >= 0.9 * b[:, None])
+                      & ok[:, None])
+    if r.size:
+        r, k, te, xe = _refine_peaks(resp, t, xd, r, k)
+        hit = np.abs(xe) > b[r]
+        r, k, te, xe = r[hit], k[hit], te[hit], xe[hit]
+        lastlobe = r.size - 1 - np.unique(r[::-1], return_index=True)[1]  # latest per row
+        r, k, te, xe = r[lastlobe], k[lastlobe], te[lastlobe], xe[lastlobe]
+        lo[r], hi[r], sgn[r], todo[r] = te, t[r, k + 1], np.sign(xe), True
+    idx = np.nonzero(todo)[0]
     if idx.size:
-        li = last[idx]
-        side = np.sign(xi[idx, li])
-        settling[idx] = _refine(resp.subset(idx), 0, side * b[idx], t[idx, li], t[idx, li + 1])
-    return arrival, over, settling
+        settling[idx] = _refine(resp.subset(idx), 0, sgn[idx] * b[idx], lo[idx], hi[idx])
+    return arrival, over, settling, b
+
+
+def _modal_windows(roots, d, ok, H, per_period):
+    """Where the response is, to 1e-12 relative, its slowest mode(s) alone: per design
+    (grid_end, uniform_end, extrapolate), from the modal amplitudes (used only where the roots
+    are well separated, relative separation >= 1e-3, so that the amplitudes are accurate).
+
+    After ``T_w`` every faster mode is below 1e-12 of the slowest group.  If the slowest group
+    is a complex pair, the response is then a pure damped sinusoid: the first arrival and the
+    largest over-swing lie within ``T_w`` plus a few periods, and the settling crossing can be
+    extrapolated from one exact extremum (heights fall by exp(-sigma pi / q) per half period);
+    so the grid stops there (extrapolate = True).  If it is a real root, oscillation needs
+    resolving only until ``T_w``.  Elsewhere the whole horizon is resolved.
+    """
+    n = roots.shape[0]
+    l = roots
+    well = ok & (_pair_separations(l).min(axis=1) >= 1e-3)
+    amp = np.zeros((n, 3))
+    with np.errstate(all="ignore"):
+        for k, (i, j) in enumerate(((1, 2), (0, 2), (0, 1))):
+            li, lj, lk = l[:, i], l[:, j], l[:, k]
+            ck = (d[:, 2] - (li + lj) * d[:, 1] + li * lj * d[:, 0]) / ((lk - li) * (lk - lj))
+            amp[:, k] = np.abs(ck)
+        sig = -l.real
+        smin = sig.min(axis=1)
+        slow = sig == smin[:, None]
+        a_slow = np.where(slow, amp, 0.0).sum(axis=1)
+        well &= np.isfinite(amp).all(axis=1) & (a_slow > 0) & (smin > 0)
+        tk = np.log(amp / (1e-12 * a_slow[:, None])) / (sig - smin[:, None])
+        t_w = np.where(slow | ~(tk > 0), 0.0, tk).max(axis=1)
+    q = np.abs(l.imag).max(axis=1)
+    osc = q > 0
+    pair_slow = well & (slow.sum(axis=1) == 2)
+    period = 2.0 * np.pi / np.where(osc, q, 1.0)
+    window = np.minimum(H, t_w + 4.0 * period)
+    grid_end = np.where(pair_slow, window, H)
+    uni_end = np.where(osc, np.where(well, window, H), 0.0)
+    return grid_end, uni_end, pair_slow
 
 
 def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
-                 n_log=160, per_period=_PER_PERIOD, max_points=1 << 17):
+                 n_log=160, per_period=_PER_PERIOD, max_points=200_000):
     """Vectorised :func:`analyse` for many designs (the optimiser's entry point).
 
     Hamabe, Disturbing Actions of a Shaft Governor, Part III, eqs. (28), (32), (37).  Each design
     gets its own grid: ``n_log`` log-spaced times from 1e-3 of its fastest time constant to its
-    horizon, plus, if it oscillates, uniform times at ``per_period`` points per period over the
-    whole horizon (at most ``max_points``; a design not settled where its grid ends is reported
-    unsettled, inf).  Designs are processed in batches of equal grid width.  The first zero of
-    ``xi``, the largest opposite-side excursion (at a zero of ``xi'``) and the last band crossing
-    are bracketed on the grid and refined by a vectorised bracketed Newton iteration on the
-    analytic response, so they agree with :func:`analyse` to rounding.  The default horizon is
-    that of :func:`analyse`, doubled for the designs whose tail is not yet well inside the band.
+    horizon, plus, if it oscillates, uniform times at ``per_period`` points per period (at most
+    ``max_points``) over the part of the horizon where oscillation can still create events
+    (where the roots are well separated, only until every faster mode is below 1e-12 of the
+    slowest; a slowest damped pair's settling crossing is then extrapolated exactly from one
+    extremum -- see :func:`_modal_windows`).  Designs are processed in batches of equal grid
+    width.  The first zero of ``xi``, the largest opposite-side excursion (at a zero of
+    ``xi'``) and the last band crossing are bracketed and refined by a vectorised bracketed
+    Newton iteration on the analytic response, so they agree with :func:`analyse` to rounding.
+    The default horizon is that of :func:`analyse`, doubled for the designs whose tail is not
+    yet well inside the band; a stable design not settled within it is reported inf.
     Returns a :class:`TransientSummary` (nan events only for invalid coefficients, ``a0 = 0``).
     """
     if not band > 0:
@@ -939,35 +1100,41 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
     u_log = np.linspace(0.0, 1.0, n_log)
     todo = np.nonzero(valid)[0]
     for attempt in range(8):
-        n_uni = np.where(osc[todo], np.ceil(np.minimum(H[todo] / np.where(osc[todo], dt[todo],
-                                                                          1.0), max_points)), 0)
+        g_end, u_end, extrap = _modal_windows(rr[todo], d[todo], stable[todo], H[todo],
+                                              per_period)
+        n_uni = np.where(osc[todo], np.ceil(np.minimum(u_end / np.where(osc[todo], dt[todo],
+                                                                         1.0), max_points)), 0)
         truncated = n_uni >= max_points
-        H[todo] = np.where(osc[todo], np.minimum(H[todo], n_uni * dt[todo]), H[todo])
+        u_end = np.where(osc[todo], np.minimum(u_end, n_uni * dt[todo]), 0.0)
+        g_end = np.where(truncated, np.minimum(g_end, u_end), g_end)
+        H[todo] = np.where(truncated & ~extrap, g_end, H[todo])
         # batches of equal grid width: uniform parts rounded up to a power of two
         width = np.where(n_uni > 0, 2 ** np.ceil(np.log2(np.maximum(n_uni, 1))), 0)
         redo = []
         for wd in np.unique(width).astype(np.int64):
-            members = todo[width == wd]
-            trunc = truncated[width == wd]
+            sel = np.nonzero(width == wd)[0]
             per = max(1, (1 << 22) // (n_log + 1 + wd))
-            for s in range(0, members.size, per):
-                idx = members[s : s + per]
-                Hi = H[idx, None]
-                t0 = np.minimum(1e-3 / lam_max[idx, None], 1e-3 * Hi)
-                tl = t0 * (Hi / t0) ** u_log[None, :]
-                tu = Hi * np.linspace(0.0, 1.0, wd + 1)[None, :] if wd else np.zeros((idx.size, 1))
+            for s in range(0, sel.size, per):
+                loc = sel[s : s + per]
+                idx = todo[loc]
+                Ge, Ue = g_end[loc, None], u_end[loc, None]
+                t0 = np.minimum(1e-3 / lam_max[idx, None], 1e-3 * Ge)
+                tl = t0 * (Ge / t0) ** u_log[None, :]
+                tu = Ue * np.linspace(0.0, 1.0, wd + 1)[None, :] if wd else np.zeros((idx.size, 1))
                 t = np.sort(np.concatenate([tl, tu], axis=1), axis=1)
                 sub = resp.subset(idx)
-                y = sub(t)
-                scale = np.abs(d[idx, 0])
-                scale = np.where(scale > 0, scale, np.abs(y[:, 0]).max(axis=1))
-                b = band * scale
-                a_, o_, st_ = _events_on_grid(sub, t, y, s0[idx], b, stable[idx])
-                tail = _tail_ok(t, y[:, 0], b)
-                st_ = np.where(stable[idx] & ~tail & trunc[s : s + per], np.inf, st_)
+                y = sub(t, nder=1)
+                a_, o_, st_, b = _events_on_grid(sub, t, y, s0[idx], band, d[idx, 0],
+                                                 stable[idx], per_period)
+                ex = extrap[loc]
+                tail = _tail_ok(t, y[:, 0], b) | ex
+                st_ = np.where(stable[idx] & ~tail, np.inf, st_)  # not settled in horizon
+                if ex.any():
+                    e = np.nonzero(ex)[0]
+                    st_[e] = _extrapolate_settling(sub.subset(e), t[e], y[e], b[e], st_[e])
                 arrival[idx], over[idx], settling[idx] = a_, o_, st_
                 if horizon is None:
-                    redo.append(idx[stable[idx] & ~tail & ~trunc[s : s + per]])
+                    redo.append(idx[stable[idx] & ~tail & ~truncated[loc]])
         todo = np.concatenate(redo) if redo else np.zeros(0, np.int64)
         if todo.size == 0 or attempt == 6:
             break
@@ -981,6 +1148,45 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
         over_regulation=rs(over), first_arrival_time=rs(arrival), settling_time=rs(settling),
         horizon=rs(H),
     )
+
+
+def _extrapolate_settling(resp, t, y, b, settled):
+    """Settling of designs whose grid ends once only their slowest damped pair is left (see
+    :func:`_modal_windows`): from the last exact extremum ``t_e`` in the window, the extrema
+    are ``t_e + k pi/q`` with heights falling by ``exp(-sigma pi/q)`` each; the last one above
+    the band and the next bracket the crossing, refined on the analytic response.  Rows whose
+    last extremum is already inside the band keep ``settled`` (found within the window)."""
+    n, M = t.shape
+    rows = np.arange(n)
+    xd = y[:, 1]
+    sd = np.sign(xd)
+    ch = (sd[:, :-1] * sd[:, 1:]) < 0
+    has = ch.any(axis=1)
+    j = M - 2 - np.argmax(ch[:, ::-1], axis=1)
+    out = settled.copy()
+    idx = np.nonzero(has)[0]
+    if idx.size == 0:
+        return out
+    sub = resp.subset(idx)
+    te = _refine(sub, 1, 0.0, t[idx, j[idx]], t[idx, j[idx] + 1])
+    xe = sub(te[:, None], nder=0)[:, 0, 0]
+    up = np.abs(xe) > b[idx]
+    idx, te, xe, sub = idx[up], te[up], xe[up], sub.subset(np.nonzero(up)[0])
+    if idx.size == 0:
+        return out
+    lam = sub.roots[np.arange(idx.size), np.argmax(sub.roots.real, axis=1)]
+    half = np.pi / np.abs(lam.imag)
+    step = -lam.real * half  # log-decrement per half period
+    k = np.floor(np.log(np.abs(xe) / b[idx]) / step)
+    for _ in range(3):  # make sure the k-th extremum is above the band (rounding at the edge)
+        tk = te + k * half
+        vk = sub(tk[:, None], nder=0)[:, 0, 0]
+        k = np.where((np.abs(vk) <= b[idx]) & (k > 0), k - 1, k)
+    tk = te + k * half
+    vk = sub(tk[:, None], nder=0)[:, 0, 0]
+    out[idx] = _refine(sub, 0, np.sign(vk) * b[idx], tk, tk + half)
+    del rows
+    return out
 
 
 def over_regulation_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, horizon=None):

@@ -106,41 +106,66 @@ def load_change_problem(spec: Spec, km: KappaModel, grid: Grid, rows, kappa):
 def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, rows, kappa,
                    factors=DASHPOT_FACTORS):
     """For each candidate: the dash-pot values on a log grid that meet eq. (32) with its margin,
-    give no over-regulation and settle within the limit for every load change; and the one
-    that settles fastest. Returns dict of arrays over candidates."""
+    give no over-regulation, settle within the limit for every load change and keep the
+    vibration bound within its limit; and the best of them (fastest settling, or least
+    vibration for that objective). Returns a dict of arrays over candidates."""
     n = len(rows)
+    nan = np.full(n, np.nan)
     if spec.engine is None or not spec.load_changes:
-        return {"feasible": np.ones(n, bool), "f": np.full(n, np.nan),
-                "settling": np.full(n, np.nan), "f_lo": np.full(n, np.nan),
-                "f_hi": np.full(n, np.nan)}
+        return {"feasible": np.ones(n, bool), "f": nan, "settling": nan, "f_lo": nan,
+                "f_hi": nan, "vibration": nan, "least": {}}
     a0, a2, a3, (x0, x1, x2) = load_change_problem(spec, km, grid, rows, kappa)
-    # least f meeting 9 a1 a2 >= (1 + margin) a0 a3 for all load changes (eq. 32)
+    # least f meeting 9 a1 a2 >= (1 + margin) a0 a3 for all load changes (eq. 32, a1 = f/3)
     with np.errstate(divide="ignore", invalid="ignore"):
         f_min = np.max((1.0 + req.hurwitz_margin) * a0 * a3 / (3.0 * a2), axis=1)
     f_min = np.where(np.all(a2 > 0, axis=1), f_min, np.inf)
     f = f_min[:, None] * factors[None, :]  # (n, F)
     if req.dashpot is not None:
         f = np.clip(f, *req.dashpot)
-    fa = f[:, :, None]
-    s = tr.analyse_many(a0[:, None, :], fa / 3.0, a2[:, None, :], a3[:, None, :],
+    s = tr.analyse_many(a0[:, None, :], f[:, :, None] / 3.0, a2[:, None, :], a3[:, None, :],
                         x0[:, None, :], x1[:, None, :], x2[:, None, :],
                         band=spec.analysis.settling_band)
-    over = s.over_regulation / np.abs(x0[:, None, :])
-    ok = s.stable & (over <= OVER_TOL) & (s.hurwitz_margin >= req.hurwitz_margin * (1 - 1e-12))
-    settle = np.max(s.settling_time, axis=2)
+    over = np.max(np.where(s.stable, s.over_regulation / np.abs(x0[:, None, :]), np.inf),
+                  axis=2)
+    hurwitz = np.all(s.stable & (s.hurwitz_margin >= req.hurwitz_margin * (1 - 1e-12)), axis=2)
+    hurwitz &= np.isfinite(f)
+    settle = np.max(np.where(s.stable, s.settling_time, np.inf), axis=2)
+    ok = hurwitz & (over <= OVER_TOL)
+    # the least each requirement can be brought to, given the ones before it (for diagnoses)
+    least = {"over_regulation": np.min(np.where(hurwitz, over, np.inf), axis=1),
+             "settling_time": np.min(np.where(ok, settle, np.inf), axis=1)}
     if req.max_settling_time is not None:
-        ok = ok & (s.settling_time <= req.max_settling_time)
-    ok = np.all(ok, axis=2) & np.isfinite(f)
-    masked = np.where(ok, settle, np.inf)
-    best = np.argmin(masked, axis=1)
+        ok = ok & (settle <= req.max_settling_time)
+    vib = np.full(f.shape, np.nan)
+    if req.max_vibration is not None or req.objective == "vibration":
+        vib = 2.0 * vibration_bound(spec, km, grid, rows, kappa, f)
+        least["vibration"] = np.min(np.where(ok, vib, np.inf), axis=1)
+        if req.max_vibration is not None:
+            ok = ok & (vib <= req.max_vibration)
+    score = np.where(ok, vib if req.objective == "vibration" else settle, np.inf)
+    best = np.argmin(score, axis=1)
     idx = np.arange(n)
     feasible = np.any(ok, axis=1)
     f_ok = np.where(ok, f, np.nan)
     with np.errstate(all="ignore"):
         return {"feasible": feasible, "f": np.where(feasible, f[idx, best], np.nan),
-                "settling": np.where(feasible, masked[idx, best], np.inf),
+                "least": least,
+                "settling": np.where(feasible, settle[idx, best], np.inf),
+                "vibration": np.where(feasible, vib[idx, best], np.inf),
                 "f_lo": np.nanmin(np.where(feasible[:, None], f_ok, np.inf), axis=1),
                 "f_hi": np.nanmax(np.where(feasible[:, None], f_ok, -np.inf), axis=1)}
+
+
+def vibration_bound(spec: Spec, km: KappaModel, grid: Grid, rows, kappa, f):
+    """Sum of the harmonic amplitudes at the normal configuration (Hamabe Part II, with the
+    dash-pot): an upper bound of half the peak-to-peak vibration, for candidates x dash-pots."""
+    from ..analysis.vibration import peak_amplitude_bound
+
+    i_n = int(np.argmin(np.abs(grid.alpha - spec.geometry.alpha_normal)))
+    k2 = (km.k2.x[rows, i_n] * np.asarray(kappa) + km.k2.y[rows, i_n])[:, None]
+    inertia = km.inertia[rows, 0][:, None]
+    m = km.m[rows, 0][:, None]
+    return peak_amplitude_bound(spec, spec.geometry.alpha_normal, k2, inertia, m, dashpot=f)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -177,12 +202,16 @@ def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0):
     return ok
 
 
-def objective_values(req: Requirements, m, spring_mass, settling=None):
+def objective_values(req: Requirements, m, spring_mass, window=None):
+    """The objective of candidates; ``window`` (from :func:`dashpot_window`) for the dynamic
+    objectives."""
     if req.objective == "spring_mass":
         return spring_mass
     if req.objective == "settling_time":
-        return settling
-    return m + spring_mass  # moving mass (the default); vibration handled by the caller
+        return window["settling"]
+    if req.objective == "vibration":
+        return window["vibration"]
+    return m + spring_mass  # moving mass, the default
 
 
 @dataclass(frozen=True)
@@ -201,7 +230,7 @@ class Candidate:
 
 
 def best_discrete(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, lo, hi,
-                  batch: int = 64, max_checked: int = 4096, dynamics: bool = True
+                  batch: int = 64, max_checked: int = 512, dynamics: bool = True
                   ) -> tuple[Candidate | None, dict]:
     """Exhaustive search over mass grid x catalogue springs; dynamics checked best first."""
     d, r, n = spring_catalogue(req)
@@ -224,16 +253,35 @@ def best_discrete(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, lo,
         order = _surrogate_order(spec, req, km, grid, rows, kappa[cols])
     else:
         order = np.argsort(objective_values(req, m, smass[cols]), kind="stable")
-    checked = 0
-    best = None
-    for start in range(0, min(order.size, max_checked), batch):
+    best, checked = _visit(spec, req, km, grid, rows, cols, kappa, m, smass, d, r, n, l0,
+                           order[:max_checked], batch)
+    if best is None and order.size > max_checked:
+        # best-first found nothing: screen the dynamics on a (mass, stiffness) lattice and visit
+        # only candidates in or next to cells where some dash-pot works
+        keep = _lattice_screen(spec, req, km, grid, rows, kappa[cols], stats)
+        rest = order[max_checked:]
+        rest = rest[keep[rest]]
+        best, more = _visit(spec, req, km, grid, rows, cols, kappa, m, smass, d, r, n, l0, rest,
+                            batch)
+        checked += more
+    elif best is None and order.size:
+        _lattice_screen(spec, req, km, grid, rows, kappa[cols], stats)  # for the diagnosis
+    stats["dynamics_checked"] = checked
+    return best, stats
+
+
+def _visit(spec, req, km, grid, rows, cols, kappa, m, smass, d, r, n, l0, order, batch):
+    """Check candidates in ``order`` in batches; the best feasible one (first batch with one
+    feasible for the mass objectives, which are visited in objective order)."""
+    best, checked = None, 0
+    for start in range(0, order.size, batch):
         sel = order[start:start + batch]
         win = dashpot_window(spec, req, km, grid, rows[sel], kappa[cols[sel]])
         checked += sel.size
         if not np.any(win["feasible"]):
             continue
-        obj = objective_values(req, m[sel], smass[cols[sel]], win["settling"])
-        obj = np.where(win["feasible"], obj, np.inf)
+        obj = np.where(win["feasible"], objective_values(req, m[sel], smass[cols[sel]], win),
+                       np.inf)
         j = int(np.argmin(obj))
         i = sel[j]
         cand = Candidate(float(m[i]), float(d[cols[i]]), float(r[cols[i]]), float(n[cols[i]]),
@@ -242,21 +290,41 @@ def best_discrete(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, lo,
         if best is None or cand.objective < best.objective:
             best = cand
         if req.objective in ("moving_mass", "spring_mass"):
-            break  # visited in objective order: the first feasible batch holds the optimum
-    stats["dynamics_checked"] = checked
-    return best, stats
+            break
+    return best, checked
+
+
+def _lattice_screen(spec, req, km, grid, rows, kappa, stats, cells: int = 24):
+    """Dynamics on a lattice of masses x log-spaced stiffness cells covering the candidates;
+    returns a mask of candidates in or next to a cell with a feasible dash-pot, and records in
+    ``stats["least"]`` how far each dynamic requirement can be pushed (for the diagnosis)."""
+    lk = np.log(kappa)
+    edges = np.linspace(lk.min(), lk.max() + 1e-12, cells + 1)
+    cell = np.clip(np.searchsorted(edges, lk, side="right") - 1, 0, cells - 1)
+    key = rows * cells + cell
+    uniq, first = np.unique(key, return_index=True)
+    centre = np.exp(0.5 * (edges[uniq % cells] + edges[uniq % cells + 1]))
+    win = dashpot_window(spec, req, km, grid, uniq // cells, centre)
+    stats["least"] = {k: float(np.min(v)) for k, v in win["least"].items()}
+    good = set()
+    for u in uniq[win["feasible"]]:
+        good.update((u - 1, u, u + 1))
+    stats["lattice_cells"] = int(uniq.size)
+    stats["lattice_feasible"] = int(np.sum(win["feasible"]))
+    return np.isin(key, list(good))
 
 
 def _surrogate_order(spec, req, km, grid, rows, kappa):
-    """Order candidates for objectives that depend on the dash-pot: settling time on a coarse
-    subsample, then nearest neighbours first (a heuristic order; every candidate visited is
-    checked exactly)."""
+    """Order candidates for the objectives that depend on the dash-pot (settling, vibration):
+    the objective is evaluated once per (mass, stiffness to 5 %) cell, which is what it depends
+    on, and every candidate takes its cell's value. The visit order is heuristic only within a
+    cell; every candidate visited is checked exactly."""
     if rows.size == 0:
         return np.arange(0)
     key = np.round(np.log(kappa) * 20) + 1000 * rows
     _, first = np.unique(key, return_index=True)
     win = dashpot_window(spec, req, km, grid, rows[first], kappa[first])
-    score = np.where(win["feasible"], win["settling"], np.inf)
+    score = np.where(win["feasible"], objective_values(req, None, None, win), np.inf)
     lookup = dict(zip(key[first], score, strict=True))
     return np.argsort([lookup[k] for k in key], kind="stable")
 
@@ -269,9 +337,10 @@ def _surrogate_order(spec, req, km, grid, rows, kappa):
 def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
     """Least objective over masses with the spring sized by the GP (dynamics relaxed).
 
-    The GP takes the stiffness band ``[lo, hi]`` of each mass and the force at the outermost
-    configuration at the band's lowest stiffness (a relaxation: the true force only grows with
-    stiffness), so the result is a lower bound on every design, continuous or discrete.
+    Per mass the GP takes the stiffness band ``[lo, hi]``, the exact force at the outermost
+    configuration ``F = F_n + 2 kappa (l_a - l_n)`` (a posynomial in d, r, n) and the body length
+    limit at the band's largest free length, so it is a relaxation of the discrete search: its
+    best value is a lower bound on every design, continuous or discrete.
     """
     from .spring_gp import SpringGP
 
@@ -279,24 +348,27 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
     best = None
     mat = spec.material
     for i in np.nonzero(lo <= hi)[0]:
-        F_max = float(np.max(km.force.x[i] * lo[i] + km.force.y[i]))
-        l0_min = float(km.l0.x[i, 0] + km.l0.y[i, 0] / lo[i])
-        sol = gp.solve(kappa_min=float(max(lo[i], 1e-9)), kappa_max=float(min(hi[i], 1e12)),
-                       F_max=F_max, k_s=mat.allowable_shear_stress, G=mat.shear_modulus,
+        per_kappa = float(km.force.x[i, -1])
+        k_hi = float(min(hi[i], 1e12))
+        sol = gp.solve(kappa_min=float(max(lo[i], 1e-9)), kappa_max=k_hi,
+                       F_max=float(km.force.y[i, -1]),
+                       force_per_stiffness=per_kappa if per_kappa > 0 else None,
+                       k_s=mat.allowable_shear_stress, G=mat.shear_modulus,
                        density=mat.density, d_min=req.wire_diameter[0],
                        d_max=req.wire_diameter[1], r_min=req.coil_radius[0],
                        r_max=req.coil_radius[1], n_min=req.active_turns[0],
                        n_max=req.active_turns[1], C_min=req.spring_index[0],
                        C_max=req.spring_index[1], D_out_max=req.max_outer_diameter,
-                       L_body_max=2.0 * l0_min, f_surge_min=req.min_surge_frequency)
+                       L_body_max=2.0 * float(km.l0.x[i, 0] + km.l0.y[i, 0] / k_hi),
+                       f_surge_min=req.min_surge_frequency)
         if not sol.ok:
             continue
         m = float(km.m[i, 0])
         obj = sol.objective if req.objective == "spring_mass" else m + sol.objective
-        if req.objective in ("moving_mass", "spring_mass") and (best is None
-                                                                 or obj < best["objective"]):
+        if best is None or obj < best["objective"]:
             best = {"objective": obj, "pendulum_mass_kg": m, "wire_diameter_m": sol.d,
-                    "coil_radius_m": sol.r, "active_turns": sol.n, "spring_mass_kg": sol.objective}
+                    "coil_radius_m": sol.r, "active_turns": sol.n, "spring_mass_kg": sol.objective,
+                    "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress}
     return best
 
 
@@ -406,12 +478,7 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
         cands = [("allowable_shear_stress", with_ks, "x", mat.allowable_shear_stress),
                  ("irregularity", with_irr, "x", speed.irregularity)]
     else:
-        head = (f"{spec.path}: infeasible: every load change over-regulates (or misses the "
-                f"settling limit) at every admissible damping — Hamabe's eq. (32) with margin "
-                f"{req.hurwitz_margin:g} conflicts with 'no over-regulation' "
-                f"({stats['dynamics_checked']} candidates checked)")
-        cands = [("hurwitz_margin", with_hurwitz, "/", req.hurwitz_margin),
-                 ("irregularity", with_irr, "x", speed.irregularity)]
+        return _dynamics_conflict(spec, req, stats)
     for name, make, how, value in cands:
         x = _relax(spec, req, stage, make)
         if x is None:
@@ -425,6 +492,35 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
     tail = ("; it becomes feasible if one of these moves: " + "; ".join(moves)) if moves \
         else "; no single requirement within a factor of 100 makes it feasible"
     return head + tail
+
+
+def _dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
+    """Name the dynamic requirement that no admissible dash-pot meets, and how far it is."""
+    least = stats.get("least", {})
+    where = (f"({stats['spring_feasible']} mass-spring combinations pass the statics "
+             f"and spring checks; {stats['dynamics_checked']} checked best first, "
+             f"{stats.get('lattice_cells', 0)} mass x stiffness cells screened)")
+    over = least.get("over_regulation", np.inf)
+    if over > OVER_TOL:
+        text = ("no admissible damping" if not np.isfinite(over) else
+                f"the least over-regulation at any admissible damping is "
+                f"{100 * over:.3g} % of the load change")
+        return (f"{spec.path}: infeasible: Hamabe's eq. (32) with margin {req.hurwitz_margin:g} "
+                f"conflicts with 'no over-regulation' for the load changes: {text} {where}; "
+                f"lower requirements.hurwitz_margin or the load change")
+    settle = least.get("settling_time", np.inf)
+    if req.max_settling_time is not None and settle > req.max_settling_time:
+        return (f"{spec.path}: infeasible: requirements.max_settling_time "
+                f"{req.max_settling_time:g} s conflicts with 'no over-regulation' and eq. (32): "
+                f"the fastest admissible settling is {settle:.4g} s {where}")
+    vib = least.get("vibration", np.inf)
+    if req.max_vibration is not None and vib > req.max_vibration:
+        return (f"{spec.path}: infeasible: requirements.max_vibration "
+                f"{np.degrees(req.max_vibration):.4g} deg conflicts with the load-change "
+                f"requirements: the least peak-to-peak bound at an admissible damping is "
+                f"{np.degrees(vib):.4g} deg {where}")
+    return (f"{spec.path}: infeasible: the dynamic requirements are met only together on no "
+            f"candidate {where}")
 
 
 def sensitivities(spec: Spec, req: Requirements, objective: float) -> list[dict]:

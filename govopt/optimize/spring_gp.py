@@ -95,6 +95,9 @@ DEFAULT_BOUNDS: dict[str, float | None] = {
     "D_out_max": None,
     "L_body_max": None,
     "f_surge_min": None,
+    # force growing with the stiffness itself, F = F_max + force_per_stiffness * kappa: a
+    # governor's spring force at its outermost configuration is F_n + 2 kappa (l_a - l_n)
+    "force_per_stiffness": None,
 }
 _UPPER_KEYS = {"d_max", "r_max", "n_max", "C_max", "D_out_max", "L_body_max"}
 _MATERIAL_KEYS = ("F_max", "k_s", "G", "density")
@@ -144,12 +147,14 @@ class _Spec:
         return out
 
 
-def _stress_g(d, r, t, P, correction):
-    base = 16.0 / np.pi * P["F_max"] * r * d**-3
+def _stress_g(d, r, n, t, P, correction):
+    # F = F_max + force_per_stiffness * kappa(d, r, n): a posynomial (the second term is ~0
+    # unless force_per_stiffness is given)
+    F = P["F_max"] + P["force_per_stiffness"] * _stiffness_g(d, r, n, P)
     if correction == "none":
-        return base
+        return 16.0 / np.pi * F * r * d**-3
     # K = 1 + 0.75 t + 0.615 / C with C = 2 r / d, t >= 1 / (C - 1)
-    return 16.0 / np.pi * P["F_max"] * (r * d**-3 + 0.75 * t * r * d**-3 + 0.3075 * d**-2)
+    return 16.0 / np.pi * F * (r * d**-3 + 0.75 * t * r * d**-3 + 0.3075 * d**-2)
 
 
 def _surge_g(d, r, n, P):
@@ -174,7 +179,7 @@ def _specs(correction: str, stiffness: str) -> list[_Spec]:
     stress_src = hamabe + ("; Wahl 1944 eq. 2-12" if correction == "wahl" else "")
     out += [
         _Spec("allowable stress", "k_s", "upper",
-              lambda d, r, n, t, P: _stress_g(d, r, t, P, correction), (("F_max", 1.0),),
+              lambda d, r, n, t, P: _stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
               stress_src),
         _Spec("minimum wire diameter", "d_min", "lower", lambda d, r, n, t, P: d),
         _Spec("maximum wire diameter", "d_max", "upper", lambda d, r, n, t, P: d),
@@ -199,7 +204,7 @@ def _objective_expr(objective, d, r, n, t, P, correction):
     if objective == "mass":
         return P["density"] * (np.pi**2 / 2.0) * d**2 * r * n
     if objective == "stress":
-        return _stress_g(d, r, t, P, correction)
+        return _stress_g(d, r, n, t, P, correction)
     if objective == "outer diameter":
         return 2.0 * r + d
     if objective == "body length":
@@ -210,12 +215,17 @@ def _objective_expr(objective, d, r, n, t, P, correction):
 _OBJECTIVE_EXPS = {"mass": {"density": 1.0}, "stress": {"F_max": 1.0}}
 
 
+def _force(v, d, r, n):
+    """Spring force for the stress check: ``F_max + force_per_stiffness * kappa``."""
+    return v["F_max"] + v["force_per_stiffness"] * spring.stiffness(d, r, n, v["G"])
+
+
 def _objective_np(objective, d, r, n, v, correction):
     """The objective evaluated with the exact formulas of :mod:`govopt.model.spring`."""
     if objective == "mass":
         return spring.wire_mass(d, r, n, v["density"])
     if objective == "stress":
-        return spring.shear_stress(v["F_max"], d, r, correction)
+        return spring.shear_stress(_force(v, d, r, n), d, r, correction)
     if objective == "outer diameter":
         return 2.0 * r + d
     if objective == "body length":
@@ -372,7 +382,7 @@ def check_design(d, r, n, values: Mapping[str, float], correction: str = "wahl",
     k = spring.stiffness(d, r, n, v["G"])
     C = spring.spring_index(d, r)
     with np.errstate(divide="ignore", invalid="ignore"):
-        tau = spring.shear_stress(v["F_max"], d, r, correction)
+        tau = spring.shear_stress(_force(v, d, r, n), d, r, correction)
         tau = np.where(C > 1.0, tau, np.inf) if correction == "wahl" else tau
     ratios: dict[str, np.ndarray] = {}
     if "kappa" in v:
@@ -578,7 +588,7 @@ class SpringGP:
         sol.objective = float(self.problem.value)
         sol.mass = float(spring.wire_mass(d, r, n, v["density"]))
         sol.stiffness = float(spring.stiffness(d, r, n, v["G"]))
-        sol.stress = float(spring.shear_stress(v["F_max"], d, r, self.correction))
+        sol.stress = float(spring.shear_stress(_force(v, d, r, n), d, r, self.correction))
         sol.index = float(spring.spring_index(d, r))
         sol.wahl_factor = float(spring.wahl_factor(sol.index)) if self.correction == "wahl" \
             else 1.0
@@ -832,7 +842,7 @@ class SpringGP:
         out.stiffness = float(spring.stiffness(d, r, n, v_used["G"]))
         kappa = values.get("kappa") or math.sqrt(v_used["kappa_min"] * v_used["kappa_max"])
         out.stiffness_error = out.stiffness / float(kappa) - 1.0
-        out.stress = float(spring.shear_stress(v_used["F_max"], d, r, self.correction))
+        out.stress = float(spring.shear_stress(_force(v_used, d, r, n), d, r, self.correction))
         out.index = float(spring.spring_index(d, r))
         out.wahl_factor = float(spring.wahl_factor(out.index)) if self.correction == "wahl" \
             else 1.0
