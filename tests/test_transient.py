@@ -38,6 +38,15 @@ from govopt.analysis.transient import (
 # ---------------------------------------------------------------------------------------------
 
 
+def _polyroots(coeffs):
+    """mpmath roots of a polynomial given highest power first, on mpmath 1.3 and >= 1.4 (which
+    deprecates the descending order and takes ``asc=True``)."""
+    try:
+        return mp.polyroots(coeffs[::-1], maxsteps=500, extraprec=400, asc=True)
+    except TypeError:
+        return mp.polyroots(coeffs, maxsteps=500, extraprec=400)
+
+
 def companion(a0, a1, a2, a3):
     return np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [-a3 / a0, -3 * a2 / a0, -3 * a1 / a0]])
 
@@ -59,7 +68,7 @@ def mp_states(coeffs, x0, times, dps=50):
 def mp_roots(coeffs, dps=50):
     with mp.workdps(dps):
         a0, a1, a2, a3 = (mp.mpf(float(c)) for c in coeffs)
-        r = mp.polyroots([a0, 3 * a1, 3 * a2, a3], maxsteps=500, extraprec=400)
+        r = _polyroots([a0, 3 * a1, 3 * a2, a3])
         return [complex(v) for v in r]
 
 
@@ -324,7 +333,7 @@ def test_mpmath_reference_is_trustworthy_when_stiff():
     ref = mp_states(coeffs, x0, times)[0]
     with mp.workdps(50):
         a0, a1, a2, a3 = (mp.mpf(float(c)) for c in coeffs)
-        r = mp.polyroots([a0, 3 * a1, 3 * a2, a3], maxsteps=500, extraprec=400)
+        r = _polyroots([a0, 3 * a1, 3 * a2, a3])
         c = mp.lu_solve(mp.matrix([[1, 1, 1], list(r), [v**2 for v in r]]),
                         mp.matrix([mp.mpf(float(v)) for v in x0]))
         modal = [float(mp.re(sum(c[k] * mp.exp(r[k] * mp.mpf(t)) for k in range(3))))
