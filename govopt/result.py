@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from .analysis.statics import Characteristic, SpringDesign, classify_k2
+from .jsonable import jsonable, number
 from .spec import Design, Spec
 
 #: Relative margin below which a satisfied constraint is reported as active (binding).
@@ -47,8 +48,8 @@ class Check:
         return self.passed and self.margin < ACTIVE_TOL
 
     def to_dict(self) -> dict:
-        return {"name": self.name, "value": _num(self.value), "limit": _num(self.limit),
-                "sense": self.sense, "unit": self.unit, "margin": _num(self.margin),
+        return {"name": self.name, "value": number(self.value), "limit": number(self.limit),
+                "sense": self.sense, "unit": self.unit, "margin": number(self.margin),
                 "passed": self.passed, "active": self.active, "source": self.source}
 
 
@@ -131,26 +132,4 @@ class Result:
                                for c in ("stable", "resonance risk", "unstable")}
         out.update(self.dynamics)
         out.update(self.optimisation)
-        return _jsonable(out)
-
-
-def _num(x):
-    x = float(x)
-    return x if math.isfinite(x) else (None if math.isnan(x) else ("inf" if x > 0 else "-inf"))
-
-
-def _jsonable(obj):
-    """Numpy scalars and arrays to plain JSON types; non-finite floats to None / "inf"."""
-    if isinstance(obj, dict):
-        return {k: _jsonable(v) for k, v in obj.items()}
-    if isinstance(obj, list | tuple):
-        return [_jsonable(v) for v in obj]
-    if isinstance(obj, np.ndarray):
-        return _jsonable(obj.tolist())
-    if isinstance(obj, bool | np.bool_):
-        return bool(obj)
-    if isinstance(obj, int | np.integer):
-        return int(obj)
-    if isinstance(obj, float | np.floating):
-        return _num(obj)
-    return obj
+        return jsonable(out)

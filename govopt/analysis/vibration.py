@@ -67,6 +67,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy import optimize, special
 
+from ..jsonable import jsonable
 from ..model import valvegear
 from ..spec import Spec
 from .statics import SpringDesign, restoring_k2
@@ -397,24 +398,7 @@ class VibrationResult:
             "hamabe_case": self.hamabe_case,
             "harmonics": [dict(h) for h in self.harmonics],
         }
-        return _jsonable(out)
-
-
-def _jsonable(obj):
-    if isinstance(obj, dict):
-        return {k: _jsonable(v) for k, v in obj.items()}
-    if isinstance(obj, list | tuple):
-        return [_jsonable(v) for v in obj]
-    if isinstance(obj, bool | np.bool_):
-        return bool(obj)
-    if isinstance(obj, int | np.integer):
-        return int(obj)
-    if isinstance(obj, float | np.floating):
-        x = float(obj)
-        if math.isfinite(x):
-            return x
-        return None if math.isnan(x) else ("inf" if x > 0 else "-inf")
-    return obj
+        return jsonable(out)
 
 
 def _dashpot(spec: Spec, dashpot):
