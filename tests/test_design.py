@@ -194,3 +194,21 @@ def test_dashpot_window_is_bounded_on_both_sides(spec):
     f_hurwitz = float(a0[0, 0] * a3[0, 0] / (3 * a2[0, 0]))
     assert win["f_lo"][0] >= f_hurwitz * (1 - 1e-12)
     assert win["f_hi"][0] < f_hurwitz * 1e4  # an upper end exists inside the scanned range
+
+
+@pytest.mark.parametrize("reaction_speed", ["local", "mean"])
+def test_vectorised_load_change_matches_the_evaluator(spec, reaction_speed):
+    """The optimiser's vectorised eq. (28) coefficients and initial state equal the evaluator's
+    (govopt.analysis.loadchange) for the same design."""
+    from govopt.analysis import loadchange
+
+    s = spec.with_analysis(reaction_speed=reaction_speed)
+    grid = dz.Grid.build(s)
+    km = dz.KappaModel.build(s, [7.0], grid.alpha)
+    kappa = 30000.0
+    a0, a2, a3, x = dz.load_change_problem(s, km, grid, np.array([0]), np.array([kappa]))
+    l0 = statics.free_half_length(s, 7.0, kappa)
+    sd = statics.SpringDesign(7.0, s.geometry.rho**2 * 7.0, kappa, l0)
+    (b0, _, b2, b3), y, _ = loadchange.coefficients(s, sd, s.load_changes[0], 1.0)
+    np.testing.assert_allclose([a0[0, 0], a2[0, 0], a3[0, 0]], [b0, b2, b3], rtol=1e-11)
+    np.testing.assert_allclose([v[0, 0] for v in x], y, rtol=1e-10, atol=1e-14)

@@ -7,31 +7,124 @@ of :mod:`govopt.analysis.transient`.
 
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
+
 import numpy as np
 
+from ..jsonable import number
 from ..spec import LoadChange, Spec
 from . import statics
 from . import transient as tr
 
 
-def coefficients(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float):
-    """``(a0, a1, a2, a3)`` and the initial state ``(xi, xi', xi'')(0)`` of eq. (28).
+def speed_lever(spec: Spec, alpha0, m):
+    """``(d/domega)(M_z - M_r0) / (2 omega)`` at configuration ``alpha0``: the lever through which
+    a speed error moves the pendulum (Hamabe eq. 24 has ``m a rho sin(alpha0)``). When the valve
+    gear's inertia reactions follow the local speed (``reaction_speed="local"``) they take
+    ``C_i(alpha0)`` off it, which keeps eq. (28) the exact linearisation of the full equations;
+    with ``"mean"`` it is the paper's."""
+    g = spec.geometry
+    lever = m * g.a * g.rho * np.sin(alpha0)
+    if spec.analysis.reaction_speed == "local":
+        lever = lever - statics.reaction(spec, alpha0)[1]
+    return lever
 
-    ``a0 = I``, ``3 a1 = f``, ``3 a2 = I k^2(alpha0)``, ``a3 = 2 R omega0 a m rho sin(alpha0)``
-    with ``R = -(dT/dalpha) / I_fw`` (eq. 27) and ``omega0`` the equilibrium speed at the new
-    configuration; ``xi(0) = alpha1 - alpha0``, ``xi'(0) = 0``,
-    ``a0 xi''(0) = (a3 / R) eta0 - 3 a2 xi(0)`` with ``eta0 = omega1 (1 + eps) - omega0``.
+
+
+
+@dataclass(frozen=True)
+class LoadChangeModel:
+    """Coefficients and initial state of Hamabe's linear load-change model (SI).
+
+    ``I xi'' + f xi' + I k^2 xi (+ M0 sign xi') = C eta``, ``eta' = -R xi`` (eqs. 24, 26, 27,
+    42); ``a0 = I``, ``3 a1 = f``, ``3 a2 = I k^2``, ``a3 = C R`` (eq. 28).
     """
-    g, eng = spec.geometry, spec.engine
-    R = -eng.torque_slope / eng.flywheel_inertia
-    w2 = statics.omega_squared(spec, np.array([lc.alpha_from, lc.alpha_to]), sd.m, sd.kappa,
-                               sd.l0)
-    omega1, omega0 = np.sqrt(w2)
-    k2 = statics.restoring_k2(spec, lc.alpha_to, sd, omega0**2)
-    a = tr.hamabe_coefficients(sd.inertia, f, k2, R, omega0, g.a, sd.m, g.rho, lc.alpha_to)
-    x = tr.hamabe_initial_conditions(a[0], a[2], a[3], R, lc.alpha_from - lc.alpha_to,
-                                     omega1 * (1.0 + eng.insensibility) - omega0)
-    return tuple(float(v) for v in a), tuple(float(v) for v in x), float(k2)
+
+    I: float  # pendulum inertia about the fulcrum, kg m^2
+    f: float  # dash-pot coefficient, N m s
+    k2: float  # restoring stiffness k^2 at alpha0, 1/s^2
+    C: float  # d(net moment)/d omega at (alpha0, omega0), N m s
+    R: float  # -(dT/dalpha)/I_fw, 1/s^2
+    M0: float  # friction moment at the fulcrum, N m
+    xi0: float  # alpha1 - alpha0, rad
+    eta0: float  # omega1 (1 + eps) - omega0, rad/s
+    alpha0: float = math.nan  # new equilibrium, rad
+    alpha1: float = math.nan  # old equilibrium, rad
+    omega0: float = math.nan  # equilibrium speed at alpha0, rad/s
+    omega1: float = math.nan  # equilibrium speed at alpha1, rad/s
+
+    @property
+    def cubic(self) -> tuple[float, float, float, float]:
+        """``(a0, a1, a2, a3)`` of eq. (28)."""
+        return self.I, self.f / 3.0, self.I * self.k2 / 3.0, self.C * self.R
+
+    @property
+    def net0(self) -> float:
+        """Initial net moment ``C eta0 - I k^2 xi0`` on the resting pendulum, N m."""
+        return self.C * self.eta0 - self.I * self.k2 * self.xi0
+
+    def to_dict(self) -> dict:
+        a0, a1, a2, a3 = self.cubic
+        return {"I_kg_m2": self.I, "f_N_m_s": self.f, "k2_per_s2": self.k2, "C_N_m_s": self.C,
+                "R_per_s2": self.R, "M0_N_m": self.M0, "xi0_rad": self.xi0,
+                "eta0_rad_per_s": self.eta0, "alpha0_rad": number(self.alpha0),
+                "alpha1_rad": number(self.alpha1), "omega0_rad_per_s": number(self.omega0),
+                "omega1_rad_per_s": number(self.omega1), "a0": a0, "a1": a1, "a2": a2, "a3": a3,
+                "net0_N_m": self.net0}
+
+
+def load_change_model(spec: Spec, sd: statics.SpringDesign | None = None,
+                      load_change: LoadChange | None = None, *, dashpot: float | None = None,
+                      friction_moment: float | None = None) -> LoadChangeModel:
+    """Hamabe's linear model (eqs. 24-28, 42) of ``load_change`` for one design of ``spec``.
+
+    ``k^2`` is :func:`statics.restoring_k2` at ``alpha0`` with ``omega0^2`` from the
+    characteristic curve (:func:`statics.omega_squared`); ``C = 2 omega0 m a rho sin(alpha0)``
+    (``dM_z/domega``), less ``2 omega0 C_i(alpha0)`` when the spec takes the valve gear's inertia
+    reactions at the local speed (``reaction_speed="local"``), so that the model is the exact
+    linearisation of :mod:`govopt.analysis.nonlinear`; with ``"mean"`` (the paper) it is
+    Hamabe's ``a3 / R``. ``R = -(dT/dalpha) / I_fw`` (eq. 27). Initial state: ``xi0 = alpha1 -
+    alpha0`` and ``eta0 = omega1 (1 + eps) - omega0`` with the insensibility ``eps``. ``dashpot``
+    and ``friction_moment`` default to the design's (0 when absent).
+    """
+    if spec.engine is None:
+        raise ValueError(f"{spec.path}: a load change needs [engine] data")
+    sd = sd or statics.spring_design(spec)
+    if load_change is None:
+        if not spec.load_changes:
+            raise ValueError(f"{spec.path}: no [[load_change]] given")
+        load_change = spec.load_changes[0]
+    design = spec.design
+    if dashpot is None:
+        dashpot = (design.dashpot if design is not None else None) or 0.0
+    if friction_moment is None:
+        friction_moment = (design.friction_moment if design is not None else None) or 0.0
+    eng = spec.engine
+    a0, a1 = load_change.alpha_to, load_change.alpha_from
+    w0 = math.sqrt(float(statics.omega_squared(spec, a0, sd.m, sd.kappa, sd.l0)))
+    w1 = math.sqrt(float(statics.omega_squared(spec, a1, sd.m, sd.kappa, sd.l0)))
+    k2 = float(statics.restoring_k2(spec, a0, sd, w0**2))
+    return LoadChangeModel(
+        I=float(sd.inertia), f=float(dashpot), k2=k2,
+        C=2.0 * w0 * float(speed_lever(spec, a0, sd.m)),
+        R=-eng.torque_slope / eng.flywheel_inertia, M0=float(friction_moment),
+        xi0=a1 - a0, eta0=w1 * (1.0 + eng.insensibility) - w0,
+        alpha0=a0, alpha1=a1, omega0=w0, omega1=w1)
+
+
+def coefficients(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float):
+    """``(a0, a1, a2, a3)``, the initial state ``(xi, xi', xi'')(0)`` of eq. (28), and k^2.
+
+    ``a0 = I``, ``3 a1 = f``, ``3 a2 = I k^2(alpha0)``, ``a3 = C R`` with
+    ``C = 2 omega0 m a rho sin(alpha0)`` (see :func:`speed_lever`) and ``R = -(dT/dalpha) / I_fw``
+    (eq. 27); ``xi(0) = alpha1 - alpha0``, ``xi'(0) = 0``, ``a0 xi''(0) = (a3 / R) eta0 -
+    3 a2 xi(0)`` with ``eta0 = omega1 (1 + eps) - omega0`` (Hamabe, Part III).
+    """
+    model = load_change_model(spec, sd, lc, dashpot=f)
+    a = model.cubic
+    x = tr.hamabe_initial_conditions(a[0], a[2], a[3], model.R, model.xi0, model.eta0)
+    return tuple(float(v) for v in a), tuple(float(v) for v in x), model.k2
 
 
 def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,

@@ -28,7 +28,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..analysis import statics
+from ..analysis import loadchange, statics
 from ..analysis import transient as tr
 from ..errors import InfeasibleError
 from ..model import spring
@@ -83,21 +83,23 @@ def k2_limits(spec: Spec, req: Requirements) -> tuple[float, float]:
 def load_change_problem(spec: Spec, km: KappaModel, grid: Grid, rows, kappa):
     """Coefficients ``a0, a2, a3`` and initial state of every load change for candidates
     (mass row ``rows``, stiffness ``kappa``): Hamabe eqs. (27)-(28) and Part III's initial
-    conditions. Shapes: (candidates, load changes)."""
-    g, eng = spec.geometry, spec.engine
+    conditions, as :func:`govopt.analysis.loadchange.load_change_model` builds them for one
+    design. Shapes: (candidates, load changes)."""
+    eng = spec.engine
     R = -eng.torque_slope / eng.flywheel_inertia
     m = km.m[rows, 0][:, None]
     inertia = km.inertia[rows, 0][:, None]
     kappa = np.asarray(kappa)[:, None]
     i1 = np.array([i for i, _ in grid.load_changes])
     i0 = np.array([j for _, j in grid.load_changes])
-    w2 = km.omega2.x[rows][:, :] * kappa + km.omega2.y[rows]
+    w2 = km.omega2.x[rows] * kappa + km.omega2.y[rows]
     k2 = km.k2.x[rows] * kappa + km.k2.y[rows]
     omega0 = np.sqrt(np.maximum(w2[:, i0], 0.0))
     omega1 = np.sqrt(np.maximum(w2[:, i1], 0.0)) * (1.0 + eng.insensibility)
     alpha0 = grid.alpha[i0]
-    a0, _, a2, a3 = tr.hamabe_coefficients(inertia, 0.0, k2[:, i0], R, omega0, g.a, m, g.rho,
-                                           alpha0)
+    a0 = inertia + 0.0 * alpha0
+    a2 = inertia * k2[:, i0] / 3.0
+    a3 = 2.0 * omega0 * loadchange.speed_lever(spec, alpha0, m) * R
     xi0 = (grid.alpha[i1] - alpha0) + 0.0 * a0
     x = tr.hamabe_initial_conditions(a0, a2, a3, R, xi0, omega1 - omega0)
     return a0, a2, a3, x
