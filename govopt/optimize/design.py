@@ -382,6 +382,7 @@ def design(spec: Spec):
     from ..evaluation import evaluate
 
     req = requirements(spec)
+    spec = replace(spec, requirements=req)  # the checks report the requirements designed to
     grid = Grid.build(spec)
     km = KappaModel.build(spec, mass_grid(req), grid.alpha)
     k2lo, k2hi = k2_limits(spec, req)
