@@ -103,6 +103,71 @@ def design(
                 typer.echo(f"wrote {path}")
 
 
+def _q(text: str | None, dimension: str, option: str):
+    from .units import UnitError, parse_quantity
+
+    if text is None:
+        return None
+    try:
+        return parse_quantity(text, dimension)
+    except UnitError as exc:
+        _fail(f"{option}: {exc}")
+
+
+@app.command()
+def spring(
+    force: Annotated[str, typer.Option(help="Largest working force, e.g. '606 kgf'.")],
+    stiffness: Annotated[str, typer.Option(help="Stiffness, e.g. '59.7 kgf/cm'.")],
+    allowable_stress: Annotated[str, typer.Option(help="Allowable shear stress k_s.")],
+    shear_modulus: Annotated[str, typer.Option(help="Shear modulus G.")],
+    density: Annotated[str, typer.Option(help="Wire density.")] = "7850 kg/m^3",
+    correction: Annotated[str, typer.Option(help="Stress correction: 'wahl' or 'none'.")]
+    = "wahl",
+    max_outer_diameter: Annotated[str | None, typer.Option(help="Envelope, e.g. '10 cm'.")]
+    = None,
+    max_body_length: Annotated[str | None, typer.Option(help="Close-wound body length limit.")]
+    = None,
+    min_surge_frequency: Annotated[str | None, typer.Option(help="e.g. '40 Hz'.")] = None,
+    json_out: JsonOpt = False,
+) -> None:
+    """Least-mass helical spring for a force and stiffness (an exact GP, certified global)."""
+    from .optimize.spring_gp import SpringGP, size_helical_spring
+
+    if correction not in ("wahl", "none"):
+        _fail(f"--correction: expected 'wahl' or 'none', got {correction!r}")
+    values = dict(
+        k_s=_q(allowable_stress, "stress", "--allowable-stress"),
+        G=_q(shear_modulus, "stress", "--shear-modulus"),
+        density=_q(density, "density", "--density"),
+        D_out_max=_q(max_outer_diameter, "length", "--max-outer-diameter"),
+        L_body_max=_q(max_body_length, "length", "--max-body-length"),
+        f_surge_min=_q(min_surge_frequency, "frequency", "--min-surge-frequency"))
+    F, k = _q(force, "force", "--force"), _q(stiffness, "stiffness", "--stiffness")
+    sol = size_helical_spring(F, k, correction=correction, **values)
+    if not sol.ok:
+        diagnosis = SpringGP(correction=correction).diagnose(kappa=k, F_max=F, **values)
+        _fail(f"no spring meets these requirements: {diagnosis.summary()}")
+    out = {"wire_diameter_m": sol.d, "coil_radius_m": sol.r, "active_turns": sol.n,
+           "mass_kg": sol.mass, "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
+           "wahl_factor": sol.wahl_factor, "spring_index": sol.index,
+           "surge_frequency_Hz": sol.surge_frequency, "sensitivities": sol.sensitivities,
+           "active": sol.active, "global_optimum": sol.certificate.get("global_optimum"),
+           "duality_gap_log": sol.certificate.get("duality_gap_log")}
+    if json_out:
+        from .jsonable import jsonable
+
+        typer.echo(json.dumps(jsonable(out), indent=2))
+        return
+    typer.echo(f"d = {sol.d * 1e3:.4f} mm, r = {sol.r * 1e3:.4f} mm, n = {sol.n:.4f}, "
+               f"mass = {sol.mass:.5g} kg, stress = {sol.stress / 1e6:.2f} MPa "
+               f"(index {sol.index:.2f}, Wahl K {sol.wahl_factor:.4f})")
+    typer.echo(f"global optimum certified: {out['global_optimum']} (duality gap in log space "
+               f"{out['duality_gap_log']:.2g}); active: {', '.join(sol.active)}")
+    for name, value in sol.sensitivities.items():
+        if abs(value) > 1e-6:
+            typer.echo(f"  +1 % on {name} -> {value:+.3f} % mass")
+
+
 @app.command()
 def bench(
     quick: Annotated[bool, typer.Option(help="Smaller problem sizes.")] = False,

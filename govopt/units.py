@@ -34,6 +34,7 @@ SI_UNITS = {
     "damping": "N*m*s/rad",
     "time": "s",
     "frequency": "Hz",
+    "stiffness": "N/m",
     "dimensionless": "",
 }
 
@@ -97,6 +98,7 @@ def _example(dimension: str) -> str:
         "damping": "72 kgf*cm*s/rad",
         "time": "0.5 s",
         "frequency": "20 Hz",
+        "stiffness": "59.7 kgf/cm",
         "dimensionless": "0.12",
     }[dimension]
 

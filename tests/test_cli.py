@@ -2,6 +2,7 @@
 
 import json
 
+import pytest
 from typer.testing import CliRunner
 
 from govopt.cli import app
@@ -45,3 +46,29 @@ def test_geometry_flag_changes_the_model():
 def test_bad_flag_value_exits_2():
     result = runner.invoke(app, ["evaluate", "--geometry", "wobbly"])
     assert result.exit_code == 2
+
+
+def test_spring_command_reproduces_hamabe_sizing():
+    """govopt spring with the paper's case a numbers (r free, no Wahl) gives the stress-limited
+    wire: with stiffness and stress both active, mass = 2 rho G F^2 / (kappa k_s^2) whatever r."""
+    args = ["spring", "--force", "606 kgf", "--stiffness", "59.7 kgf/cm", "--allowable-stress",
+            "4000 kgf/cm^2", "--shear-modulus", "850000 kgf/cm^2", "--correction", "none",
+            "--json"]
+    result = runner.invoke(app, args)
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.output)
+    F, kappa, ks, G = 606 * 9.80665, 59.7 * 980.665, 4000 * 9.80665e4, 850000 * 9.80665e4
+    assert out["mass_kg"] == pytest.approx(2 * 7850 * G * F**2 / (kappa * ks**2), rel=1e-5)
+    assert out["shear_stress_Pa"] == pytest.approx(ks, rel=1e-6)
+    assert out["global_optimum"] is True
+
+
+def test_spring_command_infeasible_and_bad_units():
+    args = ["spring", "--force", "606 kgf", "--stiffness", "59.7 kgf/cm", "--allowable-stress",
+            "400 kgf/cm^2", "--shear-modulus", "850000 kgf/cm^2", "--max-outer-diameter", "6 cm"]
+    result = runner.invoke(app, args)
+    assert result.exit_code == 2
+    assert "allowable stress" in result.output and "outer diameter" in result.output
+    bad = runner.invoke(app, ["spring", "--force", "606 cm", "--stiffness", "1 N/m",
+                              "--allowable-stress", "1 MPa", "--shear-modulus", "1 GPa"])
+    assert bad.exit_code == 2 and "--force" in bad.output
