@@ -212,3 +212,26 @@ def test_vectorised_load_change_matches_the_evaluator(spec, reaction_speed):
     (b0, _, b2, b3), y, _ = loadchange.coefficients(s, sd, s.load_changes[0], 1.0)
     np.testing.assert_allclose([a0[0, 0], a2[0, 0], a3[0, 0]], [b0, b2, b3], rtol=1e-11)
     np.testing.assert_allclose([v[0, 0] for v in x], y, rtol=1e-10, atol=1e-14)
+
+
+@pytest.mark.parametrize(("old", "new", "key"), [
+    ('pendulum_weight = ["4 kgf", "16 kgf"]', 'pendulum_weight = ["4.01 kgf", "4.2 kgf"]',
+     "bounds.pendulum_weight"),
+    ('wire_diameter = ["5 mm", "25 mm"]', 'wire_diameter = ["30 mm", "40 mm"]',
+     "catalogue.wire_diameters"),
+    ("active_turns = [3, 20]", "active_turns = [3.1, 3.2]", "bounds.active_turns"),
+])
+def test_bounds_that_leave_an_empty_grid(tmp_path, old, new, key):
+    r = _infeasible(tmp_path, old, new)
+    assert r.exit_code == 2, r.output
+    assert key in r.output and "Traceback" not in r.output
+
+
+def test_design_without_engine_says_dynamics_were_not_designed(tmp_path):
+    text = open(SPEC).read()
+    text = text[:text.index("[engine]")] + text[text.index("[requirements]"):]
+    path = tmp_path / "noengine.toml"
+    path.write_text(text)
+    res = dz.design(govopt.load_spec(path))
+    assert res.optimisation["notes"] and "not designed for" in res.optimisation["notes"][0]
+    assert all(c.passed for c in res.checks)

@@ -175,8 +175,8 @@ def vibration_bound(spec: Spec, km: KappaModel, grid: Grid, rows, kappa, f):
 # ---------------------------------------------------------------------------------------------
 
 
-def spring_catalogue(req: Requirements):
-    """Every (d, r, n) the catalogue allows within the bounds, as flat arrays."""
+def catalogue_axes(req: Requirements):
+    """The catalogue's wire diameters, coil radii and turns within the bounds (1-D arrays)."""
     d = np.array([w for w in req.wire_diameters
                   if req.wire_diameter[0] - 1e-12 <= w <= req.wire_diameter[1] + 1e-12])
     rs = req.coil_radius_step
@@ -185,7 +185,12 @@ def spring_catalogue(req: Requirements):
     ts = req.turn_step
     n = np.arange(math.ceil(req.active_turns[0] / ts - 1e-9),
                   math.floor(req.active_turns[1] / ts + 1e-9) + 1) * ts
-    D, Rr, N = np.meshgrid(d, r, n, indexing="ij")
+    return d, r, n
+
+
+def spring_catalogue(req: Requirements):
+    """Every (d, r, n) the catalogue allows within the bounds, as flat arrays."""
+    D, Rr, N = np.meshgrid(*catalogue_axes(req), indexing="ij")
     return D.ravel(), Rr.ravel(), N.ravel()
 
 
@@ -383,6 +388,7 @@ def design(spec: Spec):
 
     req = requirements(spec)
     spec = replace(spec, requirements=req)  # the checks report the requirements designed to
+    _check_grids(spec, req)
     grid = Grid.build(spec)
     km = KappaModel.build(spec, mass_grid(req), grid.alpha)
     k2lo, k2hi = k2_limits(spec, req)
@@ -413,10 +419,27 @@ def design(spec: Spec):
         "continuous_bound": bound,
         "gap": gap,
         "search": stats,
+        "notes": [] if spec.engine is not None and spec.load_changes else [
+            "no [engine] or [[load_change]] in the spec: the dash-pot and the load-change "
+            "requirements (eq. 32, over-regulation, settling) were not designed for"],
         "constraints": [c.to_dict() for c in res.checks],
         "sensitivities": sensitivities(spec, req, cand.objective),
     }
     return res
+
+
+def _check_grids(spec: Spec, req: Requirements) -> None:
+    """Bounds that leave no point of a catalogue grid are a user's mistake: say which."""
+    if mass_grid(req).size == 0:
+        raise InfeasibleError(
+            f"{spec.path}: bounds.pendulum_weight: no weight on the catalogue's weight_step grid "
+            f"({req.mass_step * 9.80665:g} N) lies within the bounds")
+    d, r, n = catalogue_axes(req)
+    for values, key in ((d, "catalogue.wire_diameters within bounds.wire_diameter"),
+                        (r, "bounds.coil_radius on the catalogue's coil_radius_step grid"),
+                        (n, "bounds.active_turns on the catalogue's turn_step grid")):
+        if values.size == 0:
+            raise InfeasibleError(f"{spec.path}: {key}: no value lies within the bounds")
 
 
 def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
@@ -464,10 +487,8 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
                                                  req.pendulum_mass[1] * x))
 
     if stage == "statics":
-        lows = {k: np.min(v[0]) for k, v in parts.items() if np.any(np.isfinite(v[0]))}
-        highs = {k: np.max(v[1]) for k, v in parts.items() if np.any(np.isfinite(v[1]))}
-        lo_name = max(lows, key=lambda k: np.median(parts[k][0]))
-        hi_name = min(highs, key=lambda k: np.median(parts[k][1]))
+        lo_name = max(parts, key=lambda k: np.median(parts[k][0]))
+        hi_name = min(parts, key=lambda k: np.median(parts[k][1]))
         head = (f"{spec.path}: infeasible: the requirement '{lo_name}' needs a stiffer spring "
                 f"than '{hi_name}' allows at every pendulum weight in the bounds")
         cands = [("irregularity", with_irr, "x", speed.irregularity),
