@@ -1,0 +1,10 @@
+"""Test configuration: hypothesis runs derandomised (same examples every run, so CI is
+reproducible); set HYPOTHESIS_PROFILE=explore to search new examples locally."""
+
+import os
+
+from hypothesis import settings
+
+settings.register_profile("default", derandomize=True, database=None)
+settings.register_profile("explore", max_examples=500, database=None)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "default"))
