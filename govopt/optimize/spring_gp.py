@@ -248,8 +248,39 @@ def _normalise_status(status: str | None) -> str:
 # ----------------------------------------------------------------------------------------------
 
 
+@dataclass(kw_only=True)
+class SpringFigures:
+    """A spring's design and the figures derived from it with :mod:`govopt.model.spring` (SI)."""
+
+    d: float = math.nan
+    r: float = math.nan
+    n: float = math.nan
+    objective: float = math.nan
+    mass: float = math.nan
+    stiffness: float = math.nan
+    stress: float = math.nan
+    wahl_factor: float = math.nan
+    index: float = math.nan
+    outer_diameter: float = math.nan
+    body_length: float = math.nan
+    surge_frequency: float = math.nan
+
+    def set_design(self, d: float, r: float, n: float, v: Mapping[str, float],
+                   correction: str) -> None:
+        """Set ``d, r, n`` and recompute every derived figure from the exact formulas."""
+        self.d, self.r, self.n = d, r, n
+        self.mass = float(spring.wire_mass(d, r, n, v["density"]))
+        self.stiffness = float(spring.stiffness(d, r, n, v["G"]))
+        self.stress = float(spring.shear_stress(_force(v, d, r, n), d, r, correction))
+        self.index = float(spring.spring_index(d, r))
+        self.wahl_factor = float(spring.wahl_factor(self.index)) if correction == "wahl" else 1.0
+        self.outer_diameter = 2.0 * r + d
+        self.body_length = (n + 1.0) * d
+        self.surge_frequency = float(spring.surge_frequency(d, r, n, v["G"], v["density"]))
+
+
 @dataclass
-class SpringSolution:
+class SpringSolution(SpringFigures):
     """A continuous GP design (SI) with its sensitivities.
 
     ``sensitivities[name]`` is ``d log(objective) / d log(limit of constraint name)``: e.g.
@@ -263,19 +294,7 @@ class SpringSolution:
     status: str
     objective_name: str
     correction: str
-    d: float = math.nan
-    r: float = math.nan
-    n: float = math.nan
     t: float | None = None
-    objective: float = math.nan
-    mass: float = math.nan
-    stiffness: float = math.nan
-    stress: float = math.nan
-    wahl_factor: float = math.nan
-    index: float = math.nan
-    outer_diameter: float = math.nan
-    body_length: float = math.nan
-    surge_frequency: float = math.nan
     duals: dict[str, float] = field(default_factory=dict)
     sensitivities: dict[str, float] = field(default_factory=dict)
     parameter_sensitivities: dict[str, float] = field(default_factory=dict)
@@ -327,7 +346,7 @@ class Diagnosis:
 
 
 @dataclass
-class DiscreteSolution:
+class DiscreteSolution(SpringFigures):
     """Best design with a catalogue wire, ``n`` on the turn step and ``r`` on its resolution.
 
     ``continuous_bound`` is the GP optimum with the same stiffness band, a valid lower bound on
@@ -339,19 +358,7 @@ class DiscreteSolution:
 
     status: str
     objective_name: str
-    d: float = math.nan
-    r: float = math.nan
-    n: float = math.nan
-    objective: float = math.nan
-    mass: float = math.nan
-    stiffness: float = math.nan
     stiffness_error: float = math.nan
-    stress: float = math.nan
-    wahl_factor: float = math.nan
-    index: float = math.nan
-    outer_diameter: float = math.nan
-    body_length: float = math.nan
-    surge_frequency: float = math.nan
     continuous_bound: float = math.nan
     gap: float = math.nan
     candidates_checked: int = 0
@@ -582,19 +589,9 @@ class SpringGP:
         return sol
 
     def _fill(self, sol: SpringSolution, v: Mapping[str, float]) -> None:
-        d, r, n = (float(x.value) for x in (self.d, self.r, self.n))
-        sol.d, sol.r, sol.n = d, r, n
+        sol.set_design(*(float(x.value) for x in (self.d, self.r, self.n)), v, self.correction)
         sol.t = float(self.t.value) if self.t is not None else None
         sol.objective = float(self.problem.value)
-        sol.mass = float(spring.wire_mass(d, r, n, v["density"]))
-        sol.stiffness = float(spring.stiffness(d, r, n, v["G"]))
-        sol.stress = float(spring.shear_stress(_force(v, d, r, n), d, r, self.correction))
-        sol.index = float(spring.spring_index(d, r))
-        sol.wahl_factor = float(spring.wahl_factor(sol.index)) if self.correction == "wahl" \
-            else 1.0
-        sol.outer_diameter = 2.0 * r + d
-        sol.body_length = (n + 1.0) * d
-        sol.surge_frequency = float(spring.surge_frequency(d, r, n, v["G"], v["density"]))
         psens = dict.fromkeys(self.parameter_names, 0.0)
         psens.update(_OBJECTIVE_EXPS.get(self.objective_name, {}))
         for s in self.specs:
@@ -605,7 +602,7 @@ class SpringGP:
             for key, e in exps.items():
                 psens[key] += lam * e
         sol.parameter_sensitivities = psens
-        _, ratios = check_design(d, r, n, v, self.correction)
+        _, ratios = check_design(sol.d, sol.r, sol.n, v, self.correction)
         sol.active = [k for k, q in ratios.items() if q >= 1.0 - 1e-6]
 
     def _solver_certificate(self, raw, status) -> dict[str, Any]:
@@ -835,21 +832,13 @@ class SpringGP:
         out.per_wire = sorted(table, key=lambda row: row["d"])
         if best is None:
             return out
-        obj, mass, d, r, n = best
+        obj, _, d, r, n = best
         v_used = band_values
         out.status = "optimal"
-        out.d, out.r, out.n, out.objective, out.mass = d, r, n, obj, mass
-        out.stiffness = float(spring.stiffness(d, r, n, v_used["G"]))
+        out.set_design(d, r, n, v_used, self.correction)
+        out.objective = obj
         kappa = values.get("kappa") or math.sqrt(v_used["kappa_min"] * v_used["kappa_max"])
         out.stiffness_error = out.stiffness / float(kappa) - 1.0
-        out.stress = float(spring.shear_stress(_force(v_used, d, r, n), d, r, self.correction))
-        out.index = float(spring.spring_index(d, r))
-        out.wahl_factor = float(spring.wahl_factor(out.index)) if self.correction == "wahl" \
-            else 1.0
-        out.outer_diameter = 2.0 * r + d
-        out.body_length = (n + 1.0) * d
-        out.surge_frequency = float(spring.surge_frequency(d, r, n, v_used["G"],
-                                                           v_used["density"]))
         if out.continuous_bound > 0:
             out.gap = obj / out.continuous_bound - 1.0
         return out
