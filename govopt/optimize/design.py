@@ -33,6 +33,7 @@ from ..analysis import transient as tr
 from ..errors import InfeasibleError
 from ..model import spring
 from ..spec import Design, Requirements, Spec
+from ..units import G_STANDARD
 from .kappa import KappaModel
 
 #: Dash-pot grid, as multiples of the least damping that meets eq. (32) with its margin.
@@ -73,6 +74,15 @@ def mass_grid(req: Requirements) -> np.ndarray:
 def k2_limits(spec: Spec, req: Requirements) -> tuple[float, float]:
     w0sq = spec.speed.omega_mean**2
     return req.k2_margin * w0sq, (1.0 - req.k2_margin) * w0sq
+
+
+def statics_window(spec: Spec, req: Requirements):
+    """Configurations, the kappa-affine model over the weight grid and the admissible stiffness
+    interval per mass: ``(grid, km, lo, hi, parts)`` (see :meth:`KappaModel.statics_interval`)."""
+    grid = Grid.build(spec)
+    km = KappaModel.build(spec, mass_grid(req), grid.alpha)
+    lo, hi, parts = km.statics_interval(*k2_limits(spec, req), spec.speed.irregularity)
+    return grid, km, lo, hi, parts
 
 
 # ---------------------------------------------------------------------------------------------
@@ -301,17 +311,24 @@ def _visit(spec, req, km, grid, rows, cols, kappa, m, smass, d, r, n, l0, order,
     return best, checked
 
 
-def _lattice_screen(spec, req, km, grid, rows, kappa, stats, cells: int = 24):
-    """Dynamics on a lattice of masses x log-spaced stiffness cells covering the candidates;
-    returns a mask of candidates in or next to a cell with a feasible dash-pot, and records in
-    ``stats["least"]`` how far each dynamic requirement can be pushed (for the diagnosis)."""
-    lk = np.log(kappa)
-    edges = np.linspace(lk.min(), lk.max() + 1e-12, cells + 1)
-    cell = np.clip(np.searchsorted(edges, lk, side="right") - 1, 0, cells - 1)
-    key = rows * cells + cell
+def _cells(rows, kappa, width: float):
+    """Group candidates by (mass row, cell of ``log kappa`` of the given width): the dynamics
+    depend on the mass and the stiffness only. Returns each candidate's cell key, the distinct
+    keys, and each cell's mass row and centre stiffness."""
+    index = np.floor(np.log(kappa) / width).astype(np.int64)
+    key = rows.astype(np.int64) * (1 << 40) + (index - index.min())
     uniq, first = np.unique(key, return_index=True)
-    centre = np.exp(0.5 * (edges[uniq % cells] + edges[uniq % cells + 1]))
-    win = dashpot_window(spec, req, km, grid, uniq // cells, centre)
+    return key, uniq, rows[first], np.exp((index[first] + 0.5) * width)
+
+
+def _lattice_screen(spec, req, km, grid, rows, kappa, stats, cells: int = 24):
+    """Dynamics on a lattice of masses x ``cells`` log-spaced stiffness cells covering the
+    candidates; returns a mask of candidates in or next to a cell with a feasible dash-pot, and
+    records in ``stats["least"]`` how far each dynamic requirement can be pushed (for the
+    diagnosis)."""
+    width = max(float(np.ptp(np.log(kappa))) / cells, 1e-9)
+    key, uniq, cell_rows, centre = _cells(rows, kappa, width)
+    win = dashpot_window(spec, req, km, grid, cell_rows, centre)
     stats["least"] = {k: float(np.min(v)) for k, v in win["least"].items()}
     good = set()
     for u in uniq[win["feasible"]]:
@@ -328,12 +345,10 @@ def _surrogate_order(spec, req, km, grid, rows, kappa):
     cell; every candidate visited is checked exactly."""
     if rows.size == 0:
         return np.arange(0)
-    key = np.round(np.log(kappa) * 20) + 1000 * rows
-    _, first = np.unique(key, return_index=True)
-    win = dashpot_window(spec, req, km, grid, rows[first], kappa[first])
+    key, uniq, cell_rows, centre = _cells(rows, kappa, 0.05)
+    win = dashpot_window(spec, req, km, grid, cell_rows, centre)
     score = np.where(win["feasible"], objective_values(req, None, None, win), np.inf)
-    lookup = dict(zip(key[first], score, strict=True))
-    return np.argsort([lookup[k] for k in key], kind="stable")
+    return np.argsort(score[np.searchsorted(uniq, key)], kind="stable")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -389,10 +404,7 @@ def design(spec: Spec):
     req = requirements(spec)
     spec = replace(spec, requirements=req)  # the checks report the requirements designed to
     _check_grids(spec, req)
-    grid = Grid.build(spec)
-    km = KappaModel.build(spec, mass_grid(req), grid.alpha)
-    k2lo, k2hi = k2_limits(spec, req)
-    lo, hi, parts = km.statics_interval(k2lo, k2hi, spec.speed.irregularity)
+    grid, km, lo, hi, parts = statics_window(spec, req)
     if not np.any(lo <= hi):
         raise InfeasibleError(diagnose(spec, req, "statics", parts))
     cand, stats = best_discrete(spec, req, km, grid, lo, hi)
@@ -411,7 +423,7 @@ def design(spec: Spec):
         "status": "optimal" if all(c.passed for c in res.checks) else "verification_failed",
         "objective": {"name": req.objective, "value": cand.objective},
         "design": {
-            "pendulum_weight_N": cand.m * 9.80665, "pendulum_mass_kg": cand.m,
+            "pendulum_weight_N": cand.m * G_STANDARD, "pendulum_mass_kg": cand.m,
             "wire_diameter_m": cand.d, "coil_radius_m": cand.r, "active_turns": cand.n,
             "free_half_length_m": cand.l0, "dashpot_N_m_s_per_rad": cand.f,
             "dashpot_feasible_range_N_m_s_per_rad": [cand.f_lo, cand.f_hi],
@@ -423,7 +435,8 @@ def design(spec: Spec):
             "no [engine] or [[load_change]] in the spec: the dash-pot and the load-change "
             "requirements (eq. 32, over-regulation, settling) were not designed for"],
         "constraints": [c.to_dict() for c in res.checks],
-        "sensitivities": sensitivities(spec, req, cand.objective),
+        "sensitivities": sensitivities(spec, req, None if bound is None
+                                       else bound["objective"]),
     }
     return res
 
@@ -433,7 +446,7 @@ def _check_grids(spec: Spec, req: Requirements) -> None:
     if mass_grid(req).size == 0:
         raise InfeasibleError(
             f"{spec.path}: bounds.pendulum_weight: no weight on the catalogue's weight_step grid "
-            f"({req.mass_step * 9.80665:g} N) lies within the bounds")
+            f"({req.mass_step * G_STANDARD:g} N) lies within the bounds")
     d, r, n = catalogue_axes(req)
     for values, key in ((d, "catalogue.wire_diameters within bounds.wire_diameter"),
                         (r, "bounds.coil_radius on the catalogue's coil_radius_step grid"),
@@ -443,9 +456,7 @@ def _check_grids(spec: Spec, req: Requirements) -> None:
 
 
 def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
-    grid = Grid.build(spec)
-    km = KappaModel.build(spec, mass_grid(req), grid.alpha)
-    lo, hi, _ = km.statics_interval(*k2_limits(spec, req), spec.speed.irregularity)
+    grid, km, lo, hi, _ = statics_window(spec, req)
     if stage == "statics" or not np.any(lo <= hi):
         return bool(np.any(lo <= hi))
     cand, stats = best_discrete(spec, req, km, grid, lo, hi, dynamics=stage == "dynamics",
@@ -547,22 +558,18 @@ def _dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
             f"candidate {where}")
 
 
-def sensitivities(spec: Spec, req: Requirements, objective: float) -> list[dict]:
-    """Finite-difference sensitivity of the continuous bound to each requirement (+1 %)."""
+def sensitivities(spec: Spec, req: Requirements, base: float | None) -> list[dict]:
+    """Finite-difference sensitivity of the continuous bound ``base`` to each requirement
+    (+1 %), each perturbed bound solved afresh."""
     out = []
     speed, mat = spec.speed, spec.material
 
     def bound_of(s, r):
-        grid = Grid.build(s)
-        km = KappaModel.build(s, mass_grid(r), grid.alpha)
-        lo, hi, _ = km.statics_interval(*k2_limits(s, r), s.speed.irregularity)
+        _, km, lo, hi, _ = statics_window(s, r)
         b = continuous_bound(s, r, km, lo, hi)
         return None if b is None else b["objective"]
 
-    if req.objective not in ("moving_mass", "spring_mass"):
-        return out
-    base = bound_of(spec, req)
-    if base is None:
+    if req.objective not in ("moving_mass", "spring_mass") or base is None:
         return out
     trials = [
         ("allowable shear stress k_s", replace(spec, material=replace(

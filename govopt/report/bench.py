@@ -23,10 +23,8 @@ def design_bench(spec_path: str | Path) -> dict:
     evaluate(spec.with_design(res.design))
     one_eval = time.perf_counter() - t0
     req = dz.requirements(spec)
-    grid = dz.Grid.build(spec)
     t0 = time.perf_counter()
-    km = dz.KappaModel.build(spec, dz.mass_grid(req), grid.alpha)
-    lo, hi, _ = km.statics_interval(*dz.k2_limits(spec, req), spec.speed.irregularity)
+    grid, km, lo, hi, _ = dz.statics_window(spec, req)
     _, stats = dz.best_discrete(spec, req, km, grid, lo, hi, dynamics=False)
     screen = time.perf_counter() - t0
     return {"design_s": total, "evaluate_s": one_eval, "design_over_evaluate": total / one_eval,
