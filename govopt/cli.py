@@ -53,21 +53,11 @@ def evaluate(
 ) -> None:
     """Evaluate the spec's design (default: the bundled Hamabe case a)."""
     from .evaluation import evaluate as run
-    from .report.text import format_result
 
     if geometry is not None and geometry not in ("exact", "series"):
         _fail(f"--geometry: expected 'exact' or 'series', got {geometry!r}")
-    try:
-        res = run(_load(spec, DEFAULT_EVALUATE, geometry=geometry))
-        if xlsx is not None:
-            from .report.excel import write_workbook
-
-            write_workbook(res, xlsx)
-    except GovoptError as exc:
-        _fail(str(exc))
-    typer.echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res))
-    if xlsx is not None and not json_out:
-        typer.echo(f"\nwrote {xlsx}")
+    _run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, geometry=geometry)), json_out,
+                    xlsx=xlsx)
 
 
 @app.command()
@@ -81,13 +71,21 @@ def design(
 ) -> None:
     """Find the best design for the spec's requirements (default: bundled hamabe-design)."""
     from .optimize.design import design as run
-    from .report.files import write_design_spec
-    from .report.text import format_result
 
     if spec is None and xlsx is None:
         xlsx = REPORTS / "hamabe-design.xlsx"
+    _run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN)), json_out, xlsx=xlsx,
+                    output=output)
+
+
+def _run_and_report(compute, json_out: bool, xlsx: Path | None = None,
+                    output: Path | None = None) -> None:
+    """Compute a Result, write the requested files, print it; a user's error exits 2."""
+    from .report.files import write_design_spec
+    from .report.text import format_result
+
     try:
-        res = run(_load(spec, DEFAULT_DESIGN))
+        res = compute()
         if output is not None:
             write_design_spec(res, output)
         if xlsx is not None:
