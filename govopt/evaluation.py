@@ -74,11 +74,12 @@ def evaluate(spec: Spec, design: Design | None = None) -> Result:
     if design.dashpot is not None or spec.engine is not None:
         from .analysis import vibration  # Part II: the valve gear's fluctuating reaction
 
-        vib = vibration.vibration(spec, sd, spec.geometry.alpha_normal,
+        # the normal configuration is on the grid, where the equilibrium speed is omega0
+        k2_normal = float(k2[np.searchsorted(char.alpha, spec.geometry.alpha_normal)])
+        vib = vibration.vibration(spec, sd, spec.geometry.alpha_normal, k2_normal,
                                   dashpot=design.dashpot or 0.0)
         dynamics["vibration"] = vib.to_dict()
-        dynamics["k2_normal_rad2_s2"] = float(statics.restoring_k2(
-            spec, spec.geometry.alpha_normal, sd, spec.speed.omega_mean**2))
+        dynamics["k2_normal_rad2_s2"] = k2_normal
         if req is not None and req.max_vibration is not None:
             checks.append(Check("vibration peak-to-peak", dynamics["vibration"]["peak_to_peak_rad"],
                                 req.max_vibration, "<=", "rad", "Hamabe Part II, eqs. (18)-(22)"))
