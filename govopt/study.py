@@ -1052,6 +1052,56 @@ class RunReport:
     interrupted: bool = False
 
 
+#: a point that ran: its checks passed (evaluate) or it was designed (design)
+PASSED = ("pass", "optimal")
+
+
+def _reasons(status: str, message: str | None) -> list[str]:
+    """Why one point failed: each failed check of a ``fail`` row (``"fails: a, b"``), else its
+    message (an error's or the optimiser's)."""
+    message = " ".join(str(message or status).split())
+    if status == "fail" and message.startswith("fails: "):
+        return [f"fails: {name}" for name in message[len("fails: "):].split(", ")]
+    return [message]
+
+
+def outcome(store: Store, report: RunReport | None = None) -> tuple[int, str]:
+    """The exit status of a study run and its one line for stderr (``""`` when nothing failed).
+
+    Over every row in the database (a resumed study counts the rows of earlier runs too):
+
+    * 130: the run was interrupted (``report.interrupted``): what is kept and how to resume;
+    * 0: at least one point passed (or was designed); failures are counted,
+      ``"3 of 10 points failed: most common reason (2 of 3): fails: irregularity"``;
+    * 1: every point failed and at least one of them ran (a check failed, or the design was
+      infeasible), as ``govopt evaluate`` / ``govopt design`` exit 1 when a check fails;
+    * 2: every point was an error (no point could be evaluated: a user's error, as a bad spec);
+
+    a failing line names the most common reason (each failed check of a ``fail`` row counts
+    once) and on how many points it occurred.
+    """
+    if report is not None and report.interrupted:
+        return 130, (f"interrupted: {report.skipped + report.done} of {report.total} points are "
+                     f"in {store.path}; run again with --resume to finish")
+    rows = store.conn.execute(
+        "SELECT status, message, COUNT(*) FROM points GROUP BY status, message").fetchall()
+    total = sum(n for _, _, n in rows)
+    failed = [(st, msg, n) for st, msg, n in rows if st not in PASSED]
+    n_failed = sum(n for _, _, n in failed)
+    if not n_failed:
+        return 0, ""
+    counts: dict[str, int] = {}
+    for st, msg, n in failed:
+        for reason in _reasons(st, msg):
+            counts[reason] = counts.get(reason, 0) + n
+    reason, n = max(counts.items(), key=lambda kv: kv[1])  # the first of equals: stable
+    why = f"most common reason ({n} of {n_failed}): {limits.shorten_values(reason)}"
+    if n_failed < total:
+        return 0, f"{n_failed} of {total} points failed: {why}"
+    ran = any(st != "error" for st, _, _ in failed)
+    return (1 if ran else 2), f"all {total} points failed: {why}"
+
+
 def default_chunk(study: Study) -> int:
     """Points per chunk (and per database transaction): a vectorised batch for evaluate mode,
     one design at a time for design mode."""

@@ -23,6 +23,7 @@ from govopt.study import (
     Tolerance,
     export,
     load_study,
+    outcome,
     pareto_front,
     run_study,
     summary_text,
@@ -107,6 +108,29 @@ def test_bad_points_are_rows_not_crashes(tmp_path):
     assert "design.free_length" in t["message"][1] and "positive" in t["message"][1]
     assert "length" in t["message"][2]
     assert "no equilibrium speed at ball radius = 0.075 m" in t["message"][4]
+
+
+def test_outcome_all_failed_exits_nonzero(tmp_path):
+    """A study whose every point failed exits non-zero with one line naming the most common
+    reason: 1 when points ran and failed a check, 2 when none could be evaluated; some failures
+    exit 0 and are counted."""
+    case_a = SPECS / "hamabe-a.toml"  # irregularity 0.123 (the paper's case a)
+
+    def run(spec, sweep, name):
+        study = load_study(spec, sweeps=[sweep])
+        with Store(tmp_path / name) as store:
+            return outcome(store, run_study(study, store.path))
+
+    assert run(case_a, "speed.irregularity=0.1,0.11", "fail.db") == (
+        1, "all 2 points failed: most common reason (2 of 2): fails: irregularity")
+    code, line = run(case_a, "speed.irregularity=0.11,0.13", "some.db")  # 0.123 <= 0.13 passes
+    assert (code, line) == (0, "1 of 2 points failed: most common reason (1 of 1): fails: "
+                               "irregularity")
+    code, line = run(_study(tmp_path, ""), "design.free_length=-1 cm,-2 cm,8 cm", "error.db")
+    assert code == 2 and line.startswith("all 3 points failed: most common reason (1 of 3): ")
+    assert "design.free_length" in line and "\n" not in line
+    code, line = run(_study(tmp_path, ""), "design.free_length=15.41 cm,15.5 cm", "pass.db")
+    assert (code, line) == (0, "")
 
 
 # ---------------------------------------------------------------------------------------------
