@@ -1,58 +1,41 @@
-"""Command-line interface: parses arguments, calls the API, prints. No physics here."""
+"""Command-line interface: parses arguments, calls the API, prints. No physics here.
+
+The standard library's argparse parses (issue 14, target 2): typer builds every parameter
+through pydantic, ~0.1 s of CPU before any command ran. A command's own imports come when it
+runs; rich only where the reports and the study's progress bar draw with it.
+"""
 
 from __future__ import annotations
 
+import argparse
 import functools
 import json
 import os
+import re
 import signal
 import sys
 import warnings
 from pathlib import Path
-from typing import Annotated
-
-import typer
 
 from .errors import GovoptError
 from .examples import SPECS
-
-app = typer.Typer(add_completion=False, no_args_is_help=False, rich_markup_mode=None,
-                  help="Design and evaluate governor springs (Hamabe's shaft governor).")
 
 DEFAULT_EVALUATE = SPECS / "hamabe-a.toml"
 DEFAULT_DESIGN = SPECS / "hamabe-design.toml"
 #: `govopt design`'s own report, written in the current folder (never into the package)
 DEFAULT_WORKBOOK = Path("hamabe-design.xlsx")
 
-SpecArg = Annotated[Path | None, typer.Argument(help="Spec file (TOML with units).",
-                                               show_default=False)]
-JsonOpt = Annotated[bool, typer.Option("--json", help="Print a JSON object in SI units.")]
-ForceOpt = Annotated[bool, typer.Option(
-    "--force", help="Replace output files that exist (regular files only, never the spec).")]
-PlotsOpt = Annotated[Path | None, typer.Option(
-    "--plots", help="Write the plots (PNG and SVG) into this folder.", show_default=False)]
-_DEBUG = False  # set by the root callback from --debug / GOVOPT_DEBUG
+_DEBUG = False  # set by main from --debug / GOVOPT_DEBUG
+_ANSI = re.compile(r"\033\[[;?0-9]*[a-zA-Z]")  # an escape sequence, stripped when not a terminal
 
 
-def _version(value: bool) -> None:
-    if value:
-        from . import __version__
-
-        typer.echo(f"govopt {__version__}")
-        raise typer.Exit()
-
-
-@app.callback()
-def _root(debug: Annotated[bool, typer.Option(
-        "--debug", envvar="GOVOPT_DEBUG",
-        help="Show the traceback of an unexpected error, and warnings as they come.")] = False,
-        version: Annotated[bool, typer.Option(
-            "--version", callback=_version, is_eager=True,
-            help="Print govopt's version and exit.")] = False,
-) -> None:
-    """govopt: design and evaluate governor springs."""
-    global _DEBUG
-    _DEBUG = debug
+def _echo(text: str, err: bool = False) -> None:
+    """Print a line to stdout (stderr with ``err``), flushed; escape sequences are kept only
+    on a terminal (as click's ``echo`` did: a spec's name may carry them)."""
+    stream = sys.stderr if err else sys.stdout
+    if not stream.isatty():
+        text = _ANSI.sub("", text)
+    print(text, file=stream, flush=True)
 
 
 def _printable(text: str) -> str:
@@ -61,18 +44,19 @@ def _printable(text: str) -> str:
 
 
 def _fail(message: str) -> None:
+    """A user's error: one line ``error: ...`` on stderr, exit code 2."""
     from .limits import shorten_values  # a 200 kB value is never echoed whole
 
-    typer.echo(f"error: {_printable(shorten_values(message))}", err=True)
-    raise typer.Exit(code=2)
+    _echo(f"error: {_printable(shorten_values(message))}", err=True)
+    raise SystemExit(2)
 
 
 def _internal(exc: BaseException) -> None:
     """One line for an unexpected exception: a bug, to be reported; exit code 3."""
     text = " ".join(str(exc).split())
     text = text if len(text) <= 200 else text[:197] + "..."
-    typer.echo(f"internal error: {type(exc).__name__}: {_printable(text)} -- this is a bug in "
-               "govopt, please report it (run with --debug to see the traceback)", err=True)
+    _echo(f"internal error: {type(exc).__name__}: {_printable(text)} -- this is a bug in "
+          "govopt, please report it (run with --debug to see the traceback)", err=True)
 
 
 class _ChecksFailed(Exception):
@@ -93,7 +77,7 @@ def _guarded(command):
                 out = command(*args, **kwargs)
             except _ChecksFailed:
                 failed = True
-            except (typer.Exit, typer.Abort, BrokenPipeError):
+            except BrokenPipeError:
                 raise
             except GovoptError as exc:
                 _fail(str(exc))
@@ -101,11 +85,11 @@ def _guarded(command):
                 if debug:
                     raise
                 _internal(exc)
-                raise typer.Exit(code=3) from None
+                raise SystemExit(3) from None
         for message in dict.fromkeys(str(w.message) for w in caught or ()):
-            typer.echo(f"warning: {_printable(message)}", err=True)
+            _echo(f"warning: {_printable(message)}", err=True)
         if failed:
-            raise typer.Exit(code=1)
+            raise SystemExit(1)
         return out
 
     return run
@@ -119,18 +103,8 @@ def _load(spec: Path | None, default: Path, **analysis):
     return s.with_analysis(**changes) if changes else s
 
 
-@app.command()
 @_guarded
-def evaluate(
-    spec: SpecArg = None,
-    geometry: Annotated[str | None, typer.Option(
-        help="Linkage geometry: 'exact' (default) or 'series' (the paper's eq. 3).")] = None,
-    json_out: JsonOpt = False,
-    xlsx: Annotated[Path | None, typer.Option("--xlsx", help="Write an Excel design sheet.")]
-    = None,
-    force: ForceOpt = False,
-    plots: PlotsOpt = None,
-) -> None:
+def evaluate(*, spec, geometry, json_out, xlsx, force, plots) -> None:
     """Evaluate the spec's design (default: the bundled Hamabe case a). Exit code 0: every
     check passed; 1: some check failed; 2: bad input."""
     from .evaluation import evaluate as run
@@ -141,18 +115,8 @@ def evaluate(
                     spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots)
 
 
-@app.command()
 @_guarded
-def design(
-    spec: SpecArg = None,
-    json_out: JsonOpt = False,
-    output: Annotated[Path | None, typer.Option("-o", "--output",
-                                                help="Write the design as a spec file.")] = None,
-    xlsx: Annotated[Path | None, typer.Option("--xlsx", help="Write an Excel design sheet.")]
-    = None,
-    force: ForceOpt = False,
-    plots: PlotsOpt = None,
-) -> None:
+def design(*, spec, json_out, output, xlsx, force, plots) -> None:
     """Find the best design for the spec's requirements (default: bundled hamabe-design)."""
     from .optimize.design import design as run
 
@@ -193,10 +157,10 @@ def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = Non
         with overwrite_policy(force or replace_xlsx):
             write_workbook(res, xlsx)
     drawn = [] if plots is None else write_plots(res, plots, stem=spec.stem, overwrite=force)
-    typer.echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res))
+    _echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res))
     for path in (output, xlsx, *drawn):
         if path is not None:
-            typer.echo(f"wrote {Path(path).absolute()}", err=json_out)
+            _echo(f"wrote {Path(path).absolute()}", err=json_out)
     _exit_on_failed_checks(res, json_out)
 
 
@@ -205,8 +169,8 @@ def _exit_on_failed_checks(res, json_out: bool) -> None:
     failed = [c.name for c in res.checks if not c.passed]
     if failed:
         if not json_out:
-            typer.echo(f"{len(failed)} of {len(res.checks)} checks failed: {'; '.join(failed)}",
-                       err=True)
+            _echo(f"{len(failed)} of {len(res.checks)} checks failed: {'; '.join(failed)}",
+                  err=True)
         raise _ChecksFailed
 
 
@@ -224,59 +188,12 @@ def _q(text: str | None, dimension: str, option: str, positive: bool = True):
     return value
 
 
-@app.command()
 @_guarded
-def spring(
-    force: Annotated[str, typer.Option(help="Largest working force, e.g. '606 kgf'.")],
-    stiffness: Annotated[str, typer.Option(help="Stiffness, e.g. '59.7 kgf/cm'.")],
-    allowable_stress: Annotated[str | None, typer.Option(
-        help="Allowable shear stress k_s (required without --material; overrides its rule).")]
-    = None,
-    shear_modulus: Annotated[str | None, typer.Option(
-        help="Shear modulus G (required without --material).")] = None,
-    density: Annotated[str | None, typer.Option(help="Wire density (default: the grade's, or "
-                                                     "7850 kg/m^3).")] = None,
-    correction: Annotated[str | None, typer.Option(
-        help="Stress correction: 'wahl', 'bergstrasser' or 'none' (default: 'wahl'; with "
-             "--material the rules' choice).")] = None,
-    material: Annotated[str | None, typer.Option(
-        help="Wire grade, e.g. 'EN10270-1 DH' (govopt/data/spring_materials.toml): allowables "
-             "per wire diameter and the spring maker's checks.")] = None,
-    tensile_strength: Annotated[str | None, typer.Option(
-        help="R_m of --material custom.")] = None,
-    kind: Annotated[str, typer.Option(help="Spring type: 'compression' or 'extension'.")]
-    = "compression",
-    rules: Annotated[str, typer.Option(help="Allowables and fatigue: 'EN13906' or 'Shigley'.")]
-    = "EN13906",
-    index_min: Annotated[float, typer.Option(
-        help="Least spring index D/d (EN 13906-1 scope and Shigley's preferred range: "
-             "4).")] = 4.0,
-    index_max: Annotated[float, typer.Option(
-        help="Largest spring index D/d (Shigley's preferred range: 12; EN 13906-1 allows "
-             "20).")] = 12.0,
-    turns_min: Annotated[float, typer.Option(
-        help="Least active turns (3: fewer coil poorly and load unevenly).")] = 3.0,
-    turns_max: Annotated[float | None, typer.Option(help="Most active turns.")] = None,
-    min_force: Annotated[str | None, typer.Option(
-        help="Least working force (extension: the initial tension stays below it).")] = None,
-    fatigue_min_force: Annotated[str | None, typer.Option(
-        help="Least force of the fatigue load cycle (with --fatigue-max-force).")] = None,
-    fatigue_max_force: Annotated[str | None, typer.Option(
-        help="Largest force of the fatigue load cycle.")] = None,
-    min_fatigue_safety: Annotated[float, typer.Option(help="Required fatigue safety.")] = 1.0,
-    life: Annotated[float, typer.Option(help="Required life, cycles.")] = 1e7,
-    peened: Annotated[bool, typer.Option(help="Shot-peened wire (fatigue).")] = False,
-    ends: Annotated[str, typer.Option(help="Compression spring ends (EN 13906-1).")]
-    = "closed_ground",
-    seating: Annotated[str, typer.Option(help="Compression spring seating for buckling.")]
-    = "fixed-fixed",
-    max_outer_diameter: Annotated[str | None, typer.Option(help="Envelope, e.g. '10 cm'.")]
-    = None,
-    max_body_length: Annotated[str | None, typer.Option(help="Close-wound body length limit.")]
-    = None,
-    min_surge_frequency: Annotated[str | None, typer.Option(help="e.g. '40 Hz'.")] = None,
-    json_out: JsonOpt = False,
-) -> None:
+def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correction, material,
+           tensile_strength, kind, rules, index_min, index_max, turns_min, turns_max,
+           min_force, fatigue_min_force, fatigue_max_force, min_fatigue_safety, life, peened,
+           ends, seating, max_outer_diameter, max_body_length, min_surge_frequency,
+           json_out) -> None:
     """Least-mass helical spring for a force and stiffness (an exact GP, certified global);
     with --material the wire grade's allowables per diameter and the spring maker's checks
     (spring type, index and turn limits, fatigue load cycle)."""
@@ -342,126 +259,58 @@ def spring(
     if json_out:
         from .jsonable import jsonable
 
-        typer.echo(json.dumps(jsonable(out), indent=2))
+        _echo(json.dumps(jsonable(out), indent=2))
     else:
         _print_spring(sol, out, sizing, material, kind)
     failed = [c.name for c in sizing.checks if not c.passed] if material is not None else []
     if failed:  # as evaluate: the spring is reported, and exit code 1 says a check failed
-        typer.echo(f"{len(failed)} of {len(sizing.checks)} checks failed: "
-                   f"{', '.join(failed)}", err=True)
-        raise typer.Exit(code=1)
+        _echo(f"{len(failed)} of {len(sizing.checks)} checks failed: {', '.join(failed)}",
+              err=True)
+        raise SystemExit(1)
 
 
 def _print_spring(sol, out, sizing, material, kind) -> None:
     """The text report of `govopt spring`."""
-    typer.echo(f"d = {sol.d * 1e3:.4f} mm, r = {sol.r * 1e3:.4f} mm, n = {sol.n:.4f}, "
-               f"mass = {sol.mass:.5g} kg, stress = {sol.stress / 1e6:.2f} MPa "
-               f"(index {sol.index:.2f}, Wahl K {sol.wahl_factor:.4f})")
-    typer.echo(f"global optimum certified: {out['global_optimum']} (duality gap in log space "
-               f"{out['duality_gap_log']:.2g}); active: {', '.join(sol.active)}")
+    _echo(f"d = {sol.d * 1e3:.4f} mm, r = {sol.r * 1e3:.4f} mm, n = {sol.n:.4f}, "
+          f"mass = {sol.mass:.5g} kg, stress = {sol.stress / 1e6:.2f} MPa "
+          f"(index {sol.index:.2f}, Wahl K {sol.wahl_factor:.4f})")
+    _echo(f"global optimum certified: {out['global_optimum']} (duality gap in log space "
+          f"{out['duality_gap_log']:.2g}); active: {', '.join(sol.active)}")
     for name, value in sol.sensitivities.items():
         if abs(value) > 1e-6:
-            typer.echo(f"  +1 % on {name} -> {value:+.3f} % mass")
+            _echo(f"  +1 % on {name} -> {value:+.3f} % mass")
     if material is not None:
         extra = (f"free length {sizing.free_length * 1e3:.2f} mm (coils clear at the force)"
                  if kind == "compression" else
                  f"initial tension {sizing.initial_tension:.4g} N")
-        typer.echo(f"{kind} spring of {material}: {extra}; checks (value, limit, margin, "
-                   "source):")
+        _echo(f"{kind} spring of {material}: {extra}; checks (value, limit, margin, source):")
         for c in sizing.checks:
-            typer.echo(f"  {c.name}: {c.value:.6g} {c.sense} {c.limit:.6g} {c.unit}, margin "
-                       f"{100 * c.margin:+.2f} % {'PASS' if c.passed else 'FAIL'} - {c.source}")
+            _echo(f"  {c.name}: {c.value:.6g} {c.sense} {c.limit:.6g} {c.unit}, margin "
+                  f"{100 * c.margin:+.2f} % {'PASS' if c.passed else 'FAIL'} - {c.source}")
         for note in sizing.notes:
-            typer.echo(f"  note: {note}")
+            _echo(f"  note: {note}")
 
 
-@app.command()
 @_guarded
-def bench(
-    quick: Annotated[bool, typer.Option(
-        help="A smaller suite and fewer repeats (under a minute).")] = False,
-    out: Annotated[Path | None, typer.Option(
-        "--out", help="Folder for speed-vs-error.md, .csv and .png (replaced).",
-        show_default=False)] = None,
-    targets: Annotated[bool, typer.Option(
-        "--targets/--no-targets", help="Also measure the speed targets (issue 14).")] = True,
-) -> None:
+def bench(*, quick, out, targets) -> None:
     """Speed against error of every analysis (one point per method and setting, errors
     against high-precision references) and the speed targets beside what was measured."""
     from .report import bench as b
 
     def log(message: str) -> None:
-        typer.echo(f"  {message}", err=True)
+        _echo(f"  {message}", err=True)
 
     rows = b.targets(quick, log=log) if targets else None
     points = b.speed_vs_error(quick, log=log)
-    typer.echo(b.summary(points, rows))
+    _echo(b.summary(points, rows))
     if out is not None:
         for path in b.write_report(points, out, rows):
-            typer.echo(f"wrote {path}")
+            _echo(f"wrote {path}")
 
 
-class _StudyGroup(typer.core.TyperGroup):
-    """``govopt study SPEC ...`` runs a study (``govopt study run SPEC ...``); ``export`` and
-    ``show`` are the other commands."""
-
-    def parse_args(self, ctx, args):
-        if args and args[0] not in self.commands and args[0] not in ("--help", "-h"):
-            args = ["run", *args]
-        return super().parse_args(ctx, args)
-
-
-study_app = typer.Typer(cls=_StudyGroup, no_args_is_help=True, add_completion=False,
-                        help="Batch trade studies: sweep a spec's inputs, one row per point in "
-                             "an SQLite database; export, plot and summarise it.")
-app.add_typer(study_app, name="study")
-
-
-@study_app.command("run")
 @_guarded
-def study_run(
-    spec: Annotated[Path, typer.Argument(help="Spec file; its [study] table, if any, is the "
-                                              "study's default.", show_default=False)],
-    sweep: Annotated[list[str] | None, typer.Option(
-        "--sweep", help="KEY=START:STOP:NUM (with units: 'design.pendulum_weight=6 kgf:12 kgf:4') "
-                        "or KEY=v1,v2,...; repeat for more keys.")] = None,
-    grid: Annotated[bool, typer.Option("--grid", help="Every combination (default).")] = False,
-    zip_: Annotated[bool, typer.Option("--zip", help="The sweeps' values taken in step.")]
-    = False,
-    lhs: Annotated[int | None, typer.Option("--lhs", help="N Latin-hypercube samples.")] = None,
-    sobol: Annotated[int | None, typer.Option("--sobol", help="N scrambled Sobol' samples.")]
-    = None,
-    seed: Annotated[int | None, typer.Option(help="Seed of the samplers.")] = None,
-    mode: Annotated[str | None, typer.Option(
-        help="'evaluate' the spec's design at each point, or 'design' one (default: evaluate "
-             "if the spec has a [design]).")] = None,
-    tolerance: Annotated[list[str] | None, typer.Option(
-        "--tolerance", help="KEY=±X% (or '±X unit', 'uniform ±X%'; grade=1|2|3 for EN 15800): "
-                            "sample manufacturing scatter around the spec's design.")] = None,
-    samples: Annotated[int | None, typer.Option(help="Samples of a tolerance study (1000).")]
-    = None,
-    pareto: Annotated[str | None, typer.Option(
-        help="Two or three objectives for a Pareto front, e.g. 'moving_mass,settling_time' "
-             "(or column names; 'max:' to maximise).")] = None,
-    skip: Annotated[str | None, typer.Option(
-        help="Analyses to leave out in evaluate mode: dynamics, vibration, classic.")] = None,
-    db: Annotated[Path | None, typer.Option(
-        help="The study's SQLite database (default: <spec>.study.db here).")] = None,
-    out: Annotated[Path | None, typer.Option(
-        "--out", help="Export the table: .csv, .parquet or .xlsx.")] = None,
-    workers: Annotated[int, typer.Option(help="Processes (a pool; Dask workers).")] = 1,
-    dask: Annotated[str | None, typer.Option(
-        help="'local' (a LocalCluster of --workers processes) or a scheduler tcp://HOST:PORT.")]
-    = None,
-    resume: Annotated[bool, typer.Option(help="Skip the points already in --db.")] = False,
-    plot: Annotated[Path | None, typer.Option(
-        "--plot", "--plots", help="Write the study's plots (PNG and SVG) into this folder.")]
-    = None,
-    chunk: Annotated[int | None, typer.Option(
-        help="Points per chunk and database transaction (default 1024 evaluate, 1 design).")]
-    = None,
-    force: ForceOpt = False,
-) -> None:
+def study_run(*, spec, sweep, grid, zip_, lhs, sobol, seed, mode, tolerance, samples, pareto,
+              skip, db, out, workers, dask, resume, plot, chunk, force) -> None:
     """Run a trade study: the spec at every point of the sweeps (or tolerance samples)."""
     from .report.files import check_output
     from .study import load_study, run_study
@@ -492,23 +341,23 @@ def study_run(
             bar.close()
     _study_outputs(db, out, plot, force)
     if report.interrupted:
-        typer.echo(f"interrupted: {report.skipped + report.done} of {report.total} points are "
-                   f"in {db}; run again with --resume to finish", err=True)
-        raise typer.Exit(code=130)
+        _echo(f"interrupted: {report.skipped + report.done} of {report.total} points are "
+              f"in {db}; run again with --resume to finish", err=True)
+        raise SystemExit(130)
 
 
 def _study_outputs(db: Path, out: Path | None, plot: Path | None, force: bool) -> None:
     from .study import Store, export, summary_text
 
     with Store(db, create=False) as store:
-        typer.echo(summary_text(store))
+        _echo(summary_text(store))
         if out is not None:
-            typer.echo(f"wrote {export(store, out, overwrite=force)}")
+            _echo(f"wrote {export(store, out, overwrite=force)}")
         if plot is not None:
             from .report.study_plots import plot_study
 
             for path in plot_study(store, plot, overwrite=force):
-                typer.echo(f"wrote {path}")
+                _echo(f"wrote {path}")
 
 
 def _progress_bar():
@@ -546,43 +395,31 @@ def _progress_bar():
     return Bar()
 
 
-@study_app.command("export")
 @_guarded
-def study_export(
-    db: Annotated[Path, typer.Argument(help="The study's database.", show_default=False)],
-    out: Annotated[Path, typer.Option("--out", help="A .csv, .parquet or .xlsx file.",
-                                      show_default=False)],
-    plot: Annotated[Path | None, typer.Option(
-        "--plot", "--plots", help="Also write the plots into this folder.")] = None,
-    force: ForceOpt = False,
-) -> None:
+def study_export(*, db, out, plot, force) -> None:
     """Export a study's table from its database (CSV, Parquet or xlsx)."""
     from .report.files import check_output
     from .study import Store, export
 
     check_output(out, overwrite=force, inputs=[db], what="study table")
     with Store(db, create=False) as store:
-        typer.echo(f"wrote {export(store, out, overwrite=force)}")
+        _echo(f"wrote {export(store, out, overwrite=force)}")
         if plot is not None:
             from .report.study_plots import plot_study
 
             for path in plot_study(store, plot, overwrite=force):
-                typer.echo(f"wrote {path}")
+                _echo(f"wrote {path}")
 
 
-@study_app.command("show")
 @_guarded
-def study_show(
-    db: Annotated[Path, typer.Argument(help="The study's database.", show_default=False)],
-) -> None:
+def study_show(*, db) -> None:
     """Summarise a study: progress, status counts, best point, Pareto front, tolerances."""
     from .study import Store, summary_text
 
     with Store(db, create=False) as store:
-        typer.echo(summary_text(store))
+        _echo(summary_text(store))
 
 
-@app.command("examples")
 @_guarded
 def examples_command() -> None:
     """List the bundled example specs.
@@ -593,19 +430,11 @@ def examples_command() -> None:
     found = examples()
     width = max(map(len, found))
     for name, path in found.items():
-        typer.echo(f"{name:<{width}}  {description(path)}")
+        _echo(f"{name:<{width}}  {description(path)}")
 
 
-@app.command("init")
 @_guarded
-def init_command(
-    name: Annotated[str, typer.Argument(help="A bundled example (see `govopt examples`).",
-                                        show_default=False)],
-    output: Annotated[Path | None, typer.Option(
-        "-o", "--output", help="Where to write it (default: NAME.toml here).",
-        show_default=False)] = None,
-    force: ForceOpt = False,
-) -> None:
+def init_command(*, name, output, force) -> None:
     """Copy a bundled example spec here, to start from.
 
     E.g. `govopt init hamabe-a` writes hamabe-a.toml in the current folder."""
@@ -622,8 +451,247 @@ def init_command(
     data = source.read_bytes()
     atomic_write(target, lambda tmp: tmp.write_bytes(data), overwrite=force, what="spec")
     command = "evaluate" if "design" in tomllib.loads(data.decode("utf-8")) else "design"
-    typer.echo(f"wrote {target.absolute()} (the bundled {source.stem}); edit it, then: "
-               f"govopt {command} {target}")
+    _echo(f"wrote {target.absolute()} (the bundled {source.stem}); edit it, then: "
+          f"govopt {command} {target}")
+
+
+# ------------------------------------------------------------------------------------------
+# the parser
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with govopt's conventions: a bad command line is one line ``error: ...`` and
+    exit code 2 (as every user's error), and an option's value is the next word whatever it
+    starts with (``--min-force -1e3N`` is a value, as click read it, not an unknown option);
+    no abbreviated options (``--geo`` is not ``--geometry``)."""
+
+    def __init__(self, *args, allow_abbrev: bool = False, **kw):
+        super().__init__(*args, allow_abbrev=allow_abbrev, **kw)
+
+    def error(self, message: str) -> None:
+        _fail(f"{message} (see '{self.prog} --help')")
+
+    def parse_known_args(self, args=None, namespace=None):
+        takes = {s for a in self._actions if a.nargs is None for s in a.option_strings}
+        words, out = list(sys.argv[1:] if args is None else args), []
+        while words:
+            word = words.pop(0)
+            if word == "--":
+                out += [word, *words]
+                break
+            glued = word in takes and words and words[0].startswith("-")
+            out.append(f"{word}={words.pop(0)}" if glued else word)
+        return super().parse_known_args(out, namespace)
+
+
+#: the metavar of each option's type, as `govopt X --help` shows it (`--xlsx <path>`)
+_METAVAR = {str: "<str>", Path: "<path>", int: "<int>", float: "<float>"}
+_FORCE_HELP = "Replace output files that exist (regular files only, never the spec)."
+_JSON_HELP = "Print a JSON object in SI units."
+
+
+def _option(p, *names, help: str, type=str, default=None, **kw) -> None:  # noqa: A002
+    """An option that takes a value; its default, if any, is shown after its help."""
+    help = help.replace("%", "%%") + ("" if default is None else " (default: %(default)s)")
+    help += " (required)" if kw.get("required") else ""
+    p.add_argument(*names, type=type, default=default, metavar=_METAVAR[type], help=help, **kw)
+
+
+def _flag(p, *names, help: str, switch: bool | None = None, **kw) -> None:  # noqa: A002
+    """A flag (``--json``); with ``switch`` its ``--no-`` twin too, ``switch`` the default."""
+    if switch is None:
+        p.add_argument(*names, action="store_true", help=help, **kw)
+    else:
+        default = names[0] if switch else "--no-" + names[0][2:]
+        p.add_argument(*names, action=argparse.BooleanOptionalAction, default=switch,
+                       help=f"{help} (default: {default})", **kw)
+
+
+def _command(group, name: str, run, short: str) -> _Parser:
+    """A (sub)command ``name`` running ``run``: ``short`` in its group's list, the function's
+    docstring atop its own help."""
+    p = group.add_parser(name, help=short, description=" ".join(run.__doc__.split()))
+    p.set_defaults(_run=run)
+    return p
+
+
+def _spec_outputs(p, output: bool) -> None:
+    """The spec argument and the outputs of `evaluate` (``output``: `design`'s ``-o``)."""
+    p.add_argument("spec", nargs="?", type=Path, metavar="spec",
+                   help="Spec file (TOML with units).")
+    if not output:
+        _option(p, "--geometry", help="Linkage geometry: 'exact' (default) or 'series' (the "
+                                      "paper's eq. 3).")
+    _flag(p, "--json", dest="json_out", help=_JSON_HELP)
+    if output:
+        _option(p, "-o", "--output", type=Path, help="Write the design as a spec file.")
+    _option(p, "--xlsx", type=Path, help="Write an Excel design sheet.")
+    _flag(p, "--force", help=_FORCE_HELP)
+    _option(p, "--plots", type=Path, help="Write the plots (PNG and SVG) into this folder.")
+
+
+def _study_parser(group) -> None:
+    """`govopt study run|export|show`."""
+    study = group.add_parser(
+        "study", help="Batch trade studies: sweep a spec's inputs, one row per point in an "
+                      "SQLite database; export, plot and summarise it.",
+        description="Batch trade studies: sweep a spec's inputs, one row per point in an "
+                    "SQLite database; export, plot and summarise it. `govopt study SPEC ...` "
+                    "is `govopt study run SPEC ...`.")
+    sub = study.add_subparsers(dest="_study", metavar="COMMAND", title="commands")
+    study.set_defaults(_help=study)
+    p = _command(sub, "run", study_run, "Run a trade study: the spec at every point of the "
+                                        "sweeps (or tolerance samples).")
+    p.add_argument("spec", type=Path, metavar="spec",
+                   help="Spec file; its [study] table, if any, is the study's default.")
+    _option(p, "--sweep", action="append",
+            help="KEY=START:STOP:NUM (with units: 'design.pendulum_weight=6 kgf:12 kgf:4') or "
+                 "KEY=v1,v2,...; repeat for more keys.")
+    _flag(p, "--grid", help="Every combination (default).")
+    _flag(p, "--zip", dest="zip_", help="The sweeps' values taken in step.")
+    _option(p, "--lhs", type=int, help="N Latin-hypercube samples.")
+    _option(p, "--sobol", type=int, help="N scrambled Sobol' samples.")
+    _option(p, "--seed", type=int, help="Seed of the samplers.")
+    _option(p, "--mode", help="'evaluate' the spec's design at each point, or 'design' one "
+                              "(default: evaluate if the spec has a [design]).")
+    _option(p, "--tolerance", action="append",
+            help="KEY=±X% (or '±X unit', 'uniform ±X%'; grade=1|2|3 for EN 15800): sample "
+                 "manufacturing scatter around the spec's design.")
+    _option(p, "--samples", type=int, help="Samples of a tolerance study (1000).")
+    _option(p, "--pareto", help="Two or three objectives for a Pareto front, e.g. "
+                                "'moving_mass,settling_time' (or column names; 'max:' to "
+                                "maximise).")
+    _option(p, "--skip", help="Analyses to leave out in evaluate mode: dynamics, vibration, "
+                              "classic.")
+    _option(p, "--db", type=Path,
+            help="The study's SQLite database (default: <spec>.study.db here).")
+    _option(p, "--out", type=Path, help="Export the table: .csv, .parquet or .xlsx.")
+    _option(p, "--workers", type=int, default=1, help="Processes (a pool; Dask workers).")
+    _option(p, "--dask", help="'local' (a LocalCluster of --workers processes) or a scheduler "
+                              "tcp://HOST:PORT.")
+    _flag(p, "--resume", switch=False, help="Skip the points already in --db.")
+    _option(p, "--plot", "--plots", type=Path,
+            help="Write the study's plots (PNG and SVG) into this folder.")
+    _option(p, "--chunk", type=int, help="Points per chunk and database transaction (default "
+                                         "1024 evaluate, 1 design).")
+    _flag(p, "--force", help=_FORCE_HELP)
+    p = _command(sub, "export", study_export,
+                 "Export a study's table from its database (CSV, Parquet or xlsx).")
+    p.add_argument("db", type=Path, metavar="db", help="The study's database.")
+    _option(p, "--out", type=Path, required=True, help="A .csv, .parquet or .xlsx file.")
+    _option(p, "--plot", "--plots", type=Path, help="Also write the plots into this folder.")
+    _flag(p, "--force", help=_FORCE_HELP)
+    p = _command(sub, "show", study_show, "Summarise a study: progress, status counts, best "
+                                          "point, Pareto front, tolerances.")
+    p.add_argument("db", type=Path, metavar="db", help="The study's database.")
+
+
+def _spring_parser(group) -> None:
+    p = _command(group, "spring", spring, "Least-mass helical spring for a force and stiffness "
+                                          "(an exact GP, certified global).")
+    _option(p, "--force", required=True, help="Largest working force, e.g. '606 kgf'.")
+    _option(p, "--stiffness", required=True, help="Stiffness, e.g. '59.7 kgf/cm'.")
+    _option(p, "--allowable-stress", help="Allowable shear stress k_s (required without "
+                                          "--material; overrides its rule).")
+    _option(p, "--shear-modulus", help="Shear modulus G (required without --material).")
+    _option(p, "--density", help="Wire density (default: the grade's, or 7850 kg/m^3).")
+    _option(p, "--correction", help="Stress correction: 'wahl', 'bergstrasser' or 'none' "
+                                    "(default: 'wahl'; with --material the rules' choice).")
+    _option(p, "--material", help="Wire grade, e.g. 'EN10270-1 DH' "
+                                  "(govopt/data/spring_materials.toml): allowables per wire "
+                                  "diameter and the spring maker's checks.")
+    _option(p, "--tensile-strength", help="R_m of --material custom.")
+    _option(p, "--kind", default="compression",
+            help="Spring type: 'compression' or 'extension'.")
+    _option(p, "--rules", default="EN13906", help="Allowables and fatigue: 'EN13906' or "
+                                                  "'Shigley'.")
+    _option(p, "--index-min", type=float, default=4.0,
+            help="Least spring index D/d (EN 13906-1 scope and Shigley's preferred range: 4).")
+    _option(p, "--index-max", type=float, default=12.0,
+            help="Largest spring index D/d (Shigley's preferred range: 12; EN 13906-1 allows "
+                 "20).")
+    _option(p, "--turns-min", type=float, default=3.0,
+            help="Least active turns (3: fewer coil poorly and load unevenly).")
+    _option(p, "--turns-max", type=float, help="Most active turns.")
+    _option(p, "--min-force", help="Least working force (extension: the initial tension stays "
+                                   "below it).")
+    _option(p, "--fatigue-min-force", help="Least force of the fatigue load cycle (with "
+                                           "--fatigue-max-force).")
+    _option(p, "--fatigue-max-force", help="Largest force of the fatigue load cycle.")
+    _option(p, "--min-fatigue-safety", type=float, default=1.0,
+            help="Required fatigue safety.")
+    _option(p, "--life", type=float, default=1e7, help="Required life, cycles.")
+    _flag(p, "--peened", switch=False, help="Shot-peened wire (fatigue).")
+    _option(p, "--ends", default="closed_ground", help="Compression spring ends (EN 13906-1).")
+    _option(p, "--seating", default="fixed-fixed",
+            help="Compression spring seating for buckling.")
+    _option(p, "--max-outer-diameter", help="Envelope, e.g. '10 cm'.")
+    _option(p, "--max-body-length", help="Close-wound body length limit.")
+    _option(p, "--min-surge-frequency", help="e.g. '40 Hz'.")
+    _flag(p, "--json", dest="json_out", help=_JSON_HELP)
+
+
+@functools.cache
+def parser() -> _Parser:
+    """govopt's command line: its commands, their options and help."""
+    from . import __version__
+
+    root = _Parser(prog="govopt",
+                   description="Design and evaluate governor springs (Hamabe's shaft governor).")
+    root.add_argument("--debug", action="store_true", dest="_debug",
+                      help="Show the traceback of an unexpected error, and warnings as they "
+                           "come. [env var: GOVOPT_DEBUG]")
+    root.add_argument("--version", action="version", version=f"govopt {__version__}",
+                      help="Print govopt's version and exit.")
+    group = root.add_subparsers(dest="_command", metavar="COMMAND", title="commands")
+    root.set_defaults(_help=root)
+    _spec_outputs(_command(group, "evaluate", evaluate, "Evaluate the spec's design (default: "
+                                                        "the bundled Hamabe case a)."),
+                  output=False)
+    p = _command(group, "design", design, "Find the best design for the spec's requirements "
+                                          "(default: bundled hamabe-design).")
+    _spec_outputs(p, output=True)
+    _spring_parser(group)
+    p = _command(group, "bench", bench, "Speed against error of every analysis and the speed "
+                                        "targets beside what was measured.")
+    _flag(p, "--quick", switch=False, help="A smaller suite and fewer repeats (under a minute).")
+    _option(p, "--out", type=Path, help="Folder for speed-vs-error.md, .csv and .png "
+                                        "(replaced).")
+    _flag(p, "--targets", switch=True, help="Also measure the speed targets (issue 14).")
+    _command(group, "examples", examples_command, "List the bundled example specs.")
+    p = _command(group, "init", init_command, "Copy a bundled example spec here, to start "
+                                              "from.")
+    p.add_argument("name", metavar="name", help="A bundled example (see `govopt examples`).")
+    _option(p, "-o", "--output", type=Path, help="Where to write it (default: NAME.toml here).")
+    _flag(p, "--force", help=_FORCE_HELP)
+    _study_parser(group)
+    return root
+
+
+def _debug_env() -> bool:
+    """GOVOPT_DEBUG as a flag (as click read it: 1/true/yes/on, 0/false/no/off or empty)."""
+    value = os.environ.get("GOVOPT_DEBUG", "").strip().lower()
+    if value in ("", "0", "false", "f", "no", "n", "off"):
+        return False
+    if value in ("1", "true", "t", "yes", "y", "on"):
+        return True
+    _fail(f"GOVOPT_DEBUG: expected 1 or 0 (true/false, yes/no, on/off), got {value!r}")
+
+
+def _run(argv: list[str]) -> None:
+    """Parse ``argv`` and run its command (`govopt study SPEC` is `govopt study run SPEC`)."""
+    global _DEBUG
+    _DEBUG = False
+    at = next((i for i, a in enumerate(argv) if not a.startswith("-")), len(argv))
+    if argv[at:at + 1] == ["study"] and argv[at + 1:at + 2] not in (
+            [], ["run"], ["export"], ["show"], ["-h"], ["--help"]):
+        argv = [*argv[:at + 1], "run", *argv[at + 1:]]
+    args = vars(parser().parse_args(argv))
+    _DEBUG = args["_debug"] or _debug_env()
+    if "_run" not in args:  # no command: the help, and exit code 2 (nothing was run)
+        args["_help"].print_help()
+        raise SystemExit(2)
+    args.pop("_run")(**{k: v for k, v in args.items() if not k.startswith("_")})
 
 
 def _on_sigterm(signum, frame) -> None:
@@ -633,19 +701,26 @@ def _on_sigterm(signum, frame) -> None:
     raise SystemExit(128 + signum)
 
 
-def main() -> None:
-    """Console-script entry point: never a traceback unless ``--debug``."""
+def main(argv: list[str] | None = None) -> None:
+    """Console-script entry point (``argv``: the words after ``govopt``, default
+    ``sys.argv[1:]``): never a traceback unless ``--debug``. Run as the console script it owns
+    the process's SIGTERM; called with ``argv`` (tests, embedding) it leaves it alone."""
     # One BLAS thread unless told otherwise (before numpy loads): govopt's matrices are small,
     # and OpenBLAS's pool costs ~0.05 s of CPU to start and spins idle after each call (issue
     # 14: a third of `govopt evaluate`'s CPU); studies run processes in parallel anyway.
     os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
-    signal.signal(signal.SIGTERM, _on_sigterm)
+    if argv is None:
+        signal.signal(signal.SIGTERM, _on_sigterm)
+    argv = sys.argv[1:] if argv is None else [str(a) for a in argv]
     try:
-        app()
+        _run(argv)
     except KeyboardInterrupt:
         sys.exit(130)
+    except BrokenPipeError:  # `govopt evaluate | head`: quiet, stdout is gone
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        sys.exit(1)
     except Exception as exc:  # outside a command (the commands are _guarded)
-        if _DEBUG or "--debug" in sys.argv[1:] or os.environ.get("GOVOPT_DEBUG"):
+        if _DEBUG or "--debug" in argv:
             raise
         _internal(exc)
         sys.exit(3)
