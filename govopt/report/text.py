@@ -45,24 +45,80 @@ def _num(value, fmt: str = ".5g") -> str:
     return str(v)
 
 
+def _plain(text: str) -> bool:
+    """Whether rich would print ``text`` unchanged: printable but for line breaks (rich drops
+    control codes and expands tabs)."""
+    return text.replace("\n", "").isprintable()
+
+
+def plain_table(headers, rows, *, right=(), show_header=True, width=400) -> list[str] | None:
+    r"""The lines rich prints for :meth:`_Report.table` without colour (the ASCII box: a rule of
+    dashes under the header only, no edge, one space of padding each side of a column but at
+    the edges, a space between columns), trailing spaces stripped; None where rich could print
+    otherwise: a cell not printable ASCII (rich measures wide and zero-width characters, drops
+    control codes, expands tabs), no rows at all, or a table wider than ``width`` (rich wraps
+    the last column).
+
+    >>> plain_table(["n", "x\n(mm)"], [["a", "1.5"], ["bb", ""]], right=(1,))
+    ['n       x', '     (mm)', '---------', 'a     1.5', 'bb']
+    """
+    rows = [headers, *rows] if show_header else list(rows)
+    if not headers or not rows or not all(c.isascii() and _plain(c) for r in rows for c in r):
+        return None
+    cells = [[c.split("\n") for c in r] for r in rows]
+    sizes = [max(len(x) for r in cells for x in r[j]) for j in range(len(headers))]
+    total = max(sum(sizes) + 3 * (len(sizes) - 1), 1)  # rich: a column at least 1 wide
+    if total > width:
+        return None
+    if len(sizes) > 1:  # rich renders no line of a cell with no room inside its padding
+        cells = [[c if size else [] for c, size in zip(r, sizes, strict=True)] for r in cells]
+    lines = []
+    for i, row in enumerate(cells):
+        height = max(1, *map(len, row))
+        if i == 0 and show_header:  # rich aligns the header's cells at the bottom, others top
+            row = [[""] * (height - len(c)) + c for c in row]
+        for k in range(height):
+            words = [c[k] if k < len(c) else "" for c in row]
+            lines.append("   ".join(w.rstrip().rjust(size) if j in right else w.ljust(size)
+                                    for j, (w, size) in enumerate(zip(words, sizes, strict=True)))
+                         .rstrip())
+        if i == 0 and show_header:
+            lines.append("-" * total)
+    return lines
+
+
 class _Report:
-    """Collects the report through a rich console: coloured on a terminal, plain when not."""
+    """Collects the report: coloured on a terminal (rich, imported then), plain text when not
+    (:func:`plain_table`, the same text as rich's without colour; rich where it could differ).
+    ``plain``: None for not ``colour``; False renders through rich without colour."""
 
-    def __init__(self, colour: bool):
-        from rich import box
-        from rich.console import Console
-
+    def __init__(self, colour: bool, plain: bool | None = None):
         self.colour = colour
-        width = shutil.get_terminal_size((120, 24)).columns if colour else 400
+        self.plain = not colour if plain is None else plain
         self.buf = io.StringIO()
-        self.console = Console(file=self.buf, force_terminal=colour, no_color=not colour,
-                               color_system="standard" if colour else None, width=width,
-                               markup=False, highlight=False, emoji=False)
-        # a rule under the header only: Unicode on a terminal, ASCII when piped
-        self.box = box.SIMPLE_HEAD if colour else box.Box(
-            "    \n    \n -- \n    \n    \n    \n    \n    \n", ascii=True)
+        self._console = None
+
+    @property
+    def console(self):
+        """A rich console writing to the report, made on first use."""
+        if self._console is None:
+            from rich import box
+            from rich.console import Console
+
+            colour = self.colour
+            width = shutil.get_terminal_size((120, 24)).columns if colour else 400
+            self._console = Console(file=self.buf, force_terminal=colour, no_color=not colour,
+                                    color_system="standard" if colour else None, width=width,
+                                    markup=False, highlight=False, emoji=False)
+            # a rule under the header only: Unicode on a terminal, ASCII when piped
+            self.box = box.SIMPLE_HEAD if colour else box.Box(
+                "    \n    \n -- \n    \n    \n    \n    \n    \n", ascii=True)
+        return self._console
 
     def line(self, text: str = "", style: str | None = None) -> None:
+        if self.plain and _plain(text):
+            self.buf.write(text + "\n")
+            return
         self.console.print(text, style=style if self.colour else None, soft_wrap=True)
 
     def title(self, text: str) -> None:
@@ -72,9 +128,15 @@ class _Report:
     def table(self, headers, rows, *, right=(), show_header=True, styles=None) -> None:
         """``rows`` of strings; ``right``: indices of right-justified columns; ``styles``: a
         style per row (or None)."""
+        lines = plain_table(list(headers), [list(r) for r in rows], right=right,
+                            show_header=show_header) if self.plain else None
+        if lines is not None:
+            self.buf.write("".join(f"{x}\n" for x in lines))
+            return
         from rich.table import Table
         from rich.text import Text
 
+        console = self.console
         t = Table(box=self.box, show_header=show_header, show_edge=False, pad_edge=False,
                   padding=(0, 1), header_style="bold" if self.colour else "")
         for j, h in enumerate(headers):
@@ -83,7 +145,7 @@ class _Report:
         for i, r in enumerate(rows):
             style = (styles[i] if styles else None) if self.colour else None
             t.add_row(*(Text(c) for c in r), style=style)
-        self.console.print(t)
+        console.print(t)
 
     def section(self, table: sec.Table) -> None:
         """A declared table (:mod:`govopt.report.sections`); series are left to the sheets."""
