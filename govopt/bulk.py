@@ -494,7 +494,9 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
         checks.add(gov.spring_loaded_check, F.min(axis=1), 0.0, ">=",
                    scale=np.where(top != 0, top, 1.0))
     checks.add("k^2 > 0 (stability)", k2.min(axis=1), margin * w0sq, ">=", scale=w0sq)
-    checks.add("k^2 < omega0^2 (no resonance)", k2.max(axis=1), (1.0 - margin) * w0sq, "<=")
+    if gov.resonance_ceiling:
+        checks.add("k^2 < omega0^2 (no resonance)", k2.max(axis=1), (1.0 - margin) * w0sq,
+                   "<=")
     dashpot = cols["dashpot"]
     has_dashpot = np.isfinite(dashpot)
     if dynamics and spec.engine is not None and spec.load_changes:
@@ -628,6 +630,12 @@ def _requirement_checks(spec, req, cols, l0, out, checks, helical):
         ("active turns >= min", nt, req.active_turns[0], ">="),
         ("active turns <= max", nt, req.active_turns[1], "<="),
     ]
+    if spec.material.grade is None:  # evaluation.requirement_checks' geometric rows
+        from .analysis import spring_engineering
+
+        rows += [(k, *v) for k, v in spring_engineering.geometry_rows(
+            spec, d, 2.0 * r, nt, out["stiffness_N_per_m"], l0, out["min_spring_force_N"],
+            out["max_spring_force_N"]).items()]
     if req.max_outer_diameter is not None:
         rows.append(("outer diameter", 2.0 * r + d, req.max_outer_diameter, "<="))
     if req.min_surge_frequency is not None:

@@ -494,3 +494,118 @@ def test_spec_errors_name_the_key():
 @pytest.mark.parametrize("module", [leaf, tc, tl])
 def test_doctests(module):
     assert doctest.testmod(module, raise_on_error=False).failed == 0
+
+
+# -- designs an engineer would believe (H6) -----------------------------------------------------
+
+
+def _design(name, **governor):
+    from dataclasses import replace
+
+    from govopt import load_spec
+    from govopt.optimize.design import design
+
+    spec = load_spec(SPECS / name)
+    if governor:
+        data = tomllib.loads((SPECS / name).read_text(encoding="utf-8"))
+        reader = _Reader(name, {**data["governor"], **governor}, "governor", [])
+        spec = replace(spec, governor=governor_class(reader.raw("type", True)).parse(reader))
+    return spec, design(spec)
+
+
+def test_leaf_design_has_a_buildable_set():
+    """The leaf's set l0 is its unloaded bow, outward positive (Fig. 2; x = set + Delta). The
+    bundled design picked l0 = -19.36 mm: a leaf bent towards the spindle, whose weights rest at
+    r_h + l0 = 12.4 mm from the axis (three of them, on a 31.75 mm hinge radius). Bounded to
+    0 .. L/5 by default, the design is the article's own kind: (almost) no set, and its range
+    is then fixed by L, Z and r_h alone (test_leaf_speed_ratio_depends_on_length_only)."""
+    spec, res = _design("traction-leaf-design.toml")
+    gov, l0 = spec.governor, res.spring.l0
+    assert (gov.set_min, gov.set_max) == (0.0, pytest.approx(0.2 * 12 * INCH, rel=1e-15))
+    assert 0.0 <= l0 <= 0.01 * gov.leaf_length  # no set, as in the article's design (step 2)
+    checks = {c.name: c for c in res.checks}
+    assert checks["leaf set >= min"].passed and checks["leaf set >= min"].value == l0
+    # the weights rest at r_h + l0, outside the hinge radius
+    assert gov.hinge_radius + l0 >= gov.hinge_radius
+    # a spec whose governor has a stop states a reverse set; the old optimum comes back
+    spec2, res2 = _design("traction-leaf-design.toml", leaf_set_min="-1 in")
+    assert res2.spring.l0 < -0.01
+    assert res2.optimisation["objective"]["value_kg"] < res.optimisation["objective"]["value_kg"]
+
+
+def test_leaf_set_bounds_are_checked_on_a_given_design():
+    from govopt import evaluate, load_spec
+
+    spec = load_spec(SPECS / "traction-leaf-assembly.toml")
+    res = evaluate(spec)
+    row = {c.name: c for c in res.checks}["leaf set >= min"]
+    assert row.passed and row.value == res.spring.l0  # the article's assembly: ~no set
+    with pytest.raises(SpecError, match="leaf_set_max: expected at least leaf_set_min"):
+        parse_governor(tl.TractionLeafGovernor, n_weights=3, leaf_length="8 in",
+                       hinge_radius="1.25 in", chord_open="7.8 in", chord_closed="7.6 in",
+                       leaf_set_min="0.1 in", leaf_set_max="0 in")
+
+
+def _buckling_deflection(L0, D, G, E, nu):
+    """EN 13906-1 buckling deflection, written out again here (the library's is under test)."""
+    g = G / E
+    root = 1.0 - (1.0 - g) / (0.5 + g) * (math.pi * D / (nu * L0)) ** 2
+    return math.inf if root < 0 else L0 * 0.5 / (1.0 - g) * (1.0 - math.sqrt(root))
+
+
+def test_old_coil_design_buckles():
+    """The old optimum of traction-coil-design.toml: d = 3.55 mm, D = 56 mm, 19.5 active coils,
+    free length 612.65 mm compressed to 101.6 .. 95.25 mm. Both ends on flat collars (nu = 0.5),
+    G = 11.75e6 psi, E = 206 GPa: it buckles at s_K = 60 mm, a ninth of its 517 mm deflection
+    (it could not even be compressed into place)."""
+    from govopt import load_spec
+    from govopt.analysis import spring_engineering as se
+    from govopt.model import spring
+
+    spec = load_spec(SPECS / "traction-coil-design.toml")
+    d, r, n, L0 = 3.55e-3, 28e-3, 19.5, 0.61265
+    G = spec.material.shear_modulus
+    kappa = spring.stiffness(d, r, n, G)
+    rows = se.geometry_rows(spec, d, 2 * r, n, kappa, L0)
+    F1, F2 = se.static_range(spec, kappa, L0)
+    s_max = (F2 + 0.1 * (F2 - F1)) / kappa  # overtravel 10 % of the working stroke
+    sK = _buckling_deflection(L0, 2 * r, G, 206e9, 0.5)
+    assert sK == pytest.approx(0.0601, abs=5e-4)
+    value, limit, sense = rows["deflection / buckling deflection"]
+    assert float(value) == pytest.approx(s_max / sK, rel=1e-12) and float(value) > 8
+    assert not se.geometry_screen(spec, d, r, n, kappa, L0)
+
+
+def test_coil_design_is_buildable():
+    """traction-coil-design.toml's design now: the free length within a small multiple of the
+    installed 4 in (the article's own replacement spring: 5.31 in), no buckling, no coil
+    clash at the throttle closed."""
+    from govopt.springs import helical as hx
+
+    spec, res = _design("traction-coil-design.toml")
+    sd, gov = res.spring, spec.governor
+    assert sd.l0 < 2.0 * gov.spring_length  # was 0.6127 m: 6 times the installed length
+    F = np.asarray(res.statics.spring_force)
+    s = (F.max() + 0.1 * (F.max() - F.min())) / sd.kappa
+    assert s < _buckling_deflection(sd.l0, 2 * sd.r, spec.material.shear_modulus, 206e9, 0.5)
+    least = gov.spring_length - (gov.spacing_open - 2 * math.sqrt(
+        gov.arm_length**2 - (gov.x_outer - gov.hinge_radius) ** 2))  # d_2, throttle closed
+    assert float(hx.solid_length(sd.d, sd.n + 2, "closed_ground")) < least
+    names = {c.name for c in res.checks}
+    assert {"deflection / buckling deflection",
+            "working length >= least length (coil clash)"} <= names
+    assert all(c.passed for c in res.checks)
+
+
+def test_article_replacement_spring_passes_without_a_resonance_ceiling():
+    """The article's replacement spring (220-250 rpm, K = 30.4 lbf/in, free length 5.31 in)
+    has k^2 up to 2.69 omega0^2 over its range: Hamabe's ceiling k^2 < omega0^2 (his valve
+    gear's harmonics) would refuse it; the traction governors have no such forcing."""
+    from govopt import evaluate, load_spec
+
+    spec = load_spec(SPECS / "traction-coil-replacement.toml")
+    assert not spec.governor.resonance_ceiling
+    res = evaluate(spec)
+    assert np.max(res.k2) / spec.speed.omega_mean**2 == pytest.approx(2.69, abs=0.005)
+    assert all(c.passed for c in res.checks)
+    assert "k^2 < omega0^2 (no resonance)" not in {c.name for c in res.checks}

@@ -423,6 +423,37 @@ def screen(spec, d, r, n, kappa, l0, harmonics=()):
     return feasible(spec, d, 2.0 * r, n, kappa, l0, F1, F2, harmonics)
 
 
+def geometry_rows(spec, d, D, n, kappa, l0, F1=None, F2=None) -> dict:
+    """The rows of :data:`govopt.springs.checks.GEOMETRY` over arrays, ``{name: (value, limit,
+    sense)}``: a compression spring's coil clash, buckling (EN 13906-1, the seating
+    ``[spring] seating``, default both ends on flat parallel seats, ``nu = 0.5``) and free pitch,
+    which need no wire strength, for a spring without a wire grade (with one, :func:`screen`
+    and :func:`checks` hold them already); none for an extension spring. The static range
+    ``F1 <= F2`` defaults to :func:`static_range`; E is the grade's or, without one, the
+    EN 10270-1 steel default of :func:`wire`."""
+    kind = KINDS[spec.governor.spring]
+    if F1 is None:
+        F1, F2 = static_range(spec, kappa, l0)
+    kw = _kw(spec, d, D, n, kappa, l0, F1, F2)
+    senses = {r.name: r.sense for r in ck.TABLES[kind]}
+    return {k: (v, lim, senses[k]) for k, (v, lim) in ck.evaluate(kind, ck.GEOMETRY, **kw).items()}
+
+
+def geometry_screen(spec, d, r, n, kappa, l0):
+    """True where every row of :func:`geometry_rows` holds (catalogue springs, arrays)."""
+    ok = True
+    for value, limit, sense in geometry_rows(spec, d, 2.0 * r, n, kappa, l0).values():
+        ok = ok & (value <= limit if sense == "<=" else value >= limit)
+    return np.asarray(ok)
+
+
+def geometry_checks(spec, sd) -> list:
+    """:func:`geometry_rows` of one design as :class:`govopt.result.Check` objects."""
+    F1, F2 = static_range(spec, sd.kappa, sd.l0)
+    kw = _kw(spec, sd.d, 2.0 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2)
+    return ck.checks(KINDS[spec.governor.spring], ck.GEOMETRY, **kw)
+
+
 def screen_fatigue(spec, d, r, n, kappa, l0, swing):
     """The least fatigue safety factor of springs ``d, r, n, kappa, l0`` (arrays of candidates)
     under peak-to-peak swings ``swing`` (candidates x dash-pots)."""
@@ -442,6 +473,7 @@ def is_engineering_check(name: str) -> bool:
 
 
 __all__ = ["KINDS", "NO_FORCING", "Spread", "SpringReport", "allowable_monomial", "checks",
-           "evaluate_rows", "fatigue_forces", "fatigue_safety", "feasible", "harmonics_hz",
+           "evaluate_rows", "fatigue_forces", "fatigue_safety", "feasible", "geometry_checks",
+           "geometry_rows", "geometry_screen", "harmonics_hz",
            "initial_tension", "is_engineering_check", "report", "screen", "screen_fatigue",
            "screen_vibration", "spread", "static_range", "wire"]

@@ -109,6 +109,10 @@ class Governor(ABC):
     flying_masses: ClassVar[int] = 2
     #: ``l0`` is a length that must be positive (a coil spring's free length; a leaf's set is not)
     free_length_positive: ClassVar[bool] = True
+    #: the flying masses are forced at the running speed's harmonics (Hamabe Part II: the valve
+    #: gear), so ``k^2 < omega0^2`` keeps them clear of resonance (case 2); False for a type
+    #: whose mechanism has no such forcing: only ``k^2 > 0`` (stability, case 3) is required
+    resonance_ceiling: ClassVar[bool] = True
     #: the spring's whole free length per unit of ``l0`` (the shaft's l0 is a half length: 2)
     spring_length_factor: ClassVar[float] = 1.0
     #: names of the three generalised forces in reports: centrifugal, spring, dead loads

@@ -83,7 +83,19 @@ def spring_rate_and_free_length(P1, d1, P2, d2):
 class FlyWeights(Governor):
     """What the article's two governors share (Figs. 1-2): ``n_weights`` fly weights moving the
     throttle rod, whose travel ``s(r)`` each type's ``geometry(x)["s1"] = ds/dr`` gives, against
-    the rod's friction ``rod_friction``; the coordinate is the fly-weight radius."""
+    the rod's friction ``rod_friction``; the coordinate is the fly-weight radius.
+
+    No resonance ceiling (:attr:`Governor.resonance_ceiling`): the weights turn on a vertical
+    spindle (the article's "vertical throttle valve rod"), so their weight acts along it and
+    nothing forces them once per revolution - Hamabe's ``k^2 < omega0^2`` guards his shaft
+    governor against its valve gear's harmonics (Part II, case 2), which these governors do not
+    have. Kept, it asks for a nearly isochronous governor: the article's own replacement spring
+    (``traction-coil-replacement.toml``, 220-250 rpm) has ``k^2`` up to 2.69 ``omega0^2``, and
+    the design spec's ceiling forced a spring of 0.61 m free length for a 4 in installed
+    length, which buckles (EN 13906-1; the article: "a narrow speed range ... the resulting
+    spring will be longer and with lower spring rate")."""
+
+    resonance_ceiling: ClassVar[bool] = False
 
     def inertia(self, x, m, central=None):
         """``I = m (1 + (ds/dr / 2)^2)`` (kg): the weight moves out by ``dr`` and along the

@@ -21,7 +21,17 @@ the bow's rate in ``r`` is 1; the collars slide freely, the article's assumption
     omega^2 m r = F(x),   F = kappa (f(x) - l0)
 
 with ``kappa = c E I / L^3`` (:func:`govopt.springs.leaf.stiffness`, ``c`` = 48 hinged or 192
-clamped: eq. 5) and ``l0`` the spring's set. Fidelity ``leaf_model``
+clamped: eq. 5) and ``l0`` the spring's *set*: the bow of the unloaded leaf at its middle, from
+the line of its end attachments, outward (away from the spindle) positive - the article's Fig. 2
+"shows the spring with a set in it", its bow ``x`` = set + deflection ``Delta`` (note to eq. 8),
+and its design takes no set (step 2). A negative ``l0`` is a leaf bent the other way, towards the
+spindle: at rest the weights would swing in to ``r_h + l0`` (the old optimum of
+``traction-leaf-design.toml``, ``l0 = -19.36 mm``: 12.4 mm from the axis, three 0.25 kg weights
+on a 31.75 mm hinge radius meet each other and the rod), so it is buildable only pre-loaded
+against a stop that neither the article's governor nor this model has. The set is therefore
+kept within ``leaf_set_min`` .. ``leaf_set_max`` (default 0 .. ``L/5``, the article's range of
+``x`` for eq. 8); a spec with such a stop states a negative ``leaf_set_min``. Fidelity
+``leaf_model``
 (:data:`govopt.springs.leaf.CHORD_MODELS`):
 
 * ``"straight"``: the article's method: ``f = x`` (eq. 5, small deflection, span ``L``) and the
@@ -107,6 +117,8 @@ class TractionLeafGovernor(FlyWeights):
     x_outer: float
     x_normal: float
     rod_friction: float = 0.0
+    set_min: float = 0.0
+    set_max: float = np.inf
 
     @classmethod
     def parse(cls, reader) -> TractionLeafGovernor:
@@ -116,7 +128,8 @@ class TractionLeafGovernor(FlyWeights):
         ``l_2``), ``bow_open``/``bow_closed`` (measured ``x``) or ``travel_open``/
         ``travel_closed`` (the rod's travel from rest, ``Z`` and ``2 Z`` in the article's design),
         an optional ``*_normal`` of the same kind (default: the mid radius), ``rod_friction``
-        (default 0).
+        (default 0), ``leaf_set_min`` and ``leaf_set_max``: the bounds of the leaf's set ``l0``
+        (default 0 and ``leaf_length / 5``; see the module's docstring).
 
         >>> from govopt.spec import _Reader
         >>> gov = TractionLeafGovernor.parse(_Reader("ex", {"n_weights": 3,
@@ -159,11 +172,20 @@ class TractionLeafGovernor(FlyWeights):
                 reader.fail(f"{kind}_{end}", f"beyond the reach of the {model!r} chord model")
         normal = r_h + (bows["normal"] if bows["normal"] is not None
                         else 0.5 * (bows["open"] + bows["closed"]))
+        set_min = reader.quantity("leaf_set_min", "length", required=False, default=0.0,
+                                  positive=False, low=-0.5 * L, high=0.5 * L,
+                                  range_text="[-leaf_length/2, leaf_length/2]")
+        set_max = reader.quantity("leaf_set_max", "length", required=False, default=0.2 * L,
+                                  positive=False, low=-0.5 * L, high=0.5 * L,
+                                  range_text="[-leaf_length/2, leaf_length/2]")
+        if not set_min <= set_max:
+            reader.fail("leaf_set_max", "expected at least leaf_set_min")
         gov = cls(n_weights=int(n), leaf_length=L, leaf_ends=ends, hinge_radius=r_h,
                   leaf_model=model, chord_open=chord_open, x_inner=r_h + bows["open"],
                   x_outer=r_h + bows["closed"], x_normal=float(normal),
                   rod_friction=reader.quantity("rod_friction", "force", required=False,
-                                               default=0.0, nonnegative=True))
+                                               default=0.0, nonnegative=True),
+                  set_min=set_min, set_max=set_max)
         if not gov.x_inner <= gov.x_normal <= gov.x_outer:
             reader.fail(f"{kind}_normal", "expected between the open and closed positions")
         reader.finish()
@@ -190,7 +212,10 @@ class TractionLeafGovernor(FlyWeights):
 
     def spring_checks(self, spec, sd, char, vib=None) -> list:
         """The leaf's constraint table (:data:`govopt.springs.leaf.CONSTRAINTS`): bending stress
-        against the material's allowable, bow/length within the chord models' stated range."""
+        against the material's allowable, bow/length within the chord models' stated range; and
+        the set ``l0`` within ``leaf_set_min`` .. ``leaf_set_max`` (:meth:`set_ok`)."""
+        from ..result import Check
+
         mat, req = spec.material, spec.requirements
         allowable = mat.allowable_bending_stress if mat is not None else None
         rows = leaf.checks(F=np.max(np.abs(char.spring_force)),
@@ -198,7 +223,15 @@ class TractionLeafGovernor(FlyWeights):
                            L=self.leaf_length, span=self.span(char.alpha), ends=self.leaf_ends,
                            allowable=allowable if allowable is not None else np.inf,
                            max_bow_ratio=getattr(req, "max_bow_ratio", 0.2) or 0.2)
-        return [c for c in rows if np.isfinite(c.limit)]
+        source = "a buildable leaf: its set (unloaded bow, outward +) within [governor] bounds"
+        return [c for c in rows if np.isfinite(c.limit)] + [
+            Check("leaf set >= min", sd.l0, self.set_min, ">=", "m", source,
+                  scale=None if self.set_min else self.leaf_length),
+            Check("leaf set <= max", sd.l0, self.set_max, "<=", "m", source)]
+
+    def set_ok(self, l0):
+        """True where the leaf's set ``l0`` (m) lies within ``set_min`` .. ``set_max``."""
+        return (l0 >= self.set_min) & (l0 <= self.set_max)
 
     def geometry(self, x) -> dict:
         """At fly-weight radii ``x`` (m): the bow, the chord ``l`` and the rod travel ``s`` from

@@ -94,7 +94,8 @@ def masses(req: Requirements) -> tuple[np.ndarray, np.ndarray]:
 
 def k2_limits(spec: Spec, req: Requirements) -> tuple[float, float]:
     w0sq = spec.speed.omega_mean**2
-    return req.k2_margin * w0sq, (1.0 - req.k2_margin) * w0sq
+    ceiling = (1.0 - req.k2_margin) * w0sq if spec.governor.resonance_ceiling else np.inf
+    return req.k2_margin * w0sq, ceiling
 
 
 def statics_window(spec: Spec, req: Requirements):
@@ -305,7 +306,8 @@ def leaf_catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
     bow_ok = (gov.x_outer - gov.hinge_radius) / gov.leaf_length <= req.max_bow_ratio
 
     def check(cc, F, l0):
-        return (leaf.bending_stress(F, w[cc], t[cc], span, gov.leaf_ends) <= allowable) & bow_ok
+        return ((leaf.bending_stress(F, w[cc], t[cc], span, gov.leaf_ends) <= allowable) & bow_ok
+                & gov.set_ok(l0))
 
     return SpringCatalogue(kappa=gov.leaf_stiffness(w, t, mat.elastic_modulus),
                            mass=leaf.mass(w, t, gov.leaf_length, mat.density),
@@ -323,16 +325,19 @@ def catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
 def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=()):
     """Spring constraints that do not depend on the governor's statics (arrays); with a wire
     grade the spring engineering table (diameter-dependent allowables, the spring kind's own
-    checks, surge clear of the forcing's ``harmonics`` in Hz) instead of the one stress."""
+    checks, surge clear of the forcing's ``harmonics`` in Hz) instead of the one stress; without
+    one, the compression spring's geometric rows too (coil clash, buckling, free pitch:
+    :func:`govopt.analysis.spring_engineering.geometry_rows`)."""
     mat = spec.material
     C = spring.spring_index(d, r)
     ok = (C >= req.spring_index[0]) & (C <= req.spring_index[1])
-    if mat.grade is None:
+    from ..analysis import spring_engineering as se
+
+    if mat.grade is None:  # the stress against the spec's allowable; coil clash and buckling
         ok &= spring.shear_stress(F_max, d, r, mat.stress_correction) \
             <= mat.allowable_shear_stress
+        ok &= se.geometry_screen(spec, d, r, n, spring.stiffness(d, r, n, mat.shear_modulus), l0)
     else:
-        from ..analysis import spring_engineering as se
-
         ok &= se.screen(spec, d, r, n, spring.stiffness(d, r, n, mat.shear_modulus), l0,
                         harmonics)
     ok &= (n + 1.0) * d <= spec.governor.spring_length_factor * l0

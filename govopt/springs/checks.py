@@ -217,39 +217,51 @@ EXTENSION = (
         _hook_B[1]),
 ) + COMMON
 
+#: the compression rows that need the spring's geometry and moduli only, not the wire's strength:
+#: they hold for a spring whose ``[material]`` gives an allowable stress and no wire grade too
+#: (``only=GEOMETRY``). A free length far beyond the installed length (the article's "longer
+#: spring" for a narrow speed range, 003) buckles long before it is compressed into place.
+GEOMETRY = ("working length >= least length (coil clash)", "deflection / buckling deflection",
+            "free pitch > wire diameter")
+
 _SPACE = Row("free length <= space", "<=", "m", lambda kw: kw["L0"], lambda kw: kw["L0_max"],
              "installation space given in the spec")
 
 TABLES = {"compression": COMPRESSION, "extension": EXTENSION}
 
 
-def _rows(kind, kw):
+def _rows(kind, kw, only=None):
     rows = TABLES[kind] + ((_SPACE,) if kw.get("L0_max") is not None else ())
+    if only is not None:  # a subset by name (e.g. GEOMETRY; an extension spring has none of it)
+        rows = tuple(r for r in rows if r.name in only)
     if len(kw.get("harmonics_hz", ())) == 0:  # nothing to resonate with: no surge row
         rows = tuple(r for r in rows if not r.name.startswith("surge"))
     return rows
 
 
-def evaluate(kind: str, **kw) -> dict[str, tuple[np.ndarray, np.ndarray]]:
-    """Every row of the ``kind`` table over arrays: ``{name: (value, limit)}`` (broadcast)."""
+def evaluate(kind: str, only=None, **kw) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Every row of the ``kind`` table (or the rows named in ``only``) over arrays:
+    ``{name: (value, limit)}`` (broadcast)."""
     kw = prepare(kind, **kw)
     return {r.name: tuple(np.broadcast_arrays(np.asarray(r.value(kw), dtype=float),
                                               np.asarray(r.limit(kw), dtype=float)))
-            for r in _rows(kind, kw)}
+            for r in _rows(kind, kw, only)}
 
 
-def feasible(kind: str, **kw) -> np.ndarray:
-    """True where every row holds (NaN, e.g. a wire outside its grade's range, fails)."""
+def feasible(kind: str, only=None, **kw) -> np.ndarray:
+    """True where every row (of ``only``, if given) holds (NaN, e.g. a wire outside its grade's
+    range, fails)."""
     kw = prepare(kind, **kw)
     ok = True
-    for r in _rows(kind, kw):
+    for r in _rows(kind, kw, only):
         value, limit = r.value(kw), r.limit(kw)
         ok = ok & (value <= limit if r.sense == "<=" else value >= limit)
     return np.asarray(ok)
 
 
-def checks(kind: str, **kw):
-    """The ``kind`` table for one design as :class:`govopt.result.Check` objects.
+def checks(kind: str, only=None, **kw):
+    """The ``kind`` table (or the rows named in ``only``) for one design as
+    :class:`govopt.result.Check` objects.
 
     Arrays (e.g. forces over the governor's range) are reduced to the worst case: the largest
     value of a ``<=`` row, the smallest of a ``>=`` row (with its own limit).
@@ -258,7 +270,7 @@ def checks(kind: str, **kw):
 
     kw = prepare(kind, **kw)
     out = []
-    for r in _rows(kind, kw):
+    for r in _rows(kind, kw, only):
         value, limit = np.broadcast_arrays(np.asarray(r.value(kw), dtype=float),
                                            np.asarray(r.limit(kw), dtype=float))
         slack = limit - value if r.sense == "<=" else value - limit
