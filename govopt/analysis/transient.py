@@ -1116,10 +1116,10 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
         scale = abs(float(xi0))
         for attempt in range(8):
             t, truncated = _grid(roots, float(g_end[0]) if extrap else H, max_points)
-            y = resp(t)[0]
+            y = _grid_values(resp, t[None, :])[0]
             xi, xid = y[0], y[1]
-            if scale == 0.0:
-                scale = float(np.max(np.abs(xi)))
+            if scale == 0.0:  # grid values only bracket: the peak's Newton-form value
+                scale = abs(f(float(t[np.argmax(np.abs(xi))])))
             b = band * scale
             if (not stable or horizon is not None or truncated or extrap or _tail_ok(t, xi, b)
                     or attempt == 7):
@@ -1129,8 +1129,9 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
         ip = int(np.nonzero(t > 0)[0][0])
         ext_t = [root(1, 0.0, t[i], t[i + 1]) for i in _brackets(xid[ip:]) + ip]
         ext = tuple((float(te), f(te)) for te in ext_t if te is not None and te > 0)
+        x_end = f(float(t[-1]))
         # over-regulation: largest excursion on the side opposite to the start
-        far = [(-s0 * v, te) for te, v in ext + ((float(t[-1]), float(xi[-1])),)
+        far = [(-s0 * v, te) for te, v in ext + ((float(t[-1]), x_end),)
                if np.isfinite(v)] if s0 != 0.0 else []
         over, t_over = max([(0.0, 0.0)] + far)
         w = float(late.wanted(np.array([0]), np.array([over]))[0])
@@ -1144,7 +1145,7 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
         b = band * scale
     # between consecutive turning points xi is monotone: every event is bracketed exactly
     P = [0.0] + [te for te, _ in ext] + [float(t[-1])]
-    X = [float(xi0)] + [v for _, v in ext] + [float(xi[-1])]
+    X = [float(xi0)] + [v for _, v in ext] + [x_end]
     zeros = []
     for i in range(len(P) - 1):
         if X[i + 1] == 0.0 and 0 < i + 1 < len(P) - 1:  # touches 0 at an extremum
@@ -1327,6 +1328,7 @@ def _exact_max(resp, t, xd, v, sign, clip, amp):
     r, k = np.nonzero(cand)
     out = np.maximum(vmax, 0.0)
     tout = np.where(vmax > 0, t[rows, kmax], 0.0)
+    grid = vmax > 0
     if r.size:
         r, k, te, xe = _refine_peaks(resp, t, xd, r, k)
         val = np.abs(xe) if sign is None else sign[r] * xe
@@ -1336,6 +1338,12 @@ def _exact_max(resp, t, xd, v, sign, clip, amp):
         r, te, val = r[first], te[first], val[first]
         up = val > out[r]
         out[r[up]], tout[r[up]] = val[up], te[up]
+        grid &= ~np.isin(rows, r[up])
+    g = np.nonzero(grid)[0]
+    if g.size:  # a maximum read off the grid (e.g. its last point): its Newton-form value
+        xg = resp.subset(g)(tout[g, None], nder=0)[:, 0, 0]
+        vg = np.abs(xg) if sign is None else sign[g] * xg
+        out[g], tout[g] = np.maximum(vg, 0.0), np.where(vg > 0, tout[g], 0.0)
     return out, tout
 
 
@@ -1344,7 +1352,8 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     width.
 
     resp: _Response (order >= 2) for n designs; t (n, M) increasing per row, t[:, 0] = 0;
-    y = resp(t, nder=1); the band is band * |d0| (or band * max |xi| where d0 = 0).  Events
+    y = _grid_values(resp, t) (xi, xi'); the band is band * |d0| (or band * max |xi| where
+    d0 = 0).  Events
     are bracketed on the grid; lobes the grid may have clipped (grid peaks close to zero, to the
     maximum, or to the band) are refined to their exact extremum first, then every event time
     is refined by bracketed Newton.
@@ -1411,6 +1420,74 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     return arrival, over, t_over, settling, b
 
 
+def _modal_amplitudes(l, d):
+    """Modal amplitudes ``c_k`` of ``xi(t) = sum_k c_k exp(l_k t)`` for distinct roots ``l``
+    (n, 3) and initial state ``d`` (n, >= 3): ``c_k = ((A - l_i)(A - l_j) x0)_0 / ((l_k - l_i)
+    (l_k - l_j))`` (partial fractions of eq. (28); Hamabe's constants (38), (40) restated).
+    Complex (n, 3); inf or nan where roots coincide (callers test separation first)."""
+    c = np.empty(l.shape, complex)
+    for k, (i, j) in enumerate(((1, 2), (0, 2), (0, 1))):
+        li, lj, lk = l[:, i], l[:, j], l[:, k]
+        c[:, k] = (d[:, 2] - (li + lj) * d[:, 1] + li * lj * d[:, 0]) / ((lk - li) * (lk - lj))
+    return c
+
+
+#: Smallest relative root separation at which :func:`_grid_values` sums the modes directly.
+_MODAL_SEP = 1e-2
+
+
+def _grid_values(resp, t):
+    """``xi`` and ``xi'`` (n, 2, T) at the event-search grid ``t`` (n, T): values that only
+    bracket events and pick the lobes to refine -- every reported figure is located on the
+    Newton form (:func:`_refine`, :func:`_exact_max`).
+
+    Where every mode decays and the roots are well separated (relative separation >=
+    ``_MODAL_SEP``) the modal sum ``sum c_k exp(l_k t)`` (:func:`_modal_amplitudes`) is used: a
+    few exponentials per point instead of the divided differences, and no overflow (all
+    ``exp(l t) <= 1``).  Its error is the amplitudes' rounding, at most about
+    ``eps / _MODAL_SEP**2 ~ 2e-12`` of the trajectory's scale (two root differences in the
+    denominator), so a grid sign can differ from the Newton form's only where ``|xi|`` is that
+    close to 0 (a lobe grazing zero at a grid point).  Other rows use the Newton form.
+    """
+    n, T = resp.n, t.shape[-1]
+    t = np.broadcast_to(t, (n, T))
+    l = resp.roots
+    with np.errstate(all="ignore"):
+        c = _modal_amplitudes(l, resp.d)
+        modal = (np.isfinite(c).all(axis=1) & (l.real.max(axis=1) < 0)
+                 & (_pair_separations(l).min(axis=1) >= _MODAL_SEP))
+    out = np.empty((n, 2, T))
+    rest = np.nonzero(~modal)[0]
+    if rest.size:
+        out[rest] = resp.subset(rest)(t[rest], nder=1)
+    cplx = (l.imag != 0).any(axis=1)
+    step = max(1, _BLOCK // max(T, 1))
+    for rows in (np.nonzero(modal & ~cplx)[0], np.nonzero(modal & cplx)[0]):
+        for s in range(0, rows.size, step):
+            r = rows[s : s + step]
+            tt, lr, cr = t[r], l[r], c[r]
+            if not cplx[r[0]]:  # three real modes
+                lr, cr = lr.real, cr.real
+                xi = xd = 0.0
+                for k in range(3):
+                    term = cr[:, k, None] * np.exp(lr[:, k, None] * tt)
+                    xi = xi + term
+                    xd = xd + lr[:, k, None] * term
+            else:  # a real mode and a conjugate pair: c_r e^{rt} + 2 Re(c_p e^{pt})
+                k = np.arange(r.size)
+                ir, ip = np.argmin(np.abs(lr.imag), axis=1), np.argmax(lr.imag, axis=1)
+                rr, c_r = lr[k, ir].real[:, None], cr[k, ir].real[:, None]
+                p, cp = lr[k, ip][:, None], cr[k, ip][:, None]
+                er = c_r * np.exp(rr * tt)
+                ep = 2.0 * np.exp(p.real * tt)
+                cs, sn = ep * np.cos(p.imag * tt), ep * np.sin(p.imag * tt)
+                cpp = cp * p
+                xi = er + cp.real * cs - cp.imag * sn
+                xd = rr * er + cpp.real * cs - cpp.imag * sn
+            out[r, 0], out[r, 1] = xi, xd
+    return out
+
+
 def _modal_windows(roots, d, ok, H, per_period):
     """Where the response is, to 1e-12 relative, its slowest mode(s) alone: per design
     (grid_end, uniform_end, extrapolate), from the modal amplitudes (used only where the roots
@@ -1423,15 +1500,10 @@ def _modal_windows(roots, d, ok, H, per_period):
     so the grid stops there (extrapolate = True).  If it is a real root, oscillation needs
     resolving only until ``T_w``.  Elsewhere the whole horizon is resolved.
     """
-    n = roots.shape[0]
     l = roots
     well = ok & (_pair_separations(l).min(axis=1) >= 1e-3)
-    amp = np.zeros((n, 3))
     with np.errstate(all="ignore"):
-        for k, (i, j) in enumerate(((1, 2), (0, 2), (0, 1))):
-            li, lj, lk = l[:, i], l[:, j], l[:, k]
-            ck = (d[:, 2] - (li + lj) * d[:, 1] + li * lj * d[:, 0]) / ((lk - li) * (lk - lj))
-            amp[:, k] = np.abs(ck)
+        amp = np.abs(_modal_amplitudes(l, d))
         sig = -l.real
         smin = sig.min(axis=1)
         slow = sig == smin[:, None]
@@ -1529,7 +1601,7 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
                 tu = Ue * np.linspace(0.0, 1.0, wd + 1)[None, :] if wd else np.zeros((idx.size, 1))
                 t = np.sort(np.concatenate([tl, tu], axis=1), axis=1)
                 sub = resp.subset(idx)
-                y = sub(t, nder=1)
+                y = _grid_values(sub, t)
                 a_, o_, to_, st_, b = _events_on_grid(sub, t, y, s0[idx], band, d[idx, 0],
                                                       stable[idx], per_period)
                 ex = extrap[loc]
