@@ -121,6 +121,8 @@ def test_fatigue_requirement_changes_the_design(old, old_graded, fatigue_spec):
 
 
 def test_every_new_check_in_json_text_and_excel(old_graded, tmp_path):
+    from govopt.report import sections
+
     res = old_graded
     names = [c.name for c in res.checks if se.is_engineering_check(c.name)]
     for expected in ("body static shear stress", "hook bending stress (point A)",
@@ -129,7 +131,7 @@ def test_every_new_check_in_json_text_and_excel(old_graded, tmp_path):
                      se.FITS, "hook A fatigue safety factor", "body fatigue safety factor"):
         assert expected in names
     js = {c["name"]: c for c in json.loads(json.dumps(res.to_dict()))["checks"]}
-    text = format_result(res)
+    text = format_result(res, colour=False)
     wb = openpyxl.load_workbook(excel.write_workbook(res, tmp_path / "g.xlsx"))
     checks_ws = {r[0].value: r for r in wb["Checks"].iter_rows(min_row=2) if r[0].value}
     spring_ws = {r[0].value: r for r in wb["Spring"].iter_rows() if r[0].value in names}
@@ -139,9 +141,14 @@ def test_every_new_check_in_json_text_and_excel(old_graded, tmp_path):
         j = js[name]
         assert j["value"] == pytest.approx(c.value) and j["limit"] == pytest.approx(c.limit)
         assert j["margin"] == pytest.approx(c.margin) and j["source"] == c.source
-        line = next(x for x in text.splitlines() if x.strip().startswith(f"{name}:"))
-        assert f"{c.value:.6g}" in line and f"{c.limit:.6g}" in line and c.source in line
-        assert f"{100 * c.margin:+.2f} %" in line
+        # once in the Checks table (value and limit in the shown unit, margin in words) ...
+        row = [x for x in text.splitlines() if x.startswith(f"{name}  ")]
+        assert len(row) == 1, row
+        value, limit = (sections.shown(v, c.unit)[0] for v in (c.value, c.limit))
+        assert f"{value:.6g}" in row[0] and f"{c.sense} {limit:.6g}" in row[0]
+        assert f"{abs(100 * c.margin):.2f} %" in row[0]
+        # ... and its source under the spring's sheet
+        assert f"  {name}: {c.source}" in text.splitlines()
         row = checks_ws[name]
         assert row[8].value == pytest.approx(c.margin) and row[9].value == c.source
         s = spring_ws[name]

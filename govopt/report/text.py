@@ -292,7 +292,8 @@ def format_result(res: Result, colour: bool | None = None) -> str:
 
 def format_spring(res: Result) -> list[str]:
     """The spring maker's sheet, the spring's loads, fatigue and tolerance spread, and the
-    spring engineering checks with their sources (issue 11); nothing without a wire spring."""
+    sources of the spring engineering checks (issue 11; the checks themselves are rows of the
+    Checks table, shown once); nothing without a wire spring."""
     from ..analysis.spring_engineering import is_engineering_check
 
     rep = res.spring_report
@@ -331,9 +332,7 @@ def format_spring(res: Result) -> list[str]:
     out += [f"  note: {n}" for n in [*sp["notes"], *d["notes"]]]
     graded = res.spec.material is not None and res.spec.material.grade is not None
     rows = [c for c in res.checks if graded and is_engineering_check(c.name)]
-    if rows:
-        out += ["", "Spring engineering checks (value, limit, margin, source)"]
-        out += [f"  {c.name}: {c.value:.6g} {c.sense} {c.limit:.6g} {c.unit}, margin "
-                f"{100 * c.margin:+.2f} % {'PASS' if c.passed else 'FAIL'} - {c.source}"
-                for c in rows]
+    if rows:  # their values, limits and margins are the Checks table's rows
+        out += ["", "Spring engineering checks: sources (values and margins under Checks)"]
+        out += [f"  {c.name}: {c.source}" for c in rows]
     return out
