@@ -60,7 +60,7 @@ def plain_table(headers, rows, *, right=(), show_header=True, width=400) -> list
     the last column).
 
     >>> plain_table(["n", "x\n(mm)"], [["a", "1.5"], ["bb", ""]], right=(1,))
-    ['n       x', '     (mm)', '---------', 'a     1.5', 'bb']
+    ['        x', 'n    (mm)', '---------', 'a     1.5', 'bb']
     """
     rows = [headers, *rows] if show_header else list(rows)
     if not headers or not rows or not all(c.isascii() and _plain(c) for r in rows for c in r):
