@@ -1281,10 +1281,11 @@ def _refine(resp, j, target, lo, hi, iters=100):
 
 
 def _local_max(v):
-    """Interior grid local maxima of the rows of v (>= left neighbour, > right neighbour)."""
-    m = np.zeros(v.shape, bool)
-    m[:, 1:-1] = (v[:, 1:-1] >= v[:, :-2]) & (v[:, 1:-1] > v[:, 2:])
-    return m
+    """Interior grid local maxima of the rows of v (>= left neighbour, > right neighbour), as
+    index arrays (rows, columns) in row-major order."""
+    with np.errstate(invalid="ignore"):
+        r, k = np.nonzero((v[:, 1:-1] >= v[:, :-2]) & (v[:, 1:-1] > v[:, 2:]))
+    return r, k + 1
 
 
 def _refine_peaks(resp, t, xd, r, k):
@@ -1306,26 +1307,26 @@ def _refine_peaks(resp, t, xd, r, k):
     return r, k, te, sub(te[:, None], nder=0)[:, 0, 0]
 
 
-def _exact_max(resp, t, xd, v, sign, clip, amp):
+def _exact_max(resp, t, xd, v, sign, clip, amp, lmax=None):
     """Exact maximum over t > 0 of v = sign * xi per row: the grid maximum, raised to the exact
     peaks of the lobes that the grid may have clipped (within ``clip * amp`` of it).  For
     v = |xi| pass sign = None (its interior local maxima are extrema of xi).  Returns the
     maxima and their times.  With a sign, grid maxima at or below zero are refined too where
     the slope allows the lobe to reach zero between the neighbouring grid points (a far-side
-    lobe that the grid clipped, e.g. near a tangency)."""
+    lobe that the grid clipped, e.g. near a tangency).  ``lmax``: :func:`_local_max` of v, if
+    already known."""
     rows = np.arange(v.shape[0])
     kmax = np.argmax(v, axis=1)
     vmax = v[rows, kmax]
-    lmax = _local_max(v)
+    r, k = _local_max(v) if lmax is None else lmax
+    vk = v[r, k]
     with np.errstate(invalid="ignore", over="ignore"):  # +-inf values of a growing design
-        cand = lmax & (v > 0) & (v >= (vmax - clip * amp)[:, None])
+        cand = (vk > 0) & (vk >= vmax[r] - clip * amp[r])
         if sign is not None:
-            ax = np.abs(xd)
-            reach = np.zeros_like(v)
-            reach[:, 1:-1] = (np.maximum(np.maximum(ax[:, :-2], ax[:, 1:-1]), ax[:, 2:])
-                              * (t[:, 2:] - t[:, :-2]))
-            cand |= lmax & (v <= 0) & (v + reach >= 0)
-    r, k = np.nonzero(cand)
+            reach = (np.maximum(np.maximum(np.abs(xd[r, k - 1]), np.abs(xd[r, k])),
+                                np.abs(xd[r, k + 1])) * (t[r, k + 1] - t[r, k - 1]))
+            cand |= (vk <= 0) & (vk + reach >= 0)
+    r, k = r[cand], k[cand]
     out = np.maximum(vmax, 0.0)
     tout = np.where(vmax > 0, t[rows, kmax], 0.0)
     grid = vmax > 0
@@ -1360,7 +1361,6 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     """
     n, M = t.shape
     rows = np.arange(n)
-    col = np.arange(M)[None, :]
     xi, xd = y[:, 0], y[:, 1]
     amp = np.abs(xi).max(axis=1)
     clip = 1.5 * (1.0 - math.cos(math.pi / per_period))  # grid's worst clipping of a lobe
@@ -1370,7 +1370,7 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
         scale[z] = _exact_max(resp.subset(z), t[z], xd[z], np.abs(xi[z]), None, clip, amp[z])[0]
     b = band * scale
     v = -s0[:, None] * xi  # > 0 past the new equilibrium
-    lmax = _local_max(v)
+    lr, lk = _local_max(v)
     # --- first arrival: v from < 0 to >= 0 on the grid, or a clipped lobe reaching 0 earlier
     nxt = np.concatenate([v[:, 2:], v[:, -1:]], axis=1)  # runs of exact 0 (underflow) do not
     cross = (v[:, :-1] < 0) & ((v[:, 1:] > 0) | ((v[:, 1:] == 0) & (nxt > 0)))  # cross
@@ -1378,7 +1378,9 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     j = np.where(has, np.argmax(cross, axis=1), M)
     lo = np.where(has, t[rows, np.minimum(j, M - 2)], np.nan)
     hi = np.where(has, t[rows, np.minimum(j + 1, M - 1)], np.nan)
-    r, k = np.nonzero(lmax & (v < 0) & (v >= -0.02 * amp[:, None]) & (col < j[:, None]))
+    vk = v[lr, lk]
+    near = (vk < 0) & (vk >= -0.02 * amp[lr]) & (lk < j[lr])
+    r, k = lr[near], lk[near]
     if r.size:
         r, k, te, xe = _refine_peaks(resp, t, xd, r, k)
         hit = -s0[r] * xe >= 0
@@ -1391,7 +1393,7 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     if idx.size:
         arrival[idx] = _refine(resp.subset(idx), 0, 0.0, lo[idx], hi[idx])
     # --- over-regulation: grid maximum, and the exact peaks of the lobes that may hold it
-    over, t_over = _exact_max(resp, t, xd, v, -s0, clip, amp)
+    over, t_over = _exact_max(resp, t, xd, v, -s0, clip, amp, (lr, lk))
     # --- settling: last time |xi| = b
     ax = np.abs(xi)
     above = ax > b[:, None]
@@ -1405,8 +1407,9 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     sgn = np.sign(xi[rows, np.maximum(last, 0)])
     todo = ok & anyab
     # lobes after the last grid point above the band whose exact peak may still exceed it
-    r, k = np.nonzero(_local_max(ax) & (col > last[:, None]) & (ax >= 0.9 * b[:, None])
-                      & ok[:, None])
+    r, k = _local_max(ax)
+    late = (k > last[r]) & (ax[r, k] >= 0.9 * b[r]) & ok[r]
+    r, k = r[late], k[late]
     if r.size:
         r, k, te, xe = _refine_peaks(resp, t, xd, r, k)
         hit = np.abs(xe) > b[r]
