@@ -22,7 +22,6 @@ the outcomes:
 from __future__ import annotations
 
 import copy
-import functools
 import json
 import math
 import os
@@ -38,7 +37,7 @@ from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
 
-from click.testing import CliRunner
+from clirun import invoke
 
 ROOT = Path(__file__).resolve().parent.parent
 #: longest acceptable error line, besides the spec's path (the user's): an input's error, and
@@ -462,7 +461,7 @@ def study_specs() -> list[Path]:
     return sorted((bundled_specs()[0].parent / "studies").glob("*.toml"))
 
 
-#: hostile ``govopt study run`` options (each parses as its click type)
+#: hostile ``govopt study run`` options (each parses as its option's type)
 STUDY_OPTIONS = {
     "sweep of 1e8 points": ("--sweep", "design.pendulum_weight=6 kgf:12 kgf:100000000",
                             "--grid"),
@@ -635,7 +634,7 @@ def _args(case: Case, spec: Path, json_out: bool) -> list[str]:
 
 
 def run(case: Case, folder: Path, limit: float = 10.0, json_out: bool = False) -> Outcome:
-    """Run ``case`` in-process through the CLI (its click command) with a time limit;
+    """Run ``case`` in-process through the CLI (``govopt.cli.main``) with a time limit;
     warnings print as the real CLI prints them (stderr), not into pytest's record."""
     spec, written = _write(case, folder)
     json_out = json_out and case.command in ("evaluate", "design", "spring")
@@ -648,7 +647,7 @@ def run(case: Case, folder: Path, limit: float = 10.0, json_out: bool = False) -
             warnings.showwarning = _show_on_stderr
             signal.setitimer(signal.ITIMER_REAL, limit)
             try:
-                res = CliRunner().invoke(_command(), args)
+                res = invoke(args)
             finally:
                 signal.setitimer(signal.ITIMER_REAL, 0)
     except Hang:
@@ -677,17 +676,6 @@ def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = Fals
         return Outcome(case, "hang", None, "", "", time.perf_counter() - t0)
     out = Outcome(case, "", p.returncode, p.stdout, p.stderr, time.perf_counter() - t0)
     return classify(out, str(spec) if written else None, json_out)
-
-
-@functools.cache
-def _command():
-    """The CLI as a click command, built once (typer's runner rebuilds it for every call, at
-    ~0.15 s)."""
-    import typer
-
-    from govopt.cli import app
-
-    return typer.main.get_command(app)
 
 
 def _show_on_stderr(message, category, filename, lineno, file=None, line=None):

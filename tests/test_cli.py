@@ -3,15 +3,11 @@
 import json
 
 import pytest
-from typer.testing import CliRunner
-
-from govopt.cli import app
-
-runner = CliRunner()
+from clirun import invoke
 
 
 def test_evaluate_default_prints_report():
-    result = runner.invoke(app, ["evaluate"])
+    result = invoke(["evaluate"])
     # exit 1: case a misses its own irregularity 0.12 (0.123, README "Sources"); issue 13
     # changes the contract (a failed check exited 0)
     assert result.exit_code == 1, result.output
@@ -22,7 +18,7 @@ def test_evaluate_default_prints_report():
 
 
 def test_evaluate_json_keys():
-    result = runner.invoke(app, ["evaluate", "govopt/specs/hamabe-b.toml", "--json"])
+    result = invoke(["evaluate", "govopt/specs/hamabe-b.toml", "--json"])
     assert result.exit_code == 0, result.output
     out = json.loads(result.output)
     for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s", "pendulum_mass_kg",
@@ -39,15 +35,15 @@ def test_evaluate_json_keys():
 
 
 def test_geometry_flag_changes_the_model():
-    exact = json.loads(runner.invoke(app, ["evaluate", "--json"]).output)
-    series = json.loads(runner.invoke(app, ["evaluate", "--json", "--geometry", "series"]).output)
+    exact = json.loads(invoke(["evaluate", "--json"]).output)
+    series = json.loads(invoke(["evaluate", "--json", "--geometry", "series"]).output)
     assert exact["fidelity"]["geometry"] == "exact"
     assert series["fidelity"]["geometry"] == "series"
     assert exact["irregularity"] != series["irregularity"]
 
 
 def test_bad_flag_value_exits_2():
-    result = runner.invoke(app, ["evaluate", "--geometry", "wobbly"])
+    result = invoke(["evaluate", "--geometry", "wobbly"])
     assert result.exit_code == 2
 
 
@@ -57,7 +53,7 @@ def test_spring_command_reproduces_hamabe_sizing():
     args = ["spring", "--force", "606 kgf", "--stiffness", "59.7 kgf/cm", "--allowable-stress",
             "4000 kgf/cm^2", "--shear-modulus", "850000 kgf/cm^2", "--correction", "none",
             "--json"]
-    result = runner.invoke(app, args)
+    result = invoke(args)
     assert result.exit_code == 0, result.output
     out = json.loads(result.output)
     F, kappa, ks, G = 606 * 9.80665, 59.7 * 980.665, 4000 * 9.80665e4, 850000 * 9.80665e4
@@ -69,9 +65,9 @@ def test_spring_command_reproduces_hamabe_sizing():
 def test_spring_command_infeasible_and_bad_units():
     args = ["spring", "--force", "606 kgf", "--stiffness", "59.7 kgf/cm", "--allowable-stress",
             "400 kgf/cm^2", "--shear-modulus", "850000 kgf/cm^2", "--max-outer-diameter", "6 cm"]
-    result = runner.invoke(app, args)
+    result = invoke(args)
     assert result.exit_code == 2
     assert "allowable stress" in result.output and "outer diameter" in result.output
-    bad = runner.invoke(app, ["spring", "--force", "606 cm", "--stiffness", "1 N/m",
+    bad = invoke(["spring", "--force", "606 cm", "--stiffness", "1 N/m",
                               "--allowable-stress", "1 MPa", "--shear-modulus", "1 GPa"])
     assert bad.exit_code == 2 and "--force" in bad.output

@@ -12,13 +12,14 @@ import re
 import subprocess
 import sys
 import tomllib
+from argparse import PARSER
 from pathlib import Path
 
 import pytest
-from typer.testing import CliRunner
+from clirun import invoke
 
 import govopt
-from govopt.cli import app
+from govopt.cli import parser
 from govopt.examples import SPECS, examples
 from govopt.report.files import READ_BACK_ULPS, design_toml
 from govopt.units import G_STANDARD, UnitError, parse_quantity
@@ -73,25 +74,26 @@ def test_readme_documents_the_exit_codes():
 
 
 def _commands(group, prefix=()):
-    for name, command in group.commands.items():
-        if hasattr(command, "commands"):
-            yield from _commands(command, (*prefix, name))
-        else:
-            yield (*prefix, name)
+    """Every command of an argparse parser, as the words that name it (``("study", "run")``)."""
+    for action in group._actions:
+        for name, command in (action.choices.items() if action.nargs == PARSER else ()):
+            if any(a.nargs == PARSER for a in command._actions):
+                yield from _commands(command, (*prefix, name))
+            else:
+                yield (*prefix, name)
 
 
 def test_flags_shown_without_a_type(tmp_path):
     """Flags read `--json  Print ...`, as in git or pip, not `--json <bool>`; options that take
     a value name it (`--xlsx <path>`)."""
-    import typer.main
-
     run = _govopt("evaluate", "--help", cwd=tmp_path)
     assert run.returncode == 0 and re.search(r"^\s+--json\s+Print", run.stdout, re.M)
     assert "<bool>" not in run.stdout and "--xlsx <path>" in run.stdout
-    commands = list(_commands(typer.main.get_command(app)))
-    assert {("evaluate",), ("design",), ("examples",), ("init",)} <= set(commands)
+    commands = list(_commands(parser()))
+    assert {("evaluate",), ("design",), ("examples",), ("init",), ("study", "run")} <= set(
+        commands)
     for command in [(), *commands]:
-        shown = CliRunner().invoke(app, [*command, "--help"])
+        shown = invoke([*command, "--help"])
         assert shown.exit_code == 0 and "<bool>" not in shown.output, command
 
 
@@ -231,7 +233,7 @@ def test_misspelt_keys_get_did_you_mean(tmp_path, old, new, message):
     assert text.count(old) == 1
     path = tmp_path / "typo.toml"
     path.write_text(text.replace(old, new), encoding="utf-8")
-    run = CliRunner().invoke(app, ["evaluate", str(path)])
+    run = invoke(["evaluate", str(path)])
     assert run.exit_code == 2 and run.stdout == ""
     assert run.stderr.startswith(f"error: {path}: {message}")
 

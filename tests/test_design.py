@@ -5,11 +5,10 @@ import json
 
 import numpy as np
 import pytest
-from typer.testing import CliRunner
+from clirun import invoke
 
 import govopt
 from govopt.analysis import statics
-from govopt.cli import app
 from govopt.model import spring
 from govopt.optimize import design as dz
 
@@ -112,10 +111,10 @@ def test_never_worse_than_exhaustive_coarse_grid(spec, result):
 def test_written_design_reproduces(tmp_path, result):
     """-o DESIGN.toml: govopt evaluate reproduces the design's figures to 1e-9."""
     out = tmp_path / "design.toml"
-    r = CliRunner().invoke(app, ["design", SPEC, "-o", str(out), "--json"])
+    r = invoke(["design", SPEC, "-o", str(out), "--json"])
     assert r.exit_code == 0, r.output
     designed = json.loads(r.stdout)  # "wrote ..." goes to stderr with --json (issue 13)
-    ev = json.loads(CliRunner().invoke(app, ["evaluate", str(out), "--json"]).output)
+    ev = json.loads(invoke(["evaluate", str(out), "--json"]).output)
     for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s", "pendulum_mass_kg"):
         assert ev[key] == pytest.approx(designed[key], rel=1e-9)
     for key, value in designed["spring"].items():
@@ -144,7 +143,7 @@ def _infeasible(tmp_path, old, new):
     assert old in text
     path = tmp_path / "infeasible.toml"
     path.write_text(text.replace(old, new, 1))
-    return CliRunner().invoke(app, ["design", str(path)])
+    return invoke(["design", str(path)])
 
 
 def test_infeasible_stress(tmp_path):

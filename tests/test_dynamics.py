@@ -5,11 +5,10 @@ import json
 
 import numpy as np
 import pytest
-from typer.testing import CliRunner
+from clirun import invoke
 
 import govopt
 from govopt.analysis import transient as tr
-from govopt.cli import app
 
 PAPER = {"geometry": "series", "reaction_speed": "mean", "reaction_slope": False}
 
@@ -86,7 +85,7 @@ def test_k2_cases_over_the_range():
 
 def test_dynamics_json_keys():
     out = json.loads(
-        CliRunner().invoke(app, ["evaluate", "govopt/specs/hamabe-c.toml", "--json"]).output)
+        invoke(["evaluate", "govopt/specs/hamabe-c.toml", "--json"]).output)
     assert len(out["k2_rad2_s2"]) == len(out["characteristic"])
     assert out["k2_normal_rad2_s2"] > 0
     lc = out["load_changes"][0]

@@ -481,12 +481,11 @@ def test_formula_cells_carry_govopts_values(workbooks, results):
 
 
 def test_cli_writes_workbook(tmp_path):
-    from typer.testing import CliRunner
+    from clirun import invoke
 
-    from govopt.cli import app
 
     out = tmp_path / "cli.xlsx"
-    run = CliRunner().invoke(app, ["evaluate", str(SPECS / "hamabe-b.toml"), "--xlsx", str(out)])
+    run = invoke(["evaluate", str(SPECS / "hamabe-b.toml"), "--xlsx", str(out)])
     assert run.exit_code == 0, run.output
     assert tuple(openpyxl.load_workbook(out).sheetnames) == excel.SHEETS
     assert os.listdir(tmp_path) == ["cli.xlsx"]

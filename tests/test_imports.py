@@ -16,6 +16,9 @@ import sys
 import pytest
 
 HEAVY = ("cvxpy", "scipy", "scipy.optimize", "pint", "numpy")
+#: the command-line frameworks govopt left for argparse (issue 14, target 2: typer built every
+#: option through pydantic, ~0.1 s of CPU before a command ran): no command imports them
+FRAMEWORKS = ("typer", "click", "pydantic")
 
 
 def modules_after(*args: str, cwd=None) -> set[str]:
@@ -35,6 +38,8 @@ def test_help_loads_no_numerics():
     loaded = modules_after("--help")
     assert "govopt.cli" in loaded
     assert not loaded & set(HEAVY), sorted(loaded & set(HEAVY))
+    unwanted = {*FRAMEWORKS, "openpyxl", "matplotlib", "rich", "pandas"}
+    assert not loaded & unwanted, sorted(loaded & unwanted)
 
 
 def test_import_govopt_loads_no_numerics():
@@ -63,7 +68,7 @@ def test_evaluate_loads_no_cvxpy():
 #: What `govopt evaluate` used to import and no longer may (issue 14, target 2).
 NOT_ON_EVALUATE = ("scipy.interpolate", "scipy.optimize", "scipy.special", "scipy.linalg",
                    "scipy.integrate", "scipy.stats", "scipy.sparse", "cvxpy", "matplotlib",
-                   "pandas", "openpyxl", "pyarrow", "dask")
+                   "pandas", "openpyxl", "pyarrow", "dask", *FRAMEWORKS)
 
 
 @pytest.mark.parametrize("args", [("--json",), (), ("textbook-ex4-hartnell.toml", "--json")],
@@ -86,7 +91,7 @@ def test_evaluate_xlsx_loads_openpyxl_only_then(tmp_path):
 def test_design_loads_cvxpy_without_scipy_stats(tmp_path):
     loaded = modules_after("design", "--json", cwd=tmp_path)
     assert "cvxpy" in loaded and "govopt.optimize.spring_gp" in loaded
-    assert not loaded & {"scipy.stats", "matplotlib", "pandas", "openpyxl"}
+    assert not loaded & {"scipy.stats", "matplotlib", "pandas", "openpyxl", *FRAMEWORKS}
 
 
 def run_python(code: str, **env) -> str:

@@ -17,9 +17,8 @@ from xml.dom import minidom
 
 import openpyxl
 import pytest
-from typer.testing import CliRunner
+from clirun import invoke
 
-from govopt.cli import app
 from govopt.errors import GovoptError
 from govopt.report import excel
 from govopt.report.files import atomic_write, check_output, remove_stale_temps
@@ -61,8 +60,8 @@ def _dead_pid() -> int:
     return p.pid
 
 
-def _run(args, **kw):
-    return CliRunner().invoke(app, [str(a) for a in args], **kw)
+def _run(args):
+    return invoke(args)
 
 
 def _one_error_line(result, code=2) -> str:

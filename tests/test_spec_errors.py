@@ -4,9 +4,7 @@ import re
 from pathlib import Path
 
 import pytest
-from typer.testing import CliRunner
-
-from govopt.cli import app
+from clirun import invoke
 
 BASE = Path("govopt/specs/hamabe-a.toml").read_text()
 
@@ -87,7 +85,7 @@ def test_bad_spec_exits_2_with_one_line(tmp_path, case):
     text, pattern = CASES[case]
     path = tmp_path / "bad.toml"
     path.write_text(text)
-    result = CliRunner().invoke(app, ["evaluate", str(path)])
+    result = invoke(["evaluate", str(path)])
     assert result.exit_code == 2, result.output
     lines = result.output.strip().splitlines()
     assert len(lines) == 1, result.output
@@ -97,6 +95,6 @@ def test_bad_spec_exits_2_with_one_line(tmp_path, case):
 
 
 def test_missing_file(tmp_path):
-    result = CliRunner().invoke(app, ["evaluate", str(tmp_path / "nope.toml")])
+    result = invoke(["evaluate", str(tmp_path / "nope.toml")])
     assert result.exit_code == 2
     assert "cannot read spec file" in result.output

@@ -19,11 +19,10 @@ from pathlib import Path
 import numpy as np
 import openpyxl
 import pytest
-from typer.testing import CliRunner
+from clirun import invoke
 
 import govopt
 from govopt.analysis import spring_engineering as se
-from govopt.cli import app
 from govopt.report import excel
 from govopt.report.text import format_result
 from govopt.spec import SpecError, parse_spec
@@ -327,7 +326,7 @@ def test_spring_command_with_a_grade():
             "EN10270-1 DH", "--kind", "extension", "--min-force", "400 N",
             "--fatigue-min-force", "600 N", "--fatigue-max-force", "1000 N",
             "--min-fatigue-safety", "1.3", "--turns-max", "30", "--json"]
-    result = CliRunner().invoke(app, args)
+    result = invoke(args)
     assert result.exit_code == 0, result.output
     out = json.loads(result.output)
     checks = {c["name"]: c for c in out["checks"]}

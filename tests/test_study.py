@@ -355,14 +355,12 @@ def test_exports_and_no_clobber(tmp_path):
 
 
 def test_cli_study_show_export(tmp_path, monkeypatch):
-    from typer.testing import CliRunner
-
-    from govopt.cli import app
+    from clirun import invoke
 
     monkeypatch.chdir(tmp_path)
 
     def cli(*args):
-        return CliRunner().invoke(app, [str(a) for a in args])
+        return invoke(args)
 
     r = cli("study", HARTNELL, "--sweep", "design.ball_weight=1.9 kgf:2.1 kgf:3", "--sweep",
             "design.free_length=15 cm,16 cm", "--pareto", "moving_mass,max:k2_margin",

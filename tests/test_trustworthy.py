@@ -12,19 +12,17 @@ from pathlib import Path
 import numpy as np
 import openpyxl
 import pytest
+from clirun import invoke
 from test_excel import SOFFICE, _named_cells, _recalculate  # the suite's LibreOffice helpers
-from typer.testing import CliRunner
 
 import govopt
 import govopt.evaluation
 from govopt.analysis import friction, statics
-from govopt.cli import app
 from govopt.result import Check
 from govopt.units import UnitError, parse_quantity
 
 BASE = Path("govopt/specs/hamabe-a.toml").read_text()
 KGFCM = 9.80665e-2  # N m
-runner = CliRunner()
 
 
 def _spec_file(tmp_path, *edits: tuple[str, str]) -> Path:
@@ -66,7 +64,7 @@ def test_irregularity_agrees_in_json_text_and_excel(tmp_path):
     path = _spec_file(tmp_path, ("active_turns = 8",
                                  'active_turns = 8\nfree_half_length = "12 cm"'))
     book = tmp_path / "book.xlsx"
-    out = runner.invoke(app, ["evaluate", str(path), "--json", "--xlsx", str(book)])
+    out = invoke(["evaluate", str(path), "--json", "--xlsx", str(book)])
     # exit 1: this off-centre design over-stresses its spring; issue 13 changes the contract
     # (a failed check exited 0)
     assert out.exit_code == 1, out.output
@@ -79,7 +77,7 @@ def test_irregularity_agrees_in_json_text_and_excel(tmp_path):
     assert js["classic"]["sensitiveness"] == pytest.approx(0.0882, abs=1e-4)
     check = next(c for c in js["checks"] if c["name"] == "irregularity")
     assert check["value"] == js["irregularity"]
-    text = runner.invoke(app, ["evaluate", str(path)])
+    text = invoke(["evaluate", str(path)])
     assert text.exit_code == 1, text.output  # the same failed check
     shown = float(re.search(r"^irregularity\s+([0-9.]+)", text.output, re.M).group(1))
     assert shown == pytest.approx(want, abs=5e-6)  # printed to 5 decimals
@@ -126,7 +124,7 @@ def test_falling_characteristic_fails_where_the_papers_k2_passes(tmp_path):
     path = _spec_file(tmp_path, ("active_turns = 8", "active_turns = 24"))
     path.write_text(path.read_text() + '\n[analysis]\ngeometry = "series"\n'
                     'reaction_speed = "mean"\nreaction_slope = false\n')
-    out = runner.invoke(app, ["evaluate", str(path), "--json"])
+    out = invoke(["evaluate", str(path), "--json"])
     assert out.exit_code == 1, out.output  # a failing design exits 1 (issue 13; was 0)
     js = json.loads(out.stdout)
     checks = {c["name"]: c for c in js["checks"]}
@@ -143,7 +141,7 @@ def test_free_length_not_positive_is_an_error_with_the_least_stiffness(tmp_path)
     """80 turns: the spring is too soft; equilibrium at the normal configuration would need a
     negative free half length. Exit 2, and the diagnosis's least stiffness is exact."""
     path = _spec_file(tmp_path, ("active_turns = 8", "active_turns = 80"))
-    out = runner.invoke(app, ["evaluate", str(path)])
+    out = invoke(["evaluate", str(path)])
     assert out.exit_code == 2, out.output
     assert "free half length" in out.output and "Traceback" not in out.output
     kappa_min = float(re.search(r"kappa > ([0-9.e+]+) N/m", out.output).group(1))
@@ -162,7 +160,7 @@ def test_free_length_not_positive_is_an_error_with_the_least_stiffness(tmp_path)
     [("active_turns = 8", "active_turns = 1e299")],
 ])
 def test_impossible_designs_exit_2(tmp_path, edits):
-    out = runner.invoke(app, ["evaluate", str(_spec_file(tmp_path, *edits))])
+    out = invoke(["evaluate", str(_spec_file(tmp_path, *edits))])
     assert out.exit_code == 2, out.output
     # since the limits of issue 15 (govopt/limits.py) these magnitudes are refused when the spec
     # is read, naming the key, before any figure can overflow; either way no result is reported
@@ -174,7 +172,7 @@ def test_impossible_designs_exit_2(tmp_path, edits):
 def test_impossible_design_within_the_limits_exit_2(tmp_path):
     """A spring inside the limits whose figures still make no sense: 1e11 turns (a 7e10 kg
     spring needing a negative free length) is an error with a diagnosis, never a result."""
-    out = runner.invoke(app, ["evaluate", str(_spec_file(
+    out = invoke(["evaluate", str(_spec_file(
         tmp_path, ("active_turns = 8", "active_turns = 1e11")))])
     assert out.exit_code == 2, out.output
     assert "Traceback" not in out.output and "PASS" not in out.output
@@ -191,7 +189,7 @@ def test_design_exits_2_when_its_final_verification_fails(monkeypatch):
         return res
 
     monkeypatch.setattr(govopt.evaluation, "evaluate", failing)
-    out = runner.invoke(app, ["design", "govopt/specs/hamabe-design.toml", "--json"])
+    out = invoke(["design", "govopt/specs/hamabe-design.toml", "--json"])
     assert out.exit_code == 2, out.output
     assert "final verification" in out.output and "injected check: 2 m" in out.output
 
@@ -273,7 +271,7 @@ def test_evaluate_reports_a_stuck_pendulum(tmp_path):
     value is the residual deviation (the whole load change, 7 deg 20')."""
     path = _spec_file(tmp_path, ('dashpot_a1 = "24 kgf*cm*s/rad"',
                                  'dashpot_a1 = "24 kgf*cm*s/rad"\nfriction_moment = "5000 kgf*cm"'))
-    out = runner.invoke(app, ["evaluate", str(path), "--json"])
+    out = invoke(["evaluate", str(path), "--json"])
     assert out.exit_code == 1, out.output  # the failed friction check (issue 13; was 0)
     js = json.loads(out.stdout)
     assert js["friction"][0]["outcome"] == "stuck" and js["friction"][0]["moved"] is False
@@ -281,5 +279,5 @@ def test_evaluate_reports_a_stuck_pendulum(tmp_path):
                  if c["name"] == "friction: the governor follows the load change: unloading")
     assert not check["passed"]
     assert check["value"] == pytest.approx(math.radians(7 + 20 / 60), rel=1e-12)
-    text = runner.invoke(app, ["evaluate", str(path)])
+    text = invoke(["evaluate", str(path)])
     assert text.exit_code == 1 and "the pendulum does not move" in text.output
