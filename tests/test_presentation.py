@@ -249,11 +249,9 @@ def test_piped_reports_are_rich_text_without_rich(which, request, monkeypatch):
 def test_json_infinities_are_null_with_a_flag():
     """Hamabe's case a returns aperiodically: its first arrival never comes. The JSON is strict
     (no Infinity token): null with ``<key>_infinite``."""
-    from typer.testing import CliRunner
+    from clirun import invoke
 
-    from govopt.cli import app
-
-    run = CliRunner().invoke(app, ["evaluate", str(SPECS / "hamabe-a.toml"), "--json"])
+    run = invoke(["evaluate", str(SPECS / "hamabe-a.toml"), "--json"])
     assert run.exit_code == 1, run.output  # case a fails its irregularity: exit 1
     lc = _strict(run.stdout)["load_changes"][0]
     assert lc["first_arrival_time_s"] is None and lc["first_arrival_time_s_infinite"] == "+inf"
