@@ -463,7 +463,10 @@ class _Parser(argparse.ArgumentParser):
     """argparse with govopt's conventions: a bad command line is one line ``error: ...`` and
     exit code 2 (as every user's error), and an option's value is the next word whatever it
     starts with (``--min-force -1e3N`` is a value, as click read it, not an unknown option);
-    no abbreviated options (``--geo`` is not ``--geometry``)."""
+    no abbreviated options (``--geo`` is not ``--geometry``); a command names the words it does
+    not know itself (its help is where to look)."""
+
+    command = False  # a command's own parser (set by _command)
 
     def __init__(self, *args, allow_abbrev: bool = False, **kw):
         super().__init__(*args, allow_abbrev=allow_abbrev, **kw)
@@ -481,7 +484,10 @@ class _Parser(argparse.ArgumentParser):
                 break
             glued = word in takes and words and words[0].startswith("-")
             out.append(f"{word}={words.pop(0)}" if glued else word)
-        return super().parse_known_args(out, namespace)
+        namespace, extras = super().parse_known_args(out, namespace)
+        if extras and self.command:
+            self.error(f"unrecognized arguments: {' '.join(extras)}")
+        return namespace, extras
 
 
 #: the metavar of each option's type, as `govopt X --help` shows it (`--xlsx <path>`)
@@ -512,6 +518,7 @@ def _command(group, name: str, run, short: str) -> _Parser:
     docstring atop its own help."""
     p = group.add_parser(name, help=short, description=" ".join(run.__doc__.split()))
     p.set_defaults(_run=run)
+    p.command = True
     return p
 
 

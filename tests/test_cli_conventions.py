@@ -67,6 +67,50 @@ def test_evaluate_exit_codes(tmp_path):
     assert bad.returncode == 2 and bad.stderr.startswith("error: ") and bad.stdout == ""
 
 
+def test_no_command_prints_the_help():
+    """`govopt` (and `govopt study`) with no command print the help, each command with its
+    one-line help, on stdout; exit 2: nothing was run."""
+    run = invoke([])
+    assert run.exit_code == 2 and run.stderr == ""
+    for command, short in (("evaluate", "Evaluate the spec's design"), ("design", "Find the"),
+                           ("spring", "Least-mass helical"), ("bench", "Speed against error"),
+                           ("examples", "List the bundled"), ("init", "Copy a bundled"),
+                           ("study", "Batch trade studies")):
+        assert re.search(rf"^\s+{command}\s+{re.escape(short)}", run.stdout, re.M), command
+    study = invoke(["study"])
+    assert study.exit_code == 2 and re.search(r"^\s+export\s+Export", study.stdout, re.M)
+
+
+@pytest.mark.parametrize("args", [
+    ["evaluate", "--bogus"], ["nosuch"], ["spring", "--force", "1 N"], ["evaluate", "a", "b"],
+    ["evaluate", "--geo", "series"],  # no abbreviated options
+    ["study", "run", "x.toml", "--lhs", "abc"], ["study", "export", "x.db"], ["--bogus"],
+    ["init"], ["evaluate", "--json", "--plots"]])
+def test_bad_command_line_is_one_error_line(args):
+    run = invoke(args)
+    assert run.exit_code == 2 and run.stdout == "" and "Traceback" not in run.stderr, run.output
+    assert len(run.stderr.splitlines()) == 1 and run.stderr.startswith("error: "), run.stderr
+    assert "--help" in run.stderr  # where to look
+
+
+def test_an_options_value_may_start_with_a_dash():
+    """The word after an option that takes a value is its value (as click read it), even
+    `-x`: the command, not the parser, says what is wrong with it."""
+    run = invoke(["evaluate", "--geometry", "-x"])
+    assert run.exit_code == 2
+    assert run.stderr == "error: --geometry: expected 'exact' or 'series', got '-x'\n"
+
+
+def test_closed_stdout_is_quiet(tmp_path):
+    """`govopt evaluate --json | head -c0`: stdout closed before the report is written; exit 1
+    (as click did), no traceback, nothing on stderr."""
+    p = subprocess.Popen([*CLI, "evaluate", SPECS / "hamabe-b.toml", "--json"], cwd=tmp_path,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    p.stdout.close()  # before the evaluation (~0.4 s) ends: its write meets a closed pipe
+    err = p.stderr.read()
+    assert p.wait(timeout=120) == 1 and err == b""
+
+
 def test_readme_documents_the_exit_codes():
     errors = (ROOT / "README.md").read_text(encoding="utf-8").split("## Errors", 1)[1]
     for code in (0, 1, 2, 3):

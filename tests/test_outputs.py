@@ -250,6 +250,23 @@ def test_cli_unexpected_error_is_one_line_exit_3(monkeypatch):
     assert isinstance(debug.exception, ZeroDivisionError)  # --debug lets the traceback through
 
 
+def test_cli_debug_from_the_environment(monkeypatch):
+    """GOVOPT_DEBUG=1 is --debug; 0 (or empty) is not; anything else is a user's error."""
+    import govopt.evaluation
+
+    def broken(spec):
+        raise ZeroDivisionError("float division by zero")
+
+    monkeypatch.setattr(govopt.evaluation, "evaluate", broken)
+    for value, code in (("1", 1), ("yes", 1), ("0", 3), ("", 3), ("maybe", 2)):
+        monkeypatch.setenv("GOVOPT_DEBUG", value)
+        run = _run(["evaluate"])
+        assert run.exit_code == code, (value, run.output)
+        assert isinstance(run.exception, ZeroDivisionError) == (code == 1), value
+    assert _one_error_line(run) == ("error: GOVOPT_DEBUG: expected 1 or 0 (true/false, yes/no, "
+                                    "on/off), got 'maybe'")
+
+
 def test_cli_warnings_shown_one_line_each_on_success_only(monkeypatch):
     import govopt.evaluation
 
