@@ -1,15 +1,28 @@
-"""``import cvxpy`` without the ``scipy.stats`` it loads for one atom govopt never uses.
+"""``import cvxpy`` without two ``scipy`` modules it loads at start-up and govopt never uses.
 
-cvxpy (1.4-1.9) imports ``scipy.stats`` at start-up for ``entropy``, used only by its quantum
-relative entropy atom; that import alone is about 0.4 s of CPU, a quarter of ``govopt design``
-(issue 14, target 2). Here ``scipy.stats`` stands in, while cvxpy is imported, as a placeholder
-whose ``entropy`` imports the real module when first called; afterwards ``import scipy.stats``
-works as usual. A cvxpy that asks the placeholder for anything else is imported the ordinary
-way instead (``scipy.stats`` included). Nothing else changes: the same cvxpy, the same solvers.
+cvxpy (1.4-1.9) imports, when it is imported (issue 14, target 2; CPU on the reference machine):
+
+* ``scipy.stats`` for ``entropy``, used only by its quantum relative entropy atom: about 0.3 s;
+* ``scipy.optimize``, only to ask whether its SCIPY solver is installed (``installed_solvers()``
+  runs every solver's ``import_solver()``; SCIPY's is ``from scipy import optimize``): about
+  0.12 s. govopt's GP is solved by Clarabel (:func:`govopt.optimize.spring_gp._default_solver`).
+
+While cvxpy is imported, each of them that is not loaded yet stands in as a placeholder module:
+``scipy.stats``'s holds an ``entropy`` that imports the real module when first called;
+``scipy.optimize``'s is there only if scipy has that module (``importlib.util.find_spec``), so
+the probe's answer, and ``cvxpy.installed_solvers()``, are the true ones. Afterwards the
+placeholders are gone from ``sys.modules`` and ``import scipy.optimize`` works as usual (and a
+name asked of a kept placeholder comes from the real module). A cvxpy that asks a placeholder
+for anything while it loads is imported the ordinary way instead. :func:`installed_solvers`
+asks cvxpy again the same way (its ``installed_solvers()`` probes every solver on each call).
+Nothing else changes: the same cvxpy, the same solvers.
 """
 
 from __future__ import annotations
 
+import contextlib
+import importlib
+import importlib.util
 import sys
 import types
 
@@ -20,26 +33,69 @@ def _entropy(*args, **kwargs):
     return stats.entropy(*args, **kwargs)
 
 
+def _stand_in(name: str, **attrs) -> types.ModuleType:
+    """A placeholder for module ``name``: ``attrs``, nothing else while it is in ``sys.modules``
+    (so that a ``from name import other`` fails and :func:`load` starts again), and the real
+    module's names once it has left."""
+    module = types.ModuleType(name, "govopt's placeholder while cvxpy loads")
+    module.__dict__.update(attrs)
+
+    def __getattr__(attr: str):
+        if attr.startswith("__") or sys.modules.get(name) is module:
+            raise AttributeError(f"module {name!r} has no attribute {attr!r}")
+        return getattr(importlib.import_module(name), attr)
+
+    module.__getattr__ = __getattr__
+    return module
+
+
+@contextlib.contextmanager
+def _placeholders(stats: bool = True):
+    """``scipy.optimize`` and (``stats``) ``scipy.stats`` as placeholders, those not loaded yet,
+    while the block runs; yields the list of them."""
+    stand_ins = [_stand_in("scipy.stats", entropy=_entropy)] if stats else []
+    if importlib.util.find_spec("scipy.optimize") is not None:  # the SCIPY probe's true answer
+        stand_ins.append(_stand_in("scipy.optimize"))
+    stand_ins = [m for m in stand_ins if m.__name__ not in sys.modules]
+    sys.modules.update((m.__name__, m) for m in stand_ins)
+    try:
+        yield stand_ins
+    finally:
+        _remove(stand_ins)
+
+
+def _remove(stand_ins: list[types.ModuleType]) -> None:
+    """Take the placeholders out of ``sys.modules`` and off the ``scipy`` package."""
+    for m in stand_ins:
+        parent, _, child = m.__name__.rpartition(".")
+        if sys.modules.get(m.__name__) is m:
+            del sys.modules[m.__name__]
+        if getattr(sys.modules.get(parent), "__dict__", {}).get(child) is m:
+            delattr(sys.modules[parent], child)
+
+
 def load():
-    """The ``cvxpy`` module, imported without ``scipy.stats`` if neither is loaded yet."""
-    if "cvxpy" in sys.modules or "scipy.stats" in sys.modules:
+    """The ``cvxpy`` module, imported without ``scipy.stats`` and ``scipy.optimize`` if they are
+    not loaded yet."""
+    if "cvxpy" in sys.modules:
         import cvxpy
 
         return cvxpy
-    stand_in = types.ModuleType("scipy.stats", "govopt's placeholder while cvxpy loads")
-    stand_in.entropy = _entropy
-    sys.modules["scipy.stats"] = stand_in
-    try:
-        import cvxpy
-    except ImportError:  # a cvxpy that imports more of scipy.stats: start again without this
-        for name in [m for m in sys.modules if m == "cvxpy" or m.startswith("cvxpy.")]:
-            del sys.modules[name]
-        del sys.modules["scipy.stats"]
-        import cvxpy
-    finally:
-        if sys.modules.get("scipy.stats") is stand_in:
-            del sys.modules["scipy.stats"]
+    with _placeholders() as stand_ins:
+        try:
+            import cvxpy
+        except (ImportError, AttributeError):  # a cvxpy using more of them: again without them
+            for name in [m for m in sys.modules if m == "cvxpy" or m.startswith("cvxpy.")]:
+                del sys.modules[name]
+            _remove(stand_ins)
+            import cvxpy
     return cvxpy
+
+
+def installed_solvers() -> list[str]:
+    """``cvxpy.installed_solvers()``, whose SCIPY probe meets the placeholder (see above)."""
+    with _placeholders(stats=False):
+        return cvxpy.installed_solvers()
 
 
 cvxpy = load()

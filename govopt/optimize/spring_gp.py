@@ -56,7 +56,8 @@ import numpy as np
 
 from govopt.model import spring
 
-from ._cvxpy import cvxpy as cp  # without scipy.stats (issue 14)
+from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize (issue 14)
+from ._cvxpy import installed_solvers
 
 __all__ = [
     "CORRECTIONS",
@@ -113,7 +114,7 @@ _SOLVED = ("optimal", "optimal_inaccurate")
 
 
 def _default_solver() -> str | None:
-    installed = cp.installed_solvers()
+    installed = installed_solvers()
     for name in ("CLARABEL", "ECOS", "SCS"):
         if name in installed:
             return name

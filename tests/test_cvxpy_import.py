@@ -1,0 +1,65 @@
+"""govopt's ``import cvxpy`` (govopt/optimize/_cvxpy.py) leaves out ``scipy.stats`` and
+``scipy.optimize`` (issue 14, target 2) and changes nothing else: the same installed solvers
+as a plain import, the real modules afterwards, and an ordinary import for a cvxpy that uses
+them as it loads. The placeholder's ``entropy`` and a cvxpy wanting more of ``scipy.stats``:
+tests/test_imports.py.
+"""
+
+import pytest
+from test_imports import modules_after, run_python
+
+
+def test_design_loads_neither_scipy_stats_nor_scipy_optimize(tmp_path):
+    loaded = modules_after("design", "--json", cwd=tmp_path)
+    assert "cvxpy" in loaded and "govopt.optimize.spring_gp" in loaded
+    assert not loaded & {"scipy.stats", "scipy.optimize"}, sorted(loaded)
+
+
+def test_solvers_are_a_plain_imports_and_scipy_optimize_loads_later():
+    """The SCIPY solver's probe meets a placeholder (at import and in govopt's
+    ``installed_solvers``): the same installed solvers as a plain ``import cvxpy`` and as cvxpy's
+    own probe, and the real scipy.optimize solves with SCIPY afterwards."""
+    ours = run_python(
+        "import sys\n"
+        "from govopt.optimize._cvxpy import cvxpy as cp, installed_solvers\n"
+        "ours = installed_solvers()\n"
+        "assert not {'scipy.optimize', 'scipy.stats'} & set(sys.modules)\n"
+        "assert ours == cp.installed_solvers()\n"
+        "print(ours)\n"
+        "x = cp.Variable(2)\n"
+        "p = cp.Problem(cp.Minimize(x[0] + 2 * x[1]), [x >= 1, x[0] + x[1] >= 3])\n"
+        "print(round(p.solve(solver='SCIPY'), 9), sys.modules['scipy.optimize'].linprog.__name__)")
+    plain = run_python("import cvxpy\nprint(cvxpy.installed_solvers())")
+    solvers, solved = ours.splitlines()
+    assert solvers == plain and "'CLARABEL'" in solvers
+    assert solved == "4.0 linprog"  # x = (2, 1): min x0 + 2 x1 on x >= 1, x0 + x1 >= 3
+
+
+def fake_cvxpy(tmp_path, body: str) -> str:
+    """A folder holding a stand-in ``cvxpy`` package whose ``__init__`` is ``body``."""
+    (tmp_path / "cvxpy").mkdir()
+    (tmp_path / "cvxpy" / "__init__.py").write_text(body)
+    return str(tmp_path)
+
+
+@pytest.mark.parametrize("body", ["from scipy.optimize import linprog\n",
+                                  "import scipy.optimize as opt\nlinprog = opt.linprog\n"],
+                         ids=["from-import", "attribute"])
+def test_cvxpy_using_scipy_optimize_as_it_loads_is_imported_as_usual(tmp_path, body):
+    """A (future) cvxpy using scipy.optimize while it loads: the placeholders step aside."""
+    out = run_python("import sys\n"
+                     "from govopt.optimize._cvxpy import cvxpy\n"
+                     "m = sys.modules['scipy.optimize']\n"
+                     "print(cvxpy.linprog.__module__, 'placeholder' in (m.__doc__ or ''))",
+                     PYTHONPATH=fake_cvxpy(tmp_path, body))
+    assert out == "scipy.optimize._linprog False"
+
+
+def test_a_kept_placeholder_gives_the_real_modules_names(tmp_path):
+    """A (future) cvxpy keeping ``scipy.optimize`` for later gets the real module's names."""
+    out = run_python("import sys\n"
+                     "from govopt.optimize._cvxpy import cvxpy\n"
+                     "print('scipy.optimize' in sys.modules,\n"
+                     "      cvxpy.OPT.brentq(lambda x: x - 2, 0, 3))",
+                     PYTHONPATH=fake_cvxpy(tmp_path, "import scipy.optimize as OPT\n"))
+    assert out == "False 2.0"
