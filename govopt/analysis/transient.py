@@ -1362,20 +1362,25 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     n, M = t.shape
     rows = np.arange(n)
     xi, xd = y[:, 0], y[:, 1]
-    amp = np.abs(xi).max(axis=1)
+    ax = np.abs(xi)
+    amp = ax.max(axis=1)
     clip = 1.5 * (1.0 - math.cos(math.pi / per_period))  # grid's worst clipping of a lobe
     scale = np.abs(d0)
     z = np.nonzero(scale == 0)[0]
     if z.size:
-        scale[z] = _exact_max(resp.subset(z), t[z], xd[z], np.abs(xi[z]), None, clip, amp[z])[0]
+        scale[z] = _exact_max(resp.subset(z), t[z], xd[z], ax[z], None, clip, amp[z])[0]
     b = band * scale
     v = -s0[:, None] * xi  # > 0 past the new equilibrium
     lr, lk = _local_max(v)
     # --- first arrival: v from < 0 to >= 0 on the grid, or a clipped lobe reaching 0 earlier
-    nxt = np.concatenate([v[:, 2:], v[:, -1:]], axis=1)  # runs of exact 0 (underflow) do not
-    cross = (v[:, :-1] < 0) & ((v[:, 1:] > 0) | ((v[:, 1:] == 0) & (nxt > 0)))  # cross
-    has = cross.any(axis=1)
-    j = np.where(has, np.argmax(cross, axis=1), M)
+    j = np.full(n, M)
+    pos = np.nonzero(np.fmax.reduce(v, axis=1) > 0)[0]  # only rows reaching the far side cross
+    if pos.size:
+        w = v[pos]
+        nxt = np.concatenate([w[:, 2:], w[:, -1:]], axis=1)  # runs of exact 0 (underflow) do
+        cross = (w[:, :-1] < 0) & ((w[:, 1:] > 0) | ((w[:, 1:] == 0) & (nxt > 0)))  # not cross
+        j[pos] = np.where(cross.any(axis=1), np.argmax(cross, axis=1), M)
+    has = j < M
     lo = np.where(has, t[rows, np.minimum(j, M - 2)], np.nan)
     hi = np.where(has, t[rows, np.minimum(j + 1, M - 1)], np.nan)
     vk = v[lr, lk]
@@ -1395,7 +1400,6 @@ def _events_on_grid(resp, t, y, s0, band, d0, stable, per_period):
     # --- over-regulation: grid maximum, and the exact peaks of the lobes that may hold it
     over, t_over = _exact_max(resp, t, xd, v, -s0, clip, amp, (lr, lk))
     # --- settling: last time |xi| = b
-    ax = np.abs(xi)
     above = ax > b[:, None]
     anyab = above.any(axis=1)
     last = np.where(anyab, M - 1 - np.argmax(above[:, ::-1], axis=1), -1)
@@ -1469,24 +1473,34 @@ def _grid_values(resp, t):
         for s in range(0, rows.size, step):
             r = rows[s : s + step]
             tt, lr, cr = t[r], l[r], c[r]
+            xi, xd, e = np.zeros(tt.shape), np.zeros(tt.shape), np.empty(tt.shape)
             if not cplx[r[0]]:  # three real modes
                 lr, cr = lr.real, cr.real
-                xi = xd = 0.0
                 for k in range(3):
-                    term = cr[:, k, None] * np.exp(lr[:, k, None] * tt)
-                    xi = xi + term
-                    xd = xd + lr[:, k, None] * term
+                    np.exp(np.multiply(lr[:, k, None], tt, out=e), out=e)
+                    e *= cr[:, k, None]
+                    xi += e
+                    e *= lr[:, k, None]
+                    xd += e
             else:  # a real mode and a conjugate pair: c_r e^{rt} + 2 Re(c_p e^{pt})
                 k = np.arange(r.size)
                 ir, ip = np.argmin(np.abs(lr.imag), axis=1), np.argmax(lr.imag, axis=1)
                 rr, c_r = lr[k, ir].real[:, None], cr[k, ir].real[:, None]
                 p, cp = lr[k, ip][:, None], cr[k, ip][:, None]
-                er = c_r * np.exp(rr * tt)
-                ep = 2.0 * np.exp(p.real * tt)
-                cs, sn = ep * np.cos(p.imag * tt), ep * np.sin(p.imag * tt)
                 cpp = cp * p
-                xi = er + cp.real * cs - cp.imag * sn
-                xd = rr * er + cpp.real * cs - cpp.imag * sn
+                np.exp(np.multiply(rr, tt, out=e), out=e)
+                e *= c_r
+                xi += e
+                e *= rr
+                xd += e
+                ep = np.exp(np.multiply(p.real, tt, out=e))
+                ep *= 2.0
+                q = np.multiply(p.imag, tt, out=e)
+                for f, a, b in ((np.cos, cp.real, cpp.real), (np.sin, -cp.imag, -cpp.imag)):
+                    w = f(q)
+                    w *= ep
+                    xi += a * w
+                    xd += b * w
             out[r, 0], out[r, 1] = xi, xd
     return out
 
@@ -1601,8 +1615,11 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
                 Ge, Ue = g_end[loc, None], u_end[loc, None]
                 t0 = np.minimum(1e-3 / lam_max[idx, None], 1e-3 * Ge)
                 tl = t0 * (Ge / t0) ** u_log[None, :]
-                tu = Ue * np.linspace(0.0, 1.0, wd + 1)[None, :] if wd else np.zeros((idx.size, 1))
-                t = np.sort(np.concatenate([tl, tu], axis=1), axis=1)
+                if wd:  # merge the uniform part into the (increasing) log-spaced one
+                    tu = Ue * np.linspace(0.0, 1.0, wd + 1)[None, :]
+                    t = np.sort(np.concatenate([tl, tu], axis=1), axis=1)
+                else:
+                    t = np.concatenate([np.zeros((idx.size, 1)), tl], axis=1)
                 sub = resp.subset(idx)
                 y = _grid_values(sub, t)
                 a_, o_, to_, st_, b = _events_on_grid(sub, t, y, s0[idx], band, d[idx, 0],
