@@ -31,7 +31,7 @@ import numpy as np
 from ..analysis import loadchange, statics
 from ..analysis import transient as tr
 from ..errors import DesignError, InfeasibleError
-from ..limits import design_size_error
+from ..limits import MAX_TRANSIENT_POINTS, design_size_error
 from ..model import spring
 from ..spec import Design, Requirements, Spec
 from ..units import G_STANDARD, SI_UNITS
@@ -196,8 +196,11 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
             ok = ok & (vib <= req.max_vibration)
     if fatigue is not None:  # the spring's life under the vibration (issue 11)
         ok = ok & (fatigue(vib) >= (req.min_fatigue_safety or 1.0))
+    # the best admissible dash-pot: an infinite score (settling not decided within the time
+    # grid's limit, limits.MAX_TRANSIENT_POINTS: a huge flywheel) ranks after every finite one
+    # but before every inadmissible one, so the pick is always an admissible dash-pot
     score = np.where(ok, vib if req.objective == "vibration" else settle, np.inf)
-    best = np.argmin(score, axis=1)
+    best = np.argmin(np.where(ok, np.minimum(score, np.finfo(float).max), np.inf), axis=1)
     idx = np.arange(n)
     feasible = np.any(ok, axis=1)
     f_ok = np.where(ok, f, np.nan)
@@ -934,7 +937,11 @@ def _dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
     if req.max_settling_time is not None and settle > req.max_settling_time:
         return (f"{spec.path}: infeasible: requirements.max_settling_time "
                 f"{req.max_settling_time:g} s conflicts with 'no over-regulation' and eq. (32): "
-                f"the fastest admissible settling is {settle:.4g} s {where}")
+                + (f"the fastest admissible settling is {settle:.4g} s {where}"
+                   if np.isfinite(settle) else
+                   f"no admissible dash-pot settles within the analysed horizon (at most "
+                   f"{MAX_TRANSIENT_POINTS} time points: the load change's slowest mode is "
+                   f"too slow, as with a very large flywheel) {where}"))
     vib = least.get("vibration", np.inf)
     if req.max_vibration is not None and vib > req.max_vibration:
         return (f"{spec.path}: infeasible: requirements.max_vibration "
