@@ -124,7 +124,7 @@ class Result:
         cm = dict(self.classic)
         effort = cm.pop("effort_unit", "N*m").replace("*", "_")
         power = cm.pop("power_unit", "J")
-        band = "N_m" if self.spec.governor.coordinate == "angle" else "N"
+        band = self.spec.governor.key_unit("force")
         renamed = {"effort": f"effort_{effort}", "power": f"power_{power}",
                    "friction_band": f"friction_band_{band}"}
         return {renamed.get(k, k): v for k, v in cm.items()}
@@ -134,7 +134,7 @@ class Result:
         st, sd, spec = self.statics, self.spring, self.spec
         gov = spec.governor
         stem = gov.coordinate_name.split()[-1]
-        q = "N_m" if gov.coordinate == "angle" else "N"  # generalised force unit
+        q = gov.key_unit("force")  # generalised force unit
         names = [f"{n}_{q}" for n in gov.force_names]
         w0sq = self.omega_reference**2
         rows = []

@@ -331,3 +331,61 @@ def test_units_invariance_and_json():
     assert d["n_strokes"] == 5 and d["outcome"] == "max_strokes"
     assert d["phases"][0]["kind"] == "stick"
     json.dumps(friction.load_change_model(govopt.load_spec("govopt/specs/hamabe-a.toml")).to_dict())
+
+
+def _keys(obj) -> set[str]:
+    if isinstance(obj, dict):
+        return set(obj) | {k for v in obj.values() for k in _keys(v)}
+    if isinstance(obj, list):
+        return {k for v in obj for k in _keys(v)}
+    return set()
+
+
+def test_friction_keys_follow_the_coordinate(tmp_path):
+    """A Porter governor (coordinate: the ball radius, m) with sleeve friction on an engine:
+    every friction figure's key names the length's unit (m, m/s, N, kg, N s/m, N s = N per
+    rad/s of speed, rad/(m s^2)), not the shaft's (rad, N m, kg m^2); the speed error stays in
+    rad/s. The text report shows the first stroke's end in mm."""
+    text = open("govopt/specs/porter-engine.toml").read().replace(
+        'sleeve_offset = "3.76 cm"', 'sleeve_offset = "3.76 cm"\nsleeve_friction = "1 kgf"')
+    path = tmp_path / "porter-friction.toml"
+    path.write_text(text)
+    spec = govopt.load_spec(path)
+    res = govopt.evaluate(spec)
+    d = json.loads(json.dumps(res.to_dict()))
+    fr = d["friction"][0]
+    keys = _keys(fr)
+    angular = sorted(k for k in keys if k.endswith(("_rad", "_N_m", "_kg_m2", "_N_m_s"))
+                     or (k.endswith("_rad_per_s") and not k.startswith(("eta", "speed",
+                                                                            "friction_speed"))))
+    assert angular == []
+    assert {"I_kg", "f_N_s_per_m", "C_N_s", "R_rad_per_m_s2", "M0_N", "xi0_m", "xi_dot0_m_per_s",
+            "first_stroke_end_m", "final_xi_m", "resting_offset_m"} <= set(fr)
+    assert {"xi_start_m", "net_start_N", "amplitude_m", "xi_dot_end_m_per_s"} <= set(
+        fr["phases"][0])
+    # the values are the SI figures of the length coordinate: xi0 = 21 cm - 23 cm, the band
+    # per ball R/2 |ds/dr| (textbook 3.4(b)) at 23 cm, the dash-pot 400 N s/m as given
+    assert fr["xi0_m"] == pytest.approx(-0.02, rel=1e-12)
+    assert fr["M0_N"] == pytest.approx(float(spec.governor.friction(0.23)), rel=1e-12)
+    assert fr["M0_N"] == pytest.approx(0.5 * 9.80665 * abs(float(
+        spec.governor.travel_slope(0.23))), rel=1e-12)
+    assert fr["f_N_s_per_m"] == 400.0
+    # the speed band M0/C is a speed whatever the coordinate: N / (N s) = 1/s (rad/s)
+    assert fr["friction_speed_band_rad_per_s"] == pytest.approx(fr["M0_N"] / fr["C_N_s"],
+                                                                rel=1e-12)
+    from govopt.report.text import format_result
+
+    line = next(t for t in format_result(res).splitlines() if "first stroke ends" in t)
+    assert " mm " in line and " deg " not in line
+
+
+def test_shaft_friction_keys_are_angular():
+    """The shaft governor's friction figures keep the angle's units (rad, N m, kg m^2; the
+    dash-pot in N m s/rad as everywhere else)."""
+    spec = govopt.load_spec("govopt/specs/hamabe-a.toml")
+    d = friction.friction_load_change(spec, friction_moment=M0_PAPER, dashpot=0.0,
+                                      max_strokes=3).to_dict()
+    assert {"I_kg_m2", "f_N_m_s_per_rad", "C_N_m_s", "R_per_s2", "M0_N_m", "xi0_rad",
+            "xi_dot0_rad_per_s", "first_stroke_end_rad"} <= set(d)
+    assert {"xi_start_rad", "net_start_N_m", "amplitude_rad"} <= set(d["phases"][0])
+    assert d["M0_N_m"] == M0_PAPER

@@ -66,10 +66,11 @@ pendulum cannot move yet; here it first sticks until the speed has changed enoug
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
+from ..governors.base import KEY_UNITS
 from ..spec import LoadChange, Spec
 from . import statics
 from .loadchange import LoadChangeModel, load_change_model  # noqa: F401 (re-exported)
@@ -200,14 +201,18 @@ class Phase:
         """The stroke passes ``xi = 0`` (xi is monotonic within a stroke)."""
         return self.xi_start * self.xi_end < 0.0 or (self.xi_start != 0 and self.xi_end == 0)
 
-    def to_dict(self) -> dict:
+    def to_dict(self, units: dict | None = None) -> dict:
+        """JSON-ready; ``units``: the keys' units at the coordinate
+        (:meth:`govopt.governors.base.Governor.key_units`; default the shaft's angle)."""
+        units = units or KEY_UNITS["angle"]
+        x, q = units["x"], units["force"]
         return {"kind": self.kind, "t_start_s": self.t_start, "t_end_s": _num(self.t_end),
-                "duration_s": _num(self.duration), "xi_start_rad": self.xi_start,
-                "xi_end_rad": self.xi_end, "eta_start_rad_per_s": self.eta_start,
+                "duration_s": _num(self.duration), f"xi_start_{x}": self.xi_start,
+                f"xi_end_{x}": self.xi_end, "eta_start_rad_per_s": self.eta_start,
                 "eta_end_rad_per_s": self.eta_end, "direction": self.direction,
-                "net_start_N_m": self.net_start, "net_end_N_m": self.net_end,
-                "amplitude_rad": self.amplitude, "travel_rad": self.travel,
-                "xi_dot_end_rad_per_s": self.xi_dot_end, "complete": self.complete}
+                f"net_start_{q}": self.net_start, f"net_end_{q}": self.net_end,
+                f"amplitude_{x}": self.amplitude, f"travel_{x}": self.travel,
+                f"xi_dot_end_{units['rate']}": self.xi_dot_end, "complete": self.complete}
 
 
 @dataclass(frozen=True)
@@ -238,6 +243,10 @@ class FrictionResult:
     t_horizon: float
     settle_tol: float
     grid_step: float = field(repr=False, default=math.nan)
+    #: the JSON keys' units at the governor's coordinate (:meth:`Governor.key_units`): the
+    #: shaft's (kg m^2, N m s/rad, N m s, 1/s^2, N m, rad) unless a spec's governor says
+    units: dict = field(default_factory=lambda: dict(KEY_UNITS["angle"]), repr=False,
+                        compare=False)
 
     # ---- derived quantities ------------------------------------------------------------------
     @property
@@ -364,23 +373,27 @@ class FrictionResult:
         return out
 
     def to_dict(self) -> dict:
+        """JSON-ready, each key's unit in its name at the governor's coordinate (``units``)."""
+        u = self.units
+        x = u["x"]
         return {
             "model": "Hamabe eqs. (42)-(46), hybrid stick-slip, static = kinetic friction",
-            "I_kg_m2": self.I, "f_N_m_s": self.f, "k2_per_s2": self.k2, "C_N_m_s": self.C,
-            "R_per_s2": self.R, "M0_N_m": self.M0, "xi0_rad": self.xi0,
-            "eta0_rad_per_s": self.eta0, "xi_dot0_rad_per_s": self.xi_dot0,
+            f"I_{u['inertia']}": self.I, f"f_{u['damping']}": self.f, "k2_per_s2": self.k2,
+            f"C_{u['lever']}": self.C, f"R_{u['engine']}": self.R, f"M0_{u['force']}": self.M0,
+            f"xi0_{x}": self.xi0, "eta0_rad_per_s": self.eta0,
+            f"xi_dot0_{u['rate']}": self.xi_dot0,
             "outcome": self.outcome, "moved": self.moved, "note": self.note,
             "t_simulated_s": self.t_simulated,
             "t_horizon_s": self.t_horizon, "settle_tol": self.settle_tol,
-            "n_strokes": len(self.strokes), "first_stroke_end_rad": self.first_stroke_end,
+            "n_strokes": len(self.strokes), f"first_stroke_end_{x}": self.first_stroke_end,
             "over_regulation": self.over_regulation, "hunting": self.hunting,
             "equilibrium_crossings": self.equilibrium_crossings,
-            "final_xi_rad": self.final_state[0],
-            "resting_offset_rad": self.resting_offset,
+            f"final_xi_{x}": self.final_state[0],
+            f"resting_offset_{x}": self.resting_offset,
             "speed_offset_rad_per_s": self.speed_offset,
             "friction_speed_band_rad_per_s": self.M0 / self.C if self.C else None,
             "creep_ratio": self.creep_ratio,
-            "phases": [p.to_dict() for p in self.phases],
+            "phases": [p.to_dict(u) for p in self.phases],
         }
 
 
@@ -556,4 +569,5 @@ def friction_load_change(spec: Spec, sd: statics.SpringDesign | None = None,
     """
     m = load_change_model(spec, sd, load_change, dashpot=dashpot,
                           friction_moment=friction_moment)
-    return friction_transient(m.I, m.f, m.k2, m.C, m.R, m.M0, m.xi0, m.eta0, **kwargs)
+    return replace(friction_transient(m.I, m.f, m.k2, m.C, m.R, m.M0, m.xi0, m.eta0, **kwargs),
+                   units=m.units)

@@ -8,13 +8,13 @@ of :mod:`govopt.analysis.transient`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..governors.base import KEY_UNITS
 from ..jsonable import number
 from ..spec import LoadChange, Spec
-from ..units import SI_UNITS
 from . import statics, vyshnegradsky
 from . import transient as tr
 
@@ -55,6 +55,10 @@ class LoadChangeModel:
     alpha1: float = math.nan  # old equilibrium, rad
     omega0: float = math.nan  # equilibrium speed at alpha0, rad/s
     omega1: float = math.nan  # equilibrium speed at alpha1, rad/s
+    #: the JSON keys' units at the governor's coordinate (:meth:`Governor.key_units`; above,
+    #: the shaft's: for a length coordinate kg, N s/m, N s, rad/(m s^2), N, m)
+    units: dict = field(default_factory=lambda: dict(KEY_UNITS["angle"]), repr=False,
+                        compare=False)
 
     @property
     def cubic(self) -> tuple[float, float, float, float]:
@@ -68,12 +72,14 @@ class LoadChangeModel:
 
     def to_dict(self) -> dict:
         a0, a1, a2, a3 = self.cubic
-        return {"I_kg_m2": self.I, "f_N_m_s": self.f, "k2_per_s2": self.k2, "C_N_m_s": self.C,
-                "R_per_s2": self.R, "M0_N_m": self.M0, "xi0_rad": self.xi0,
-                "eta0_rad_per_s": self.eta0, "alpha0_rad": number(self.alpha0),
-                "alpha1_rad": number(self.alpha1), "omega0_rad_per_s": number(self.omega0),
+        u = self.units
+        return {f"I_{u['inertia']}": self.I, f"f_{u['damping']}": self.f, "k2_per_s2": self.k2,
+                f"C_{u['lever']}": self.C, f"R_{u['engine']}": self.R,
+                f"M0_{u['force']}": self.M0, f"xi0_{u['x']}": self.xi0,
+                "eta0_rad_per_s": self.eta0, f"alpha0_{u['x']}": number(self.alpha0),
+                f"alpha1_{u['x']}": number(self.alpha1), "omega0_rad_per_s": number(self.omega0),
                 "omega1_rad_per_s": number(self.omega1), "a0": a0, "a1": a1, "a2": a2, "a3": a3,
-                "net0_N_m": self.net0}
+                f"net0_{u['force']}": self.net0}
 
 
 def load_change_model(spec: Spec, sd: statics.SpringDesign | None = None,
@@ -113,7 +119,7 @@ def load_change_model(spec: Spec, sd: statics.SpringDesign | None = None,
         C=2.0 * w0 * float(speed_lever(spec, a0, sd.m, sd.central)),
         R=torque_ratio(spec, a0), M0=float(friction_moment),
         xi0=a1 - a0, eta0=w1 * (1.0 + eng.insensibility) - w0,
-        alpha0=a0, alpha1=a1, omega0=w0, omega1=w1)
+        alpha0=a0, alpha1=a1, omega0=w0, omega1=w1, units=spec.governor.key_units())
 
 
 def coefficients(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float):
@@ -132,8 +138,8 @@ def coefficients(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float)
 
 def coordinate_unit(gov) -> str:
     """The SI unit of a governor's configuration as JSON keys name it: ``"rad"`` for an
-    angle, ``"m"`` for a length (:data:`govopt.units.SI_UNITS`)."""
-    return SI_UNITS[gov.coordinate]
+    angle, ``"m"`` for a length (:meth:`govopt.governors.base.Governor.key_unit`)."""
+    return gov.key_unit("x")
 
 
 def coefficient_keys(gov) -> tuple[str, str, str, str]:
@@ -146,9 +152,9 @@ def coefficient_keys(gov) -> tuple[str, str, str, str]:
     >>> coefficient_keys(PorterGovernor)
     ('a0_kg', 'a1_N_s_per_m', 'a2_N_per_m', 'a3_N_per_m_s')
     """
-    if gov.coordinate == "angle":
-        return "a0_kg_m2", "a1_N_m_s_per_rad", "a2_N_m_per_rad", "a3_N_m_per_rad_s"
-    return "a0_kg", "a1_N_s_per_m", "a2_N_per_m", "a3_N_per_m_s"
+    u = gov.key_units()
+    q = f"{u['force']}_per_{u['x']}"
+    return f"a0_{u['inertia']}", f"a1_{u['damping']}", f"a2_{q}", f"a3_{q}_s"
 
 
 def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,

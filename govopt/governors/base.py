@@ -40,6 +40,20 @@ from typing import ClassVar
 
 import numpy as np
 
+#: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
+#: (govopt's rule: every key's unit in its name), by the coordinate's dimension: ``x`` itself
+#: and its rate; the generalised force ``Q`` (N m about an angle, N along a length) and inertia
+#: ``I`` (:meth:`Governor.inertia`); the dash-pot ``f = dQ/dx'`` and the speed lever
+#: ``C = dQ/domega`` (omega in rad/s) of the load-change model; the engine's ``R = -(dT/dx) /
+#: I_fw`` (rad/s^2 per unit x: 1/s^2 for an angle) of Hamabe's eqs. (24)-(27), (42). The one
+#: place these names are decided (:meth:`Governor.key_unit`).
+KEY_UNITS = {
+    "angle": {"x": "rad", "rate": "rad_per_s", "force": "N_m", "inertia": "kg_m2",
+              "damping": "N_m_s_per_rad", "lever": "N_m_s", "engine": "per_s2"},
+    "length": {"x": "m", "rate": "m_per_s", "force": "N", "inertia": "kg",
+               "damping": "N_s_per_m", "lever": "N_s", "engine": "rad_per_m_s2"},
+}
+
 
 @dataclass(frozen=True)
 class Terms:
@@ -161,6 +175,24 @@ class Governor(ABC):
         """The forced vibration at the normal configuration where the type has a periodic
         forcing (a result with ``to_dict()``), else ``None`` (default: no forcing modelled)."""
         return None
+
+    @classmethod
+    def key_unit(cls, quantity: str) -> str:
+        """The SI unit of ``quantity`` (a key of :data:`KEY_UNITS`: ``"x"``, ``"rate"``,
+        ``"force"``, ``"inertia"``, ``"damping"``, ``"lever"``, ``"engine"``) at this type's
+        coordinate, as JSON keys write it.
+
+        >>> from govopt.governors.porter import PorterGovernor
+        >>> from govopt.governors.shaft import ShaftGovernor
+        >>> PorterGovernor.key_unit("damping"), ShaftGovernor.key_unit("damping")
+        ('N_s_per_m', 'N_m_s_per_rad')
+        """
+        return KEY_UNITS[cls.coordinate][quantity]
+
+    @classmethod
+    def key_units(cls) -> dict[str, str]:
+        """Every :meth:`key_unit` of this type's coordinate (a copy of its :data:`KEY_UNITS`)."""
+        return dict(KEY_UNITS[cls.coordinate])
 
     def shown(self, x):
         """``(value, unit)`` of a configuration as people read it: degrees or millimetres."""

@@ -713,7 +713,7 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
             + " (the optimiser's model and the evaluator disagree: a bug, please report it)")
     res.kind = "design"
     gap = None if bound is None else (cand.objective - bound["objective"]) / bound["objective"]
-    damping = "N_m_s_per_rad" if gov.coordinate == "angle" else "N_s_per_m"
+    damping = gov.key_unit("damping")
     unit = objective_unit(req, gov)
     res.optimisation = {
         "status": "optimal",

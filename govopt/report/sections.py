@@ -148,7 +148,7 @@ def header(name: str, unit: str) -> str:
 
 def _coordinate(res) -> tuple[str, str]:
     """The configuration's SI unit (``rad`` or ``m``) and its shown unit (``deg`` or ``mm``)."""
-    si = "rad" if res.spec.governor.coordinate == "angle" else "m"
+    si = res.spec.governor.key_unit("x")
     return si, SHOWN[si][0]
 
 
@@ -227,7 +227,7 @@ def load_changes(res) -> list[Table]:
              *(get(f, "outcome") for f in fric)],
             ["with friction: strokes", "", *(get(f, "n_strokes") for f in fric)],
             ["with friction: the first stroke ends from the new equilibrium", xu,
-             *(shown(get(f, "first_stroke_end_rad"), si)[0] for f in fric)],
+             *(shown(get(f, f"first_stroke_end_{si}"), si)[0] for f in fric)],
             ["with friction: hunting", "", *(get(f, "hunting") for f in fric)],
         ]
         notes += [f"with friction, {lc.get('name')}: {get(f, 'note')}"
