@@ -73,6 +73,10 @@ _FAIL_FILL = PatternFill("solid", fgColor="FFC7CE", bgColor="FFC7CE")
 _PASS_FONT = Font(color="006100")
 _FAIL_FONT = Font(color="9C0006")
 _WRAP = Alignment(wrap_text=True, vertical="top", horizontal="left")
+_ITALIC = Font(italic=True)
+_HEADER_ALIGN = Alignment(wrap_text=True, vertical="center")
+_RIGHT = Alignment(horizontal="right")
+_LEFT_WRAP = Alignment(horizontal="left", wrap_text=True)
 
 #: Display formats by SI unit (the stored values keep full precision).
 _FORMATS = {
@@ -254,22 +258,26 @@ def _header(ws: Worksheet, row: int, headers: Iterable[str], col: int = 1) -> No
     for j, h in enumerate(headers):
         c = _set(ws.cell(row, col + j), h)
         c.font, c.fill = _BOLD, _HEADER_FILL
-        c.alignment = Alignment(wrap_text=True, vertical="center")
+        c.alignment = _HEADER_ALIGN
 
 
 def _title(ws: Worksheet, row: int, text: str, col: int = 1, font: Font = _TITLE) -> None:
     _set(ws.cell(row, col), text).font = font
 
 
+def _written(ws: Worksheet):
+    """The cells written so far (``iter_rows`` would create every empty cell of the range)."""
+    return ws._cells.values()
+
+
 def _widths(ws: Worksheet, fixed: Mapping[int, float] | None = None, low=8.0, high=60.0):
     """Column widths from the text in each column (formulas and numbers count as 14)."""
     width: dict[int, float] = {}
-    for row in ws.iter_rows():
-        for c in row:
-            if c.value is None:
-                continue
-            n = 14 if c.data_type in ("n", "f") else len(str(c.value)) + 2
-            width[c.column] = max(width.get(c.column, low), min(n, high))
+    for c in _written(ws):
+        if c.value is None:
+            continue
+        n = 14 if c.data_type in ("n", "f") else len(str(c.value)) + 2
+        width[c.column] = max(width.get(c.column, low), min(n, high))
     for col, w in {**width, **(fixed or {})}.items():
         ws.column_dimensions[get_column_letter(col)].width = w
 
@@ -432,7 +440,7 @@ class _DesignSheet:
 
     def text(self, text: str) -> None:
         c = _set(self.ws.cell(self.row, 1), text)
-        c.font = Font(italic=True)
+        c.font = _ITALIC
         self.row += 1
 
 
@@ -764,7 +772,7 @@ def _build_dynamics(ws: Worksheet, res: Result) -> None:
                "load-change and vibration analyses need" if spec.engine is None else
                "this result carries none (statics only); the spec has engine data, so run "
                "the dynamics analysis to fill this part")
-        _set(ws.cell(row, 1), f"Dynamics were not run: {why}.").font = Font(italic=True)
+        _set(ws.cell(row, 1), f"Dynamics were not run: {why}.").font = _ITALIC
         return
     tables = sections.dynamics(res)
     for table in (t for t in tables if not t.series):
@@ -774,7 +782,7 @@ def _build_dynamics(ws: Worksheet, res: Result) -> None:
         # the data right of the printed area (the charts show them), two columns each
         data_col = _extent(ws, "F1", _CHART_SIZE[0], 1.0)[0] + 2
         _set(ws.cell(row, 1), f"Responses: the charts below; their data are in columns "
-             f"{get_column_letter(data_col)} onwards (not printed).").font = Font(italic=True)
+             f"{get_column_letter(data_col)} onwards (not printed).").font = _ITALIC
         row += 1
         for k, table in enumerate(series):
             col = data_col + 3 * k
@@ -819,7 +827,7 @@ def _write_rows(ws: Worksheet, row: int, table: sections.Table, col: int = 1) ->
             if isinstance(v, str) and j >= (2 if table.properties else 1):
                 width = ws.column_dimensions[get_column_letter(col + j)].width or 8.43
                 # a word sits right like the numbers; a longer text wraps in its cell
-                c.alignment = Alignment(horizontal="right") if len(v) < width else _WRAP
+                c.alignment = _RIGHT if len(v) < width else _WRAP
     return row, row + len(table.rows)
 
 
@@ -828,7 +836,7 @@ def _write_table(ws: Worksheet, row: int, table: sections.Table, col: int = 1) -
     _title(ws, row, table.title, col=col, font=_BOLD)
     _, last = _write_rows(ws, row + 1, table, col)
     for k, note in enumerate(table.notes, start=1):
-        _set(ws.cell(last + k, col), note).font = Font(italic=True)
+        _set(ws.cell(last + k, col), note).font = _ITALIC
     return last + len(table.notes) + 2
 
 
@@ -930,13 +938,13 @@ def _build_checks(ws: Worksheet, res: Result) -> None:
     _set(ws.cell(row, 2), ", ".join(failed) if failed else "none")
     row += 1
     _set(ws.cell(row, 1), "margin: the distance to the limit as a share of the limit (of the "
-         "check's scale where the limit is 0); the same in any unit.").font = Font(italic=True)
+         "check's scale where the limit is 0); the same in any unit.").font = _ITALIC
     row += 2
     tables = sections.optimisation(res)
     if not tables:
         _title(ws, row, "Optimisation", font=_BOLD)
         _set(ws.cell(row + 1, 1), "No optimisation in this result: it evaluates a given design "
-             "(no binding constraints or sensitivities to report).").font = Font(italic=True)
+             "(no binding constraints or sensitivities to report).").font = _ITALIC
     for table in tables:
         row = _write_table(ws, row, table)
     labels = [len(str(r[0])) for t in tables for r in t.rows] + [len(c.name) for c in res.checks]
@@ -996,7 +1004,7 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
     rep = res.spring_report
     if rep is None:
         _set(ws.cell(3, 1), "No wire spring in this design (a dead-weight governor, a leaf, or "
-             "a spring given by its stiffness only).").font = Font(italic=True)
+             "a spring given by its stiffness only).").font = _ITALIC
         return
     _header(ws, 2, ["quantity", "value", "unit"])
     row = 3
@@ -1006,7 +1014,7 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
         else:
             _set(ws.cell(row, 1), label)
             _set(ws.cell(row, 2), "not given" if value is None else value, "General")
-            ws.cell(row, 2).alignment = Alignment(horizontal="left", wrap_text=True)
+            ws.cell(row, 2).alignment = _LEFT_WRAP
             _set(ws.cell(row, 3), unit)
         row += 1
     row += 1
@@ -1066,13 +1074,12 @@ def _fit_rows(ws: Worksheet) -> None:
     does not fit rows on opening would draw wrapped lines over the next row. Lines are
     estimated from the column's width (about 1.1 characters of text per width unit)."""
     need: dict[int, int] = {}
-    for row in ws.iter_rows():
-        for c in row:
-            if not (isinstance(c.value, str) and c.alignment.wrap_text) or c.data_type == "f":
-                continue
-            per_line = max(1.0, 1.1 * (ws.column_dimensions[c.column_letter].width or 8.43) - 1)
-            lines = sum(max(1, math.ceil(len(part) / per_line)) for part in c.value.split("\n"))
-            need[c.row] = max(need.get(c.row, 1), lines)
+    for c in _written(ws):
+        if not (isinstance(c.value, str) and c.alignment.wrap_text) or c.data_type == "f":
+            continue
+        per_line = max(1.0, 1.1 * (ws.column_dimensions[c.column_letter].width or 8.43) - 1)
+        lines = sum(max(1, math.ceil(len(part) / per_line)) for part in c.value.split("\n"))
+        need[c.row] = max(need.get(c.row, 1), lines)
     for r, lines in need.items():
         if lines > 1:
             ws.row_dimensions[r].height = max(ws.row_dimensions[r].height or 0, 15.0 * lines)
@@ -1092,7 +1099,7 @@ def _print_setup(ws: Worksheet) -> None:
     right), the sheet's name and page number in the footer."""
     cols = getattr(ws, "_govopt_print_cols", None) or ws.max_column
     rows = ws.max_row if cols == ws.max_column else max(
-        (c.row for r in ws.iter_rows(max_col=cols) for c in r if c.value is not None),
+        (c.row for c in _written(ws) if c.column <= cols and c.value is not None),
         default=1)
     for chart in ws._charts:
         c, r = _extent(ws, chart.anchor, chart.width, chart.height)
