@@ -313,7 +313,7 @@ def study_run(*, spec, sweep, grid, zip_, lhs, sobol, seed, mode, tolerance, sam
               skip, db, out, workers, dask, resume, plot, chunk, force) -> None:
     """Run a trade study: the spec at every point of the sweeps (or tolerance samples)."""
     from .report.files import check_output
-    from .study import load_study, run_study
+    from .study import load_study, outcome, run_study
 
     chosen = [name for name, on in (("grid", grid), ("zip", zip_), ("lhs", lhs is not None),
                                     ("sobol", sobol is not None)) if on]
@@ -340,10 +340,11 @@ def study_run(*, spec, sweep, grid, zip_, lhs, sobol, seed, mode, tolerance, sam
         if bar is not None:
             bar.close()
     _study_outputs(db, out, plot, force)
-    if report.interrupted:
-        _echo(f"interrupted: {report.skipped + report.done} of {report.total} points are "
-              f"in {db}; run again with --resume to finish", err=True)
-        raise SystemExit(130)
+    code, line = outcome(db, report)  # 0; 1 every point failed; 2 none ran; 130 interrupted
+    if line:
+        _echo(line, err=True)
+    if code:
+        raise _ChecksFailed if code == 1 else SystemExit(code)
 
 
 def _study_outputs(db: Path, out: Path | None, plot: Path | None, force: bool) -> None:

@@ -1065,21 +1065,26 @@ def _reasons(status: str, message: str | None) -> list[str]:
     return [message]
 
 
-def outcome(store: Store, report: RunReport | None = None) -> tuple[int, str]:
+def outcome(store: Store | str | Path, report: RunReport | None = None) -> tuple[int, str]:
     """The exit status of a study run and its one line for stderr (``""`` when nothing failed).
 
-    Over every row in the database (a resumed study counts the rows of earlier runs too):
+    Over every row in the database ``store`` (a :class:`Store` or its path; a resumed study
+    counts the rows of earlier runs too):
 
     * 130: the run was interrupted (``report.interrupted``): what is kept and how to resume;
     * 0: at least one point passed (or was designed); failures are counted,
       ``"3 of 10 points failed: most common reason (2 of 3): fails: irregularity"``;
     * 1: every point failed and at least one of them ran (a check failed, or the design was
       infeasible), as ``govopt evaluate`` / ``govopt design`` exit 1 when a check fails;
-    * 2: every point was an error (no point could be evaluated: a user's error, as a bad spec);
+    * 2: every point was an error (no point could be evaluated: a user's error, as a bad spec;
+      the line starts ``error:`` as every exit-2 line);
 
     a failing line names the most common reason (each failed check of a ``fail`` row counts
     once) and on how many points it occurred.
     """
+    if not isinstance(store, Store):
+        with Store(store, create=False) as opened:
+            return outcome(opened, report)
     if report is not None and report.interrupted:
         return 130, (f"interrupted: {report.skipped + report.done} of {report.total} points are "
                      f"in {store.path}; run again with --resume to finish")
@@ -1098,8 +1103,9 @@ def outcome(store: Store, report: RunReport | None = None) -> tuple[int, str]:
     why = f"most common reason ({n} of {n_failed}): {limits.shorten_values(reason)}"
     if n_failed < total:
         return 0, f"{n_failed} of {total} points failed: {why}"
-    ran = any(st != "error" for st, _, _ in failed)
-    return (1 if ran else 2), f"all {total} points failed: {why}"
+    if any(st != "error" for st, _, _ in failed):
+        return 1, f"all {total} points failed: {why}"
+    return 2, f"error: all {total} points failed (none could be evaluated): {why}"
 
 
 def default_chunk(study: Study) -> int:

@@ -127,7 +127,8 @@ def test_outcome_all_failed_exits_nonzero(tmp_path):
     assert (code, line) == (0, "1 of 2 points failed: most common reason (1 of 1): fails: "
                                "irregularity")
     code, line = run(_study(tmp_path, ""), "design.free_length=-1 cm,-2 cm,8 cm", "error.db")
-    assert code == 2 and line.startswith("all 3 points failed: most common reason (1 of 3): ")
+    assert code == 2 and line.startswith("error: all 3 points failed (none could be evaluated): "
+                                         "most common reason (1 of 3): ")
     assert "design.free_length" in line and "\n" not in line
     code, line = run(_study(tmp_path, ""), "design.free_length=15.41 cm,15.5 cm", "pass.db")
     assert (code, line) == (0, "")
@@ -378,3 +379,29 @@ def test_cli_study_show_export(tmp_path, monkeypatch):
     assert len(pd.read_csv(tmp_path / "s.csv")) == 6
     with Store(tmp_path / "s.db") as store:
         assert store.meta("total") == 6
+
+
+def test_cli_study_exit_codes(tmp_path, monkeypatch):
+    """`govopt study`: the table is written and summarised whatever failed; every point failing
+    a check exits 1 with one line on stderr naming the most common reason, every point an error
+    exits 2 (an 'error:' line), some failures exit 0 with their count on stderr."""
+    from clirun import invoke
+
+    monkeypatch.chdir(tmp_path)
+    case_a = SPECS / "hamabe-a.toml"
+    failed = invoke(["study", str(case_a), "--sweep", "speed.irregularity=0.1,0.11",
+                     "--db", "f.db"])
+    assert failed.exit_code == 1, failed.output
+    assert "status: fail 2" in failed.stdout
+    assert failed.stderr == ("all 2 points failed: most common reason (2 of 2): fails: "
+                             "irregularity\n")
+    errors = invoke(["study", str(case_a), "--sweep", "design.pendulum_weight=-1 kgf,-2 kgf",
+                     "--db", "e.db"])
+    assert errors.exit_code == 2, errors.output
+    assert "status: error 2" in errors.stdout
+    assert errors.stderr.startswith("error: all 2 points failed (none could be evaluated): ")
+    assert errors.stderr.count("\n") == 1
+    some = invoke(["study", str(case_a), "--sweep", "speed.irregularity=0.11,0.13",
+                   "--db", "s.db"])
+    assert some.exit_code == 0, some.output
+    assert some.stderr == "1 of 2 points failed: most common reason (1 of 1): fails: irregularity\n"
