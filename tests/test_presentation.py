@@ -201,6 +201,10 @@ TABLES = {  # headers, rows, right-justified columns, show_header
         (1, 2), True),
     "an empty column (rich prints no line of its cells)": (
         ["a", "", "b"], [["3", "\n\n", "4"], ["1", "", "2"]], (2,), True),
+    "Latin and Greek characters, one cell each": (
+        ["omega\n(rad/s)", "unit", "source"],
+        [["25.13", "\u00b0", "Shigley \u00a710-11"], ["1.5", "N\u00b7m", "\u03c9\u00b2 \u00e9"]],
+        (0,), True),
 }
 
 
@@ -215,7 +219,19 @@ def test_plain_tables_are_rich_text(name):
     assert not used_rich
 
 
-@pytest.mark.parametrize("cell", ["Shigley \u00a710-11", "\u6f22\u5b57", "a\tb", "x" * 400])
+def test_plain_narrow_characters_are_one_cell_in_rich():
+    """The characters the plain renderer counts one column wide are one cell in rich's measure
+    (Latin, Greek); the combining marks between them (U+0300-U+036F) are not."""
+    from rich.cells import cell_len
+
+    from govopt.report.text import _narrow
+
+    chars = [chr(i) for i in range(0x400) if chr(i).isprintable()]
+    assert {cell_len(ch) for ch in chars if _narrow(ch)} == {1}
+    assert {cell_len(ch) for ch in chars if not _narrow(ch)} == {0}
+
+
+@pytest.mark.parametrize("cell", ["e\u0301", "\u6f22\u5b57", "a\tb", "a\rb", "x" * 400])
 def test_plain_tables_leave_rich_what_it_measures_otherwise(cell):
     """Wide or zero-width characters, tabs, control codes and a table wider than the report's
     400 columns go through rich, so the text is still rich's."""

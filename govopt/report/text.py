@@ -51,19 +51,25 @@ def _plain(text: str) -> bool:
     return text.replace("\n", "").isprintable()
 
 
+def _narrow(text: str) -> bool:
+    """Whether every character of ``text`` is one cell wide in rich's measure: Latin (up to
+    U+02FF, before the combining marks) and Greek (U+0370-U+03FF), e.g. "deg", "°", "ω"."""
+    return all(ch < "\u0300" or "\u0370" <= ch < "\u0400" for ch in text)
+
+
 def plain_table(headers, rows, *, right=(), show_header=True, width=400) -> list[str] | None:
     r"""The lines rich prints for :meth:`_Report.table` without colour (the ASCII box: a rule of
     dashes under the header only, no edge, one space of padding each side of a column but at
     the edges, a space between columns), trailing spaces stripped; None where rich could print
-    otherwise: a cell not printable ASCII (rich measures wide and zero-width characters, drops
-    control codes, expands tabs), no rows at all, or a table wider than ``width`` (rich wraps
-    the last column).
+    otherwise: a cell with a character not printable or not :func:`_narrow` (rich measures wide
+    and zero-width characters, drops control codes, expands tabs), no rows at all, or a table
+    wider than ``width`` (rich wraps the last column).
 
     >>> plain_table(["n", "x\n(mm)"], [["a", "1.5"], ["bb", ""]], right=(1,))
     ['        x', 'n    (mm)', '---------', 'a     1.5', 'bb']
     """
     rows = [headers, *rows] if show_header else list(rows)
-    if not headers or not rows or not all(c.isascii() and _plain(c) for r in rows for c in r):
+    if not headers or not rows or not all(_narrow(c) and _plain(c) for r in rows for c in r):
         return None
     cells = [[c.split("\n") for c in r] for r in rows]
     sizes = [max(len(x) for r in cells for x in r[j]) for j in range(len(headers))]
