@@ -497,14 +497,14 @@ _FORCE_HELP = "Replace output files that exist (regular files only, never the sp
 _JSON_HELP = "Print a JSON object in SI units."
 
 
-def _option(p, *names, help: str, type=str, default=None, **kw) -> None:  # noqa: A002
+def _option(p, *names, help: str, type=str, default=None, **kw) -> None:
     """An option that takes a value; its default, if any, is shown after its help."""
     help = help.replace("%", "%%") + ("" if default is None else " (default: %(default)s)")
     help += " (required)" if kw.get("required") else ""
     p.add_argument(*names, type=type, default=default, metavar=_METAVAR[type], help=help, **kw)
 
 
-def _flag(p, *names, help: str, switch: bool | None = None, **kw) -> None:  # noqa: A002
+def _flag(p, *names, help: str, switch: bool | None = None, **kw) -> None:
     """A flag (``--json``); with ``switch`` its ``--no-`` twin too, ``switch`` the default."""
     if switch is None:
         p.add_argument(*names, action="store_true", help=help, **kw)
