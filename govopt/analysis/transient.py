@@ -36,7 +36,10 @@ with the larger real part first).
 
 Event analysis (over-regulation, first arrival, settling) is exact root finding on the analytic
 response: :func:`analyse` (one design, ``brentq``) and :func:`analyse_many` (vectorised
-bracketed Newton over many designs).  Over-regulation is decided for all ``t >= 0``, not within
+bracketed Newton over many designs).  Both bracket the events on a grid evaluated by
+:func:`_grid_values` (the plain modal sum where the roots are well separated and every mode
+decays: bracketing only, every reported figure is located on the Newton form).
+Over-regulation is decided for all ``t >= 0``, not within
 a horizon: the response is a sum of three exponential modes, so after a dominance time the sign
 of ``xi`` is that of the slowest mode(s), and only the window before it needs root finding
 (:class:`_Tail` has the proof; :func:`over_regulates` with :data:`OVER_TOL` is the one decision
