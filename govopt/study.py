@@ -1056,13 +1056,14 @@ class RunReport:
 PASSED = ("pass", "optimal")
 
 
-def _reasons(status: str, message: str | None) -> list[str]:
+def _reasons(status: str, message: str | None, path: str) -> list[str]:
     """Why one point failed: each failed check of a ``fail`` row (``"fails: a, b"``), else its
-    message (an error's or the optimiser's)."""
+    message (an error's or the optimiser's) without the spec's ``path``, which every point
+    shares."""
     message = " ".join(str(message or status).split())
     if status == "fail" and message.startswith("fails: "):
         return [f"fails: {name}" for name in message[len("fails: "):].split(", ")]
-    return [message]
+    return [message.removeprefix(f"{path}: ")]
 
 
 def outcome(store: Store | str | Path, report: RunReport | None = None) -> tuple[int, str]:
@@ -1077,7 +1078,7 @@ def outcome(store: Store | str | Path, report: RunReport | None = None) -> tuple
     * 1: every point failed and at least one of them ran (a check failed, or the design was
       infeasible), as ``govopt evaluate`` / ``govopt design`` exit 1 when a check fails;
     * 2: every point was an error (no point could be evaluated: a user's error, as a bad spec;
-      the line starts ``error:`` as every exit-2 line);
+      the line is ``error: SPEC: ...`` as every exit-2 line);
 
     a failing line names the most common reason (each failed check of a ``fail`` row counts
     once) and on how many points it occurred.
@@ -1095,9 +1096,10 @@ def outcome(store: Store | str | Path, report: RunReport | None = None) -> tuple
     n_failed = sum(n for _, _, n in failed)
     if not n_failed:
         return 0, ""
+    path = str((store.meta("study") or {}).get("spec_path", "?"))
     counts: dict[str, int] = {}
     for st, msg, n in failed:
-        for reason in _reasons(st, msg):
+        for reason in _reasons(st, msg, path):
             counts[reason] = counts.get(reason, 0) + n
     reason, n = max(counts.items(), key=lambda kv: kv[1])  # the first of equals: stable
     why = f"most common reason ({n} of {n_failed}): {limits.shorten_values(reason)}"
@@ -1105,7 +1107,7 @@ def outcome(store: Store | str | Path, report: RunReport | None = None) -> tuple
         return 0, f"{n_failed} of {total} points failed: {why}"
     if any(st != "error" for st, _, _ in failed):
         return 1, f"all {total} points failed: {why}"
-    return 2, f"error: all {total} points failed (none could be evaluated): {why}"
+    return 2, f"error: {path}: all {total} points failed (none could be evaluated): {why}"
 
 
 def default_chunk(study: Study) -> int:

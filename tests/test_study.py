@@ -126,10 +126,13 @@ def test_outcome_all_failed_exits_nonzero(tmp_path):
     code, line = run(case_a, "speed.irregularity=0.11,0.13", "some.db")  # 0.123 <= 0.13 passes
     assert (code, line) == (0, "1 of 2 points failed: most common reason (1 of 1): fails: "
                                "irregularity")
-    code, line = run(_study(tmp_path, ""), "design.free_length=-1 cm,-2 cm,8 cm", "error.db")
-    assert code == 2 and line.startswith("error: all 3 points failed (none could be evaluated): "
-                                         "most common reason (1 of 3): ")
-    assert "design.free_length" in line and "\n" not in line
+    spec = _study(tmp_path, "")
+    code, line = run(spec, "design.free_length=-1 cm,-2 cm,8 cm", "error.db")
+    # the convention of exit 2: 'error: FILE: ...', the file named once
+    assert code == 2 and line.startswith(f"error: {spec}: all 3 points failed (none could be "
+                                         "evaluated): most common reason (1 of 3): "
+                                         "design.free_length: ")
+    assert line.count(str(spec)) == 1 and "\n" not in line
     code, line = run(_study(tmp_path, ""), "design.free_length=15.41 cm,15.5 cm", "pass.db")
     assert (code, line) == (0, "")
 
@@ -399,7 +402,9 @@ def test_cli_study_exit_codes(tmp_path, monkeypatch):
                      "--db", "e.db"])
     assert errors.exit_code == 2, errors.output
     assert "status: error 2" in errors.stdout
-    assert errors.stderr.startswith("error: all 2 points failed (none could be evaluated): ")
+    assert errors.stderr.startswith(f"error: {case_a}: all 2 points failed (none could be "
+                                    "evaluated): most common reason (1 of 2): "
+                                    "design.pendulum_weight: ")
     assert errors.stderr.count("\n") == 1
     some = invoke(["study", str(case_a), "--sweep", "speed.irregularity=0.11,0.13",
                    "--db", "s.db"])
