@@ -394,7 +394,10 @@ def dynamics(res) -> list[Table]:
         out.append(Table("Restoring stiffness at the normal configuration (Hamabe eqs. 18-20)",
                          ["quantity", "unit", "value"],
                          [["k^2", "1/s^2", cell(k2n)], ["k^2 / omega0^2", "", cell(k2n / w0sq)]],
-                         ["stable and clear of resonance for 0 < k^2 / omega0^2 < 1"],
+                         ["stable and clear of resonance for 0 < k^2 / omega0^2 < 1"
+                          if res.spec.governor.resonance_ceiling else
+                          "stable for k^2 > 0 (no forcing at the running speed's harmonics, so "
+                          "no ceiling on k^2 / omega0^2)"],
                          properties=True))
     other = {k: v for k, v in dyn.items() if k not in _DYNAMICS_KEYS}
     if other:

@@ -18,6 +18,8 @@ import os
 import shutil
 import sys
 
+import numpy as np
+
 from ..result import ACTIVE_TOL, Check, Result
 from ..units import G_STANDARD, to_unit
 from . import sections as sec
@@ -278,8 +280,9 @@ def format_result(res: Result, colour: bool | None = None) -> str:
             *((f"{n}\n({q})", v, ".3f") for n, v in zip(gov.force_names,
                                                         (st.M_z, st.M_f, st.M_r0), strict=True))]
     if gov.spring is not None:
-        cols += [("spring force\n(N)", st.spring_force, ".1f"),
-                 ("shear stress\n(MPa)", st.stress / 1e6, ".1f")]
+        cols.append(("spring force\n(N)", st.spring_force, ".1f"))
+        if np.isfinite(st.stress).any():  # a spring given by its rate alone has no stress
+            cols.append(("shear stress\n(MPa)", st.stress / 1e6, ".1f"))
     if res.k2 is not None:
         cols.append(("k^2\n(1/s^2)", res.k2, ".1f"))
     out.title("Characteristic (equilibrium by virtual work; Hamabe eq. 12, textbook 3.3)")
