@@ -67,7 +67,7 @@ def check_names(columns) -> list[str]:
 
 
 def _dashpot_column(gov: Governor) -> str:
-    return "dashpot_N_m_s_per_rad" if gov.coordinate == "angle" else "dashpot_N_s_per_m"
+    return f"dashpot_{gov.key_unit('damping')}"
 
 
 def _objective_name(spec: Spec) -> str:
