@@ -19,6 +19,7 @@ from pathlib import Path
 
 from .errors import GovoptError
 from .examples import SPECS
+from .limits import printable, shorten_values
 
 DEFAULT_EVALUATE = SPECS / "hamabe-a.toml"
 DEFAULT_DESIGN = SPECS / "hamabe-design.toml"
@@ -38,16 +39,9 @@ def _echo(text: str, err: bool = False) -> None:
     print(text, file=stream, flush=True)
 
 
-def _printable(text: str) -> str:
-    """``text`` with control characters (other than newlines) shown as escapes."""
-    return "".join(c if c == "\n" or c.isprintable() else repr(c)[1:-1] for c in text)
-
-
 def _fail(message: str) -> None:
     """A user's error: one line ``error: ...`` on stderr, exit code 2."""
-    from .limits import shorten_values  # a 200 kB value is never echoed whole
-
-    _echo(f"error: {_printable(shorten_values(message))}", err=True)
+    _echo(f"error: {printable(shorten_values(message))}", err=True)
     raise SystemExit(2)
 
 
@@ -55,7 +49,7 @@ def _internal(exc: BaseException) -> None:
     """One line for an unexpected exception: a bug, to be reported; exit code 3."""
     text = " ".join(str(exc).split())
     text = text if len(text) <= 200 else text[:197] + "..."
-    _echo(f"internal error: {type(exc).__name__}: {_printable(text)} -- this is a bug in "
+    _echo(f"internal error: {type(exc).__name__}: {printable(text)} -- this is a bug in "
           "govopt, please report it (run with --debug to see the traceback)", err=True)
 
 
@@ -87,7 +81,7 @@ def _guarded(command):
                 _internal(exc)
                 raise SystemExit(3) from None
         for message in dict.fromkeys(str(w.message) for w in caught or ()):
-            _echo(f"warning: {_printable(message)}", err=True)
+            _echo(f"warning: {printable(message)}", err=True)
         if failed:
             raise SystemExit(1)
         return out

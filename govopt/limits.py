@@ -79,6 +79,16 @@ def shorten(value, width: int = SHOWN_CHARS) -> str:
     return f"{text[:width // 2]}... ({size})"
 
 
+def printable(text: str) -> str:
+    r"""``text`` with control characters (other than newlines) shown as escapes: a file name or
+    spec string never sends a terminal an escape sequence.
+
+    >>> printable("a\x1b[31mred\tb\n")
+    'a\\x1b[31mred\\tb\n'
+    """
+    return "".join(c if c == "\n" or c.isprintable() else repr(c)[1:-1] for c in text)
+
+
 def shorten_values(message: str, width: int = SHOWN_CHARS) -> str:
     """``message`` with each quoted value or list longer than ``width`` characters cut as
     :func:`shorten` cuts it: no error line echoes a 200 kB value.

@@ -112,6 +112,29 @@ def test_terminal_report_is_coloured(tmp_path):
     assert re.search(r"\x1b\[[0-9;]*32m[^\x1b]*PASS", out)  # green PASS
 
 
+@pytest.mark.parametrize("cell", ["a\tb", "a\rb", "a\x1b[31mb"])
+def test_control_codes_in_cells_are_shown_as_escapes(cell):
+    """A tab, carriage return or escape code in a cell is printed as its escape (``\\t``), the
+    same by both renderers."""
+    plain, rich, used_rich = _both(lambda r: r.table(["a", "b"], [["1", cell], [cell, "2"]],
+                                                     right=(0,)))
+    assert plain == rich
+    assert not used_rich
+    assert repr(cell)[1:-1] in plain and cell not in plain
+
+
+def test_a_spec_never_sends_the_terminal_an_escape_code(tmp_path):
+    """A spec whose file name (or any string it carries) holds an escape sequence: on a
+    terminal the report shows it as text (``\\x1b[31m``), never as a colour change."""
+    odd = tmp_path / "a\x1b[31mred.toml"
+    odd.write_text((SPECS / "hamabe-a.toml").read_text())
+    res = govopt.evaluate(govopt.load_spec(odd))
+    for colour in (True, False):
+        text = format_result(res, colour=colour)
+        assert "\x1b[31m" not in text
+        assert "a\\x1b[31mred.toml" in text
+
+
 def test_every_value_has_its_unit_and_margins_read_as_margins(designed):
     """The checks table: a unit on every row (``-`` for a ratio), angles in degrees, lengths in
     mm, stresses in MPa (one unit per quantity: the summary's and the tables' units), margins
@@ -231,10 +254,11 @@ def test_plain_narrow_characters_are_one_cell_in_rich():
     assert {cell_len(ch) for ch in chars if not _narrow(ch)} == {0}
 
 
-@pytest.mark.parametrize("cell", ["e\u0301", "\u6f22\u5b57", "a\tb", "a\rb", "x" * 400])
+@pytest.mark.parametrize("cell", ["e\u0301", "\u6f22\u5b57", "x" * 400])
 def test_plain_tables_leave_rich_what_it_measures_otherwise(cell):
-    """Wide or zero-width characters, tabs, control codes and a table wider than the report's
-    400 columns go through rich, so the text is still rich's."""
+    """Wide or zero-width characters and a table wider than the report's 400 columns go
+    through rich, so the text is still rich's. (Tabs and control codes never reach either
+    renderer: they are shown as escapes, next test.)"""
     plain, rich, used_rich = _both(lambda r: r.table(["a", "b"], [["1", cell], [cell, "2"]],
                                                      right=(1,)))
     assert plain == rich and used_rich

@@ -20,6 +20,7 @@ import sys
 
 import numpy as np
 
+from ..limits import printable
 from ..result import ACTIVE_TOL, Check, Result
 from ..units import G_STANDARD, to_unit
 from . import sections as sec
@@ -124,6 +125,7 @@ class _Report:
         return self._console
 
     def line(self, text: str = "", style: str | None = None) -> None:
+        text = printable(text)  # a spec's strings never reach a terminal as escape codes
         if self.plain and _plain(text):
             self.buf.write(text + "\n")
             return
@@ -136,7 +138,8 @@ class _Report:
     def table(self, headers, rows, *, right=(), show_header=True, styles=None) -> None:
         """``rows`` of strings; ``right``: indices of right-justified columns; ``styles``: a
         style per row (or None)."""
-        lines = plain_table(list(headers), [list(r) for r in rows], right=right,
+        headers, rows = [printable(h) for h in headers], [[printable(c) for c in r] for r in rows]
+        lines = plain_table(headers, rows, right=right,
                             show_header=show_header) if self.plain else None
         if lines is not None:
             self.buf.write("".join(f"{x}\n" for x in lines))
