@@ -151,6 +151,9 @@ def _surge_source(kw):
             f"distance from each excitation harmonic present ({len(kw['harmonics_hz'])} given)")
 
 
+#: the largest free pitch: the simple rate and stress formulas assume a small helix angle
+PITCH_MAX = "free pitch <= 0.7 inside diameter (helix angle)"
+
 _static_c, _static_s, _static_e = _static("compression"), _static("solid"), _static("extension")
 _hook_A, _hook_B = _hook_fatigue("A"), _hook_fatigue("B")
 
@@ -184,6 +187,12 @@ COMPRESSION = (
     Row("free pitch > wire diameter", ">=", "m",
         lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"]),
         lambda kw: kw["d"], "geometry: the free spring must have gaps between active coils"),
+    Row(PITCH_MAX, "<=", "m",
+        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"]),
+        lambda kw: hx.max_pitch(kw["d"], kw["D"]),
+        "Gutekunst Federn ('Spring pitch'): m <= 0.7 D_i, a helix angle atan(m / (pi D)) of at "
+        "most 9.5-12.6 deg, where the rate G d^4 / (8 D^3 n) is within 1.5 % of the "
+        "open-coiled spring's (6 % at 25 deg)"),
     Row("active coils >= 2", ">=", "", lambda kw: kw["n_active"], lambda kw: 2.0,
         "EN 13906-1 scope: n >= 2"),
 ) + COMMON
@@ -222,7 +231,7 @@ EXTENSION = (
 #: (``only=GEOMETRY``). A free length far beyond the installed length (the article's "longer
 #: spring" for a narrow speed range, 003) buckles long before it is compressed into place.
 GEOMETRY = ("working length >= least length (coil clash)", "deflection / buckling deflection",
-            "free pitch > wire diameter")
+            "free pitch > wire diameter", PITCH_MAX)
 
 _SPACE = Row("free length <= space", "<=", "m", lambda kw: kw["L0"], lambda kw: kw["L0_max"],
              "installation space given in the spec")
