@@ -597,6 +597,42 @@ def test_coil_design_is_buildable():
     assert all(c.passed for c in res.checks)
 
 
+def test_coil_design_helix_angle_within_the_limit():
+    """The design's free pitch at most 0.7 D_i (Gutekunst): a helix angle below 12.6 deg, where
+    the rate G d^4/(8 D^3 n) is within 1.5 % of the open-coiled spring's. The design before
+    this row was 1.6 mm wire, D = 24 mm, 4 coils, free length 143.3 mm: a 35 mm pitch, 24.9 deg,
+    and its simple rate 6.8 % stiffer than the open coil's (music wire, G/E = 11.75/28.5)."""
+    from govopt.springs import helical as hx
+
+    spec, res = _design("traction-coil-design.toml")
+    sd = res.spring
+    d, D = sd.d, 2 * sd.r
+    m = float(hx.pitch(sd.l0 * spec.governor.spring_length_factor, d, sd.n, sd.n + 2,
+                       "closed_ground"))
+    alpha = float(hx.helix_angle(m, D))
+    assert m <= 0.7 * (D - d) * (1 + 1e-12)
+    assert math.degrees(alpha) < math.degrees(math.atan(0.7 * (1 - d / D) / math.pi)) + 1e-9
+    assert math.degrees(alpha) < 12.6
+    G, E = spec.material.shear_modulus, 28.5e6 * 6894.757  # E of music wire, Shigley Table 10-5
+    exact = float(hx.open_coil_stiffness(d, D, sd.n, G, E, alpha))
+    assert 1.0 <= sd.kappa / exact < 1.015
+    row = res.check("free pitch <= 0.7 inside diameter (helix angle)")
+    assert row.passed and row.value == pytest.approx(m, rel=1e-12)
+    # the old design fails the row, and only it among the geometric ones
+    from govopt.analysis import spring_engineering as se
+    from govopt.model import spring
+
+    d0, r0, n0, L0 = 1.6e-3, 12e-3, 4.0, 0.14325147278048733
+    kappa0 = spring.stiffness(d0, r0, n0, G)
+    rows = se.geometry_rows(spec, d0, 2 * r0, n0, kappa0, L0)
+    value, limit, _ = rows["free pitch <= 0.7 inside diameter (helix angle)"]
+    assert float(value) == pytest.approx(35.0e-3, abs=0.05e-3) and float(limit) == 0.7 * 22.4e-3
+    assert math.degrees(float(hx.helix_angle(value, 24e-3))) == pytest.approx(24.9, abs=0.05)
+    assert [k for k, (v, lim, s) in rows.items() if not (v <= lim if s == "<=" else v >= lim)] \
+        == ["free pitch <= 0.7 inside diameter (helix angle)"]
+    assert not se.geometry_screen(spec, d0, r0, n0, kappa0, L0)
+
+
 def test_article_replacement_spring_passes_without_a_resonance_ceiling():
     """The article's replacement spring (220-250 rpm, K = 30.4 lbf/in, free length 5.31 in)
     has k^2 up to 2.69 omega0^2 over its range: Hamabe's ceiling k^2 < omega0^2 (his valve

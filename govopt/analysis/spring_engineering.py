@@ -426,11 +426,12 @@ def screen(spec, d, r, n, kappa, l0, harmonics=()):
 def geometry_rows(spec, d, D, n, kappa, l0, F1=None, F2=None) -> dict:
     """The rows of :data:`govopt.springs.checks.GEOMETRY` over arrays, ``{name: (value, limit,
     sense)}``: a compression spring's coil clash, buckling (EN 13906-1, the seating
-    ``[spring] seating``, default both ends on flat parallel seats, ``nu = 0.5``) and free pitch,
-    which need no wire strength, for a spring without a wire grade (with one, :func:`screen`
-    and :func:`checks` hold them already); none for an extension spring. The static range
-    ``F1 <= F2`` defaults to :func:`static_range`; E is the grade's or, without one, the
-    EN 10270-1 steel default of :func:`wire`."""
+    ``[spring] seating``, default both ends on flat parallel seats, ``nu = 0.5``) and free pitch
+    (gaps between the coils; at most 0.7 D_i, a helix angle small enough for the rate
+    G d^4 / (8 D^3 n)), which need no wire strength, for a spring without a wire grade (with
+    one, :func:`screen` and :func:`checks` hold them already); none for an extension spring.
+    The static range ``F1 <= F2`` defaults to :func:`static_range`; E is the grade's or,
+    without one, the EN 10270-1 steel default of :func:`wire`."""
     kind = KINDS[spec.governor.spring]
     if F1 is None:
         F1, F2 = static_range(spec, kappa, l0)
