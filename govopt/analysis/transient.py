@@ -1161,8 +1161,13 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
             break
     first_arrival = zeros[0] if zeros else math.inf
     # settling: last time |xi| = band * scale (inf if not settled within the analysed horizon)
-    truncated = bool(stable and not extrap and not _tail_ok(t, xi, b))
-    if extrap and ext and abs(ext[-1][1]) > b:
+    cut, truncated = truncated, bool(stable and not extrap and not _tail_ok(t, xi, b))
+    if stable and cut:  # grid cut at max_points: past it, the modes' envelope decides
+        resp2 = _Response.build(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, order=2)[0]
+        settling = float(_envelope_settling(resp2, np.array([b]), _PER_PERIOD, max_points)[0])
+        truncated = math.isnan(settling)
+        settling = math.inf if truncated else settling
+    elif extrap and ext and abs(ext[-1][1]) > b:
         # only the slowest pair is left: extrema every pi/q, heights x exp(-sigma pi/q)
         te, xe = ext[-1]
         lam = roots[np.argmax(roots.real)]
@@ -1234,6 +1239,7 @@ class TransientSummary:
     settling_time: np.ndarray
     horizon: np.ndarray
     over_regulation_scaled: np.ndarray | None = None
+    truncated: np.ndarray | None = None
 
 
 def _refine(resp, j, target, lo, hi, iters=100):
@@ -1591,6 +1597,7 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
     for k in range(d.shape[1] - 1, -1, -1):
         s0 = np.where(d[:, k] != 0, np.sign(d[:, k]), s0)
     arrival, over, t_over, settling = (np.full(n, np.nan) for _ in range(4))
+    unresolved = np.zeros(n, bool)
     vi = np.nonzero(valid)[0]
     pos = np.full(n, -1)
     pos[vi] = np.arange(vi.size)
@@ -1635,6 +1642,12 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
                 if ex.any():
                     e = np.nonzero(ex)[0]
                     st_[e] = _extrapolate_settling(sub.subset(e), t[e], y[e], b[e], st_[e])
+                cut = truncated[loc] & stable[idx]  # grid cut at max_points: the envelope
+                if cut.any():
+                    e = np.nonzero(cut)[0]
+                    env = _envelope_settling(sub.subset(e), b[e], per_period, max_points)
+                    st_[e] = np.where(np.isnan(env), np.inf, env)
+                    unresolved[idx[e]] = np.isnan(env)
                 arrival[idx], over[idx], t_over[idx], settling[idx] = a_, o_, to_, st_
                 if horizon is None:
                     # longer: to settle (doubling), or until no later far-side excursion can
@@ -1659,6 +1672,7 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
         roots=rs(roots), kind=rs(kind), stable=rs(stable), hurwitz_margin=rs(margin),
         over_regulation=rs(over), first_arrival_time=rs(arrival), settling_time=rs(settling),
         horizon=rs(H), over_regulation_scaled=rs(scaled),
+        truncated=rs(unresolved | (stable & np.isinf(settling))),
     )
 
 
@@ -1698,6 +1712,96 @@ def _extrapolate_settling(resp, t, y, b, settled):
     vk = sub(tk[:, None], nder=0)[:, 0, 0]
     out[idx] = _refine(sub, 0, np.sign(vk) * b[idx], tk, tk + half)
     del rows
+    return out
+
+
+def _last_exit(resp, t, y, b):
+    """Last time ``|xi| = b`` on the window grids ``t`` (n, M) with values ``y`` (n, 2, M):
+    bracketed at the last grid point above ``b``, or at the exact peak of a later lobe the grid
+    clipped (grid peak >= 0.9 b), and refined on the Newton form; nan where nothing in the
+    window is above ``b`` or its last point still is (the caller widens the window)."""
+    n, M = t.shape
+    rows = np.arange(n)
+    xi, xd = y[:, 0], y[:, 1]
+    ax = np.abs(xi)
+    above = ax > b[:, None]
+    last = np.where(above.any(axis=1), M - 1 - np.argmax(above[:, ::-1], axis=1), -1)
+    j = np.maximum(last, 0)
+    lo, hi = t[rows, j], t[rows, np.minimum(j + 1, M - 1)]
+    sgn = np.sign(xi[rows, j])
+    r, k = _local_max(ax)
+    late = (k > last[r]) & (ax[r, k] >= 0.9 * b[r])
+    if late.any():
+        r, k, te, xe = _refine_peaks(resp, t, xd, r[late], k[late])
+        hit = np.abs(xe) > b[r]
+        r, k, te, xe = r[hit], k[hit], te[hit], xe[hit]
+        lastlobe = r.size - 1 - np.unique(r[::-1], return_index=True)[1]  # latest per row
+        r, k, te, xe = r[lastlobe], k[lastlobe], te[lastlobe], xe[lastlobe]
+        lo[r], hi[r], sgn[r], last[r] = te, t[r, k + 1], np.sign(xe), k
+    out = np.full(n, np.nan)
+    ok = np.nonzero((last >= 0) & (last < M - 1))[0]
+    if ok.size:
+        out[ok] = _refine(resp.subset(ok), 0, sgn[ok] * b[ok], lo[ok], hi[ok])
+    return out
+
+
+def _envelope_settling(resp, b, per_period=_PER_PERIOD, max_points=MAX_TRANSIENT_POINTS):
+    """Settling time (last ``|xi| = b``) of stable designs with a real root ``r`` and a damped
+    pair ``p`` whose event grid is cut at ``max_points`` (a pendulum's 0.3 s swing under a huge
+    flywheel's 1e5 s decay), without a grid over the whole transient.
+
+    Hamabe, Disturbing Actions of a Shaft Governor, eq. (28): ``xi = c_r e^{r t} +
+    2 Re(c_p e^{p t})`` (:func:`_modal_amplitudes`), so ``|xi(t)| <= E(t) = |c_r| e^{r t} +
+    2 |c_p| e^{Re(p) t}``, a decreasing envelope.  Past ``T_E`` with ``E(T_E) = b`` (bisected,
+    ``b`` lowered by 1e-9 to cover the amplitudes' rounding) ``xi`` stays in the band, so the
+    last exit lies before it; it is searched on a grid of ``per_period`` points per period of
+    the pair over the last 2, 4, 8, ... periods before ``T_E`` until one is above ``b`` (the
+    envelope changes little over a period, so usually the first window holds it), then located
+    on the analytic response (:func:`_last_exit`).  ``b`` in the units of ``xi``, per design.
+    Returns seconds, nan where not resolved (roots not well separated -- relative separation
+    below 1e-3, where the amplitudes lose accuracy -- or a window of ``max_points`` points).
+
+    >>> resp, _ = _Response.build(1.0, 2e-5 / 3 + 1e-8 / 3, (100.0 + 2e-5 * 1e-8) / 3,
+    ...                           100.0 * 1e-8, -0.1, 0.0, 0.0, order=2)
+    >>> round(float(_envelope_settling(resp, np.array([0.002]))[0]), 1)  # ln(50) / 1e-8
+    391202300.5
+    """
+    n = resp.n
+    out = np.full(n, np.nan)
+    l = resp.roots
+    with np.errstate(all="ignore"):
+        c = _modal_amplitudes(l, resp.d)
+        ok = ((l.imag != 0).any(axis=1) & (l.real.max(axis=1) < 0) & np.isfinite(c).all(axis=1)
+              & (_pair_separations(l).min(axis=1) >= 1e-3))
+    idx = np.nonzero(ok)[0]
+    if idx.size == 0:
+        return out
+    l, c, b = l[idx], c[idx], np.asarray(b, float)[idx]
+    k = np.arange(idx.size)
+    ir, ip = np.argmin(np.abs(l.imag), axis=1), np.argmax(l.imag, axis=1)
+    amp = np.stack([np.abs(c[k, ir].real), 2.0 * np.abs(c[k, ip])], axis=1)
+    sig = -np.stack([l[k, ir].real, l[k, ip].real], axis=1)
+    target = b * (1.0 - 1e-9)
+    with np.errstate(divide="ignore"):  # each term is below target / 2 after its hi
+        hi = np.maximum(np.log(2.0 * amp / target[:, None]) / sig, 0.0).max(axis=1)
+    lo = np.zeros_like(hi)
+    for _ in range(200):  # E decreasing: E(lo) > target >= E(hi)
+        mid = 0.5 * (lo + hi)
+        up = (amp * np.exp(-sig * mid[:, None])).sum(axis=1) > target
+        lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
+        if np.all(hi - lo <= 4 * _EPS * hi):
+            break
+    period = 2.0 * np.pi / l[k, ip].imag
+    todo, periods = k, 2
+    while todo.size and periods * per_period <= max_points:
+        m = periods * per_period + 1
+        t0 = np.maximum(hi[todo] - periods * period[todo], 0.0)
+        t = t0[:, None] + (hi[todo] - t0)[:, None] * np.linspace(0.0, 1.0, m)[None, :]
+        sub = resp.subset(idx[todo])
+        st = _last_exit(sub, t, sub(t, nder=1), b[todo])
+        out[idx[todo]] = np.where(np.isnan(st) & (t0 == 0.0), 0.0, st)  # never above b
+        todo = todo[np.isnan(st) & (t0 > 0.0)]
+        periods *= 2
     return out
 
 
