@@ -17,6 +17,7 @@ import mpmath as mp
 import numpy as np
 import openpyxl
 import pytest
+from mproots import polyroots
 
 import govopt
 from govopt.analysis import loadchange, statics
@@ -41,11 +42,8 @@ def problem(spec):
 
 
 def _polyroots(coeffs):
-    """mpmath roots, highest power first, on mpmath 1.3 and >= 1.4 (``asc=True``)."""
-    try:
-        return mp.polyroots(coeffs[::-1], maxsteps=500, extraprec=400, asc=True)
-    except TypeError:
-        return mp.polyroots(coeffs, maxsteps=500, extraprec=400)
+    """mpmath roots, highest power first."""
+    return polyroots(coeffs, maxsteps=500, extraprec=400)
 
 
 def mp_modes(coeffs, x):
