@@ -260,9 +260,12 @@ def test_huge_flywheel_design_agrees_with_evaluate(tmp_path, inertia):
     assert f_lo <= d["dashpot_N_m_s_per_rad"] <= f_hi
     lc = res.dynamics["load_changes"][0]
     assert not lc["over_regulates"] and lc["hurwitz_margin"] >= 0.1
-    # a settling limit cannot be verified here: infeasible, saying why (exit 2, not a 'bug')
+    # settling past the time grid comes from the modes' envelope (transient._envelope_settling:
+    # ~3e5 s at 4e7 kg m^2, 7.7e6 s at 1e9, checked against mpmath in test_transient.py), so a
+    # 10 s limit is infeasible, naming the fastest admissible settling (exit 2, not a 'bug')
+    assert 1e5 < lc["settling_time_s"] < 1e8
     path.write_text(path.read_text().replace("hurwitz_margin = 0.1", 'hurwitz_margin = 0.1\n'
                                              'max_settling_time = "10 s"', 1))
-    with pytest.raises(govopt.errors.InfeasibleError, match=r"max_settling_time 10 s .* no "
-                       "admissible dash-pot settles within the analysed horizon"):
+    with pytest.raises(govopt.errors.InfeasibleError, match=r"max_settling_time 10 s .* the "
+                       r"fastest admissible settling is \d\.\d+e\+0[4-7] s"):
         dz.design(govopt.load_spec(path))
