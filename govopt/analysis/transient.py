@@ -1161,8 +1161,9 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
             break
     first_arrival = zeros[0] if zeros else math.inf
     # settling: last time |xi| = band * scale (inf if not settled within the analysed horizon)
-    cut, truncated = truncated, bool(stable and not extrap and not _tail_ok(t, xi, b))
-    if stable and cut:  # grid cut at max_points: past it, the modes' envelope decides
+    settled = _tail_ok(t, xi, b)
+    cut, truncated = truncated, bool(stable and not extrap and not settled)
+    if stable and cut and not settled:  # grid cut at max_points: the modes' envelope decides
         resp2 = _Response.build(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, order=2)[0]
         settling = float(_envelope_settling(resp2, np.array([b]), _PER_PERIOD, max_points)[0])
         truncated = math.isnan(settling)
@@ -1637,12 +1638,14 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
                 a_, o_, to_, st_, b = _events_on_grid(sub, t, y, s0[idx], band, d[idx, 0],
                                                       stable[idx], per_period)
                 ex = extrap[loc]
-                tail = _tail_ok(t, y[:, 0], b) | ex
+                settled = _tail_ok(t, y[:, 0], b)
+                tail = settled | ex
                 st_ = np.where(stable[idx] & ~tail, np.inf, st_)  # not settled in horizon
                 if ex.any():
                     e = np.nonzero(ex)[0]
                     st_[e] = _extrapolate_settling(sub.subset(e), t[e], y[e], b[e], st_[e])
-                cut = truncated[loc] & stable[idx]  # grid cut at max_points: the envelope
+                # grid cut at max_points before settling: the modes' envelope decides
+                cut = truncated[loc] & stable[idx] & ~settled
                 if cut.any():
                     e = np.nonzero(cut)[0]
                     env = _envelope_settling(sub.subset(e), b[e], per_period, max_points)
