@@ -964,7 +964,10 @@ class TransientResult:
     ``settling_time`` is the smallest ``T`` with ``|xi(t)| <= band * |xi0|`` for all ``t >= T``
     (``|xi0|`` replaced by ``max |xi|`` if ``xi0 = 0``); inf for an unstable design, or when a
     stable design has not settled within ``horizon`` (``|xi| <= band |xi0| / 4`` over its last
-    quarter; then ``truncated`` is True).  ``extrema`` lists
+    quarter; then ``truncated`` is True: *not decided*, not 'never').  Where the event grid is
+    cut at ``max_points`` before the response settles (a lightly damped pendulum under a huge
+    flywheel) settling is found past it from the modes' envelope (:func:`_envelope_settling`)
+    and may exceed ``horizon``.  ``extrema`` lists
     ``(t, xi(t))`` at each zero of ``xi'`` in ``(0, horizon]``; the horizon reaches every zero
     of ``xi`` and the largest far-side excursion (:class:`_Tail`).  For unstable designs
     ``over_regulation`` and the other events are those within ``horizon`` (the decision still
@@ -1070,7 +1073,8 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
     stable design (decay = slowest rate), extended to the window the dominant modes call for
     (over-regulation for all ``t >= 0``: :class:`_Tail`), doubled until
     ``|xi| <= band |xi0| / 4`` over its last quarter, and to a few slow periods (at most e^20
-    growth) for an unstable one; grids are capped at ``max_points`` uniform points.  An
+    growth) for an unstable one; grids are capped at ``max_points`` uniform points (past a
+    cut, settling comes from the modes' envelope: :func:`_envelope_settling`).  An
     unstable design gives ``stable=False``, ``settling_time=inf`` and events within the horizon
     (+-inf where they overflow), never an exception or nan.
     """
@@ -1228,7 +1232,8 @@ def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
 class TransientSummary:
     """Vectorised load-change summary over many designs (arrays of the broadcast shape).
 
-    Same meanings as :class:`TransientResult` (``roots`` has a trailing axis of 3).
+    Same meanings as :class:`TransientResult` (``roots`` has a trailing axis of 3);
+    ``truncated`` is True where a stable design's settling was not decided (inf).
     """
 
     roots: np.ndarray
@@ -1568,7 +1573,10 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
     default horizon is that of :func:`analyse`, extended to the window the dominant modes call
     for (the dominance time, and until no later far-side excursion can be larger than the one
     found), and doubled for the designs whose tail is not yet well inside the band; a stable
-    design not settled within it is reported inf.  Returns a :class:`TransientSummary`; raises
+    design not settled within it is reported inf (``truncated``).  Where the uniform grid is cut
+    at ``max_points`` before settling, settling comes from the modes' envelope
+    (:func:`_envelope_settling`, the same as :func:`analyse`).  Returns a
+    :class:`TransientSummary`; raises
     ValueError for non-finite inputs or ``a0 = 0`` (nan events only where the roots themselves
     overflow).
     """
