@@ -135,6 +135,23 @@ def test_a_spec_never_sends_the_terminal_an_escape_code(tmp_path):
         assert "a\\x1b[31mred.toml" in text
 
 
+def test_settling_not_decided_is_not_never(shaft):
+    """A stable response whose settling the solver could not place (its time grid cut, the
+    envelope unresolved: ``settling_not_decided``) reads "not decided", never "never"."""
+    import copy
+
+    res = copy.copy(shaft)
+    res.dynamics = copy.deepcopy(shaft.dynamics)
+    lc = res.dynamics["load_changes"][0]
+    assert lc["stable"] and math.isfinite(lc["settling_time_s"])
+    lc.update(settling_time_s=math.inf, settling_not_decided=True)
+    table = sections.load_changes(res)[0]
+    row = next(r for r in table.rows if str(r[0]).startswith("settling time"))
+    assert row[2] == "not decided"
+    assert any("'not decided'" in n for n in table.notes)
+    assert not any("'never'" in n and "settling" in n for n in table.notes)
+
+
 def test_every_value_has_its_unit_and_margins_read_as_margins(designed):
     """The checks table: a unit on every row (``-`` for a ratio), angles in degrees, lengths in
     mm, stresses in MPa (one unit per quantity: the summary's and the tables' units), margins

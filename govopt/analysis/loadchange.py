@@ -197,6 +197,9 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
         f"over_regulation_scaled_{u}": float(res.over_regulation_scaled),
         "first_arrival_time_s": float(res.first_arrival_time),
         "settling_time_s": float(res.settling_time),
+        # inf with this set: a stable response whose settling the solver could not place
+        # (transient.TransientResult.truncated), not one that never settles
+        "settling_not_decided": bool(res.truncated),
         "settling_band": spec.analysis.settling_band,
         "response": {"t_s": t.tolist(), f"xi_{u}": np.asarray(xi).tolist()},
     }

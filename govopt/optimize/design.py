@@ -939,9 +939,9 @@ def _dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
                 f"{req.max_settling_time:g} s conflicts with 'no over-regulation' and eq. (32): "
                 + (f"the fastest admissible settling is {settle:.4g} s {where}"
                    if np.isfinite(settle) else
-                   f"no admissible dash-pot settles within the analysed horizon (at most "
-                   f"{MAX_TRANSIENT_POINTS} time points: the load change's slowest mode is "
-                   f"too slow, as with a very large flywheel) {where}"))
+                   f"no admissible dash-pot's settling could be placed (a time grid of at "
+                   f"most {MAX_TRANSIENT_POINTS} points, then the modes' envelope: the load "
+                   f"change's modes are too far apart, as with a very large flywheel) {where}"))
     vib = least.get("vibration", np.inf)
     if req.max_vibration is not None and vib > req.max_vibration:
         return (f"{spec.path}: infeasible: requirements.max_vibration "

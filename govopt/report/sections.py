@@ -209,15 +209,21 @@ def load_changes(res) -> list[Table]:
         ["first arrival at the new equilibrium", "s",
          *(cell(get(lc, "first_arrival_time_s"), "never") for lc in changes)],
         [f"settling time ({100 * band:g} % band)" if band else "settling time", "s",
-         *(cell(get(lc, "settling_time_s"), "never") for lc in changes)],
+         *(cell(get(lc, "settling_time_s"),
+                "not decided" if get(lc, "settling_not_decided") else "never")
+           for lc in changes)],
     ]
     notes = []
     if any(_is_inf(get(lc, "first_arrival_time_s")) for lc in changes):
         notes.append("first arrival 'never': the response approaches the new equilibrium "
                      "without reaching it (no crossing, so no over-regulation).")
-    if any(_is_inf(get(lc, "settling_time_s")) for lc in changes):
+    if any(_is_inf(get(lc, "settling_time_s")) and not get(lc, "settling_not_decided")
+           for lc in changes):
         notes.append("settling time 'never': the response does not stay within the band "
-                     "(unstable, or not settled within the analysed horizon).")
+                     "(unstable).")
+    if any(get(lc, "settling_not_decided") for lc in changes):
+        notes.append("settling time 'not decided': a stable response whose settling lies "
+                     "beyond what the time grid (govopt.limits.MAX_TRANSIENT_POINTS) resolves.")
     if any(_is_inf(get(lc, f"over_regulation_{si}")) for lc in changes):
         notes.append("over-regulation 'unbounded': the load change is unstable and the "
                      "excursion grows without bound.")
