@@ -433,10 +433,12 @@ def geometry_rows(spec, d, D, n, kappa, l0, F1=None, F2=None) -> dict:
     The static range ``F1 <= F2`` defaults to :func:`static_range`; E is the grade's or,
     without one, the EN 10270-1 steel default of :func:`wire`."""
     kind = KINDS[spec.governor.spring]
+    senses = {r.name: r.sense for r in ck.TABLES[kind] if r.name in ck.GEOMETRY}
+    if not senses:  # no geometric row for this kind (an extension spring): nothing to compute
+        return {}
     if F1 is None:
         F1, F2 = static_range(spec, kappa, l0)
     kw = _kw(spec, d, D, n, kappa, l0, F1, F2)
-    senses = {r.name: r.sense for r in ck.TABLES[kind]}
     return {k: (v, lim, senses[k]) for k, (v, lim) in ck.evaluate(kind, ck.GEOMETRY, **kw).items()}
 
 
