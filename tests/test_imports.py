@@ -88,8 +88,25 @@ def test_evaluate_xlsx_loads_openpyxl_only_then(tmp_path):
     assert "openpyxl" in loaded and "matplotlib" not in loaded and "pandas" not in loaded
 
 
-def test_design_loads_cvxpy_without_scipy_stats(tmp_path):
+def test_design_certified_by_the_energy_bound_loads_no_cvxpy(tmp_path):
+    """The bundled design's continuous bound is the energy bound, attained by a spring that
+    meets every row of the GP (optimize/gp_table.energy_optimum): no solve, no cvxpy."""
     loaded = modules_after("design", "--json", cwd=tmp_path)
+    assert "govopt.optimize.design" in loaded
+    assert not loaded & {"cvxpy", "govopt.optimize.spring_gp", "scipy.stats", "matplotlib",
+                         "pandas", "openpyxl", *FRAMEWORKS}
+
+
+def test_design_that_needs_the_gp_loads_cvxpy_without_scipy_stats(tmp_path):
+    """With Wahl's factor (K > 1) the energy bound is not attained: the GP decides, in cvxpy,
+    imported without scipy.stats."""
+    from govopt.examples import SPECS
+
+    text = (SPECS / "hamabe-design.toml").read_text()
+    assert "[material]\n" in text
+    spec = tmp_path / "wahl.toml"
+    spec.write_text(text.replace("[material]\n", '[material]\nstress_correction = "wahl"\n', 1))
+    loaded = modules_after("design", str(spec), "--json", cwd=tmp_path)
     assert "cvxpy" in loaded and "govopt.optimize.spring_gp" in loaded
     assert not loaded & {"scipy.stats", "matplotlib", "pandas", "openpyxl", *FRAMEWORKS}
 

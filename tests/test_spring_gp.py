@@ -431,3 +431,54 @@ def test_random_specs_gp_vs_grid(gp_wahl, fk, ff, fs, fd):
     if ok.any():
         grid_best = float(np.where(ok, spring.wire_mass(d, r, n, spec["density"]), np.inf).min())
         assert sol.mass <= grid_best * (1 + 1e-6)
+
+
+# ---------------------------------------------------------------------------------------------
+# The energy bound's certificate (optimize/gp_table.energy_optimum): no solver where it holds
+
+
+def test_energy_optimum_is_the_gps_optimum():
+    """On random band problems (uncorrected stress, as the design's continuous bound poses them)
+    the spring :func:`energy_optimum` certifies has the GP's least mass (Clarabel's, to its
+    1e-10 tolerances: 1e-8 here), meets every row, and is never below the GP by more than
+    rounding; it certifies most of them (the stress and the band bind)."""
+    from govopt.optimize.gp_table import _complete_values, energy_optimum
+
+    gp = SpringGP(correction="none", stiffness="band")
+    rng = np.random.default_rng(7)
+    certified = 0
+    for _ in range(60):
+        k_hi = rng.uniform(2e3, 3e4)
+        values = dict(kappa_min=k_hi * rng.uniform(0.3, 0.9), kappa_max=k_hi,
+                      F_max=rng.uniform(200.0, 2000.0), k_s=rng.uniform(300e6, 600e6),
+                      G=80e9, density=7850.0, d_min=0.002, d_max=0.025, r_min=0.01,
+                      r_max=0.08, n_min=3.0, n_max=20.0, C_min=4.0, C_max=16.0,
+                      L_body_max=rng.uniform(0.1, 0.4),
+                      force_per_stiffness=rng.choice([0.0, rng.uniform(1e-3, 0.05)]) or None)
+        opt = energy_optimum(_complete_values(values, "band"))
+        sol = gp.solve(**values)
+        if opt is None:
+            continue
+        certified += 1
+        assert sol.ok
+        assert opt.objective == pytest.approx(sol.objective, rel=1e-8)
+        assert opt.objective <= sol.objective * (1 + 1e-9)
+        assert opt.stress <= values["k_s"] * (1 + 1e-12)
+        assert values["kappa_min"] * (1 - 1e-12) <= opt.stiffness <= k_hi * (1 + 1e-12)
+        C = 2 * opt.r / opt.d
+        assert 4.0 <= C <= 16.0 and 3.0 <= opt.n <= 20.0 and 0.01 <= opt.r <= 0.08
+        assert (opt.n + 1) * opt.d <= values["L_body_max"]
+    assert certified >= 30
+
+
+def test_energy_optimum_only_where_the_bound_is_attained():
+    """Wahl's factor K > 1 (the bound is not attained) or a stress allowable depending on d: no
+    certificate; a body length no spring of the family fits: none either (the GP decides)."""
+    from govopt.optimize.gp_table import _complete_values, energy_optimum
+
+    values = dict(kappa_min=4e3, kappa_max=6e3, F_max=300.0, k_s=500e6, G=80e9, density=7850.0)
+    v = _complete_values(values, "band")
+    assert energy_optimum(v) is not None
+    assert energy_optimum(v, correction="wahl") is None
+    assert energy_optimum(v, allowable_exponent=0.1) is None
+    assert energy_optimum(_complete_values({**values, "L_body_max": 1e-3}, "band")) is None

@@ -618,9 +618,12 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
     The masses are visited in the order of a lower bound of their objective (the flying and
     central masses plus :func:`spring_mass_lower_bound`), and the visit stops once that bound
     exceeds the best GP optimum found: the result is the one of solving every mass (the least
-    objective, ties to the first mass), from a few solves of one shared GP.
+    objective, ties to the first mass), from a few solves of one shared GP. Where that bound is
+    attained by a spring meeting every row of the GP's table
+    (:func:`govopt.optimize.gp_table.energy_optimum`: the uncorrected stress and the stiffness
+    band bind) that spring is the GP's optimum, certified without a solve (and without cvxpy).
     """
-    from .spring_gp import _cached_gp
+    from .gp_table import _complete_values, energy_optimum
 
     mat = spec.material
     k_s, k_exp = mat.allowable_shear_stress, 0.0
@@ -628,7 +631,7 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
         from ..analysis.spring_engineering import allowable_monomial
 
         k_s, k_exp = allowable_monomial(spec, *req.wire_diameter)
-    gp = _cached_gp("mass", spec.material.stress_correction, "band", k_exp)
+    gp = None
     rows = np.nonzero(lo <= hi)[0]
     k_lo, k_hi = np.maximum(lo[rows], 1e-9), np.minimum(hi[rows], 1e12)
     per_kappa = km.force.x[rows, -1]
@@ -643,8 +646,15 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
             break
         i = int(rows[j])
         per = float(per_kappa[j])
-        sol = gp.solve(**gp_values(spec, req, km, i, float(k_lo[j]), float(k_hi[j]), per),
-                       k_s=k_s)
+        values = {**gp_values(spec, req, km, i, float(k_lo[j]), float(k_hi[j]), per),
+                  "k_s": k_s}
+        sol = energy_optimum(_complete_values(values, "band"), mat.stress_correction, k_exp)
+        if sol is None:  # not certified by the energy bound: the GP (cvxpy) decides
+            if gp is None:
+                from .spring_gp import _cached_gp
+
+                gp = _cached_gp("mass", mat.stress_correction, "band", k_exp)
+            sol = gp.solve(**values)
         if not sol.ok:
             continue
         m, c = float(km.m[i, 0]), float(km.central[i, 0])

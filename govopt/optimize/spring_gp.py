@@ -48,7 +48,7 @@ import math
 import threading
 import time
 import warnings
-from collections.abc import Callable, Iterable, Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -58,6 +58,14 @@ from govopt.model import spring
 
 from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize (issue 14)
 from ._cvxpy import installed_solvers
+from .gp_table import (
+    _MATERIAL_KEYS,
+    DEFAULT_BOUNDS,
+    _complete_values,
+    _Spec,
+    _specs,
+    _stress_g,
+)
 
 __all__ = [
     "CORRECTIONS",
@@ -79,30 +87,6 @@ OBJECTIVES = ("mass", "stress", "outer diameter", "body length")
 CORRECTIONS = spring.STRESS_CORRECTIONS
 STIFFNESS_MODES = ("equality", "band")
 
-#: Stand-ins for "no limit" (the GP needs a positive number for every parameter).
-_BIG = 1e6
-_TINY = 1e-9
-
-#: Optional limits and their defaults; ``None`` (or ``inf`` / ``0``) means "no limit".
-#: ``n_min = 1`` and ``3 <= C <= 20`` are coiling practice (Wahl 1944, ch. 2); pass others freely.
-DEFAULT_BOUNDS: dict[str, float | None] = {
-    "d_min": None,
-    "d_max": None,
-    "r_min": None,
-    "r_max": None,
-    "n_min": 1.0,
-    "n_max": None,
-    "C_min": 3.0,
-    "C_max": 20.0,
-    "D_out_max": None,
-    "L_body_max": None,
-    "f_surge_min": None,
-    # force growing with the stiffness itself, F = F_max + force_per_stiffness * kappa: a
-    # governor's spring force at its outermost configuration is F_n + 2 kappa (l_a - l_n)
-    "force_per_stiffness": None,
-}
-_UPPER_KEYS = {"d_max", "r_max", "n_max", "C_max", "D_out_max", "L_body_max"}
-_MATERIAL_KEYS = ("F_max", "k_s", "G", "density")
 
 #: Clarabel tolerances tighter than its 1e-8 defaults: same solve time here (a few more
 #: iterations), and the KKT residuals of the recovered GP duals drop from ~1e-5 to ~1e-7.
@@ -126,89 +110,6 @@ def _default_solver() -> str | None:
 # ----------------------------------------------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class _Spec:
-    """One named constraint ``g(x) <sense> limit``.
-
-    ``g_exps`` are the exponents of the parameters appearing in ``g`` itself (``g`` is a monomial
-    in the parameters), used to turn duals into parameter sensitivities.
-    """
-
-    name: str
-    limit: str
-    sense: str  # "upper": g <= limit, "lower": g >= limit, "equal": g == limit
-    g: Callable[..., Any]
-    g_exps: tuple[tuple[str, float], ...] = ()
-    source: str = ""
-
-    def log_exponents(self) -> dict[str, float]:
-        """Parameter exponents in cvxpy's ``log(args[0]) - log(args[1])`` for this constraint."""
-        sign = -1.0 if self.sense == "lower" else 1.0  # cvxpy stores g >= c as c <= g
-        out = {k: sign * e for k, e in self.g_exps}
-        out[self.limit] = out.get(self.limit, 0.0) - sign
-        return out
-
-
-def _stress_g(d, r, n, t, P, correction):
-    # F = F_max + force_per_stiffness * kappa(d, r, n): a posynomial (the second term is ~0
-    # unless force_per_stiffness is given)
-    F = P["F_max"] + P["force_per_stiffness"] * _stiffness_g(d, r, n, P)
-    if correction == "none":
-        return 16.0 / np.pi * F * r * d**-3
-    if correction == "bergstrasser":  # K_B = (C + 0.5)/(C - 0.75) = 1 + 1.25 t, t >= 1/(C - 0.75)
-        return 16.0 / np.pi * F * (r * d**-3 + 1.25 * t * r * d**-3)
-    # K = 1 + 0.75 t + 0.615 / C with C = 2 r / d, t >= 1 / (C - 1)
-    return 16.0 / np.pi * F * (r * d**-3 + 0.75 * t * r * d**-3 + 0.3075 * d**-2)
-
-
-def _surge_g(d, r, n, P):
-    return d / (8.0 * np.pi) * r**-2 / n * P["G"] ** 0.5 * (2.0 * P["density"]) ** -0.5
-
-
-def _stiffness_g(d, r, n, P):
-    return P["G"] * d**4 / (64.0 * r**3 * n)
-
-
-def _specs(correction: str, stiffness: str, allowable_exponent: float = 0.0) -> list[_Spec]:
-    """The constraint table; ``allowable_exponent`` ``m``: the allowable stress is
-    ``k_s d^-m`` (a wire grade's ``R_m ~ A d^-m``, a monomial), so the stress limit reads
-    ``tau d^m <= k_s``."""
-    m = float(allowable_exponent)
-    hamabe = "Hamabe, Example 1"
-    out = []
-    if stiffness == "equality":
-        out.append(_Spec("stiffness", "kappa", "equal",
-                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
-    else:
-        out.append(_Spec("minimum stiffness", "kappa_min", "lower",
-                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
-        out.append(_Spec("maximum stiffness", "kappa_max", "upper",
-                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
-    stress_src = hamabe + {"wahl": "; Wahl 1944 eq. 2-12",
-                           "bergstrasser": "; Bergstraesser, EN 13906-1, Shigley eq. (10-5)"
-                           }.get(correction, "")
-    out += [
-        _Spec("allowable stress", "k_s", "upper",
-              lambda d, r, n, t, P: _stress_g(d, r, n, t, P, correction) * d**m
-              if m else _stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
-              stress_src),
-        _Spec("minimum wire diameter", "d_min", "lower", lambda d, r, n, t, P: d),
-        _Spec("maximum wire diameter", "d_max", "upper", lambda d, r, n, t, P: d),
-        _Spec("minimum coil radius", "r_min", "lower", lambda d, r, n, t, P: r),
-        _Spec("maximum coil radius", "r_max", "upper", lambda d, r, n, t, P: r),
-        _Spec("minimum active turns", "n_min", "lower", lambda d, r, n, t, P: n),
-        _Spec("maximum active turns", "n_max", "upper", lambda d, r, n, t, P: n),
-        _Spec("minimum spring index", "C_min", "lower", lambda d, r, n, t, P: 2.0 * r / d,
-              source="Wahl 1944 ch. 2"),
-        _Spec("maximum spring index", "C_max", "upper", lambda d, r, n, t, P: 2.0 * r / d,
-              source="Wahl 1944 ch. 2"),
-        _Spec("outer diameter", "D_out_max", "upper", lambda d, r, n, t, P: 2.0 * r + d),
-        _Spec("body length", "L_body_max", "upper", lambda d, r, n, t, P: (n + 1.0) * d),
-        _Spec("surge frequency", "f_surge_min", "lower",
-              lambda d, r, n, t, P: _surge_g(d, r, n, P), (("G", 0.5), ("density", -0.5)),
-              "Wahl 1944 ch. 25"),
-    ]
-    return out
 
 
 def _objective_expr(objective, d, r, n, t, P, correction):
@@ -433,33 +334,6 @@ def check_design(d, r, n, values: Mapping[str, float], correction: str = "wahl",
     return feasible, ratios
 
 
-def _complete_values(values: Mapping[str, float], stiffness: str) -> dict[str, float]:
-    """Validate user values, fill the defaults and replace "no limit" by big/tiny numbers."""
-    kappa_keys = ("kappa",) if stiffness == "equality" else ("kappa_min", "kappa_max")
-    required = kappa_keys + _MATERIAL_KEYS
-    allowed = set(required) | set(DEFAULT_BOUNDS)
-    unknown = set(values) - allowed
-    if unknown:
-        raise TypeError(f"unknown spring GP values {sorted(unknown)}; allowed: {sorted(allowed)}")
-    missing = [k for k in required if values.get(k) is None]
-    if missing:
-        raise TypeError(f"missing required spring GP values {missing}")
-    out: dict[str, float] = {}
-    for key in required:
-        val = float(values[key])
-        if not (math.isfinite(val) and val > 0.0):
-            raise ValueError(f"{key} must be positive and finite, got {values[key]!r}")
-        out[key] = val
-    for key, default in DEFAULT_BOUNDS.items():
-        val = values.get(key, default)
-        if val is None or (key in _UPPER_KEYS and math.isinf(val)) or \
-                (key not in _UPPER_KEYS and val == 0):
-            val = _BIG if key in _UPPER_KEYS else _TINY
-        val = float(val)
-        if not (math.isfinite(val) and val > 0.0):
-            raise ValueError(f"{key} must be positive (or None for no limit), got {val!r}")
-        out[key] = val
-    return out
 
 
 # ----------------------------------------------------------------------------------------------
