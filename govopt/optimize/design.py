@@ -10,7 +10,10 @@ Method (each step uses the statics and dynamics modules as evaluators):
    with parameters and re-solved, :class:`~govopt.optimize.spring_gp.SpringGP`): least mass with
    the stiffness in that interval, stress from the exact force ``F_n + 2 kappa (l_a - l_n)``,
    index, envelope, surge, turns and diameter bounds. The dynamics requirements are relaxed here,
-   so the best of these is a true lower bound on any design.
+   so the best of these is a true lower bound on any design. Where the spring's energy bound is
+   attained by a spring meeting every row of the GP (the uncorrected stress and the stiffness
+   band bind), that spring is the GP's optimum without a solve
+   (:func:`govopt.optimize.gp_table.energy_optimum`); cvxpy solves the rest.
 3. **Discrete design**: every catalogue wire, coil radius on its grid, turns on their step and
    mass on its grid is checked against the same constraints in closed form (vectorised, exhaustive),
    and the candidates are visited best first until one also admits a dash-pot with Hamabe's
