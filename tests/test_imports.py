@@ -99,7 +99,7 @@ def test_design_certified_by_the_energy_bound_loads_no_cvxpy(tmp_path):
 
 def test_design_that_needs_the_gp_loads_cvxpy_without_scipy_stats(tmp_path):
     """With Wahl's factor (K > 1) the energy bound is not attained: the GP decides, in cvxpy,
-    imported without scipy.stats."""
+    imported without scipy.stats and scipy.optimize (optimize/_cvxpy.py)."""
     from govopt.examples import SPECS
 
     text = (SPECS / "hamabe-design.toml").read_text()
@@ -108,7 +108,8 @@ def test_design_that_needs_the_gp_loads_cvxpy_without_scipy_stats(tmp_path):
     spec.write_text(text.replace("[material]\n", '[material]\nstress_correction = "wahl"\n', 1))
     loaded = modules_after("design", str(spec), "--json", cwd=tmp_path)
     assert "cvxpy" in loaded and "govopt.optimize.spring_gp" in loaded
-    assert not loaded & {"scipy.stats", "matplotlib", "pandas", "openpyxl", *FRAMEWORKS}
+    assert not loaded & {"scipy.stats", "scipy.optimize", "matplotlib", "pandas", "openpyxl",
+                         *FRAMEWORKS}
 
 
 def run_python(code: str, **env) -> str:
