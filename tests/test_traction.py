@@ -371,7 +371,7 @@ def test_leaf_fly_weight_from_measured_deflection():
     kappa = gov.leaf_stiffness(w, t, E)
     tt = gov.terms(gov.x_outer, m)
     assert float(np.sqrt(tt.omega_squared(kappa))) == pytest.approx(w2, rel=1e-12)
-    # the throttle is just fully open at the spec's inner speed (227.3 rpm, rounded)
+    # the throttle is just fully open at the spec's inner speed (227.26 rpm, rounded)
     w1 = float(np.sqrt(gov.terms(gov.x_inner, m).omega_squared(kappa)))
     assert w1 / RPM == pytest.approx(227.2648, abs=1e-4)
     assert w1 == pytest.approx(q(sp["inner"], "angular_velocity"), rel=2e-4)
