@@ -19,7 +19,8 @@
 
 The writer formats only; every number comes from the result or from govopt's own functions
 (the valve-gear reaction constants). Words replace what is not a number: ``yes``/``no`` for
-booleans, ``never`` for a time that never comes, ``unbounded`` for an unstable excursion.
+booleans, ``never`` for a time that never comes, ``not decided`` for a settling time
+the solver could not place, ``unbounded`` for an unstable excursion.
 
 Every sheet prints: A4, fit to the page width, landscape where wide, the first row repeated, a
 print area, the sheet's name and page in the footer. Every formula cell carries govopt's own
@@ -1228,8 +1229,9 @@ def _build_notes(ws: Worksheet, res: Result) -> None:
                           "result, so readers that do not recalculate (pandas, previewers) "
                           "show numbers; Excel and LibreOffice recalculate on opening."),
         ("words", "yes/no for booleans; 'never' for a time that never comes (a response "
-                  "that never reaches or never settles at its new equilibrium); 'unbounded' "
-                  "for an unstable excursion; a blank cell is not defined."),
+                  "that never reaches or never settles at its new equilibrium); 'not "
+                  "decided' for a settling time beyond what the solver's time grid resolves; "
+                  "'unbounded' for an unstable excursion; a blank cell is not defined."),
         ("printing", "Each sheet prints to the page width (landscape where wide) with its "
                      "first row repeated; response data beside the Dynamics charts are not "
                      "printed."),
