@@ -299,7 +299,7 @@ def bench(*, quick, out, targets) -> None:
     _echo(b.summary(points, rows))
     if out is not None:
         for path in b.write_report(points, out, rows):
-            _echo(f"wrote {path}")
+            _echo(f"wrote {Path(path).absolute()}")
 
 
 @_guarded
@@ -347,12 +347,12 @@ def _study_outputs(db: Path, out: Path | None, plot: Path | None, force: bool) -
     with Store(db, create=False) as store:
         _echo(summary_text(store))
         if out is not None:
-            _echo(f"wrote {export(store, out, overwrite=force)}")
+            _echo(f"wrote {Path(export(store, out, overwrite=force)).absolute()}")
         if plot is not None:
             from .report.study_plots import plot_study
 
             for path in plot_study(store, plot, overwrite=force):
-                _echo(f"wrote {path}")
+                _echo(f"wrote {Path(path).absolute()}")
 
 
 def _progress_bar():
@@ -398,12 +398,12 @@ def study_export(*, db, out, plot, force) -> None:
 
     check_output(out, overwrite=force, inputs=[db], what="study table")
     with Store(db, create=False) as store:
-        _echo(f"wrote {export(store, out, overwrite=force)}")
+        _echo(f"wrote {Path(export(store, out, overwrite=force)).absolute()}")
         if plot is not None:
             from .report.study_plots import plot_study
 
             for path in plot_study(store, plot, overwrite=force):
-                _echo(f"wrote {path}")
+                _echo(f"wrote {Path(path).absolute()}")
 
 
 @_guarded
