@@ -258,7 +258,7 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         _print_spring(sol, out, sizing, material, kind)
     failed = [c.name for c in sizing.checks if not c.passed] if material is not None else []
     if failed:  # as evaluate: the spring is reported, and exit code 1 says a check failed
-        _echo(f"{len(failed)} of {len(sizing.checks)} checks failed: {', '.join(failed)}",
+        _echo(f"{len(failed)} of {len(sizing.checks)} checks failed: {'; '.join(failed)}",
               err=True)
         raise SystemExit(1)
 
