@@ -442,7 +442,7 @@ def test_energy_optimum_is_the_gps_optimum():
     the spring :func:`energy_optimum` certifies has the GP's least mass (Clarabel's, to its
     1e-10 tolerances: 1e-8 here), meets every row, and is never below the GP by more than
     rounding; it certifies most of them (the stress and the band bind)."""
-    from govopt.optimize.gp_table import _complete_values, energy_optimum
+    from govopt.optimize.gp_table import complete_values, energy_optimum
 
     gp = SpringGP(correction="none", stiffness="band")
     rng = np.random.default_rng(7)
@@ -455,7 +455,7 @@ def test_energy_optimum_is_the_gps_optimum():
                       r_max=0.08, n_min=3.0, n_max=20.0, C_min=4.0, C_max=16.0,
                       L_body_max=rng.uniform(0.1, 0.4),
                       force_per_stiffness=rng.choice([0.0, rng.uniform(1e-3, 0.05)]) or None)
-        opt = energy_optimum(_complete_values(values, "band"))
+        opt = energy_optimum(complete_values(values, "band"))
         sol = gp.solve(**values)
         if opt is None:
             continue
@@ -474,11 +474,11 @@ def test_energy_optimum_is_the_gps_optimum():
 def test_energy_optimum_only_where_the_bound_is_attained():
     """Wahl's factor K > 1 (the bound is not attained) or a stress allowable depending on d: no
     certificate; a body length no spring of the family fits: none either (the GP decides)."""
-    from govopt.optimize.gp_table import _complete_values, energy_optimum
+    from govopt.optimize.gp_table import complete_values, energy_optimum
 
     values = dict(kappa_min=4e3, kappa_max=6e3, F_max=300.0, k_s=500e6, G=80e9, density=7850.0)
-    v = _complete_values(values, "band")
+    v = complete_values(values, "band")
     assert energy_optimum(v) is not None
     assert energy_optimum(v, correction="wahl") is None
     assert energy_optimum(v, allowable_exponent=0.1) is None
-    assert energy_optimum(_complete_values({**values, "L_body_max": 1e-3}, "band")) is None
+    assert energy_optimum(complete_values({**values, "L_body_max": 1e-3}, "band")) is None

@@ -626,7 +626,7 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
     (:func:`govopt.optimize.gp_table.energy_optimum`: the uncorrected stress and the stiffness
     band bind) that spring is the GP's optimum, certified without a solve (and without cvxpy).
     """
-    from .gp_table import _complete_values, energy_optimum
+    from .gp_table import complete_values, energy_optimum
 
     mat = spec.material
     k_s, k_exp = mat.allowable_shear_stress, 0.0
@@ -651,7 +651,7 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
         per = float(per_kappa[j])
         values = {**gp_values(spec, req, km, i, float(k_lo[j]), float(k_hi[j]), per),
                   "k_s": k_s}
-        sol = energy_optimum(_complete_values(values, "band"), mat.stress_correction, k_exp)
+        sol = energy_optimum(complete_values(values, "band"), mat.stress_correction, k_exp)
         if sol is None:  # not certified by the energy bound: the GP (cvxpy) decides
             if gp is None:
                 from .spring_gp import _cached_gp

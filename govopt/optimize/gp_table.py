@@ -130,7 +130,7 @@ def _specs(correction: str, stiffness: str, allowable_exponent: float = 0.0) -> 
     return out
 
 
-def _complete_values(values: Mapping[str, float], stiffness: str) -> dict[str, float]:
+def complete_values(values: Mapping[str, float], stiffness: str) -> dict[str, float]:
     """Validate user values, fill the defaults and replace "no limit" by big/tiny numbers."""
     kappa_keys = ("kappa",) if stiffness == "equality" else ("kappa_min", "kappa_max")
     required = kappa_keys + _MATERIAL_KEYS
@@ -192,10 +192,10 @@ def energy_optimum(values: Mapping[str, float], correction: str = "none",
     (a feasible point at a lower bound: no solver, no tolerance). Only for the uncorrected
     stress and a constant allowable (``correction="none"``, ``allowable_exponent=0``): with
     Wahl's or Bergstraesser's factor ``K > 1`` the bound is not attained. ``values`` are the GP's
-    (:func:`_complete_values`); ``d`` is searched on ``points`` log-spaced wires of the bounds, and
+    (:func:`complete_values`); ``d`` is searched on ``points`` log-spaced wires of the bounds, and
     the spring returned is the one with the most relative slack in its least slack row.
 
-    >>> v = _complete_values(dict(kappa_min=4e3, kappa_max=6e3, F_max=300.0, k_s=500e6,
+    >>> v = complete_values(dict(kappa_min=4e3, kappa_max=6e3, F_max=300.0, k_s=500e6,
     ...                           G=80e9, density=7850.0), "band")
     >>> opt = energy_optimum(v)
     >>> bound = 2 * 7850.0 * 80e9 * 300.0**2 / (6e3 * 500e6**2)

@@ -61,10 +61,10 @@ from ._cvxpy import installed_solvers
 from .gp_table import (
     _MATERIAL_KEYS,
     DEFAULT_BOUNDS,
-    _complete_values,
     _Spec,
     _specs,
     _stress_g,
+    complete_values,
 )
 
 __all__ = [
@@ -300,7 +300,7 @@ def check_design(d, r, n, values: Mapping[str, float], correction: str = "wahl",
     where ``ratios[name] <= 1`` means satisfied (value/limit for upper limits, limit/value for
     lower, ``max(k/kappa, kappa/k)`` for the equality); ``feasible`` allows ``rtol``.
     """
-    v = _complete_values(values, "band" if "kappa" not in values else "equality")
+    v = complete_values(values, "band" if "kappa" not in values else "equality")
     d, r, n = (np.asarray(a, dtype=float) for a in (d, r, n))
     k = spring.stiffness(d, r, n, v["G"])
     C = spring.spring_index(d, r)
@@ -420,7 +420,7 @@ class SpringGP:
 
     def values(self, **values) -> dict[str, float]:
         """The complete, validated parameter values a solve with these keywords would use."""
-        return _complete_values(values, self.stiffness_mode)
+        return complete_values(values, self.stiffness_mode)
 
     def _assign(self, v: Mapping[str, float]) -> None:
         for k, p in self.params.items():
