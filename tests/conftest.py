@@ -2,7 +2,9 @@
 reproducible); set HYPOTHESIS_PROFILE=explore to search new examples locally."""
 
 import os
+import sys
 
+import pytest
 from hypothesis import settings
 
 settings.register_profile("default", derandomize=True, database=None)
@@ -10,10 +12,26 @@ settings.register_profile("explore", max_examples=500, database=None)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "default"))
 
 
-def pytest_terminal_summary(terminalreporter):
-    """The hostile corpus's summary lines (tests/test_hostile.py), shown whatever the capture:
-    "N hostile inputs: 0 tracebacks, 0 hangs, 0 silent results"."""
-    import sys
+_SHOWN = 0  # hostile.SUMMARY lines already attached to a report
 
-    for line in getattr(sys.modules.get("hostile"), "SUMMARY", ()):
-        terminalreporter.write_line(line)
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item, call):
+    """Attach the hostile corpus's new summary lines to the test's report, so that they reach the
+    terminal from a pytest-xdist worker too (reports carry user_properties to the controller)."""
+    global _SHOWN
+    report = (yield).get_result()
+    lines = getattr(sys.modules.get("hostile"), "SUMMARY", [])
+    if report.when == "call" and len(lines) > _SHOWN:
+        report.user_properties.extend(("hostile_summary", ln) for ln in lines[_SHOWN:])
+        _SHOWN = len(lines)
+
+
+def pytest_terminal_summary(terminalreporter):
+    """The hostile corpus's summary lines (tests/test_hostile.py), shown whatever the capture and
+    however many workers: "N hostile inputs: 0 tracebacks, 0 hangs, 0 silent results"."""
+    for reports in terminalreporter.stats.values():
+        for report in reports:
+            for name, line in getattr(report, "user_properties", ()):
+                if name == "hostile_summary":
+                    terminalreporter.write_line(line)

@@ -251,8 +251,9 @@ def cubic_roots(a0, a1, a2, a3, *, polish=3):
     :func:`transient` needs.  Rows with ``a0 = 0`` or non-finite coefficients give nan.
     (Hamabe, Disturbing Actions of a Shaft Governor, eq. (29); his (39), (41) are replaced.)
 
-    >>> np.round(cubic_roots(1.0, 2.0, 3.0, 4.0), 6)   # (s + 1)^2 (s + 4): double root to 1e-8
-    array([-4.+0.j, -1.+0.j, -1.+0.j])
+    >>> r = cubic_roots(1.0, 2.0, 3.0, 4.0)   # (s + 1)^2 (s + 4): the double root to 1e-8
+    >>> bool(np.allclose(np.sort_complex(r), [-4.0, -1.0, -1.0], rtol=0.0, atol=1e-7))
+    True
     """
     a0, a1, a2, a3 = _floats(a0, a1, a2, a3)
     shape = a0.shape
@@ -664,8 +665,9 @@ def transient(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t):
     >>> xi = transient(1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, [0.0, 1.0])   # triple root s = -1
     >>> np.allclose(xi, [1.0, 2.5 * np.exp(-1.0)])
     True
-    >>> transient(1.0, -10.0, 100.0, 10.0, -0.128, 0.0, 18.7, [47.23, 47.5])  # growing
-    array([1.28183829e+307,            -inf])
+    >>> x = transient(1.0, -10.0, 100.0, 10.0, -0.128, 0.0, 18.7, [47.23, 47.5])  # growing
+    >>> bool(1.28e307 < x[0] < 1.29e307 and x[1] == -np.inf)
+    True
     """
     return transient_derivatives(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t, order=0)[0]
 

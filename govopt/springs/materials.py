@@ -189,8 +189,8 @@ def material(grade: str, *, tensile_strength: float | None = None, G: float | No
     ``tensile_strength`` (Pa) replaces the grade's R_m(d) by a constant (required for
     ``"custom"``, which otherwise carries a placeholder).
 
-    >>> material("custom", tensile_strength=1.6e9).tensile_strength(0.017) / 1e6
-    np.float64(1600.0)
+    >>> float(material("custom", tensile_strength=1.6e9).tensile_strength(0.017)) / 1e6
+    1600.0
     """
     try:
         mat = materials()[grade]
