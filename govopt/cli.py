@@ -240,7 +240,9 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         _fail("no spring meets these requirements" + (f": {diagnosis.summary()}"
                                                       if diagnosis else ""))
     out = {"wire_diameter_m": sol.d, "coil_radius_m": sol.r, "active_turns": sol.n,
-           "mass_kg": sol.mass, "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
+           "mass_kg": sol.mass, "end_coils": sol.end_coils,
+           "active_mass_kg": sol.mass * sol.n / (sol.n + sol.end_coils),
+           "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
            "wahl_factor": sol.wahl_factor, "spring_index": sol.index,
            "surge_frequency_Hz": sol.surge_frequency, "sensitivities": sol.sensitivities,
            "active": sol.active, "global_optimum": sol.certificate.get("global_optimum"),

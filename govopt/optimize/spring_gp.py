@@ -32,7 +32,10 @@ Constraints and their sources (the formulas are those of :mod:`govopt.model.spri
                            ch. 25 (lowest surge frequency, both ends fixed).
 =========================  =====================================================================
 
-Objective: the active-coil mass ``rho (pi d^2 / 4) (2 pi r n)`` (a monomial) by default; also
+Objective: the wire mass ``rho (pi d^2 / 4) (2 pi r (n + Q))`` by default, ``Q`` the inactive
+coils (``end_coils``; 0, the active coils only, for the governor's spring; 2 closed end coils
+for ``govopt spring``, EN 13906-1 ``n_t = n + 2``): a posynomial, so the GP stays exact; also
+the literature's volume ``(n + Q) 2 r d^2``, the solid length ``(n + Q) d``,
 ``"stress"`` (least corrected stress at ``F_max``), ``"outer diameter"`` and ``"body length"``.
 
 The problem is built once with cvxpy ``Parameter(pos=True)`` for every number (it is DPP), so a
@@ -82,7 +85,10 @@ __all__ = [
 ]
 
 #: Objectives the GP can minimise (all are posynomials in ``d, r, n``, non-decreasing in ``n``).
-OBJECTIVES = ("mass", "stress", "outer diameter", "body length")
+#: ``"mass"`` counts ``n + end_coils`` coils (:class:`SpringGP`); ``"volume"`` is the
+#: optimisation literature's ``(n + end_coils) D d^2`` (Belegundu 1982, Arora) and
+#: ``"solid length"`` the close-wound length ``(n + end_coils) d``.
+OBJECTIVES = ("mass", "stress", "outer diameter", "body length", "volume", "solid length")
 #: Stress corrections, as in :func:`govopt.model.spring.shear_stress`.
 CORRECTIONS = spring.STRESS_CORRECTIONS
 STIFFNESS_MODES = ("equality", "band")
@@ -112,9 +118,18 @@ def _default_solver() -> str | None:
 
 
 
-def _objective_expr(objective, d, r, n, t, P, correction):
+def _coils(n, end_coils):
+    """``n + end_coils``: every coil of wire (active and inactive ends), a posynomial."""
+    return n + end_coils if end_coils else n
+
+
+def _objective_expr(objective, d, r, n, t, P, correction, end_coils=0.0):
     if objective == "mass":
-        return P["density"] * (np.pi**2 / 2.0) * d**2 * r * n
+        return P["density"] * (np.pi**2 / 2.0) * d**2 * r * _coils(n, end_coils)
+    if objective == "volume":
+        return 2.0 * r * d**2 * _coils(n, end_coils)
+    if objective == "solid length":
+        return _coils(n, end_coils) * d
     if objective == "stress":
         return _stress_g(d, r, n, t, P, correction)
     if objective == "outer diameter":
@@ -132,10 +147,14 @@ def _force(v, d, r, n):
     return v["F_max"] + v["force_per_stiffness"] * spring.stiffness(d, r, n, v["G"])
 
 
-def _objective_np(objective, d, r, n, v, correction):
+def _objective_np(objective, d, r, n, v, correction, end_coils=0.0):
     """The objective evaluated with the exact formulas of :mod:`govopt.model.spring`."""
     if objective == "mass":
-        return spring.wire_mass(d, r, n, v["density"])
+        return spring.wire_mass(d, r, n + end_coils, v["density"])
+    if objective == "volume":
+        return 2.0 * r * d**2 * (n + end_coils)
+    if objective == "solid length":
+        return (n + end_coils) * d
     if objective == "stress":
         return spring.shear_stress(_force(v, d, r, n), d, r, correction)
     if objective == "outer diameter":
@@ -176,12 +195,14 @@ class SpringFigures:
     outer_diameter: float = math.nan
     body_length: float = math.nan
     surge_frequency: float = math.nan
+    #: inactive coils counted in ``mass`` (end coils, hooks; 0: the active coils only)
+    end_coils: float = 0.0
 
     def set_design(self, d: float, r: float, n: float, v: Mapping[str, float],
                    correction: str) -> None:
         """Set ``d, r, n`` and recompute every derived figure from the exact formulas."""
         self.d, self.r, self.n = d, r, n
-        self.mass = float(spring.wire_mass(d, r, n, v["density"]))
+        self.mass = float(spring.wire_mass(d, r, n + self.end_coils, v["density"]))
         self.stiffness = float(spring.stiffness(d, r, n, v["G"]))
         self.stress = float(spring.shear_stress(_force(v, d, r, n), d, r, correction))
         self.index = float(spring.spring_index(d, r))
@@ -357,14 +378,18 @@ class SpringGP:
     def __init__(self, objective: str = "mass", correction: str = "wahl",
                  stiffness: str = "equality", solver: str | None = None,
                  solver_opts: Mapping[str, Any] | None = None,
-                 allowable_exponent: float = 0.0):
+                 allowable_exponent: float = 0.0, end_coils: float = 0.0):
         if objective not in OBJECTIVES:
             raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
         if correction not in CORRECTIONS:
             raise ValueError(f"correction must be one of {CORRECTIONS}, got {correction!r}")
         if stiffness not in STIFFNESS_MODES:
             raise ValueError(f"stiffness must be one of {STIFFNESS_MODES}, got {stiffness!r}")
+        if not (math.isfinite(end_coils) and end_coils >= 0.0):
+            raise ValueError(f"end_coils must be finite and >= 0, got {end_coils!r}")
         self.objective_name = objective
+        #: inactive coils added to ``n`` in the mass, volume and solid-length objectives
+        self.end_coils = float(end_coils)
         self.correction = correction
         self.stiffness_mode = stiffness
         self.solver = solver or _default_solver()
@@ -396,7 +421,8 @@ class SpringGP:
     # -- building blocks -----------------------------------------------------------------------
 
     def _objective(self, d, r, n, t):
-        return _objective_expr(self.objective_name, d, r, n, t, self.params, self.correction)
+        return _objective_expr(self.objective_name, d, r, n, t, self.params, self.correction,
+                               self.end_coils)
 
     def _internal(self) -> list:
         """Wahl auxiliary ``1/(t C) + 1/C <= 1`` with ``C = 2r/d``, i.e. ``t >= 1/(C - 1)``;
@@ -469,7 +495,7 @@ class SpringGP:
         status, raw, elapsed = self._run(self.problem)
         sol = SpringSolution(status=status, objective_name=self.objective_name,
                              correction=self.correction, solver_status=self.problem.status,
-                             solve_time=elapsed, inputs=v)
+                             solve_time=elapsed, inputs=v, end_coils=self.end_coils)
         sol.certificate = self._solver_certificate(raw, status)
         if status not in _SOLVED:
             return sol
@@ -685,7 +711,8 @@ class SpringGP:
             band_values["kappa_max"] = v["kappa"] * (1.0 + stiffness_tol)
             if self._band is None:
                 self._band = SpringGP(self.objective_name, self.correction, "band",
-                                      self.solver, self.solver_opts, self.allowable_exponent)
+                                      self.solver, self.solver_opts, self.allowable_exponent,
+                                      self.end_coils)
             band = self._band
         else:
             band_values = self.values(**values)
@@ -694,7 +721,7 @@ class SpringGP:
             raise ValueError("turn_step and r_step must be positive")
         cont = band.solve(**band_values)
         out = DiscreteSolution(status="infeasible", objective_name=self.objective_name,
-                               continuous=cont)
+                               continuous=cont, end_coils=self.end_coils)
         if cont.status == "infeasible":
             return out
         out.continuous_bound = cont.objective if cont.ok else 0.0
@@ -719,7 +746,8 @@ class SpringGP:
                 continue
             cand, count = _enumerate_wire(row["d"], band_values, self.correction,
                                           self.objective_name, turn_step, r_step, rtol,
-                                          allowable_exponent=self.allowable_exponent)
+                                          allowable_exponent=self.allowable_exponent,
+                                          end_coils=self.end_coils)
             out.candidates_checked += count
             if cand is None:
                 continue
@@ -742,7 +770,8 @@ class SpringGP:
 
 
 def _enumerate_wire(d, v, correction, objective, turn_step, r_step, rtol,
-                    max_points: int = 5_000_000, allowable_exponent: float = 0.0):
+                    max_points: int = 5_000_000, allowable_exponent: float = 0.0,
+                    end_coils: float = 0.0):
     """Best ``(objective, mass, d, r, n)`` for one wire over the r grid, or ``None``."""
     G, F, k_s = v["G"], v["F_max"], v["k_s"] * d**-allowable_exponent
     r_lo = max(v["r_min"], v["C_min"] * d / 2.0)
@@ -766,8 +795,8 @@ def _enumerate_wire(d, v, correction, objective, turn_step, r_step, rtol,
     if not ok.any():
         return None, r.size
     r, n = r[ok], n[ok]
-    obj = _objective_np(objective, d, r, n, v, correction) * np.ones_like(r)
-    mass = spring.wire_mass(d, r, n, v["density"])
+    obj = _objective_np(objective, d, r, n, v, correction, end_coils) * np.ones_like(r)
+    mass = spring.wire_mass(d, r, n + end_coils, v["density"])
     i = int(np.lexsort((mass, obj))[0])
     return (float(obj[i]), float(mass[i]), float(d), float(r[i]), float(n[i])), int(ok.size)
 
@@ -798,24 +827,24 @@ _local = threading.local()
 
 
 def _cached_gp(objective: str, correction: str, stiffness: str = "equality",
-               allowable_exponent: float = 0.0) -> SpringGP:
+               allowable_exponent: float = 0.0, end_coils: float = 0.0) -> SpringGP:
     """One compiled GP per (objective, correction, stiffness mode, allowable exponent) and
     thread (parameters are mutated): every solve sets every parameter, so a shared GP gives the
     same optimum as a fresh one, without the compilation."""
     cache = getattr(_local, "cache", None)
     if cache is None:
         cache = _local.cache = {}
-    key = (objective, correction, stiffness, float(allowable_exponent))
+    key = (objective, correction, stiffness, float(allowable_exponent), float(end_coils))
     if key not in cache:
         cache[key] = SpringGP(objective, correction, stiffness,
-                              allowable_exponent=allowable_exponent)
+                              allowable_exponent=allowable_exponent, end_coils=end_coils)
     return cache[key]
 
 
 def size_helical_spring(F_max: float | None = None, stiffness: float | None = None, *,
                         loads: Sequence[float] | None = None, k_s: float, G: float,
                         density: float, correction: str = "wahl", objective: str = "mass",
-                        **bounds) -> SpringSolution:
+                        end_coils: float = 0.0, **bounds) -> SpringSolution:
     """Least-mass helical spring for given loads, material and envelope, as an exact GP.
 
     Give either ``stiffness`` (N/m) with ``F_max`` (N), or ``loads=(F1, x1, F2, x2)``: two
@@ -844,7 +873,7 @@ def size_helical_spring(F_max: float | None = None, stiffness: float | None = No
         stiffness = kappa
     if stiffness is None or F_max is None:
         raise TypeError("give F_max and stiffness, or loads=(F1, x1, F2, x2)")
-    gp = _cached_gp(objective, correction)
+    gp = _cached_gp(objective, correction, end_coils=end_coils)
     sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k_s, G=G, density=density,
                    **bounds)
     sol.extras = extras

@@ -39,6 +39,23 @@ from ..springs import materials as mt
 from .spring_gp import SpringSolution, _cached_gp, size_helical_spring
 
 KINDS = ("compression", "extension")
+#: Inactive coils of a compression spring: one closed end coil each side, ``n_t = n + 2``
+#: (EN 13906-1:2013, total coils for cold-coiled springs with closed ends; Shigley Table 10-1).
+COMPRESSION_END_COILS = 2.0
+
+
+def end_coils(kind: str, mat=None) -> float:
+    """Coils of wire beyond the ``n`` active ones, counted in the mass (EN 13906-1: the wire
+    length ``pi D n_t`` counts ends and hooks as coils).
+
+    Compression: :data:`COMPRESSION_END_COILS`. Extension (EN 13906-2:2013, active coils
+    ``n = n_b + G/E``): the body's ``n_b = n - G/E`` coils plus two hooks or loops of one coil
+    each, i.e. ``2 - G/E`` (``2`` without a grade, as ``E`` is then unknown)."""
+    if kind == "compression":
+        return COMPRESSION_END_COILS
+    if mat is None:
+        return 2.0
+    return 2.0 - float(mat.shear_modulus(1e-3) / mat.elastic_modulus(1e-3))
 
 
 @dataclass
@@ -92,7 +109,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     if grade is None:
         correction = correction or "wahl"
         sol = size_helical_spring(F_max, stiffness, k_s=k_s, G=G, density=density,
-                                  correction=correction, **bounds)
+                                  correction=correction, end_coils=end_coils(kind), **bounds)
         return Sizing(sol, kind)
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
     if not isinstance(mat.G, float):
@@ -112,7 +129,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         and the worst ratio of a stress or fatigue row (< 1: it fails)."""
         for _ in range(60):
             k, m = _monomial(mat, place, rules, k_s, *state["window"])
-            gp = _cached_gp("mass", correction, "equality", m)
+            gp = _cached_gp("mass", correction, "equality", m, end_coils(kind, mat))
             sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
                            density=density, **{**bounds, "d_min": lo, "d_max": hi})
             if not sol.ok:

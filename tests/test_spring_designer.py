@@ -1,0 +1,44 @@
+"""`govopt spring` as a spring designer (issue 22): the true objective (all coils of wire),
+every limit a constraint of the optimisation, plain output, option validation (issue 21).
+
+Reference optima are computed here from the textbook formulas (Wahl's factor, ``k = G d^4 /
+(8 D^3 n)``, mass ``rho pi^2 d^2 D (n + 2) / 4``), not read back from govopt.
+"""
+
+import json
+
+import numpy as np
+import pytest
+from clirun import invoke
+
+BASE = ["spring", "--force", "500 N", "--stiffness", "10 N/mm", "--allowable-stress", "600 MPa",
+        "--shear-modulus", "81.5 GPa"]
+
+
+def _least_total_mass(F, k, ks, G, rho, C_lo, C_hi, n_min):
+    """Least ``rho pi^2 d^2 D (n + 2) / 4`` over the index: the stress binds at the optimum
+    (a thinner wire is lighter), so ``d = sqrt(8 F C K(C) / (pi ks))`` for each index ``C``."""
+    C = np.linspace(C_lo, C_hi, 400_001)
+    K = (4 * C - 1) / (4 * C - 4) + 0.615 / C
+    d = np.sqrt(8 * F * C * K / (np.pi * ks))
+    D = C * d
+    n = np.maximum(G * d**4 / (8 * D**3 * k), n_min)
+    stiff = G * d**4 / (8 * D**3 * n) >= k * (1 - 1e-12)
+    mass = np.where(stiff, 7850 * np.pi**2 * d**2 * D * (n + 2) / 4, np.inf)
+    i = int(np.argmin(mass))
+    return mass[i], d[i], D[i], n[i]
+
+
+def test_least_total_mass_counts_the_end_coils():
+    """Issue 22 acceptance: 151 g (d 4.29 mm, D 30.8 mm, n 11.8), not the 182 g of the
+    active-coil objective's d 5.34 mm, D 64.1 mm, n 3.15."""
+    result = invoke([*BASE, "--json"])
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.output)
+    m, d, D, n = _least_total_mass(500.0, 10e3, 600e6, 81.5e9, 7850.0, 4.0, 12.0, 3.0)
+    assert m == pytest.approx(0.151, rel=0.01)
+    assert out["mass_kg"] == pytest.approx(m, rel=1e-4)
+    assert out["wire_diameter_m"] == pytest.approx(d, rel=1e-3)
+    assert 2 * out["coil_radius_m"] == pytest.approx(D, rel=1e-3)
+    assert out["active_turns"] == pytest.approx(n, rel=1e-3)
+    assert out["end_coils"] == 2.0
