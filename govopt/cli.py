@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import functools
 import json
+import math
 import os
 import re
 import signal
@@ -197,12 +198,21 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
 
     for option, value, allowed in (
             ("--correction", correction, (None, "wahl", "bergstrasser", "none")),
-            ("--material", material, (None, *materials.GRADES)),
+            ("--material", material, materials.GRADES),
             ("--kind", kind, ("compression", "extension")),
             ("--rules", rules, materials.METHODS), ("--ends", ends, tuple(helical.END_FORMS)),
             ("--seating", seating, tuple(helical.SEATING))):
-        if value not in allowed:
+        if value is not None and value not in allowed:
             _fail(f"{option}: expected one of {', '.join(map(repr, allowed))}, got {value!r}")
+    for option, value, what in (("--life", life, "a positive number of cycles"),
+                                ("--min-fatigue-safety", min_fatigue_safety,
+                                 "a positive safety factor")):
+        if not (math.isfinite(value) and value > 0.0):
+            _fail(f"{option}: expected {what}, got {value!r}")
+    if material is not None and shear_modulus is None and not isinstance(
+            materials.material(material, tensile_strength=1.0).G, float):
+        _fail(f"--shear-modulus: required with --material {material!r}, whose shear modulus "
+              "varies with the wire diameter")
     if material is None:
         for option, value in (("--allowable-stress", allowable_stress),
                               ("--shear-modulus", shear_modulus)):
@@ -224,11 +234,17 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
     if fatigue_min_force is not None:
         cycle = (_q(fatigue_min_force, "force", "--fatigue-min-force", positive=False),
                  _q(fatigue_max_force, "force", "--fatigue-max-force"))
+        if cycle[0] > cycle[1]:
+            _fail(f"--fatigue-min-force: expected at most --fatigue-max-force "
+                  f"({fatigue_max_force}), got {fatigue_min_force!r}")
+    F_min = _q(min_force, "force", "--min-force", positive=False) or 0.0
+    if F_min > F:
+        _fail(f"--min-force: expected at most --force ({force}), got {min_force!r}")
     try:
         sizing = size_spring(
             F, k, grade=material, kind=kind, rules=rules, correction=correction,
             tensile_strength=_q(tensile_strength, "stress", "--tensile-strength"),
-            F_min=_q(min_force, "force", "--min-force", positive=False) or 0.0, fatigue=cycle,
+            F_min=F_min, fatigue=cycle,
             min_fatigue_safety=min_fatigue_safety, peened=peened, cycles=life, ends=ends,
             seating=seating, **values)
     except ValueError as exc:

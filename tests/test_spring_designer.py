@@ -42,3 +42,30 @@ def test_least_total_mass_counts_the_end_coils():
     assert 2 * out["coil_radius_m"] == pytest.approx(D, rel=1e-3)
     assert out["active_turns"] == pytest.approx(n, rel=1e-3)
     assert out["end_coils"] == 2.0
+
+
+SH = ["spring", "--force", "500 N", "--stiffness", "20 N/mm", "--material", "EN10270-1 SH"]
+
+
+@pytest.mark.parametrize(("extra", "option"), [
+    (["--life", "nan"], "--life"), (["--life", "-1"], "--life"),
+    (["--min-fatigue-safety", "-1"], "--min-fatigue-safety"),
+    (["--min-fatigue-safety", "nan"], "--min-fatigue-safety"),
+    (["--fatigue-min-force", "300 N", "--fatigue-max-force", "200 N"], "--fatigue-min-force"),
+    (["--min-force", "600 N"], "--min-force"),
+])
+def test_bad_spring_options_are_refused_in_one_line(extra, option):
+    """Issue 21: exit 2, one line naming the option and what is expected."""
+    result = invoke([*SH, *extra])
+    assert result.exit_code == 2
+    lines = result.output.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"error: {option}: expected")
+
+
+def test_grade_without_one_shear_modulus_names_the_option():
+    result = invoke(["spring", "--force", "500 N", "--stiffness", "20 N/mm", "--material",
+                     "ASTM A228"])
+    assert result.exit_code == 2 and "--shear-modulus" in result.output
+    bad = invoke([*SH[:-1], "no such grade"])
+    assert bad.exit_code == 2 and "expected one of 'EN10270-1" in bad.output
+    assert "None" not in bad.output
