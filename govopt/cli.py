@@ -261,7 +261,9 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
            "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
            "wahl_factor": sol.wahl_factor, "spring_index": sol.index,
            "surge_frequency_Hz": sol.surge_frequency, "sensitivities": sol.sensitivities,
-           "active": sol.active, "global_optimum": sol.certificate.get("global_optimum"),
+           "active": sol.active, "global_optimum": sizing.certified,
+           "lower_bound": sizing.lower_bound, "gap_to_bound": sizing.gap,
+           "stress_correction": sol.correction,
            "duality_gap_log": sol.certificate.get("duality_gap_log")}
     if material is not None:
         out.update({"material": material, "kind": kind,
@@ -281,13 +283,29 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         raise SystemExit(1)
 
 
+#: SI units of the spring checks and the units they are printed in (scale, unit)
+_CHECK_UNITS = {"Pa": (1e-6, "MPa"), "m": (1e3, "mm"), "N/m": (1e-3, "N/mm"), "N": (1.0, "N")}
+
+
 def _print_spring(sol, out, sizing, material, kind) -> None:
     """The text report of `govopt spring`."""
-    _echo(f"d = {sol.d * 1e3:.4f} mm, r = {sol.r * 1e3:.4f} mm, n = {sol.n:.4f}, "
-          f"mass = {sol.mass:.5g} kg, stress = {sol.stress / 1e6:.2f} MPa "
-          f"(index {sol.index:.2f}, Wahl K {sol.wahl_factor:.4f})")
-    _echo(f"global optimum certified: {out['global_optimum']} (duality gap in log space "
-          f"{out['duality_gap_log']:.2g}); active: {', '.join(sol.active)}")
+    from .springs.helical import correction_factor
+
+    k_b = float(correction_factor(sol.index, "bergstrasser"))
+    factor = {"none": "uncorrected stress", "wahl": f"Wahl K {sol.wahl_factor:.4f}",
+              "bergstrasser": f"Bergstraesser k {k_b:.4f}"}[sol.correction]
+    _echo(f"d = {sol.d * 1e3:.4f} mm, D = {2e3 * sol.r:.4f} mm, n = {sol.n:.4f} active "
+          f"+ {sol.end_coils:.3g} end coils, mass = {sol.mass * 1e3:.5g} g, stress = "
+          f"{sol.stress / 1e6:.2f} MPa (index {sol.index:.2f}, {factor})")
+    if sizing.certified:
+        claim = "global optimum certified"
+    elif math.isfinite(sizing.gap):
+        claim = (f"optimal within {100 * sizing.gap:.3g} % of a certified bound "
+                 f"({sizing.lower_bound * 1e3:.5g} g)")
+    else:
+        claim = "no certified bound (the relaxation was not solved to optimality)"
+    _echo(f"{claim} (duality gap in log space {out['duality_gap_log']:.2g}); active in the "
+          f"last GP: {', '.join(sol.active)}")
     for name, value in sol.sensitivities.items():
         if abs(value) > 1e-6:
             _echo(f"  +1 % on {name} -> {value:+.3f} % mass")
@@ -297,8 +315,9 @@ def _print_spring(sol, out, sizing, material, kind) -> None:
                  f"initial tension {sizing.initial_tension:.4g} N")
         _echo(f"{kind} spring of {material}: {extra}; checks (value, limit, margin, source):")
         for c in sizing.checks:
-            _echo(f"  {c.name}: {c.value:.6g} {c.sense} {c.limit:.6g} {c.unit}, margin "
-                  f"{100 * c.margin:+.2f} % {'PASS' if c.passed else 'FAIL'} - {c.source}")
+            scale, unit = _CHECK_UNITS.get(c.unit, (1.0, c.unit))
+            _echo(f"  {c.name}: {c.value * scale:.6g} {c.sense} {c.limit * scale:.6g} {unit}, "
+                  f"margin {100 * c.margin:+.2f} % {'PASS' if c.passed else 'FAIL'} - {c.source}")
         for note in sizing.notes:
             _echo(f"  note: {note}")
 

@@ -69,3 +69,32 @@ def test_grade_without_one_shear_modulus_names_the_option():
     bad = invoke([*SH[:-1], "no such grade"])
     assert bad.exit_code == 2 and "expected one of 'EN10270-1" in bad.output
     assert "None" not in bad.output
+
+
+def _checks_pass(out):
+    return all(c["passed"] for c in out["checks"]) and out["checks"]
+
+
+def test_buckling_is_a_constraint_and_the_claim_is_honest():
+    """Issue 22 acceptance: the 20 N/mm SH spring no longer fails buckling after claiming a
+    certified optimum. Between fixed plates it does not bind (the stress at solid length, now
+    a GP constraint, does): a certified optimum that passes every check. Hinged, buckling
+    binds: every check passes and the claim is 'within X % of a certified bound'."""
+    out = json.loads(invoke([*SH, "--json"]).output)
+    assert _checks_pass(out) and out["global_optimum"] is True
+    rows = {c["name"]: c for c in out["checks"]}
+    solid = rows["shear stress at solid length"]
+    assert solid["margin"] == pytest.approx(0.0, abs=1e-5)  # the monomial is shaved 1e-6
+    hinged = [*SH, "--seating", "hinged-hinged"]
+    result = invoke([*hinged, "--json"])
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.output)
+    buck = {c["name"]: c for c in out["checks"]}["deflection / buckling deflection"]
+    assert 0.99 <= buck["value"] <= buck["limit"]  # binds, passes
+    assert _checks_pass(out) and out["global_optimum"] is False
+    assert 0.0 < out["lower_bound"] < out["mass_kg"]
+    assert out["gap_to_bound"] == pytest.approx(out["mass_kg"] / out["lower_bound"] - 1)
+    text = invoke(hinged).output
+    assert "global optimum certified" not in text and "of a certified bound" in text
+    assert "Wahl K" not in text and "uncorrected stress" in text  # EN 13906-1 static
+    assert " Pa," not in text and " MPa," in text and " mm," in text

@@ -73,6 +73,7 @@ from .gp_table import (
 __all__ = [
     "CORRECTIONS",
     "DEFAULT_BOUNDS",
+    "FREE_LENGTH_KEYS",
     "OBJECTIVES",
     "DiscreteSolution",
     "Diagnosis",
@@ -92,6 +93,8 @@ OBJECTIVES = ("mass", "stress", "outer diameter", "body length", "volume", "soli
 #: Stress corrections, as in :func:`govopt.model.spring.shear_stress`.
 CORRECTIONS = spring.STRESS_CORRECTIONS
 STIFFNESS_MODES = ("equality", "band")
+#: :meth:`SpringGP.solve` keywords of the free-length limit (``free_length=True``)
+FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max")
 
 
 #: Clarabel tolerances tighter than its 1e-8 defaults: same solve time here (a few more
@@ -378,7 +381,8 @@ class SpringGP:
     def __init__(self, objective: str = "mass", correction: str = "wahl",
                  stiffness: str = "equality", solver: str | None = None,
                  solver_opts: Mapping[str, Any] | None = None,
-                 allowable_exponent: float = 0.0, end_coils: float = 0.0):
+                 allowable_exponent: float = 0.0, end_coils: float = 0.0,
+                 free_length: bool = False, solid_exponent: float | None = None):
         if objective not in OBJECTIVES:
             raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
         if correction not in CORRECTIONS:
@@ -409,7 +413,16 @@ class SpringGP:
         self.n = cp.Variable(pos=True, name="n")
         self.t = cp.Variable(pos=True, name="t") if correction != "none" else None
         self.constraints = {s.name: self._constraint(s) for s in self.specs}
-        self.internal = self._internal()
+        #: the compression spring's free-length limit (``free_length=True``), see
+        #: :meth:`_free_length`; its values are given to :meth:`solve` as keywords
+        self.free_length_params = {k: cp.Parameter(pos=True, name=k) for k in FREE_LENGTH_KEYS}
+        #: the constraints beyond the table, by name (listed in ``active`` when they bind)
+        self.named = {**({"free length (buckling)": self._free_length()[0]} if free_length
+                         else {}),
+                      **({"stress at solid length": self._solid(solid_exponent)[0],
+                          "deflection (buckling bound)": self._deflection_bound()}
+                         if solid_exponent is not None else {})}
+        self.internal = self._internal() + list(self.named.values())
         self.objective_expr = self._objective(self.d, self.r, self.n, self.t)
         self.problem = cp.Problem(cp.Minimize(self.objective_expr),
                                   list(self.constraints.values()) + self.internal)
@@ -432,6 +445,50 @@ class SpringGP:
         if self.correction == "bergstrasser":
             return [self.d / (2.0 * self.r * self.t) + 0.75 * self.d / (2.0 * self.r) <= 1.0]
         return [self.d / (2.0 * self.r * self.t) + self.d / (2.0 * self.r) <= 1.0]
+
+    def _free_length(self) -> list:
+        """``L0 <= L0_over_D_max D`` with ``L0 = (n + solid_coils) d + 1.5 n (0.0015 D^2/d +
+        0.1 d) + F_max / R`` (m): the least free length that keeps the coils clear at the
+        largest force under dynamic load (EN 13906-1:2013, least working length ``L_n = L_c +
+        S_a``, ``S_a`` x1.5 dynamic, cold coiled; ``L_c = (n_t + extra) d``), a posynomial in
+        ``d, r, n`` (``F/R = 64 F r^3 n / (G d^4)``). With ``L0_over_D_max`` the EN 13906-1
+        9.14 slenderness below which the spring cannot buckle it is a sufficient (posynomial)
+        buckling constraint."""
+        d, r, n, P, Q = self.d, self.r, self.n, self.params, self.free_length_params
+        L0 = ((n + Q["solid_coils"]) * d + 1.5 * n * (0.006 * r**2 / d + 0.1 * d)
+              + 64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4))
+        return [L0 <= Q["L0_over_D_max"] * 2.0 * r]
+
+    def _deflection_bound(self):
+        """``F_max / R <= s_over_D_max D``: with ``s_over_D_max`` the slenderness ``L0_cr / D``
+        below which a spring cannot buckle (EN 13906-1:2013, 9.14) every spring that passes
+        the buckling check satisfies it: below ``L0_cr`` the deflection is less than the free
+        length, and above it ``s_K = L0 0.5/(1 - G/E) (1 - sqrt(1 - u^2))``, ``u = L0_cr/L0``,
+        grows with ``u`` to ``0.5 L0_cr / (1 - G/E) < L0_cr`` at ``u = 1`` (G/E < 0.5). A
+        monomial constraint: the GP with it and without :meth:`_free_length` is a relaxation
+        of buckling, a certified lower bound."""
+        d, r, n, P = self.d, self.r, self.n, self.params
+        return (64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4)
+                <= self.free_length_params["s_over_D_max"] * 2.0 * r)
+
+    def _solid(self, m: float) -> list:
+        """The shear stress at solid length ``tau_c d^m <= k_solid`` (EN 13906-1:2013, static
+        stress at solid length ``L_c``, allowable ``0.56 R_m(d)`` taken as ``k_solid d^-m``
+        like the working one). With the least free length of :meth:`_free_length` the force at
+        solid length is ``F_c = F_max + R S_a = F_max + 1.5 G (0.006 d^3/(64 r) + 0.1 d^5 /
+        (64 r^3))`` (N), a posynomial; the stress correction is the GP's (as
+        :func:`govopt.model.spring.shear_stress`: none, Wahl ``1 + 0.75 t + 0.615/C`` or
+        Bergstraesser ``1 + 1.25 t``)."""
+        d, r, t, P = self.d, self.r, self.t, self.params
+        F = P["F_max"] + 1.5 * P["G"] * (0.006 * d**3 / (64.0 * r) + 0.1 * d**5 / (64.0 * r**3))
+        base = r * d**-3
+        if self.correction == "wahl":
+            g = base + 0.75 * t * base + 0.3075 * d**-2
+        elif self.correction == "bergstrasser":
+            g = base + 1.25 * t * base
+        else:
+            g = base
+        return [16.0 / np.pi * F * g * d**m <= self.free_length_params["k_solid"]]
 
     def _constraint(self, s: _Spec, slack=None):
         g = s.g(self.d, self.r, self.n, self.t, self.params)
@@ -490,6 +547,9 @@ class SpringGP:
         ``certify=True`` adds an independent KKT check (stationarity, complementary slackness,
         feasibility) evaluated from the cvxpy expressions at the returned point.
         """
+        extra = {k: values.pop(k, 1e9) for k in FREE_LENGTH_KEYS}
+        for k, p in self.free_length_params.items():
+            p.value = float(extra[k])
         v = self.values(**values)
         self._assign(v)
         status, raw, elapsed = self._run(self.problem)
@@ -525,7 +585,8 @@ class SpringGP:
         sol.parameter_sensitivities = psens
         _, ratios = check_design(sol.d, sol.r, sol.n, v, self.correction,
                                  allowable_exponent=self.allowable_exponent)
-        sol.active = [k for k, q in ratios.items() if q >= 1.0 - 1e-6]
+        sol.active = [k for k, q in ratios.items() if q >= 1.0 - 1e-6] + [
+            k for k, c in self.named.items() if float(np.asarray(c.dual_value)) > 1e-6]
 
     def _solver_certificate(self, raw, status) -> dict[str, Any]:
         cert: dict[str, Any] = {"solver": self.solver, "status": status,
@@ -827,17 +888,20 @@ _local = threading.local()
 
 
 def _cached_gp(objective: str, correction: str, stiffness: str = "equality",
-               allowable_exponent: float = 0.0, end_coils: float = 0.0) -> SpringGP:
+               allowable_exponent: float = 0.0, end_coils: float = 0.0,
+               free_length: bool = False, solid_exponent: float | None = None) -> SpringGP:
     """One compiled GP per (objective, correction, stiffness mode, allowable exponent) and
     thread (parameters are mutated): every solve sets every parameter, so a shared GP gives the
     same optimum as a fresh one, without the compilation."""
     cache = getattr(_local, "cache", None)
     if cache is None:
         cache = _local.cache = {}
-    key = (objective, correction, stiffness, float(allowable_exponent), float(end_coils))
+    key = (objective, correction, stiffness, float(allowable_exponent), float(end_coils),
+           free_length, solid_exponent)
     if key not in cache:
         cache[key] = SpringGP(objective, correction, stiffness,
-                              allowable_exponent=allowable_exponent, end_coils=end_coils)
+                              allowable_exponent=allowable_exponent, end_coils=end_coils,
+                              free_length=free_length, solid_exponent=solid_exponent)
     return cache[key]
 
 

@@ -22,8 +22,8 @@ stress and fatigue rows, its optimality certificate is that of the last GP only)
 >>> s.solution.status, all(c.passed for c in stress.values())
 ('optimal', True)
 >>> c = stress["shear stress at solid length"]  # binds: 0.56 R_m(d) (EN 13906-1)
->>> round(c.value / c.limit, 3)
-1.0
+>>> round(c.value / c.limit, 3), s.certified
+(1.0, True)
 """
 
 from __future__ import annotations
@@ -69,6 +69,18 @@ class Sizing:
     initial_tension: float = math.nan
     allowable_factor: float = 1.0
     notes: list[str] = field(default_factory=list)
+    #: a certified lower bound on the objective (the relaxation's GP optimum; nan: none)
+    lower_bound: float = math.nan
+
+    @property
+    def gap(self) -> float:
+        """``objective / lower_bound - 1``: how far from optimal the design can be at most."""
+        return self.solution.objective / self.lower_bound - 1.0
+
+    @property
+    def certified(self) -> bool:
+        """The design is a proven global optimum (within 1e-6 of the certified bound)."""
+        return bool(self.gap <= 1e-6)
 
     @property
     def passed(self) -> bool:
@@ -110,7 +122,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         correction = correction or "wahl"
         sol = size_helical_spring(F_max, stiffness, k_s=k_s, G=G, density=density,
                                   correction=correction, end_coils=end_coils(kind), **bounds)
-        return Sizing(sol, kind)
+        return Sizing(sol, kind, lower_bound=_bound(sol))
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
     if not isinstance(mat.G, float):
         raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire diameter "
@@ -124,14 +136,27 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                                                           or math.inf)
     state = {"window": (lo, hi)}
 
-    def attempt(factor):
-        """The GP at ``factor`` times the rule, re-fitted until the wire settles; the checks
-        and the worst ratio of a stress or fatigue row (< 1: it fails)."""
+    Q = end_coils(kind, mat)
+    if kind == "compression":  # the free length's coils and the slenderness that cannot buckle
+        solid = Q + hx.END_FORMS[ends][0]
+        stable = float(hx.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
+                                               hx.SEATING[seating]))
+
+    def attempt(factor, slender=None):
+        """The GP at ``factor`` times the rule, re-fitted until the wire settles (with
+        ``slender``: free length <= ``slender`` times the longest that cannot buckle); the
+        checks and the worst ratio of a stress or fatigue row (< 1: it fails)."""
+        extra = {} if slender is None else {"L0_over_D_max": slender * stable,
+                                            "solid_coils": solid}
         for _ in range(60):
             k, m = _monomial(mat, place, rules, k_s, *state["window"])
-            gp = _cached_gp("mass", correction, "equality", m, end_coils(kind, mat))
+            m_c = None
+            if kind == "compression":  # the stress at solid length, a constraint too
+                k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
+                extra.update(k_solid=k_c, s_over_D_max=stable)
+            gp = _cached_gp("mass", correction, "equality", m, Q, slender is not None, m_c)
             sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
-                           density=density, **{**bounds, "d_min": lo, "d_max": hi})
+                           density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             if not sol.ok:
                 return Sizing(sol, kind, notes=[f"the GP found no spring ({sol.status})"]), 0.0
             new = (max(lo, sol.d / 1.25), min(hi, sol.d * 1.25))
@@ -147,6 +172,56 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                            default=math.inf)
 
     sizing, worst = attempt(1.0)
+    bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
+    sizing = _stress_search(attempt, sizing, worst)
+    if sizing.solution.ok and kind == "compression":
+        sizing = _buckling_search(attempt, sizing, stable)
+    sizing.lower_bound = bound
+    return sizing
+
+
+def _bound(sol) -> float:
+    """The solver's dual objective: a lower bound on the GP's optimum (nan unless optimal)."""
+    return float(sol.certificate.get("objective_lower_bound", math.nan))
+
+
+def _failed_buckling(sizing) -> bool:
+    return any(c.name == "deflection / buckling deflection" and not c.passed
+               for c in sizing.checks)
+
+
+def _buckling_search(attempt, sizing, stable):
+    """Buckling (EN 13906-1, 9.14) as a constraint. Its limit is not a posynomial, but a free
+    length below the slenderness that cannot buckle (``L0 <= stable D``) is; a free length of
+    ``s`` times that may still pass (the deflection stays below ``s_K``). Bisection on ``s``
+    from 1 (safe when feasible) to the unconstrained design's slenderness finds the least-mass
+    design that passes, to 0.1 %; the GP without it stays the certified lower bound."""
+    if not _failed_buckling(sizing):
+        return sizing
+    factor = sizing.allowable_factor
+    safe, _ = attempt(factor, 1.0)
+    if not safe.solution.ok or _failed_buckling(safe):
+        sizing.notes.append("no spring passes the buckling check within the other limits: "
+                            "guide it (--seating) or allow a larger diameter")
+        return sizing
+    sol = sizing.solution
+    good, bad = 1.0, float(sizing.free_length / (2.0 * sol.r) / stable)
+    while bad / good > 1.001:
+        mid = math.sqrt(good * bad)
+        trial, _ = attempt(factor, mid)
+        if trial.solution.ok and not _failed_buckling(trial) and trial.passed >= safe.passed:
+            good, safe = mid, trial
+        else:
+            bad = mid
+    safe.allowable_factor = factor
+    safe.notes = sizing.notes + [
+        f"buckling binds: the free length is held to {good:.4g} times the slenderness that "
+        "cannot buckle (EN 13906-1, 9.14), found by bisection to 0.1 %"]
+    return safe
+
+
+def _stress_search(attempt, sizing, worst):
+    """The body's allowable lowered until the hooks' and fatigue rows pass (module docstring)."""
     if not sizing.solution.ok or worst >= 1.0:
         return sizing
     bad, good = 1.0, None  # the largest factor that passes, by steps down then bisection
