@@ -287,6 +287,17 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
 _CHECK_UNITS = {"Pa": (1e-6, "MPa"), "m": (1e3, "mm"), "N/m": (1e-3, "N/mm"), "N": (1.0, "N")}
 
 
+def _verdict(check, sizing) -> str:
+    """PASS or FAIL; a fatigue row past its data's life says so (strength held constant)."""
+    from .springs.checks import DATA_CYCLES
+
+    verdict = "PASS" if check.passed else "FAIL"
+    if "fatigue" in check.name and sizing.cycles > DATA_CYCLES:
+        verdict += (f" (life {sizing.cycles:.3g} cycles is beyond the data's {DATA_CYCLES:.0e}:"
+                    " extrapolated)")
+    return verdict
+
+
 def _print_spring(sol, out, sizing, material, kind) -> None:
     """The text report of `govopt spring`."""
     from .springs.helical import correction_factor
@@ -317,7 +328,7 @@ def _print_spring(sol, out, sizing, material, kind) -> None:
         for c in sizing.checks:
             scale, unit = _CHECK_UNITS.get(c.unit, (1.0, c.unit))
             _echo(f"  {c.name}: {c.value * scale:.6g} {c.sense} {c.limit * scale:.6g} {unit}, "
-                  f"margin {100 * c.margin:+.2f} % {'PASS' if c.passed else 'FAIL'} - {c.source}")
+                  f"margin {100 * c.margin:+.2f} % {_verdict(c, sizing)} - {c.source}")
         for note in sizing.notes:
             _echo(f"  note: {note}")
 

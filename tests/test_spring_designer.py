@@ -121,3 +121,31 @@ def test_belegundu_arora_spring_reproduces_the_best_known_optimum():
     assert (c["c2"], c["c3"], c["c4"]) == pytest.approx((12566, 5108, 140.45), rel=1e-4)
     # with the derived 71875 the optimum is 0.1 % heavier: the best known value uses 71785
     assert sl.solve_belegundu(c["c1"]).objective == pytest.approx(0.0126787, abs=5e-8)
+
+
+@pytest.mark.parametrize("size", ["2.6 mm", "9 mm", "18 mm"])
+def test_table_lookups_hold_a_row_boundary_given_in_mm(size):
+    """'9 mm' is 0.009000000000000001 m: it belongs to the row up to 9 mm, not the next."""
+    from govopt.springs.tolerances import WIRE_TOLERANCE, wire_diameter_tolerance
+    from govopt.units import parse_quantity
+
+    upper, tol = WIRE_TOLERANCE["EN10270-1"]
+    d = parse_quantity(size, "length")
+    i = int(np.flatnonzero(np.isclose(upper, float(size.split()[0])))[0])
+    assert float(wire_diameter_tolerance(d)) == pytest.approx(tol[i] * 1e-3)
+    assert float(wire_diameter_tolerance(d * 1.001)) == pytest.approx(tol[i + 1] * 1e-3)
+
+
+def test_zimmerli_peened_amplitude_is_57_5_kpsi():
+    from govopt.springs import fatigue
+
+    assert fatigue.ZIMMERLI[True][0] == pytest.approx(57.5 * 6894757.29, rel=1e-4)
+
+
+def test_fatigue_past_the_data_says_so_in_the_verdict():
+    cycle = ["--fatigue-min-force", "100 N", "--fatigue-max-force", "400 N"]
+    long = invoke([*SH, *cycle, "--life", "1e8"]).output
+    short = invoke([*SH, *cycle]).output
+    row = [line for line in long.splitlines() if "fatigue safety" in line]
+    assert row and all("beyond the data's 1e+07" in line for line in row)
+    assert "beyond the data" not in short

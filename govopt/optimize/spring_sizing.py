@@ -71,6 +71,8 @@ class Sizing:
     notes: list[str] = field(default_factory=list)
     #: a certified lower bound on the objective (the relaxation's GP optimum; nan: none)
     lower_bound: float = math.nan
+    #: the required fatigue life (cycles)
+    cycles: float = 1e7
 
     @property
     def gap(self) -> float:
@@ -176,7 +178,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     sizing = _stress_search(attempt, sizing, worst)
     if sizing.solution.ok and kind == "compression":
         sizing = _buckling_search(attempt, sizing, stable)
-    sizing.lower_bound = bound
+    sizing.lower_bound, sizing.cycles = bound, cycles
     return sizing
 
 
@@ -246,7 +248,7 @@ def _stress_search(attempt, sizing, worst):
             bad = mid
     sizing.notes.append(f"the body's allowable was lowered to {good:.4g} of the rule's so that "
                         "the hooks' static stresses and the fatigue rows pass too (heuristic "
-                        "outer search; the GP certificate is the last solve's)")
+                        "outer search; the certified bound is the relaxation's)")
     return sizing
 
 
