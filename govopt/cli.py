@@ -193,7 +193,7 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
     with --material the wire grade's allowables per diameter and the spring maker's checks
     (spring type, index and turn limits, fatigue load cycle)."""
     from .optimize.spring_gp import SpringGP
-    from .optimize.spring_sizing import size_spring
+    from .optimize.spring_sizing import diagnose, size_spring
     from .springs import helical, materials
 
     for option, value, allowed in (
@@ -206,8 +206,12 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
             _fail(f"{option}: expected one of {', '.join(map(repr, allowed))}, got {value!r}")
     for option, value, what in (("--life", life, "a positive number of cycles"),
                                 ("--min-fatigue-safety", min_fatigue_safety,
-                                 "a positive safety factor")):
-        if not (math.isfinite(value) and value > 0.0):
+                                 "a positive safety factor"),
+                                ("--index-min", index_min, "a positive spring index"),
+                                ("--index-max", index_max, "a positive spring index"),
+                                ("--turns-min", turns_min, "a positive number of turns"),
+                                ("--turns-max", turns_max, "a positive number of turns")):
+        if value is not None and not (math.isfinite(value) and value > 0.0):
             _fail(f"{option}: expected {what}, got {value!r}")
     if material is not None and shear_modulus is None and not isinstance(
             materials.material(material, tensile_strength=1.0).G, float):
@@ -251,10 +255,9 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         _fail(str(exc))
     sol = sizing.solution
     if not sol.ok:
-        diagnosis = SpringGP(correction=correction or "wahl").diagnose(
-            kappa=k, F_max=F, **values) if material is None else None
-        _fail("no spring meets these requirements" + (f": {diagnosis.summary()}"
-                                                      if diagnosis else ""))
+        why = diagnose(SpringGP(correction=correction or "wahl"), kappa=k, F_max=F,
+                       **values) if material is None else sizing.diagnosis
+        _fail("no spring meets these requirements" + (f": {why}" if why else ""))
     out = {"wire_diameter_m": sol.d, "coil_radius_m": sol.r, "active_turns": sol.n,
            "mass_kg": sol.mass, "end_coils": sol.end_coils,
            "active_mass_kg": sol.mass * sol.n / (sol.n + sol.end_coils),

@@ -149,3 +149,20 @@ def test_fatigue_past_the_data_says_so_in_the_verdict():
     row = [line for line in long.splitlines() if "fatigue safety" in line]
     assert row and all("beyond the data's 1e+07" in line for line in row)
     assert "beyond the data" not in short
+
+
+@pytest.mark.parametrize(("extra", "limit"), [
+    (["--material", "custom", "--tensile-strength", "1e-9 MPa", "--shear-modulus", "80 GPa"],
+     "allowable stress x"),
+    (["--material", "EN10270-1 SH", "--fatigue-min-force", "100 N", "--fatigue-max-force",
+      "1e9 N"], "maximum wire diameter x"),
+    (["--material", "EN10270-1 SH", "--turns-min", "1e308"], "minimum active turns x"),
+    (["--allowable-stress", "600 MPa", "--shear-modulus", "81.5 GPa", "--turns-min", "1e308"],
+     "minimum active turns x"),
+])
+def test_infeasible_spring_names_the_limit_and_the_factor(extra, limit):
+    """Issue 21: not only 'no spring meets these requirements'."""
+    result = invoke(["spring", "--force", "500 N", "--stiffness", "20 N/mm", *extra])
+    assert result.exit_code == 2
+    assert "no spring meets these requirements: infeasible: conflicting" in result.output
+    assert limit in result.output

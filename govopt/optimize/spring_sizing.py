@@ -73,6 +73,8 @@ class Sizing:
     lower_bound: float = math.nan
     #: the required fatigue life (cycles)
     cycles: float = 1e7
+    #: why no spring was found (the relaxed GP's diagnosis), empty when one was
+    diagnosis: str = ""
 
     @property
     def gap(self) -> float:
@@ -160,7 +162,13 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
             sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
                            density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             if not sol.ok:
-                return Sizing(sol, kind, notes=[f"the GP found no spring ({sol.status})"]), 0.0
+                text = diagnose(gp, kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
+                                density=density, **{**bounds, "d_min": lo, "d_max": hi}
+                                ) if sol.status == "infeasible" else sol.status
+                if factor < 1.0:
+                    text += (f" (with the allowable lowered to {factor:.3g} of the rule's for "
+                             "the fatigue or hook rows)")
+                return Sizing(sol, kind, diagnosis=text), 0.0
             new = (max(lo, sol.d / 1.25), min(hi, sol.d * 1.25))
             if np.allclose(new, state["window"], rtol=1e-8, atol=0.0):
                 break
@@ -180,6 +188,18 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         sizing = _buckling_search(attempt, sizing, stable)
     sizing.lower_bound, sizing.cycles = bound, cycles
     return sizing
+
+
+def diagnose(gp, **values) -> str:
+    """Which limits of the GP ``gp`` must move, and by what factor (:meth:`SpringGP.diagnose`);
+    when no limit moved by up to 1e6 helps (an absurd value, e.g. 1e308 turns), again with
+    factors up to 1e300 (the GP is solved in logarithms)."""
+    why = gp.diagnose(**values)
+    if not why.conflicting and not why.relaxations:
+        wide = gp.diagnose(max_factor=1e300, **values)
+        if wide.conflicting or wide.relaxations:
+            return wide.summary()
+    return why.summary()
 
 
 def _bound(sol) -> float:
@@ -279,7 +299,7 @@ def _checked(sol, kind, mat, F_min, F_max, fatigue, *, rules, k_s, correction, p
                   initial_tension=float(kw.get("F0", math.nan)))
 
 
-__all__ = ["KINDS", "Sizing", "size_spring"]
+__all__ = ["KINDS", "Sizing", "diagnose", "end_coils", "size_spring"]
 
 
 def _ratio(check) -> float:
