@@ -146,10 +146,11 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         stable = float(hx.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
                                                hx.SEATING[seating]))
 
-    def attempt(factor, slender=None):
+    def attempt(factor, slender=None, refit=True):
         """The GP at ``factor`` times the rule, re-fitted until the wire settles (with
-        ``slender``: free length <= ``slender`` times the longest that cannot buckle); the
-        checks and the worst ratio of a stress or fatigue row (< 1: it fails)."""
+        ``slender``: free length <= ``slender`` times the longest that cannot buckle; without
+        ``refit`` one solve with the current fit, the same compiled GP); the checks and the
+        worst ratio of a stress or fatigue row (< 1: it fails)."""
         extra = {} if slender is None else {"L0_over_D_max": slender * stable,
                                             "solid_coils": solid}
         for _ in range(60):
@@ -159,7 +160,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
                 extra.update(k_solid=k_c, s_over_D_max=stable)
             gp = _cached_gp("mass", correction, "equality", m, Q, slender is not None, m_c)
-            sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
+            sol = gp.solve(kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
                            density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             if not sol.ok:
                 text = diagnose(gp, kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
@@ -170,7 +171,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                              "the fatigue or hook rows)")
                 return Sizing(sol, kind, diagnosis=text), 0.0
             new = (max(lo, sol.d / 1.25), min(hi, sol.d * 1.25))
-            if np.allclose(new, state["window"], rtol=1e-8, atol=0.0):
+            if not refit or np.allclose(new, state["window"], rtol=1e-5, atol=0.0):
                 break
             state["window"] = new  # re-fit the allowable about this wire
         sizing = _checked(sol, kind, mat, F_min, F_max, fatigue, rules=rules, k_s=k_s,
@@ -228,13 +229,19 @@ def _buckling_search(attempt, sizing, stable):
         return sizing
     sol = sizing.solution
     good, bad = 1.0, float(sizing.free_length / (2.0 * sol.r) / stable)
-    while bad / good > 1.001:
+    while bad / good > 1.001:  # one compiled GP: the allowable's fit is frozen meanwhile
         mid = math.sqrt(good * bad)
-        trial, _ = attempt(factor, mid)
-        if trial.solution.ok and not _failed_buckling(trial) and trial.passed >= safe.passed:
-            good, safe = mid, trial
+        trial, _ = attempt(factor, mid, refit=False)
+        if trial.solution.ok and not _failed_buckling(trial):
+            good = mid
         else:
             bad = mid
+    for _ in range(20):  # the fit re-centred on the design found; back off if that buckles
+        trial, _ = attempt(factor, good)
+        if trial.solution.ok and not _failed_buckling(trial) and trial.passed >= safe.passed:
+            safe = trial
+            break
+        good = max(1.0, good * 0.998)
     safe.allowable_factor = factor
     safe.notes = sizing.notes + [
         f"buckling binds: the free length is held to {good:.4g} times the slenderness that "
@@ -259,13 +266,19 @@ def _stress_search(attempt, sizing, worst):
         bad = factor
     if good is None:
         return sizing
-    for _ in range(12):
+    for _ in range(12):  # one compiled GP: the allowable's fit is frozen meanwhile
         mid = math.sqrt(good * bad)
-        trial, worst = attempt(mid)
+        trial, worst = attempt(mid, refit=False)
         if trial.solution.ok and worst >= 1.0:
-            good, sizing = mid, trial
+            good = mid
         else:
             bad = mid
+    for _ in range(20):  # the fit re-centred on the design found; back off if a row fails
+        trial, worst = attempt(good)
+        if trial.solution.ok and worst >= 1.0:
+            sizing = trial
+            break
+        good *= 0.998
     sizing.notes.append(f"the body's allowable was lowered to {good:.4g} of the rule's so that "
                         "the hooks' static stresses and the fatigue rows pass too (heuristic "
                         "outer search; the certified bound is the relaxation's)")
