@@ -188,7 +188,7 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
            tensile_strength, kind, rules, index_min, index_max, turns_min, turns_max,
            min_force, fatigue_min_force, fatigue_max_force, min_fatigue_safety, life, peened,
            ends, seating, max_outer_diameter, max_body_length, min_surge_frequency,
-           json_out) -> None:
+           min_wire_diameter, max_wire_diameter, objective, json_out) -> None:
     """Least-mass helical spring for a force and stiffness (an exact GP, certified global);
     with --material the wire grade's allowables per diameter and the spring maker's checks
     (spring type, index and turn limits, fatigue load cycle)."""
@@ -201,7 +201,8 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
             ("--material", material, materials.GRADES),
             ("--kind", kind, ("compression", "extension")),
             ("--rules", rules, materials.METHODS), ("--ends", ends, tuple(helical.END_FORMS)),
-            ("--seating", seating, tuple(helical.SEATING))):
+            ("--seating", seating, tuple(helical.SEATING)),
+            ("--objective", objective, SPRING_OBJECTIVES)):
         if value is not None and value not in allowed:
             _fail(f"{option}: expected one of {', '.join(map(repr, allowed))}, got {value!r}")
     for option, value, what in (("--life", life, "a positive number of cycles"),
@@ -229,6 +230,8 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         D_out_max=_q(max_outer_diameter, "length", "--max-outer-diameter"),
         L_body_max=_q(max_body_length, "length", "--max-body-length"),
         f_surge_min=_q(min_surge_frequency, "frequency", "--min-surge-frequency"),
+        d_min=_q(min_wire_diameter, "length", "--min-wire-diameter"),
+        d_max=_q(max_wire_diameter, "length", "--max-wire-diameter"),
         **{k: v for k, v in (("n_min", turns_min), ("n_max", turns_max),
                              ("C_min", index_min), ("C_max", index_max)) if v is not None})
     F, k = _q(force, "force", "--force"), _q(stiffness, "stiffness", "--stiffness")
@@ -250,7 +253,7 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
             tensile_strength=_q(tensile_strength, "stress", "--tensile-strength"),
             F_min=F_min, fatigue=cycle,
             min_fatigue_safety=min_fatigue_safety, peened=peened, cycles=life, ends=ends,
-            seating=seating, **values)
+            seating=seating, objective=objective, **values)
     except ValueError as exc:
         _fail(str(exc))
     sol = sizing.solution
@@ -264,6 +267,7 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
            "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
            "wahl_factor": sol.wahl_factor, "spring_index": sol.index,
            "surge_frequency_Hz": sol.surge_frequency, "sensitivities": sol.sensitivities,
+           "objective": sol.objective_name, "objective_value": sol.objective,
            "active": sol.active, "global_optimum": sizing.certified,
            "lower_bound": sizing.lower_bound, "gap_to_bound": sizing.gap,
            "stress_correction": sol.correction,
@@ -285,6 +289,13 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
               err=True)
         raise SystemExit(1)
 
+
+#: ``govopt spring --objective`` choices (:data:`govopt.optimize.spring_gp.OBJECTIVES`)
+SPRING_OBJECTIVES = ("mass", "volume", "solid length", "outer diameter")
+
+#: how each objective is printed (scale from SI, unit)
+_OBJECTIVE_UNITS = {"mass": (1e3, "g"), "volume": (1e6, "cm^3"), "solid length": (1e3, "mm"),
+                    "outer diameter": (1e3, "mm")}
 
 #: SI units of the spring checks and the units they are printed in (scale, unit)
 _CHECK_UNITS = {"Pa": (1e-6, "MPa"), "m": (1e3, "mm"), "N/m": (1e-3, "N/mm"), "N": (1.0, "N")}
@@ -311,18 +322,21 @@ def _print_spring(sol, out, sizing, material, kind) -> None:
     _echo(f"d = {sol.d * 1e3:.4f} mm, D = {2e3 * sol.r:.4f} mm, n = {sol.n:.4f} active "
           f"+ {sol.end_coils:.3g} end coils, mass = {sol.mass * 1e3:.5g} g, stress = "
           f"{sol.stress / 1e6:.2f} MPa (index {sol.index:.2f}, {factor})")
+    scale, unit = _OBJECTIVE_UNITS[sol.objective_name]
+    if sol.objective_name != "mass":
+        _echo(f"least {sol.objective_name}: {sol.objective * scale:.6g} {unit}")
     if sizing.certified:
         claim = "global optimum certified"
     elif math.isfinite(sizing.gap):
         claim = (f"optimal within {100 * sizing.gap:.3g} % of a certified bound "
-                 f"({sizing.lower_bound * 1e3:.5g} g)")
+                 f"({sizing.lower_bound * scale:.5g} {unit})")
     else:
         claim = "no certified bound (the relaxation was not solved to optimality)"
     _echo(f"{claim} (duality gap in log space {out['duality_gap_log']:.2g}); active in the "
           f"last GP: {', '.join(sol.active)}")
     for name, value in sol.sensitivities.items():
         if abs(value) > 1e-6:
-            _echo(f"  +1 % on {name} -> {value:+.3f} % mass")
+            _echo(f"  +1 % on {name} -> {value:+.3f} % {sol.objective_name}")
     if material is not None:
         extra = (f"free length {sizing.free_length * 1e3:.2f} mm (coils clear at the force)"
                  if kind == "compression" else
@@ -681,6 +695,11 @@ def _spring_parser(group) -> None:
     _option(p, "--max-outer-diameter", help="Envelope, e.g. '10 cm'.")
     _option(p, "--max-body-length", help="Close-wound body length limit.")
     _option(p, "--min-surge-frequency", help="e.g. '40 Hz'.")
+    _option(p, "--min-wire-diameter", help="Thinnest wire, e.g. '2 mm'.")
+    _option(p, "--max-wire-diameter", help="Thickest wire, e.g. '6 mm'.")
+    _option(p, "--objective", default="mass",
+            help="What to minimise: 'mass' (all coils of wire), 'volume' ((n + end coils) D "
+                 "d^2, as the optimisation literature), 'solid length', 'outer diameter'.")
     _flag(p, "--json", dest="json_out", help=_JSON_HELP)
 
 

@@ -166,3 +166,23 @@ def test_infeasible_spring_names_the_limit_and_the_factor(extra, limit):
     assert result.exit_code == 2
     assert "no spring meets these requirements: infeasible: conflicting" in result.output
     assert limit in result.output
+
+
+def test_objective_and_wire_bounds_on_the_command_line():
+    """--objective volume minimises (n + 2) D d^2: no lighter in volume than the least-mass
+    spring (same density, so the same optimum here), and the wire bounds hold."""
+    vol = json.loads(invoke([*BASE, "--objective", "volume", "--json"]).output)
+    d, D, n = vol["wire_diameter_m"], 2 * vol["coil_radius_m"], vol["active_turns"]
+    assert vol["objective"] == "volume"
+    assert vol["objective_value"] == pytest.approx((n + 2) * D * d**2, rel=1e-9)
+    mass = json.loads(invoke([*BASE, "--json"]).output)
+    assert vol["mass_kg"] == pytest.approx(mass["mass_kg"], rel=1e-6)  # mass = rho pi/4 volume
+    solid = json.loads(invoke([*BASE, "--objective", "solid length", "--json"]).output)
+    assert solid["objective_value"] == pytest.approx(
+        (solid["active_turns"] + 2) * solid["wire_diameter_m"], rel=1e-9)
+    assert solid["objective_value"] < (n + 2) * d * (1 - 1e-3)
+    thick = json.loads(invoke([*BASE, "--min-wire-diameter", "5 mm", "--json"]).output)
+    assert thick["wire_diameter_m"] >= 5e-3 * (1 - 1e-9)
+    assert thick["mass_kg"] > mass["mass_kg"]
+    thin = json.loads(invoke([*BASE, "--max-wire-diameter", "4 mm", "--json"]).output)
+    assert thin["wire_diameter_m"] <= 4e-3 * (1 + 1e-9)

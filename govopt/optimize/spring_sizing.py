@@ -116,7 +116,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 rules: str = "EN13906", correction: str | None = None, F_min: float = 0.0,
                 fatigue: tuple[float, float] | None = None, min_fatigue_safety: float = 1.0,
                 peened: bool = False, cycles: float = 1e7, ends: str = "closed_ground",
-                seating: str = "fixed-fixed", **bounds) -> Sizing:
+                seating: str = "fixed-fixed", objective: str = "mass", **bounds) -> Sizing:
     """Size a spring (SI): see the module docstring. ``bounds``: the GP's optional limits
     (``n_min``, ``n_max``, ``C_min``, ``C_max``, ``D_out_max``, ``L_body_max``,
     ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20."""
@@ -125,7 +125,8 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     if grade is None:
         correction = correction or "wahl"
         sol = size_helical_spring(F_max, stiffness, k_s=k_s, G=G, density=density,
-                                  correction=correction, end_coils=end_coils(kind), **bounds)
+                                  correction=correction, end_coils=end_coils(kind),
+                                  objective=objective, **bounds)
         return Sizing(sol, kind, lower_bound=_bound(sol))
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
     if not isinstance(mat.G, float):
@@ -159,7 +160,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
             if kind == "compression":  # the stress at solid length, a constraint too
                 k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
                 extra.update(k_solid=k_c, s_over_D_max=stable)
-            gp = _cached_gp("mass", correction, "equality", m, Q, slender is not None, m_c)
+            gp = _cached_gp(objective, correction, "equality", m, Q, slender is not None, m_c)
             sol = gp.solve(kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
                            density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             if not sol.ok:
