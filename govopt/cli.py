@@ -188,12 +188,12 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
            tensile_strength, kind, rules, index_min, index_max, turns_min, turns_max,
            min_force, fatigue_min_force, fatigue_max_force, min_fatigue_safety, life, peened,
            ends, seating, max_outer_diameter, max_body_length, min_surge_frequency,
-           min_wire_diameter, max_wire_diameter, objective, json_out) -> None:
+           min_wire_diameter, max_wire_diameter, objective, min_inside_diameter,
+           max_free_length, max_solid_length, json_out) -> None:
     """Least-mass helical spring for a force and stiffness (an exact GP, certified global);
     with --material the wire grade's allowables per diameter and the spring maker's checks
     (spring type, index and turn limits, fatigue load cycle)."""
-    from .optimize.spring_gp import SpringGP
-    from .optimize.spring_sizing import diagnose, size_spring
+    from .optimize.spring_sizing import size_spring
     from .springs import helical, materials
 
     for option, value, allowed in (
@@ -232,6 +232,9 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         f_surge_min=_q(min_surge_frequency, "frequency", "--min-surge-frequency"),
         d_min=_q(min_wire_diameter, "length", "--min-wire-diameter"),
         d_max=_q(max_wire_diameter, "length", "--max-wire-diameter"),
+        Di_min=_q(min_inside_diameter, "length", "--min-inside-diameter"),
+        L0_max=_q(max_free_length, "length", "--max-free-length"),
+        Lc_max=_q(max_solid_length, "length", "--max-solid-length"),
         **{k: v for k, v in (("n_min", turns_min), ("n_max", turns_max),
                              ("C_min", index_min), ("C_max", index_max)) if v is not None})
     F, k = _q(force, "force", "--force"), _q(stiffness, "stiffness", "--stiffness")
@@ -258,8 +261,7 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         _fail(str(exc))
     sol = sizing.solution
     if not sol.ok:
-        why = diagnose(SpringGP(correction=correction or "wahl"), kappa=k, F_max=F,
-                       **values) if material is None else sizing.diagnosis
+        why = sizing.diagnosis
         _fail("no spring meets these requirements" + (f": {why}" if why else ""))
     out = {"wire_diameter_m": sol.d, "coil_radius_m": sol.r, "active_turns": sol.n,
            "mass_kg": sol.mass, "end_coils": sol.end_coils,
@@ -697,6 +699,10 @@ def _spring_parser(group) -> None:
     _option(p, "--min-surge-frequency", help="e.g. '40 Hz'.")
     _option(p, "--min-wire-diameter", help="Thinnest wire, e.g. '2 mm'.")
     _option(p, "--max-wire-diameter", help="Thickest wire, e.g. '6 mm'.")
+    _option(p, "--min-inside-diameter", help="Least inside diameter D - d (over a rod).")
+    _option(p, "--max-free-length", help="Longest free length (compression: the least free "
+                                         "length that keeps the coils clear at --force).")
+    _option(p, "--max-solid-length", help="Longest solid length (compression).")
     _option(p, "--objective", default="mass",
             help="What to minimise: 'mass' (all coils of wire), 'volume' ((n + end coils) D "
                  "d^2, as the optimisation literature), 'solid length', 'outer diameter'.")

@@ -186,3 +186,20 @@ def test_objective_and_wire_bounds_on_the_command_line():
     assert thick["mass_kg"] > mass["mass_kg"]
     thin = json.loads(invoke([*BASE, "--max-wire-diameter", "4 mm", "--json"]).output)
     assert thin["wire_diameter_m"] <= 4e-3 * (1 + 1e-9)
+
+
+def test_space_limits_are_constraints():
+    """Inside diameter over a rod, solid length and free length bind as GP constraints."""
+    rod = json.loads(invoke([*BASE, "--min-inside-diameter", "30 mm", "--json"]).output)
+    d, D = rod["wire_diameter_m"], 2 * rod["coil_radius_m"]
+    assert D - d == pytest.approx(30e-3, rel=1e-6) and "inside diameter" in rod["active"]
+    solid = json.loads(invoke([*BASE, "--max-solid-length", "50 mm", "--json"]).output)
+    Lc = (solid["active_turns"] + 2) * solid["wire_diameter_m"]  # closed and ground ends
+    assert Lc == pytest.approx(50e-3, rel=1e-6)
+    free = json.loads(invoke([*SH[:4], "10 N/mm", *SH[5:], "--max-free-length", "100 mm",
+                              "--json"]).output)
+    assert free["free_length_m"] == pytest.approx(0.1, rel=1e-5)
+    assert all(c["passed"] for c in free["checks"])
+    ext = invoke(["spring", "--force", "500 N", "--stiffness", "10 N/mm", "--material",
+                  "EN10270-1 SH", "--kind", "extension", "--max-free-length", "1 m"])
+    assert ext.exit_code == 2 and "compression" in ext.output

@@ -94,7 +94,10 @@ OBJECTIVES = ("mass", "stress", "outer diameter", "body length", "volume", "soli
 CORRECTIONS = spring.STRESS_CORRECTIONS
 STIFFNESS_MODES = ("equality", "band")
 #: :meth:`SpringGP.solve` keywords of the free-length limit (``free_length=True``)
-FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max")
+FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "Di_min",
+                    "L0_max", "Lc_max")
+#: their values when not given: far outside any spring (the constraint never binds)
+_FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12}
 
 
 #: Clarabel tolerances tighter than its 1e-8 defaults: same solve time here (a few more
@@ -382,7 +385,8 @@ class SpringGP:
                  stiffness: str = "equality", solver: str | None = None,
                  solver_opts: Mapping[str, Any] | None = None,
                  allowable_exponent: float = 0.0, end_coils: float = 0.0,
-                 free_length: bool = False, solid_exponent: float | None = None):
+                 free_length: bool = False, solid_exponent: float | None = None,
+                 envelope: str | None = None):
         if objective not in OBJECTIVES:
             raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
         if correction not in CORRECTIONS:
@@ -421,7 +425,8 @@ class SpringGP:
                          else {}),
                       **({"stress at solid length": self._solid(solid_exponent)[0],
                           "deflection (buckling bound)": self._deflection_bound()}
-                         if solid_exponent is not None else {})}
+                         if solid_exponent is not None else {}),
+                      **(self._envelope(envelope) if envelope else {})}
         self.internal = self._internal() + list(self.named.values())
         self.objective_expr = self._objective(self.d, self.r, self.n, self.t)
         self.problem = cp.Problem(cp.Minimize(self.objective_expr),
@@ -454,10 +459,27 @@ class SpringGP:
         ``d, r, n`` (``F/R = 64 F r^3 n / (G d^4)``). With ``L0_over_D_max`` the EN 13906-1
         9.14 slenderness below which the spring cannot buckle it is a sufficient (posynomial)
         buckling constraint."""
+        return [self._least_free_length()
+                <= self.free_length_params["L0_over_D_max"] * 2.0 * self.r]
+
+    def _least_free_length(self):
+        """``L0 = (n + solid_coils) d + 1.5 n (0.0015 D^2/d + 0.1 d) + F_max / R`` (m), the
+        posynomial of :meth:`_free_length`."""
         d, r, n, P, Q = self.d, self.r, self.n, self.params, self.free_length_params
-        L0 = ((n + Q["solid_coils"]) * d + 1.5 * n * (0.006 * r**2 / d + 0.1 * d)
-              + 64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4))
-        return [L0 <= Q["L0_over_D_max"] * 2.0 * r]
+        return ((n + Q["solid_coils"]) * d + 1.5 * n * (0.006 * r**2 / d + 0.1 * d)
+                + 64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4))
+
+    def _envelope(self, kind: str) -> dict:
+        """The space a spring is built into: inside diameter over a rod ``D - d >= Di_min``
+        (the posynomial ``(Di_min + d) / (2 r) <= 1``) and, for a compression spring, the least
+        free length of :meth:`_free_length` ``<= L0_max`` and the solid length ``(n +
+        solid_coils) d <= Lc_max`` (EN 13906-1:2013, ``L_c = (n_t + extra) d``)."""
+        d, r, n, Q = self.d, self.r, self.n, self.free_length_params
+        out = {"inside diameter": (Q["Di_min"] + d) / (2.0 * r) <= 1.0}
+        if kind == "compression":
+            out["free length"] = self._least_free_length() <= Q["L0_max"]
+            out["solid length"] = (n + Q["solid_coils"]) * d <= Q["Lc_max"]
+        return out
 
     def _deflection_bound(self):
         """``F_max / R <= s_over_D_max D``: with ``s_over_D_max`` the slenderness ``L0_cr / D``
@@ -547,7 +569,9 @@ class SpringGP:
         ``certify=True`` adds an independent KKT check (stationarity, complementary slackness,
         feasibility) evaluated from the cvxpy expressions at the returned point.
         """
-        extra = {k: values.pop(k, 1e9) for k in FREE_LENGTH_KEYS}
+        extra = {k: values.pop(k, None) for k in FREE_LENGTH_KEYS}
+        extra = {k: _FREE_LENGTH_DEFAULTS.get(k, 1e9) if x is None else x
+                 for k, x in extra.items()}
         for k, p in self.free_length_params.items():
             p.value = float(extra[k])
         v = self.values(**values)
@@ -889,7 +913,8 @@ _local = threading.local()
 
 def _cached_gp(objective: str, correction: str, stiffness: str = "equality",
                allowable_exponent: float = 0.0, end_coils: float = 0.0,
-               free_length: bool = False, solid_exponent: float | None = None) -> SpringGP:
+               free_length: bool = False, solid_exponent: float | None = None,
+               envelope: str | None = None) -> SpringGP:
     """One compiled GP per (objective, correction, stiffness mode, allowable exponent) and
     thread (parameters are mutated): every solve sets every parameter, so a shared GP gives the
     same optimum as a fresh one, without the compilation."""
@@ -897,18 +922,20 @@ def _cached_gp(objective: str, correction: str, stiffness: str = "equality",
     if cache is None:
         cache = _local.cache = {}
     key = (objective, correction, stiffness, float(allowable_exponent), float(end_coils),
-           free_length, solid_exponent)
+           free_length, solid_exponent, envelope)
     if key not in cache:
         cache[key] = SpringGP(objective, correction, stiffness,
                               allowable_exponent=allowable_exponent, end_coils=end_coils,
-                              free_length=free_length, solid_exponent=solid_exponent)
+                              free_length=free_length, solid_exponent=solid_exponent,
+                              envelope=envelope)
     return cache[key]
 
 
 def size_helical_spring(F_max: float | None = None, stiffness: float | None = None, *,
                         loads: Sequence[float] | None = None, k_s: float, G: float,
                         density: float, correction: str = "wahl", objective: str = "mass",
-                        end_coils: float = 0.0, **bounds) -> SpringSolution:
+                        end_coils: float = 0.0, envelope: str | None = None,
+                        **bounds) -> SpringSolution:
     """Least-mass helical spring for given loads, material and envelope, as an exact GP.
 
     Give either ``stiffness`` (N/m) with ``F_max`` (N), or ``loads=(F1, x1, F2, x2)``: two
@@ -937,7 +964,7 @@ def size_helical_spring(F_max: float | None = None, stiffness: float | None = No
         stiffness = kappa
     if stiffness is None or F_max is None:
         raise TypeError("give F_max and stiffness, or loads=(F1, x1, F2, x2)")
-    gp = _cached_gp(objective, correction, end_coils=end_coils)
+    gp = _cached_gp(objective, correction, end_coils=end_coils, envelope=envelope)
     sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k_s, G=G, density=density,
                    **bounds)
     sol.extras = extras

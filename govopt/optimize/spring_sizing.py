@@ -119,15 +119,30 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 seating: str = "fixed-fixed", objective: str = "mass", **bounds) -> Sizing:
     """Size a spring (SI): see the module docstring. ``bounds``: the GP's optional limits
     (``n_min``, ``n_max``, ``C_min``, ``C_max``, ``D_out_max``, ``L_body_max``,
-    ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20."""
+    ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20.
+    The space it is built into (GP constraints, :meth:`SpringGP._envelope`): ``Di_min`` (the
+    inside diameter over a rod), and for a compression spring ``L0_max`` (its least free
+    length: coils clear at ``F_max``) and ``Lc_max`` (its solid length)."""
     if kind not in KINDS:
         raise ValueError(f"spring kind must be one of {KINDS}, got {kind!r}")
+    space = {k: bounds.pop(k) for k in ("Di_min", "L0_max", "Lc_max")
+             if bounds.get(k) is not None}
+    for k in ("Di_min", "L0_max", "Lc_max"):
+        bounds.pop(k, None)
+    if kind == "extension" and set(space) - {"Di_min"}:
+        raise ValueError("free and solid length limits are for compression springs")
+    envelope = kind if space else None
+    if kind == "compression":
+        space["solid_coils"] = end_coils(kind) + hx.END_FORMS[ends][0]
     if grade is None:
         correction = correction or "wahl"
         sol = size_helical_spring(F_max, stiffness, k_s=k_s, G=G, density=density,
                                   correction=correction, end_coils=end_coils(kind),
-                                  objective=objective, **bounds)
-        return Sizing(sol, kind, lower_bound=_bound(sol))
+                                  objective=objective, envelope=envelope, **space, **bounds)
+        why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
+            _cached_gp(objective, correction), kappa=stiffness, F_max=F_max, k_s=k_s, G=G,
+            density=density, **bounds)
+        return Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why)
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
     if not isinstance(mat.G, float):
         raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire diameter "
@@ -142,8 +157,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     state = {"window": (lo, hi)}
 
     Q = end_coils(kind, mat)
-    if kind == "compression":  # the free length's coils and the slenderness that cannot buckle
-        solid = Q + hx.END_FORMS[ends][0]
+    if kind == "compression":  # the slenderness that cannot buckle
         stable = float(hx.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
                                                hx.SEATING[seating]))
 
@@ -152,15 +166,16 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         ``slender``: free length <= ``slender`` times the longest that cannot buckle; without
         ``refit`` one solve with the current fit, the same compiled GP); the checks and the
         worst ratio of a stress or fatigue row (< 1: it fails)."""
-        extra = {} if slender is None else {"L0_over_D_max": slender * stable,
-                                            "solid_coils": solid}
+        extra = dict(space) if slender is None else {**space,
+                                                     "L0_over_D_max": slender * stable}
         for _ in range(60):
             k, m = _monomial(mat, place, rules, k_s, *state["window"])
             m_c = None
             if kind == "compression":  # the stress at solid length, a constraint too
                 k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
                 extra.update(k_solid=k_c, s_over_D_max=stable)
-            gp = _cached_gp(objective, correction, "equality", m, Q, slender is not None, m_c)
+            gp = _cached_gp(objective, correction, "equality", m, Q, slender is not None, m_c,
+                            envelope)
             sol = gp.solve(kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
                            density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             if not sol.ok:
