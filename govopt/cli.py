@@ -189,7 +189,7 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
            min_force, fatigue_min_force, fatigue_max_force, min_fatigue_safety, life, peened,
            ends, seating, max_outer_diameter, max_body_length, min_surge_frequency,
            min_wire_diameter, max_wire_diameter, objective, min_inside_diameter,
-           max_free_length, max_solid_length, json_out) -> None:
+           max_free_length, max_solid_length, max_stiffness, json_out) -> None:
     """Least-mass helical spring for a force and stiffness (an exact GP, certified global);
     with --material the wire grade's allowables per diameter and the spring maker's checks
     (spring type, index and turn limits, fatigue load cycle)."""
@@ -247,6 +247,10 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         if cycle[0] > cycle[1]:
             _fail(f"--fatigue-min-force: expected at most --fatigue-max-force "
                   f"({fatigue_max_force}), got {fatigue_min_force!r}")
+    k_max = _q(max_stiffness, "stiffness", "--max-stiffness")
+    if k_max is not None and k_max < k:
+        _fail(f"--max-stiffness: expected at least --stiffness ({stiffness}), "
+              f"got {max_stiffness!r}")
     F_min = _q(min_force, "force", "--min-force", positive=False) or 0.0
     if F_min > F:
         _fail(f"--min-force: expected at most --force ({force}), got {min_force!r}")
@@ -256,7 +260,8 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
             tensile_strength=_q(tensile_strength, "stress", "--tensile-strength"),
             F_min=F_min, fatigue=cycle,
             min_fatigue_safety=min_fatigue_safety, peened=peened, cycles=life, ends=ends,
-            seating=seating, objective=objective, **values)
+            seating=seating, objective=objective,
+            stiffness_max=k_max, **values)
     except ValueError as exc:
         _fail(str(exc))
     sol = sizing.solution
@@ -699,6 +704,8 @@ def _spring_parser(group) -> None:
     _option(p, "--min-surge-frequency", help="e.g. '40 Hz'.")
     _option(p, "--min-wire-diameter", help="Thinnest wire, e.g. '2 mm'.")
     _option(p, "--max-wire-diameter", help="Thickest wire, e.g. '6 mm'.")
+    _option(p, "--max-stiffness", help="Largest stiffness: --stiffness to this is accepted "
+                                       "(a stiffness range instead of one value).")
     _option(p, "--min-inside-diameter", help="Least inside diameter D - d (over a rod).")
     _option(p, "--max-free-length", help="Longest free length (compression: the least free "
                                          "length that keeps the coils clear at --force).")

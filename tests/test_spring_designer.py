@@ -203,3 +203,14 @@ def test_space_limits_are_constraints():
     ext = invoke(["spring", "--force", "500 N", "--stiffness", "10 N/mm", "--material",
                   "EN10270-1 SH", "--kind", "extension", "--max-free-length", "1 m"])
     assert ext.exit_code == 2 and "compression" in ext.output
+
+
+def test_stiffness_range():
+    """A stress-limited spring is lighter the stiffer it is (mass ~ G F^2 / (k tau^2)): with a
+    range the GP takes its upper end, and a range upside down is refused."""
+    one = json.loads(invoke([*BASE, "--json"]).output)
+    band = json.loads(invoke([*BASE, "--max-stiffness", "12 N/mm", "--json"]).output)
+    assert band["stiffness_N_per_m"] == pytest.approx(12e3, rel=1e-6)
+    assert band["mass_kg"] < one["mass_kg"] and band["global_optimum"] is True
+    bad = invoke([*BASE, "--max-stiffness", "8 N/mm"])
+    assert bad.exit_code == 2 and bad.output.startswith("error: --max-stiffness: expected")

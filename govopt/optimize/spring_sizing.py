@@ -36,7 +36,7 @@ import numpy as np
 from ..springs import checks as ck
 from ..springs import helical as hx
 from ..springs import materials as mt
-from .spring_gp import SpringSolution, _cached_gp, size_helical_spring
+from .spring_gp import SpringSolution, _cached_gp
 
 KINDS = ("compression", "extension")
 #: Inactive coils of a compression spring: one closed end coil each side, ``n_t = n + 2``
@@ -116,13 +116,16 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 rules: str = "EN13906", correction: str | None = None, F_min: float = 0.0,
                 fatigue: tuple[float, float] | None = None, min_fatigue_safety: float = 1.0,
                 peened: bool = False, cycles: float = 1e7, ends: str = "closed_ground",
-                seating: str = "fixed-fixed", objective: str = "mass", **bounds) -> Sizing:
+                seating: str = "fixed-fixed", objective: str = "mass",
+                stiffness_max: float | None = None, **bounds) -> Sizing:
     """Size a spring (SI): see the module docstring. ``bounds``: the GP's optional limits
     (``n_min``, ``n_max``, ``C_min``, ``C_max``, ``D_out_max``, ``L_body_max``,
     ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20.
     The space it is built into (GP constraints, :meth:`SpringGP._envelope`): ``Di_min`` (the
     inside diameter over a rod), and for a compression spring ``L0_max`` (its least free
-    length: coils clear at ``F_max``) and ``Lc_max`` (its solid length)."""
+    length: coils clear at ``F_max``) and ``Lc_max`` (its solid length). With
+    ``stiffness_max`` the stiffness may lie anywhere in ``stiffness .. stiffness_max`` (the GP's
+    band mode)."""
     if kind not in KINDS:
         raise ValueError(f"spring kind must be one of {KINDS}, got {kind!r}")
     space = {k: bounds.pop(k) for k in ("Di_min", "L0_max", "Lc_max")
@@ -134,14 +137,18 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     envelope = kind if space else None
     if kind == "compression":
         space["solid_coils"] = end_coils(kind) + hx.END_FORMS[ends][0]
+    mode, rate = "equality", {"kappa": stiffness}
+    if stiffness_max is not None:
+        if not stiffness <= stiffness_max:
+            raise ValueError(f"stiffness range {stiffness!r} .. {stiffness_max!r} is empty")
+        mode, rate = "band", {"kappa_min": stiffness, "kappa_max": stiffness_max}
     if grade is None:
         correction = correction or "wahl"
-        sol = size_helical_spring(F_max, stiffness, k_s=k_s, G=G, density=density,
-                                  correction=correction, end_coils=end_coils(kind),
-                                  objective=objective, envelope=envelope, **space, **bounds)
+        gp = _cached_gp(objective, correction, mode, 0.0, end_coils(kind), envelope=envelope)
+        sol = gp.solve(certify=True, **rate, F_max=F_max, k_s=k_s, G=G, density=density,
+                       **space, **bounds)
         why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
-            _cached_gp(objective, correction), kappa=stiffness, F_max=F_max, k_s=k_s, G=G,
-            density=density, **bounds)
+            gp, **rate, F_max=F_max, k_s=k_s, G=G, density=density, **bounds)
         return Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why)
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
     if not isinstance(mat.G, float):
@@ -174,12 +181,12 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
             if kind == "compression":  # the stress at solid length, a constraint too
                 k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
                 extra.update(k_solid=k_c, s_over_D_max=stable)
-            gp = _cached_gp(objective, correction, "equality", m, Q, slender is not None, m_c,
+            gp = _cached_gp(objective, correction, mode, m, Q, slender is not None, m_c,
                             envelope)
-            sol = gp.solve(kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
+            sol = gp.solve(**rate, F_max=F_max, k_s=k * factor, G=G,
                            density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             if not sol.ok:
-                text = diagnose(gp, kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
+                text = diagnose(gp, **rate, F_max=F_max, k_s=k * factor, G=G,
                                 density=density, **{**bounds, "d_min": lo, "d_max": hi}
                                 ) if sol.status == "infeasible" else sol.status
                 if factor < 1.0:
