@@ -35,7 +35,9 @@ import numpy as np
 
 from ._cvxpy import cvxpy as cp
 
-__all__ = ["PRINTED_C1", "BelegunduSpring", "constants", "constraints", "solve_belegundu"]
+__all__ = ["PRINTED_C1", "SANDGREN", "SANDGREN_WIRES", "BelegunduSpring", "SandgrenSpring",
+           "constants", "constraints", "sandgren_constraints", "solve_belegundu",
+           "solve_sandgren"]
 
 #: g1's constant as printed in the literature (Belegundu 1982, Arora, and the papers after them)
 PRINTED_C1 = 71785.0
@@ -91,3 +93,71 @@ def solve_belegundu(c1: float = PRINTED_C1) -> BelegunduSpring:
     bound = value * math.exp(-abs(float(raw.obj_val) - float(raw.obj_val_dual)))
     return BelegunduSpring(float(d.value), float(D.value), float(N.value), value, bound,
                            problem.status)
+
+
+# ---------------------------------------------------------------- Sandgren (1990)
+
+#: Sandgren's 42 standard wire diameters (in), as reproduced by the papers after him.
+SANDGREN_WIRES = (0.009, 0.0095, 0.0104, 0.0118, 0.0128, 0.0132, 0.014, 0.015, 0.0162, 0.0173,
+                  0.018, 0.020, 0.023, 0.025, 0.028, 0.032, 0.035, 0.041, 0.047, 0.054, 0.063,
+                  0.072, 0.080, 0.092, 0.105, 0.120, 0.135, 0.148, 0.162, 0.177, 0.192, 0.207,
+                  0.225, 0.244, 0.263, 0.283, 0.307, 0.331, 0.362, 0.394, 0.4375, 0.500)
+#: The problem's data (lbf, in, psi): largest and preload force, allowable stress, shear
+#: modulus, longest free length, least wire, largest outside diameter, largest preload
+#: deflection, least working deflection.
+SANDGREN = {"F_max": 1000.0, "S": 189e3, "G": 11.5e6, "l_max": 14.0, "d_min": 0.2,
+            "D_max": 3.0, "F_load": 300.0, "delta_pm": 6.0, "delta_w": 1.25}
+
+
+def sandgren_constraints(N, D, d, p=SANDGREN):
+    """Sandgren's compression spring (1990, as restated by Deb and Goyal): ``g1..g8 <= 0`` and
+    the objective ``pi^2 D d^2 (N + 2) / 4`` (wire volume, in^3). ``g1`` Wahl-corrected stress
+    ``8 C_f F_max D / (pi d^3) <= S``; ``g2`` free length ``l_f = F_max/K + 1.05 (N + 2) d <=
+    l_max``; ``g3`` ``d >= d_min``; ``g4`` ``D + d <= D_max``; ``g5`` ``C >= 3``; ``g6`` preload
+    deflection ``F_load / K <= delta_pm``; ``g7`` ``delta_p + (F_max - F_load)/K + 1.05 (N + 2) d
+    <= l_f`` (identically 0: redundant); ``g8`` ``(F_max - F_load)/K >= delta_w``; ``K = G d^4 /
+    (8 N D^3)``."""
+    C = D / d
+    Cf = (4 * C - 1) / (4 * C - 4) + 0.615 / C
+    K = p["G"] * d**4 / (8 * N * D**3)
+    lf = p["F_max"] / K + 1.05 * (N + 2) * d
+    dp = p["F_load"] / K
+    g = np.array(np.broadcast_arrays(
+                 8 * Cf * p["F_max"] * D / (np.pi * d**3) - p["S"], lf - p["l_max"],
+                  p["d_min"] - d, d + D - p["D_max"], 3.0 - C, dp - p["delta_pm"],
+                  dp + (p["F_max"] - p["F_load"]) / K + 1.05 * (N + 2) * d - lf,
+                  p["delta_w"] - (p["F_max"] - p["F_load"]) / K))
+    return g, np.pi**2 * D * d**2 * (N + 2) / 4
+
+
+@dataclass
+class SandgrenSpring:
+    N: int
+    D: float
+    d: float
+    objective: float
+    checked: int  # (wire, N) pairs examined: every one that could beat the optimum
+
+
+def solve_sandgren(p=SANDGREN, wires=SANDGREN_WIRES) -> SandgrenSpring:
+    """The exact optimum by enumeration, a certificate in itself. For a wire ``d`` and integer
+    ``N`` the objective grows with ``D`` and every upper limit (g1, g2, g4, g6) grows with
+    ``D``, while the lower limits (g5 ``D >= 3 d``, g8 ``D^3 >= delta_w G d^4 / (8 N (F_max -
+    F_load))``) give the least ``D``: that ``D`` is the best for the pair, if feasible. As
+    ``D >= 3 d``, no ``N`` with ``pi^2 3 d^3 (N + 2) / 4`` above the incumbent can win, which
+    bounds the ``N`` examined per wire; wires under ``d_min`` (g3) are skipped."""
+    best = SandgrenSpring(0, math.nan, math.nan, math.inf, 0)
+    for d in sorted(wires, reverse=True):
+        if d < p["d_min"]:  # g3 holds or fails whatever N and D
+            continue
+        N = 1
+        while math.pi**2 * 3.0 * d**3 * (N + 2) / 4.0 <= best.objective or (
+                math.isinf(best.objective) and N <= 1000):
+            D = max(3.0 * d, (p["delta_w"] * p["G"] * d**4
+                              / (8.0 * N * (p["F_max"] - p["F_load"]))) ** (1.0 / 3.0))
+            g, f = sandgren_constraints(N, D, d, p)
+            best.checked += 1
+            if (g <= 1e-12).all() and f < best.objective:
+                best = SandgrenSpring(N, float(D), d, float(f), best.checked)
+            N += 1
+    return best
