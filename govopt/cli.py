@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import functools
 import json
+import math
 import os
 import re
 import signal
@@ -187,22 +188,36 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
            tensile_strength, kind, rules, index_min, index_max, turns_min, turns_max,
            min_force, fatigue_min_force, fatigue_max_force, min_fatigue_safety, life, peened,
            ends, seating, max_outer_diameter, max_body_length, min_surge_frequency,
-           json_out) -> None:
+           min_wire_diameter, max_wire_diameter, objective, min_inside_diameter,
+           max_free_length, max_solid_length, max_stiffness, json_out) -> None:
     """Least-mass helical spring for a force and stiffness (an exact GP, certified global);
     with --material the wire grade's allowables per diameter and the spring maker's checks
     (spring type, index and turn limits, fatigue load cycle)."""
-    from .optimize.spring_gp import SpringGP
     from .optimize.spring_sizing import size_spring
     from .springs import helical, materials
 
     for option, value, allowed in (
             ("--correction", correction, (None, "wahl", "bergstrasser", "none")),
-            ("--material", material, (None, *materials.GRADES)),
+            ("--material", material, materials.GRADES),
             ("--kind", kind, ("compression", "extension")),
             ("--rules", rules, materials.METHODS), ("--ends", ends, tuple(helical.END_FORMS)),
-            ("--seating", seating, tuple(helical.SEATING))):
-        if value not in allowed:
+            ("--seating", seating, tuple(helical.SEATING)),
+            ("--objective", objective, SPRING_OBJECTIVES)):
+        if value is not None and value not in allowed:
             _fail(f"{option}: expected one of {', '.join(map(repr, allowed))}, got {value!r}")
+    for option, value, what in (("--life", life, "a positive number of cycles"),
+                                ("--min-fatigue-safety", min_fatigue_safety,
+                                 "a positive safety factor"),
+                                ("--index-min", index_min, "a positive spring index"),
+                                ("--index-max", index_max, "a positive spring index"),
+                                ("--turns-min", turns_min, "a positive number of turns"),
+                                ("--turns-max", turns_max, "a positive number of turns")):
+        if value is not None and not (math.isfinite(value) and value > 0.0):
+            _fail(f"{option}: expected {what}, got {value!r}")
+    if material is not None and shear_modulus is None and not isinstance(
+            materials.material(material, tensile_strength=1.0).G, float):
+        _fail(f"--shear-modulus: required with --material {material!r}, whose shear modulus "
+              "varies with the wire diameter")
     if material is None:
         for option, value in (("--allowable-stress", allowable_stress),
                               ("--shear-modulus", shear_modulus)):
@@ -215,6 +230,11 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         D_out_max=_q(max_outer_diameter, "length", "--max-outer-diameter"),
         L_body_max=_q(max_body_length, "length", "--max-body-length"),
         f_surge_min=_q(min_surge_frequency, "frequency", "--min-surge-frequency"),
+        d_min=_q(min_wire_diameter, "length", "--min-wire-diameter"),
+        d_max=_q(max_wire_diameter, "length", "--max-wire-diameter"),
+        Di_min=_q(min_inside_diameter, "length", "--min-inside-diameter"),
+        L0_max=_q(max_free_length, "length", "--max-free-length"),
+        Lc_max=_q(max_solid_length, "length", "--max-solid-length"),
         **{k: v for k, v in (("n_min", turns_min), ("n_max", turns_max),
                              ("C_min", index_min), ("C_max", index_max)) if v is not None})
     F, k = _q(force, "force", "--force"), _q(stiffness, "stiffness", "--stiffness")
@@ -224,26 +244,40 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
     if fatigue_min_force is not None:
         cycle = (_q(fatigue_min_force, "force", "--fatigue-min-force", positive=False),
                  _q(fatigue_max_force, "force", "--fatigue-max-force"))
+        if cycle[0] > cycle[1]:
+            _fail(f"--fatigue-min-force: expected at most --fatigue-max-force "
+                  f"({fatigue_max_force}), got {fatigue_min_force!r}")
+    k_max = _q(max_stiffness, "stiffness", "--max-stiffness")
+    if k_max is not None and k_max < k:
+        _fail(f"--max-stiffness: expected at least --stiffness ({stiffness}), "
+              f"got {max_stiffness!r}")
+    F_min = _q(min_force, "force", "--min-force", positive=False) or 0.0
+    if F_min > F:
+        _fail(f"--min-force: expected at most --force ({force}), got {min_force!r}")
     try:
         sizing = size_spring(
             F, k, grade=material, kind=kind, rules=rules, correction=correction,
             tensile_strength=_q(tensile_strength, "stress", "--tensile-strength"),
-            F_min=_q(min_force, "force", "--min-force", positive=False) or 0.0, fatigue=cycle,
+            F_min=F_min, fatigue=cycle,
             min_fatigue_safety=min_fatigue_safety, peened=peened, cycles=life, ends=ends,
-            seating=seating, **values)
+            seating=seating, objective=objective,
+            stiffness_max=k_max, **values)
     except ValueError as exc:
         _fail(str(exc))
     sol = sizing.solution
     if not sol.ok:
-        diagnosis = SpringGP(correction=correction or "wahl").diagnose(
-            kappa=k, F_max=F, **values) if material is None else None
-        _fail("no spring meets these requirements" + (f": {diagnosis.summary()}"
-                                                      if diagnosis else ""))
+        why = sizing.diagnosis
+        _fail("no spring meets these requirements" + (f": {why}" if why else ""))
     out = {"wire_diameter_m": sol.d, "coil_radius_m": sol.r, "active_turns": sol.n,
-           "mass_kg": sol.mass, "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
+           "mass_kg": sol.mass, "end_coils": sol.end_coils,
+           "active_mass_kg": sol.mass * sol.n / (sol.n + sol.end_coils),
+           "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
            "wahl_factor": sol.wahl_factor, "spring_index": sol.index,
            "surge_frequency_Hz": sol.surge_frequency, "sensitivities": sol.sensitivities,
-           "active": sol.active, "global_optimum": sol.certificate.get("global_optimum"),
+           "objective": sol.objective_name, "objective_value": sol.objective,
+           "active": sol.active, "global_optimum": sizing.certified,
+           "lower_bound": sizing.lower_bound, "gap_to_bound": sizing.gap,
+           "stress_correction": sol.correction,
            "duality_gap_log": sol.certificate.get("duality_gap_log")}
     if material is not None:
         out.update({"material": material, "kind": kind,
@@ -263,24 +297,62 @@ def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correc
         raise SystemExit(1)
 
 
+#: ``govopt spring --objective`` choices (:data:`govopt.optimize.spring_gp.OBJECTIVES`)
+SPRING_OBJECTIVES = ("mass", "volume", "solid length", "outer diameter")
+
+#: how each objective is printed (scale from SI, unit)
+_OBJECTIVE_UNITS = {"mass": (1e3, "g"), "volume": (1e6, "cm^3"), "solid length": (1e3, "mm"),
+                    "outer diameter": (1e3, "mm")}
+
+#: SI units of the spring checks and the units they are printed in (scale, unit)
+_CHECK_UNITS = {"Pa": (1e-6, "MPa"), "m": (1e3, "mm"), "N/m": (1e-3, "N/mm"), "N": (1.0, "N")}
+
+
+def _verdict(check, sizing) -> str:
+    """PASS or FAIL; a fatigue row past its data's life says so (strength held constant)."""
+    from .springs.checks import DATA_CYCLES
+
+    verdict = "PASS" if check.passed else "FAIL"
+    if "fatigue" in check.name and sizing.cycles > DATA_CYCLES:
+        verdict += (f" (life {sizing.cycles:.3g} cycles is beyond the data's {DATA_CYCLES:.0e}:"
+                    " extrapolated)")
+    return verdict
+
+
 def _print_spring(sol, out, sizing, material, kind) -> None:
     """The text report of `govopt spring`."""
-    _echo(f"d = {sol.d * 1e3:.4f} mm, r = {sol.r * 1e3:.4f} mm, n = {sol.n:.4f}, "
-          f"mass = {sol.mass:.5g} kg, stress = {sol.stress / 1e6:.2f} MPa "
-          f"(index {sol.index:.2f}, Wahl K {sol.wahl_factor:.4f})")
-    _echo(f"global optimum certified: {out['global_optimum']} (duality gap in log space "
-          f"{out['duality_gap_log']:.2g}); active: {', '.join(sol.active)}")
+    from .springs.helical import correction_factor
+
+    k_b = float(correction_factor(sol.index, "bergstrasser"))
+    factor = {"none": "uncorrected stress", "wahl": f"Wahl K {sol.wahl_factor:.4f}",
+              "bergstrasser": f"Bergstraesser k {k_b:.4f}"}[sol.correction]
+    _echo(f"d = {sol.d * 1e3:.4f} mm, D = {2e3 * sol.r:.4f} mm, n = {sol.n:.4f} active "
+          f"+ {sol.end_coils:.3g} end coils, mass = {sol.mass * 1e3:.5g} g, stress = "
+          f"{sol.stress / 1e6:.2f} MPa (index {sol.index:.2f}, {factor})")
+    scale, unit = _OBJECTIVE_UNITS[sol.objective_name]
+    if sol.objective_name != "mass":
+        _echo(f"least {sol.objective_name}: {sol.objective * scale:.6g} {unit}")
+    if sizing.certified:
+        claim = "global optimum certified"
+    elif math.isfinite(sizing.gap):
+        claim = (f"optimal within {100 * sizing.gap:.3g} % of a certified bound "
+                 f"({sizing.lower_bound * scale:.5g} {unit})")
+    else:
+        claim = "no certified bound (the relaxation was not solved to optimality)"
+    _echo(f"{claim} (duality gap in log space {out['duality_gap_log']:.2g}); active in the "
+          f"last GP: {', '.join(sol.active)}")
     for name, value in sol.sensitivities.items():
         if abs(value) > 1e-6:
-            _echo(f"  +1 % on {name} -> {value:+.3f} % mass")
+            _echo(f"  +1 % on {name} -> {value:+.3f} % {sol.objective_name}")
     if material is not None:
         extra = (f"free length {sizing.free_length * 1e3:.2f} mm (coils clear at the force)"
                  if kind == "compression" else
                  f"initial tension {sizing.initial_tension:.4g} N")
         _echo(f"{kind} spring of {material}: {extra}; checks (value, limit, margin, source):")
         for c in sizing.checks:
-            _echo(f"  {c.name}: {c.value:.6g} {c.sense} {c.limit:.6g} {c.unit}, margin "
-                  f"{100 * c.margin:+.2f} % {'PASS' if c.passed else 'FAIL'} - {c.source}")
+            scale, unit = _CHECK_UNITS.get(c.unit, (1.0, c.unit))
+            _echo(f"  {c.name}: {c.value * scale:.6g} {c.sense} {c.limit * scale:.6g} {unit}, "
+                  f"margin {100 * c.margin:+.2f} % {_verdict(c, sizing)} - {c.source}")
         for note in sizing.notes:
             _echo(f"  note: {note}")
 
@@ -630,6 +702,17 @@ def _spring_parser(group) -> None:
     _option(p, "--max-outer-diameter", help="Envelope, e.g. '10 cm'.")
     _option(p, "--max-body-length", help="Close-wound body length limit.")
     _option(p, "--min-surge-frequency", help="e.g. '40 Hz'.")
+    _option(p, "--min-wire-diameter", help="Thinnest wire, e.g. '2 mm'.")
+    _option(p, "--max-wire-diameter", help="Thickest wire, e.g. '6 mm'.")
+    _option(p, "--max-stiffness", help="Largest stiffness: --stiffness to this is accepted "
+                                       "(a stiffness range instead of one value).")
+    _option(p, "--min-inside-diameter", help="Least inside diameter D - d (over a rod).")
+    _option(p, "--max-free-length", help="Longest free length (compression: the least free "
+                                         "length that keeps the coils clear at --force).")
+    _option(p, "--max-solid-length", help="Longest solid length (compression).")
+    _option(p, "--objective", default="mass",
+            help="What to minimise: 'mass' (all coils of wire), 'volume' ((n + end coils) D "
+                 "d^2, as the optimisation literature), 'solid length', 'outer diameter'.")
     _flag(p, "--json", dest="json_out", help=_JSON_HELP)
 
 

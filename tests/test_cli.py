@@ -49,7 +49,8 @@ def test_bad_flag_value_exits_2():
 
 def test_spring_command_reproduces_hamabe_sizing():
     """govopt spring with the paper's case a numbers (r free, no Wahl) gives the stress-limited
-    wire: with stiffness and stress both active, mass = 2 rho G F^2 / (kappa k_s^2) whatever r."""
+    wire: with stiffness and stress both active, the active coils' mass is
+    2 rho G F^2 / (kappa k_s^2) whatever r; the total counts the two end coils too."""
     args = ["spring", "--force", "606 kgf", "--stiffness", "59.7 kgf/cm", "--allowable-stress",
             "4000 kgf/cm^2", "--shear-modulus", "850000 kgf/cm^2", "--correction", "none",
             "--json"]
@@ -57,7 +58,10 @@ def test_spring_command_reproduces_hamabe_sizing():
     assert result.exit_code == 0, result.output
     out = json.loads(result.output)
     F, kappa, ks, G = 606 * 9.80665, 59.7 * 980.665, 4000 * 9.80665e4, 850000 * 9.80665e4
-    assert out["mass_kg"] == pytest.approx(2 * 7850 * G * F**2 / (kappa * ks**2), rel=1e-5)
+    active = 2 * 7850 * G * F**2 / (kappa * ks**2)
+    assert out["active_mass_kg"] == pytest.approx(active, rel=1e-5)
+    n = out["active_turns"]
+    assert out["mass_kg"] == pytest.approx(active * (n + 2) / n, rel=1e-5)
     assert out["shear_stress_Pa"] == pytest.approx(ks, rel=1e-6)
     assert out["global_optimum"] is True
 

@@ -386,7 +386,7 @@ def test_other_objectives_and_validation():
     with pytest.raises(ValueError):
         SpringGP().solve(**{**BIG, "k_s": -1.0})
     with pytest.raises(ValueError):
-        SpringGP(objective="volume")
+        SpringGP(objective="weight")
     # Hamabe's rounded design (d = 1.7 cm, r = 6 cm, n = 8): 64.2 kgf/cm, stress under 4000
     feas, ratios = check_design(0.017, 0.06, 8.0, {**HAMABE, "kappa": 62952.3}, "none",
                                 rtol=1e-6)

@@ -32,7 +32,10 @@ Constraints and their sources (the formulas are those of :mod:`govopt.model.spri
                            ch. 25 (lowest surge frequency, both ends fixed).
 =========================  =====================================================================
 
-Objective: the active-coil mass ``rho (pi d^2 / 4) (2 pi r n)`` (a monomial) by default; also
+Objective: the wire mass ``rho (pi d^2 / 4) (2 pi r (n + Q))`` by default, ``Q`` the inactive
+coils (``end_coils``; 0, the active coils only, for the governor's spring; 2 closed end coils
+for ``govopt spring``, EN 13906-1 ``n_t = n + 2``): a posynomial, so the GP stays exact; also
+the literature's volume ``(n + Q) 2 r d^2``, the solid length ``(n + Q) d``,
 ``"stress"`` (least corrected stress at ``F_max``), ``"outer diameter"`` and ``"body length"``.
 
 The problem is built once with cvxpy ``Parameter(pos=True)`` for every number (it is DPP), so a
@@ -70,6 +73,7 @@ from .gp_table import (
 __all__ = [
     "CORRECTIONS",
     "DEFAULT_BOUNDS",
+    "FREE_LENGTH_KEYS",
     "OBJECTIVES",
     "DiscreteSolution",
     "Diagnosis",
@@ -82,10 +86,18 @@ __all__ = [
 ]
 
 #: Objectives the GP can minimise (all are posynomials in ``d, r, n``, non-decreasing in ``n``).
-OBJECTIVES = ("mass", "stress", "outer diameter", "body length")
+#: ``"mass"`` counts ``n + end_coils`` coils (:class:`SpringGP`); ``"volume"`` is the
+#: optimisation literature's ``(n + end_coils) D d^2`` (Belegundu 1982, Arora) and
+#: ``"solid length"`` the close-wound length ``(n + end_coils) d``.
+OBJECTIVES = ("mass", "stress", "outer diameter", "body length", "volume", "solid length")
 #: Stress corrections, as in :func:`govopt.model.spring.shear_stress`.
 CORRECTIONS = spring.STRESS_CORRECTIONS
 STIFFNESS_MODES = ("equality", "band")
+#: :meth:`SpringGP.solve` keywords of the free-length limit (``free_length=True``)
+FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "Di_min",
+                    "L0_max", "Lc_max")
+#: their values when not given: far outside any spring (the constraint never binds)
+_FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12}
 
 
 #: Clarabel tolerances tighter than its 1e-8 defaults: same solve time here (a few more
@@ -112,9 +124,18 @@ def _default_solver() -> str | None:
 
 
 
-def _objective_expr(objective, d, r, n, t, P, correction):
+def _coils(n, end_coils):
+    """``n + end_coils``: every coil of wire (active and inactive ends), a posynomial."""
+    return n + end_coils if end_coils else n
+
+
+def _objective_expr(objective, d, r, n, t, P, correction, end_coils=0.0):
     if objective == "mass":
-        return P["density"] * (np.pi**2 / 2.0) * d**2 * r * n
+        return P["density"] * (np.pi**2 / 2.0) * d**2 * r * _coils(n, end_coils)
+    if objective == "volume":
+        return 2.0 * r * d**2 * _coils(n, end_coils)
+    if objective == "solid length":
+        return _coils(n, end_coils) * d
     if objective == "stress":
         return _stress_g(d, r, n, t, P, correction)
     if objective == "outer diameter":
@@ -132,10 +153,14 @@ def _force(v, d, r, n):
     return v["F_max"] + v["force_per_stiffness"] * spring.stiffness(d, r, n, v["G"])
 
 
-def _objective_np(objective, d, r, n, v, correction):
+def _objective_np(objective, d, r, n, v, correction, end_coils=0.0):
     """The objective evaluated with the exact formulas of :mod:`govopt.model.spring`."""
     if objective == "mass":
-        return spring.wire_mass(d, r, n, v["density"])
+        return spring.wire_mass(d, r, n + end_coils, v["density"])
+    if objective == "volume":
+        return 2.0 * r * d**2 * (n + end_coils)
+    if objective == "solid length":
+        return (n + end_coils) * d
     if objective == "stress":
         return spring.shear_stress(_force(v, d, r, n), d, r, correction)
     if objective == "outer diameter":
@@ -176,12 +201,14 @@ class SpringFigures:
     outer_diameter: float = math.nan
     body_length: float = math.nan
     surge_frequency: float = math.nan
+    #: inactive coils counted in ``mass`` (end coils, hooks; 0: the active coils only)
+    end_coils: float = 0.0
 
     def set_design(self, d: float, r: float, n: float, v: Mapping[str, float],
                    correction: str) -> None:
         """Set ``d, r, n`` and recompute every derived figure from the exact formulas."""
         self.d, self.r, self.n = d, r, n
-        self.mass = float(spring.wire_mass(d, r, n, v["density"]))
+        self.mass = float(spring.wire_mass(d, r, n + self.end_coils, v["density"]))
         self.stiffness = float(spring.stiffness(d, r, n, v["G"]))
         self.stress = float(spring.shear_stress(_force(v, d, r, n), d, r, correction))
         self.index = float(spring.spring_index(d, r))
@@ -357,14 +384,20 @@ class SpringGP:
     def __init__(self, objective: str = "mass", correction: str = "wahl",
                  stiffness: str = "equality", solver: str | None = None,
                  solver_opts: Mapping[str, Any] | None = None,
-                 allowable_exponent: float = 0.0):
+                 allowable_exponent: float = 0.0, end_coils: float = 0.0,
+                 free_length: bool = False, solid_exponent: float | None = None,
+                 envelope: str | None = None):
         if objective not in OBJECTIVES:
             raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
         if correction not in CORRECTIONS:
             raise ValueError(f"correction must be one of {CORRECTIONS}, got {correction!r}")
         if stiffness not in STIFFNESS_MODES:
             raise ValueError(f"stiffness must be one of {STIFFNESS_MODES}, got {stiffness!r}")
+        if not (math.isfinite(end_coils) and end_coils >= 0.0):
+            raise ValueError(f"end_coils must be finite and >= 0, got {end_coils!r}")
         self.objective_name = objective
+        #: inactive coils added to ``n`` in the mass, volume and solid-length objectives
+        self.end_coils = float(end_coils)
         self.correction = correction
         self.stiffness_mode = stiffness
         self.solver = solver or _default_solver()
@@ -384,7 +417,17 @@ class SpringGP:
         self.n = cp.Variable(pos=True, name="n")
         self.t = cp.Variable(pos=True, name="t") if correction != "none" else None
         self.constraints = {s.name: self._constraint(s) for s in self.specs}
-        self.internal = self._internal()
+        #: the compression spring's free-length limit (``free_length=True``), see
+        #: :meth:`_free_length`; its values are given to :meth:`solve` as keywords
+        self.free_length_params = {k: cp.Parameter(pos=True, name=k) for k in FREE_LENGTH_KEYS}
+        #: the constraints beyond the table, by name (listed in ``active`` when they bind)
+        self.named = {**({"free length (buckling)": self._free_length()[0]} if free_length
+                         else {}),
+                      **({"stress at solid length": self._solid(solid_exponent)[0],
+                          "deflection (buckling bound)": self._deflection_bound()}
+                         if solid_exponent is not None else {}),
+                      **(self._envelope(envelope) if envelope else {})}
+        self.internal = self._internal() + list(self.named.values())
         self.objective_expr = self._objective(self.d, self.r, self.n, self.t)
         self.problem = cp.Problem(cp.Minimize(self.objective_expr),
                                   list(self.constraints.values()) + self.internal)
@@ -396,7 +439,8 @@ class SpringGP:
     # -- building blocks -----------------------------------------------------------------------
 
     def _objective(self, d, r, n, t):
-        return _objective_expr(self.objective_name, d, r, n, t, self.params, self.correction)
+        return _objective_expr(self.objective_name, d, r, n, t, self.params, self.correction,
+                               self.end_coils)
 
     def _internal(self) -> list:
         """Wahl auxiliary ``1/(t C) + 1/C <= 1`` with ``C = 2r/d``, i.e. ``t >= 1/(C - 1)``;
@@ -406,6 +450,67 @@ class SpringGP:
         if self.correction == "bergstrasser":
             return [self.d / (2.0 * self.r * self.t) + 0.75 * self.d / (2.0 * self.r) <= 1.0]
         return [self.d / (2.0 * self.r * self.t) + self.d / (2.0 * self.r) <= 1.0]
+
+    def _free_length(self) -> list:
+        """``L0 <= L0_over_D_max D`` with ``L0 = (n + solid_coils) d + 1.5 n (0.0015 D^2/d +
+        0.1 d) + F_max / R`` (m): the least free length that keeps the coils clear at the
+        largest force under dynamic load (EN 13906-1:2013, least working length ``L_n = L_c +
+        S_a``, ``S_a`` x1.5 dynamic, cold coiled; ``L_c = (n_t + extra) d``), a posynomial in
+        ``d, r, n`` (``F/R = 64 F r^3 n / (G d^4)``). With ``L0_over_D_max`` the EN 13906-1
+        9.14 slenderness below which the spring cannot buckle it is a sufficient (posynomial)
+        buckling constraint."""
+        return [self._least_free_length()
+                <= self.free_length_params["L0_over_D_max"] * 2.0 * self.r]
+
+    def _least_free_length(self):
+        """``L0 = (n + solid_coils) d + 1.5 n (0.0015 D^2/d + 0.1 d) + F_max / R`` (m), the
+        posynomial of :meth:`_free_length`."""
+        d, r, n, P, Q = self.d, self.r, self.n, self.params, self.free_length_params
+        return ((n + Q["solid_coils"]) * d + 1.5 * n * (0.006 * r**2 / d + 0.1 * d)
+                + 64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4))
+
+    def _envelope(self, kind: str) -> dict:
+        """The space a spring is built into: inside diameter over a rod ``D - d >= Di_min``
+        (the posynomial ``(Di_min + d) / (2 r) <= 1``) and, for a compression spring, the least
+        free length of :meth:`_free_length` ``<= L0_max`` and the solid length ``(n +
+        solid_coils) d <= Lc_max`` (EN 13906-1:2013, ``L_c = (n_t + extra) d``)."""
+        d, r, n, Q = self.d, self.r, self.n, self.free_length_params
+        out = {"inside diameter": (Q["Di_min"] + d) / (2.0 * r) <= 1.0}
+        if kind == "compression":
+            out["free length"] = self._least_free_length() <= Q["L0_max"]
+            out["solid length"] = (n + Q["solid_coils"]) * d <= Q["Lc_max"]
+        return out
+
+    def _deflection_bound(self):
+        """``F_max / R <= s_over_D_max D``: with ``s_over_D_max`` the slenderness ``L0_cr / D``
+        below which a spring cannot buckle (EN 13906-1:2013, 9.14) every spring that passes
+        the buckling check satisfies it: below ``L0_cr`` the deflection is less than the free
+        length, and above it ``s_K = L0 0.5/(1 - G/E) (1 - sqrt(1 - u^2))``, ``u = L0_cr/L0``,
+        grows with ``u`` to ``0.5 L0_cr / (1 - G/E) < L0_cr`` at ``u = 1`` (G/E < 0.5). A
+        monomial constraint: the GP with it and without :meth:`_free_length` is a relaxation
+        of buckling, a certified lower bound."""
+        d, r, n, P = self.d, self.r, self.n, self.params
+        return (64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4)
+                <= self.free_length_params["s_over_D_max"] * 2.0 * r)
+
+    def _solid(self, m: float) -> list:
+        """The shear stress at solid length ``tau_c d^m <= k_solid`` (EN 13906-1:2013, static
+        stress at solid length ``L_c``, allowable ``0.56 R_m(d)`` taken as ``k_solid d^-m``
+        like the working one). With the least free length of :meth:`_free_length` the force at
+        solid length is ``F_c = F_max + R S_a = F_max + 1.5 G (0.006 d^3/(64 r) + 0.1 d^5 /
+        (64 r^3))`` (N), a posynomial; the stress correction is the GP's (as
+        :func:`govopt.model.spring.shear_stress`: none, Wahl ``1 + 0.75 t + 0.615/C`` or
+        Bergstraesser ``1 + 1.25 t``)."""
+        d, r, t, P = self.d, self.r, self.t, self.params
+        F = P["F_max"] + 1.5 * P["G"] * (0.006 * d**3 / (64.0 * r) + 0.1 * d**5 / (64.0 * r**3))
+        base = r * d**-3
+        if self.correction == "wahl":
+            g = base + 0.75 * t * base + 0.3075 * d**-2
+        elif self.correction == "bergstrasser":
+            g = base + 1.25 * t * base
+        else:
+            g = base
+        return [16.0 / np.pi * F * g * d**m <= self.free_length_params["k_solid"]]
 
     def _constraint(self, s: _Spec, slack=None):
         g = s.g(self.d, self.r, self.n, self.t, self.params)
@@ -464,12 +569,17 @@ class SpringGP:
         ``certify=True`` adds an independent KKT check (stationarity, complementary slackness,
         feasibility) evaluated from the cvxpy expressions at the returned point.
         """
+        extra = {k: values.pop(k, None) for k in FREE_LENGTH_KEYS}
+        extra = {k: _FREE_LENGTH_DEFAULTS.get(k, 1e9) if x is None else x
+                 for k, x in extra.items()}
+        for k, p in self.free_length_params.items():
+            p.value = float(extra[k])
         v = self.values(**values)
         self._assign(v)
         status, raw, elapsed = self._run(self.problem)
         sol = SpringSolution(status=status, objective_name=self.objective_name,
                              correction=self.correction, solver_status=self.problem.status,
-                             solve_time=elapsed, inputs=v)
+                             solve_time=elapsed, inputs=v, end_coils=self.end_coils)
         sol.certificate = self._solver_certificate(raw, status)
         if status not in _SOLVED:
             return sol
@@ -499,7 +609,8 @@ class SpringGP:
         sol.parameter_sensitivities = psens
         _, ratios = check_design(sol.d, sol.r, sol.n, v, self.correction,
                                  allowable_exponent=self.allowable_exponent)
-        sol.active = [k for k, q in ratios.items() if q >= 1.0 - 1e-6]
+        sol.active = [k for k, q in ratios.items() if q >= 1.0 - 1e-6] + [
+            k for k, c in self.named.items() if float(np.asarray(c.dual_value)) > 1e-6]
 
     def _solver_certificate(self, raw, status) -> dict[str, Any]:
         cert: dict[str, Any] = {"solver": self.solver, "status": status,
@@ -685,7 +796,8 @@ class SpringGP:
             band_values["kappa_max"] = v["kappa"] * (1.0 + stiffness_tol)
             if self._band is None:
                 self._band = SpringGP(self.objective_name, self.correction, "band",
-                                      self.solver, self.solver_opts, self.allowable_exponent)
+                                      self.solver, self.solver_opts, self.allowable_exponent,
+                                      self.end_coils)
             band = self._band
         else:
             band_values = self.values(**values)
@@ -694,7 +806,7 @@ class SpringGP:
             raise ValueError("turn_step and r_step must be positive")
         cont = band.solve(**band_values)
         out = DiscreteSolution(status="infeasible", objective_name=self.objective_name,
-                               continuous=cont)
+                               continuous=cont, end_coils=self.end_coils)
         if cont.status == "infeasible":
             return out
         out.continuous_bound = cont.objective if cont.ok else 0.0
@@ -719,7 +831,8 @@ class SpringGP:
                 continue
             cand, count = _enumerate_wire(row["d"], band_values, self.correction,
                                           self.objective_name, turn_step, r_step, rtol,
-                                          allowable_exponent=self.allowable_exponent)
+                                          allowable_exponent=self.allowable_exponent,
+                                          end_coils=self.end_coils)
             out.candidates_checked += count
             if cand is None:
                 continue
@@ -742,7 +855,8 @@ class SpringGP:
 
 
 def _enumerate_wire(d, v, correction, objective, turn_step, r_step, rtol,
-                    max_points: int = 5_000_000, allowable_exponent: float = 0.0):
+                    max_points: int = 5_000_000, allowable_exponent: float = 0.0,
+                    end_coils: float = 0.0):
     """Best ``(objective, mass, d, r, n)`` for one wire over the r grid, or ``None``."""
     G, F, k_s = v["G"], v["F_max"], v["k_s"] * d**-allowable_exponent
     r_lo = max(v["r_min"], v["C_min"] * d / 2.0)
@@ -766,8 +880,8 @@ def _enumerate_wire(d, v, correction, objective, turn_step, r_step, rtol,
     if not ok.any():
         return None, r.size
     r, n = r[ok], n[ok]
-    obj = _objective_np(objective, d, r, n, v, correction) * np.ones_like(r)
-    mass = spring.wire_mass(d, r, n, v["density"])
+    obj = _objective_np(objective, d, r, n, v, correction, end_coils) * np.ones_like(r)
+    mass = spring.wire_mass(d, r, n + end_coils, v["density"])
     i = int(np.lexsort((mass, obj))[0])
     return (float(obj[i]), float(mass[i]), float(d), float(r[i]), float(n[i])), int(ok.size)
 
@@ -798,23 +912,29 @@ _local = threading.local()
 
 
 def _cached_gp(objective: str, correction: str, stiffness: str = "equality",
-               allowable_exponent: float = 0.0) -> SpringGP:
+               allowable_exponent: float = 0.0, end_coils: float = 0.0,
+               free_length: bool = False, solid_exponent: float | None = None,
+               envelope: str | None = None) -> SpringGP:
     """One compiled GP per (objective, correction, stiffness mode, allowable exponent) and
     thread (parameters are mutated): every solve sets every parameter, so a shared GP gives the
     same optimum as a fresh one, without the compilation."""
     cache = getattr(_local, "cache", None)
     if cache is None:
         cache = _local.cache = {}
-    key = (objective, correction, stiffness, float(allowable_exponent))
+    key = (objective, correction, stiffness, float(allowable_exponent), float(end_coils),
+           free_length, solid_exponent, envelope)
     if key not in cache:
         cache[key] = SpringGP(objective, correction, stiffness,
-                              allowable_exponent=allowable_exponent)
+                              allowable_exponent=allowable_exponent, end_coils=end_coils,
+                              free_length=free_length, solid_exponent=solid_exponent,
+                              envelope=envelope)
     return cache[key]
 
 
 def size_helical_spring(F_max: float | None = None, stiffness: float | None = None, *,
                         loads: Sequence[float] | None = None, k_s: float, G: float,
                         density: float, correction: str = "wahl", objective: str = "mass",
+                        end_coils: float = 0.0, envelope: str | None = None,
                         **bounds) -> SpringSolution:
     """Least-mass helical spring for given loads, material and envelope, as an exact GP.
 
@@ -844,7 +964,7 @@ def size_helical_spring(F_max: float | None = None, stiffness: float | None = No
         stiffness = kappa
     if stiffness is None or F_max is None:
         raise TypeError("give F_max and stiffness, or loads=(F1, x1, F2, x2)")
-    gp = _cached_gp(objective, correction)
+    gp = _cached_gp(objective, correction, end_coils=end_coils, envelope=envelope)
     sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k_s, G=G, density=density,
                    **bounds)
     sol.extras = extras

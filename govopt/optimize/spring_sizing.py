@@ -22,8 +22,8 @@ stress and fatigue rows, its optimality certificate is that of the last GP only)
 >>> s.solution.status, all(c.passed for c in stress.values())
 ('optimal', True)
 >>> c = stress["shear stress at solid length"]  # binds: 0.56 R_m(d) (EN 13906-1)
->>> round(c.value / c.limit, 3)
-1.0
+>>> round(c.value / c.limit, 3), s.certified
+(1.0, True)
 """
 
 from __future__ import annotations
@@ -36,9 +36,26 @@ import numpy as np
 from ..springs import checks as ck
 from ..springs import helical as hx
 from ..springs import materials as mt
-from .spring_gp import SpringSolution, _cached_gp, size_helical_spring
+from .spring_gp import SpringSolution, _cached_gp
 
 KINDS = ("compression", "extension")
+#: Inactive coils of a compression spring: one closed end coil each side, ``n_t = n + 2``
+#: (EN 13906-1:2013, total coils for cold-coiled springs with closed ends; Shigley Table 10-1).
+COMPRESSION_END_COILS = 2.0
+
+
+def end_coils(kind: str, mat=None) -> float:
+    """Coils of wire beyond the ``n`` active ones, counted in the mass (EN 13906-1: the wire
+    length ``pi D n_t`` counts ends and hooks as coils).
+
+    Compression: :data:`COMPRESSION_END_COILS`. Extension (EN 13906-2:2013, active coils
+    ``n = n_b + G/E``): the body's ``n_b = n - G/E`` coils plus two hooks or loops of one coil
+    each, i.e. ``2 - G/E`` (``2`` without a grade, as ``E`` is then unknown)."""
+    if kind == "compression":
+        return COMPRESSION_END_COILS
+    if mat is None:
+        return 2.0
+    return 2.0 - float(mat.shear_modulus(1e-3) / mat.elastic_modulus(1e-3))
 
 
 @dataclass
@@ -52,6 +69,22 @@ class Sizing:
     initial_tension: float = math.nan
     allowable_factor: float = 1.0
     notes: list[str] = field(default_factory=list)
+    #: a certified lower bound on the objective (the relaxation's GP optimum; nan: none)
+    lower_bound: float = math.nan
+    #: the required fatigue life (cycles)
+    cycles: float = 1e7
+    #: why no spring was found (the relaxed GP's diagnosis), empty when one was
+    diagnosis: str = ""
+
+    @property
+    def gap(self) -> float:
+        """``objective / lower_bound - 1``: how far from optimal the design can be at most."""
+        return self.solution.objective / self.lower_bound - 1.0
+
+    @property
+    def certified(self) -> bool:
+        """The design is a proven global optimum (within 1e-6 of the certified bound)."""
+        return bool(self.gap <= 1e-6)
 
     @property
     def passed(self) -> bool:
@@ -83,17 +116,40 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 rules: str = "EN13906", correction: str | None = None, F_min: float = 0.0,
                 fatigue: tuple[float, float] | None = None, min_fatigue_safety: float = 1.0,
                 peened: bool = False, cycles: float = 1e7, ends: str = "closed_ground",
-                seating: str = "fixed-fixed", **bounds) -> Sizing:
+                seating: str = "fixed-fixed", objective: str = "mass",
+                stiffness_max: float | None = None, **bounds) -> Sizing:
     """Size a spring (SI): see the module docstring. ``bounds``: the GP's optional limits
     (``n_min``, ``n_max``, ``C_min``, ``C_max``, ``D_out_max``, ``L_body_max``,
-    ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20."""
+    ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20.
+    The space it is built into (GP constraints, :meth:`SpringGP._envelope`): ``Di_min`` (the
+    inside diameter over a rod), and for a compression spring ``L0_max`` (its least free
+    length: coils clear at ``F_max``) and ``Lc_max`` (its solid length). With
+    ``stiffness_max`` the stiffness may lie anywhere in ``stiffness .. stiffness_max`` (the GP's
+    band mode)."""
     if kind not in KINDS:
         raise ValueError(f"spring kind must be one of {KINDS}, got {kind!r}")
+    space = {k: bounds.pop(k) for k in ("Di_min", "L0_max", "Lc_max")
+             if bounds.get(k) is not None}
+    for k in ("Di_min", "L0_max", "Lc_max"):
+        bounds.pop(k, None)
+    if kind == "extension" and set(space) - {"Di_min"}:
+        raise ValueError("free and solid length limits are for compression springs")
+    envelope = kind if space else None
+    if kind == "compression":
+        space["solid_coils"] = end_coils(kind) + hx.END_FORMS[ends][0]
+    mode, rate = "equality", {"kappa": stiffness}
+    if stiffness_max is not None:
+        if not stiffness <= stiffness_max:
+            raise ValueError(f"stiffness range {stiffness!r} .. {stiffness_max!r} is empty")
+        mode, rate = "band", {"kappa_min": stiffness, "kappa_max": stiffness_max}
     if grade is None:
         correction = correction or "wahl"
-        sol = size_helical_spring(F_max, stiffness, k_s=k_s, G=G, density=density,
-                                  correction=correction, **bounds)
-        return Sizing(sol, kind)
+        gp = _cached_gp(objective, correction, mode, 0.0, end_coils(kind), envelope=envelope)
+        sol = gp.solve(certify=True, **rate, F_max=F_max, k_s=k_s, G=G, density=density,
+                       **space, **bounds)
+        why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
+            gp, **rate, F_max=F_max, k_s=k_s, G=G, density=density, **bounds)
+        return Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why)
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
     if not isinstance(mat.G, float):
         raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire diameter "
@@ -107,18 +163,38 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                                                           or math.inf)
     state = {"window": (lo, hi)}
 
-    def attempt(factor):
-        """The GP at ``factor`` times the rule, re-fitted until the wire settles; the checks
-        and the worst ratio of a stress or fatigue row (< 1: it fails)."""
+    Q = end_coils(kind, mat)
+    if kind == "compression":  # the slenderness that cannot buckle
+        stable = float(hx.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
+                                               hx.SEATING[seating]))
+
+    def attempt(factor, slender=None, refit=True):
+        """The GP at ``factor`` times the rule, re-fitted until the wire settles (with
+        ``slender``: free length <= ``slender`` times the longest that cannot buckle; without
+        ``refit`` one solve with the current fit, the same compiled GP); the checks and the
+        worst ratio of a stress or fatigue row (< 1: it fails)."""
+        extra = dict(space) if slender is None else {**space,
+                                                     "L0_over_D_max": slender * stable}
         for _ in range(60):
             k, m = _monomial(mat, place, rules, k_s, *state["window"])
-            gp = _cached_gp("mass", correction, "equality", m)
-            sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k * factor, G=G,
-                           density=density, **{**bounds, "d_min": lo, "d_max": hi})
+            m_c = None
+            if kind == "compression":  # the stress at solid length, a constraint too
+                k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
+                extra.update(k_solid=k_c, s_over_D_max=stable)
+            gp = _cached_gp(objective, correction, mode, m, Q, slender is not None, m_c,
+                            envelope)
+            sol = gp.solve(**rate, F_max=F_max, k_s=k * factor, G=G,
+                           density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             if not sol.ok:
-                return Sizing(sol, kind, notes=[f"the GP found no spring ({sol.status})"]), 0.0
+                text = diagnose(gp, **rate, F_max=F_max, k_s=k * factor, G=G,
+                                density=density, **{**bounds, "d_min": lo, "d_max": hi}
+                                ) if sol.status == "infeasible" else sol.status
+                if factor < 1.0:
+                    text += (f" (with the allowable lowered to {factor:.3g} of the rule's for "
+                             "the fatigue or hook rows)")
+                return Sizing(sol, kind, diagnosis=text), 0.0
             new = (max(lo, sol.d / 1.25), min(hi, sol.d * 1.25))
-            if np.allclose(new, state["window"], rtol=1e-8, atol=0.0):
+            if not refit or np.allclose(new, state["window"], rtol=1e-5, atol=0.0):
                 break
             state["window"] = new  # re-fit the allowable about this wire
         sizing = _checked(sol, kind, mat, F_min, F_max, fatigue, rules=rules, k_s=k_s,
@@ -130,6 +206,74 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                            default=math.inf)
 
     sizing, worst = attempt(1.0)
+    bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
+    sizing = _stress_search(attempt, sizing, worst)
+    if sizing.solution.ok and kind == "compression":
+        sizing = _buckling_search(attempt, sizing, stable)
+    sizing.lower_bound, sizing.cycles = bound, cycles
+    return sizing
+
+
+def diagnose(gp, **values) -> str:
+    """Which limits of the GP ``gp`` must move, and by what factor (:meth:`SpringGP.diagnose`);
+    when no limit moved by up to 1e6 helps (an absurd value, e.g. 1e308 turns), again with
+    factors up to 1e300 (the GP is solved in logarithms)."""
+    why = gp.diagnose(**values)
+    if not why.conflicting and not why.relaxations:
+        wide = gp.diagnose(max_factor=1e300, **values)
+        if wide.conflicting or wide.relaxations:
+            return wide.summary()
+    return why.summary()
+
+
+def _bound(sol) -> float:
+    """The solver's dual objective: a lower bound on the GP's optimum (nan unless optimal)."""
+    return float(sol.certificate.get("objective_lower_bound", math.nan))
+
+
+def _failed_buckling(sizing) -> bool:
+    return any(c.name == "deflection / buckling deflection" and not c.passed
+               for c in sizing.checks)
+
+
+def _buckling_search(attempt, sizing, stable):
+    """Buckling (EN 13906-1, 9.14) as a constraint. Its limit is not a posynomial, but a free
+    length below the slenderness that cannot buckle (``L0 <= stable D``) is; a free length of
+    ``s`` times that may still pass (the deflection stays below ``s_K``). Bisection on ``s``
+    from 1 (safe when feasible) to the unconstrained design's slenderness finds the least-mass
+    design that passes, to 0.1 %; the GP without it stays the certified lower bound."""
+    if not _failed_buckling(sizing):
+        return sizing
+    factor = sizing.allowable_factor
+    safe, _ = attempt(factor, 1.0)
+    if not safe.solution.ok or _failed_buckling(safe):
+        sizing.notes.append("no spring passes the buckling check within the other limits: "
+                            "guide it (--seating) or allow a larger diameter")
+        return sizing
+    sol = sizing.solution
+    good, bad = 1.0, float(sizing.free_length / (2.0 * sol.r) / stable)
+    while bad / good > 1.001:  # one compiled GP: the allowable's fit is frozen meanwhile
+        mid = math.sqrt(good * bad)
+        trial, _ = attempt(factor, mid, refit=False)
+        if trial.solution.ok and not _failed_buckling(trial):
+            good = mid
+        else:
+            bad = mid
+    for _ in range(20):  # the fit re-centred on the design found; back off if that buckles
+        trial, _ = attempt(factor, good)
+        if trial.solution.ok and not _failed_buckling(trial) and trial.passed >= safe.passed:
+            safe = trial
+            break
+        good = max(1.0, good * 0.998)
+    safe.allowable_factor = factor
+    safe.notes = sizing.notes + [
+        f"buckling binds: the free length is held to {good:.4g} times the slenderness that "
+        "cannot buckle (EN 13906-1, 9.14), found by bisection to 0.1 %"]
+    return safe
+
+
+def _stress_search(attempt, sizing, worst):
+    """The body's allowable lowered until the hooks' and fatigue rows pass (module docstring)."""
     if not sizing.solution.ok or worst >= 1.0:
         return sizing
     bad, good = 1.0, None  # the largest factor that passes, by steps down then bisection
@@ -145,16 +289,22 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         bad = factor
     if good is None:
         return sizing
-    for _ in range(12):
+    for _ in range(12):  # one compiled GP: the allowable's fit is frozen meanwhile
         mid = math.sqrt(good * bad)
-        trial, worst = attempt(mid)
+        trial, worst = attempt(mid, refit=False)
         if trial.solution.ok and worst >= 1.0:
-            good, sizing = mid, trial
+            good = mid
         else:
             bad = mid
+    for _ in range(20):  # the fit re-centred on the design found; back off if a row fails
+        trial, worst = attempt(good)
+        if trial.solution.ok and worst >= 1.0:
+            sizing = trial
+            break
+        good *= 0.998
     sizing.notes.append(f"the body's allowable was lowered to {good:.4g} of the rule's so that "
                         "the hooks' static stresses and the fatigue rows pass too (heuristic "
-                        "outer search; the GP certificate is the last solve's)")
+                        "outer search; the certified bound is the relaxation's)")
     return sizing
 
 
@@ -185,7 +335,7 @@ def _checked(sol, kind, mat, F_min, F_max, fatigue, *, rules, k_s, correction, p
                   initial_tension=float(kw.get("F0", math.nan)))
 
 
-__all__ = ["KINDS", "Sizing", "size_spring"]
+__all__ = ["KINDS", "Sizing", "diagnose", "end_coils", "size_spring"]
 
 
 def _ratio(check) -> float:

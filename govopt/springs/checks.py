@@ -102,6 +102,10 @@ def _static(place):
     return value, limit, source
 
 
+#: Life of the fatigue data (EN 13906-1 Goodman diagrams and Zimmerli's data: 1e7 cycles)
+DATA_CYCLES = 1e7
+
+
 def _life_note(kw, cycles_of_data):
     if kw["cycles"] > cycles_of_data:
         return (f"; required life {kw['cycles']:.3g} cycles exceeds the data's "
@@ -122,9 +126,10 @@ def _body_fatigue(kw):
 def _body_fatigue_source(kw):
     diagram = kw["mat"].fatigue_diagram(kw["peened"]) if kw["method"] == "EN13906" else None
     if diagram is not None:
-        return diagram.source + ", Bergstraesser-corrected stresses" + _life_note(kw, 1e7)
+        return diagram.source + ", Bergstraesser-corrected stresses" + _life_note(kw, DATA_CYCLES)
     return (f"{fat.ZIMMERLI_SOURCE}; {kw['criterion'].capitalize()} line through "
-            f"S_su = 0.67 S_ut (Shigley §10-9), K_B-corrected stresses" + _life_note(kw, 1e7))
+            f"S_su = 0.67 S_ut (Shigley §10-9), K_B-corrected stresses"
+            + _life_note(kw, DATA_CYCLES))
 
 
 def _hook_fatigue(point):
@@ -142,7 +147,7 @@ def _hook_fatigue(point):
         how = ("bending: S_e = S_se/0.577 (Shigley Example 10-7)" if point == "A"
                else "torsion with (K)_B")
         return (f"hook point {point}, {how}; {fat.ZIMMERLI_SOURCE} (hooks taken unpeened); "
-                f"{kw['criterion'].capitalize()} line" + _life_note(kw, 1e7))
+                f"{kw['criterion'].capitalize()} line" + _life_note(kw, DATA_CYCLES))
     return value, source
 
 

@@ -21,10 +21,12 @@ from .helical import shear_stress
 
 #: Zimmerli's data as tabulated by Shigley (§10-9): (S_sa, S_sm) in Pa for infinite life of
 #: spring steels under 10 mm: unpeened 35 / 55 kpsi (241 / 379 MPa), peened 57.5 / 77.5 kpsi
-#: (398 / 534 MPa).
-ZIMMERLI = {False: (241e6, 379e6), True: (398e6, 534e6)}
-ZIMMERLI_SOURCE = ("Zimmerli's endurance data, Shigley 9th ed. §10-9: S_sa = 241 / 398 MPa at "
-                   "S_sm = 379 / 534 MPa (unpeened / peened), infinite life, d < 10 mm")
+#: (396.4 / 534 MPa; Shigley prints 398 MPa for 57.5 kpsi, a slip: 57.5 x 6.894757 = 396.4).
+#: The book's MPa are kept where they are the kpsi rounded (241, 379, 534).
+ZIMMERLI = {False: (241e6, 379e6), True: (57.5 * 6.894757e6, 534e6)}
+ZIMMERLI_SOURCE = ("Zimmerli's endurance data, Shigley 9th ed. §10-9: S_sa = 241 / 396.4 MPa "
+                   "(35 / 57.5 kpsi) at S_sm = 379 / 534 MPa (unpeened / peened), infinite "
+                   "life, d < 10 mm")
 #: Fatigue loci through the midrange axis at the ultimate (Shigley Table 6-7; Sines ignores the
 #: midrange stress).
 CRITERIA = ("goodman", "gerber", "sines")

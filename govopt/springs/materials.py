@@ -19,6 +19,8 @@ from importlib import resources
 
 import numpy as np
 
+from .tables import row_index
+
 MPA = 1e6
 GPA = 1e9
 MM = 1e-3
@@ -128,7 +130,7 @@ def _stepped(value, d):
         return np.full(np.shape(d), value)
     uppers = np.array([u for u, _ in value])
     values = np.array([v for _, v in value])
-    return values[np.minimum(np.searchsorted(uppers, d), len(values) - 1)]
+    return values[np.minimum(row_index(uppers, d), len(values) - 1)]
 
 
 def _moduli(raw, key):

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .tables import row_index, within
+
 #: Quality grades and their factor Q on force and free-length tolerances (EN 15800).
 GRADES = (1, 2, 3)
 Q_FACTOR = {1: 0.63, 2: 1.0, 3: 1.6}
@@ -73,9 +75,9 @@ def coil_diameter_tolerance(D, w, grade: int = 2):
     _check_grade(grade)
     Dmm = np.asarray(D, dtype=float) * 1e3
     w = np.asarray(w, dtype=float)
-    row = np.searchsorted(_AD_D, Dmm, side="left")
-    col = np.where(w <= 8.0, 0, np.where(w <= 14.0, 1, 2)) + 3 * (grade - 1)
-    ok = (Dmm >= 0.63) & (Dmm <= 200.0) & (w >= 4.0) & (w <= 20.0)
+    row = row_index(_AD_D, Dmm)
+    col = np.minimum(row_index((8.0, 14.0), w), 2) + 3 * (grade - 1)
+    ok = within(Dmm, 0.63, 200.0) & within(w, 4.0, 20.0)
     return np.where(ok, _AD[np.minimum(row, len(_AD_D) - 1), col] * 1e-3, np.nan)
 
 
@@ -135,8 +137,8 @@ def wire_diameter_tolerance(d, standard: str = "EN10270-1"):
     except KeyError:
         raise ValueError(f"wire standard must be one of {tuple(WIRE_TOLERANCE)}") from None
     dmm = np.asarray(d, dtype=float) * 1e3
-    row = np.searchsorted(upper, dmm, side="left")
-    return np.where(dmm <= upper[-1], tol[np.minimum(row, len(tol) - 1)] * 1e-3, np.nan)
+    row = row_index(upper, dmm)
+    return np.where(row < len(tol), tol[np.minimum(row, len(tol) - 1)] * 1e-3, np.nan)
 
 
 def rate_spread(d, D, n, G, d_tol, D_tol):
