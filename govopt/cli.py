@@ -98,7 +98,7 @@ def _load(spec: Path | None, default: Path, **analysis):
 
 
 @_guarded
-def evaluate(*, spec, geometry, json_out, xlsx, force, plots) -> None:
+def evaluate(*, spec, geometry, json_out, xlsx, force, plots, full, section) -> None:
     """Evaluate the spec's design (default: the bundled Hamabe case a). Exit code 0: every
     check passed; 1: some check failed; 2: bad input."""
     from .evaluation import evaluate as run
@@ -106,11 +106,12 @@ def evaluate(*, spec, geometry, json_out, xlsx, force, plots) -> None:
     if geometry is not None and geometry not in ("exact", "series"):
         _fail(f"--geometry: expected 'exact' or 'series', got {geometry!r}")
     _run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, geometry=geometry)), json_out,
-                    spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots)
+                    spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots,
+                    sections=_sections(full, section))
 
 
 @_guarded
-def design(*, spec, json_out, output, xlsx, force, plots) -> None:
+def design(*, spec, json_out, output, xlsx, force, plots, full, section) -> None:
     """Find the best design for the spec's requirements (default: bundled hamabe-design)."""
     from .optimize.design import design as run
 
@@ -120,12 +121,33 @@ def design(*, spec, json_out, output, xlsx, force, plots) -> None:
         xlsx = DEFAULT_WORKBOOK
     _run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN)), json_out, spec or DEFAULT_DESIGN,
                     xlsx=xlsx, output=output, force=force, replace_xlsx=default_xlsx,
-                    plots=plots)
+                    plots=plots, sections=_sections(full, section))
+
+
+def _sections(full: bool, section: list[str] | None) -> list[str] | None:
+    """The report's sections: the answer (``summary``) by default, all with ``--full``, the
+    named ones with ``--section`` (names checked: a wrong one is exit 2)."""
+    from .report.text import SECTIONS
+
+    if full and section:
+        _fail("--full and --section: choose one (--full prints every section)")
+    if full:
+        return None
+    names = [n.strip() for s in section or () for n in s.split(",") if n.strip()]
+    for name in names:
+        if name not in SECTIONS:
+            import difflib
+
+            close = difflib.get_close_matches(name, SECTIONS, n=1)
+            _fail(f"--section: expected one of {', '.join(SECTIONS)}, got {name!r}"
+                  + (f" (did you mean {close[0]!r}?)" if close else ""))
+    return names or ["summary"]
 
 
 def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = None,
                     output: Path | None = None, force: bool = False,
-                    replace_xlsx: bool = False, plots: Path | None = None) -> None:
+                    replace_xlsx: bool = False, plots: Path | None = None,
+                    sections: list[str] | None = None) -> None:
     """Check the outputs, compute a Result, write the requested files, print it and say what
     was written where (on stderr with ``--json``); a user's error (GovoptError) exits 2 and a
     result with failed checks 1, through :func:`_guarded`."""
@@ -151,7 +173,8 @@ def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = Non
         with overwrite_policy(force or replace_xlsx):
             write_workbook(res, xlsx)
     drawn = [] if plots is None else write_plots(res, plots, stem=spec.stem, overwrite=force)
-    _echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res))
+    _echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res,
+                                                                              sections=sections))
     for path in (output, xlsx, *drawn):
         if path is not None:
             _echo(f"wrote {Path(path).absolute()}", err=json_out)
@@ -530,6 +553,11 @@ def _spec_outputs(p, output: bool) -> None:
     _option(p, "--xlsx", type=Path, help="Write an Excel design sheet.")
     _flag(p, "--force", help=_FORCE_HELP)
     _option(p, "--plots", type=Path, help="Write the plots (PNG and SVG) into this folder.")
+    _flag(p, "--full", help="Print the whole report (the default is the answer: verdict, "
+                            "design, the checks to watch, notes).")
+    _option(p, "--section", action="append",
+            help="Print these sections of the report (repeat, or comma-separated): summary, "
+                 "characteristic, design, dynamics, vibration, optimisation, checks, spring.")
 
 
 def _study_parser(group) -> None:
