@@ -268,16 +268,18 @@ def _warnings(res: Result) -> list[str]:
 
 #: The report's sections by name (``govopt evaluate --section NAME``), in the full report's
 #: order; ``summary`` is the answer (verdict, design, the checks to watch, notes).
-SECTIONS = ("summary", "characteristic", "design", "dynamics", "vibration", "optimisation",
-            "checks", "spring")
+SECTIONS = ("summary", "design", "checks", "characteristic", "dynamics", "vibration",
+            "optimisation", "spring")
 
 
-def _summary_section(out: _Report, res: Result) -> None:
+def _summary_section(out: _Report, res: Result, every_check: bool = False) -> None:
+    """The answer: the verdict, the design, the checks to watch (none where ``every_check``:
+    the whole Checks table follows) and the notes."""
     line = verdict(res)
     out.title("Verdict")
     out.line(line, "green bold" if line.startswith("PASS") else "red bold")
     _design_section(out, res)
-    shown = watched(res)
+    shown = [] if every_check else watched(res)
     if shown:
         rows, styles = _check_rows(shown, res)
         more = len(res.checks) - len(shown)
@@ -359,7 +361,7 @@ def _summary(res: Result) -> list[list[str]]:
 
 
 def _design_section(out: _Report, res: Result) -> None:
-    out.title("Design" + (" (optimised)" if res.optimisation else ""))
+    out.title("Design")
     out.table(["", "", "", ""], _summary(res), right=(1,), show_header=False)
 
 
@@ -423,7 +425,9 @@ def format_result(res: Result, colour: bool | None = None,
     if unknown:
         raise ValueError(f"unknown report section(s) {unknown}; expected {SECTIONS}")
     for name in SECTIONS:
-        if name in wanted and not (name == "design" and "summary" in wanted):
+        if name == "summary" and name in wanted:
+            _summary_section(out, res, every_check="checks" in wanted)
+        elif name in wanted and not (name == "design" and "summary" in wanted):
             _WRITERS[name](out, res)
     if sections is not None and list(wanted) == ["summary"]:
         out.line("")
