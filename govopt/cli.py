@@ -151,7 +151,7 @@ def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = Non
     """Check the outputs, compute a Result, write the requested files, print it and say what
     was written where (on stderr with ``--json``); a user's error (GovoptError) exits 2 and a
     result with failed checks 1, through :func:`_guarded`."""
-    from .report.files import check_output, overwrite_policy, write_design_spec
+    from .report.files import check_output, drawn_design, overwrite_policy, write_design_spec
     from .report.text import format_result
 
     outputs = [(p, what, force or (replace_xlsx and what == "workbook"))
@@ -165,8 +165,9 @@ def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = Non
         check_plot_dir(plots, spec.stem, overwrite=force, inputs=[spec],
                        others=[p for p, _, _ in outputs])
     res = compute()
-    if output is not None:
-        write_design_spec(res, output, overwrite=force)
+    if output is not None:  # rounded as drawn, and evaluated again: the report is its
+        text, res, _ = drawn_design(res)
+        write_design_spec(res, output, overwrite=force, text=text)
     if xlsx is not None:
         from .report.excel import write_workbook
 

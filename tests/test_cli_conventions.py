@@ -378,3 +378,44 @@ def test_design_o_writes_the_types_own_keys(tmp_path):
     for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s"):
         # from masses a few ulps apart: the speeds agree to rounding
         assert ev[key] == pytest.approx(designed[key], rel=1e-14), key
+
+
+# ------------------------------------------------------------------------------------------
+# issue 23: numbers an engineer can draw
+
+
+def test_design_o_writes_the_design_as_drawn_and_that_design_passes(tmp_path):
+    """`govopt design -o`: each designed length and dash-pot rounded to 4 significant digits
+    (the catalogue's wire and turns as they are), the report and the JSON are the rounded
+    design's, and `govopt evaluate` of the file reproduces them with every check passing."""
+    run = _govopt("design", SPECS / "hamabe-design.toml", "-o", "d.toml", "--json",
+                  cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    designed = json.loads(run.stdout)
+    table = tomllib.loads((tmp_path / "d.toml").read_text(encoding="utf-8"))["design"]
+    for key in ("free_half_length", "coil_radius", "dashpot_f"):
+        number = table[key].split()[0]
+        assert len(re.sub(r"[-.]", "", number).strip("0")) <= 4, table[key]
+    assert any("rounded to 4 significant digits" in n for n in designed["notes"])
+    evaluated = _govopt("evaluate", "d.toml", "--json", cwd=tmp_path)
+    assert evaluated.returncode == 0, evaluated.stderr
+    ev = json.loads(evaluated.stdout)
+    assert all(c["passed"] for c in ev["checks"])
+    for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s", "pendulum_mass_kg"):
+        assert ev[key] == designed[key], key
+    assert ev["spring"]["free_half_length_m"] == designed["spring"]["free_half_length_m"]
+
+
+def test_a_rounding_that_breaks_a_check_is_not_written(monkeypatch):
+    """Where rounding breaks a check the exact design passes, the exact design is written and
+    the note names the check and what to do."""
+    from govopt.optimize.design import design
+    from govopt.report import files
+
+    res = design(govopt.load_spec(SPECS / "hamabe-design.toml"))
+    monkeypatch.setattr(files, "DRAWING_DIGITS", (1, None))  # 135.4 mm -> 100 mm: breaks
+    text, drawn, note = files.drawn_design(res)
+    assert text == design_toml(res) and drawn.design == res.design
+    assert note.startswith("design written at full precision") and "evaluate" in note
+    broken = note.split("fails ", 1)[1]
+    assert re.search(r"\((over|short) by [\d.,]+ %\)", broken), note

@@ -183,7 +183,7 @@ class _Report:
         return text.rstrip("\n")
 
 
-def _margin(c: Check) -> str:
+def margin_words(c: Check) -> str:
     """A check's margin in words: "1.86 % spare", "over by 3.2 %" (a ``<=`` check),
     "short by 3.2 %" (a ``>=`` check); a non-finite margin is "unbounded"."""
     m = 100.0 * c.margin
@@ -211,7 +211,7 @@ def _check_rows(checks, res: Result) -> tuple[list[list[str]], list[str]]:
         limit, _ = sec.shown(c.limit, c.unit)
         result = ("PASS (binding)" if c.active else "PASS") if c.passed else "FAIL"
         rows.append([check_name(c, res), _num(value, ".6g"), f"{c.sense} {_num(limit, '.6g')}",
-                     unit.replace("*", " ") or "-", _margin(c), result])
+                     unit.replace("*", " ") or "-", margin_words(c), result])
         styles.append("red bold" if not c.passed else ("yellow" if c.active else "green"))
     return rows, styles
 
@@ -254,7 +254,7 @@ def verdict(res: Result) -> str:
         return (f"PASS: all {n} checks pass" + (f"; binding: {'; '.join(binding)}"
                                                 if binding else ""))
     return (f"FAIL: {len(failed)} of {n} checks fail: "
-            + "; ".join(f"{check_name(c, res)} ({_margin(c)})" for c in failed))
+            + "; ".join(f"{check_name(c, res)} ({margin_words(c)})" for c in failed))
 
 
 def _warnings(res: Result) -> list[str]:
