@@ -23,8 +23,6 @@ from .limits import printable, shorten_values
 
 DEFAULT_EVALUATE = SPECS / "hamabe-a.toml"
 DEFAULT_DESIGN = SPECS / "hamabe-design.toml"
-#: `govopt design`'s own report, written in the current folder (never into the package)
-DEFAULT_WORKBOOK = Path("hamabe-design.xlsx")
 
 _DEBUG = False  # set by main from --debug / GOVOPT_DEBUG
 _ANSI = re.compile(r"\033\[[;?0-9]*[a-zA-Z]")  # an escape sequence, stripped when not a terminal
@@ -112,16 +110,13 @@ def evaluate(*, spec, geometry, json_out, xlsx, force, plots, full, section) -> 
 
 @_guarded
 def design(*, spec, json_out, output, xlsx, force, plots, full, section) -> None:
-    """Find the best design for the spec's requirements (default: bundled hamabe-design)."""
+    """Find the best design for the spec's requirements (default: bundled hamabe-design).
+    Files are written only where asked (-o, --xlsx, --plots), as by evaluate."""
     from .optimize.design import design as run
 
-    # govopt's own report, in the current folder (refreshed each run), unless --json
-    default_xlsx = spec is None and xlsx is None and not json_out
-    if default_xlsx:
-        xlsx = DEFAULT_WORKBOOK
     _run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN)), json_out, spec or DEFAULT_DESIGN,
-                    xlsx=xlsx, output=output, force=force, replace_xlsx=default_xlsx,
-                    plots=plots, sections=_sections(full, section))
+                    xlsx=xlsx, output=output, force=force, plots=plots,
+                    sections=_sections(full, section))
 
 
 def _sections(full: bool, section: list[str] | None) -> list[str] | None:
@@ -145,8 +140,7 @@ def _sections(full: bool, section: list[str] | None) -> list[str] | None:
 
 
 def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = None,
-                    output: Path | None = None, force: bool = False,
-                    replace_xlsx: bool = False, plots: Path | None = None,
+                    output: Path | None = None, force: bool = False, plots: Path | None = None,
                     sections: list[str] | None = None) -> None:
     """Check the outputs, compute a Result, write the requested files, print it and say what
     was written where (on stderr with ``--json``); a user's error (GovoptError) exits 2 and a
@@ -154,7 +148,7 @@ def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = Non
     from .report.files import check_output, drawn_design, overwrite_policy, write_design_spec
     from .report.text import format_result
 
-    outputs = [(p, what, force or (replace_xlsx and what == "workbook"))
+    outputs = [(p, what, force)
                for p, what in ((output, "design spec"), (xlsx, "workbook")) if p is not None]
     for p, what, overwrite in outputs:  # before the run: fail in a second, not after it
         check_output(p, overwrite=overwrite, inputs=[spec], what=what,
@@ -171,7 +165,7 @@ def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = Non
     if xlsx is not None:
         from .report.excel import write_workbook
 
-        with overwrite_policy(force or replace_xlsx):
+        with overwrite_policy(force):
             write_workbook(res, xlsx)
     drawn = [] if plots is None else write_plots(res, plots, stem=spec.stem, overwrite=force)
     _echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res,

@@ -143,8 +143,9 @@ def test_flags_shown_without_a_type(tmp_path):
 
 def test_outputs_go_here_never_into_the_package(tmp_path):
     """`govopt design --json -o` writes only the design spec (no workbook unless asked) and says
-    on stderr what it wrote where; `govopt design` writes its workbook in the current folder and
-    says so; nothing is ever written inside the package."""
+    on stderr what it wrote where; `govopt design` writes nothing (one rule: files only where
+    asked), `govopt design --xlsx` its workbook where asked and says so; nothing is ever
+    written inside the package."""
     package = Path(govopt.__file__).resolve().parent
     before = _files(package)
     json_run = _govopt("design", "--json", "-o", "d.toml", cwd=tmp_path)
@@ -153,6 +154,9 @@ def test_outputs_go_here_never_into_the_package(tmp_path):
     assert sorted(os.listdir(tmp_path)) == ["d.toml"]
     assert f"wrote {tmp_path / 'd.toml'}" in json_run.stderr
     run = _govopt("design", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    assert sorted(os.listdir(tmp_path)) == ["d.toml"] and "wrote" not in run.stdout
+    run = _govopt("design", "--xlsx", "hamabe-design.xlsx", cwd=tmp_path)
     assert run.returncode == 0, run.stderr
     assert sorted(os.listdir(tmp_path)) == ["d.toml", "hamabe-design.xlsx"]
     assert run.stdout.rstrip().endswith(f"wrote {tmp_path / 'hamabe-design.xlsx'}")
