@@ -662,7 +662,11 @@ def parser() -> _Parser:
     from . import __version__
 
     root = _Parser(prog="govopt",
-                   description="Design and evaluate governor springs (Hamabe's shaft governor).")
+                   description="Design and evaluate speed governors and their springs: Hamabe's "
+                               "shaft governor, the textbook's Watt, Porter, Proell, Hartnell, "
+                               "spring-loaded and spring-and-gravity governors, and the "
+                               "traction-engine coil- and flat-spring governors "
+                               "(`govopt examples` lists a spec of each).")
     root.add_argument("--debug", action="store_true", dest="_debug",
                       help="Show the traceback of an unexpected error, and warnings as they "
                            "come. [env var: GOVOPT_DEBUG]")

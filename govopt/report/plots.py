@@ -178,8 +178,7 @@ def controlling_force(res, ax) -> None:
     ax.set_xlim(0.0, r_end)
     ax.set_ylim(0.0, 1.08 * float(np.max(st.M_z)))
     ax.set_xlabel(_config_label(res))
-    mass = {"fly": "fly-weight"}.get(gov.mass_key, gov.mass_key)  # the spec key's stem
-    ax.set_ylabel(f"controlling force per {mass} (N)")
+    ax.set_ylabel(f"controlling force per {gov.mass_name} (N)")
     _title(res, ax, "controlling-force diagram")
     ax.legend(loc="upper left")
 

@@ -318,7 +318,7 @@ def _summary(res: Result) -> list[list[str]]:
     rows.append(["speed range", f"{wi * RPM:.2f} .. {wa * RPM:.2f}", "rpm",
                  f"{wi:.4f} .. {wa:.4f} rad/s"])
     inertia = "kg m^2" if gov.coordinate == "angle" else "kg"
-    rows.append([f"{gov.mass_key} mass", f"{sd.m:.4g}", "kg",
+    rows.append([f"{gov.mass_name} mass", f"{sd.m:.4g}", "kg",
                  f"weight {sd.m * G_STANDARD:.4g} N "
                  f"({to_unit(sd.m * G_STANDARD, 'force', 'kgf'):.4g} kgf); "
                  f"inertia I = {sd.inertia:.5g} {inertia}"])
