@@ -358,3 +358,26 @@ def test_characteristic_legend_with_friction_is_outside_the_curves():
     fig.canvas.draw()
     legend = ax.get_legend().get_window_extent()
     assert legend.y1 <= ax.get_window_extent().y0  # below the axes
+
+
+def test_bench_plot_draws_an_exact_error_on_its_own_line_and_joins_near_labels(tmp_path):
+    """`govopt bench`'s plot: an error of 0 sits a decade below the least nonzero error (not at
+    1e-17, twelve decades down), on a line that says it is exact; two settings at the same
+    point share one label ("grids x2, x4") instead of printing over each other."""
+    from matplotlib.figure import Figure
+
+    from govopt.report import bench
+
+    assert bench.zero_floor([0.0, 5e-3, 0.17]) == pytest.approx(1e-4)
+    assert bench.zero_floor([0.0]) == 1e-3
+    ax = Figure().add_subplot()
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    bench.label_points(ax, [(0.0410, 5e-3, "grids x2"), (0.0385, 5e-3, "grids x4"),
+                            (0.0552, 1e-4, "full catalogue")])
+    texts = sorted(t.get_text() for t in ax.texts)
+    assert texts == ["full catalogue", "grids x2, x4"]
+    points = [bench.Point("optimiser", "exhaustive", s, t, e) for s, t, e in (
+        ("full", 0.055, 0.0), ("grids x2", 0.041, 5e-3), ("grids x4", 0.0385, 5e-3))]
+    bench.plot(points, tmp_path / "p.png")
+    assert (tmp_path / "p.png").stat().st_size > 1000
