@@ -463,7 +463,8 @@ def init_command(*, name, output, force) -> None:
     check_output(target, overwrite=force, inputs=[source], what="spec")
     data = source.read_bytes()
     atomic_write(target, lambda tmp: tmp.write_bytes(data), overwrite=force, what="spec")
-    command = "evaluate" if "design" in tomllib.loads(data.decode("utf-8")) else "design"
+    table = tomllib.loads(data.decode("utf-8"))
+    command = "study" if "study" in table else "evaluate" if "design" in table else "design"
     _echo(f"wrote {target.absolute()} (the bundled {source.stem}); edit it, then: "
           f"govopt {command} {target}")
 

@@ -167,7 +167,8 @@ def test_examples_and_init(tmp_path):
     listed = _govopt("examples", cwd=tmp_path)
     assert listed.returncode == 0, listed.stderr
     names = [line.split()[0] for line in listed.stdout.splitlines()]
-    assert names == sorted(p.stem for p in SPECS.glob("*.toml")) and "hamabe-a" in names
+    assert names == sorted(p.stem for p in [*SPECS.glob("*.toml"), *SPECS.glob("studies/*")])
+    assert "hamabe-a" in names and "hamabe-study" in names
     assert "Hamabe Example 1, case a" in listed.stdout  # each with its description
     run = _govopt("init", "hamabe-a", cwd=tmp_path)
     assert run.returncode == 0, run.stderr
@@ -180,6 +181,11 @@ def test_examples_and_init(tmp_path):
     into = _govopt("init", "hamabe-design.toml", "-o", "sub", cwd=tmp_path)
     assert into.returncode == 0 and (tmp_path / "sub" / "hamabe-design.toml").is_file()
     assert "govopt design sub/hamabe-design.toml" in into.stdout  # a design problem
+    study = _govopt("init", "hamabe-study", "-o", "sub", cwd=tmp_path)  # a trade study
+    assert study.returncode == 0, study.stderr
+    assert (tmp_path / "sub" / "hamabe-study.toml").read_bytes() == \
+        (SPECS / "studies" / "hamabe-study.toml").read_bytes()
+    assert "govopt study sub/hamabe-study.toml" in study.stdout
     typo = _govopt("init", "hamabe-z", cwd=tmp_path)
     assert typo.returncode == 2 and "did you mean 'hamabe-" in typo.stderr
     assert sorted(os.listdir(tmp_path)) == ["hamabe-a.toml", "sub"]
