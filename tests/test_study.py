@@ -456,3 +456,20 @@ def test_tolerance_plot_marks_the_limit_and_failing_samples(tmp_path):
     assert f"required &lt;= {spec.speed.irregularity:.4g}" in svg
     assert (pd.to_numeric(frame[margin_column("irregularity")]) < 0).any()  # some fail
     assert "fill: #d62728" in svg  # their bars red (C3), beside the passing ones' green
+
+
+def test_study_show_gives_speeds_in_rpm_and_inputs_as_drawn(tmp_path):
+    """`govopt study show`: the tolerance spread of the speeds in rpm (the spec's and the
+    plot's unit), not rad/s; the best point's inputs to 4 significant digits."""
+    study = load_study(SPECS / "hamabe-c.toml", tolerances=["design.pendulum_weight=±1%"],
+                       samples=20)
+    run_study(study, tmp_path / "t.db")
+    with Store(tmp_path / "t.db") as store:
+        text = summary_text(store)
+        frame = store.table()
+    line = next(x for x in text.splitlines() if x.strip().startswith("omega_inner"))
+    assert line.strip().startswith("omega_inner_rpm")
+    mean = float(line.split("mean ")[1].split(",")[0])
+    want = pd.to_numeric(frame["omega_inner_rad_s"]).mean() * 30 / math.pi
+    assert mean == pytest.approx(want, rel=1e-5)
+    assert "rad_s" not in text.split("tolerance study", 1)[1].split("irregularity: mean")[0]
