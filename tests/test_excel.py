@@ -701,3 +701,21 @@ def test_bundled_design_workbook_prints_in_a_dozen_pages(tmp_path):
     # one or two pages a sheet: Spec 1, Design 1, Characteristic 2 (table, chart), Dynamics 2,
     # Checks 2, Spring 1, Notes 2 when this was written
     assert len(excel.SHEETS) <= pages <= 14
+
+
+def test_spring_sheet_reads_in_engineering_units(tmp_path):
+    """The Spring sheet (the spring maker's): lengths in mm, rate in N/mm, stresses in MPa,
+    each number with a display format (not 0.236953566747573 m or 345207690.444161 Pa)."""
+    res = govopt.evaluate(govopt.load_spec(SPECS / "hamabe-a.toml"))
+    wb = openpyxl.load_workbook(excel.write_workbook(res, tmp_path / "s.xlsx"))
+    rows = {str(r[0].value).strip(): r for r in wb["Spring"].iter_rows() if r[0].value}
+    sheet = res.spring_report.to_dict()["sheet"]
+    for label, key, unit, factor in (("free length", "free_length_m", "mm", 1e3),
+                                     ("rate", "rate_N_per_m", "N/mm", 1e-3),
+                                     ("wire diameter", "wire_diameter_m", "mm", 1e3)):
+        value, shown_unit = rows[label][1], rows[label][2]
+        assert shown_unit.value == unit
+        assert value.value == pytest.approx(sheet[key] * factor, rel=1e-12)
+        assert value.number_format != "General"
+    units = {r[2].value for r in rows.values() if r[2].value}
+    assert not units & {"m", "Pa", "N/m", "rad/s"}, units

@@ -973,6 +973,27 @@ _KEY_UNITS = (("_N_per_m", "N/m"), ("_kg_m3", "kg/m^3"), ("_rad_s", "rad/s"), ("
 
 _SECTION = object()
 
+#: How the Spring sheet (the one a spring maker reads) shows an SI unit: (unit, factor, number
+#: format): millimetres, N/mm, MPa, rpm, degrees.
+ENGINEERING = {
+    "m": ("mm", 1e3, "0.000"), "Pa": ("MPa", 1e-6, "0.00"), "N/m": ("N/mm", 1e-3, "0.000"),
+    "rad/s": ("rpm", 30.0 / math.pi, "0.00"), "rad": ("deg", 180.0 / math.pi, "0.000"),
+    "N": ("N", 1.0, "#,##0.0"), "Hz": ("Hz", 1.0, "0.00"), "kg": ("kg", 1.0, "0.0000"),
+    "kg/m^3": ("kg/m^3", 1.0, "#,##0"), "rpm": ("rpm", 1.0, "0.00"), "s": ("s", 1.0, "0.000"),
+}
+
+
+def engineering(value: Any, unit: str) -> tuple[Any, str, str]:
+    """``(value, unit, number format)`` of an SI value as the Spring sheet shows it
+    (:data:`ENGINEERING`); a value with another unit, or no number, as it is ("General")."""
+    if unit not in ENGINEERING:
+        fractional = isinstance(value, float) and math.isfinite(value) and value % 1 != 0
+        return value, unit, "0.000" if fractional and not unit else "General"
+    shown, factor, fmt = ENGINEERING[unit]
+    if isinstance(value, bool) or not isinstance(value, int | float | np.number):
+        return value, shown, "General"
+    return float(value) * factor, shown, fmt
+
 
 def _flat_rows(data: Mapping, depth: int = 0):
     """``(label, value, unit)`` rows of a nested record whose keys carry their units (a section
@@ -988,8 +1009,9 @@ def _flat_rows(data: Mapping, depth: int = 0):
             yield label, _SECTION, ""
             yield from _flat_rows(value, depth + 1)
         elif isinstance(value, list | tuple):
+            shown = [engineering(v, unit) for v in value]
             yield label, ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v)
-                                   for v in value), unit
+                                   for v, _, _ in shown), engineering(0.0, unit)[1]
         else:
             yield label, _scalar(value), unit
 
@@ -1012,11 +1034,12 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
     for label, value, unit in _flat_rows(rep.to_dict()):
         if value is _SECTION:
             _title(ws, row, label, font=_BOLD)
-        else:
+        else:  # engineering units, each number with its display format
+            value, unit, fmt = engineering(value, unit)
             _set(ws.cell(row, 1), label)
-            _set(ws.cell(row, 2), "not given" if value is None else value, "General")
+            _set(ws.cell(row, 2), "not given" if value is None else value, fmt)
             ws.cell(row, 2).alignment = _LEFT_WRAP
-            _set(ws.cell(row, 3), unit)
+            _set(ws.cell(row, 3), "" if value is None else unit)
         row += 1
     row += 1
     graded = res.spec.material.grade is not None
@@ -1029,9 +1052,11 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
                           "source"])
         for c in rows:
             row += 1
-            fmt = _fmt(c.unit) if c.unit else _GENERAL_FORMAT
-            for col, v, f in ((1, c.name, None), (2, c.value, fmt), (3, c.sense, None),
-                              (4, c.limit, fmt), (5, _unit_label(c.unit), None),
+            (value, unit, fmt), (limit, _, _) = (engineering(v, c.unit)
+                                                 for v in (c.value, c.limit))
+            fmt = fmt if c.unit else "0.000"
+            for col, v, f in ((1, c.name, None), (2, value, fmt), (3, c.sense, None),
+                              (4, limit, fmt), (5, _unit_label(unit), None),
                               (6, c.margin, "0.00%"), (7, "PASS" if c.passed else "FAIL", None),
                               (8, c.source, None)):
                 _set(ws.cell(row, col), v, f)
