@@ -26,6 +26,14 @@ ROOT = Path(__file__).resolve().parent.parent
 SPECS = ROOT / "govopt" / "specs"
 #: The bundled shaft-governor specs with a given design to evaluate (the shaft's Design sheet has
 #: its own named geometry cells; every other type's sheet is tested in test_excel_types.py).
+def _in_checks(value: float, check: Check) -> float:
+    """A check's value or limit as the Checks sheet shows it (MPa, mm, deg: the units people
+    read; the same product the sheet's formula takes)."""
+    from govopt.report import sections
+
+    return sections.shown(value, check.unit, only=excel.SHOWN_IN_CHECKS)[0]
+
+
 BUNDLED = sorted(p.stem for p in SPECS.glob("*.toml")
                  if "design" in (d := tomllib.loads(p.read_text(encoding="utf-8")))
                  and d["governor"]["type"] == "shaft")
@@ -470,8 +478,9 @@ def test_formula_cells_carry_govopts_values(workbooks, results):
         n += 1
     for c in _formula_cells(wf["Checks"]):
         check = res.checks[c.row - 2]
-        want = {2: check.value, 4: check.limit, 6: check.margin,
-                7: "PASS" if check.passed else "FAIL", 8: "yes" if check.active else None}
+        want = {2: _in_checks(check.value, check), 4: _in_checks(check.limit, check),
+                6: check.margin, 7: "PASS" if check.passed else "FAIL",
+                8: "yes" if check.active else None}
         assert wv["Checks"][c.coordinate].value == want[c.column], (check.name, c.column)
         n += 1
     assert n > 40
@@ -579,8 +588,8 @@ def _compare_all_formulas(written: Path, recalculated: Path, res, *, design_only
             total += 1
             check = res.checks[c.row - 2]
             got = wv["Checks"][c.coordinate].value
-            want = {2: check.value, 4: check.limit, 6: check.margin,
-                    7: "PASS" if check.passed else "FAIL",
+            want = {2: _in_checks(check.value, check), 4: _in_checks(check.limit, check),
+                    6: check.margin, 7: "PASS" if check.passed else "FAIL",
                     8: "yes" if check.active else None}[c.column]
             if isinstance(want, float):
                 worst = max(worst, _rel(got, want))

@@ -85,7 +85,7 @@ _FORMATS = {
     "kg*m^2": "0.000000", "rad": "0.000000", "rad/s": "0.000000", "rpm": "0.0000",
     "N*m": "0.000000", "Hz": "0.000", "": "0.000000", "kg/m^3": "#,##0.00",
     "m/s^2": "0.00000", "N*m*s/rad": "0.000000", "deg": "0.0000", "rad^2/s^2": "0.000",
-    "s": "0.0000", "N*m/rad": "#,##0.000",
+    "s": "0.0000", "N*m/rad": "#,##0.000", "MPa": "#,##0.00", "mm": "0.000",
 }
 _GENERAL_FORMAT = "0.000000"
 _RELDIFF_FORMAT = "0.0E+00"
@@ -879,20 +879,23 @@ def _build_checks(ws: Worksheet, res: Result) -> None:
     row = 2
     live = _live_checks(res)
     for c in res.checks:
-        value, unit = sections.shown(c.value, c.unit, only=_SHOWN_IN_CHECKS)
-        limit, _ = sections.shown(c.limit, c.unit, only=_SHOWN_IN_CHECKS)
+        value, unit = sections.shown(c.value, c.unit, only=SHOWN_IN_CHECKS)
+        limit, _ = sections.shown(c.limit, c.unit, only=SHOWN_IN_CHECKS)
         factor = sections.SHOWN[c.unit][1] if unit != c.unit else 1.0
         fmt = _fmt(unit) if unit else _GENERAL_FORMAT
         finite = math.isfinite(c.value) and math.isfinite(c.limit)
         _set(ws.cell(row, 1), c.name)
-        value_f, limit_f = live.get(c.name, (None, None))
+        value_f, limit_f = (None if f is None or factor == 1.0 else f"=({f[1:]})*{factor!r}"
+                            for f in live.get(c.name, (None, None)))
+        value_f = value_f or live.get(c.name, (None, None))[0]
+        limit_f = limit_f or live.get(c.name, (None, None))[1]
         if value_f and finite:
-            _formula(ws.cell(row, 2), value_f, fmt, c.value)
+            _formula(ws.cell(row, 2), value_f, fmt, value)
         else:
             _set(ws.cell(row, 2), sections.cell(value), fmt)
         _set(ws.cell(row, 3), c.sense)
         if limit_f and finite:
-            _formula(ws.cell(row, 4), limit_f, fmt, c.limit)
+            _formula(ws.cell(row, 4), limit_f, fmt, limit)
         else:
             _set(ws.cell(row, 4), sections.cell(limit), fmt)
         _set(ws.cell(row, 5), _unit_label(unit))
@@ -1068,9 +1071,9 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
 
 #: Charts' size (cm): wide enough to read, two side by side on a landscape page.
 _CHART_SIZE = (18.0, 9.0)
-#: Check units the Checks sheet shows as people read them (the live ones, Pa and
-#: dimensionless, stay as the Design sheet's names give them).
-_SHOWN_IN_CHECKS = ("rad", "m", "rad/s/rad", "rad/s/m")
+#: Check units the Checks sheet shows as people read them (a live stress is the Design sheet's
+#: name in Pa times 1E-6: MPa).
+SHOWN_IN_CHECKS = ("rad", "m", "rad/s/rad", "rad/s/m", "Pa")
 #: Printable width of an A4 page in portrait, in screen pixels (96 per inch, 1.5 cm margins).
 _PORTRAIT_PX = 680
 
