@@ -382,13 +382,13 @@ class _DesignSheet:
         if note:
             _set(ws.cell(self.row, _NOTE), note)
 
-    def input(self, name, label, symbol, value, unit, note="") -> None:
+    def input(self, name, label, symbol, value, unit, note="", number_format=None) -> None:
         self._label(label, symbol, unit, note)
         c = self.ws.cell(self.row, _VALUE)
         if value is None:
             c.value = None
         else:
-            _set(c, float(value), _fmt(unit))
+            _set(c, float(value), number_format or _fmt(unit))
         c.fill = _INPUT_FILL
         self._name(name)
         self.row += 1
@@ -476,6 +476,26 @@ def _seam_constants(res: Result, x: float) -> dict[str, float]:
     return {k: float(v) for k, v in out.items()}
 
 
+def _seam_meanings(q: str, mass: str) -> dict[str, tuple[str, str]]:
+    """What each constant of :func:`_seam_constants` is, in words, and its SI unit (``q``: the
+    generalised force's, N m or N), for the Design sheet's labels: ``omega^2 = (kappa (A - B
+    l0) + cf + m cf_m + M cf_c) / (lv + m lv_m + M lv_c)``, ``F = kappa (A_F - B_F l0)``."""
+    return {
+        "A": ("spring's generalised force per unit stiffness", f"{q}/(N/m)"),
+        "B": ("spring's generalised force per unit stiffness and free length", f"{q}/N"),
+        "A_F": ("spring force per unit stiffness", "m"),
+        "B_F": ("spring force per unit stiffness and free length", ""),
+        "cf": ("dead loads' generalised force without the masses", q),
+        "cf_m": (f"dead loads' generalised force per kg of {mass}", f"{q}/kg"),
+        "cf_c": ("dead loads' generalised force per kg of central load", f"{q}/kg"),
+        "lv": ("centrifugal generalised force per omega^2 without the masses", f"{q}*s^2"),
+        "lv_m": (f"centrifugal generalised force per omega^2 and kg of {mass}",
+                 f"{q}*s^2/kg"),
+        "lv_c": ("centrifugal generalised force per omega^2 and kg of central load",
+                 f"{q}*s^2/kg"),
+    }
+
+
 def _generic_design(s: _DesignSheet, res: Result) -> None:
     """The Design sheet of any governor type on the seam's constants at the range's ends."""
     spec, sd, ds, props = res.spec, res.spring, res.design, res.spring_properties
@@ -513,10 +533,14 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
     ends = (("inner", 0, "i"), ("outer", -1, "a"))
     s.section(f"The seam at the ends of the range ({gov.title}; constants from govopt, "
               "generalised forces per unit of the masses)")
+    q = "N*m" if gov.coordinate == "angle" else "N"  # the generalised force's unit
+    meaning = _seam_meanings(q, mk)
     for tag, i, sym in ends:
         for key, value in _seam_constants(res, st.alpha[i]).items():
-            s.input(f"{key.lower()}_{tag}", f"{key} at {gov.coordinate_name}_{sym}",
-                    f"{key}_{sym}", value, "", "govopt.analysis.statics.terms (the seam)")
+            what, unit = meaning[key]
+            s.input(f"{key.lower()}_{tag}", f"{what} at {gov.coordinate_name}_{sym} ({key})",
+                    f"{key}_{sym}", value, unit, "govopt.analysis.statics.terms (the seam)",
+                    "0.0000E+00")  # constants of any size: none shows as 0.000000
     s.section("Derived quantities (blue, live formulas) next to govopt's values as written")
     s.formula(f"{mk}_mass", f"{mk} mass", "m", f"={mk}_weight/std_gravity", "kg", sd.m,
               "m = w / g_n")
