@@ -24,8 +24,6 @@ from .limits import printable, shorten_values
 
 DEFAULT_EVALUATE = SPECS / "hamabe-a.toml"
 DEFAULT_DESIGN = SPECS / "hamabe-design.toml"
-#: `govopt design`'s own report, written in the current folder (never into the package)
-DEFAULT_WORKBOOK = Path("hamabe-design.xlsx")
 
 _DEBUG = False  # set by main from --debug / GOVOPT_DEBUG
 _ANSI = re.compile(r"\033\[[;?0-9]*[a-zA-Z]")  # an escape sequence, stripped when not a terminal
@@ -99,7 +97,7 @@ def _load(spec: Path | None, default: Path, **analysis):
 
 
 @_guarded
-def evaluate(*, spec, geometry, json_out, xlsx, force, plots) -> None:
+def evaluate(*, spec, geometry, json_out, xlsx, force, plots, full, section) -> None:
     """Evaluate the spec's design (default: the bundled Hamabe case a). Exit code 0: every
     check passed; 1: some check failed; 2: bad input."""
     from .evaluation import evaluate as run
@@ -107,33 +105,51 @@ def evaluate(*, spec, geometry, json_out, xlsx, force, plots) -> None:
     if geometry is not None and geometry not in ("exact", "series"):
         _fail(f"--geometry: expected 'exact' or 'series', got {geometry!r}")
     _run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, geometry=geometry)), json_out,
-                    spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots)
+                    spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots,
+                    sections=_sections(full, section))
 
 
 @_guarded
-def design(*, spec, json_out, output, xlsx, force, plots) -> None:
-    """Find the best design for the spec's requirements (default: bundled hamabe-design)."""
+def design(*, spec, json_out, output, xlsx, force, plots, full, section) -> None:
+    """Find the best design for the spec's requirements (default: bundled hamabe-design).
+    Files are written only where asked (-o, --xlsx, --plots), as by evaluate."""
     from .optimize.design import design as run
 
-    # govopt's own report, in the current folder (refreshed each run), unless --json
-    default_xlsx = spec is None and xlsx is None and not json_out
-    if default_xlsx:
-        xlsx = DEFAULT_WORKBOOK
     _run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN)), json_out, spec or DEFAULT_DESIGN,
-                    xlsx=xlsx, output=output, force=force, replace_xlsx=default_xlsx,
-                    plots=plots)
+                    xlsx=xlsx, output=output, force=force, plots=plots,
+                    sections=_sections(full, section))
+
+
+def _sections(full: bool, section: list[str] | None) -> list[str] | None:
+    """The report's sections: the answer (``summary``) by default, all with ``--full``, the
+    named ones with ``--section`` (names checked: a wrong one is exit 2)."""
+    from .report.text import SECTIONS
+
+    if full and section:
+        _fail("--full and --section: choose one (--full prints every section)")
+    if full:
+        return None
+    names = [n.strip() for s in section or () for n in s.split(",") if n.strip()]
+    for name in names:
+        if name not in SECTIONS:
+            import difflib
+
+            close = difflib.get_close_matches(name, SECTIONS, n=1)
+            _fail(f"--section: expected one of {', '.join(SECTIONS)}, got {name!r}"
+                  + (f" (did you mean {close[0]!r}?)" if close else ""))
+    return names or ["summary"]
 
 
 def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = None,
-                    output: Path | None = None, force: bool = False,
-                    replace_xlsx: bool = False, plots: Path | None = None) -> None:
+                    output: Path | None = None, force: bool = False, plots: Path | None = None,
+                    sections: list[str] | None = None) -> None:
     """Check the outputs, compute a Result, write the requested files, print it and say what
     was written where (on stderr with ``--json``); a user's error (GovoptError) exits 2 and a
     result with failed checks 1, through :func:`_guarded`."""
-    from .report.files import check_output, overwrite_policy, write_design_spec
+    from .report.files import check_output, drawn_design, overwrite_policy, write_design_spec
     from .report.text import format_result
 
-    outputs = [(p, what, force or (replace_xlsx and what == "workbook"))
+    outputs = [(p, what, force)
                for p, what in ((output, "design spec"), (xlsx, "workbook")) if p is not None]
     for p, what, overwrite in outputs:  # before the run: fail in a second, not after it
         check_output(p, overwrite=overwrite, inputs=[spec], what=what,
@@ -144,15 +160,17 @@ def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = Non
         check_plot_dir(plots, spec.stem, overwrite=force, inputs=[spec],
                        others=[p for p, _, _ in outputs])
     res = compute()
-    if output is not None:
-        write_design_spec(res, output, overwrite=force)
+    if output is not None:  # rounded as drawn, and evaluated again: the report is its
+        text, res, _ = drawn_design(res)
+        write_design_spec(res, output, overwrite=force, text=text)
     if xlsx is not None:
         from .report.excel import write_workbook
 
-        with overwrite_policy(force or replace_xlsx):
+        with overwrite_policy(force):
             write_workbook(res, xlsx)
     drawn = [] if plots is None else write_plots(res, plots, stem=spec.stem, overwrite=force)
-    _echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res))
+    _echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res,
+                                                                              sections=sections))
     for path in (output, xlsx, *drawn):
         if path is not None:
             _echo(f"wrote {Path(path).absolute()}", err=json_out)
@@ -517,7 +535,8 @@ def init_command(*, name, output, force) -> None:
     check_output(target, overwrite=force, inputs=[source], what="spec")
     data = source.read_bytes()
     atomic_write(target, lambda tmp: tmp.write_bytes(data), overwrite=force, what="spec")
-    command = "evaluate" if "design" in tomllib.loads(data.decode("utf-8")) else "design"
+    table = tomllib.loads(data.decode("utf-8"))
+    command = "study" if "study" in table else "evaluate" if "design" in table else "design"
     _echo(f"wrote {target.absolute()} (the bundled {source.stem}); edit it, then: "
           f"govopt {command} {target}")
 
@@ -602,6 +621,11 @@ def _spec_outputs(p, output: bool) -> None:
     _option(p, "--xlsx", type=Path, help="Write an Excel design sheet.")
     _flag(p, "--force", help=_FORCE_HELP)
     _option(p, "--plots", type=Path, help="Write the plots (PNG and SVG) into this folder.")
+    _flag(p, "--full", help="Print the whole report (the default is the answer: verdict, "
+                            "design, the checks to watch, notes).")
+    _option(p, "--section", action="append",
+            help="Print these sections of the report (repeat, or comma-separated): summary, "
+                 "characteristic, design, dynamics, vibration, optimisation, checks, spring.")
 
 
 def _study_parser(group) -> None:
@@ -722,7 +746,11 @@ def parser() -> _Parser:
     from . import __version__
 
     root = _Parser(prog="govopt",
-                   description="Design and evaluate governor springs (Hamabe's shaft governor).")
+                   description="Design and evaluate speed governors and their springs: Hamabe's "
+                               "shaft governor, the textbook's Watt, Porter, Proell, Hartnell, "
+                               "spring-loaded and spring-and-gravity governors, and the "
+                               "traction-engine coil- and flat-spring governors "
+                               "(`govopt examples` lists a spec of each).")
     root.add_argument("--debug", action="store_true", dest="_debug",
                       help="Show the traceback of an unexpected error, and warnings as they "
                            "come. [env var: GOVOPT_DEBUG]")

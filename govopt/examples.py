@@ -1,6 +1,7 @@
 """The bundled example specs: shipped inside the package (``govopt/specs/``), so that any
-install, editable or not, has them. ``govopt examples`` lists them and ``govopt init NAME``
-copies one to start from; the CLI's default specs are two of them.
+install, editable or not, has them. ``govopt examples`` lists them (the trade studies of
+``specs/studies/`` too) and ``govopt init NAME`` copies one to start from; the CLI's default
+specs are two of them.
 
 >>> "hamabe-a" in examples() and example("hamabe-a.toml").name
 'hamabe-a.toml'
@@ -22,8 +23,14 @@ SPECS = Path(__file__).resolve().parent / "specs"
 
 
 def examples() -> dict[str, Path]:
-    """Name (the file's stem) -> path of every bundled spec, sorted by name."""
-    return {p.stem: p for p in sorted(SPECS.glob("*.toml"), key=lambda p: p.stem)}
+    """Name (the file's stem) -> path of every bundled spec, the studies'
+    (``specs/studies/``) too, sorted by name.
+
+    >>> examples()["hamabe-study"].parent.name
+    'studies'
+    """
+    paths = [*SPECS.glob("*.toml"), *SPECS.glob("studies/*.toml")]
+    return {p.stem: p for p in sorted(paths, key=lambda p: p.stem)}
 
 
 def example(name: str) -> Path:

@@ -35,6 +35,23 @@ class Entry:
     unit: str
 
 
+#: Keys an engineer may write for what a spec names otherwise: key -> (the spec's key, how
+#: they differ), for the did-you-mean of a missing key.
+KEY_SYNONYMS: dict[str, tuple[str, str]] = {
+    "coil_diameter": ("coil_radius", "the mean coil radius, half the mean coil diameter"),
+    "mean_diameter": ("coil_radius", "the mean coil radius, half the mean coil diameter"),
+    "mean_coil_diameter": ("coil_radius", "the mean coil radius, half the mean coil diameter"),
+    "wire": ("wire_diameter", "the wire's diameter"),
+    "turns": ("active_turns", "the active turns"),
+    "min": ("inner", "the speed at the inner end of the range"),
+    "max": ("outer", "the speed at the outer end of the range"),
+    "minimum": ("inner", "the speed at the inner end of the range"),
+    "maximum": ("outer", "the speed at the outer end of the range"),
+    "low": ("inner", "the speed at the inner end of the range"),
+    "high": ("outer", "the speed at the outer end of the range"),
+}
+
+
 class _Reader:
     """Reads one TOML table, recording which keys were used; :meth:`finish` rejects the rest."""
 
@@ -67,8 +84,13 @@ class _Reader:
 
     def _misspelt(self, name: str) -> str:
         """A hint when a key of this table not read (yet) is close to the missing ``name``:
-        ``irregularty`` for ``irregularity``."""
+        ``irregularty`` for ``irregularity``, or names the same thing another way
+        (:data:`KEY_SYNONYMS`: ``coil_diameter`` for ``coil_radius``)."""
         keys = [str(k) for k in self.table if k not in self.used]
+        for key in keys:
+            meant, note = KEY_SYNONYMS.get(key, (None, ""))
+            if meant == name:
+                return f"; the table has {key!r}: did you mean {name!r}? ({note})"
         close = difflib.get_close_matches(name, keys, n=1, cutoff=0.8)
         return f"; the table has {close[0]!r}: did you mean {name!r}?" if close else ""
 
@@ -657,6 +679,10 @@ def _configuration(rd: _Reader, name: str, governor: Governor) -> float:
 
 
 def _speed(sp: _Reader) -> Speed:
+    given = [k for k in ("min", "max", "minimum", "maximum", "low", "high") if sp.has(k)]
+    if given and not (sp.has("inner") or sp.has("outer") or sp.has("mean")):
+        sp.fail(given[0], "unknown key (did you mean 'inner' and 'outer', the speeds at the "
+                          "ends of the range? or 'mean' and 'irregularity')")
     if sp.has("inner") or sp.has("outer"):
         for conflicting in ("mean", "irregularity"):
             if sp.has(conflicting):

@@ -1354,6 +1354,19 @@ def tolerance_summary(frame: pd.DataFrame) -> dict:
             "checks": checks, "spread": spread}
 
 
+def _drawn(value) -> str:
+    """A swept input as a drawing gives it: a number (or a number and its unit) to 4
+    significant digits (``"0.05976 m"``, not ``"0.05975979807254938 m"``); anything else as
+    is.
+
+    >>> _drawn("0.05975979807254938 m"), _drawn(0.12), _drawn("exact")
+    ('0.05976 m', '0.12', 'exact')
+    """
+    text = str(value)
+    match = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(\s*.*)", text)
+    return f"{float(match[1]):.4g}{match[2]}" if match else text
+
+
 def summary_text(store: Store) -> str:
     """What `govopt study show` prints: the study, its progress, status counts, the best
     feasible point, the Pareto front and, for a tolerance study, the probabilities."""
@@ -1371,7 +1384,8 @@ def summary_text(store: Store) -> str:
     ok = feasible(frame) & pd.to_numeric(frame["objective_value"], errors="coerce").notna()
     if ok.any():
         best = frame.loc[ok].sort_values("objective_value").iloc[0]
-        inputs = ", ".join(f"{k} = {best[k]}" for k in study.get("keys", []) if k in best)
+        inputs = ", ".join(f"{k} = {_drawn(best[k])}" for k in study.get("keys", [])
+                           if k in best)
         lines.append(f"best feasible {best.get('objective', 'objective')}: "
                      f"{best['objective_value']:.6g} at point {int(best['point'])} ({inputs})")
     if "pareto" in frame:
@@ -1390,9 +1404,12 @@ def summary_text(store: Store) -> str:
         for name, c in s["checks"].items():
             lines.append(f"  {name}: {c['probability']:.4f} ({c['ci95'][0]:.4f}-"
                          f"{c['ci95'][1]:.4f})")
-        for col, v in s["spread"].items():
-            lines.append(f"  {col}: mean {v['mean']:.6g}, std {v['std']:.3g}, 95 % of samples "
-                         f"in [{v['p2.5']:.6g}, {v['p97.5']:.6g}]")
+        for col, v in s["spread"].items():  # speeds in rpm, as the README and the plot
+            scale, name = ((30.0 / math.pi, col.replace("_rad_s", "_rpm"))
+                           if col.endswith("_rad_s") else (1.0, col))
+            lines.append(f"  {name}: mean {v['mean'] * scale:.6g}, std {v['std'] * scale:.3g}, "
+                         f"95 % of samples in [{v['p2.5'] * scale:.6g}, "
+                         f"{v['p97.5'] * scale:.6g}]")
     return "\n".join(lines)
 
 

@@ -32,7 +32,7 @@ def registry():
         ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
     except Exception:  # an unwritable or damaged cache folder
         ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-    ureg.define("@alias revolution = rev")  # "300 rev/min"
+    ureg.define("@alias revolution = rev = r")  # "300 rev/min", "300 r/min" (DIN 1301)
     ureg.define("@alias revolutions_per_minute = RPM")  # as on rating plates
     return ureg
 

@@ -143,8 +143,9 @@ def test_flags_shown_without_a_type(tmp_path):
 
 def test_outputs_go_here_never_into_the_package(tmp_path):
     """`govopt design --json -o` writes only the design spec (no workbook unless asked) and says
-    on stderr what it wrote where; `govopt design` writes its workbook in the current folder and
-    says so; nothing is ever written inside the package."""
+    on stderr what it wrote where; `govopt design` writes nothing (one rule: files only where
+    asked), `govopt design --xlsx` its workbook where asked and says so; nothing is ever
+    written inside the package."""
     package = Path(govopt.__file__).resolve().parent
     before = _files(package)
     json_run = _govopt("design", "--json", "-o", "d.toml", cwd=tmp_path)
@@ -153,6 +154,9 @@ def test_outputs_go_here_never_into_the_package(tmp_path):
     assert sorted(os.listdir(tmp_path)) == ["d.toml"]
     assert f"wrote {tmp_path / 'd.toml'}" in json_run.stderr
     run = _govopt("design", cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    assert sorted(os.listdir(tmp_path)) == ["d.toml"] and "wrote" not in run.stdout
+    run = _govopt("design", "--xlsx", "hamabe-design.xlsx", cwd=tmp_path)
     assert run.returncode == 0, run.stderr
     assert sorted(os.listdir(tmp_path)) == ["d.toml", "hamabe-design.xlsx"]
     assert run.stdout.rstrip().endswith(f"wrote {tmp_path / 'hamabe-design.xlsx'}")
@@ -163,7 +167,8 @@ def test_examples_and_init(tmp_path):
     listed = _govopt("examples", cwd=tmp_path)
     assert listed.returncode == 0, listed.stderr
     names = [line.split()[0] for line in listed.stdout.splitlines()]
-    assert names == sorted(p.stem for p in SPECS.glob("*.toml")) and "hamabe-a" in names
+    assert names == sorted(p.stem for p in [*SPECS.glob("*.toml"), *SPECS.glob("studies/*")])
+    assert "hamabe-a" in names and "hamabe-study" in names
     assert "Hamabe Example 1, case a" in listed.stdout  # each with its description
     run = _govopt("init", "hamabe-a", cwd=tmp_path)
     assert run.returncode == 0, run.stderr
@@ -176,6 +181,11 @@ def test_examples_and_init(tmp_path):
     into = _govopt("init", "hamabe-design.toml", "-o", "sub", cwd=tmp_path)
     assert into.returncode == 0 and (tmp_path / "sub" / "hamabe-design.toml").is_file()
     assert "govopt design sub/hamabe-design.toml" in into.stdout  # a design problem
+    study = _govopt("init", "hamabe-study", "-o", "sub", cwd=tmp_path)  # a trade study
+    assert study.returncode == 0, study.stderr
+    assert (tmp_path / "sub" / "hamabe-study.toml").read_bytes() == \
+        (SPECS / "studies" / "hamabe-study.toml").read_bytes()
+    assert "govopt study sub/hamabe-study.toml" in study.stdout
     typo = _govopt("init", "hamabe-z", cwd=tmp_path)
     assert typo.returncode == 2 and "did you mean 'hamabe-" in typo.stderr
     assert sorted(os.listdir(tmp_path)) == ["hamabe-a.toml", "sub"]
@@ -378,3 +388,44 @@ def test_design_o_writes_the_types_own_keys(tmp_path):
     for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s"):
         # from masses a few ulps apart: the speeds agree to rounding
         assert ev[key] == pytest.approx(designed[key], rel=1e-14), key
+
+
+# ------------------------------------------------------------------------------------------
+# issue 23: numbers an engineer can draw
+
+
+def test_design_o_writes_the_design_as_drawn_and_that_design_passes(tmp_path):
+    """`govopt design -o`: each designed length and dash-pot rounded to 4 significant digits
+    (the catalogue's wire and turns as they are), the report and the JSON are the rounded
+    design's, and `govopt evaluate` of the file reproduces them with every check passing."""
+    run = _govopt("design", SPECS / "hamabe-design.toml", "-o", "d.toml", "--json",
+                  cwd=tmp_path)
+    assert run.returncode == 0, run.stderr
+    designed = json.loads(run.stdout)
+    table = tomllib.loads((tmp_path / "d.toml").read_text(encoding="utf-8"))["design"]
+    for key in ("free_half_length", "coil_radius", "dashpot_f"):
+        number = table[key].split()[0]
+        assert len(re.sub(r"[-.]", "", number).strip("0")) <= 4, table[key]
+    assert any("rounded to 4 significant digits" in n for n in designed["notes"])
+    evaluated = _govopt("evaluate", "d.toml", "--json", cwd=tmp_path)
+    assert evaluated.returncode == 0, evaluated.stderr
+    ev = json.loads(evaluated.stdout)
+    assert all(c["passed"] for c in ev["checks"])
+    for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s", "pendulum_mass_kg"):
+        assert ev[key] == designed[key], key
+    assert ev["spring"]["free_half_length_m"] == designed["spring"]["free_half_length_m"]
+
+
+def test_a_rounding_that_breaks_a_check_is_not_written(monkeypatch):
+    """Where rounding breaks a check the exact design passes, the exact design is written and
+    the note names the check and what to do."""
+    from govopt.optimize.design import design
+    from govopt.report import files
+
+    res = design(govopt.load_spec(SPECS / "hamabe-design.toml"))
+    monkeypatch.setattr(files, "DRAWING_DIGITS", (1, None))  # 135.4 mm -> 100 mm: breaks
+    text, drawn, note = files.drawn_design(res)
+    assert text == design_toml(res) and drawn.design == res.design
+    assert note.startswith("design written at full precision") and "evaluate" in note
+    broken = note.split("fails ", 1)[1]
+    assert re.search(r"\((over|short) by [\d.,]+ %\)", broken), note

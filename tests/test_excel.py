@@ -26,6 +26,14 @@ ROOT = Path(__file__).resolve().parent.parent
 SPECS = ROOT / "govopt" / "specs"
 #: The bundled shaft-governor specs with a given design to evaluate (the shaft's Design sheet has
 #: its own named geometry cells; every other type's sheet is tested in test_excel_types.py).
+def _in_checks(value: float, check: Check) -> float:
+    """A check's value or limit as the Checks sheet shows it (MPa, mm, deg: the units people
+    read; the same product the sheet's formula takes)."""
+    from govopt.report import sections
+
+    return sections.shown(value, check.unit, only=excel.SHOWN_IN_CHECKS)[0]
+
+
 BUNDLED = sorted(p.stem for p in SPECS.glob("*.toml")
                  if "design" in (d := tomllib.loads(p.read_text(encoding="utf-8")))
                  and d["governor"]["type"] == "shaft")
@@ -470,8 +478,9 @@ def test_formula_cells_carry_govopts_values(workbooks, results):
         n += 1
     for c in _formula_cells(wf["Checks"]):
         check = res.checks[c.row - 2]
-        want = {2: check.value, 4: check.limit, 6: check.margin,
-                7: "PASS" if check.passed else "FAIL", 8: "yes" if check.active else None}
+        want = {2: _in_checks(check.value, check), 4: _in_checks(check.limit, check),
+                6: check.margin, 7: "PASS" if check.passed else "FAIL",
+                8: "yes" if check.active else None}
         assert wv["Checks"][c.coordinate].value == want[c.column], (check.name, c.column)
         n += 1
     assert n > 40
@@ -579,8 +588,8 @@ def _compare_all_formulas(written: Path, recalculated: Path, res, *, design_only
             total += 1
             check = res.checks[c.row - 2]
             got = wv["Checks"][c.coordinate].value
-            want = {2: check.value, 4: check.limit, 6: check.margin,
-                    7: "PASS" if check.passed else "FAIL",
+            want = {2: _in_checks(check.value, check), 4: _in_checks(check.limit, check),
+                    6: check.margin, 7: "PASS" if check.passed else "FAIL",
                     8: "yes" if check.active else None}[c.column]
             if isinstance(want, float):
                 worst = max(worst, _rel(got, want))
@@ -701,3 +710,21 @@ def test_bundled_design_workbook_prints_in_a_dozen_pages(tmp_path):
     # one or two pages a sheet: Spec 1, Design 1, Characteristic 2 (table, chart), Dynamics 2,
     # Checks 2, Spring 1, Notes 2 when this was written
     assert len(excel.SHEETS) <= pages <= 14
+
+
+def test_spring_sheet_reads_in_engineering_units(tmp_path):
+    """The Spring sheet (the spring maker's): lengths in mm, rate in N/mm, stresses in MPa,
+    each number with a display format (not 0.236953566747573 m or 345207690.444161 Pa)."""
+    res = govopt.evaluate(govopt.load_spec(SPECS / "hamabe-a.toml"))
+    wb = openpyxl.load_workbook(excel.write_workbook(res, tmp_path / "s.xlsx"))
+    rows = {str(r[0].value).strip(): r for r in wb["Spring"].iter_rows() if r[0].value}
+    sheet = res.spring_report.to_dict()["sheet"]
+    for label, key, unit, factor in (("free length", "free_length_m", "mm", 1e3),
+                                     ("rate", "rate_N_per_m", "N/mm", 1e-3),
+                                     ("wire diameter", "wire_diameter_m", "mm", 1e3)):
+        value, shown_unit = rows[label][1], rows[label][2]
+        assert shown_unit.value == unit
+        assert value.value == pytest.approx(sheet[key] * factor, rel=1e-12)
+        assert value.number_format != "General"
+    units = {r[2].value for r in rows.values() if r[2].value}
+    assert not units & {"m", "Pa", "N/m", "rad/s"}, units

@@ -307,3 +307,77 @@ def test_cli_plots_written_refused_and_forced(tmp_path):
     bad = subprocess.run(CLI + ["evaluate", str(spec), "--plots", str(out / names[0])],
                          cwd=tmp_path, capture_output=True, text=True)
     assert bad.returncode == 2 and "not a folder" in bad.stderr
+
+
+# ---------------------------------------------------------------------------- issue 23
+
+
+def test_k2_axis_is_the_datas_where_the_ceiling_is_far():
+    """A Porter's k^2 (24-31 1/s^2) against omega0^2 = 396: the axis is scaled to k^2 (not a
+    0-396 band with the curve squashed at its foot), the ceiling named with its spare; a
+    textbook governor's band is not called Hamabe's case; the shaft's still shows omega0^2."""
+    from matplotlib.colors import to_rgba
+
+    res = _result("porter-engine")
+    ax = plots.draw(res, "k2")
+    w0sq = res.omega_reference ** 2
+    lo, hi = ax.get_ylim()
+    assert hi < 0.25 * w0sq and hi > float(np.max(res.k2))
+    span = float(np.ptp(res.k2)) / (hi - lo)
+    assert span > 0.1  # the curve spans a visible share of the axis (was 2 %)
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any("above the axis" in t and "spare" in t for t in labels), labels
+    assert not any("Hamabe" in t for t in labels)
+    shaft = plots.draw(_result("hamabe-a"), "k2")
+    assert shaft.get_ylim()[1] > _result("hamabe-a").omega_reference ** 2
+    assert any("Hamabe Part II, case 1" in t.get_text() for t in shaft.get_legend().get_texts())
+    # the Vyshnegradsky point is not the red of the unstable region
+    vy_ax = plots.draw(res, "vyshnegradsky")
+    (pt,) = [ln for ln in vy_ax.lines if len(ln.get_xdata()) == 1]
+    assert to_rgba(pt.get_markerfacecolor()) != to_rgba("tab:red")
+
+
+def test_k2_required_margin_is_drawn():
+    """A spec that requires a k^2 margin: its line at the check's limit."""
+    from govopt.optimize.design import design
+
+    res = design(load_spec(SPECS / "hamabe-design.toml"))
+    limit = res.check("k^2 > 0 (stability)").limit
+    assert limit > 0
+    ax = plots.draw(res, "k2")
+    assert any(np.allclose(ln.get_ydata(), limit) for ln in ax.lines
+               if len(ln.get_ydata()) == 2)
+
+
+def test_characteristic_legend_with_friction_is_outside_the_curves():
+    """With friction (three curves across the axes) the legend sits below the axes."""
+    ax = plots.draw(_result("textbook-ex5-hartnell"), "characteristic")
+    labels = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert "opening against friction" in labels
+    fig = ax.figure
+    fig.canvas.draw()
+    legend = ax.get_legend().get_window_extent()
+    assert legend.y1 <= ax.get_window_extent().y0  # below the axes
+
+
+def test_bench_plot_draws_an_exact_error_on_its_own_line_and_joins_near_labels(tmp_path):
+    """`govopt bench`'s plot: an error of 0 sits a decade below the least nonzero error (not at
+    1e-17, twelve decades down), on a line that says it is exact; two settings at the same
+    point share one label ("grids x2, x4") instead of printing over each other."""
+    from matplotlib.figure import Figure
+
+    from govopt.report import bench
+
+    assert bench.zero_floor([0.0, 5e-3, 0.17]) == pytest.approx(1e-4)
+    assert bench.zero_floor([0.0]) == 1e-3
+    ax = Figure().add_subplot()
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    bench.label_points(ax, [(0.0410, 5e-3, "grids x2"), (0.0385, 5e-3, "grids x4"),
+                            (0.0552, 1e-4, "full catalogue")])
+    texts = sorted(t.get_text() for t in ax.texts)
+    assert texts == ["full catalogue", "grids x2, x4"]
+    points = [bench.Point("optimiser", "exhaustive", s, t, e) for s, t, e in (
+        ("full", 0.055, 0.0), ("grids x2", 0.041, 5e-3), ("grids x4", 0.0385, 5e-3))]
+    bench.plot(points, tmp_path / "p.png")
+    assert (tmp_path / "p.png").stat().st_size > 1000

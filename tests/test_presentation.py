@@ -19,7 +19,7 @@ import pytest
 import govopt
 from govopt.jsonable import jsonable
 from govopt.report import sections
-from govopt.report.text import format_result
+from govopt.report.text import check_name, format_result, format_summary
 from govopt.result import Check
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -76,7 +76,7 @@ def _rows(text: str, title: str) -> list[list[str]]:
 
 def test_piped_report_is_plain_text(tmp_path, shaft):
     """`govopt evaluate | ...`: plain ASCII, no escape codes, the same text as the API's."""
-    run = _cli("evaluate", SPECS / "hamabe-a.toml", cwd=tmp_path)
+    run = _cli("evaluate", SPECS / "hamabe-a.toml", "--full", cwd=tmp_path)
     assert run.returncode == 1, run.stderr  # case a fails its irregularity: exit 1
     assert not ANSI.search(run.stdout)
     assert not re.search("[\u2500-\u257f]", run.stdout)  # ASCII rules, no box drawing
@@ -163,7 +163,7 @@ def test_every_value_has_its_unit_and_margins_read_as_margins(designed):
     by = {r[0]: r for r in checks[1:]}
     assert len(by) == len(designed.checks)
     for c in designed.checks:
-        name, value, limit, unit, margin, result = by[c.name]
+        name, value, limit, unit, margin, result = by[check_name(c, designed)]
         shown, want_unit = sections.shown(c.value, c.unit)
         assert unit == (want_unit.replace("*", " ") or "-")
         assert float(value) == pytest.approx(shown, rel=1e-5, abs=1e-12)
@@ -181,7 +181,8 @@ def test_every_value_has_its_unit_and_margins_read_as_margins(designed):
     summary = {r[0]: r for r in _rows(text, "Design")}
     assert summary["max shear stress"][2] == "MPa"
     assert by["shear stress"][1] == f"{designed.max_stress / 1e6:.6g}"
-    assert by["k^2 > 0 (stability)"][3] == "1/s^2" == lc["k^2 at the new equilibrium"][1]
+    k2_check = check_name(designed.check("k^2 > 0 (stability)"), designed)
+    assert by[k2_check][3] == "1/s^2" == lc["k^2 at the new equilibrium"][1]
     assert by["wire diameter >= min"][3] == "mm" == summary["wire diameter"][2]
     # every summary row has a unit column; the first arrival never comes: "never", not "inf s"
     assert all(len(r) >= 3 and r[2] for r in summary.values())
@@ -357,3 +358,57 @@ def test_json_writes_each_section_once(designed):
     assert lists == ["checks"] and "constraints" not in d
     assert d["objective"]["unit"] == "kg" and "value" not in d["objective"]
     assert d["objective"]["value_kg"] >= d["continuous_bound"]["objective_kg"]
+
+
+# ------------------------------------------------------------------------------------------
+# the answer first (issue 23)
+
+
+@pytest.mark.parametrize("which", ["shaft", "designed", "porter"])
+def test_the_answer_comes_first_and_fits_a_screen(request, which):
+    """The default report opens with the verdict (all checks pass, or which fail with their
+    margins), then the design, and fits a screen; every failing and binding check is among
+    the checks it shows."""
+    res = request.getfixturevalue(which)
+    text = format_summary(res, colour=False)
+    lines = text.splitlines()
+    assert len(lines) <= 70, len(lines)
+    verdict = lines[lines.index("Verdict") + 1]
+    failed = [c for c in res.checks if not c.passed]
+    assert verdict.startswith("FAIL" if failed else "PASS"), verdict
+    for c in failed:
+        assert check_name(c, res) in verdict
+    assert lines.index("Verdict") < lines.index("Design")
+    assert "Characteristic (equilibrium" not in text  # the 31-row table is on request
+    shown = {r[0] for r in _rows(text, next(x for x in lines if x.startswith("Checks to watch")))}
+    for c in res.checks:
+        if not c.passed or c.active:
+            assert check_name(c, res) in shown
+    assert "--full" in lines[-1]
+
+
+def test_the_k2_margin_says_what_its_limit_is(designed):
+    """'k^2 > 0' held to a margin (limit k2_margin omega0^2 > 0) is named by that margin, not
+    shown as '> 0' beside a limit of 31.58."""
+    c = designed.check("k^2 > 0 (stability)")
+    assert c.limit > 0
+    name = check_name(c, designed)
+    assert "> 0" not in name
+    ratio = float(re.search(r">= ([\d.]+) omega0\^2", name)[1])
+    assert ratio == pytest.approx(c.limit / designed.omega_reference ** 2, rel=1e-2)
+
+
+def test_no_empty_rows_and_no_unit_after_a_word(designed):
+    """A properties table shows no row whose values are all blank (no dash-pot without an
+    engine), and 'none modelled' is never followed by a unit."""
+    import copy
+
+    res = copy.copy(designed)
+    res.optimisation = copy.deepcopy(designed.optimisation)
+    key = next(k for k in res.optimisation["design"] if k.startswith("dashpot_N"))
+    res.optimisation["design"][key] = None
+    text = format_result(res, colour=False)
+    rows = _rows(text, "Chosen design")
+    assert rows and all(len(r) == 3 for r in rows), rows
+    assert not any(r[0] == "dashpot" for r in rows)
+    assert "none modelled Hz" not in text

@@ -77,6 +77,13 @@ CASES = {
     "load change to outside the range": (_edit('to = "64 deg + 40 arcmin"', 'to = "85 deg"'),
                                          r"load_change\[0\]\.to: expected a configuration "
                                          r"within .*85 deg"),
+    # issue 23: what an engineer writes for the spec's keys is pointed to them
+    "coil diameter for the radius": (_edit('coil_radius = "6 cm"', 'coil_diameter = "12 cm"'),
+                                     r"design\.coil_radius: missing .*'coil_diameter': did you "
+                                     r"mean 'coil_radius'\? \(the mean coil radius, half"),
+    "speed min and max": (_edit('mean = "240 rpm"', 'min = "225 rpm"\nmax = "255 rpm"')
+                          .replace("irregularity = 0.12\n", "", 1),
+                          r"speed\.(min|max): unknown key \(did you mean 'inner' and 'outer'"),
 }
 
 
@@ -98,3 +105,13 @@ def test_missing_file(tmp_path):
     result = invoke(["evaluate", str(tmp_path / "nope.toml")])
     assert result.exit_code == 2
     assert "cannot read spec file" in result.output
+
+
+def test_r_per_min_is_rpm(tmp_path):
+    """'240 r/min' (DIN 1301's symbol for revolutions) reads as 240 rpm, not a misspelt 'yr'."""
+    import govopt
+
+    rpm, r_min = (tmp_path / "rpm.toml", tmp_path / "r.toml")
+    rpm.write_text(BASE)
+    r_min.write_text(_edit('mean = "240 rpm"', 'mean = "240 r/min"'))
+    assert govopt.load_spec(r_min).speed == govopt.load_spec(rpm).speed

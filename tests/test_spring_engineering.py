@@ -150,8 +150,9 @@ def test_every_new_check_in_json_text_and_excel(old_graded, tmp_path):
         assert f"  {name}: {c.source}" in text.splitlines()
         row = checks_ws[name]
         assert row[8].value == pytest.approx(c.margin) and row[9].value == c.source
-        s = spring_ws[name]
-        assert s[1].value == pytest.approx(c.value) and s[3].value == pytest.approx(c.limit)
+        s = spring_ws[name]  # in the units a spring maker reads (MPa, mm)
+        assert s[1].value == pytest.approx(excel.engineering(c.value, c.unit)[0])
+        assert s[3].value == pytest.approx(excel.engineering(c.limit, c.unit)[0])
         assert s[5].value == pytest.approx(c.margin) and s[7].value == c.source
     assert "Spring" in excel.SHEETS
     sheet = res.to_dict()["spring_sheet"]["sheet"]

@@ -413,3 +413,63 @@ def test_cli_study_exit_codes(tmp_path, monkeypatch):
                    "--db", "s.db"])
     assert some.exit_code == 0, some.output
     assert some.stderr == "1 of 2 points failed: most common reason (1 of 1): fails: irregularity\n"
+
+
+# ------------------------------------------------------------------------------------------
+# issue 23: plots a reader does not misread
+
+
+def test_zipped_study_is_one_plot_and_pareto_says_minimise(tmp_path):
+    """Zipped keys move together: one sweep plot against the first, the others named on its
+    axis; the Pareto axes say 'minimise' (not '(min)', which reads as minutes)."""
+    from govopt.report.study_plots import plot_study
+
+    study = load_study(SPECS / "hamabe-a.toml", sweeps=[
+        "design.pendulum_weight=10 kgf:12 kgf:3", "design.wire_diameter=1.6 cm:1.8 cm:3"],
+        combine="zip", pareto=["moving_mass", "settling_time"])
+    run_study(study, tmp_path / "z.db")
+    with Store(tmp_path / "z.db") as store:
+        files = {p.name for p in plot_study(store, tmp_path / "plots")}
+    assert files == {"sweep-design.pendulum_weight.png", "sweep-design.pendulum_weight.svg",
+                     "pareto.png", "pareto.svg"}
+    svg = (tmp_path / "plots" / "sweep-design.pendulum_weight.svg").read_text()
+    assert "in step with it: design.wire_diameter" in svg
+    pareto = (tmp_path / "plots" / "pareto.svg").read_text()
+    assert "(minimise)" in pareto and "(min)" not in pareto
+
+
+def test_tolerance_plot_marks_the_limit_and_failing_samples(tmp_path):
+    """The irregularity's histogram carries its requirement; the failing samples of a margin
+    are red, not the passing ones' green."""
+    from govopt.report.study_plots import check_limit, plot_study
+
+    study = load_study(SPECS / "hamabe-c.toml", tolerances=["grade=2",
+                                                             "design.pendulum_weight=±1%"],
+                       samples=60)
+    run_study(study, tmp_path / "t.db")
+    with Store(tmp_path / "t.db") as store:
+        frame = store.table()
+        plot_study(store, tmp_path / "plots")
+    spec = load_spec(SPECS / "hamabe-c.toml")
+    assert check_limit(frame, "irregularity") == pytest.approx(spec.speed.irregularity, rel=1e-9)
+    svg = (tmp_path / "plots" / "tolerance.svg").read_text()
+    assert f"required &lt;= {spec.speed.irregularity:.4g}" in svg
+    assert (pd.to_numeric(frame[margin_column("irregularity")]) < 0).any()  # some fail
+    assert "fill: #d62728" in svg  # their bars red (C3), beside the passing ones' green
+
+
+def test_study_show_gives_speeds_in_rpm_and_inputs_as_drawn(tmp_path):
+    """`govopt study show`: the tolerance spread of the speeds in rpm (the spec's and the
+    plot's unit), not rad/s; the best point's inputs to 4 significant digits."""
+    study = load_study(SPECS / "hamabe-c.toml", tolerances=["design.pendulum_weight=±1%"],
+                       samples=20)
+    run_study(study, tmp_path / "t.db")
+    with Store(tmp_path / "t.db") as store:
+        text = summary_text(store)
+        frame = store.table()
+    line = next(x for x in text.splitlines() if x.strip().startswith("omega_inner"))
+    assert line.strip().startswith("omega_inner_rpm")
+    mean = float(line.split("mean ")[1].split(",")[0])
+    want = pd.to_numeric(frame["omega_inner_rad_s"]).mean() * 30 / math.pi
+    assert mean == pytest.approx(want, rel=1e-5)
+    assert "rad_s" not in text.split("tolerance study", 1)[1].split("irregularity: mean")[0]

@@ -108,6 +108,8 @@ class Governor(ABC):
       is given per unit of it);
     * ``spring``: ``None`` (dead-weight governor), ``"tension"``, ``"compression"`` or ``"leaf"``;
     * ``mass_key``: stem of the flying mass's spec key (``"pendulum"`` -> ``pendulum_weight``);
+    * ``mass_name``: the type's own word for one flying mass in reports and check names
+      (``"pendulum"``, ``"ball"``, ``"fly weight"``);
     * ``free_length_key``: the ``[design]`` key of the spring's free length ``l0``.
     """
 
@@ -118,6 +120,7 @@ class Governor(ABC):
     travel: ClassVar[str] = "length"
     spring: ClassVar[str | None] = None
     mass_key: ClassVar[str] = "ball"
+    mass_name: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
     #: flying masses (balls, pendulums) acting on the regulating member: effort and power
     flying_masses: ClassVar[int] = 2

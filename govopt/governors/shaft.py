@@ -58,6 +58,7 @@ class ShaftGovernor(Governor):
     travel: ClassVar[str] = "angle"
     spring: ClassVar[str | None] = "tension"
     mass_key: ClassVar[str] = "pendulum"
+    mass_name: ClassVar[str] = "pendulum"
     free_length_key: ClassVar[str] = "free_half_length"
     spring_length_factor: ClassVar[float] = 2.0
     force_names: ClassVar[tuple[str, str, str]] = ("M_z", "M_f", "M_r0")

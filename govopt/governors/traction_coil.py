@@ -123,6 +123,7 @@ class TractionCoilGovernor(FlyWeights):
     travel: ClassVar[str] = "length"
     spring: ClassVar[str | None] = "compression"
     mass_key: ClassVar[str] = "fly"
+    mass_name: ClassVar[str] = "fly weight"
     free_length_key: ClassVar[str] = "free_length"
 
     n_weights: int

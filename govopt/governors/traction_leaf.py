@@ -104,6 +104,7 @@ class TractionLeafGovernor(FlyWeights):
     travel: ClassVar[str] = "length"
     spring: ClassVar[str | None] = "leaf"
     mass_key: ClassVar[str] = "fly"
+    mass_name: ClassVar[str] = "fly weight"
     free_length_key: ClassVar[str] = "leaf_set"
     free_length_positive: ClassVar[bool] = False  # the set may bow either way
 

@@ -882,9 +882,43 @@ def summary(points: list[Point], target_rows: list[dict] | None = None) -> str:
     return "\n".join(lines)
 
 
+#: Points nearer than this in log10 of time and of error share one label ("grids x2, x4").
+LABEL_NEAR = (0.08, 0.2)
+
+
+def zero_floor(errors) -> float:
+    """Where a panel draws an error of 0 (exact): a decade below its least nonzero error,
+    never above 1e-3 (a log axis has no 0)."""
+    nonzero = [e for e in errors if math.isfinite(e) and e > 0]
+    return min(10.0 ** (math.floor(math.log10(min(nonzero))) - 1) if nonzero else 1e-3, 1e-3)
+
+
+def label_points(ax, marks: list[tuple[float, float, str]]) -> None:
+    """Annotate points, one label per cluster of points that would overlap (within
+    :data:`LABEL_NEAR` in log space), the cluster's texts joined."""
+    groups: list[list[tuple[float, float, str]]] = []
+    for x, y, text in marks:
+        for g in groups:
+            gx, gy, _ = g[0]
+            if (abs(math.log10(x / gx)) < LABEL_NEAR[0]
+                    and abs(math.log10(y / gy)) < LABEL_NEAR[1]):
+                g.append((x, y, text))
+                break
+        else:
+            groups.append([(x, y, text)])
+    for g in groups:
+        x, y, _ = g[0]
+        texts = list(dict.fromkeys(t for _, _, t in g))
+        common = os.path.commonprefix(texts).rsplit(" ", 1)[0] + " " if len(texts) > 1 else ""
+        text = (common + ", ".join(t[len(common):] for t in texts)) if common.strip() else \
+            ", ".join(texts)
+        ax.annotate(text, (x, y), fontsize=6, xytext=(3, 3), textcoords="offset points")
+
+
 def plot(points: list[Point], path: Path) -> None:
-    """Log-log panels, one per analysis: time per evaluation against error. Errors of 0 are
-    drawn at 1e-17, failures at 10 (crosses)."""
+    """Log-log panels, one per analysis: time per evaluation against error. An error of 0
+    (exact) is drawn on a dashed line a decade below the panel's least nonzero error, and says
+    so; failures at 10 (crosses). Labels of points that would overlap are joined."""
     from matplotlib.figure import Figure
     from matplotlib.ticker import NullFormatter
 
@@ -895,12 +929,17 @@ def plot(points: list[Point], path: Path) -> None:
     axes = fig.subplots(rows, cols, squeeze=False).ravel()
     for ax, analysis in zip(axes, analyses, strict=False):
         pts = [p for p in points if p.analysis == analysis]
+        floor = zero_floor(p.error for p in pts)
+
+        def shown(p: Point, floor=floor) -> float:
+            return min(max(p.error, floor), 10.0) if math.isfinite(p.error) else 10.0
+
         methods = list(dict.fromkeys(p.method for p in pts))
+        marks = []
         for j, method in enumerate(methods):
             mp_ = [p for p in pts if p.method == method]
             x = [p.time_s for p in mp_]
-            y = [min(max(p.error, 1e-17), 10.0) if math.isfinite(p.error) else 10.0
-                 for p in mp_]
+            y = [shown(p) for p in mp_]
             ax.plot(x, y, marker="o^sDvP*Xh<>"[j % 11], ls="-" if len(mp_) > 1 else "none",
                     label=method, ms=5)
             for p, xi, yi in zip(mp_, x, y, strict=True):
@@ -909,11 +948,14 @@ def plot(points: list[Point], path: Path) -> None:
                 if p.default:
                     ax.plot([xi], [yi], "o", mfc="none", mec="k", ms=12)
                 if len(mp_) > 1:
-                    ax.annotate(p.setting.split("=")[-1].strip(), (xi, yi), fontsize=6,
-                                xytext=(3, 3), textcoords="offset points")
+                    marks.append((xi, yi, p.setting.split("=")[-1].strip()))
+        label_points(ax, marks)
+        if any(p.error == 0 for p in pts):
+            ax.axhline(floor, color="0.5", ls="--", lw=0.8)
+            ax.annotate("error 0 (exact)", (0.01, floor), xycoords=("axes fraction", "data"),
+                        xytext=(0, 3), textcoords="offset points", fontsize=7, color="0.3")
         front = sorted((p for p in pts if p.pareto), key=lambda p: p.time_s)
-        ax.plot([p.time_s for p in front],
-                [min(max(p.error, 1e-17), 10.0) for p in front], "k:", lw=1)
+        ax.plot([p.time_s for p in front], [shown(p) for p in front], "k:", lw=1)
         ax.set_xscale("log")
         ax.set_yscale("log")
         lo, hi = min(p.time_s for p in pts), max(p.time_s for p in pts)

@@ -85,7 +85,7 @@ _FORMATS = {
     "kg*m^2": "0.000000", "rad": "0.000000", "rad/s": "0.000000", "rpm": "0.0000",
     "N*m": "0.000000", "Hz": "0.000", "": "0.000000", "kg/m^3": "#,##0.00",
     "m/s^2": "0.00000", "N*m*s/rad": "0.000000", "deg": "0.0000", "rad^2/s^2": "0.000",
-    "s": "0.0000", "N*m/rad": "#,##0.000",
+    "s": "0.0000", "N*m/rad": "#,##0.000", "MPa": "#,##0.00", "mm": "0.000",
 }
 _GENERAL_FORMAT = "0.000000"
 _RELDIFF_FORMAT = "0.0E+00"
@@ -382,13 +382,13 @@ class _DesignSheet:
         if note:
             _set(ws.cell(self.row, _NOTE), note)
 
-    def input(self, name, label, symbol, value, unit, note="") -> None:
+    def input(self, name, label, symbol, value, unit, note="", number_format=None) -> None:
         self._label(label, symbol, unit, note)
         c = self.ws.cell(self.row, _VALUE)
         if value is None:
             c.value = None
         else:
-            _set(c, float(value), _fmt(unit))
+            _set(c, float(value), number_format or _fmt(unit))
         c.fill = _INPUT_FILL
         self._name(name)
         self.row += 1
@@ -476,6 +476,26 @@ def _seam_constants(res: Result, x: float) -> dict[str, float]:
     return {k: float(v) for k, v in out.items()}
 
 
+def _seam_meanings(q: str, mass: str) -> dict[str, tuple[str, str]]:
+    """What each constant of :func:`_seam_constants` is, in words, and its SI unit (``q``: the
+    generalised force's, N m or N), for the Design sheet's labels: ``omega^2 = (kappa (A - B
+    l0) + cf + m cf_m + M cf_c) / (lv + m lv_m + M lv_c)``, ``F = kappa (A_F - B_F l0)``."""
+    return {
+        "A": ("spring's generalised force per unit stiffness", f"{q}/(N/m)"),
+        "B": ("spring's generalised force per unit stiffness and free length", f"{q}/N"),
+        "A_F": ("spring force per unit stiffness", "m"),
+        "B_F": ("spring force per unit stiffness and free length", ""),
+        "cf": ("dead loads' generalised force without the masses", q),
+        "cf_m": (f"dead loads' generalised force per kg of {mass}", f"{q}/kg"),
+        "cf_c": ("dead loads' generalised force per kg of central load", f"{q}/kg"),
+        "lv": ("centrifugal generalised force per omega^2 without the masses", f"{q}*s^2"),
+        "lv_m": (f"centrifugal generalised force per omega^2 and kg of {mass}",
+                 f"{q}*s^2/kg"),
+        "lv_c": ("centrifugal generalised force per omega^2 and kg of central load",
+                 f"{q}*s^2/kg"),
+    }
+
+
 def _generic_design(s: _DesignSheet, res: Result) -> None:
     """The Design sheet of any governor type on the seam's constants at the range's ends."""
     spec, sd, ds, props = res.spec, res.spring, res.design, res.spring_properties
@@ -513,10 +533,14 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
     ends = (("inner", 0, "i"), ("outer", -1, "a"))
     s.section(f"The seam at the ends of the range ({gov.title}; constants from govopt, "
               "generalised forces per unit of the masses)")
+    q = "N*m" if gov.coordinate == "angle" else "N"  # the generalised force's unit
+    meaning = _seam_meanings(q, mk)
     for tag, i, sym in ends:
         for key, value in _seam_constants(res, st.alpha[i]).items():
-            s.input(f"{key.lower()}_{tag}", f"{key} at {gov.coordinate_name}_{sym}",
-                    f"{key}_{sym}", value, "", "govopt.analysis.statics.terms (the seam)")
+            what, unit = meaning[key]
+            s.input(f"{key.lower()}_{tag}", f"{what} at {gov.coordinate_name}_{sym} ({key})",
+                    f"{key}_{sym}", value, unit, "govopt.analysis.statics.terms (the seam)",
+                    "0.0000E+00")  # constants of any size: none shows as 0.000000
     s.section("Derived quantities (blue, live formulas) next to govopt's values as written")
     s.formula(f"{mk}_mass", f"{mk} mass", "m", f"={mk}_weight/std_gravity", "kg", sd.m,
               "m = w / g_n")
@@ -879,20 +903,23 @@ def _build_checks(ws: Worksheet, res: Result) -> None:
     row = 2
     live = _live_checks(res)
     for c in res.checks:
-        value, unit = sections.shown(c.value, c.unit, only=_SHOWN_IN_CHECKS)
-        limit, _ = sections.shown(c.limit, c.unit, only=_SHOWN_IN_CHECKS)
+        value, unit = sections.shown(c.value, c.unit, only=SHOWN_IN_CHECKS)
+        limit, _ = sections.shown(c.limit, c.unit, only=SHOWN_IN_CHECKS)
         factor = sections.SHOWN[c.unit][1] if unit != c.unit else 1.0
         fmt = _fmt(unit) if unit else _GENERAL_FORMAT
         finite = math.isfinite(c.value) and math.isfinite(c.limit)
         _set(ws.cell(row, 1), c.name)
-        value_f, limit_f = live.get(c.name, (None, None))
+        value_f, limit_f = (None if f is None or factor == 1.0 else f"=({f[1:]})*{factor!r}"
+                            for f in live.get(c.name, (None, None)))
+        value_f = value_f or live.get(c.name, (None, None))[0]
+        limit_f = limit_f or live.get(c.name, (None, None))[1]
         if value_f and finite:
-            _formula(ws.cell(row, 2), value_f, fmt, c.value)
+            _formula(ws.cell(row, 2), value_f, fmt, value)
         else:
             _set(ws.cell(row, 2), sections.cell(value), fmt)
         _set(ws.cell(row, 3), c.sense)
         if limit_f and finite:
-            _formula(ws.cell(row, 4), limit_f, fmt, c.limit)
+            _formula(ws.cell(row, 4), limit_f, fmt, limit)
         else:
             _set(ws.cell(row, 4), sections.cell(limit), fmt)
         _set(ws.cell(row, 5), _unit_label(unit))
@@ -973,6 +1000,27 @@ _KEY_UNITS = (("_N_per_m", "N/m"), ("_kg_m3", "kg/m^3"), ("_rad_s", "rad/s"), ("
 
 _SECTION = object()
 
+#: How the Spring sheet (the one a spring maker reads) shows an SI unit: (unit, factor, number
+#: format): millimetres, N/mm, MPa, rpm, degrees.
+ENGINEERING = {
+    "m": ("mm", 1e3, "0.000"), "Pa": ("MPa", 1e-6, "0.00"), "N/m": ("N/mm", 1e-3, "0.000"),
+    "rad/s": ("rpm", 30.0 / math.pi, "0.00"), "rad": ("deg", 180.0 / math.pi, "0.000"),
+    "N": ("N", 1.0, "#,##0.0"), "Hz": ("Hz", 1.0, "0.00"), "kg": ("kg", 1.0, "0.0000"),
+    "kg/m^3": ("kg/m^3", 1.0, "#,##0"), "rpm": ("rpm", 1.0, "0.00"), "s": ("s", 1.0, "0.000"),
+}
+
+
+def engineering(value: Any, unit: str) -> tuple[Any, str, str]:
+    """``(value, unit, number format)`` of an SI value as the Spring sheet shows it
+    (:data:`ENGINEERING`); a value with another unit, or no number, as it is ("General")."""
+    if unit not in ENGINEERING:
+        fractional = isinstance(value, float) and math.isfinite(value) and value % 1 != 0
+        return value, unit, "0.000" if fractional and not unit else "General"
+    shown, factor, fmt = ENGINEERING[unit]
+    if isinstance(value, bool) or not isinstance(value, int | float | np.number):
+        return value, shown, "General"
+    return float(value) * factor, shown, fmt
+
 
 def _flat_rows(data: Mapping, depth: int = 0):
     """``(label, value, unit)`` rows of a nested record whose keys carry their units (a section
@@ -988,8 +1036,9 @@ def _flat_rows(data: Mapping, depth: int = 0):
             yield label, _SECTION, ""
             yield from _flat_rows(value, depth + 1)
         elif isinstance(value, list | tuple):
+            shown = [engineering(v, unit) for v in value]
             yield label, ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v)
-                                   for v in value), unit
+                                   for v, _, _ in shown), engineering(0.0, unit)[1]
         else:
             yield label, _scalar(value), unit
 
@@ -1012,11 +1061,12 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
     for label, value, unit in _flat_rows(rep.to_dict()):
         if value is _SECTION:
             _title(ws, row, label, font=_BOLD)
-        else:
+        else:  # engineering units, each number with its display format
+            value, unit, fmt = engineering(value, unit)
             _set(ws.cell(row, 1), label)
-            _set(ws.cell(row, 2), "not given" if value is None else value, "General")
+            _set(ws.cell(row, 2), "not given" if value is None else value, fmt)
             ws.cell(row, 2).alignment = _LEFT_WRAP
-            _set(ws.cell(row, 3), unit)
+            _set(ws.cell(row, 3), "" if value is None else unit)
         row += 1
     row += 1
     graded = res.spec.material.grade is not None
@@ -1029,9 +1079,11 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
                           "source"])
         for c in rows:
             row += 1
-            fmt = _fmt(c.unit) if c.unit else _GENERAL_FORMAT
-            for col, v, f in ((1, c.name, None), (2, c.value, fmt), (3, c.sense, None),
-                              (4, c.limit, fmt), (5, _unit_label(c.unit), None),
+            (value, unit, fmt), (limit, _, _) = (engineering(v, c.unit)
+                                                 for v in (c.value, c.limit))
+            fmt = fmt if c.unit else "0.000"
+            for col, v, f in ((1, c.name, None), (2, value, fmt), (3, c.sense, None),
+                              (4, limit, fmt), (5, _unit_label(unit), None),
                               (6, c.margin, "0.00%"), (7, "PASS" if c.passed else "FAIL", None),
                               (8, c.source, None)):
                 _set(ws.cell(row, col), v, f)
@@ -1043,9 +1095,9 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
 
 #: Charts' size (cm): wide enough to read, two side by side on a landscape page.
 _CHART_SIZE = (18.0, 9.0)
-#: Check units the Checks sheet shows as people read them (the live ones, Pa and
-#: dimensionless, stay as the Design sheet's names give them).
-_SHOWN_IN_CHECKS = ("rad", "m", "rad/s/rad", "rad/s/m")
+#: Check units the Checks sheet shows as people read them (a live stress is the Design sheet's
+#: name in Pa times 1E-6: MPa).
+SHOWN_IN_CHECKS = ("rad", "m", "rad/s/rad", "rad/s/m", "Pa")
 #: Printable width of an A4 page in portrait, in screen pixels (96 per inch, 1.5 cm margins).
 _PORTRAIT_PX = 680
 

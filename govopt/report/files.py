@@ -242,7 +242,16 @@ def atomic_write(path: str | Path, write: Callable[[Path], object], *,
     return shown
 
 
-def design_toml(res: Result) -> str:
+#: Design keys never rounded for the drawing: the optimiser picks them from a catalogue
+#: (wire sizes of the grade or the grid, turns at the catalogue's step) already.
+CATALOGUE_KEYS = ("wire_diameter", "active_turns")
+
+#: Significant digits a drawing carries, tried in turn (:func:`drawn_design`): 4 is 0.1 mm on
+#: a length of 100-999 mm; the last, None, writes the exact design.
+DRAWING_DIGITS = (4, 5, 6, None)
+
+
+def design_toml(res: Result, digits: int | None = None) -> str:
     """The spec file of ``res`` with its ``[design]`` table set to the chosen design.
 
     The engineer's file is edited, not rewritten (tomlkit): comments, order, layout and every
@@ -254,6 +263,10 @@ def design_toml(res: Result) -> str:
     not ``"0.013000000000000001 m"``), so that `govopt evaluate` reproduces the design. Design
     keys the chosen design does not set are removed (an old ``friction_moment`` would change
     the evaluation).
+
+    ``digits``: round each new number (but the catalogue's, :data:`CATALOGUE_KEYS`) to this
+    many significant digits in its unit, as a drawing carries it (``"12.64 cm"``, not
+    ``"12.63583051390083 cm"``); :func:`drawn_design` checks that the rounded design passes.
     """
     import tomlkit
 
@@ -281,8 +294,71 @@ def design_toml(res: Result) -> str:
             continue
         unit = _unit_for(spec, dimension, old.get(key), bounds.get(key) or
                          bounds.get("dashpot_f" if key == "dashpot_a1" else key))
-        table[key] = _shortest_quantity(target, dimension, unit, scale)
+        places = None if key in CATALOGUE_KEYS else digits
+        text = _shortest_quantity(target, dimension, unit, scale, places)
+        if key in CATALOGUE_KEYS and dimension == "length" and _digits(text) > 6:
+            text = _shortest_quantity(target, dimension, "mm", scale)  # a metric size: 2 mm,
+            # not 0.078740157480315 in
+        table[key] = text
     return tomlkit.dumps(doc)
+
+
+def drawn_design(res: Result) -> tuple[str, Result, str]:
+    """The design of ``res`` as a drawing carries it: ``(spec text, its Result, note)``.
+
+    Each new number of ``[design]`` is rounded to the fewest of :data:`DRAWING_DIGITS`
+    significant digits (catalogue sizes kept) at which the rounded design, read back from the
+    text and evaluated again, passes every check the exact design passes; where none does, the
+    exact design is written. The result is the rounded design's evaluation, with the optimiser's
+    record of ``res``; the note says what was rounded, or which check rounding breaks and what
+    to do.
+    """
+    import dataclasses
+    import tomllib
+
+    from ..evaluation import evaluate
+    from ..spec import parse_spec
+    from .text import check_name, margin_words
+
+    passed = {c.name for c in res.checks if c.passed}
+    first_broken: list[str] = []
+    last_broken: list[str] = []
+    drawn = res
+    for digits in DRAWING_DIGITS:
+        text = design_toml(res, digits)
+        if digits is None:
+            drawn = res
+            break
+        design = parse_spec(tomllib.loads(text), str(res.spec.path)).design
+        if _same_design(design, res.design):
+            return text, res, ""  # nothing to round: the design is already as drawn
+        drawn = evaluate(res.spec.with_design(design))  # the friction run reads spec.design
+        broken = [f"{check_name(c, drawn)} ({margin_words(c)})" for c in drawn.checks
+                  if c.name in passed and not c.passed]
+        if not broken:
+            break
+        first_broken = first_broken or broken
+        last_broken = broken
+    if digits is None:
+        note = ("design written at full precision: rounded to "
+                f"{DRAWING_DIGITS[-2]} significant digits it fails {'; '.join(last_broken)}; "
+                "round it by hand with some margin to spare (or tighten the requirement a "
+                "little and design again) and check it with govopt evaluate")
+    else:
+        note = (f"design written rounded to {digits} significant digits for the drawing "
+                f"(catalogue sizes kept) and evaluated again: this report is the rounded "
+                f"design's, and every check the exact design passed still passes")
+        if digits > DRAWING_DIGITS[0]:
+            note += (f" ({DRAWING_DIGITS[0]} digits would fail "
+                     f"{'; '.join(first_broken)})")
+    if drawn is not res:
+        notes = [*(res.optimisation or {}).get("notes", []), note]
+        drawn = dataclasses.replace(drawn, kind=res.kind,
+                                    optimisation={**res.optimisation, "notes": notes})
+    elif note:
+        drawn = dataclasses.replace(res, optimisation={
+            **res.optimisation, "notes": [*(res.optimisation or {}).get("notes", []), note]})
+    return text, drawn, note
 
 
 def _design_values(res: Result, old: dict, bounds: dict) -> dict[str, tuple[str, float, float]]:
@@ -374,6 +450,12 @@ def _reads_as(written, dimension: str, scale: float) -> float | None:
         return None
 
 
+def _digits(quantity: str) -> int:
+    """The significant digits of a quantity's number: ``"0.0787401 in"`` -> 6."""
+    number = quantity.split(" ", 1)[0]
+    return len(re.sub(r"e.*|[-+.]", "", number.lower()).strip("0"))
+
+
 def _shortest_number(value: float) -> int | float:
     """``value`` as an int where it is whole, else the float (TOML writes its shortest repr)."""
     return int(value) if float(value).is_integer() and abs(value) < 2**53 else float(value)
@@ -389,17 +471,22 @@ def _close(value: float | None, target: float) -> bool:
     return value is not None and abs(value - target) <= READ_BACK_ULPS * math.ulp(target)
 
 
-def _shortest_quantity(target: float, dimension: str, unit: str, scale: float = 1.0) -> str:
+def _shortest_quantity(target: float, dimension: str, unit: str, scale: float = 1.0,
+                       digits: int | None = None) -> str:
     """``"<number> <unit>"`` with the fewest significant digits that parses back to ``target``
     (after dividing by ``scale``; to within :data:`READ_BACK_ULPS`), else to the nearest value
-    any digits reach.
+    any digits reach; with ``digits``, the number rounded to that many significant digits.
 
     >>> _shortest_quantity(0.013, "length", "mm"), _shortest_quantity(4.0, "force", "kgf", 9.80665)
     ('13 mm', '4 kgf')
+    >>> _shortest_quantity(0.1263583051390083, "length", "cm", digits=4)
+    '12.64 cm'
     """
     from ..units import parse_quantity
 
     value = target * scale / parse_quantity(f"1 {unit}", dimension)
+    if digits is not None:
+        return f"{_shortest_number(float(f'{value:.{digits}g}'))!r} {unit}"
     best = None
     for digits in range(1, 18):
         number = float(f"{value:.{digits}g}")
@@ -413,8 +500,27 @@ def _shortest_quantity(target: float, dimension: str, unit: str, scale: float = 
     return best[1]
 
 
-def write_design_spec(res: Result, path: str | Path, *, overwrite: bool | None = None) -> Path:
-    """Write the design of ``res`` as a spec file (:func:`design_toml`) atomically."""
-    text = design_toml(res)
+def _same_design(a, b) -> bool:
+    """Whether two designs are the same up to the unit conversions' rounding
+    (:data:`READ_BACK_ULPS`)."""
+    import dataclasses
+
+    for f in dataclasses.fields(a):
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if {x, y} <= {None, 0.0}:  # a springless type's free length: 0.0 designed, None read
+            continue
+        if isinstance(x, float) and isinstance(y, float):
+            if not _close(x, y):
+                return False
+        elif x != y:
+            return False
+    return True
+
+
+def write_design_spec(res: Result, path: str | Path, *, overwrite: bool | None = None,
+                      text: str | None = None) -> Path:
+    """Write the design of ``res`` as a spec file (:func:`design_toml`; ``text``: the spec's
+    text already made, :func:`drawn_design`'s) atomically."""
+    text = design_toml(res) if text is None else text
     return atomic_write(path, lambda tmp: tmp.write_text(text, encoding="utf-8"),
                         overwrite=overwrite, what="design spec")

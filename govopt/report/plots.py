@@ -140,7 +140,8 @@ def characteristic(res, ax) -> None:
                          f"(irregularity {spec.speed.irregularity:.3g})")
     rise, fall = (np.asarray(cl.get(k, []), dtype=float)
                   for k in ("omega_rise_rad_s", "omega_fall_rad_s"))
-    if rise.size == x.size and np.any(rise > fall):
+    friction = rise.size == x.size and np.any(rise > fall)
+    if friction:
         ax.plot(x, rise * RPM, color="tab:red", ls="--", lw=1, label="opening against friction")
         ax.plot(x, fall * RPM, color="tab:purple", ls="--", lw=1,
                 label="closing against friction")
@@ -157,7 +158,10 @@ def characteristic(res, ax) -> None:
     delta = _finite(res.irregularity)  # against the spec's mean speed, where it has one
     _title(res, ax, "characteristic (" + (f"irregularity {delta:.4g})" if delta is not None else
                                           f"sensitiveness {cl.get('sensitiveness', 0.0):.4g})"))
-    ax.legend(loc="upper left")
+    if friction:  # three curves across the axes: the legend below them, covering none
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=8.5)
+    else:
+        ax.legend(loc="upper left")
 
 
 def controlling_force(res, ax) -> None:
@@ -178,31 +182,62 @@ def controlling_force(res, ax) -> None:
     ax.set_xlim(0.0, r_end)
     ax.set_ylim(0.0, 1.08 * float(np.max(st.M_z)))
     ax.set_xlabel(_config_label(res))
-    mass = {"fly": "fly-weight"}.get(gov.mass_key, gov.mass_key)  # the spec key's stem
-    ax.set_ylabel(f"controlling force per {mass} (N)")
+    ax.set_ylabel(f"controlling force per {gov.mass_name} (N)")
     _title(res, ax, "controlling-force diagram")
     ax.legend(loc="upper left")
 
 
+#: The k^2 plot shows the ceiling omega0^2 on its axis only where k^2 reaches this share of it
+#: (below, the data would sit squashed in the axis's bottom quarter).
+FAR_CEILING = 0.25
+
+
 def k2(res, ax) -> None:
-    """``k^2`` over the range against ``omega0^2`` (Hamabe Part II): stable for
-    ``0 < k^2 < omega0^2`` (case 1), resonance risk above (case 2), unstable below 0 (case 3)."""
+    """``k^2`` over the range (Hamabe Part II): where the type is forced at the running speed's
+    harmonics (``resonance_ceiling``), against the band ``0 < k^2 < omega0^2`` (case 1;
+    resonance risk above, case 2; unstable below 0, case 3); otherwise only ``k^2 > 0``
+    (stability) is required and the axis is scaled to ``k^2`` itself. The required margin (the
+    check ``k^2 > 0``'s limit, where positive) is drawn as a line, its spare named."""
     x, _ = _shown(res, res.statics.alpha)
     w0sq = res.omega_reference**2
     k2v = np.asarray(res.k2, dtype=float)
-    ax.axhspan(0.0, w0sq, color="tab:green", alpha=0.15,
-               label=r"stable band $0 < k^2 < \omega_0^2$ (Hamabe case 1)")
-    ax.axhline(w0sq, color="tab:red", ls="--", lw=1.2,
-               label=rf"$\omega_0^2$ = {w0sq:.4g} 1/s$^2$ ({res.omega_reference * RPM:.4g} rpm)")
+    ceiling = res.spec.governor.resonance_ceiling
+    low = next((c for c in res.checks if c.name == "k^2 > 0 (stability)"), None)
+    floor = low.limit if low is not None and low.limit > 0 else None
+    top = float(np.max(k2v))
+    if ceiling:
+        case = " (Hamabe Part II, case 1)" if res.spec.governor.type_name == "shaft" else ""
+        ax.axhspan(0.0, w0sq, color="tab:green", alpha=0.15,
+                   label=r"stable, clear of resonance: $0 < k^2 < \omega_0^2$" + case)
+        lo = min(0.0, float(np.min(k2v)))
+        if top >= FAR_CEILING * w0sq:
+            ax.axhline(w0sq, color="tab:red", ls="--", lw=1.2,
+                       label=rf"$\omega_0^2$ = {w0sq:.4g} 1/s$^2$ "
+                             f"({res.omega_reference * RPM:.4g} rpm)")
+            hi = max(w0sq, top)
+        else:  # the ceiling far above: the axis is the data's, the ceiling named
+            ax.plot([], [], " ", label=rf"$\omega_0^2$ = {w0sq:.4g} 1/s$^2$, above the axis: "
+                                       f"{100 * (1 - top / w0sq):.0f} % spare")
+            hi = top
+    else:  # no ceiling: the axis is the data's and the limit 0 (or the margin's line)
+        lo = min(0.0, float(np.min(k2v)))
+        hi = max(float(np.max(k2v)), floor or 0.0)
+        ax.axhspan(0.0, hi + (hi - lo), color="tab:green", alpha=0.15,
+                   label="stable: $k^2 > 0$ (no forcing at the running speed's harmonics, "
+                         "so no ceiling)")
     ax.axhline(0.0, color="k", lw=0.8)
-    ax.plot(x, k2v, color="tab:blue", lw=2, label="$k^2$")
+    if floor is not None:
+        ax.axhline(floor, color="tab:orange", ls="--", lw=1.2,
+                   label=f"required $k^2 \\geq$ {floor:.4g} 1/s$^2$ "
+                         f"({floor / w0sq:.3g} $\\omega_0^2$)")
+    ax.plot(x, k2v, color="tab:blue", lw=2,
+            label=f"$k^2$: {float(np.min(k2v)):.4g} .. {float(np.max(k2v)):.4g} 1/s$^2$")
     _mark_normal(res, ax)
-    lo, hi = min(0.0, float(np.min(k2v))), max(w0sq, float(np.max(k2v)))
     ax.set_ylim(lo - 0.06 * (hi - lo), hi + 0.3 * (hi - lo))
     ax.set_xlabel(_config_label(res))
     ax.set_ylabel("$k^2$ (1/s$^2$)")
     _title(res, ax, "restoring stiffness $k^2$ over the range")
-    ax.legend(loc="upper left", ncol=2)
+    ax.legend(loc="upper left", ncol=1)
 
 
 def load_change(res, ax, index: int = 0) -> None:
@@ -283,7 +318,7 @@ def vyshnegradsky(res, ax) -> None:
                               ("monotonic", "g--", "$2A^3 - 9AB + 27 = 0$")):
         handles += ax.plot(*curves[key], style, lw=1.4, label=label)
     for k, (c, (a, b)) in enumerate(zip(changes, pts, strict=True)):  # named in the legend
-        handles += ax.plot(a, b, "osD^v"[k % 5], ms=9, color="tab:red", mec="k", ls="none",
+        handles += ax.plot(a, b, "osD^v"[k % 5], ms=9, color="k", mfc="white", mew=2, ls="none",
                            zorder=5, label=f"{c['name']}: A = {a:.3g}, B = {b:.3g} "
                                            f"({c['vyshnegradsky']['region']})")
     ax.set_xlim(0.0, top)
@@ -384,13 +419,17 @@ def fatigue(res, ax) -> None:
         ax.set_xlabel("corrected midrange stress $\\tau_m$ (MPa)")
         ax.set_ylabel("corrected stress amplitude $\\tau_a$ (MPa)")
         what = "Shigley's fatigue diagram"
-    for c in res.checks:  # the verdicts, as the Result's checks give them
-        if c.name.endswith("fatigue safety factor"):
-            ax.plot([], [], " ", label=f"{c.name}: {c.value:.3g} (need {c.limit:.3g})")
+    factors = [c for c in res.checks if c.name.endswith("fatigue safety factor")]
+    governs = min(factors, key=lambda c: c.margin, default=None)
+    for c in factors:  # the verdicts, as the Result's checks give them; the least governs
+        note = "" if c is not governs or len(factors) == 1 else (
+            ", governs" + ("" if c.name.startswith("body") else ": its cycle not drawn"))
+        ax.plot([], [], " ", label=f"{c.name.replace(' factor', '')}: {c.value:.3g} "
+                                   f"(need {c.limit:.3g}){note}")
     ax.set_xlim(0.0, float(x[-1]) * 1.05)
     ax.set_ylim(bottom=0.0)
     _title(res, ax, f"spring fatigue: {what}")
-    ax.legend(loc=corner, fontsize=8.5)
+    ax.legend(loc=corner, fontsize=8 if len(factors) > 1 else 8.5)
 
 
 DRAW = {"characteristic": characteristic, "controlling-force": controlling_force, "k2": k2,

@@ -27,8 +27,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["SHOWN", "Chart", "Table", "cell", "dynamics", "key_unit", "optimisation", "shown",
-           "unflag"]
+__all__ = ["SHOWN", "Chart", "Table", "cell", "dynamics", "key_unit", "optimisation", "restoring",
+           "shown", "unflag"]
 
 #: How an SI unit is shown in reports: SI unit -> (shown unit, factor to multiply by).
 SHOWN: dict[str, tuple[str, float]] = {
@@ -388,12 +388,11 @@ def vibration(res) -> list[Table]:
 _DYNAMICS_KEYS = {"load_changes", "friction", "vibration", "k2_normal_rad2_s2"}
 
 
-def dynamics(res) -> list[Table]:
-    """Every dynamics table of ``res`` in order: load changes (with friction), roots and
-    responses, the forced vibration, k^2 at the normal configuration, and anything else the
-    result records (as JSON text, so nothing is silently dropped)."""
+def restoring(res) -> list[Table]:
+    """k^2 at the normal configuration (Hamabe eqs. 18-20), and any dynamics result no table
+    declares (as JSON text, so nothing is silently dropped)."""
     dyn = res.dynamics or {}
-    out = load_changes(res) + vibration(res)
+    out = []
     k2n = dyn.get("k2_normal_rad2_s2")
     if k2n is not None:
         w0sq = res.omega_reference ** 2
@@ -409,6 +408,13 @@ def dynamics(res) -> list[Table]:
     if other:
         out.append(_recorded("Other dynamics results (as recorded)", other))
     return out
+
+
+def dynamics(res) -> list[Table]:
+    """Every dynamics table of ``res`` in order: load changes (with friction), roots and
+    responses, the forced vibration, k^2 at the normal configuration, and anything else the
+    result records (:func:`restoring`)."""
+    return load_changes(res) + vibration(res) + restoring(res)
 
 
 def _recorded(title: str, data: Mapping) -> Table:
@@ -444,7 +450,7 @@ def _quantities(data: Mapping, skip: Sequence[str] = ()) -> list[list[Any]]:
     """``[label, shown unit, value]`` rows of a record whose keys name their units."""
     rows = []
     for key, value in data.items():
-        if key in skip:
+        if key in skip or value is None:  # unset (no dash-pot without an engine): no row
             continue
         label, unit = key_unit(str(key))
         v, u = shown(value, unit)

@@ -3,10 +3,12 @@
 * ``sweep-<key>``: for each swept key, the objective and the margin of each constraint that
   binds or fails somewhere in the study (``Check.margin``: 0 is the limit, negative fails),
   against the key's value in SI; with several keys, one line per combination of the others;
+  zipped keys move together, so one plot against the first, the others named on its axis;
 * ``pareto``: the Pareto front of the study's objectives (two, or the three pairs of three)
   among the feasible points, the front joined as a staircase;
 * ``tolerance``: for a tolerance study, histograms of the speed range, the irregularity and
-  ``k^2`` at the normal configuration, and of each requirement's margin with the limit marked.
+  ``k^2`` at the normal configuration (the irregularity's requirement marked), and of each
+  requirement's margin with the limit at 0 (failing samples red).
 
 Nothing here recomputes physics; files go through :func:`govopt.report.files.atomic_write`.
 """
@@ -156,7 +158,9 @@ def _sweep_figure(frame: pd.DataFrame, key: str, keys: list[str], combine: str):
         ax.axhspan(lo - 0.1 * span, 0.0, color="tab:red", alpha=0.08, lw=0)
         ax.set_ylabel("margin")
         ax.set_title(f"{name} (margin < 0: fails)", loc="left", fontsize=8)
-    axes[-1].set_xlabel(xlabel)
+    together = [k for k in keys if k != key] if combine == "zip" else []
+    axes[-1].set_xlabel(xlabel + (f"; in step with it: {', '.join(together)}"
+                                  if together else ""))
     return fig
 
 
@@ -184,12 +188,26 @@ def _pareto_figure(frame: pd.DataFrame, objectives: list[str]):
         for k in f:
             ax.annotate(str(int(frame["point"].iloc[k])), (xi[k], xj[k]), fontsize=7,
                         xytext=(3, 3), textcoords="offset points")
-        ax.set_xlabel(f"{ci} ({'max' if si == 'max' else 'min'})")
-        ax.set_ylabel(f"{cj} ({'max' if sj == 'max' else 'min'})")
+        ax.set_xlabel(f"{ci} ({'maximise' if si == 'max' else 'minimise'})")
+        ax.set_ylabel(f"{cj} ({'maximise' if sj == 'max' else 'minimise'})")
         ax.legend(loc="best")
     fig.suptitle(f"Pareto front of {', '.join(objectives)}\n{int(front.sum())} of "
                  f"{int(ok.sum())} feasible points on it (labels: point numbers)", fontsize=9)
     return fig
+
+
+def check_limit(frame: pd.DataFrame, check: str) -> float | None:
+    """A ``<=`` check's limit read back from its value column and margin (``Check.margin`` =
+    (limit - value) / limit), the median over the rows; None without the columns."""
+    from ..bulk import margin_column
+
+    if check not in frame or margin_column(check) not in frame:
+        return None
+    v = pd.to_numeric(frame[check], errors="coerce").to_numpy(dtype=float)
+    m = pd.to_numeric(frame[margin_column(check)], errors="coerce").to_numpy(dtype=float)
+    limits = v / (1.0 - m)
+    limits = limits[np.isfinite(limits)]
+    return float(np.median(limits)) if limits.size else None
 
 
 def _tolerance_figure(frame: pd.DataFrame):
@@ -197,9 +215,11 @@ def _tolerance_figure(frame: pd.DataFrame):
     from ..study import tolerance_summary
 
     s = tolerance_summary(frame)
+    from matplotlib.ticker import MaxNLocator
+
     labels = {"omega_inner_rad_s": "innermost speed [rpm]", "omega_outer_rad_s":
               "outermost speed [rpm]", "irregularity": "irregularity",
-              "k2_normal_rad2_s2": "k^2 at the normal configuration [rad^2/s^2]"}
+              "k2_normal_rad2_s2": "k^2 at the normal configuration [1/s^2]"}
     figs = [(c, RPM, "rpm") for c in ("omega_inner_rad_s", "omega_outer_rad_s") if c in frame]
     figs += [(c, 1.0, "") for c in ("irregularity", "k2_normal_rad2_s2") if c in frame]
     names = check_names(frame.columns)
@@ -209,18 +229,31 @@ def _tolerance_figure(frame: pd.DataFrame):
     fig, _, _ = _figure(rows, cols, height=2.2, width=10.0)
     axes = fig.subplots(rows, cols, squeeze=False).ravel()
     ok = frame["status"] != "error"
-    for ax, (col, scale, _unit) in zip(axes, figs, strict=False):
+    for k, (ax, (col, scale, _unit)) in enumerate(zip(axes, figs, strict=False)):
         v = pd.to_numeric(frame.loc[ok, col], errors="coerce").dropna().to_numpy() * scale
         ax.hist(v, bins=40, color="C0", alpha=0.8)
         sp = s["spread"].get(col)
         if sp:
             for q in ("p2.5", "p97.5"):
                 ax.axvline(sp[q] * scale, color="k", ls="--", lw=0.8)
-        ax.set_title(f"{labels[col]} (dashed: 95 % of samples)", fontsize=8)
+        limit = check_limit(frame.loc[ok], col) if col == "irregularity" else None
+        if limit is not None:
+            ax.axvline(limit, color="C3", lw=1.2)
+            ax.annotate(f"required <= {limit:.4g}", (limit, 1.0), xycoords=("data", "axes "
+                        "fraction"), xytext=(-3, -3), textcoords="offset points", ha="right",
+                        va="top", fontsize=7, color="C3")
+        ax.xaxis.set_major_locator(MaxNLocator(5))
+        ax.set_title(labels[col] + (" (dashed: 95 % of samples)" if k == 0 else ""),
+                     fontsize=8)
     for ax, name in zip(axes[len(figs):], names, strict=False):
         m = pd.to_numeric(frame.loc[ok, margin_column(name)], errors="coerce").dropna().to_numpy()
-        ax.hist(m, bins=40, color="C2", alpha=0.8)
+        bins = np.histogram_bin_edges(m, bins=40)
+        ax.hist(m[m >= 0], bins=bins, color="C2", alpha=0.8, label="pass")
+        if (m < 0).any():  # failing samples in red, beside the passing ones' green
+            ax.hist(m[m < 0], bins=bins, color="C3", alpha=0.8, label="fail")
+            ax.legend(loc="upper right", fontsize=7)
         ax.axvline(0.0, color="C3", lw=1.0)
+        ax.xaxis.set_major_locator(MaxNLocator(5))
         c = s["checks"][name]
         ax.set_title(f"{name}: P = {c['probability']:.3f} ({c['ci95'][0]:.3f}-"
                      f"{c['ci95'][1]:.3f})", fontsize=7)
@@ -249,9 +282,14 @@ def plot_study(store, folder: str | Path, *, overwrite: bool = False) -> list[Pa
             out += _save(_tolerance_figure(frame), folder, "tolerance", overwrite)
         else:
             keys = [k for k in study.get("keys", []) if k in frame]
-            for key in keys:
-                out += _save(_sweep_figure(frame, key, keys, study.get("combine", "grid")),
-                             folder, f"sweep-{_slug(key)}", overwrite)
+            combine = study.get("combine", "grid")
+            if combine == "zip" and len(keys) > 1:  # the keys move together: one plot
+                out += _save(_sweep_figure(frame, keys[0], keys, combine), folder,
+                             f"sweep-{_slug(keys[0])}", overwrite)
+            else:
+                for key in keys:
+                    out += _save(_sweep_figure(frame, key, keys, combine),
+                                 folder, f"sweep-{_slug(key)}", overwrite)
         if study.get("pareto"):
             out += _save(_pareto_figure(frame, study["pareto"]), folder, "pareto", overwrite)
     return out

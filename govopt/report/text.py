@@ -17,6 +17,7 @@ import math
 import os
 import shutil
 import sys
+from collections.abc import Sequence
 
 import numpy as np
 
@@ -166,7 +167,8 @@ class _Report:
         if table.properties:
             head = table.headers
             self.table(head, [[str(r[0]), str(r[1] or "-"), *(_num(v) for v in r[2:])]
-                              for r in table.rows],
+                              for r in table.rows
+                              if any(sec.cell(v) is not None for v in r[2:])],  # no empty rows
                        right=range(2, len(head)), show_header=head[2:] != ["value"])
         else:
             self.table(table.headers, [[_num(v) for v in r] for r in table.rows],
@@ -181,7 +183,7 @@ class _Report:
         return text.rstrip("\n")
 
 
-def _margin(c: Check) -> str:
+def margin_words(c: Check) -> str:
     """A check's margin in words: "1.86 % spare", "over by 3.2 %" (a ``<=`` check),
     "short by 3.2 %" (a ``>=`` check); a non-finite margin is "unbounded"."""
     m = 100.0 * c.margin
@@ -193,21 +195,102 @@ def _margin(c: Check) -> str:
     return ("over by " if c.sense == "<=" else "short by ") + size
 
 
-def _checks(out: _Report, res: Result) -> None:
+def check_name(c: Check, res: Result) -> str:
+    """The check's name as the report shows it, saying what its limit is where the name does
+    not: ``"k^2 > 0 (stability)"`` held to a margin (the spec's ``k2_margin * omega0^2``) reads
+    ``"k^2 >= 0.05 omega0^2 (stability margin)"``."""
+    if c.name == "k^2 > 0 (stability)" and c.limit > 0:
+        return f"k^2 >= {c.limit / res.omega_reference ** 2:.3g} omega0^2 (stability margin)"
+    return c.name
+
+
+def _check_rows(checks, res: Result) -> tuple[list[list[str]], list[str]]:
     rows, styles = [], []
-    for c in res.checks:
+    for c in checks:
         value, unit = sec.shown(c.value, c.unit)
         limit, _ = sec.shown(c.limit, c.unit)
         result = ("PASS (binding)" if c.active else "PASS") if c.passed else "FAIL"
-        rows.append([c.name, _num(value, ".6g"), f"{c.sense} {_num(limit, '.6g')}",
-                     unit.replace("*", " ") or "-", _margin(c), result])
+        rows.append([check_name(c, res), _num(value, ".6g"), f"{c.sense} {_num(limit, '.6g')}",
+                     unit.replace("*", " ") or "-", margin_words(c), result])
         styles.append("red bold" if not c.passed else ("yellow" if c.active else "green"))
+    return rows, styles
+
+
+_CHECK_HEADERS = ["check", "value", "limit", "unit", "margin", "result"]
+
+
+def _checks(out: _Report, res: Result) -> None:
+    rows, styles = _check_rows(res.checks, res)
     out.title("Checks")
-    out.table(["check", "value", "limit", "unit", "margin", "result"], rows, right=(1, 2, 4),
-              styles=styles)
+    out.table(_CHECK_HEADERS, rows, right=(1, 2, 4), styles=styles)
     out.line("  margin: the distance to the limit as a share of the limit (of the check's scale "
              f"where the limit is 0); binding: satisfied with less than {100 * ACTIVE_TOL:g} % "
              "to spare.", "dim")
+
+
+#: Checks shown in the answer besides the failing and binding ones: the tightest few.
+WATCH_TIGHTEST = 3
+
+
+def watched(res: Result) -> list[Check]:
+    """The checks the answer shows: every failing and binding check and the
+    :data:`WATCH_TIGHTEST` tightest of the rest (all of them where there are few), in the
+    result's order."""
+    if len(res.checks) <= 2 * WATCH_TIGHTEST + 2:
+        return list(res.checks)
+    must = [c for c in res.checks if not c.passed or c.active]
+    rest = sorted((c for c in res.checks if c.passed and not c.active),
+                  key=lambda c: c.margin)[:WATCH_TIGHTEST]
+    keep = {id(c) for c in (*must, *rest)}
+    return [c for c in res.checks if id(c) in keep]
+
+
+def verdict(res: Result) -> str:
+    """One line: all checks pass, or which fail (with their margins)."""
+    failed = [c for c in res.checks if not c.passed]
+    n = len(res.checks)
+    if not failed:
+        binding = [check_name(c, res) for c in res.checks if c.active]
+        return (f"PASS: all {n} checks pass" + (f"; binding: {'; '.join(binding)}"
+                                                if binding else ""))
+    return (f"FAIL: {len(failed)} of {n} checks fail: "
+            + "; ".join(f"{check_name(c, res)} ({margin_words(c)})" for c in failed))
+
+
+def _warnings(res: Result) -> list[str]:
+    """The notes a reader should not miss: the optimiser's and the spring sheet's."""
+    notes = [str(n) for n in (res.optimisation or {}).get("notes") or []]
+    if res.spring_report is not None:
+        d = res.spring_report.to_dict()
+        notes += [*d["tolerance_spread"]["notes"], *d["notes"]]
+    return list(dict.fromkeys(notes))
+
+
+#: The report's sections by name (``govopt evaluate --section NAME``), in the full report's
+#: order; ``summary`` is the answer (verdict, design, the checks to watch, notes).
+SECTIONS = ("summary", "design", "checks", "characteristic", "dynamics", "vibration",
+            "optimisation", "spring")
+
+
+def _summary_section(out: _Report, res: Result, every_check: bool = False) -> None:
+    """The answer: the verdict, the design, the checks to watch (none where ``every_check``:
+    the whole Checks table follows) and the notes."""
+    line = verdict(res)
+    out.title("Verdict")
+    out.line(line, "green bold" if line.startswith("PASS") else "red bold")
+    _design_section(out, res)
+    shown = [] if every_check else watched(res)
+    if shown:
+        rows, styles = _check_rows(shown, res)
+        more = len(res.checks) - len(shown)
+        out.title("Checks to watch" + (f" (failing, binding and the {WATCH_TIGHTEST} tightest; "
+                                       f"{more} more pass: --section checks)" if more else ""))
+        out.table(_CHECK_HEADERS, rows, right=(1, 2, 4), styles=styles)
+    notes = _warnings(res)
+    if notes:
+        out.title("Notes")
+        for note in notes:
+            out.line(f"  - {note}")
 
 
 def _summary(res: Result) -> list[list[str]]:
@@ -216,14 +299,26 @@ def _summary(res: Result) -> list[list[str]]:
     gov = spec.governor
     wi, wa = float(st.omega[0]), float(st.omega[-1])
     rows = []
+    opt = res.optimisation or {}
+    if opt.get("objective"):
+        obj = opt["objective"]
+        unit = obj.get("unit", "")
+        value, shown_unit = sec.shown(obj.get(f"value_{unit}") if unit else obj.get("value"),
+                                      unit)
+        gap = opt.get("gap")
+        rows.append([f"objective: {str(obj.get('name', '')).replace('_', ' ')}", _num(value),
+                     shown_unit or "-", f"status {opt.get('status')}" + (
+                         "" if gap is None else f"; {100 * gap:.3g} % above the continuous "
+                                                "bound")])
     if spec.speed is not None:
         rows.append(["irregularity", f"{res.irregularity:.5f}", "-",
                      f"required <= {spec.speed.irregularity:g}; (omega_a - omega_i) / omega0, "
-                     f"omega0 = {spec.speed.omega_mean:.4f} rad/s the mean speed (Hamabe Part I)"])
-    rows.append(["speed range", f"{wi:.4f} .. {wa:.4f}", "rad/s",
-                 f"{wi * RPM:.2f} .. {wa * RPM:.2f} rpm"])
+                     f"omega0 = {spec.speed.omega_mean * RPM:.2f} rpm the mean speed (Hamabe "
+                     "Part I)"])
+    rows.append(["speed range", f"{wi * RPM:.2f} .. {wa * RPM:.2f}", "rpm",
+                 f"{wi:.4f} .. {wa:.4f} rad/s"])
     inertia = "kg m^2" if gov.coordinate == "angle" else "kg"
-    rows.append([f"{gov.mass_key} mass", f"{sd.m:.4g}", "kg",
+    rows.append([f"{gov.mass_name} mass", f"{sd.m:.4g}", "kg",
                  f"weight {sd.m * G_STANDARD:.4g} N "
                  f"({to_unit(sd.m * G_STANDARD, 'force', 'kgf'):.4g} kgf); "
                  f"inertia I = {sd.inertia:.5g} {inertia}"])
@@ -232,8 +327,8 @@ def _summary(res: Result) -> list[list[str]]:
                      f"weight {sd.central * G_STANDARD:.4g} N "
                      f"({to_unit(sd.central * G_STANDARD, 'force', 'kgf'):.4g} kgf)"])
     if gov.spring is not None:
-        rows += [["spring stiffness", f"{sd.kappa:.6g}", "N/m", f"{gov.spring} spring"],
-                 [gov.free_length_key.replace("_", " "), f"{sd.l0 * 1e3:.4f}", "mm", "l0"]]
+        rows += [["spring stiffness", f"{sd.kappa / 1e3:.5g}", "N/mm", f"{gov.spring} spring"],
+                 [gov.free_length_key.replace("_", " "), _num(sd.l0 * 1e3, ".5g"), "mm", "l0"]]
     if sp:
         rows += [["wire diameter", f"{sd.d * 1e3:.4g}", "mm", "d"],
                  ["mean coil radius", f"{sd.r * 1e3:.4g}", "mm", "r"],
@@ -265,17 +360,13 @@ def _summary(res: Result) -> list[list[str]]:
     return rows
 
 
-def format_result(res: Result, colour: bool | None = None) -> str:
-    """The report: characteristic, summary, dynamics, the optimiser's record, checks and the
-    spring's sheet. ``colour``: None for :func:`colour_default` (a terminal)."""
-    out = _Report(colour_default() if colour is None else colour)
-    st, spec = res.statics, res.spec
-    gov = spec.governor
-    fid = [f"geometry={spec.analysis.geometry}", f"reaction_speed={spec.analysis.reaction_speed}"]
-    if spec.material is not None:
-        fid.append(f"stress_correction={spec.material.stress_correction}")
-    out.line(f"govopt {res.kind}: {spec.name}  ({spec.path})  [{gov.title}]", "bold")
-    out.line("fidelity: " + ", ".join(fid))
+def _design_section(out: _Report, res: Result) -> None:
+    out.title("Design")
+    out.table(["", "", "", ""], _summary(res), right=(1,), show_header=False)
+
+
+def _characteristic(out: _Report, res: Result) -> None:
+    st, gov = res.statics, res.spec.governor
     q = "N m" if gov.coordinate == "angle" else "N"
     xs, xunit = gov.shown(st.alpha)
     cols = [(f"{gov.coordinate_name}\n({xunit})", xs, ".3f"), ("omega\n(rad/s)", st.omega, ".4f"),
@@ -292,14 +383,62 @@ def format_result(res: Result, colour: bool | None = None) -> str:
     out.table([c[0] for c in cols],
               [[format(float(c[1][i]), c[2]) for c in cols] for i in range(len(st.alpha))],
               right=range(len(cols)))
-    out.title("Design")
-    out.table(["", "", "", ""], _summary(res), right=(1,), show_header=False)
-    for table in sec.dynamics(res) + sec.optimisation(res):
+
+
+def _tables(out: _Report, tables) -> None:
+    for table in tables:
         out.section(table)
-    _checks(out, res)
+
+
+def _spring_section(out: _Report, res: Result) -> None:
     for line in format_spring(res):
         out.line(line)
+
+
+_WRITERS = {
+    "summary": _summary_section,
+    "characteristic": _characteristic,
+    "design": _design_section,
+    "dynamics": lambda out, res: _tables(out, sec.load_changes(res) + sec.restoring(res)),
+    "vibration": lambda out, res: _tables(out, sec.vibration(res)),
+    "optimisation": lambda out, res: _tables(out, sec.optimisation(res)),
+    "checks": _checks,
+    "spring": _spring_section,
+}
+
+
+def format_result(res: Result, colour: bool | None = None,
+                  sections: Sequence[str] | None = None) -> str:
+    """The report, the answer first: its head (spec, governor, fidelity), then ``sections``
+    (names of :data:`SECTIONS`, in that order; None: all of them, the full report). The
+    ``summary`` alone (:func:`format_summary`) fits a screen. ``colour``: None for
+    :func:`colour_default` (a terminal)."""
+    out = _Report(colour_default() if colour is None else colour)
+    spec = res.spec
+    fid = [f"geometry={spec.analysis.geometry}", f"reaction_speed={spec.analysis.reaction_speed}"]
+    if spec.material is not None:
+        fid.append(f"stress_correction={spec.material.stress_correction}")
+    out.line(f"govopt {res.kind}: {spec.name}  ({spec.path})  [{spec.governor.title}]", "bold")
+    out.line("fidelity: " + ", ".join(fid))
+    wanted = SECTIONS if sections is None else sections
+    unknown = [s for s in wanted if s not in _WRITERS]
+    if unknown:
+        raise ValueError(f"unknown report section(s) {unknown}; expected {SECTIONS}")
+    for name in SECTIONS:
+        if name == "summary" and name in wanted:
+            _summary_section(out, res, every_check="checks" in wanted)
+        elif name in wanted and not (name == "design" and "summary" in wanted):
+            _WRITERS[name](out, res)
+    if sections is not None and list(wanted) == ["summary"]:
+        out.line("")
+        out.line("More: --full, or --section NAME (" + ", ".join(SECTIONS[1:]) + ").", "dim")
     return out.text()
+
+
+def format_summary(res: Result, colour: bool | None = None) -> str:
+    """The answer first, to fit a screen: the verdict, the design in engineering units, the
+    failing, binding and tightest checks, and the notes (``govopt evaluate``'s default)."""
+    return format_result(res, colour, ["summary"])
 
 
 def format_spring(res: Result) -> list[str]:
@@ -331,9 +470,9 @@ def format_spring(res: Result) -> list[str]:
                        f"{fat['corrected_stress_max_Pa'] / 1e6:.4g} MPa (mean "
                        f"{fat['mean_stress_Pa'] / 1e6:.4g}, alternating "
                        f"{fat['alternating_stress_Pa'] / 1e6:.4g} MPa)")
-    harm = ", ".join(f"{f:.4g}" for f in loads["excitation_harmonics_Hz"]) or "none modelled"
+    harm = ", ".join(f"{f:.4g}" for f in loads["excitation_harmonics_Hz"])
     out.append(f"  surge               {loads['surge_frequency_Hz']:.4g} Hz; excitation "
-               f"harmonics present: {harm} Hz")
+               f"harmonics present: {f'{harm} Hz' if harm else 'none modelled'}")
     rpm = [f"{a:.2f} .. {b:.2f}" for a, b in (sp["rpm_inner_range"], sp["rpm_outer_range"])]
     out.append(f"  tolerance spread    rate {sp['stiffness_range_N_per_m'][0]:.6g} .. "
                f"{sp['stiffness_range_N_per_m'][1]:.6g} N/m (wire +- "
