@@ -130,6 +130,8 @@ class Governor(ABC):
     #: gear), so ``k^2 < omega0^2`` keeps them clear of resonance (case 2); False for a type
     #: whose mechanism has no such forcing: only ``k^2 > 0`` (stability, case 3) is required
     resonance_ceiling: ClassVar[bool] = True
+    #: where the ceiling ``0 < k^2 < omega0^2`` comes from, for a plot's legend ('' for none)
+    resonance_source: ClassVar[str] = ""
     #: the spring's whole free length per unit of ``l0`` (the shaft's l0 is a half length: 2)
     spring_length_factor: ClassVar[float] = 1.0
     #: names of the three generalised forces in reports: centrifugal, spring, dead loads

@@ -59,6 +59,7 @@ class ShaftGovernor(Governor):
     spring: ClassVar[str | None] = "tension"
     mass_key: ClassVar[str] = "pendulum"
     mass_name: ClassVar[str] = "pendulum"
+    resonance_source: ClassVar[str] = "Hamabe Part II, case 1"
     free_length_key: ClassVar[str] = "free_half_length"
     spring_length_factor: ClassVar[float] = 2.0
     force_names: ClassVar[tuple[str, str, str]] = ("M_z", "M_f", "M_r0")

@@ -206,7 +206,8 @@ def k2(res, ax) -> None:
     floor = low.limit if low is not None and low.limit > 0 else None
     top = float(np.max(k2v))
     if ceiling:
-        case = " (Hamabe Part II, case 1)" if res.spec.governor.type_name == "shaft" else ""
+        source = res.spec.governor.resonance_source
+        case = f" ({source})" if source else ""
         ax.axhspan(0.0, w0sq, color="tab:green", alpha=0.15,
                    label=r"stable, clear of resonance: $0 < k^2 < \omega_0^2$" + case)
         lo = min(0.0, float(np.min(k2v)))
