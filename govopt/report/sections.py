@@ -48,7 +48,7 @@ _SUFFIXES = (
     ("_N_m_s_per_rad", "N m s/rad"), ("_N_s_per_m", "N s/m"), ("_rad2_s2", "rad^2/s^2"),
     ("_N_per_m", "N/m"), ("_kg_m2", "kg*m^2"), ("_rad_s", "rad/s"), ("_per_s", "1/s"),
     ("_N_m", "N*m"), ("_Pa", "Pa"), ("_kg", "kg"), ("_Hz", "Hz"), ("_rad", "rad"),
-    ("_deg", "deg"), ("_J", "J"), ("_N", "N"), ("_m", "m"), ("_s", "s"),
+    ("_deg", "deg"), ("_J", "J"), ("_N", "N"), ("_m", "m"), ("_s", "s"), ("_percent", "%"),
 )
 
 
