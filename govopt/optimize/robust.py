@@ -333,7 +333,7 @@ def robust_design(spec: Spec):
     t0 = time.perf_counter()
     cand, stats = robust_search(spec, req)
     res = dz.result_of(spec, req, cand, stats, None)
-    record = robust_record(spec, req, cand)
+    record = robust_record(spec, req, cand, res.checks)
     record["monte_carlo"] = monte_carlo(spec, req, design_of(spec, cand))
     t_robust = time.perf_counter() - t0
     unit = res.optimisation["objective"]["unit"]
@@ -355,9 +355,10 @@ def design_of(spec: Spec, cand) -> Design:
                   dashpot=None if math.isnan(cand.f) else cand.f)
 
 
-def robust_record(spec: Spec, req: Requirements, cand) -> dict:
+def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
     """The box of the chosen design, the worst case of each check at its corners beside the
-    nominal value, and the adjusting nut's range."""
+    nominal value (SI; unit, limit and sense from the evaluated ``checks``), and the adjusting
+    nut's range."""
     from ..bulk import design_arrays, margin_column, value_column
 
     d = design_of(spec, cand)
@@ -370,21 +371,26 @@ def robust_record(spec: Spec, req: Requirements, cand) -> dict:
     # the worst case: over the corners, each at the nut setting the fitter uses there
     use = np.array([c * nut.size + max(int(first[0, c]), 0) for c in range(len(signs))])
     at = frame.iloc[use].reset_index(drop=True)
+    evaluated = {c.name: c for c in checks}
     checks = []
     for name in robust_checks(frame):
         m = at[margin_column(name)].to_numpy(dtype=float)
         if not np.isfinite(m).any():
             continue
         w = int(np.nanargmin(m))
-        checks.append({"check": name, "nominal": float(nominal[value_column(name)].iloc[0]),
+        c = evaluated.get(name)
+        checks.append({"check": name, "unit": c.unit if c else "",
+                       "sense": c.sense if c else "", "limit": c.limit if c else math.nan,
+                       "nominal": float(nominal[value_column(name)].iloc[0]),
                        "worst_case": float(at[value_column(name)].iloc[w]),
                        "worst_margin": float(m[w]),
                        "worst_corner": {dims[j]: ("+" if signs[w, j] > 0 else "-")
                                         for j in range(len(dims))},
                        "holds": bool(np.all(first[0] >= 0))})
     needed = nut[np.maximum(first[0], 0)]
+    damping = spec.governor.key_unit("damping")
     halves = {f"{k}_m" if k in ("wire_diameter", "coil_radius", "free_half_length")
-              else f"{k}_kg" if k.endswith("mass") else f"{k}_SI": float(v[0])
+              else f"{k}_kg" if k.endswith("mass") else f"{k}_{damping}": float(v[0])
               for k, v in box.fields.items() if v[0] > 0}
     return {
         "tolerances": {"spring_grade": req.robust_spring_grade,
