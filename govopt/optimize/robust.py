@@ -390,6 +390,7 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
     needed = nut[np.maximum(first[0], 0)]
     damping = spec.governor.key_unit("damping")
     halves = {f"{k}_m" if k in ("wire_diameter", "coil_radius", "free_half_length")
+              else f"{spec.governor.mass_key}_mass_kg" if k == "pendulum_mass"
               else f"{k}_kg" if k.endswith("mass") else f"{k}_{damping}": float(v[0])
               for k, v in box.fields.items() if v[0] > 0}
     return {
