@@ -10,7 +10,7 @@ import pytest
 from clirun import invoke
 
 import govopt
-from govopt.bulk import check_names, evaluate_many, passed_column
+from govopt.bulk import check_names, evaluate_many
 from govopt.optimize import design as dz
 from govopt.optimize import robust as rb
 from govopt.optimize.margins import window_centre
@@ -60,7 +60,7 @@ def test_window_centre_is_the_widest_margin_on_random_masks():
             continue
         assert ok[0, j]
 
-        def margin(i):
+        def margin(i, ok=ok):
             lo = hi = i
             while lo > 0 and ok[0, lo - 1]:
                 lo -= 1
@@ -77,7 +77,8 @@ def test_default_design_keeps_20_percent_to_each_end_of_the_dashpot_window(nomin
     f = d["dashpot_N_m_s_per_rad"]
     f_lo, f_hi = d["dashpot_feasible_range_N_m_s_per_rad"]
     assert f_lo * 1.2 <= f <= f_hi / 1.2
-    below, above = d["dashpot_margin_to_lower_end_percent"], d["dashpot_margin_to_upper_end_percent"]
+    below = d["dashpot_margin_to_lower_end_percent"]
+    above = d["dashpot_margin_to_upper_end_percent"]
     assert below == pytest.approx(100 * (1 - f_lo / f)) and below >= 20
     assert above == pytest.approx(100 * (f_hi / f - 1)) and above >= 20
 
