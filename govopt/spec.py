@@ -363,6 +363,8 @@ class Requirements:
     robust_torque_slope: float = 0.0  # the engine's torque slope +- this fraction
     #: what the fitter adjusts on assembly: the spring's free length by an adjusting nut, +- m
     adjusting_nut: float = 0.0
+    #: the fitter sets the dash-pot valve within +- this fraction of the design's setting
+    dashpot_valve: float = 0.0
     robust_samples: int = 2000  # Monte-Carlo verification: samples and seed
     robust_seed: int = 0
 
@@ -370,7 +372,8 @@ class Requirements:
     def robust(self) -> bool:
         """Whether the requirements ask for a tolerance box (robust design)."""
         return (self.robust_spring_grade is not None or self.robust_dashpot > 0
-                or self.robust_masses > 0 or self.robust_torque_slope > 0)
+                or self.robust_masses > 0 or self.robust_torque_slope > 0
+                or self.adjusting_nut > 0 or self.dashpot_valve > 0)
 
 
 @dataclass(frozen=True)
@@ -829,6 +832,8 @@ def _requirements(top: _Reader, governor: Governor) -> Requirements | None:
                                            nonnegative=True, high=0.5),
             adjusting_nut=req.quantity("adjusting_nut", "length", required=False, default=0.0,
                                        nonnegative=True),
+            dashpot_valve=req.number("dashpot_valve", required=False, default=0.0,
+                                     nonnegative=True, high=0.9),
             robust_samples=req.number("robust_samples", required=False,
                                       default=d.robust_samples, low=9, high=100001,
                                       integer=True, range_text="[10, 100000]"),

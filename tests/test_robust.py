@@ -244,3 +244,21 @@ def test_robust_text_report():
     assert "Worst case over the tolerance box" in run.stdout
     assert "probability every check holds" in run.stdout
     assert "robustness cost: increase" in run.stdout
+
+
+def test_no_robust_candidate_names_the_check_that_fails(tmp_path):
+    """Bounds that admit only the nominal optimum's neighbourhood (d 10 mm, r 39 mm, n <= 9.5):
+    it is feasible at nominal values but its stress fails at the small coil diameter."""
+    text = open(ROBUST).read()
+    for old, new in (('wire_diameter = ["5 mm", "25 mm"]', 'wire_diameter = ["9.5 mm", "10.5 mm"]'),
+                     ('coil_radius = ["3 cm", "8 cm"]', 'coil_radius = ["3.85 cm", "3.95 cm"]'),
+                     ("active_turns = [3, 20]", "active_turns = [3, 9.5]")):
+        assert old in text
+        text = text.replace(old, new)
+    path = tmp_path / "tight.toml"
+    path.write_text(text)
+    run = invoke(["design", str(path)])
+    assert run.exit_code == 2 and run.exception is None
+    assert "infeasible: requirements.robust_*" in run.stderr
+    assert "'shear stress' fails at a corner" in run.stderr
+    assert len(run.stderr.strip().splitlines()) == 1

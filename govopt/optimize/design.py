@@ -685,10 +685,6 @@ def design(spec: Spec):
     """
     req = requirements(spec)
     spec = replace(spec, requirements=req)  # the checks report the requirements designed to
-    if req.robust:  # a tolerance box: the worst case over it (govopt.optimize.robust)
-        from .robust import robust_design
-
-        return robust_design(spec)
     too_big = design_size_error(req, spec.analysis.points, spec.governor.spring,
                                 spec.governor.mass_key)
     if too_big:  # counted from bounds and steps before any grid is built (govopt.limits)
@@ -698,6 +694,10 @@ def design(spec: Spec):
                               "which needs its [material]")
     if spec.speed is None:
         raise InfeasibleError(f"{spec.path}: speed: missing: a design needs the speed range")
+    if req.robust:  # a tolerance box: the worst case over it (govopt.optimize.robust)
+        from .robust import robust_design
+
+        return robust_design(spec)
     if spec.governor.spring is None:  # a dead-weight governor: masses only
         cand, stats = dead_weight_search(spec, req)
         return _result(spec, req, cand, stats, None)

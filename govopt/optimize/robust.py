@@ -12,7 +12,9 @@
   ``+-robust_masses`` and the engine's torque slope ``+-robust_torque_slope``;
 
 and may name what the fitter adjusts on assembly: ``adjusting_nut``, the spring's free length
-(its initial extension) by a nut, within ``+-adjusting_nut``.
+(its initial extension) by a nut, within ``+-adjusting_nut`` (m); ``dashpot_valve``, the dash-pot
+valve, within ``+-dashpot_valve`` of the design's setting (a fraction; the setting's tolerance
+``robust_dashpot`` applies on top).
 
 Method. The nominal search's candidates (statics screen and spring checks,
 :func:`govopt.optimize.design.spring_screen`; dash-pot in the centre of its window,
@@ -20,8 +22,8 @@ Method. The nominal search's candidates (statics screen and spring checks,
 is feasible at nominal values is evaluated at every corner of its tolerance box (the checks are
 taken monotone in each tolerance, so the worst case is at a corner) by the bulk evaluator
 (:func:`govopt.bulk.evaluate_many`, vectorised over candidates x corners). With an adjusting
-nut, a corner holds if some setting of the nut on a grid over its range makes every check hold
-(the fitter sets it for the parts at hand). The first candidate that holds at every corner is
+nut or valve, a corner holds if some setting on a grid over their ranges makes every check hold
+(the fitter sets them for the parts at hand). The first candidate that holds at every corner is
 the robust optimum (the least objective among the catalogue's candidates that do). It is then
 verified by a seeded Monte-Carlo sample, uniform within the box (every part anywhere within its
 tolerance), through the same evaluator: the probability that every check holds, with its 95 %
@@ -44,13 +46,15 @@ from ..errors import InfeasibleError
 from ..spec import Design, Requirements, Spec
 from . import design as dz
 
-#: the fitter's settings of the adjusting nut tried over its range (odd: nominal 0 included)
+#: the fitter's settings of the adjusting nut and of the dash-pot valve tried over each one's
+#: range (odd: the nominal setting included)
 NUT_SETTINGS = 9
 #: the torque slope's levels in the Monte-Carlo sample (the slope is a spec value, not a design
 #: column: each level is one bulk evaluation)
 TORQUE_LEVELS = 11
-#: batches of candidates evaluated at their corners
+#: batches of candidates evaluated at their corners, and the most checked before giving up
 BATCHES = (8, 32, 128)
+MAX_CHECKED = 1024
 #: the search bounds' rows (limits of the catalogue search, not of a made part)
 BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diameter <= max",
                "coil radius >= min", "coil radius <= max", "active turns >= min",
@@ -60,7 +64,7 @@ BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diame
 def nominal_requirements(req: Requirements) -> Requirements:
     """The requirements without the tolerance box (the nominal design's)."""
     return replace(req, robust_spring_grade=None, robust_dashpot=0.0, robust_masses=0.0,
-                   robust_torque_slope=0.0, adjusting_nut=0.0)
+                   robust_torque_slope=0.0, adjusting_nut=0.0, dashpot_valve=0.0)
 
 
 def spring_tolerances(spec: Spec, grade: int, d, r, n):
@@ -178,12 +182,21 @@ def holds(frame) -> np.ndarray:
     return ok
 
 
-def nut_settings(req: Requirements) -> np.ndarray:
-    """The adjusting nut's settings tried (m), least change first: 0, -+a/4, ..."""
-    if req.adjusting_nut <= 0:
-        return np.zeros(1)
-    a = np.linspace(-req.adjusting_nut, req.adjusting_nut, NUT_SETTINGS)
-    return a[np.argsort(np.abs(a), kind="stable")]
+def nut_settings(req: Requirements):
+    """The fitter's settings tried: ``(nut, valve)``, the nut's free-length change (m) and the
+    valve's factor on the dash-pot, arrays over the grid of both ranges, least change first
+    (the nominal setting, 0 and 1, first)."""
+    nut = np.linspace(-req.adjusting_nut, req.adjusting_nut, NUT_SETTINGS) \
+        if req.adjusting_nut > 0 else np.zeros(1)
+    half = NUT_SETTINGS // 2 + 1  # each side of the nominal 1, on a log scale
+    valve = np.concatenate([np.geomspace(1.0 - req.dashpot_valve, 1.0, half),
+                            np.geomspace(1.0, 1.0 + req.dashpot_valve, half)[1:]]) \
+        if req.dashpot_valve > 0 else np.ones(1)
+    a, v = (x.ravel() for x in np.meshgrid(nut, valve, indexing="ij"))
+    change = (np.abs(a) / max(req.adjusting_nut, 1e-300)
+              + np.abs(np.log(v)) / max(math.log1p(req.dashpot_valve), 1e-300))
+    o = np.argsort(np.round(change, 12), kind="stable")
+    return a[o], v[o]
 
 
 def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
@@ -193,7 +206,7 @@ def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
     dims = names + (["torque_slope"] if box.torque > 0 else [])
     signs = np.array(list(itertools.product((-1.0, 1.0), repeat=len(dims)))).reshape(-1,
                                                                                      len(dims))
-    nut = nut_settings(req)
+    nut, valve = nut_settings(req)
     n = len(cols["pendulum_mass"])
     cand, corner, k = (a.ravel() for a in np.meshgrid(np.arange(n), np.arange(len(signs)),
                                                          np.arange(nut.size), indexing="ij"))
@@ -201,6 +214,7 @@ def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
     for j, name in enumerate(names):
         rows[name] = rows[name] + signs[corner, j] * box.fields[name][cand]
     rows["free_half_length"] = rows["free_half_length"] + nut[k]
+    rows["dashpot"] = rows["dashpot"] * valve[k]
     torque = signs[corner, -1] * box.torque if box.torque > 0 else np.zeros(cand.size)
     frame = _evaluate(spec, req, rows, torque)
     return frame, cand, corner, k, signs, dims
@@ -225,6 +239,9 @@ def _design_columns(cat, rows, cols, l0, km, f) -> dict:
 def robust_search(spec: Spec, req: Requirements):
     """The least-objective candidate that holds at every corner of its tolerance box:
     ``(Candidate, stats)``; raises :class:`InfeasibleError` when none does."""
+    if spec.governor.spring is None:
+        raise InfeasibleError(f"{spec.path}: requirements.robust_*: a robust design is for "
+                              "spring governors (a dead-weight type's masses alone: not yet)")
     if req.objective not in ("moving_mass", "spring_mass"):
         raise InfeasibleError(f"{spec.path}: requirements.objective: a robust design (robust_* "
                               f"keys) minimises the moving or spring mass, not {req.objective}")
@@ -238,10 +255,11 @@ def robust_search(spec: Spec, req: Requirements):
                                  central=km.central[rows, 0])
     order = np.argsort(values, kind="stable")
     stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0}
+    failing: dict[str, int] = {}
     start, b = 0, 0
-    while start < order.size:
+    while start < order.size and stats["nominal_feasible_checked"] < MAX_CHECKED:
         size = BATCHES[min(b, len(BATCHES) - 1)]
-        sel = order[start:start + size]
+        first, sel = start, order[start:start + size]
         start, b = start + size, b + 1
         fat = None if cat.fatigue is None else (
             lambda swing, s=sel: cat.fatigue(cols[s], l0[s], swing))
@@ -257,19 +275,23 @@ def robust_search(spec: Spec, req: Requirements):
         box = candidate_box(spec, req, dcols)
         finite = np.all([np.isfinite(v) for v in box.fields.values()], axis=0) \
             if box.fields else np.ones(s.size, bool)
+        stats["nominal_feasible_checked"] += int(s.size)
+        if not finite.any():  # outside the tolerance tables: not certifiable
+            continue
         frame, *_, signs, _ = corners(spec, req, {k: v[finite] for k, v in dcols.items()},
                                       Box({k: v[finite] for k, v in box.fields.items()},
                                           box.torque))
-        stats["nominal_feasible_checked"] += int(s.size)
         stats["corner_evaluations"] += len(frame)
-        n_nut = nut_settings(req).size
+        n_nut = nut_settings(req)[0].size
         ok_f, _ = corner_verdict(frame, None, None, None, int(finite.sum()), len(signs), n_nut)
+        for name, count in failures(frame, int(finite.sum()), len(signs), n_nut).items():
+            failing[name] = failing.get(name, 0) + count
         ok = np.zeros(s.size, bool)
         ok[finite] = ok_f
         if ok.any():
             j = int(np.argmax(ok))  # the first in objective order
             i, g = s[j], good[j]
-            stats["candidates_visited"] = int(start - sel.size + g + 1)
+            stats["candidates_visited"] = int(first + g + 1)
             cand = dz.Candidate(float(km.m[rows[i], 0]),
                                 {k: float(v[cols[i]]) for k, v in cat.fields.items()},
                                 float(cat.kappa[cols[i]]), float(l0[i]), float(win["f"][g]),
@@ -277,11 +299,29 @@ def robust_search(spec: Spec, req: Requirements):
                                 float(win["f_lo"][g]), float(win["f_hi"][g]),
                                 float(km.central[rows[i], 0]))
             return cand, stats
+    worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
+    which = "; ".join(f"'{k}' fails at a corner for {v}" for k, v in worst) or \
+        "none is within the EN 15800 / EN 10270 tables"
     raise InfeasibleError(
-        f"{spec.path}: infeasible: no candidate in the catalogue and bounds holds every check "
-        f"over the tolerance box (requirements.robust_*: {stats['nominal_feasible_checked']} "
-        f"candidates feasible at nominal values checked at their corners); narrow the "
-        f"tolerances, add requirements.adjusting_nut, or widen the bounds")
+        f"{spec.path}: infeasible: requirements.robust_*: no candidate holds every check over "
+        f"its tolerance box ({stats['nominal_feasible_checked']} candidates feasible at nominal "
+        f"values checked best first, at most {MAX_CHECKED}: {which}); narrow the tolerances, "
+        f"add requirements.adjusting_nut, or widen the bounds")
+
+
+def failures(frame, n: int, n_corners: int, n_nut: int) -> dict:
+    """Per robust check, on how many of ``n`` candidates it fails at some corner whatever the
+    nut's setting (for the diagnosis)."""
+    from ..bulk import passed_column
+
+    out = {}
+    for c in robust_checks(frame):
+        p = frame[passed_column(c)]
+        bad = (~(p.isna() | (p == True))).to_numpy(dtype=bool)  # noqa: E712
+        count = int(bad.reshape(n, n_corners, n_nut).all(axis=2).any(axis=1).sum())
+        if count:
+            out[c] = count
+    return out
 
 
 def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
@@ -304,11 +344,12 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
         torque = levels[rng.integers(0, TORQUE_LEVELS, n)]
     ok = holds(_evaluate(spec, req, rows, torque))
     adjusted = 0
-    if req.adjusting_nut > 0 and not ok.all():  # the fitter adjusts the failing ones
-        bad = np.nonzero(~ok)[0]
-        nut = nut_settings(req)[1:]
+    if (req.adjusting_nut > 0 or req.dashpot_valve > 0) and not ok.all():
+        bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones
+        nut, valve = (x[1:] for x in nut_settings(req))
         rep = {k: np.repeat(v[bad], nut.size) for k, v in rows.items()}
         rep["free_half_length"] = rep["free_half_length"] + np.tile(nut, bad.size)
+        rep["dashpot"] = rep["dashpot"] * np.tile(valve, bad.size)
         fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], nut.size))) \
             .reshape(bad.size, nut.size).any(axis=1)
         ok[bad] = fixed
@@ -316,7 +357,7 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     k = int(ok.sum())
     lo, hi = wilson(k, n)
     return {"samples": n, "seed": req.robust_seed, "distribution": "uniform within the box",
-            "holds": k, "adjusted_by_the_nut": adjusted, "probability": k / n,
+            "holds": k, "adjusted_by_the_fitter": adjusted, "probability": k / n,
             "ci95": [lo, hi]}
 
 
@@ -365,10 +406,10 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
     cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}
     box = candidate_box(spec, req, cols)
     frame, cnd, corner, k, signs, dims = corners(spec, req, cols, box)
-    nut = nut_settings(req)
+    nut, valve = nut_settings(req)
     ok, first = corner_verdict(frame, cnd, corner, k, 1, len(signs), nut.size)
     nominal = _evaluate(spec, req, cols, np.zeros(1))
-    # the worst case: over the corners, each at the nut setting the fitter uses there
+    # the worst case: over the corners, each at the setting the fitter uses there
     use = np.array([c * nut.size + max(int(first[0, c]), 0) for c in range(len(signs))])
     at = frame.iloc[use].reset_index(drop=True)
     evaluated = {c.name: c for c in checks}
@@ -387,7 +428,8 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
                        "worst_corner": {dims[j]: ("+" if signs[w, j] > 0 else "-")
                                         for j in range(len(dims))},
                        "holds": bool(np.all(first[0] >= 0))})
-    needed = nut[np.maximum(first[0], 0)]
+    used = np.maximum(first[0], 0)
+    nominal_ok = bool(holds(nominal)[0])  # nominal parts at the nominal setting
     damping = spec.governor.key_unit("damping")
     halves = {f"{k}_m" if k in ("wire_diameter", "coil_radius", "free_half_length")
               else f"{spec.governor.mass_key}_mass_kg" if k == "pendulum_mass"
@@ -403,6 +445,12 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
         "checks": checks,
         "adjusting_nut": None if req.adjusting_nut <= 0 else {
             "range_m": [-req.adjusting_nut, req.adjusting_nut],
-            "needed_range_m": [float(needed.min()), float(needed.max())],
-            "nominal_setting_m": 0.0},
+            "needed_range_m": [float(nut[used].min()), float(nut[used].max())],
+            "nominal_setting_m": 0.0 if nominal_ok else None},
+        "dashpot_valve": None if req.dashpot_valve <= 0 else {
+            f"range_{damping}": [cand.f * (1 - req.dashpot_valve),
+                                 cand.f * (1 + req.dashpot_valve)],
+            f"needed_range_{damping}": [float(cand.f * valve[used].min()),
+                                        float(cand.f * valve[used].max())],
+            f"nominal_setting_{damping}": cand.f if nominal_ok else None},
     }

@@ -510,11 +510,12 @@ def robustness(rob) -> list[Table]:
             ["engine torque slope +-", "%",
              cell(100.0 * (tol.get("torque_slope_fraction") or 0.0))]]
     rows += [[f"{r[0]} +-", r[1], r[2]] for r in _quantities(tol.get("half_widths") or {})]
-    nut = rob.get("adjusting_nut")
-    if isinstance(nut, Mapping):
-        rows += [[f"adjusting nut: {r[0]}", r[1], r[2]] for r in _quantities(nut)]
-    else:
-        rows.append(["adjusting nut", "", "none (the fitter adjusts nothing)"])
+    for key, label in (("adjusting_nut", "adjusting nut"), ("dashpot_valve", "dash-pot valve")):
+        item = rob.get(key)
+        if isinstance(item, Mapping):
+            rows += [[f"{label}: {r[0]}", r[1], r[2]] for r in _quantities(item)]
+        else:
+            rows.append([label, "", "not adjusted by the fitter"])
     rows.append(["corners of the box evaluated", "", cell(rob.get("corners"))])
     mc = rob.get("monte_carlo") or {}
     if mc:
