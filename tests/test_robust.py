@@ -206,9 +206,10 @@ def test_textbook_robust_design_holds_at_its_corners():
     assert rec["cost"]["robust_objective_kg"] >= rec["cost"]["nominal_objective_kg"]
 
 
-def test_adjusting_nut_range_is_reported_within_its_range(tmp_path):
+def test_adjusting_nut_and_valve_ranges_are_reported_within_their_ranges(tmp_path):
     text = open(ROBUST).read().replace("# no adjusting_nut: the fitter adjusts nothing",
-                                       'adjusting_nut = "2 mm"\nrobust_masses = 0.01')
+                                       'adjusting_nut = "2 mm"\nrobust_masses = 0.01\n'
+                                       "dashpot_valve = 0.5")
     path = tmp_path / "nut.toml"
     path.write_text(text)
     res = dz.design(govopt.load_spec(path))
@@ -217,6 +218,12 @@ def test_adjusting_nut_range_is_reported_within_its_range(tmp_path):
     lo, hi = nut["needed_range_m"]
     assert -0.002 <= lo <= hi <= 0.002
     assert nut["nominal_setting_m"] == 0.0
+    valve = res.optimisation["robust"]["dashpot_valve"]
+    f = res.optimisation["design"]["dashpot_N_m_s_per_rad"]
+    assert valve["range_N_m_s_per_rad"] == pytest.approx([0.5 * f, 1.5 * f])
+    v_lo, v_hi = valve["needed_range_N_m_s_per_rad"]
+    assert 0.5 * f <= v_lo <= v_hi <= 1.5 * f
+    assert valve["nominal_setting_N_m_s_per_rad"] == f
     assert res.optimisation["robust"]["holds_at_every_corner"]
 
 
