@@ -269,3 +269,22 @@ def test_no_robust_candidate_names_the_check_that_fails(tmp_path):
     assert "infeasible: requirements.robust_*" in run.stderr
     assert "'shear stress' fails at a corner" in run.stderr
     assert len(run.stderr.strip().splitlines()) == 1
+
+
+def test_speed_band_is_the_spring_sheets_tolerance_spread(robust, tmp_path):
+    """Over a box of the spring alone (the dash-pot does not move the statics) the band's ends
+    are the spring sheet's EN 15800 spread of the governed speeds (its own corners,
+    govopt.analysis.spring_engineering.spread), and the plot is written."""
+    from govopt.report.plots import write_plots
+
+    band = robust.optimisation["robust"]["speed_band"]
+    sheet = robust.to_dict()["spring_sheet"]["tolerance_spread"]
+    inner, outer = sheet["omega_inner_range_rad_s"], sheet["omega_outer_range_rad_s"]
+    assert [band["lowest_rad_s"][0], band["highest_rad_s"][0]] == pytest.approx(inner, rel=1e-9)
+    assert [band["lowest_rad_s"][-1], band["highest_rad_s"][-1]] == pytest.approx(outer,
+                                                                                  rel=1e-9)
+    nominal = robust.statics.omega
+    assert np.all(np.array(band["lowest_rad_s"]) <= nominal + 1e-12)
+    assert np.all(np.array(band["highest_rad_s"]) >= nominal - 1e-12)
+    paths = write_plots(robust, tmp_path, formats=("png",))
+    assert any(p.name.endswith("speed-band.png") and p.stat().st_size > 0 for p in paths)

@@ -429,6 +429,7 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
                                         for j in range(len(dims))},
                        "holds": bool(np.all(first[0] >= 0))})
     used = np.maximum(first[0], 0)
+    band = speed_band(spec, at)
     nominal_ok = bool(holds(nominal)[0])  # nominal parts at the nominal setting
     damping = spec.governor.key_unit("damping")
     halves = {f"{k}_m" if k in ("wire_diameter", "coil_radius", "free_half_length")
@@ -442,6 +443,7 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
                        "torque_slope_fraction": req.robust_torque_slope,
                        "half_widths": halves, "notes": box_notes(spec, req)},
         "corners": len(signs), "holds_at_every_corner": bool(ok[0]),
+        "speed_band": band,
         "checks": checks,
         "adjusting_nut": None if req.adjusting_nut <= 0 else {
             "range_m": [-req.adjusting_nut, req.adjusting_nut],
@@ -454,3 +456,23 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
                                         float(cand.f * valve[used].max())],
             f"nominal_setting_{damping}": cand.f if nominal_ok else None},
     }
+
+
+def speed_band(spec: Spec, frame) -> dict:
+    """The equilibrium speed over the configurations (Hamabe eq. 12 by virtual work,
+    :func:`govopt.analysis.statics.omega_squared`) at nominal values and its least and largest
+    over the designs of ``frame`` (the box's corners, each at the fitter's setting): the speed
+    band the tolerances give, rad/s, against the configuration (the type's unit)."""
+    from ..analysis import statics
+
+    x = statics.configurations(spec)
+    gov = spec.governor
+    col = {k: frame[c].to_numpy(dtype=float)[:, None] for k, c in (
+        ("m", f"{gov.mass_key}_mass_kg"), ("kappa", "stiffness_N_per_m"),
+        ("l0", f"{gov.free_length_key}_m"), ("central", "central_mass_kg"))}
+    with np.errstate(invalid="ignore"):
+        w = np.sqrt(statics.omega_squared(spec, x[None, :], col["m"], col["kappa"], col["l0"],
+                                          np.nan_to_num(col["central"])))
+    unit = "rad" if spec.governor.coordinate == "angle" else "m"
+    return {f"configuration_{unit}": x.tolist(), "lowest_rad_s": np.nanmin(w, axis=0).tolist(),
+            "highest_rad_s": np.nanmax(w, axis=0).tolist()}

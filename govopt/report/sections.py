@@ -517,6 +517,13 @@ def robustness(rob) -> list[Table]:
         else:
             rows.append([label, "", "not adjusted by the fitter"])
     rows.append(["corners of the box evaluated", "", cell(rob.get("corners"))])
+    band = rob.get("speed_band") or {}
+    if band.get("lowest_rad_s"):
+        rpm = 30.0 / math.pi
+        for end, i in (("inner", 0), ("outer", -1)):
+            rows.append([f"speed at the {end} end over the box", "rpm",
+                         f"{band['lowest_rad_s'][i] * rpm:.5g} .. "
+                         f"{band['highest_rad_s'][i] * rpm:.5g}"])
     mc = rob.get("monte_carlo") or {}
     if mc:
         lo, hi = (mc.get("ci95") or [None, None])[:2]
