@@ -220,7 +220,7 @@ def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
     return frame, cand, corner, k, signs, dims
 
 
-def corner_verdict(frame, cand, corner, k, n: int, n_corners: int, n_nut: int):
+def corner_verdict(frame, n: int, n_corners: int, n_nut: int):
     """Per candidate: whether every corner holds at some nut setting, and per corner the first
     (least) setting index that holds (-1: none)."""
     ok = holds(frame).reshape(n, n_corners, n_nut)
@@ -283,7 +283,7 @@ def robust_search(spec: Spec, req: Requirements):
                                           box.torque))
         stats["corner_evaluations"] += len(frame)
         n_nut = nut_settings(req)[0].size
-        ok_f, _ = corner_verdict(frame, None, None, None, int(finite.sum()), len(signs), n_nut)
+        ok_f, _ = corner_verdict(frame, int(finite.sum()), len(signs), n_nut)
         for name, count in failures(frame, int(finite.sum()), len(signs), n_nut).items():
             failing[name] = failing.get(name, 0) + count
         ok = np.zeros(s.size, bool)
@@ -400,14 +400,14 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
     """The box of the chosen design, the worst case of each check at its corners beside the
     nominal value (SI; unit, limit and sense from the evaluated ``checks``), and the adjusting
     nut's range."""
-    from ..bulk import design_arrays, margin_column, value_column
+    from ..bulk import design_arrays, margin_column, passed_column, value_column
 
     d = design_of(spec, cand)
     cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}
     box = candidate_box(spec, req, cols)
-    frame, cnd, corner, k, signs, dims = corners(spec, req, cols, box)
+    frame, _, _, _, signs, dims = corners(spec, req, cols, box)
     nut, valve = nut_settings(req)
-    ok, first = corner_verdict(frame, cnd, corner, k, 1, len(signs), nut.size)
+    ok, first = corner_verdict(frame, 1, len(signs), nut.size)
     nominal = _evaluate(spec, req, cols, np.zeros(1))
     # the worst case: over the corners, each at the setting the fitter uses there
     use = np.array([c * nut.size + max(int(first[0, c]), 0) for c in range(len(signs))])
@@ -427,7 +427,8 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
                        "worst_margin": float(m[w]),
                        "worst_corner": {dims[j]: ("+" if signs[w, j] > 0 else "-")
                                         for j in range(len(dims))},
-                       "holds": bool(np.all(first[0] >= 0))})
+                       "holds": bool((at[passed_column(name)].isna()
+                                      | (at[passed_column(name)] == True)).all())})  # noqa: E712
     used = np.maximum(first[0], 0)
     band = speed_band(spec, at)
     nominal_ok = bool(holds(nominal)[0])  # nominal parts at the nominal setting
