@@ -288,3 +288,15 @@ def test_speed_band_is_the_spring_sheets_tolerance_spread(robust, tmp_path):
     assert np.all(np.array(band["highest_rad_s"]) >= nominal - 1e-12)
     paths = write_plots(robust, tmp_path, formats=("png",))
     assert any(p.name.endswith("speed-band.png") and p.stat().st_size > 0 for p in paths)
+
+
+def test_robust_record_in_the_workbook(tmp_path):
+    import openpyxl
+
+    path = tmp_path / "robust.xlsx"
+    run = invoke(["design", TEXTBOOK, "--xlsx", str(path)])
+    assert run.exit_code == 0, run.output
+    cells = {v for ws in openpyxl.load_workbook(path) for row in ws.iter_rows(values_only=True)
+             for v in row if isinstance(v, str)}
+    assert "Worst case over the tolerance box (corners; after adjustment)" in cells
+    assert "probability every check holds" in cells
