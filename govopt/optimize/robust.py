@@ -385,7 +385,6 @@ def robust_design(spec: Spec):
                       "nominal_design": nominal.optimisation["design"]}
     record["time_s"] = {"nominal_design": t_nominal, "robust_search_and_verification": t_robust}
     res.optimisation["robust"] = record
-    res.optimisation["status"] = "optimal (robust over the tolerance box)"
     return res
 
 
