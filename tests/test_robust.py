@@ -185,6 +185,8 @@ def test_monte_carlo_is_seeded_and_its_interval_holds_the_estimate():
     a, b = rb.monte_carlo(spec, req, design), rb.monte_carlo(spec, req, design)
     assert a == b
     assert 0.0 < a["probability"] < 1.0  # some springs within the box fail it
+    assert set(a["failing_checks"]) == {"shear stress"}  # the small coil diameters
+    assert a["failing_checks"]["shear stress"] == a["samples"] - a["holds"]
     lo, hi = a["ci95"]
     assert lo < a["probability"] < hi
 

@@ -342,7 +342,8 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     if box.torque > 0:
         levels = np.linspace(-box.torque, box.torque, TORQUE_LEVELS)
         torque = levels[rng.integers(0, TORQUE_LEVELS, n)]
-    ok = holds(_evaluate(spec, req, rows, torque))
+    frame = _evaluate(spec, req, rows, torque)
+    ok = holds(frame)
     adjusted = 0
     if (req.adjusting_nut > 0 or req.dashpot_valve > 0) and not ok.all():
         bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones
@@ -356,8 +357,12 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
         adjusted = int(fixed.sum())
     k = int(ok.sum())
     lo, hi = wilson(k, n)
+    # the checks that fail in the sample before any adjustment (a failure inside a box whose
+    # corners hold: the check is not monotone in a tolerance)
+    failing = failures(frame.iloc[np.nonzero(~ok)[0]], int((~ok).sum()), 1, 1) if k < n else {}
     return {"samples": n, "seed": req.robust_seed, "distribution": "uniform within the box",
             "holds": k, "adjusted_by_the_fitter": adjusted, "probability": k / n,
+            "failing_checks": failing,
             "ci95": [lo, hi]}
 
 

@@ -531,6 +531,8 @@ def robustness(rob) -> list[Table]:
                   f"{mc.get('distribution')}"],
                  ["probability every check holds", "%", cell(100.0 * mc["probability"])],
                  ["  95 % Wilson interval", "%", f"{100.0 * lo:.4g} .. {100.0 * hi:.4g}"]]
+        rows += [[f"  samples failing '{name}'", "", cell(count)]
+                 for name, count in (mc.get("failing_checks") or {}).items()]
     cost = rob.get("cost") or {}
     for key, value in cost.items():
         if isinstance(value, int | float):
