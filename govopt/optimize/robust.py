@@ -24,10 +24,13 @@ taken monotone in each tolerance, so the worst case is at a corner) by the bulk 
 (:func:`govopt.bulk.evaluate_many`, vectorised over candidates x corners). With an adjusting
 nut or valve, a corner holds if some setting on a grid over their ranges makes every check hold
 (the fitter sets them for the parts at hand). The first candidate that holds at every corner is
-the robust optimum (the least objective among the catalogue's candidates that do). It is then
-verified by a seeded Monte-Carlo sample, uniform within the box (every part anywhere within its
-tolerance), through the same evaluator: the probability that every check holds, with its 95 %
-Wilson interval (:func:`govopt.study.wilson`).
+the robust optimum (the least objective among the catalogue's candidates that do; at most
+:data:`MAX_CHECKED` candidates feasible at nominal values are checked, then the diagnosis names
+the check that fails at a corner most often). It is then verified by a seeded Monte-Carlo
+sample, uniform within the box (every part anywhere within its tolerance), through the same
+evaluator: the probability that every check holds, with its 95 % Wilson interval
+(:func:`govopt.study.wilson`), and the checks that fail in the sample - where the corners hold
+and the sample does not, a check is not monotone in a tolerance (no inner maximisation is done).
 
 The checks of the search bounds (``pendulum mass >= min`` ...) are not requirements on a made
 part and are left out of the worst case.
