@@ -376,6 +376,26 @@ class Requirements:
     leaf_width: tuple[float, float] = (0.003, 0.06)  # a leaf's section bounds, m
     leaf_thickness: tuple[float, float] = (0.0002, 0.006)
     max_bow_ratio: float = 0.2  # bow / length: the article's stated range of its eq. 8
+    #: robust requirements (issue 24): every check holds over a tolerance box. The spring's
+    #: EN 15800 quality grade (coil diameter, free length; the wire per its EN 10270 grade);
+    #: None: the spring is taken exact
+    robust_spring_grade: int | None = None
+    robust_dashpot: float = 0.0  # the dash-pot setting +- this fraction
+    robust_masses: float = 0.0  # the flying and central masses +- this fraction
+    robust_torque_slope: float = 0.0  # the engine's torque slope +- this fraction
+    #: what the fitter adjusts on assembly: the spring's free length by an adjusting nut, +- m
+    adjusting_nut: float = 0.0
+    #: the fitter sets the dash-pot valve within +- this fraction of the design's setting
+    dashpot_valve: float = 0.0
+    robust_samples: int = 2000  # Monte-Carlo verification: samples and seed
+    robust_seed: int = 0
+
+    @property
+    def robust(self) -> bool:
+        """Whether the requirements ask for a tolerance box (robust design)."""
+        return (self.robust_spring_grade is not None or self.robust_dashpot > 0
+                or self.robust_masses > 0 or self.robust_torque_slope > 0
+                or self.adjusting_nut > 0 or self.dashpot_valve > 0)
 
 
 @dataclass(frozen=True)
@@ -828,6 +848,23 @@ def _requirements(top: _Reader, governor: Governor) -> Requirements | None:
             min_fatigue_safety=req.number("min_fatigue_safety", required=False),
             surge_detuning=req.number("surge_detuning", required=False,
                                       default=d.surge_detuning, nonnegative=True),
+            robust_spring_grade=req.number("robust_spring_grade", required=False, low=0.5,
+                                           high=3.5, integer=True, range_text="1, 2 or 3"),
+            robust_dashpot=req.number("robust_dashpot", required=False, default=0.0,
+                                      nonnegative=True, high=0.5),
+            robust_masses=req.number("robust_masses", required=False, default=0.0,
+                                     nonnegative=True, high=0.5),
+            robust_torque_slope=req.number("robust_torque_slope", required=False, default=0.0,
+                                           nonnegative=True, high=0.5),
+            adjusting_nut=req.quantity("adjusting_nut", "length", required=False, default=0.0,
+                                       nonnegative=True),
+            dashpot_valve=req.number("dashpot_valve", required=False, default=0.0,
+                                     nonnegative=True, high=0.9),
+            robust_samples=req.number("robust_samples", required=False,
+                                      default=d.robust_samples, low=9, high=100001,
+                                      integer=True, range_text="[10, 100000]"),
+            robust_seed=req.number("robust_seed", required=False, default=d.robust_seed,
+                                   nonnegative=True, integer=True),
         )
         if governor.spring == "leaf":
             kw["max_bow_ratio"] = req.number("max_bow_ratio", required=False,

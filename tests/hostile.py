@@ -527,7 +527,8 @@ def spec_cases(path: Path) -> Iterator[Case]:
 
 #: seconds a mutation of these specs that is not refused when read takes here, about (most are
 #: refused later, quickly; for the selection's time budget)
-RUN_SECONDS = {"hamabe-design-fatigue": 0.5, "hamabe-design": 0.2, "spring_gravity-design": 0.15}
+RUN_SECONDS = {"hamabe-design-fatigue": 0.5, "hamabe-design": 0.2, "spring_gravity-design": 0.15,
+               "hamabe-design-robust": 0.6, "spring_loaded-design-robust": 0.15}
 
 
 def estimate(case: Case) -> float:

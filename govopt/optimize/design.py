@@ -39,6 +39,7 @@ from ..model import spring
 from ..spec import Design, Requirements, Spec
 from ..units import G_STANDARD, SI_UNITS
 from .kappa import Affine, KappaModel
+from .margins import margins_to_ends, window_centre
 
 #: Dash-pot grid, as multiples of the least damping that meets eq. (32) with its margin.
 DASHPOT_FACTORS = np.geomspace(1.0, 200.0, 25)
@@ -146,7 +147,9 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
     """For each candidate: the dash-pot values on a log grid that meet eq. (32) with its margin,
     give no over-regulation, settle within the limit for every load change and keep the
     vibration bound within its limit; and the best of them (fastest settling, or least
-    vibration for that objective). ``fatigue(swing)``: the candidates' least spring fatigue
+    vibration for that objective; for the mass objectives, which do not depend on it, the
+    centre of its admissible window on a log scale, :func:`~govopt.optimize.margins.window_centre`,
+    issue 24). ``fatigue(swing)``: the candidates' least spring fatigue
     safety under peak-to-peak swings (candidates x dash-pots; the vibration bound is used, so
     it errs safe), kept at ``requirements.min_fatigue_safety`` (default 1). Returns a dict of
     arrays over candidates."""
@@ -204,6 +207,8 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
     # but before every inadmissible one, so the pick is always an admissible dash-pot
     score = np.where(ok, vib if req.objective == "vibration" else settle, np.inf)
     best = np.argmin(np.where(ok, np.minimum(score, np.finfo(float).max), np.inf), axis=1)
+    if req.objective in ("moving_mass", "spring_mass"):  # indifferent to the dash-pot: margin
+        best = window_centre(f, ok)
     idx = np.arange(n)
     feasible = np.any(ok, axis=1)
     f_ok = np.where(ok, f, np.nan)
@@ -689,6 +694,10 @@ def design(spec: Spec):
                               "which needs its [material]")
     if spec.speed is None:
         raise InfeasibleError(f"{spec.path}: speed: missing: a design needs the speed range")
+    if req.robust:  # a tolerance box: the worst case over it (govopt.optimize.robust)
+        from .robust import robust_design
+
+        return robust_design(spec)
     if spec.governor.spring is None:  # a dead-weight governor: masses only
         cand, stats = dead_weight_search(spec, req)
         return _result(spec, req, cand, stats, None)
@@ -703,6 +712,18 @@ def design(spec: Spec):
     bound = continuous_bound(spec, req, km, lo, hi) \
         if req.objective in ("moving_mass", "spring_mass") and stats.pop("gp") else None
     return _result(spec, req, cand, stats, bound)
+
+
+def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict,
+              bound: dict | None = None):
+    """The chosen candidate re-evaluated and its optimiser's record (:func:`_result`), for the
+    searches of other modules (:mod:`govopt.optimize.robust`)."""
+    return _result(spec, req, cand, stats, bound)
+
+
+def check_grids(spec: Spec, req: Requirements) -> None:
+    """:func:`_check_grids`, for the searches of other modules."""
+    _check_grids(spec, req)
 
 
 def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: dict | None):
@@ -739,6 +760,7 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
             **({f"{gov.free_length_key}_m": cand.l0} if gov.spring is not None else {}),
             f"dashpot_{damping}": cand.f,
             f"dashpot_feasible_range_{damping}": [cand.f_lo, cand.f_hi],
+            **dashpot_margins(cand),
         },
         "continuous_bound": None if bound is None else {
             (f"objective_{unit}" if k == "objective" else k): v for k, v in bound.items()},
@@ -751,6 +773,16 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
                                        else bound["objective"]),
     }
     return res
+
+
+def dashpot_margins(cand: Candidate) -> dict:
+    """How far the chosen dash-pot may be set off before it leaves its feasible window
+    (:func:`govopt.optimize.margins.margins_to_ends`), in per cent; empty without a dash-pot."""
+    if not (cand.f > 0 and math.isfinite(cand.f_lo) and math.isfinite(cand.f_hi)):
+        return {}
+    down, up = margins_to_ends(cand.f, cand.f_lo, cand.f_hi)
+    return {"dashpot_margin_to_lower_end_percent": 100.0 * down,
+            "dashpot_margin_to_upper_end_percent": 100.0 * up}
 
 
 def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:

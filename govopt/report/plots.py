@@ -23,6 +23,8 @@ on the right-hand axis. The plots, each named by its *kind*:
   periodic forcing;
 * ``fatigue``: the spring's fatigue diagram with its load cycle under that vibration (EN 13906-1
   Annex A or Shigley §10-9), where the spec names a wire grade (issue 11's spring report).
+* ``speed-band``: a robust design's equilibrium speed at nominal values and its least and largest
+  over the tolerance box (issue 24, :mod:`govopt.optimize.robust`).
 
 matplotlib is imported only when a plot is drawn (``govopt --help`` never loads it); figures are
 :class:`matplotlib.figure.Figure` objects on the Agg canvas, so no GUI backend or pyplot state is
@@ -67,6 +69,7 @@ def kinds(res) -> list[str]:
         ("vibration-spectrum", bool(vib)),
         ("vibration-trace", bool(vib) and "response" in vib),
         ("fatigue", "diagram" in (_fatigue_loads(res) or {})),
+        ("speed-band", "speed_band" in ((res.optimisation or {}).get("robust") or {})),
     ) if present]
 
 
@@ -162,6 +165,31 @@ def characteristic(res, ax) -> None:
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=8.5)
     else:
         ax.legend(loc="upper left")
+
+
+def speed_band(res, ax) -> None:
+    """A robust design's speed band under its tolerances (issue 24): the equilibrium speed at
+    nominal values, and the least and largest over the tolerance box's corners (each at the
+    fitter's setting), against the configuration, with the required band."""
+    band = res.optimisation["robust"]["speed_band"]
+    st, spec = res.statics, res.spec
+    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
+    x, _ = _shown(res, xs)
+    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
+    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
+                    label="over the tolerance box (corners)")
+    xn, _ = _shown(res, st.alpha)
+    ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
+    if spec.speed is not None:
+        a, b = spec.speed.omega_inner * RPM, spec.speed.omega_outer * RPM
+        ax.axhline(a, color="tab:green", ls="--", lw=1)
+        ax.axhline(b, color="tab:green", ls="--", lw=1,
+                   label=f"spec's speed range {a:.4g}-{b:.4g} rpm")
+    ax.set_xlabel(_config_label(res))
+    ax.set_ylabel("speed (rpm)")
+    _rad_s_axis(ax)
+    _title(res, ax, "speed band under the tolerances")
+    ax.legend(loc="upper left")
 
 
 def controlling_force(res, ax) -> None:
@@ -435,7 +463,7 @@ def fatigue(res, ax) -> None:
 
 DRAW = {"characteristic": characteristic, "controlling-force": controlling_force, "k2": k2,
         "vyshnegradsky": vyshnegradsky, "vibration-spectrum": vibration_spectrum,
-        "vibration-trace": vibration_trace, "fatigue": fatigue}
+        "vibration-trace": vibration_trace, "fatigue": fatigue, "speed-band": speed_band}
 
 
 # --------------------------------------------------------------------------------------------

@@ -48,7 +48,7 @@ _SUFFIXES = (
     ("_N_m_s_per_rad", "N m s/rad"), ("_N_s_per_m", "N s/m"), ("_rad2_s2", "rad^2/s^2"),
     ("_N_per_m", "N/m"), ("_kg_m2", "kg*m^2"), ("_rad_s", "rad/s"), ("_per_s", "1/s"),
     ("_N_m", "N*m"), ("_Pa", "Pa"), ("_kg", "kg"), ("_Hz", "Hz"), ("_rad", "rad"),
-    ("_deg", "deg"), ("_J", "J"), ("_N", "N"), ("_m", "m"), ("_s", "s"),
+    ("_deg", "deg"), ("_J", "J"), ("_N", "N"), ("_m", "m"), ("_s", "s"), ("_percent", "%"),
 )
 
 
@@ -492,10 +492,75 @@ def optimisation(res) -> list[Table]:
         out.append(Table("Continuous bound's design (not buildable: a lower bound)",
                          ["quantity", "unit", "value"],
                          _quantities(bound, skip=(f"objective_{unit}",)), properties=True))
+    out += robustness(opt.get("robust"))
     sens = [s for s in opt.get("sensitivities") or [] if isinstance(s, Mapping)]
     if sens:
         out.append(Table("Sensitivities: +1 % on a requirement",
                          ["requirement", "change (%)", "objective change (%)"],
                          [[s.get("requirement"), cell(s.get("change_percent")),
                            cell(s.get("objective_change_percent"))] for s in sens]))
+    return out
+
+
+def robustness(rob) -> list[Table]:
+    """A robust design's record (issue 24, :mod:`govopt.optimize.robust`): the tolerance box,
+    the worst case of each check over its corners beside the nominal value, the adjusting nut,
+    the Monte-Carlo verification and what robustness cost."""
+    if not isinstance(rob, Mapping):
+        return []
+    tol = rob.get("tolerances") or {}
+    rows = [["EN 15800 spring grade", "", cell(tol.get("spring_grade"))],
+            ["dash-pot setting +-", "%", cell(100.0 * (tol.get("dashpot_fraction") or 0.0))],
+            ["flying and central masses +-", "%",
+             cell(100.0 * (tol.get("masses_fraction") or 0.0))],
+            ["engine torque slope +-", "%",
+             cell(100.0 * (tol.get("torque_slope_fraction") or 0.0))]]
+    rows += [[f"{r[0]} +-", r[1], r[2]] for r in _quantities(tol.get("half_widths") or {})]
+    for key, label in (("adjusting_nut", "adjusting nut"), ("dashpot_valve", "dash-pot valve")):
+        item = rob.get(key)
+        if isinstance(item, Mapping):
+            rows += [[f"{label}: {r[0]}", r[1], r[2]] for r in _quantities(item)]
+        else:
+            rows.append([label, "", "not adjusted by the fitter"])
+    rows.append(["corners of the box evaluated", "", cell(rob.get("corners"))])
+    band = rob.get("speed_band") or {}
+    if band.get("lowest_rad_s"):
+        rpm = 30.0 / math.pi
+        for end, i in (("inner", 0), ("outer", -1)):
+            rows.append([f"speed at the {end} end over the box", "rpm",
+                         f"{band['lowest_rad_s'][i] * rpm:.5g} .. "
+                         f"{band['highest_rad_s'][i] * rpm:.5g}"])
+    mc = rob.get("monte_carlo") or {}
+    if mc:
+        lo, hi = (mc.get("ci95") or [None, None])[:2]
+        rows += [["Monte-Carlo samples (seed)", "", f"{mc.get('samples')} ({mc.get('seed')}), "
+                  f"{mc.get('distribution')}"],
+                 ["probability every check holds", "%", cell(100.0 * mc["probability"])],
+                 ["  95 % Wilson interval", "%", f"{100.0 * lo:.4g} .. {100.0 * hi:.4g}"]]
+        rows += [[f"  samples failing '{name}'", "", cell(count)]
+                 for name, count in (mc.get("failing_checks") or {}).items()]
+    cost = rob.get("cost") or {}
+    for key, value in cost.items():
+        if isinstance(value, int | float):
+            label, unit = key_unit(key)
+            v, u = shown(value, unit)
+            rows.append([f"robustness cost: {label}", u, cell(v)])
+    notes = [str(n) for n in tol.get("notes") or []]
+    out = [Table("Robust design: the tolerance box (issue 24)", ["quantity", "unit", "value"],
+                 rows, notes, properties=True)]
+    checks = [c for c in rob.get("checks") or [] if isinstance(c, Mapping)]
+    if checks:
+        body = []
+        for c in checks:
+            nominal, u = shown(c.get("nominal"), c.get("unit", ""))
+            worst, _ = shown(c.get("worst_case"), c.get("unit", ""))
+            limit, _ = shown(c.get("limit"), c.get("unit", ""))
+            corner = " ".join(f"{k}{v}" for k, v in (c.get("worst_corner") or {}).items())
+            body.append([c.get("check"), cell(nominal), cell(worst), c.get("sense", ""),
+                         cell(limit), u,
+                         cell(100.0 * c.get("worst_margin", float("nan"))), corner,
+                         "PASS" if c.get("holds") else "FAIL"])
+        out.append(Table("Worst case over the tolerance box (corners; after adjustment)",
+                         ["check", "nominal", "worst case", "sense", "limit", "unit",
+                          "worst margin (%)", "worst corner", "result"], body))
     return out

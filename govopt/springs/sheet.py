@@ -103,7 +103,9 @@ def _f(x) -> float:
     return float(np.asarray(x, dtype=float))
 
 
-def _wire_standard(mat: Material) -> str | None:
+def wire_standard(mat: Material) -> str | None:
+    """The wire standard whose diameter tolerances apply to the grade (EN 10270-1 or -2), or
+    None."""
     for std in tol.WIRE_TOLERANCE:
         if mat.grade.startswith(std):
             return std
@@ -119,7 +121,7 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
             "A_L0": _f(tol.free_length_tolerance(d, D, n, R, grade)),
             "A_F1": _f(tol.force_tolerance(F1, d, D, n, grade)),
             "A_F2": _f(tol.force_tolerance(F2, d, D, n, grade))}
-    std = _wire_standard(mat)
+    std = wire_standard(mat)
     if std:
         tols["A_d"] = _f(tol.wire_diameter_tolerance(d, std))
     notes = ("tolerances on F1, F2 (with L0 free) after EN 15800; A_L0 applies if no force "
@@ -142,7 +144,7 @@ def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,
     R = _f(hx.stiffness(d, D, n, G))
     L0 = _f(hx.extension_free_length(d, D, n_body))
     tols = {"A_D": _f(tol.coil_diameter_tolerance(D, D / d, grade))}
-    std = _wire_standard(mat)
+    std = wire_standard(mat)
     if std:
         tols["A_d"] = _f(tol.wire_diameter_tolerance(d, std))
     notes = ("EN 15800 covers compression springs: force and length tolerances of this "

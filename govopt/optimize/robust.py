@@ -1,0 +1,486 @@
+"""Robust design: every check holds over a tolerance box, after the fitter's adjustment (issue 24).
+
+``[requirements]`` may ask that the design hold for parts made anywhere within their tolerances:
+
+- the spring, per ``robust_spring_grade`` (EN 15800 quality grade 1-3): the mean coil diameter
+  ``+-A_D`` (EN 15800 Table 1), the free length ``+-A_L0`` of a compression spring (EN 15800;
+  an extension spring's by agreement with the maker, so not included, as on the spring sheet)
+  and the wire diameter per its EN 10270 standard (none for a material without a wire grade) -
+  the tolerances of the spring sheet (:mod:`govopt.springs.tolerances`,
+  :func:`govopt.springs.sheet.compression_sheet`);
+- the dash-pot setting ``+-robust_dashpot`` (a fraction), the flying and central masses
+  ``+-robust_masses`` and the engine's torque slope ``+-robust_torque_slope``;
+
+and may name what the fitter adjusts on assembly: ``adjusting_nut``, the spring's free length
+(its initial extension) by a nut, within ``+-adjusting_nut`` (m); ``dashpot_valve``, the dash-pot
+valve, within ``+-dashpot_valve`` of the design's setting (a fraction; the setting's tolerance
+``robust_dashpot`` applies on top).
+
+Method. The nominal search's candidates (statics screen and spring checks,
+:func:`govopt.optimize.design.spring_screen`; dash-pot in the centre of its window,
+:func:`govopt.optimize.design.dashpot_window`) are visited in objective order, and each one that
+is feasible at nominal values is evaluated at every corner of its tolerance box (the checks are
+taken monotone in each tolerance, so the worst case is at a corner) by the bulk evaluator
+(:func:`govopt.bulk.evaluate_many`, vectorised over candidates x corners). With an adjusting
+nut or valve, a corner holds if some setting on a grid over their ranges makes every check hold
+(the fitter sets them for the parts at hand). The first candidate that holds at every corner is
+the robust optimum (the least objective among the catalogue's candidates that do; at most
+:data:`MAX_CHECKED` candidates feasible at nominal values are checked, then the diagnosis names
+the check that fails at a corner most often). It is then verified by a seeded Monte-Carlo
+sample, uniform within the box (every part anywhere within its tolerance), through the same
+evaluator: the probability that every check holds, with its 95 % Wilson interval
+(:func:`govopt.study.wilson`), and the checks that fail in the sample - where the corners hold
+and the sample does not, a check is not monotone in a tolerance (no inner maximisation is done).
+
+The checks of the search bounds (``pendulum mass >= min`` ...) are not requirements on a made
+part and are left out of the worst case.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..errors import InfeasibleError
+from ..spec import Design, Requirements, Spec
+from . import design as dz
+
+#: the fitter's settings of the adjusting nut and of the dash-pot valve tried over each one's
+#: range (odd: the nominal setting included)
+NUT_SETTINGS = 9
+#: the torque slope's levels in the Monte-Carlo sample (the slope is a spec value, not a design
+#: column: each level is one bulk evaluation)
+TORQUE_LEVELS = 11
+#: batches of candidates evaluated at their corners, and the most checked before giving up
+BATCHES = (8, 32, 128)
+MAX_CHECKED = 1024
+#: the search bounds' rows (limits of the catalogue search, not of a made part)
+BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diameter <= max",
+               "coil radius >= min", "coil radius <= max", "active turns >= min",
+               "active turns <= max", "leaf width", "leaf thickness")
+
+
+def nominal_requirements(req: Requirements) -> Requirements:
+    """The requirements without the tolerance box (the nominal design's)."""
+    return replace(req, robust_spring_grade=None, robust_dashpot=0.0, robust_masses=0.0,
+                   robust_torque_slope=0.0, adjusting_nut=0.0, dashpot_valve=0.0)
+
+
+def spring_tolerances(spec: Spec, grade: int, d, r, n):
+    """The spring maker's tolerances of helical springs ``(d, r, n)`` (m, m, -; arrays), as the
+    spring sheet states them: ``(d_tol, r_tol, l0_tol)``, +- m, on the wire diameter (EN 10270
+    per the wire grade's standard; 0 without one), the mean coil radius (``A_D / 2``, EN 15800
+    Table 1; NaN outside the table) and the free length in the type's form (``A_L0`` of a
+    compression spring, EN 15800, over ``spring_length_factor``; 0 for an extension spring)."""
+    from ..analysis import spring_engineering as se
+    from ..springs import helical as hx
+    from ..springs import sheet
+    from ..springs import tolerances as tl
+
+    d, r, n = (np.asarray(v, dtype=float) for v in (d, r, n))
+    mat = se.wire(spec.material)
+    D = 2.0 * r
+    r_tol = tl.coil_diameter_tolerance(D, D / d, grade) / 2.0
+    std = sheet.wire_standard(mat)
+    d_tol = tl.wire_diameter_tolerance(d, std) if std else np.zeros_like(d)
+    if se.KINDS[spec.governor.spring] == "compression":
+        rate = hx.stiffness(d, D, n, np.asarray(mat.shear_modulus(d), dtype=float))
+        l0_tol = tl.free_length_tolerance(d, D, n, rate, grade) \
+            / spec.governor.spring_length_factor
+    else:
+        l0_tol = np.zeros_like(d)
+    return d_tol + 0.0 * d, r_tol + 0.0 * d, l0_tol + 0.0 * d
+
+
+def box_notes(spec: Spec, req: Requirements) -> list[str]:
+    """What the tolerance box leaves out, in words."""
+    from ..analysis import spring_engineering as se
+    from ..springs import sheet
+
+    notes = []
+    if req.robust_spring_grade is not None:
+        if sheet.wire_standard(se.wire(spec.material)) is None:
+            notes.append("no wire standard with tolerances for this material: wire diameter "
+                         "taken exact")
+        if se.KINDS[spec.governor.spring] != "compression":
+            notes.append("free length of an extension spring by agreement with the maker "
+                         "(EN 15800 covers compression springs): not toleranced")
+    return notes
+
+
+@dataclass
+class Box:
+    """Tolerance half-widths of candidates (arrays, SI): the design columns ``fields`` (name ->
+    half-width, absolute) and the torque slope's relative half-width."""
+
+    fields: dict
+    torque: float
+
+    def active(self) -> list[str]:
+        return [k for k, v in self.fields.items() if np.any(v > 0)]
+
+
+def candidate_box(spec: Spec, req: Requirements, cols: dict) -> Box:
+    """The tolerance box of candidates given as design columns ``cols`` (arrays)."""
+    n = len(cols["pendulum_mass"])
+    out = {}
+    if req.robust_spring_grade is not None:
+        if spec.governor.spring in (None, "leaf"):
+            raise InfeasibleError(f"{spec.path}: requirements.robust_spring_grade: EN 15800 "
+                                  "tolerances are for helical springs")
+        d_tol, r_tol, l0_tol = spring_tolerances(spec, req.robust_spring_grade,
+                                                 cols["wire_diameter"], cols["coil_radius"],
+                                                 cols["active_turns"])
+        out.update(wire_diameter=d_tol, coil_radius=r_tol, free_half_length=l0_tol)
+    if req.robust_dashpot > 0:
+        out["dashpot"] = req.robust_dashpot * np.nan_to_num(cols["dashpot"])
+    if req.robust_masses > 0:
+        out["pendulum_mass"] = req.robust_masses * cols["pendulum_mass"]
+        out["central_mass"] = req.robust_masses * np.nan_to_num(cols["central_mass"])
+    return Box({k: np.broadcast_to(v, (n,)).astype(float) for k, v in out.items()},
+               req.robust_torque_slope)
+
+
+def _evaluate(spec: Spec, req: Requirements, cols: dict, torque: np.ndarray):
+    """Bulk evaluation of design columns, each row at its relative torque-slope change
+    ``torque`` (a few levels, one evaluation each): the frame, rows in order."""
+    import pandas as pd
+
+    from ..bulk import evaluate_many
+
+    vibration = req.max_vibration is not None or req.objective == "vibration" or (
+        spec.material is not None and spec.material.grade is not None)
+    frames, index = [], []
+    for level in np.unique(torque):
+        sel = np.nonzero(torque == level)[0]
+        s = spec if level == 0 else replace(spec, engine=replace(
+            spec.engine, torque_slope=spec.engine.torque_slope * (1.0 + level)))
+        frames.append(evaluate_many(s, {k: v[sel] for k, v in cols.items()},
+                                    vibration=vibration))
+        index.append(sel)
+    frame = pd.concat(frames, ignore_index=True)
+    return frame.iloc[np.argsort(np.concatenate(index), kind="stable")].reset_index(drop=True)
+
+
+def robust_checks(frame) -> list[str]:
+    """The checks of a bulk frame that the tolerance box must keep (all but the bounds')."""
+    from ..bulk import check_names
+
+    return [c for c in check_names(frame.columns) if not any(b in c for b in BOUND_NAMES)]
+
+
+def holds(frame) -> np.ndarray:
+    """Rows where every robust check holds (a check that does not apply holds; an error row
+    does not)."""
+    from ..bulk import passed_column
+
+    ok = (frame["status"] != "error").to_numpy(dtype=bool).copy()
+    for c in robust_checks(frame):
+        p = frame[passed_column(c)]
+        ok = ok & (p.isna() | (p == True)).to_numpy(dtype=bool)  # noqa: E712 (nullable booleans)
+    return ok
+
+
+def nut_settings(req: Requirements):
+    """The fitter's settings tried: ``(nut, valve)``, the nut's free-length change (m) and the
+    valve's factor on the dash-pot, arrays over the grid of both ranges, least change first
+    (the nominal setting, 0 and 1, first)."""
+    nut = np.linspace(-req.adjusting_nut, req.adjusting_nut, NUT_SETTINGS) \
+        if req.adjusting_nut > 0 else np.zeros(1)
+    half = NUT_SETTINGS // 2 + 1  # each side of the nominal 1, on a log scale
+    valve = np.concatenate([np.geomspace(1.0 - req.dashpot_valve, 1.0, half),
+                            np.geomspace(1.0, 1.0 + req.dashpot_valve, half)[1:]]) \
+        if req.dashpot_valve > 0 else np.ones(1)
+    a, v = (x.ravel() for x in np.meshgrid(nut, valve, indexing="ij"))
+    change = (np.abs(a) / max(req.adjusting_nut, 1e-300)
+              + np.abs(np.log(v)) / max(math.log1p(req.dashpot_valve), 1e-300))
+    o = np.argsort(np.round(change, 12), kind="stable")
+    return a[o], v[o]
+
+
+def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
+    """Every corner of each candidate's box, each at every nut setting: the evaluated frame and
+    its candidate, corner and nut indices (flat arrays), and the corners' sign table."""
+    names = box.active()
+    dims = names + (["torque_slope"] if box.torque > 0 else [])
+    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=len(dims)))).reshape(-1,
+                                                                                     len(dims))
+    nut, valve = nut_settings(req)
+    n = len(cols["pendulum_mass"])
+    cand, corner, k = (a.ravel() for a in np.meshgrid(np.arange(n), np.arange(len(signs)),
+                                                         np.arange(nut.size), indexing="ij"))
+    rows = {f: v[cand].copy() for f, v in cols.items()}
+    for j, name in enumerate(names):
+        rows[name] = rows[name] + signs[corner, j] * box.fields[name][cand]
+    rows["free_half_length"] = rows["free_half_length"] + nut[k]
+    rows["dashpot"] = rows["dashpot"] * valve[k]
+    torque = signs[corner, -1] * box.torque if box.torque > 0 else np.zeros(cand.size)
+    frame = _evaluate(spec, req, rows, torque)
+    return frame, cand, corner, k, signs, dims
+
+
+def corner_verdict(frame, n: int, n_corners: int, n_nut: int):
+    """Per candidate: whether every corner holds at some nut setting, and per corner the first
+    (least) setting index that holds (-1: none)."""
+    ok = holds(frame).reshape(n, n_corners, n_nut)
+    first = np.where(ok.any(axis=2), np.argmax(ok, axis=2), -1)
+    return np.all(first >= 0, axis=1), first
+
+
+def _design_columns(cat, rows, cols, l0, km, f) -> dict:
+    c = km.central[rows, 0]
+    out = {"pendulum_mass": km.m[rows, 0], "free_half_length": l0, "dashpot": f,
+           "central_mass": np.where(c > 0, c, np.nan)}
+    out.update({k: v[cols] for k, v in cat.fields.items()})
+    return out
+
+
+def robust_search(spec: Spec, req: Requirements):
+    """The least-objective candidate that holds at every corner of its tolerance box:
+    ``(Candidate, stats)``; raises :class:`InfeasibleError` when none does."""
+    if spec.governor.spring is None:
+        raise InfeasibleError(f"{spec.path}: requirements.robust_*: a robust design is for "
+                              "spring governors (a dead-weight type's masses alone: not yet)")
+    if req.objective not in ("moving_mass", "spring_mass"):
+        raise InfeasibleError(f"{spec.path}: requirements.objective: a robust design (robust_* "
+                              f"keys) minimises the moving or spring mass, not {req.objective}")
+    dz.check_grids(spec, req)
+    grid, km, lo, hi, parts = dz.statics_window(spec, req)
+    if not np.any(lo <= hi):
+        raise InfeasibleError(dz.diagnose(spec, req, "statics", parts))
+    cat = dz.catalogue(spec, req)
+    rows, cols, l0, _ = dz.spring_screen(spec, req, km, lo, hi, cat)
+    values = dz.objective_values(req, km.m[rows, 0], cat.mass[cols],
+                                 central=km.central[rows, 0])
+    order = np.argsort(values, kind="stable")
+    stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0}
+    failing: dict[str, int] = {}
+    start, b = 0, 0
+    while start < order.size and stats["nominal_feasible_checked"] < MAX_CHECKED:
+        size = BATCHES[min(b, len(BATCHES) - 1)]
+        first, sel = start, order[start:start + size]
+        start, b = start + size, b + 1
+        fat = None if cat.fatigue is None else (
+            lambda swing, s=sel: cat.fatigue(cols[s], l0[s], swing))
+        win = dz.dashpot_window(spec, req, km, grid, rows[sel], cat.kappa[cols[sel]],
+                                fatigue=fat)
+        good = np.nonzero(win["feasible"])[0]
+        if good.size == 0:
+            continue
+        s = sel[good]
+        dcols = _design_columns(cat, rows[s], cols[s], l0[s], km, win["f"][good])
+        if spec.engine is None or not spec.load_changes:
+            dcols["dashpot"] = np.full(s.size, np.nan)
+        box = candidate_box(spec, req, dcols)
+        finite = np.all([np.isfinite(v) for v in box.fields.values()], axis=0) \
+            if box.fields else np.ones(s.size, bool)
+        stats["nominal_feasible_checked"] += int(s.size)
+        if not finite.any():  # outside the tolerance tables: not certifiable
+            continue
+        frame, *_, signs, _ = corners(spec, req, {k: v[finite] for k, v in dcols.items()},
+                                      Box({k: v[finite] for k, v in box.fields.items()},
+                                          box.torque))
+        stats["corner_evaluations"] += len(frame)
+        n_nut = nut_settings(req)[0].size
+        ok_f, _ = corner_verdict(frame, int(finite.sum()), len(signs), n_nut)
+        for name, count in failures(frame, int(finite.sum()), len(signs), n_nut).items():
+            failing[name] = failing.get(name, 0) + count
+        ok = np.zeros(s.size, bool)
+        ok[finite] = ok_f
+        if ok.any():
+            j = int(np.argmax(ok))  # the first in objective order
+            i, g = s[j], good[j]
+            stats["candidates_visited"] = int(first + g + 1)
+            cand = dz.Candidate(float(km.m[rows[i], 0]),
+                                {k: float(v[cols[i]]) for k, v in cat.fields.items()},
+                                float(cat.kappa[cols[i]]), float(l0[i]), float(win["f"][g]),
+                                float(values[i]), float(win["settling"][g]),
+                                float(win["f_lo"][g]), float(win["f_hi"][g]),
+                                float(km.central[rows[i], 0]))
+            return cand, stats
+    worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
+    which = "; ".join(f"'{k}' fails at a corner for {v}" for k, v in worst) or \
+        "none is within the EN 15800 / EN 10270 tables"
+    raise InfeasibleError(
+        f"{spec.path}: infeasible: requirements.robust_*: no candidate holds every check over "
+        f"its tolerance box ({stats['nominal_feasible_checked']} candidates feasible at nominal "
+        f"values checked best first, at most {MAX_CHECKED}: {which}); narrow the tolerances, "
+        f"add requirements.adjusting_nut, or widen the bounds")
+
+
+def failures(frame, n: int, n_corners: int, n_nut: int) -> dict:
+    """Per robust check, on how many of ``n`` candidates it fails at some corner whatever the
+    nut's setting (for the diagnosis)."""
+    from ..bulk import passed_column
+
+    out = {}
+    for c in robust_checks(frame):
+        p = frame[passed_column(c)]
+        bad = (~(p.isna() | (p == True))).to_numpy(dtype=bool)  # noqa: E712
+        count = int(bad.reshape(n, n_corners, n_nut).all(axis=2).any(axis=1).sum())
+        if count:
+            out[c] = count
+    return out
+
+
+def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
+    """Seeded Monte-Carlo verification of one design: every toleranced value uniform within its
+    box (``requirements.robust_samples`` samples, ``robust_seed``), the nut set by the fitter as
+    at the corners; the probability that every check holds with its 95 % Wilson interval."""
+    from ..bulk import design_arrays
+    from ..study import wilson
+
+    base = {k: v[:1] for k, v in design_arrays(spec.with_design(design), [design]).items()}
+    box = candidate_box(spec, req, base)
+    rng = np.random.default_rng(req.robust_seed)
+    n = req.robust_samples
+    rows = {k: np.repeat(v, n) for k, v in base.items()}
+    for name in box.active():
+        rows[name] = rows[name] + box.fields[name][0] * rng.uniform(-1.0, 1.0, n)
+    torque = np.zeros(n)
+    if box.torque > 0:
+        levels = np.linspace(-box.torque, box.torque, TORQUE_LEVELS)
+        torque = levels[rng.integers(0, TORQUE_LEVELS, n)]
+    frame = _evaluate(spec, req, rows, torque)
+    ok = holds(frame)
+    adjusted = 0
+    if (req.adjusting_nut > 0 or req.dashpot_valve > 0) and not ok.all():
+        bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones
+        nut, valve = (x[1:] for x in nut_settings(req))
+        rep = {k: np.repeat(v[bad], nut.size) for k, v in rows.items()}
+        rep["free_half_length"] = rep["free_half_length"] + np.tile(nut, bad.size)
+        rep["dashpot"] = rep["dashpot"] * np.tile(valve, bad.size)
+        fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], nut.size))) \
+            .reshape(bad.size, nut.size).any(axis=1)
+        ok[bad] = fixed
+        adjusted = int(fixed.sum())
+    k = int(ok.sum())
+    lo, hi = wilson(k, n)
+    # the checks that fail in the sample before any adjustment (a failure inside a box whose
+    # corners hold: the check is not monotone in a tolerance)
+    failing = failures(frame.iloc[np.nonzero(~ok)[0]], int((~ok).sum()), 1, 1) if k < n else {}
+    return {"samples": n, "seed": req.robust_seed, "distribution": "uniform within the box",
+            "holds": k, "adjusted_by_the_fitter": adjusted, "probability": k / n,
+            "failing_checks": failing,
+            "ci95": [lo, hi]}
+
+
+def robust_design(spec: Spec):
+    """The robust design of the spec (see the module docstring): the chosen design re-evaluated
+    by :func:`govopt.evaluate` with, in ``optimisation["robust"]``, the box, the worst case of
+    each check beside its nominal value, the adjusting nut's range and nominal setting, the
+    Monte-Carlo verification and the cost against the nominal optimum."""
+    req = dz.requirements(spec)
+    nominal_req = nominal_requirements(req)
+    t0 = time.perf_counter()
+    nominal = dz.design(replace(spec, requirements=nominal_req))
+    t_nominal = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    cand, stats = robust_search(spec, req)
+    res = dz.result_of(spec, req, cand, stats, None)
+    record = robust_record(spec, req, cand, res.checks)
+    record["monte_carlo"] = monte_carlo(spec, req, design_of(spec, cand))
+    t_robust = time.perf_counter() - t0
+    unit = res.optimisation["objective"]["unit"]
+    v_nom = nominal.optimisation["objective"][f"value_{unit}"]
+    record["cost"] = {f"nominal_objective_{unit}": v_nom,
+                      f"robust_objective_{unit}": cand.objective,
+                      "increase_percent": 100.0 * (cand.objective / v_nom - 1.0),
+                      "nominal_design": nominal.optimisation["design"]}
+    record["time_s"] = {"nominal_design": t_nominal, "robust_search_and_verification": t_robust}
+    res.optimisation["robust"] = record
+    return res
+
+
+def design_of(spec: Spec, cand) -> Design:
+    """The candidate as a :class:`~govopt.spec.Design`."""
+    return Design(pendulum_mass=cand.m, **cand.spring, free_half_length=cand.l0,
+                  central_mass=cand.central or None,
+                  dashpot=None if math.isnan(cand.f) else cand.f)
+
+
+def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
+    """The box of the chosen design, the worst case of each check at its corners beside the
+    nominal value (SI; unit, limit and sense from the evaluated ``checks``), and the adjusting
+    nut's range."""
+    from ..bulk import design_arrays, margin_column, passed_column, value_column
+
+    d = design_of(spec, cand)
+    cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}
+    box = candidate_box(spec, req, cols)
+    frame, _, _, _, signs, dims = corners(spec, req, cols, box)
+    nut, valve = nut_settings(req)
+    ok, first = corner_verdict(frame, 1, len(signs), nut.size)
+    nominal = _evaluate(spec, req, cols, np.zeros(1))
+    # the worst case: over the corners, each at the setting the fitter uses there
+    use = np.array([c * nut.size + max(int(first[0, c]), 0) for c in range(len(signs))])
+    at = frame.iloc[use].reset_index(drop=True)
+    evaluated = {c.name: c for c in checks}
+    checks = []
+    for name in robust_checks(frame):
+        m = at[margin_column(name)].to_numpy(dtype=float)
+        if not np.isfinite(m).any():
+            continue
+        w = int(np.nanargmin(m))
+        c = evaluated.get(name)
+        checks.append({"check": name, "unit": c.unit if c else "",
+                       "sense": c.sense if c else "", "limit": c.limit if c else math.nan,
+                       "nominal": float(nominal[value_column(name)].iloc[0]),
+                       "worst_case": float(at[value_column(name)].iloc[w]),
+                       "worst_margin": float(m[w]),
+                       "worst_corner": {dims[j]: ("+" if signs[w, j] > 0 else "-")
+                                        for j in range(len(dims))},
+                       "holds": bool((at[passed_column(name)].isna()
+                                      | (at[passed_column(name)] == True)).all())})  # noqa: E712
+    used = np.maximum(first[0], 0)
+    band = speed_band(spec, at)
+    nominal_ok = bool(holds(nominal)[0])  # nominal parts at the nominal setting
+    damping = spec.governor.key_unit("damping")
+    halves = {f"{k}_m" if k in ("wire_diameter", "coil_radius", "free_half_length")
+              else f"{spec.governor.mass_key}_mass_kg" if k == "pendulum_mass"
+              else f"{k}_kg" if k.endswith("mass") else f"{k}_{damping}": float(v[0])
+              for k, v in box.fields.items() if v[0] > 0}
+    return {
+        "tolerances": {"spring_grade": req.robust_spring_grade,
+                       "dashpot_fraction": req.robust_dashpot,
+                       "masses_fraction": req.robust_masses,
+                       "torque_slope_fraction": req.robust_torque_slope,
+                       "half_widths": halves, "notes": box_notes(spec, req)},
+        "corners": len(signs), "holds_at_every_corner": bool(ok[0]),
+        "speed_band": band,
+        "checks": checks,
+        "adjusting_nut": None if req.adjusting_nut <= 0 else {
+            "range_m": [-req.adjusting_nut, req.adjusting_nut],
+            "needed_range_m": [float(nut[used].min()), float(nut[used].max())],
+            "nominal_setting_m": 0.0 if nominal_ok else None},
+        "dashpot_valve": None if req.dashpot_valve <= 0 else {
+            f"range_{damping}": [cand.f * (1 - req.dashpot_valve),
+                                 cand.f * (1 + req.dashpot_valve)],
+            f"needed_range_{damping}": [float(cand.f * valve[used].min()),
+                                        float(cand.f * valve[used].max())],
+            f"nominal_setting_{damping}": cand.f if nominal_ok else None},
+    }
+
+
+def speed_band(spec: Spec, frame) -> dict:
+    """The equilibrium speed over the configurations (Hamabe eq. 12 by virtual work,
+    :func:`govopt.analysis.statics.omega_squared`) at nominal values and its least and largest
+    over the designs of ``frame`` (the box's corners, each at the fitter's setting): the speed
+    band the tolerances give, rad/s, against the configuration (the type's unit)."""
+    from ..analysis import statics
+
+    x = statics.configurations(spec)
+    gov = spec.governor
+    col = {k: frame[c].to_numpy(dtype=float)[:, None] for k, c in (
+        ("m", f"{gov.mass_key}_mass_kg"), ("kappa", "stiffness_N_per_m"),
+        ("l0", f"{gov.free_length_key}_m"), ("central", "central_mass_kg"))}
+    with np.errstate(invalid="ignore"):
+        w = np.sqrt(statics.omega_squared(spec, x[None, :], col["m"], col["kappa"], col["l0"],
+                                          np.nan_to_num(col["central"])))
+    unit = "rad" if spec.governor.coordinate == "angle" else "m"
+    return {f"configuration_{unit}": x.tolist(), "lowest_rad_s": np.nanmin(w, axis=0).tolist(),
+            "highest_rad_s": np.nanmax(w, axis=0).tolist()}
