@@ -99,7 +99,7 @@ def test_dashpot_margins_in_text_and_json():
     assert run.exit_code == 0, run.output
     d = json.loads(run.stdout)["design"]
     assert d["dashpot_margin_to_upper_end_percent"] >= 20
-    text = invoke(["design", SPEC]).stdout
+    text = invoke(["design", SPEC, "--full"]).stdout
     assert "dashpot margin to lower end   %" in text and "dashpot margin to upper end   %" in text
 
 
@@ -248,7 +248,7 @@ def test_bad_robust_keys_are_one_line_errors(tmp_path, line, key):
 
 
 def test_robust_text_report():
-    run = invoke(["design", ROBUST])
+    run = invoke(["design", ROBUST, "--full"])
     assert run.exit_code == 0, run.output
     assert "Worst case over the tolerance box" in run.stdout
     assert "probability every check holds" in run.stdout
