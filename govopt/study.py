@@ -19,6 +19,7 @@ and plots (:mod:`govopt.report.study_plots`) are read back from the database.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import itertools
 import json
@@ -540,6 +541,11 @@ def spec_digest(data: dict) -> str:
     return hashlib.sha256(_canonical(data).encode()).hexdigest()
 
 
+def study_digest(definition: dict) -> str:
+    """The key of a study's definition (:meth:`Study.definition`, as JSON reads it back)."""
+    return spec_digest(json.loads(json.dumps(definition, default=str)))
+
+
 def _input_columns(spec: Spec, point: dict) -> dict:
     """The point's inputs as written (``KEY``) and in SI (``KEY [unit]``), from the variant's
     parsed entries."""
@@ -954,28 +960,139 @@ def decode(layout: list, numbers: list[bytes], texts: list[str]) -> pd.DataFrame
     return pd.DataFrame(cols)
 
 
+#: the tables of a govopt study database (a file that has them is one)
+_TABLES = ("layouts", "meta", "points")
+#: seconds a writer waits for another's transaction (a chunk's rows) before giving up
+BUSY_SECONDS = 30.0
+
+
+def _describe(exc: sqlite3.Error) -> str:
+    """What an SQLite error means for a study database, in words (one line)."""
+    text = str(exc)
+    if "malformed" in text or "corrupt" in text:
+        return (f"the study database is damaged (SQLite: {text}); 'govopt study run --force' "
+                "starts it afresh")
+    if "not a database" in text:
+        return "not a govopt study database (not an SQLite file)"
+    if "locked" in text or "busy" in text:
+        return (f"the study database is busy: another process kept it locked for more than "
+                f"{BUSY_SECONDS:g} s (SQLite: {text})")
+    if "readonly" in text or "read-only" in text:
+        return f"the study database cannot be written (SQLite: {text})"
+    if "unable to open" in text:
+        return f"cannot open the study database (SQLite: {text})"
+    return f"study database error (SQLite: {text})"
+
+
+def _uri(path: Path, **options) -> str:
+    from urllib.parse import quote
+
+    query = "&".join(f"{k}={v}" for k, v in options.items())
+    return f"file:{quote(str(path.absolute()))}?{query}"
+
+
+def is_study_database(path: str | Path, *, empty: bool = False) -> bool:
+    """Whether ``path`` is a govopt study database (an SQLite file with the study's tables;
+    with ``empty``, or with no tables at all: one being created), looked at read-only: nothing
+    is written, not even to an empty file."""
+    path = Path(path)
+    try:
+        conn = sqlite3.connect(_uri(path, mode="ro"), uri=True, timeout=BUSY_SECONDS)
+    except sqlite3.Error:
+        return False
+    try:
+        names = {n for (n,) in conn.execute("SELECT name FROM sqlite_master WHERE type = "
+                                            "'table'")}
+    except sqlite3.Error:
+        return False
+    finally:
+        conn.close()
+    return set(_TABLES) <= names or (empty and not names)
+
+
+def check_database(path: str | Path, *, inputs: Iterable = ()) -> Path:
+    """Check before a run that ``path`` can be a study's database (one line if not): not the
+    spec or another input, a regular file or none, in a folder that exists and can be
+    written; an existing file must be a govopt study database (or empty): nothing else is
+    ever written into, nor replaced."""
+    path = Path(path)
+    if str(path) in ("", ".") or path.name in ("", ".", ".."):
+        raise StudyError(f"--db: expected a database file name, got {str(path)!r}")
+    for other in inputs:
+        with contextlib.suppress(OSError):
+            if os.path.realpath(path) == os.path.realpath(other) or (
+                    path.exists() and os.path.samefile(path, other)):
+                raise StudyError(f"{path}: cannot use as the study database: it is the spec "
+                                 f"({other}); give another --db")
+    if path.exists() and not path.is_file():
+        raise StudyError(f"{path}: cannot use as the study database: not a regular file")
+    parent = path.absolute().parent
+    if not parent.is_dir():
+        raise StudyError(f"{path}: cannot create the study database: folder {path.parent} does "
+                         "not exist")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise StudyError(f"{path}: cannot create the study database: folder {path.parent} "
+                         "cannot be written (SQLite keeps its journal beside the database)")
+    if path.exists():
+        if not os.access(path, os.R_OK | os.W_OK):
+            raise StudyError(f"{path}: the study database cannot be written (permission "
+                             "denied)")
+        if path.stat().st_size and not is_study_database(path, empty=True):
+            raise StudyError(f"{path}: not a govopt study database (govopt writes only into "
+                             "its own databases); give another --db")
+    return path
+
+
 class Store:
     """A study's SQLite database: ``meta`` (the study's definition, govopt's version),
     ``layouts`` (column lists) and ``points`` (one row per point: hash, index, status, message,
     and the row's values, :func:`encode`).
 
-    WAL journal, one transaction per chunk (:meth:`add`), ``INSERT OR REPLACE`` on the point's
-    hash: a process killed at any moment leaves the database as of its last commit."""
+    WAL journal, one transaction per chunk (:meth:`add`), ``INSERT OR IGNORE`` on the point's
+    hash: a process killed at any moment leaves the database as of its last commit, and two
+    processes running the same study write each point once. A database belongs to one study
+    (:meth:`claim`). ``create=False`` opens it read-only (``show``, ``export``): nothing is
+    written, not even to a file that turns out not to be a study database. An SQLite error
+    inside ``with Store(...)`` becomes one line naming the file (:class:`StudyError`)."""
 
     def __init__(self, path: str | Path, *, create: bool = True):
         self.path = Path(path)
+        self.digest: str | None = None
         if not create and not self.path.is_file():
-            raise StudyError(f"{self.path}: no such study database")
+            raise StudyError(f"{self.path}: no such study database" if not self.path.exists()
+                             else f"{self.path}: not a study database (not a regular file)")
         try:
-            self.conn = sqlite3.connect(self.path, timeout=30.0)
-            self.conn.execute("PRAGMA journal_mode=WAL")
-            self.conn.execute("PRAGMA synchronous=NORMAL")
             if create:
-                self.conn.executescript(_SCHEMA)
+                check_database(self.path)
+                self.conn = sqlite3.connect(self.path, timeout=BUSY_SECONDS,
+                                            isolation_level=None)
+                self.conn.execute("PRAGMA journal_mode=WAL")
+                self.conn.execute("PRAGMA synchronous=NORMAL")
+                with self._transaction():
+                    for statement in _SCHEMA.split(";"):
+                        if statement.strip():
+                            self.conn.execute(statement)
             else:
-                self.conn.execute("SELECT 1 FROM meta LIMIT 1")
-        except sqlite3.DatabaseError as exc:
-            raise StudyError(f"{self.path}: not a govopt study database ({exc})") from None
+                self.conn = self._read_only()
+                names = {n for (n,) in self.conn.execute(
+                    "SELECT name FROM sqlite_master WHERE type = 'table'")}
+                if not set(_TABLES) <= names:
+                    self.conn.close()
+                    raise StudyError(f"{self.path}: not a govopt study database (no study "
+                                     "tables)")
+        except sqlite3.Error as exc:
+            raise StudyError(f"{self.path}: {_describe(exc)}") from None
+
+    def _read_only(self) -> sqlite3.Connection:
+        """A read-only connection; on a read-only folder (no WAL index can be made) the file
+        is read as immutable."""
+        conn = sqlite3.connect(_uri(self.path, mode="ro"), uri=True, timeout=BUSY_SECONDS)
+        try:
+            conn.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()
+        except sqlite3.OperationalError:
+            conn.close()
+            conn = sqlite3.connect(_uri(self.path, mode="ro", immutable=1), uri=True)
+        return conn
 
     def close(self):
         self.conn.close()
@@ -983,31 +1100,97 @@ class Store:
     def __enter__(self):
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, kind, exc, tb):
         self.close()
+        if isinstance(exc, sqlite3.Error):
+            raise StudyError(f"{self.path}: {_describe(exc)}") from None
+
+    @contextlib.contextmanager
+    def _transaction(self):
+        """``BEGIN IMMEDIATE ... COMMIT``: the write lock first (waiting up to
+        :data:`BUSY_SECONDS` for another writer), so that what is read inside holds."""
+        self.conn.execute("BEGIN IMMEDIATE")
+        try:
+            yield
+        except BaseException:
+            with contextlib.suppress(sqlite3.Error):
+                self.conn.execute("ROLLBACK")
+            raise
+        self.conn.execute("COMMIT")
 
     def meta(self, key: str):
         row = self.conn.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
         return None if row is None else json.loads(row[0])
 
-    def set_meta(self, values: dict) -> None:
-        with self.conn:
-            self.conn.executemany("INSERT OR REPLACE INTO meta VALUES (?, ?)",
-                                  [(k, json.dumps(v)) for k, v in values.items()])
+    def _set_meta(self, values: dict) -> None:
+        self.conn.executemany("INSERT OR REPLACE INTO meta VALUES (?, ?)",
+                              [(k, json.dumps(v)) for k, v in values.items()])
 
-    def done(self) -> set[str]:
-        return {h for (h,) in self.conn.execute("SELECT hash FROM points")}
+    def set_meta(self, values: dict) -> None:
+        with self._transaction():
+            self._set_meta(values)
+
+    def _owner(self) -> str | None:
+        """The digest of the study this database holds (None: none yet)."""
+        digest = self.meta("digest")
+        if digest is None:
+            old = self.meta("study")
+            digest = None if old is None else study_digest(old)
+        return digest
+
+    def claim(self, definition: dict, total: int, *, resume: bool = False,
+              fresh: bool = False) -> None:
+        """Make this database the study ``definition``'s, atomically (under the write lock):
+        a database holding another study is refused (``fresh``: emptied first), one holding
+        rows of this study needs ``resume``. Rows written later check that it still is
+        (:meth:`add`)."""
+        from . import __version__
+
+        digest = study_digest(definition)
+        with self._transaction():
+            if fresh:
+                for table in ("points", "layouts", "meta"):
+                    self.conn.execute(f"DELETE FROM {table}")
+            old = self._owner()
+            if old is not None and old != digest:
+                study = self.meta("study") or {}
+                raise StudyError(f"{self.path}: the database holds another study "
+                                 f"({study.get('name')!r}, {study.get('spec_path')}); use "
+                                 "another --db, or --force to start afresh")
+            n_old = self.count()
+            if n_old and not resume:
+                raise StudyError(f"{self.path}: the database already holds {n_old} rows; use "
+                                 "--resume to continue the study, or --force to start afresh")
+            self._set_meta({"study": definition, "digest": digest,
+                            "govopt_version": __version__, "total": total})
+        self.digest = digest
+
+    def done(self, hashes: Iterable[str] | None = None) -> set[str]:
+        """The hashes of the points in the database (of ``hashes`` only, if given)."""
+        if hashes is None:
+            return {h for (h,) in self.conn.execute("SELECT hash FROM points")}
+        hashes, out = list(hashes), set()
+        for s in range(0, len(hashes), 900):
+            part = hashes[s:s + 900]
+            out.update(h for (h,) in self.conn.execute(
+                f"SELECT hash FROM points WHERE hash IN ({','.join('?' * len(part))})", part))
+        return out
 
     def count(self) -> int:
         return self.conn.execute("SELECT COUNT(*) FROM points").fetchone()[0]
 
     def add(self, chunk: tuple) -> None:
-        """One chunk ``(layouts, records)`` of :func:`encode`, in one transaction."""
+        """One chunk ``(layouts, records)`` of :func:`encode`, in one transaction; a point
+        already written (by another process running the same study) is kept. After
+        :meth:`claim`, refused if the database no longer holds that study."""
         layouts, records = chunk
-        with self.conn:
+        with self._transaction():
+            if self.digest is not None and self._owner() != self.digest:
+                raise StudyError(f"{self.path}: another study took this database over while "
+                                 "this one ran (--force); stopped")
             self.conn.executemany("INSERT OR IGNORE INTO layouts VALUES (?, ?)",
                                   [(k, json.dumps(v)) for k, v in layouts.items()])
-            self.conn.executemany("INSERT OR REPLACE INTO points VALUES (?, ?, ?, ?, ?, ?, ?)",
+            self.conn.executemany("INSERT OR IGNORE INTO points VALUES (?, ?, ?, ?, ?, ?, ?)",
                                   records)
 
     def table(self) -> pd.DataFrame:
@@ -1128,34 +1311,23 @@ def run_study(study: Study, db: str | Path, *, workers: int = 1, dask: str | Non
     rows. ``progress(done, failures, total)`` is called after each chunk. Ctrl-C stops after
     the chunks already finished, which are kept (``interrupted`` in the report).
     """
+    check_dask_address(dask)
+    db = check_database(db, inputs=[study.path])
     points = study.points()
-    base = study.base()
-    digest = spec_digest(study.data)
-    definition = study.definition()
-    text = json.dumps(definition, sort_keys=True, default=str)
-    digest_of = _hasher(digest, study.mode, tuple(sorted(study.skip)))
+    definition = json.loads(json.dumps(study.definition(), default=str))
+    text = json.dumps(definition, sort_keys=True)
+    digest_of = _hasher(spec_digest(study.data), study.mode, tuple(sorted(study.skip)))
     hashes = [digest_of(p) for p in points]
-    db = Path(db)
-    del base
-    if db.exists() and not db.is_file():
-        raise StudyError(f"{db}: not a regular file")
-    if fresh:
-        remove_database(db)
     with Store(db) as store:
-        old = store.meta("study")
-        n_old = store.count()
-        if n_old and not resume:
-            raise StudyError(f"{db}: the database already holds {n_old} rows; use --resume to "
-                             "continue the study, or --force to start afresh")
-        if old is not None and n_old and _canonical(old) != _canonical(
-                json.loads(text)):
-            raise StudyError(f"{db}: the database holds another study ({old.get('name')!r}, "
-                             f"{old.get('spec_path')}); use another --db, or --force to start "
-                             "afresh")
-        from . import __version__
-
-        store.set_meta({"study": json.loads(text), "govopt_version": __version__,
-                        "total": len(points)})
+        try:
+            store.claim(definition, len(points), resume=resume, fresh=fresh)
+        except sqlite3.DatabaseError as exc:  # damaged: with --force, a new database
+            if not fresh or "malformed" not in str(exc):
+                raise
+            store.close()
+            remove_database(db)
+            store.conn = Store(db).conn
+            store.claim(definition, len(points), fresh=True)
         done = store.done() if resume else set()
         todo = [(i, h, p) for i, (h, p) in enumerate(zip(hashes, points, strict=True))
                 if h not in done]
@@ -1166,6 +1338,13 @@ def run_study(study: Study, db: str | Path, *, workers: int = 1, dask: str | Non
         failures = store.conn.execute(
             "SELECT COUNT(*) FROM points WHERE status NOT IN ('pass', 'optimal')").fetchone()[0]
         report.failures = failures if resume else 0
+
+        def unwritten(c):
+            """The points of chunk ``c`` not yet written (by another process running the same
+            study: they cooperate)."""
+            written = store.done(h for _, h, _ in c)
+            report.skipped += len(written)
+            return [item for item in c if item[1] not in written]
 
         def commit(chunk):
             store.add(chunk)
@@ -1181,10 +1360,12 @@ def run_study(study: Study, db: str | Path, *, workers: int = 1, dask: str | Non
             if dask:
                 _run_dask(text, chunks, spans, commit, dask, workers)
             elif workers > 1 and len(chunks) > 1:
-                _run_pool(text, chunks, spans, commit, workers)
+                _run_pool(text, chunks, spans, commit, workers, unwritten)
             else:
                 for c in chunks:
-                    commit(run_chunk(text, c, spans))
+                    c = unwritten(c)
+                    if c:
+                        commit(run_chunk(text, c, spans))
         except KeyboardInterrupt:
             report.interrupted = True
         return report
@@ -1196,14 +1377,15 @@ def _ignore_sigint():
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C
 
 
-def _run_pool(text, chunks, spans, commit, workers):
-    """Chunks on a process pool; results committed by this process as they finish."""
+def _run_pool(text, chunks, spans, commit, workers, unwritten=lambda c: c):
+    """Chunks on a process pool; results committed by this process as they finish; each
+    chunk's points filtered by ``unwritten`` when it is sent."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
     pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
     try:
         pending = set()
-        queue = iter(chunks)
+        queue = (c for c in map(unwritten, chunks) if c)
         for c in itertools.islice(queue, 2 * workers):
             pending.add(pool.submit(run_chunk, text, c, spans))
         while pending:
@@ -1219,6 +1401,21 @@ def _run_pool(text, chunks, spans, commit, workers):
         pool.shutdown(wait=False, cancel_futures=True)
         raise
     pool.shutdown()
+
+
+#: a Dask scheduler's address: ``[protocol://]host:port`` (or an in-process cluster's)
+_DASK_ADDRESS = re.compile(r"(?:(?:tcp|tls|ws|wss|ucx)://)?(?:\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+)"
+                           r":(\d{1,5})|inproc://[\w.:/-]+")
+
+
+def check_dask_address(address: str | None) -> None:
+    """``--dask``: ``"local"`` or a scheduler's ``[tcp://]HOST:PORT`` (one line if not)."""
+    if address is None or address == "local":
+        return
+    m = _DASK_ADDRESS.fullmatch(str(address))
+    if m is None or (m[1] is not None and not 0 < int(m[1]) < 65536):
+        raise StudyError(f"--dask: expected 'local' or a scheduler address HOST:PORT or "
+                         f"tcp://HOST:PORT, got {limits.shorten(address)}")
 
 
 def _run_dask(text, chunks, spans, commit, address, workers):
