@@ -1015,9 +1015,11 @@ def check_database(path: str | Path, *, inputs: Iterable = ()) -> Path:
     spec or another input, a regular file or none, in a folder that exists and can be
     written; an existing file must be a govopt study database (or empty): nothing else is
     ever written into, nor replaced."""
-    path = Path(path)
-    if str(path) in ("", ".") or path.name in ("", ".", ".."):
+    from .report.files import names_folder
+
+    if str(path) in ("", ".") or Path(path).name in ("", ".", "..") or names_folder(path):
         raise StudyError(f"--db: expected a database file name, got {str(path)!r}")
+    path = Path(path)
     for other in inputs:
         with contextlib.suppress(OSError):
             if os.path.realpath(path) == os.path.realpath(other) or (
