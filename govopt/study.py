@@ -81,20 +81,22 @@ def _scalar(text: str):
     return text
 
 
-def _quantity(text: str):
+def _quantity(text: str, where: str):
+    """``text`` as a pint quantity; an error names ``where`` (``sweep KEY``)."""
     from .units import UnitError, _normalise, _strict_units, registry
 
     if len(text) > limits.MAX_QUANTITY_CHARS:
-        raise StudyError(f"{limits.shorten(text)}: a quantity of at most "
+        raise StudyError(f"{where}: {limits.shorten(text)}: a quantity of at most "
                          f"{limits.MAX_QUANTITY_CHARS} characters (govopt's limit)")
     try:  # what pint would misread, or take minutes over ('9**9**9'), refused first
         _strict_units(_normalise(text), shown=text)
     except UnitError as exc:
-        raise StudyError(f"cannot read {text!r} as a quantity: {exc}") from None
+        raise StudyError(f"{where}: cannot read {text!r} as a quantity: {exc}") from None
     try:
         return registry().Quantity(_normalise(text))
     except Exception as exc:
-        raise StudyError(f"cannot read {text!r} as a quantity ({type(exc).__name__})") from None
+        raise StudyError(f"{where}: cannot read {text!r} as a quantity "
+                         f"({type(exc).__name__})") from None
 
 
 @dataclass(frozen=True)
@@ -150,7 +152,8 @@ class Sweep:
                 integer = isinstance(a, int) and isinstance(b, int)
                 start, stop, unit = float(a), float(b), ""
             else:
-                qa, qb = _quantity(parts[0]), _quantity(parts[1])
+                qa, qb = _quantity(parts[0], f"sweep {key}"), _quantity(parts[1],
+                                                                        f"sweep {key}")
                 try:
                     start, stop = float(qa.magnitude), float(qb.to(qa.units).magnitude)
                 except Exception:
@@ -224,7 +227,7 @@ class Tolerance:
                 raise StudyError(f"tolerance {key}: cannot read {text!r}") from None
             out = cls(key, half, True, "", dist)
         else:
-            q = _quantity(t)
+            q = _quantity(t, f"tolerance {key}")
             out = cls(key, float(q.magnitude), False, f"{q.units:~}" if not q.unitless else "",
                       dist)
         if not (math.isfinite(out.half) and out.half > 0):
@@ -399,8 +402,9 @@ class Study:
         for j, t in enumerate(self.tolerances):
             e = entries.get(t.key)
             if e is None or not isinstance(e.si, float):
-                raise StudyError(f"tolerance {t.key}: the spec has no numeric value there "
-                                 "(give the key as it is written in the spec)")
+                raise StudyError(f"{self.path}: study: tolerance {t.key}: the spec has no "
+                                 "numeric value there (give the key as it is written in the "
+                                 "spec)")
             values = t.draw(e.si, e.unit, u[:, j])
             if e.unit:
                 cols.append([f"{float(v)!r} {e.unit}" for v in values])

@@ -541,3 +541,14 @@ def test_two_studies_on_one_database(tmp_path):
     with Store(same, create=False) as store:
         assert store.count() == 200
         assert sorted(store.table()["point"]) == list(range(200))
+
+
+def test_sweep_and_tolerance_errors_name_the_key_and_spec(tmp_path):
+    with pytest.raises(StudyError, match=r"^.*hartnell.toml: study: sweep design.ball_weight: "
+                                         r"cannot read '9\*\*9\*\*9 kgf'"):
+        load_study(HARTNELL, sweeps=["design.ball_weight=9**9**9 kgf:3 kgf:3"])
+    study = load_study(HARTNELL, tolerances=["design.bogus=+-1%"], samples=4)
+    with pytest.raises(StudyError, match=r"hartnell.toml: study: tolerance design.bogus: the "
+                                         "spec has no numeric value there"):
+        run_study(study, tmp_path / "t.db")
+    assert not (tmp_path / "t.db").exists()
