@@ -355,25 +355,50 @@ class Study:
 
     def points(self) -> list[dict]:
         """The study's points: dicts of dotted key -> value as written in TOML, in order."""
+        return list(self.iter_points())
+
+    def count(self) -> int:
+        """How many points :meth:`iter_points` yields (without making them)."""
+        if self.tolerances or self.combine in ("lhs", "sobol"):
+            return int(self.samples or 0)
+        for s in self.sweeps:
+            self._need_values(s)
+        sizes = [len(s.values) for s in self.sweeps]
+        return math.prod(sizes) if self.combine == "grid" else min(sizes, default=0)
+
+    #: points made at once from a sampler's columns (bounded memory whatever the count)
+    BLOCK = 8192
+
+    def iter_points(self):
+        """:meth:`points` one by one, made as they are taken: a study of a million points
+        never holds them all."""
         if self.tolerances:
-            return self._tolerance_points()
-        if self.combine == "grid":
+            yield from self._tolerance_points()
+            return
+        if self.combine in ("grid", "zip"):
             for s in self.sweeps:
                 self._need_values(s)
-            return [dict(zip(self.keys, vals, strict=True))
-                    for vals in itertools.product(*(s.values for s in self.sweeps))]
-        if self.combine == "zip":
-            for s in self.sweeps:
-                self._need_values(s)
-            lengths = {len(s.values) for s in self.sweeps}
-            if len(lengths) != 1:
+            if self.combine == "zip" and len({len(s.values) for s in self.sweeps}) != 1:
                 raise StudyError("--zip needs every sweep to have the same number of values, got "
                                  + ", ".join(f"{s.key}: {len(s.values)}" for s in self.sweeps))
-            return [dict(zip(self.keys, vals, strict=True))
-                    for vals in zip(*(s.values for s in self.sweeps), strict=True)]
+            columns = [s.values for s in self.sweeps]
+            rows = (itertools.product(*columns) if self.combine == "grid"
+                    else zip(*columns, strict=True))
+            for vals in rows:
+                yield dict(zip(self.keys, vals, strict=True))
+            return
         u = self._unit_samples(len(self.sweeps))
-        cols = [s.sample(u[:, j]) for j, s in enumerate(self.sweeps)]
-        return [dict(zip(self.keys, vals, strict=True)) for vals in zip(*cols, strict=True)]
+        for b in range(0, len(u), self.BLOCK):
+            cols = [s.sample(u[b:b + self.BLOCK, j]) for j, s in enumerate(self.sweeps)]
+            for vals in zip(*cols, strict=True):
+                yield dict(zip(self.keys, vals, strict=True))
+
+    def spans(self) -> dict:
+        """:func:`_spans` of the whole study (per numeric design key, its smallest and largest
+        value), from the sweeps' values, or the samples block by block."""
+        if not self.tolerances and self.combine in ("grid", "zip"):
+            return _merge_spans(_spans([{s.key: v} for v in s.values]) for s in self.sweeps)
+        return _merge_spans(_spans(block) for block in _blocks(self.iter_points(), self.BLOCK))
 
     def _need_values(self, s: Sweep):
         if not s.values:
@@ -394,23 +419,26 @@ class Study:
             return qmc.LatinHypercube(d=dim, seed=self.seed).random(n)
         raise AssertionError(self.combine)
 
-    def _tolerance_points(self) -> list[dict]:
+    def _tolerance_points(self):
         base = self.base()
         entries = {e.key: e for e in base.entries}
-        cols = []
-        u = self._unit_samples(len(self.tolerances))
-        for j, t in enumerate(self.tolerances):
+        found = []
+        for t in self.tolerances:
             e = entries.get(t.key)
             if e is None or not isinstance(e.si, float):
                 raise StudyError(f"{self.path}: study: tolerance {t.key}: the spec has no "
                                  "numeric value there (give the key as it is written in the "
                                  "spec)")
-            values = t.draw(e.si, e.unit, u[:, j])
-            if e.unit:
-                cols.append([f"{float(v)!r} {e.unit}" for v in values])
-            else:
-                cols.append([float(v) for v in values])
-        return [dict(zip(self.keys, vals, strict=True)) for vals in zip(*cols, strict=True)]
+            found.append(e)
+        u = self._unit_samples(len(self.tolerances))
+        for b in range(0, len(u), self.BLOCK):
+            cols = []
+            for j, (t, e) in enumerate(zip(self.tolerances, found, strict=True)):
+                values = t.draw(e.si, e.unit, u[b:b + self.BLOCK, j])
+                cols.append([f"{float(v)!r} {e.unit}" for v in values] if e.unit
+                            else [float(v) for v in values])
+            for vals in zip(*cols, strict=True):
+                yield dict(zip(self.keys, vals, strict=True))
 
 
 def _canonical(data) -> str:
@@ -623,6 +651,29 @@ def _spans(points: list[dict]) -> dict:
             if nums is not None:
                 out[k] = (float(nums[0].min()), float(nums[0].max()), nums[1])
     return out
+
+
+def _merge_spans(parts) -> dict:
+    """One :func:`_spans` of several (a key in one unit throughout; else left out)."""
+    out: dict = {}
+    bad = set()
+    for part in parts:
+        for k, (lo, hi, unit) in part.items():
+            old = out.get(k)
+            if old is None:
+                out[k] = (lo, hi, unit)
+            elif old[2] != unit:
+                bad.add(k)
+            else:
+                out[k] = (min(old[0], lo), max(old[1], hi), unit)
+    return {k: v for k, v in out.items() if k not in bad}
+
+
+def _blocks(items, size: int):
+    """``items`` in lists of ``size`` (the last shorter)."""
+    items = iter(items)
+    while block := list(itertools.islice(items, size)):
+        yield block
 
 
 def _evaluate_points(study: Study, points: list[dict], spans: dict | None = None) -> pd.DataFrame:
@@ -998,15 +1049,17 @@ def _uri(path: Path, **options) -> str:
 def is_study_database(path: str | Path, *, empty: bool = False) -> bool:
     """Whether ``path`` is a govopt study database (an SQLite file with the study's tables;
     with ``empty``, or with no tables at all: one being created), looked at read-only: nothing
-    is written, not even to an empty file."""
-    path = Path(path)
+    is written, not even to an empty file. A database another process holds locked for longer
+    than :data:`BUSY_SECONDS` counts as one (its writer is govopt's, or the open says why)."""
     try:
-        conn = sqlite3.connect(_uri(path, mode="ro"), uri=True, timeout=BUSY_SECONDS)
+        conn = sqlite3.connect(_uri(Path(path), mode="ro"), uri=True, timeout=BUSY_SECONDS)
     except sqlite3.Error:
         return False
     try:
         names = {n for (n,) in conn.execute("SELECT name FROM sqlite_master WHERE type = "
                                             "'table'")}
+    except sqlite3.OperationalError as exc:  # busy, locked: being written
+        return "locked" in str(exc) or "busy" in str(exc)
     except sqlite3.Error:
         return False
     finally:
@@ -1319,35 +1372,33 @@ def run_study(study: Study, db: str | Path, *, workers: int = 1, dask: str | Non
     """
     check_dask_address(dask)
     db = check_database(db, inputs=[study.path])
-    points = study.points()
+    total = study.count()
     definition = json.loads(json.dumps(study.definition(), default=str))
     text = json.dumps(definition, sort_keys=True)
     digest_of = _hasher(spec_digest(study.data), study.mode, tuple(sorted(study.skip)))
-    hashes = [digest_of(p) for p in points]
+    size = chunk or default_chunk(study)
+    spans = study.spans() if study.mode == "evaluate" else {}
     with Store(db) as store:
         try:
-            store.claim(definition, len(points), resume=resume, fresh=fresh)
+            store.claim(definition, total, resume=resume, fresh=fresh)
         except sqlite3.DatabaseError as exc:  # damaged: with --force, a new database
             if not fresh or "malformed" not in str(exc):
                 raise
             store.close()
             remove_database(db)
             store.conn = Store(db).conn
-            store.claim(definition, len(points), fresh=True)
-        done = store.done() if resume else set()
-        todo = [(i, h, p) for i, (h, p) in enumerate(zip(hashes, points, strict=True))
-                if h not in done]
-        size = chunk or default_chunk(study)
-        spans = _spans(points) if study.mode == "evaluate" else {}
-        chunks = [todo[s:s + size] for s in range(0, len(todo), size)]
-        report = RunReport(len(points), len(points) - len(todo), 0, 0)
-        failures = store.conn.execute(
+            store.claim(definition, total, fresh=True)
+        before = store.count()
+        report = RunReport(total, 0, 0, 0)
+        report.failures = store.conn.execute(
             "SELECT COUNT(*) FROM points WHERE status NOT IN ('pass', 'optimal')").fetchone()[0]
-        report.failures = failures if resume else 0
+        # made and hashed as they are taken, never all at once (bounded memory)
+        chunks = ([(i, digest_of(p), p) for i, p in block]
+                  for block in _blocks(enumerate(study.iter_points()), size))
 
         def unwritten(c):
-            """The points of chunk ``c`` not yet written (by another process running the same
-            study: they cooperate)."""
+            """The points of chunk ``c`` not yet in the database (an earlier run's, resumed,
+            or another process's running the same study: they cooperate)."""
             written = store.done(h for _, h, _ in c)
             report.skipped += len(written)
             return [item for item in c if item[1] not in written]
@@ -1358,14 +1409,16 @@ def run_study(study: Study, db: str | Path, *, workers: int = 1, dask: str | Non
             report.done += len(records)
             report.failures += sum(r[2] not in ("pass", "optimal") for r in records)
             if progress is not None:
-                progress(report.skipped + report.done, report.failures, report.total)
+                progress(max(before, report.skipped + report.done), report.failures,
+                         report.total)
 
         if progress is not None:
-            progress(report.skipped, report.failures, report.total)
+            progress(before, report.failures, report.total)
         try:
             if dask:
-                _run_dask(text, chunks, spans, commit, dask, workers)
-            elif workers > 1 and len(chunks) > 1:
+                _run_dask(text, [c for c in map(unwritten, chunks) if c], spans, commit, dask,
+                          workers)
+            elif workers > 1 and total > size:
                 _run_pool(text, chunks, spans, commit, workers, unwritten)
             else:
                 for c in chunks:
