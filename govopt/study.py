@@ -1252,30 +1252,66 @@ class Store:
             self.conn.executemany("INSERT OR IGNORE INTO points VALUES (?, ?, ?, ?, ?, ?, ?)",
                                   records)
 
-    def table(self) -> pd.DataFrame:
+    def table(self, columns: Iterable[str] | None = None, *, batch: int = 20_000
+              ) -> pd.DataFrame:
         """Every row, in the study's order (``point`` is its index), with ``pareto`` marked
-        where the study names objectives."""
+        where the study names objectives; ``columns``: only those (and what the Pareto front
+        needs), read ``batch`` rows at a time, so that a summary of a million points holds a few
+        columns, never every row's values (repeated texts such as the status held once)."""
         layouts = {k: json.loads(v) for k, v in self.conn.execute("SELECT * FROM layouts")}
-        groups: dict[str, tuple[list, list, list]] = {}
-        for idx, lid, nums, texts in self.conn.execute(
-                "SELECT idx, layout, numbers, texts FROM points ORDER BY idx"):
-            g = groups.setdefault(lid, ([], [], []))
-            g[0].append(idx)
-            g[1].append(nums)
-            g[2].append(texts)
-        if not groups:
-            return pd.DataFrame()
-        parts = sorted(((decode(layouts[lid], n, t).set_axis(i), len(layouts[lid]))
-                        for lid, (i, n, t) in groups.items()), key=lambda p: -p[1])
-        frame = pd.concat([p for p, _ in parts]).sort_index() if len(parts) > 1 else parts[0][0]
-        frame = frame.rename_axis("point").reset_index()
         study = self.meta("study") or {}
+        want = None
+        if columns is not None:
+            want = {"point", *columns}
+            if study.get("pareto"):
+                want |= {"status", *(objective_column(n)[0] for n in study["pareto"])}
+        texts_seen: dict = {}
+        parts, used = [], set()
+        cursor = self.conn.execute("SELECT idx, layout, numbers, texts FROM points ORDER BY idx")
+        while rows := cursor.fetchmany(batch):
+            groups: dict[str, tuple[list, list, list]] = {}
+            for idx, lid, nums, texts in rows:
+                g = groups.setdefault(lid, ([], [], []))
+                g[0].append(idx)
+                g[1].append(nums)
+                g[2].append(texts)
+            for lid, (i, n, t) in groups.items():
+                used.add(lid)
+                part = decode(layouts[lid], n, t).set_axis(i)
+                if want is not None:
+                    part = part[[c for c in part.columns if c in want]]
+                    for c in part.columns:
+                        if part[c].dtype == object and c not in study.get("keys", ()):
+                            part[c] = [texts_seen.setdefault(v, v) if isinstance(v, str) else v
+                                       for v in part[c]]
+                parts.append(part)
+        if not parts:
+            return pd.DataFrame()
+        order = list(dict.fromkeys(c for lid in sorted(used, key=lambda k: -len(layouts[k]))
+                                   for c, _ in layouts[lid]))
+        frame = pd.concat(parts) if len(parts) > 1 else parts[0]
+        if len(used) > 1:
+            frame = frame.reindex(columns=[c for c in order if c in frame.columns])
+        frame = frame.sort_index().rename_axis("point").reset_index()
         if study.get("pareto"):
             try:
                 frame["pareto"] = pareto_front(frame, study["pareto"])
             except StudyError as exc:  # an objective that is no column: name the spec
                 raise StudyError(f"{study.get('spec_path', '?')}: study.{exc}") from None
         return frame
+
+    def columns(self) -> list[str]:
+        """Every column of the study's rows (of all layouts), in order."""
+        return list(dict.fromkeys(c for (v,) in self.conn.execute("SELECT columns FROM layouts")
+                                  for c, _ in json.loads(v)))
+
+    def row(self, point: int) -> dict:
+        """The row of point ``point`` (an index)."""
+        lid, nums, texts = self.conn.execute(
+            "SELECT layout, numbers, texts FROM points WHERE idx = ?", (point,)).fetchone()
+        layout = json.loads(self.conn.execute("SELECT columns FROM layouts WHERE id = ?",
+                                              (lid,)).fetchone()[0])
+        return decode(layout, [nums], [texts]).iloc[0].to_dict()
 
     def integrity(self) -> str:
         return self.conn.execute("PRAGMA integrity_check").fetchone()[0]
@@ -1613,9 +1649,16 @@ def tolerance_summary(frame: pd.DataFrame) -> dict:
 def summary_text(store: Store) -> str:
     """What `govopt study show` prints: the study, its progress, status counts, the best
     feasible point, the Pareto front and, for a tolerance study, the probabilities."""
+    from .bulk import check_names, passed_column
+
     study = store.meta("study") or {}
     total = store.meta("total") or 0
-    frame = store.table()
+    needed = ["status", "objective", "objective_value"]
+    if study.get("tolerances"):  # what tolerance_summary reads
+        checks = check_names(store.columns())
+        needed += [passed_column(c) for c in checks] + [f"margin: {c}" for c in checks] + [
+            "omega_inner_rad_s", "omega_outer_rad_s", "irregularity", "k2_normal_rad2_s2"]
+    frame = store.table(needed)
     lines = [f"study {study.get('name', '?')!r}: {study.get('mode')} mode on "
              f"{study.get('spec_path')}, {', '.join(study.get('keys', []))} "
              f"({study.get('combine')}); govopt {store.meta('govopt_version')}",
@@ -1627,16 +1670,19 @@ def summary_text(store: Store) -> str:
     ok = feasible(frame) & pd.to_numeric(frame["objective_value"], errors="coerce").notna()
     if ok.any():
         best = frame.loc[ok].sort_values("objective_value").iloc[0]
-        inputs = ", ".join(f"{k} = {best[k]}" for k in study.get("keys", []) if k in best)
+        written = store.row(int(best["point"]))
+        inputs = ", ".join(f"{k} = {written[k]}" for k in study.get("keys", [])
+                           if k in written)
         lines.append(f"best feasible {best.get('objective', 'objective')}: "
                      f"{best['objective_value']:.6g} at point {int(best['point'])} ({inputs})")
     if "pareto" in frame:
         lines.append(f"Pareto front ({', '.join(study['pareto'])}): "
                      f"{int(frame['pareto'].sum())} points: "
                      + ", ".join(str(int(i)) for i in frame.loc[frame["pareto"], "point"][:20]))
-    errors = frame.loc[frame["status"] == "error", "message"]
-    if len(errors):
-        lines.append(f"first error: {errors.iloc[0]}")
+    error = store.conn.execute("SELECT message FROM points WHERE status = 'error' ORDER BY idx "
+                               "LIMIT 1").fetchone()
+    if error is not None:
+        lines.append(f"first error: {error[0]}")
     if study.get("tolerances"):
         s = tolerance_summary(frame)
         a = s["all_requirements"]
