@@ -1279,7 +1279,8 @@ class Store:
                 used.add(lid)
                 part = decode(layouts[lid], n, t).set_axis(i)
                 if want is not None:
-                    part = part[[c for c in part.columns if c in want]]
+                    # a copy: a column of the decoded batch is a view holding all its values
+                    part = part[[c for c in part.columns if c in want]].copy()
                     for c in part.columns:
                         if part[c].dtype == object and c not in study.get("keys", ()):
                             part[c] = [texts_seen.setdefault(v, v) if isinstance(v, str) else v
