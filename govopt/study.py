@@ -397,7 +397,12 @@ class Study:
         """:func:`_spans` of the whole study (per numeric design key, its smallest and largest
         value), from the sweeps' values, or the samples block by block."""
         if not self.tolerances and self.combine in ("grid", "zip"):
-            return _merge_spans(_spans([{s.key: v} for v in s.values]) for s in self.sweeps)
+            out = {}
+            for s in self.sweeps:  # a key's values in the study are its sweep's
+                nums = _numbers(list(s.values)) if s.key.startswith("design.") else None
+                if nums is not None:
+                    out[s.key] = (float(nums[0].min()), float(nums[0].max()), nums[1])
+            return out
         return _merge_spans(_spans(block) for block in _blocks(self.iter_points(), self.BLOCK))
 
     def _need_values(self, s: Sweep):
