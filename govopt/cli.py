@@ -376,10 +376,13 @@ def _print_spring(sol, out, sizing, material, kind) -> None:
 
 
 @_guarded
-def bench(*, quick, out, targets) -> None:
+def bench(*, quick, out, targets, force) -> None:
     """Speed against error of every analysis (one point per method and setting, errors
     against high-precision references) and the speed targets beside what was measured."""
     from .report import bench as b
+
+    if out is not None:  # before the benchmark: fail in a second, not after it
+        b.check_report(out, overwrite=force)
 
     def log(message: str) -> None:
         _echo(f"  {message}", err=True)
@@ -388,7 +391,7 @@ def bench(*, quick, out, targets) -> None:
     points = b.speed_vs_error(quick, log=log)
     _echo(b.summary(points, rows))
     if out is not None:
-        for path in b.write_report(points, out, rows):
+        for path in b.write_report(points, out, rows, overwrite=force):
             _echo(f"wrote {Path(path).absolute()}")
 
 
@@ -409,7 +412,7 @@ def study_run(*, spec, sweep, grid, zip_, lhs, sobol, seed, mode, tolerance, sam
                        combine=chosen[0] if chosen else None,
                        samples=lhs if lhs is not None else sobol if sobol is not None else samples,
                        seed=seed, mode=mode, skip=skip, pareto=pareto)
-    db = db or Path(f"{spec.stem}.study.db")
+    db = Path(f"{spec.stem}.study.db") if db is None else db
     if out is not None:
         check_output(out, overwrite=force, inputs=[spec, db], what="study table")
     if plot is not None:
@@ -526,11 +529,13 @@ def init_command(*, name, output, force) -> None:
     import tomllib
 
     from .examples import example
-    from .report.files import atomic_write, check_output
+    from .report.files import atomic_write, check_output, names_folder, output_folder
 
     source = example(name)
-    target = output if output is not None else Path(source.name)
-    if target.is_dir():
+    target = Path(output) if output is not None else Path(source.name)
+    if names_folder(output):  # 'DIR/new/': a folder, made if only its parent exists
+        target = output_folder(target, "the spec") / source.name
+    elif target.is_dir():
         target = target / source.name
     check_output(target, overwrite=force, inputs=[source], what="spec")
     data = source.read_bytes()
@@ -576,8 +581,14 @@ class _Parser(argparse.ArgumentParser):
         return namespace, extras
 
 
+def _typed(text: str) -> str:
+    """An output file's path as typed: text, not a Path, so that a trailing '/' (a folder,
+    which a Path drops) reaches the output checks (:func:`govopt.report.files.check_output`)."""
+    return text
+
+
 #: the metavar of each option's type, as `govopt X --help` shows it (`--xlsx <path>`)
-_METAVAR = {str: "<str>", Path: "<path>", int: "<int>", float: "<float>"}
+_METAVAR = {str: "<str>", Path: "<path>", _typed: "<path>", int: "<int>", float: "<float>"}
 _FORCE_HELP = "Replace output files that exist (regular files only, never the spec)."
 _JSON_HELP = "Print a JSON object in SI units."
 
@@ -617,8 +628,8 @@ def _spec_outputs(p, output: bool) -> None:
                                       "paper's eq. 3).")
     _flag(p, "--json", dest="json_out", help=_JSON_HELP)
     if output:
-        _option(p, "-o", "--output", type=Path, help="Write the design as a spec file.")
-    _option(p, "--xlsx", type=Path, help="Write an Excel design sheet.")
+        _option(p, "-o", "--output", type=_typed, help="Write the design as a spec file.")
+    _option(p, "--xlsx", type=_typed, help="Write an Excel design sheet.")
     _flag(p, "--force", help=_FORCE_HELP)
     _option(p, "--plots", type=Path, help="Write the plots (PNG and SVG) into this folder.")
     _flag(p, "--full", help="Print the whole report (the default is the answer: verdict, "
@@ -661,9 +672,9 @@ def _study_parser(group) -> None:
                                 "maximise).")
     _option(p, "--skip", help="Analyses to leave out in evaluate mode: dynamics, vibration, "
                               "classic.")
-    _option(p, "--db", type=Path,
+    _option(p, "--db", type=_typed,
             help="The study's SQLite database (default: <spec>.study.db here).")
-    _option(p, "--out", type=Path, help="Export the table: .csv, .parquet or .xlsx.")
+    _option(p, "--out", type=_typed, help="Export the table: .csv, .parquet or .xlsx.")
     _option(p, "--workers", type=int, default=1, help="Processes (a pool; Dask workers).")
     _option(p, "--dask", help="'local' (a LocalCluster of --workers processes) or a scheduler "
                               "tcp://HOST:PORT.")
@@ -676,7 +687,7 @@ def _study_parser(group) -> None:
     p = _command(sub, "export", study_export,
                  "Export a study's table from its database (CSV, Parquet or xlsx).")
     p.add_argument("db", type=Path, metavar="db", help="The study's database.")
-    _option(p, "--out", type=Path, required=True, help="A .csv, .parquet or .xlsx file.")
+    _option(p, "--out", type=_typed, required=True, help="A .csv, .parquet or .xlsx file.")
     _option(p, "--plot", "--plots", type=Path, help="Also write the plots into this folder.")
     _flag(p, "--force", help=_FORCE_HELP)
     p = _command(sub, "show", study_show, "Summarise a study: progress, status counts, best "
@@ -768,14 +779,16 @@ def parser() -> _Parser:
     p = _command(group, "bench", bench, "Speed against error of every analysis and the speed "
                                         "targets beside what was measured.")
     _flag(p, "--quick", switch=False, help="A smaller suite and fewer repeats (under a minute).")
-    _option(p, "--out", type=Path, help="Folder for speed-vs-error.md, .csv and .png "
-                                        "(replaced).")
+    _option(p, "--out", type=Path, help="Folder for speed-vs-error.md, .csv and .png (made "
+                                        "if only its parent exists).")
+    _flag(p, "--force", help=_FORCE_HELP)
     _flag(p, "--targets", switch=True, help="Also measure the speed targets (issue 14).")
     _command(group, "examples", examples_command, "List the bundled example specs.")
     p = _command(group, "init", init_command, "Copy a bundled example spec here, to start "
                                               "from.")
     p.add_argument("name", metavar="name", help="A bundled example (see `govopt examples`).")
-    _option(p, "-o", "--output", type=Path, help="Where to write it (default: NAME.toml here).")
+    _option(p, "-o", "--output", type=_typed, help="Where to write it (default: NAME.toml "
+                                                   "here; a folder: NAME.toml in it).")
     _flag(p, "--force", help=_FORCE_HELP)
     _study_parser(group)
     return root

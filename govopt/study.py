@@ -19,6 +19,7 @@ and plots (:mod:`govopt.report.study_plots`) are read back from the database.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import itertools
 import json
@@ -80,20 +81,22 @@ def _scalar(text: str):
     return text
 
 
-def _quantity(text: str):
+def _quantity(text: str, where: str):
+    """``text`` as a pint quantity; an error names ``where`` (``sweep KEY``)."""
     from .units import UnitError, _normalise, _strict_units, registry
 
     if len(text) > limits.MAX_QUANTITY_CHARS:
-        raise StudyError(f"{limits.shorten(text)}: a quantity of at most "
+        raise StudyError(f"{where}: {limits.shorten(text)}: a quantity of at most "
                          f"{limits.MAX_QUANTITY_CHARS} characters (govopt's limit)")
     try:  # what pint would misread, or take minutes over ('9**9**9'), refused first
         _strict_units(_normalise(text), shown=text)
     except UnitError as exc:
-        raise StudyError(f"cannot read {text!r} as a quantity: {exc}") from None
+        raise StudyError(f"{where}: cannot read {text!r} as a quantity: {exc}") from None
     try:
         return registry().Quantity(_normalise(text))
     except Exception as exc:
-        raise StudyError(f"cannot read {text!r} as a quantity ({type(exc).__name__})") from None
+        raise StudyError(f"{where}: cannot read {text!r} as a quantity "
+                         f"({type(exc).__name__})") from None
 
 
 @dataclass(frozen=True)
@@ -149,7 +152,8 @@ class Sweep:
                 integer = isinstance(a, int) and isinstance(b, int)
                 start, stop, unit = float(a), float(b), ""
             else:
-                qa, qb = _quantity(parts[0]), _quantity(parts[1])
+                qa, qb = _quantity(parts[0], f"sweep {key}"), _quantity(parts[1],
+                                                                        f"sweep {key}")
                 try:
                     start, stop = float(qa.magnitude), float(qb.to(qa.units).magnitude)
                 except Exception:
@@ -223,7 +227,7 @@ class Tolerance:
                 raise StudyError(f"tolerance {key}: cannot read {text!r}") from None
             out = cls(key, half, True, "", dist)
         else:
-            q = _quantity(t)
+            q = _quantity(t, f"tolerance {key}")
             out = cls(key, float(q.magnitude), False, f"{q.units:~}" if not q.unitless else "",
                       dist)
         if not (math.isfinite(out.half) and out.half > 0):
@@ -351,25 +355,55 @@ class Study:
 
     def points(self) -> list[dict]:
         """The study's points: dicts of dotted key -> value as written in TOML, in order."""
+        return list(self.iter_points())
+
+    def count(self) -> int:
+        """How many points :meth:`iter_points` yields (without making them)."""
+        if self.tolerances or self.combine in ("lhs", "sobol"):
+            return int(self.samples or 0)
+        for s in self.sweeps:
+            self._need_values(s)
+        sizes = [len(s.values) for s in self.sweeps]
+        return math.prod(sizes) if self.combine == "grid" else min(sizes, default=0)
+
+    #: points made at once from a sampler's columns (bounded memory whatever the count)
+    BLOCK = 8192
+
+    def iter_points(self):
+        """:meth:`points` one by one, made as they are taken: a study of a million points
+        never holds them all."""
         if self.tolerances:
-            return self._tolerance_points()
-        if self.combine == "grid":
+            yield from self._tolerance_points()
+            return
+        if self.combine in ("grid", "zip"):
             for s in self.sweeps:
                 self._need_values(s)
-            return [dict(zip(self.keys, vals, strict=True))
-                    for vals in itertools.product(*(s.values for s in self.sweeps))]
-        if self.combine == "zip":
-            for s in self.sweeps:
-                self._need_values(s)
-            lengths = {len(s.values) for s in self.sweeps}
-            if len(lengths) != 1:
+            if self.combine == "zip" and len({len(s.values) for s in self.sweeps}) != 1:
                 raise StudyError("--zip needs every sweep to have the same number of values, got "
                                  + ", ".join(f"{s.key}: {len(s.values)}" for s in self.sweeps))
-            return [dict(zip(self.keys, vals, strict=True))
-                    for vals in zip(*(s.values for s in self.sweeps), strict=True)]
+            columns = [s.values for s in self.sweeps]
+            rows = (itertools.product(*columns) if self.combine == "grid"
+                    else zip(*columns, strict=True))
+            for vals in rows:
+                yield dict(zip(self.keys, vals, strict=True))
+            return
         u = self._unit_samples(len(self.sweeps))
-        cols = [s.sample(u[:, j]) for j, s in enumerate(self.sweeps)]
-        return [dict(zip(self.keys, vals, strict=True)) for vals in zip(*cols, strict=True)]
+        for b in range(0, len(u), self.BLOCK):
+            cols = [s.sample(u[b:b + self.BLOCK, j]) for j, s in enumerate(self.sweeps)]
+            for vals in zip(*cols, strict=True):
+                yield dict(zip(self.keys, vals, strict=True))
+
+    def spans(self) -> dict:
+        """:func:`_spans` of the whole study (per numeric design key, its smallest and largest
+        value), from the sweeps' values, or the samples block by block."""
+        if not self.tolerances and self.combine in ("grid", "zip"):
+            out = {}
+            for s in self.sweeps:  # a key's values in the study are its sweep's
+                nums = _numbers(list(s.values)) if s.key.startswith("design.") else None
+                if nums is not None:
+                    out[s.key] = (float(nums[0].min()), float(nums[0].max()), nums[1])
+            return out
+        return _merge_spans(_spans(block) for block in _blocks(self.iter_points(), self.BLOCK))
 
     def _need_values(self, s: Sweep):
         if not s.values:
@@ -390,22 +424,26 @@ class Study:
             return qmc.LatinHypercube(d=dim, seed=self.seed).random(n)
         raise AssertionError(self.combine)
 
-    def _tolerance_points(self) -> list[dict]:
+    def _tolerance_points(self):
         base = self.base()
         entries = {e.key: e for e in base.entries}
-        cols = []
-        u = self._unit_samples(len(self.tolerances))
-        for j, t in enumerate(self.tolerances):
+        found = []
+        for t in self.tolerances:
             e = entries.get(t.key)
             if e is None or not isinstance(e.si, float):
-                raise StudyError(f"tolerance {t.key}: the spec has no numeric value there "
-                                 "(give the key as it is written in the spec)")
-            values = t.draw(e.si, e.unit, u[:, j])
-            if e.unit:
-                cols.append([f"{float(v)!r} {e.unit}" for v in values])
-            else:
-                cols.append([float(v) for v in values])
-        return [dict(zip(self.keys, vals, strict=True)) for vals in zip(*cols, strict=True)]
+                raise StudyError(f"{self.path}: study: tolerance {t.key}: the spec has no "
+                                 "numeric value there (give the key as it is written in the "
+                                 "spec)")
+            found.append(e)
+        u = self._unit_samples(len(self.tolerances))
+        for b in range(0, len(u), self.BLOCK):
+            cols = []
+            for j, (t, e) in enumerate(zip(self.tolerances, found, strict=True)):
+                values = t.draw(e.si, e.unit, u[b:b + self.BLOCK, j])
+                cols.append([f"{float(v)!r} {e.unit}" for v in values] if e.unit
+                            else [float(v) for v in values])
+            for vals in zip(*cols, strict=True):
+                yield dict(zip(self.keys, vals, strict=True))
 
 
 def _canonical(data) -> str:
@@ -540,6 +578,11 @@ def spec_digest(data: dict) -> str:
     return hashlib.sha256(_canonical(data).encode()).hexdigest()
 
 
+def study_digest(definition: dict) -> str:
+    """The key of a study's definition (:meth:`Study.definition`, as JSON reads it back)."""
+    return spec_digest(json.loads(json.dumps(definition, default=str)))
+
+
 def _input_columns(spec: Spec, point: dict) -> dict:
     """The point's inputs as written (``KEY``) and in SI (``KEY [unit]``), from the variant's
     parsed entries."""
@@ -613,6 +656,29 @@ def _spans(points: list[dict]) -> dict:
             if nums is not None:
                 out[k] = (float(nums[0].min()), float(nums[0].max()), nums[1])
     return out
+
+
+def _merge_spans(parts) -> dict:
+    """One :func:`_spans` of several (a key in one unit throughout; else left out)."""
+    out: dict = {}
+    bad = set()
+    for part in parts:
+        for k, (lo, hi, unit) in part.items():
+            old = out.get(k)
+            if old is None:
+                out[k] = (lo, hi, unit)
+            elif old[2] != unit:
+                bad.add(k)
+            else:
+                out[k] = (min(old[0], lo), max(old[1], hi), unit)
+    return {k: v for k, v in out.items() if k not in bad}
+
+
+def _blocks(items, size: int):
+    """``items`` in lists of ``size`` (the last shorter)."""
+    items = iter(items)
+    while block := list(itertools.islice(items, size)):
+        yield block
 
 
 def _evaluate_points(study: Study, points: list[dict], spans: dict | None = None) -> pd.DataFrame:
@@ -954,28 +1020,143 @@ def decode(layout: list, numbers: list[bytes], texts: list[str]) -> pd.DataFrame
     return pd.DataFrame(cols)
 
 
+#: the tables of a govopt study database (a file that has them is one)
+_TABLES = ("layouts", "meta", "points")
+#: seconds a writer waits for another's transaction (a chunk's rows) before giving up
+BUSY_SECONDS = 30.0
+
+
+def _describe(exc: sqlite3.Error) -> str:
+    """What an SQLite error means for a study database, in words (one line)."""
+    text = str(exc)
+    if "malformed" in text or "corrupt" in text:
+        return (f"the study database is damaged (SQLite: {text}); 'govopt study run --force' "
+                "starts it afresh")
+    if "not a database" in text:
+        return "not a govopt study database (not an SQLite file)"
+    if "locked" in text or "busy" in text:
+        return (f"the study database is busy: another process kept it locked for more than "
+                f"{BUSY_SECONDS:g} s (SQLite: {text})")
+    if "readonly" in text or "read-only" in text:
+        return f"the study database cannot be written (SQLite: {text})"
+    if "unable to open" in text:
+        return f"cannot open the study database (SQLite: {text})"
+    return f"study database error (SQLite: {text})"
+
+
+def _uri(path: Path, **options) -> str:
+    from urllib.parse import quote
+
+    query = "&".join(f"{k}={v}" for k, v in options.items())
+    return f"file:{quote(str(path.absolute()))}?{query}"
+
+
+def is_study_database(path: str | Path, *, empty: bool = False) -> bool:
+    """Whether ``path`` is a govopt study database (an SQLite file with the study's tables;
+    with ``empty``, or with no tables at all: one being created), looked at read-only: nothing
+    is written, not even to an empty file. A database another process holds locked for longer
+    than :data:`BUSY_SECONDS` counts as one (its writer is govopt's, or the open says why)."""
+    try:
+        conn = sqlite3.connect(_uri(Path(path), mode="ro"), uri=True, timeout=BUSY_SECONDS)
+    except sqlite3.Error:
+        return False
+    try:
+        names = {n for (n,) in conn.execute("SELECT name FROM sqlite_master WHERE type = "
+                                            "'table'")}
+    except sqlite3.OperationalError as exc:  # busy, locked: being written
+        return "locked" in str(exc) or "busy" in str(exc)
+    except sqlite3.Error:
+        return False
+    finally:
+        conn.close()
+    return set(_TABLES) <= names or (empty and not names)
+
+
+def check_database(path: str | Path, *, inputs: Iterable = ()) -> Path:
+    """Check before a run that ``path`` can be a study's database (one line if not): not the
+    spec or another input, a regular file or none, in a folder that exists and can be
+    written; an existing file must be a govopt study database (or empty): nothing else is
+    ever written into, nor replaced."""
+    from .report.files import names_folder
+
+    if str(path) in ("", ".") or Path(path).name in ("", ".", "..") or names_folder(path):
+        raise StudyError(f"--db: expected a database file name, got {str(path)!r}")
+    path = Path(path)
+    for other in inputs:
+        with contextlib.suppress(OSError):
+            if os.path.realpath(path) == os.path.realpath(other) or (
+                    path.exists() and os.path.samefile(path, other)):
+                raise StudyError(f"{path}: cannot use as the study database: it is the spec "
+                                 f"({other}); give another --db")
+    if path.exists() and not path.is_file():
+        raise StudyError(f"{path}: cannot use as the study database: not a regular file")
+    parent = path.absolute().parent
+    if not parent.is_dir():
+        raise StudyError(f"{path}: cannot create the study database: folder {path.parent} does "
+                         "not exist")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise StudyError(f"{path}: cannot create the study database: folder {path.parent} "
+                         "cannot be written (SQLite keeps its journal beside the database)")
+    if path.exists():
+        if not os.access(path, os.R_OK | os.W_OK):
+            raise StudyError(f"{path}: the study database cannot be written (permission "
+                             "denied)")
+        if path.stat().st_size and not is_study_database(path, empty=True):
+            raise StudyError(f"{path}: not a govopt study database (govopt writes only into "
+                             "its own databases); give another --db")
+    return path
+
+
 class Store:
     """A study's SQLite database: ``meta`` (the study's definition, govopt's version),
     ``layouts`` (column lists) and ``points`` (one row per point: hash, index, status, message,
     and the row's values, :func:`encode`).
 
-    WAL journal, one transaction per chunk (:meth:`add`), ``INSERT OR REPLACE`` on the point's
-    hash: a process killed at any moment leaves the database as of its last commit."""
+    WAL journal, one transaction per chunk (:meth:`add`), ``INSERT OR IGNORE`` on the point's
+    hash: a process killed at any moment leaves the database as of its last commit, and two
+    processes running the same study write each point once. A database belongs to one study
+    (:meth:`claim`). ``create=False`` opens it read-only (``show``, ``export``): nothing is
+    written, not even to a file that turns out not to be a study database. An SQLite error
+    inside ``with Store(...)`` becomes one line naming the file (:class:`StudyError`)."""
 
     def __init__(self, path: str | Path, *, create: bool = True):
         self.path = Path(path)
+        self.digest: str | None = None
         if not create and not self.path.is_file():
-            raise StudyError(f"{self.path}: no such study database")
+            raise StudyError(f"{self.path}: no such study database" if not self.path.exists()
+                             else f"{self.path}: not a study database (not a regular file)")
         try:
-            self.conn = sqlite3.connect(self.path, timeout=30.0)
-            self.conn.execute("PRAGMA journal_mode=WAL")
-            self.conn.execute("PRAGMA synchronous=NORMAL")
             if create:
-                self.conn.executescript(_SCHEMA)
+                check_database(self.path)
+                self.conn = sqlite3.connect(self.path, timeout=BUSY_SECONDS,
+                                            isolation_level=None)
+                self.conn.execute("PRAGMA journal_mode=WAL")
+                self.conn.execute("PRAGMA synchronous=NORMAL")
+                with self._transaction():
+                    for statement in _SCHEMA.split(";"):
+                        if statement.strip():
+                            self.conn.execute(statement)
             else:
-                self.conn.execute("SELECT 1 FROM meta LIMIT 1")
-        except sqlite3.DatabaseError as exc:
-            raise StudyError(f"{self.path}: not a govopt study database ({exc})") from None
+                self.conn = self._read_only()
+                names = {n for (n,) in self.conn.execute(
+                    "SELECT name FROM sqlite_master WHERE type = 'table'")}
+                if not set(_TABLES) <= names:
+                    self.conn.close()
+                    raise StudyError(f"{self.path}: not a govopt study database (no study "
+                                     "tables)")
+        except sqlite3.Error as exc:
+            raise StudyError(f"{self.path}: {_describe(exc)}") from None
+
+    def _read_only(self) -> sqlite3.Connection:
+        """A read-only connection; on a read-only folder (no WAL index can be made) the file
+        is read as immutable."""
+        conn = sqlite3.connect(_uri(self.path, mode="ro"), uri=True, timeout=BUSY_SECONDS)
+        try:
+            conn.execute("SELECT COUNT(*) FROM sqlite_master").fetchone()
+        except sqlite3.OperationalError:
+            conn.close()
+            conn = sqlite3.connect(_uri(self.path, mode="ro", immutable=1), uri=True)
+        return conn
 
     def close(self):
         self.conn.close()
@@ -983,57 +1164,160 @@ class Store:
     def __enter__(self):
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, kind, exc, tb):
         self.close()
+        if isinstance(exc, sqlite3.Error):
+            raise StudyError(f"{self.path}: {_describe(exc)}") from None
+
+    @contextlib.contextmanager
+    def _transaction(self):
+        """``BEGIN IMMEDIATE ... COMMIT``: the write lock first (waiting up to
+        :data:`BUSY_SECONDS` for another writer), so that what is read inside holds."""
+        self.conn.execute("BEGIN IMMEDIATE")
+        try:
+            yield
+        except BaseException:
+            with contextlib.suppress(sqlite3.Error):
+                self.conn.execute("ROLLBACK")
+            raise
+        self.conn.execute("COMMIT")
 
     def meta(self, key: str):
         row = self.conn.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
         return None if row is None else json.loads(row[0])
 
-    def set_meta(self, values: dict) -> None:
-        with self.conn:
-            self.conn.executemany("INSERT OR REPLACE INTO meta VALUES (?, ?)",
-                                  [(k, json.dumps(v)) for k, v in values.items()])
+    def _set_meta(self, values: dict) -> None:
+        self.conn.executemany("INSERT OR REPLACE INTO meta VALUES (?, ?)",
+                              [(k, json.dumps(v)) for k, v in values.items()])
 
-    def done(self) -> set[str]:
-        return {h for (h,) in self.conn.execute("SELECT hash FROM points")}
+    def set_meta(self, values: dict) -> None:
+        with self._transaction():
+            self._set_meta(values)
+
+    def _owner(self) -> str | None:
+        """The digest of the study this database holds (None: none yet)."""
+        digest = self.meta("digest")
+        if digest is None:
+            old = self.meta("study")
+            digest = None if old is None else study_digest(old)
+        return digest
+
+    def claim(self, definition: dict, total: int, *, resume: bool = False,
+              fresh: bool = False) -> None:
+        """Make this database the study ``definition``'s, atomically (under the write lock):
+        a database holding another study is refused (``fresh``: emptied first), one holding
+        rows of this study needs ``resume``. Rows written later check that it still is
+        (:meth:`add`)."""
+        from . import __version__
+
+        digest = study_digest(definition)
+        with self._transaction():
+            if fresh:
+                for table in ("points", "layouts", "meta"):
+                    self.conn.execute(f"DELETE FROM {table}")
+            old = self._owner()
+            if old is not None and old != digest:
+                study = self.meta("study") or {}
+                raise StudyError(f"{self.path}: the database holds another study "
+                                 f"({study.get('name')!r}, {study.get('spec_path')}); use "
+                                 "another --db, or --force to start afresh")
+            n_old = self.count()
+            if n_old and not resume:
+                raise StudyError(f"{self.path}: the database already holds {n_old} rows; use "
+                                 "--resume to continue the study, or --force to start afresh")
+            self._set_meta({"study": definition, "digest": digest,
+                            "govopt_version": __version__, "total": total})
+        self.digest = digest
+
+    def done(self, hashes: Iterable[str] | None = None) -> set[str]:
+        """The hashes of the points in the database (of ``hashes`` only, if given)."""
+        if hashes is None:
+            return {h for (h,) in self.conn.execute("SELECT hash FROM points")}
+        hashes, out = list(hashes), set()
+        for s in range(0, len(hashes), 900):
+            part = hashes[s:s + 900]
+            out.update(h for (h,) in self.conn.execute(
+                f"SELECT hash FROM points WHERE hash IN ({','.join('?' * len(part))})", part))
+        return out
 
     def count(self) -> int:
         return self.conn.execute("SELECT COUNT(*) FROM points").fetchone()[0]
 
     def add(self, chunk: tuple) -> None:
-        """One chunk ``(layouts, records)`` of :func:`encode`, in one transaction."""
+        """One chunk ``(layouts, records)`` of :func:`encode`, in one transaction; a point
+        already written (by another process running the same study) is kept. After
+        :meth:`claim`, refused if the database no longer holds that study."""
         layouts, records = chunk
-        with self.conn:
+        with self._transaction():
+            if self.digest is not None and self._owner() != self.digest:
+                raise StudyError(f"{self.path}: another study took this database over while "
+                                 "this one ran (--force); stopped")
             self.conn.executemany("INSERT OR IGNORE INTO layouts VALUES (?, ?)",
                                   [(k, json.dumps(v)) for k, v in layouts.items()])
-            self.conn.executemany("INSERT OR REPLACE INTO points VALUES (?, ?, ?, ?, ?, ?, ?)",
+            self.conn.executemany("INSERT OR IGNORE INTO points VALUES (?, ?, ?, ?, ?, ?, ?)",
                                   records)
 
-    def table(self) -> pd.DataFrame:
+    def table(self, columns: Iterable[str] | None = None, *, batch: int = 20_000
+              ) -> pd.DataFrame:
         """Every row, in the study's order (``point`` is its index), with ``pareto`` marked
-        where the study names objectives."""
+        where the study names objectives; ``columns``: only those (and what the Pareto front
+        needs), read ``batch`` rows at a time, so that a summary of a million points holds a few
+        columns, never every row's values (repeated texts such as the status held once)."""
         layouts = {k: json.loads(v) for k, v in self.conn.execute("SELECT * FROM layouts")}
-        groups: dict[str, tuple[list, list, list]] = {}
-        for idx, lid, nums, texts in self.conn.execute(
-                "SELECT idx, layout, numbers, texts FROM points ORDER BY idx"):
-            g = groups.setdefault(lid, ([], [], []))
-            g[0].append(idx)
-            g[1].append(nums)
-            g[2].append(texts)
-        if not groups:
-            return pd.DataFrame()
-        parts = sorted(((decode(layouts[lid], n, t).set_axis(i), len(layouts[lid]))
-                        for lid, (i, n, t) in groups.items()), key=lambda p: -p[1])
-        frame = pd.concat([p for p, _ in parts]).sort_index() if len(parts) > 1 else parts[0][0]
-        frame = frame.rename_axis("point").reset_index()
         study = self.meta("study") or {}
+        want = None
+        if columns is not None:
+            want = {"point", *columns}
+            if study.get("pareto"):
+                want |= {"status", *(objective_column(n)[0] for n in study["pareto"])}
+        texts_seen: dict = {}
+        parts, used = [], set()
+        cursor = self.conn.execute("SELECT idx, layout, numbers, texts FROM points ORDER BY idx")
+        while rows := cursor.fetchmany(batch):
+            groups: dict[str, tuple[list, list, list]] = {}
+            for idx, lid, nums, texts in rows:
+                g = groups.setdefault(lid, ([], [], []))
+                g[0].append(idx)
+                g[1].append(nums)
+                g[2].append(texts)
+            for lid, (i, n, t) in groups.items():
+                used.add(lid)
+                part = decode(layouts[lid], n, t).set_axis(i)
+                if want is not None:
+                    # a copy: a column of the decoded batch is a view holding all its values
+                    part = part[[c for c in part.columns if c in want]].copy()
+                    for c in part.columns:
+                        if part[c].dtype == object and c not in study.get("keys", ()):
+                            part[c] = [texts_seen.setdefault(v, v) if isinstance(v, str) else v
+                                       for v in part[c]]
+                parts.append(part)
+        if not parts:
+            return pd.DataFrame()
+        order = list(dict.fromkeys(c for lid in sorted(used, key=lambda k: -len(layouts[k]))
+                                   for c, _ in layouts[lid]))
+        frame = pd.concat(parts) if len(parts) > 1 else parts[0]
+        if len(used) > 1:
+            frame = frame.reindex(columns=[c for c in order if c in frame.columns])
+        frame = frame.sort_index().rename_axis("point").reset_index()
         if study.get("pareto"):
             try:
                 frame["pareto"] = pareto_front(frame, study["pareto"])
             except StudyError as exc:  # an objective that is no column: name the spec
                 raise StudyError(f"{study.get('spec_path', '?')}: study.{exc}") from None
         return frame
+
+    def columns(self) -> list[str]:
+        """Every column of the study's rows (of all layouts), in order."""
+        return list(dict.fromkeys(c for (v,) in self.conn.execute("SELECT columns FROM layouts")
+                                  for c, _ in json.loads(v)))
+
+    def row(self, point: int) -> dict:
+        """The row of point ``point`` (an index)."""
+        lid, nums, texts = self.conn.execute(
+            "SELECT layout, numbers, texts FROM points WHERE idx = ?", (point,)).fetchone()
+        layout = json.loads(self.conn.execute("SELECT columns FROM layouts WHERE id = ?",
+                                              (lid,)).fetchone()[0])
+        return decode(layout, [nums], [texts]).iloc[0].to_dict()
 
     def integrity(self) -> str:
         return self.conn.execute("PRAGMA integrity_check").fetchone()[0]
@@ -1128,44 +1412,39 @@ def run_study(study: Study, db: str | Path, *, workers: int = 1, dask: str | Non
     rows. ``progress(done, failures, total)`` is called after each chunk. Ctrl-C stops after
     the chunks already finished, which are kept (``interrupted`` in the report).
     """
-    points = study.points()
-    base = study.base()
-    digest = spec_digest(study.data)
-    definition = study.definition()
-    text = json.dumps(definition, sort_keys=True, default=str)
-    digest_of = _hasher(digest, study.mode, tuple(sorted(study.skip)))
-    hashes = [digest_of(p) for p in points]
-    db = Path(db)
-    del base
-    if db.exists() and not db.is_file():
-        raise StudyError(f"{db}: not a regular file")
-    if fresh:
-        remove_database(db)
+    check_dask_address(dask)
+    db = check_database(db, inputs=[study.path])
+    total = study.count()
+    definition = json.loads(json.dumps(study.definition(), default=str))
+    text = json.dumps(definition, sort_keys=True)
+    digest_of = _hasher(spec_digest(study.data), study.mode, tuple(sorted(study.skip)))
+    size = chunk or default_chunk(study)
+    spans = study.spans() if study.mode == "evaluate" else {}
     with Store(db) as store:
-        old = store.meta("study")
-        n_old = store.count()
-        if n_old and not resume:
-            raise StudyError(f"{db}: the database already holds {n_old} rows; use --resume to "
-                             "continue the study, or --force to start afresh")
-        if old is not None and n_old and _canonical(old) != _canonical(
-                json.loads(text)):
-            raise StudyError(f"{db}: the database holds another study ({old.get('name')!r}, "
-                             f"{old.get('spec_path')}); use another --db, or --force to start "
-                             "afresh")
-        from . import __version__
-
-        store.set_meta({"study": json.loads(text), "govopt_version": __version__,
-                        "total": len(points)})
-        done = store.done() if resume else set()
-        todo = [(i, h, p) for i, (h, p) in enumerate(zip(hashes, points, strict=True))
-                if h not in done]
-        size = chunk or default_chunk(study)
-        spans = _spans(points) if study.mode == "evaluate" else {}
-        chunks = [todo[s:s + size] for s in range(0, len(todo), size)]
-        report = RunReport(len(points), len(points) - len(todo), 0, 0)
-        failures = store.conn.execute(
+        try:
+            store.claim(definition, total, resume=resume, fresh=fresh)
+        except sqlite3.DatabaseError as exc:  # damaged: with --force, a new database
+            if not fresh or "malformed" not in str(exc):
+                raise
+            store.close()
+            remove_database(db)
+            store.conn = Store(db).conn
+            store.claim(definition, total, fresh=True)
+        del definition  # in the database now (a million-point sweep's values: ~70 MB a copy)
+        before = store.count()
+        report = RunReport(total, 0, 0, 0)
+        report.failures = store.conn.execute(
             "SELECT COUNT(*) FROM points WHERE status NOT IN ('pass', 'optimal')").fetchone()[0]
-        report.failures = failures if resume else 0
+        # made and hashed as they are taken, never all at once (bounded memory)
+        chunks = ([(i, digest_of(p), p) for i, p in block]
+                  for block in _blocks(enumerate(study.iter_points()), size))
+
+        def unwritten(c):
+            """The points of chunk ``c`` not yet in the database (an earlier run's, resumed,
+            or another process's running the same study: they cooperate)."""
+            written = store.done(h for _, h, _ in c)
+            report.skipped += len(written)
+            return [item for item in c if item[1] not in written]
 
         def commit(chunk):
             store.add(chunk)
@@ -1173,18 +1452,22 @@ def run_study(study: Study, db: str | Path, *, workers: int = 1, dask: str | Non
             report.done += len(records)
             report.failures += sum(r[2] not in ("pass", "optimal") for r in records)
             if progress is not None:
-                progress(report.skipped + report.done, report.failures, report.total)
+                progress(max(before, report.skipped + report.done), report.failures,
+                         report.total)
 
         if progress is not None:
-            progress(report.skipped, report.failures, report.total)
+            progress(before, report.failures, report.total)
         try:
             if dask:
-                _run_dask(text, chunks, spans, commit, dask, workers)
-            elif workers > 1 and len(chunks) > 1:
-                _run_pool(text, chunks, spans, commit, workers)
+                _run_dask(text, [c for c in map(unwritten, chunks) if c], spans, commit, dask,
+                          workers)
+            elif workers > 1 and total > size:
+                _run_pool(text, chunks, spans, commit, workers, unwritten)
             else:
                 for c in chunks:
-                    commit(run_chunk(text, c, spans))
+                    c = unwritten(c)
+                    if c:
+                        commit(run_chunk(text, c, spans))
         except KeyboardInterrupt:
             report.interrupted = True
         return report
@@ -1196,14 +1479,15 @@ def _ignore_sigint():
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent handles Ctrl-C
 
 
-def _run_pool(text, chunks, spans, commit, workers):
-    """Chunks on a process pool; results committed by this process as they finish."""
+def _run_pool(text, chunks, spans, commit, workers, unwritten=lambda c: c):
+    """Chunks on a process pool; results committed by this process as they finish; each
+    chunk's points filtered by ``unwritten`` when it is sent."""
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
     pool = ProcessPoolExecutor(max_workers=workers, initializer=_ignore_sigint)
     try:
         pending = set()
-        queue = iter(chunks)
+        queue = (c for c in map(unwritten, chunks) if c)
         for c in itertools.islice(queue, 2 * workers):
             pending.add(pool.submit(run_chunk, text, c, spans))
         while pending:
@@ -1219,6 +1503,21 @@ def _run_pool(text, chunks, spans, commit, workers):
         pool.shutdown(wait=False, cancel_futures=True)
         raise
     pool.shutdown()
+
+
+#: a Dask scheduler's address: ``[protocol://]host:port`` (or an in-process cluster's)
+_DASK_ADDRESS = re.compile(r"(?:(?:tcp|tls|ws|wss|ucx)://)?(?:\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+)"
+                           r":(\d{1,5})|inproc://[\w.:/-]+")
+
+
+def check_dask_address(address: str | None) -> None:
+    """``--dask``: ``"local"`` or a scheduler's ``[tcp://]HOST:PORT`` (one line if not)."""
+    if address is None or address == "local":
+        return
+    m = _DASK_ADDRESS.fullmatch(str(address))
+    if m is None or (m[1] is not None and not 0 < int(m[1]) < 65536):
+        raise StudyError(f"--dask: expected 'local' or a scheduler address HOST:PORT or "
+                         f"tcp://HOST:PORT, got {limits.shorten(address)}")
 
 
 def _run_dask(text, chunks, spans, commit, address, workers):
@@ -1370,9 +1669,16 @@ def _drawn(value) -> str:
 def summary_text(store: Store) -> str:
     """What `govopt study show` prints: the study, its progress, status counts, the best
     feasible point, the Pareto front and, for a tolerance study, the probabilities."""
+    from .bulk import check_names, passed_column
+
     study = store.meta("study") or {}
     total = store.meta("total") or 0
-    frame = store.table()
+    needed = ["status", "objective", "objective_value"]
+    if study.get("tolerances"):  # what tolerance_summary reads
+        checks = check_names(store.columns())
+        needed += [passed_column(c) for c in checks] + [f"margin: {c}" for c in checks] + [
+            "omega_inner_rad_s", "omega_outer_rad_s", "irregularity", "k2_normal_rad2_s2"]
+    frame = store.table(needed)
     lines = [f"study {study.get('name', '?')!r}: {study.get('mode')} mode on "
              f"{study.get('spec_path')}, {', '.join(study.get('keys', []))} "
              f"({study.get('combine')}); govopt {store.meta('govopt_version')}",
@@ -1384,17 +1690,19 @@ def summary_text(store: Store) -> str:
     ok = feasible(frame) & pd.to_numeric(frame["objective_value"], errors="coerce").notna()
     if ok.any():
         best = frame.loc[ok].sort_values("objective_value").iloc[0]
-        inputs = ", ".join(f"{k} = {_drawn(best[k])}" for k in study.get("keys", [])
-                           if k in best)
+        written = store.row(int(best["point"]))
+        inputs = ", ".join(f"{k} = {_drawn(written[k])}" for k in study.get("keys", [])
+                           if k in written)
         lines.append(f"best feasible {best.get('objective', 'objective')}: "
                      f"{best['objective_value']:.6g} at point {int(best['point'])} ({inputs})")
     if "pareto" in frame:
         lines.append(f"Pareto front ({', '.join(study['pareto'])}): "
                      f"{int(frame['pareto'].sum())} points: "
                      + ", ".join(str(int(i)) for i in frame.loc[frame["pareto"], "point"][:20]))
-    errors = frame.loc[frame["status"] == "error", "message"]
-    if len(errors):
-        lines.append(f"first error: {errors.iloc[0]}")
+    error = store.conn.execute("SELECT message FROM points WHERE status = 'error' ORDER BY idx "
+                               "LIMIT 1").fetchone()
+    if error is not None:
+        lines.append(f"first error: {error[0]}")
     if study.get("tolerances"):
         s = tolerance_summary(frame)
         a = s["all_requirements"]

@@ -129,6 +129,7 @@ class Case:
     command: str = "evaluate"
     names_key: bool = True  # the error line must name the file and a key
     gtype: str = ""  # the governor type of the spec mutated
+    prepare: object = None  # (spec path) -> None: files the case needs besides the spec
 
 
 #: mutations whose input is nonsense wherever they apply: accepting one is a silent result
@@ -501,6 +502,149 @@ def _study_cases() -> Iterator[Case]:
                        "option", "study", True, "study")
 
 
+def _db(spec: Path) -> Path:
+    return Path(f"{spec}.db")
+
+
+def _clean(db: Path) -> None:
+    for suffix in ("", "-wal", "-shm"):
+        Path(str(db) + suffix).unlink(missing_ok=True)
+
+
+def _foreign_db(spec: Path) -> None:
+    """An SQLite database of something else."""
+    import sqlite3
+
+    _clean(_db(spec))
+    conn = sqlite3.connect(_db(spec))
+    conn.execute("CREATE TABLE notes (x)")
+    conn.commit()
+    conn.close()
+
+
+def _other_study_db(spec: Path) -> None:
+    """A govopt study database holding another study (as a second writer finds it)."""
+    from govopt.study import Store
+
+    _clean(_db(spec))
+    with Store(_db(spec)) as store:
+        store.set_meta({"study": {"name": "another", "spec_path": "other.toml"},
+                        "digest": "another", "total": 1})
+
+
+def _damaged_db(spec: Path) -> None:
+    """A govopt study database with garbage past its first page."""
+    from govopt.study import Store
+
+    _clean(_db(spec))
+    with Store(_db(spec)) as store:
+        store.set_meta({"study": {"name": "x", "pad": "x" * 40_000}, "digest": "x"})
+        store.conn.execute("PRAGMA wal_checkpoint(TRUNCATE)")
+    with open(_db(spec), "r+b") as fh:
+        fh.seek(4096)
+        fh.write(bytes(range(256)) * 64)
+
+
+def _empty_file(spec: Path) -> None:
+    _clean(_db(spec))
+    _db(spec).touch()
+
+
+def _existing(spec: Path) -> None:
+    out = Path(f"{spec}.out")
+    out.mkdir(exist_ok=True)
+    (out / "speed-vs-error.csv").write_text("keep")
+
+
+#: study databases and outputs of ``study``, ``init`` and ``bench`` (issue 21): each case
+#: (label, command, arguments, what to prepare); ``{db}`` is a database beside the spec
+OUTPUT_CASES = (
+    ("study/--db is the spec, --force", "study",
+     ("study", "run", "{spec}", "--db", "{spec}", "--force"), None),
+    ("study/--db a foreign SQLite file", "study", ("study", "run", "{spec}", "--db", "{db}"),
+     _foreign_db),
+    ("study/--db a foreign SQLite file, --force", "study",
+     ("study", "run", "{spec}", "--db", "{db}", "--force"), _foreign_db),
+    ("study/--db holding another study", "study", ("study", "run", "{spec}", "--db", "{db}"),
+     _other_study_db),
+    ("study/--db holding another study, --resume", "study",
+     ("study", "run", "{spec}", "--db", "{db}", "--resume"), _other_study_db),
+    ("study/--db damaged, --resume", "study",
+     ("study", "run", "{spec}", "--db", "{db}", "--resume"), _damaged_db),
+    ("study/show damaged", "study", ("study", "show", "{db}"), _damaged_db),
+    ("study/export damaged", "study", ("study", "export", "{db}", "--out", "{db}.csv"),
+     _damaged_db),
+    ("study/show empty file", "study", ("study", "show", "{db}"), _empty_file),
+    ("study/export empty file", "study", ("study", "export", "{db}", "--out", "{db}.csv"),
+     _empty_file),
+    ("study/show a folder", "study", ("study", "show", "/tmp"), None),
+    ("study/--db in a missing folder", "study",
+     ("study", "run", "{spec}", "--db", "/nonexistent/x.db"), None),
+    ("study/--db empty", "study", ("study", "run", "{spec}", "--db", ""), None),
+    ("study/--db ending in /", "study", ("study", "run", "{spec}", "--db", "{db}/"), None),
+    ("study/--db a device", "study", ("study", "run", "{spec}", "--db", "/dev/null"), None),
+    ("study/--out ending in /", "study",
+     ("study", "run", "{spec}", "--db", "{db}", "--out", "{db}.csv/"), None),
+    ("study/--dask garbage", "study", ("study", "run", "{spec}", "--db", "{db}", "--dask",
+                                       "garbage"), None),
+    ("study/--dask port 99999", "study",
+     ("study", "run", "{spec}", "--db", "{db}", "--dask", "tcp://localhost:99999"), None),
+    ("init/-o a missing folder/", "init", ("init", "hamabe-a", "-o", "/nonexistent/new/"),
+     None),
+    ("init/-o a device", "init", ("init", "hamabe-a", "-o", "/dev/null"), None),
+    ("init/-o the existing spec", "init", ("init", "hamabe-a", "-o", "{spec}"), None),
+    ("init/-o x.toml/ in a missing folder", "init",
+     ("init", "hamabe-a", "-o", "/nonexistent/x.toml/"), None),
+    ("init/unknown example", "init", ("init", "bogus"), None),
+    ("bench/--out a file", "bench", ("bench", "--quick", "--out", "{spec}"), None),
+    ("bench/--out a device", "bench", ("bench", "--quick", "--out", "/dev/null"), None),
+    ("bench/--out an impossible folder", "bench",
+     ("bench", "--quick", "--out", "/nonexistent/a/b"), None),
+    ("bench/--out over existing files", "bench",
+     ("bench", "--quick", "--out", "{spec}.out"), _existing),
+)
+
+
+def _output_cases() -> Iterator[Case]:
+    """Study databases (another study's, a damaged one, an empty file, foreign files) and the
+    outputs of ``study``, ``init`` and ``bench``: one line each, nothing lost (issue 21)."""
+    text = study_specs()[0].read_text()
+    for label, command, args, prepare in OUTPUT_CASES:
+        args = tuple(a.replace("{db}", "{spec}.db") if a.startswith("{db}") else a
+                     for a in args)
+        yield Case(label, args, lambda t=text: t, "option", command, True, command,
+                   names_key=False, prepare=prepare)
+
+
+#: degenerate designs and geometries (issue 21): a length of the governor a thousand times
+#: over, or just below the largest other; a wire as thick as its coil's radius, 0.01 active
+#: turns, a free length a thousand times over: a result, or one line naming the keys
+def _degenerate_mutations(data: dict) -> Iterator[tuple[str, str, object]]:
+    gov, design = data.get("governor", {}), data.get("design", {})
+    lengths = {k: q for k, v in gov.items()
+               if (q := _quantity(v)) is not None and q[2] and q[0] > 0}
+    for key, (mag, unit, _, _) in lengths.items():
+        yield "degenerate_long", f"governor.{key}", partial(
+            _set, data, ("governor", key), f"{mag * 1000:g} {unit}")
+        others = [(m * si, k) for k, (m, _, _, si) in lengths.items() if k != key]
+        if others:
+            largest, _ = max(others)
+            si = lengths[key][3]
+            yield "degenerate_near", f"governor.{key}", partial(
+                _set, data, ("governor", key), f"{0.9999 * largest / si:.8g} {unit}")
+    if "wire_diameter" in design and "coil_radius" in design:
+        yield "degenerate_wire", "design.wire_diameter", partial(
+            _set, data, ("design", "wire_diameter"), design["coil_radius"])
+    if "active_turns" in design:
+        yield "degenerate_turns", "design.active_turns", partial(
+            _set, data, ("design", "active_turns"), 0.01)
+    for key in ("free_length", "free_half_length"):
+        q = _quantity(design.get(key))
+        if q is not None:
+            yield "degenerate_long", f"design.{key}", partial(
+                _set, data, ("design", key), f"{q[0] * 1000:g} {q[1]}")
+
+
 def command_of(data: dict) -> str:
     """The command a bundled spec is for: ``design`` without a ``[design]`` table."""
     return "evaluate" if "design" in data else "design"
@@ -520,7 +664,8 @@ def spec_cases(path: Path) -> Iterator[Case]:
     data = tomllib.loads(path.read_text())
     command = command_of(data)
     for ident, kind, key, mutated in _named(path, (*_spec_mutations(data),
-                                                   *_size_mutations(data))):
+                                                   *_size_mutations(data),
+                                                   *_degenerate_mutations(data))):
         yield Case(ident, (command, "{spec}"), lambda m=mutated: to_toml(m()), kind, key,
                    nonsense(kind, key), command, gtype=data["governor"]["type"])
 
@@ -560,7 +705,7 @@ def corpus(budget: int | None = None, seconds: float | None = None) -> list[Case
     type, command, kind) and (type, command, key); then more, in a fixed pseudo-random
     order, while both budgets last."""
     fixed = [*_file_cases(), *_spring_cases(),
-             *(c for c in _study_cases() if c.kind == "option")]
+             *(c for c in _study_cases() if c.kind == "option"), *_output_cases()]
     pool = [c for p in bundled_specs() for c in spec_cases(p)]
     pool += [c for c in _study_cases() if c.kind != "option"]
     if budget is None:
@@ -638,6 +783,8 @@ def run(case: Case, folder: Path, limit: float = 10.0, json_out: bool = False) -
     """Run ``case`` in-process through the CLI (``govopt.cli.main``) with a time limit;
     warnings print as the real CLI prints them (stderr), not into pytest's record."""
     spec, written = _write(case, folder)
+    if case.prepare is not None:
+        case.prepare(spec)
     json_out = json_out and case.command in ("evaluate", "design", "spring")
     args = _args(case, spec, json_out)
     previous = signal.signal(signal.SIGALRM, _on_alarm)
@@ -667,6 +814,8 @@ def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = Fals
     import subprocess
 
     spec, written = _write(case, folder)
+    if case.prepare is not None:
+        case.prepare(spec)
     json_out = json_out and case.command in ("evaluate", "design", "spring")
     t0 = time.perf_counter()
     try:

@@ -1,10 +1,11 @@
 """Hostile inputs (issue 15, items 1, 2 and 4): a corpus of more than a thousand mutated specs,
 hostile files and options (:mod:`hostile`), for every governor type and every command
-(evaluate, design, spring, study run), run in-process through the CLI with a time limit each,
-and a sample through the real command line. Every one is answered with a result, or with one
-line naming the file and the key (exit 2): no traceback, no hang, no silent result, no
-warning noise. The terminal summary shows "N hostile inputs: 0 tracebacks, 0 hangs, 0 silent
-results"."""
+(evaluate, design, spring, study run), degenerate geometries of every type, study databases
+(another study's, damaged, empty, foreign) and the outputs of study, init and bench (issue
+21), run in-process through the CLI with a time limit each, and a sample through the real
+command line. Every one is answered with a result, or with one line naming the file and the
+key (exit 2): no traceback, no hang, no silent result, no warning noise. The terminal summary
+shows "N hostile inputs: 0 tracebacks, 0 hangs, 0 silent results"."""
 
 import resource
 from concurrent.futures import ThreadPoolExecutor
@@ -45,7 +46,10 @@ def test_hostile_corpus(tmp_path):
     cases = hostile.corpus(BUDGET, SECONDS)
     assert len(cases) >= 1000
     assert {c.gtype for c in cases} >= set(REGISTRY)
-    assert {c.command for c in cases} == {"evaluate", "design", "spring", "study"}
+    assert {c.command for c in cases} == {"evaluate", "design", "spring", "study", "init",
+                                          "bench"}
+    assert {c.kind for c in cases} >= {"degenerate_long", "degenerate_near", "degenerate_wire",
+                                       "degenerate_turns"}
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
     outcomes = [hostile.run(c, tmp_path, LIMIT, json_out=i % 2 == 1)
                 for i, c in enumerate(cases)]

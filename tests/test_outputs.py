@@ -472,3 +472,45 @@ def test_kill_design_late(tmp_path, durations, sig):
         rc, err, _ = _kill(args, tmp_path, sig, durations["design"] * frac)
         _after_kill(tmp_path, sig, rc, err)
         _check_outputs(tmp_path, old)
+
+
+# ---------------------------------------------------------------------------------------------
+# a trailing '/' names a folder; bench checks its outputs first (issue 21)
+
+
+def test_trailing_slash_names_a_folder(tmp_path, monkeypatch):
+    """`-o x.toml/`, `--xlsx x.xlsx/`, `--out x.csv/`: a name ending in '/' is a folder, never a
+    file of that name; `init -o DIR/new/` makes the folder (its parent exists) and writes into
+    it, `init -o missing/new/` refuses."""
+    monkeypatch.chdir(tmp_path)
+    spec = SPECS / "hamabe-a.toml"
+    for args in (["evaluate", spec, "--xlsx", "x.xlsx/"],
+                 ["design", SPECS / "hamabe-design.toml", "-o", "y.toml/"],
+                 ["study", "run", spec, "--sweep", "speed.irregularity=0.1,0.2", "--db",
+                  "s.db", "--out", "s.csv/"]):
+        line = _one_error_line(_run(args))
+        assert "a name ending in '/' is a folder" in line, line
+    assert sorted(p.name for p in tmp_path.iterdir()) == []
+    (tmp_path / "dd").mkdir()
+    r = _run(["init", "hamabe-a", "-o", "dd/newdir/"])
+    assert r.exit_code == 0, r.output
+    assert (tmp_path / "dd" / "newdir" / "hamabe-a.toml").read_bytes() == spec.read_bytes()
+    assert "folder nodir does not exist" in _one_error_line(
+        _run(["init", "hamabe-a", "-o", "nodir/newdir/"]))
+    assert not (tmp_path / "nodir").exists()
+
+
+def test_bench_checks_its_outputs_before_the_benchmark(tmp_path):
+    """`bench --out` onto a file, a device or a missing folder, or a folder whose report files
+    exist (without --force), fails in a moment with one line, before the benchmark runs."""
+    (tmp_path / "f").write_text("keep")
+    done = tmp_path / "done"
+    done.mkdir()
+    (done / "speed-vs-error.csv").write_text("keep")
+    for out, expected in ((tmp_path / "f", "not a folder"), ("/dev/null", "not a folder"),
+                          (tmp_path / "no" / "x", "does not exist"),
+                          (done, "already exists; use --force")):
+        t0 = time.perf_counter()
+        line = _one_error_line(_run(["bench", "--quick", "--no-targets", "--out", out]))
+        assert expected in line and time.perf_counter() - t0 < 5, line
+    assert (tmp_path / "f").read_text() == (done / "speed-vs-error.csv").read_text() == "keep"

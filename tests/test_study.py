@@ -377,7 +377,7 @@ def test_cli_study_show_export(tmp_path, monkeypatch):
     assert {p.name for p in (tmp_path / "plots").iterdir()} >= {
         "sweep-design.ball_weight.png", "sweep-design.free_length.svg", "pareto.png"}
     again = cli("study", HARTNELL, "--sweep", "design.ball_weight=2 kgf", "--db", "s.db")
-    assert again.exit_code == 2 and "--resume" in again.output
+    assert again.exit_code == 2 and "holds another study" in again.output  # not --resume
     show = cli("study", "show", "s.db")
     assert show.exit_code == 0 and "status:" in show.stdout
     out = cli("study", "export", "s.db", "--out", "s.csv")
@@ -473,3 +473,140 @@ def test_study_show_gives_speeds_in_rpm_and_inputs_as_drawn(tmp_path):
     want = pd.to_numeric(frame["omega_inner_rad_s"]).mean() * 30 / math.pi
     assert mean == pytest.approx(want, rel=1e-5)
     assert "rad_s" not in text.split("tolerance study", 1)[1].split("irregularity: mean")[0]
+# ---------------------------------------------------------------------------------------------
+# databases that must not lose anything (issue 21)
+
+
+def test_db_never_replaces_the_spec_nor_a_foreign_file(tmp_path, monkeypatch):
+    """`--db SPEC --force` refuses (the spec is kept byte for byte); so does --db on a file that
+    is not a govopt study database; an empty file is never written by `export` (read-only)."""
+    from clirun import invoke
+
+    monkeypatch.chdir(tmp_path)
+    spec = tmp_path / "s.toml"
+    spec.write_bytes(HARTNELL.read_bytes())
+    sweep = "design.ball_weight=1.9 kgf,2 kgf"
+    r = invoke(["study", "run", spec, "--sweep", sweep, "--db", spec, "--force"])
+    assert r.exit_code == 2 and r.stderr.count("\n") == 1, r.output
+    assert "it is the spec" in r.stderr
+    assert spec.read_bytes() == HARTNELL.read_bytes()
+    other = tmp_path / "notes.db"
+    conn = sqlite3.connect(other)
+    conn.execute("CREATE TABLE notes (x)")
+    conn.commit()
+    conn.close()
+    before = other.read_bytes()
+    for force in ((), ("--force",)):
+        r = invoke(["study", "run", spec, "--sweep", sweep, "--db", other, *force])
+        assert r.exit_code == 2 and "not a govopt study database" in r.stderr, r.output
+    assert other.read_bytes() == before
+    empty = tmp_path / "empty.db"
+    empty.touch()
+    r = invoke(["study", "export", empty, "--out", "x.csv"])
+    assert r.exit_code == 2 and "not a govopt study database" in r.stderr, r.output
+    assert empty.stat().st_size == 0 and not (tmp_path / "x.csv").exists()
+
+
+def test_damaged_database_is_one_line(tmp_path, monkeypatch):
+    """Garbage past the first page: run --resume, show and export answer one line naming the
+    file (exit 2); --force starts afresh."""
+    from clirun import invoke
+
+    monkeypatch.chdir(tmp_path)
+    sweep = "design.ball_weight=1.8 kgf:2.2 kgf:300"
+    assert invoke(["study", "run", HARTNELL, "--sweep", sweep, "--db", "d.db",
+                   "--skip", "dynamics,vibration,classic"]).exit_code == 0
+    with open(tmp_path / "d.db", "r+b") as fh:
+        assert fh.seek(0, 2) > 8192
+        fh.seek(4096)
+        fh.write(os.urandom(4096))
+    for args in (["study", "run", HARTNELL, "--sweep", sweep, "--db", "d.db", "--resume"],
+                 ["study", "show", "d.db"], ["study", "export", "d.db", "--out", "d.csv"]):
+        r = invoke(args)
+        assert r.exit_code == 2, r.output
+        assert r.stderr.startswith("error: d.db: the study database is damaged"), r.stderr
+        assert r.stderr.count("\n") == 1
+    r = invoke(["study", "run", HARTNELL, "--sweep", sweep, "--db", "d.db", "--force",
+                "--skip", "dynamics,vibration,classic"])
+    assert r.exit_code == 0 and "points: 300 of 300 done" in r.stdout, r.output
+
+
+def test_db_and_dask_options_are_checked_first(tmp_path, monkeypatch):
+    from clirun import invoke
+
+    monkeypatch.chdir(tmp_path)
+    base = ["study", "run", HARTNELL, "--sweep", "design.ball_weight=1.9 kgf,2 kgf"]
+    cases = {("--db", "no/such/x.db"): "folder no/such does not exist",
+             ("--db", ""): "--db: expected a database file name",
+             ("--db", str(tmp_path)): "not a regular file",
+             ("--dask", "garbage"): "--dask: expected 'local' or a scheduler address",
+             ("--dask", "tcp://host:99999"): "--dask: expected"}
+    for args, expected in cases.items():
+        r = invoke([*base, *args])
+        assert r.exit_code == 2 and expected in r.stderr, (args, r.output)
+        assert r.stderr.count("\n") == 1
+    assert not list(tmp_path.iterdir())  # nothing written
+
+
+def test_show_opens_read_only(tmp_path):
+    """`study show` needs no write: a database whose file and folder are read-only is shown
+    (and the file is not modified)."""
+    from clirun import invoke
+
+    db = tmp_path / "ro" / "s.db"
+    db.parent.mkdir()
+    run_study(load_study(HARTNELL, sweeps=["design.ball_weight=1.9 kgf,2 kgf"]), db)
+    before = db.read_bytes()
+    db.chmod(0o444)
+    db.parent.chmod(0o555)
+    try:
+        r = invoke(["study", "show", db])
+    finally:
+        db.parent.chmod(0o755)
+    assert r.exit_code == 0 and "points: 2 of 2 done" in r.stdout, r.output
+    assert db.read_bytes() == before
+
+
+def _start(spec, db, sweep, *extra):
+    return _cli("study", "run", spec, "--db", db, "--sweep", sweep, "--chunk", "5",
+                "--skip", "dynamics,vibration,classic", *extra)
+
+
+def test_two_studies_on_one_database(tmp_path):
+    """Two processes started at once: of two *different* studies one is refused (one line
+    naming the database and that it holds another study) and the database holds only the
+    other's rows; two runs of the *same* study cooperate: every point once."""
+    db = tmp_path / "c.db"
+    a = _start(HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:120")
+    b = _start(HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:70")
+    (_, err_a), (_, err_b) = a.communicate(timeout=300), b.communicate(timeout=300)
+    codes = sorted([a.returncode, b.returncode])
+    assert codes[0] in (0, 1) and codes[1] == 2, (err_a, err_b)
+    refused = err_a if a.returncode == 2 else err_b
+    assert refused.startswith(f"error: {db}: the database holds another study"), refused
+    assert refused.count("\n") == 1
+    ran = 120 if a.returncode != 2 else 70
+    with Store(db, create=False) as store:
+        assert store.count() == ran == store.meta("total")
+        assert store.integrity() == "ok"
+    same = tmp_path / "same.db"
+    sweep = "design.ball_weight=1.8 kgf:2.2 kgf:200"
+    a = _start(HARTNELL, same, sweep, "--resume")
+    b = _start(HARTNELL, same, sweep, "--resume")
+    for p in (a, b):
+        out, err = p.communicate(timeout=300)
+        assert p.returncode in (0, 1) and "points: 200 of 200 done" in out, err
+    with Store(same, create=False) as store:
+        assert store.count() == 200
+        assert sorted(store.table()["point"]) == list(range(200))
+
+
+def test_sweep_and_tolerance_errors_name_the_key_and_spec(tmp_path):
+    with pytest.raises(StudyError, match=r"^.*hartnell.toml: study: sweep design.ball_weight: "
+                                         r"cannot read '9\*\*9\*\*9 kgf'"):
+        load_study(HARTNELL, sweeps=["design.ball_weight=9**9**9 kgf:3 kgf:3"])
+    study = load_study(HARTNELL, tolerances=["design.bogus=+-1%"], samples=4)
+    with pytest.raises(StudyError, match=r"hartnell.toml: study: tolerance design.bogus: the "
+                                         "spec has no numeric value there"):
+        run_study(study, tmp_path / "t.db")
+    assert not (tmp_path / "t.db").exists()

@@ -209,6 +209,72 @@ def configurations(spec: Spec, points: int | None = None) -> np.ndarray:
     return np.unique(np.append(x, g.x_normal))
 
 
+#: how each [design] key of a spring makes it softer (Hamabe eq. 2's rate ``G d^4 / (64 r^3 n)``
+#: for a coil, ``E w t^3`` over the cube of the length for a leaf)
+SOFTER = (("spring_stiffness", "lower"), ("wire_diameter", "thinner"),
+          ("coil_radius", "larger"), ("active_turns", "more"), ("leaf_thickness", "thinner"),
+          ("leaf_width", "narrower"))
+
+
+def no_equilibrium(spec: Spec, sd: SpringDesign, alpha, t, w2) -> str:
+    """Why ``omega^2 = (kappa (A - B l0) + cf) / (jp - ci)`` (:meth:`Terms.omega_squared`) is not
+    positive somewhere in the range, naming the spec keys that decide it and which way to move
+    them (one line): the regulating gear's inertia above the flying masses' (``jp - ci <= 0``);
+    a spring pushing outward: a given free length beyond the bound ``kappa (A - B l0) + cf > 0``
+    puts on it at every configuration, or, the free length set at the normal configuration
+    (:func:`free_half_length`), a rate above the largest that keeps ``restoring > 0`` (that
+    restoring force is linear in ``kappa``); else the dead loads."""
+    gov, design = spec.governor, spec.design
+    angle = gov.coordinate == "angle"
+
+    def at(x):
+        return f"{np.degrees(x):.2f} deg" if angle else f"{x:.6g} m"
+
+    bad = ~(w2 > 0)
+    i = int(np.argmax(bad))
+    head = (f"{spec.path}: design: no equilibrium speed at {gov.coordinate_name} = "
+            f"{at(alpha[i])}: ")
+    lever = np.broadcast_to(t.lever, alpha.shape)
+    if np.any(lever <= 0):
+        j = int(np.argmax(lever <= 0))
+        return head + (f"the regulating gear's inertia outweighs the flying masses' centrifugal "
+                       f"force at {at(alpha[j])}: a heavier design.{gov.mass_key}_weight, or a "
+                       "lighter regulating gear (its masses and levers in the spec)")
+    A, B, cf = (np.broadcast_to(v, alpha.shape) for v in (t.A, t.B, t.cf))
+    spring = sd.kappa * (A - B * sd.l0)
+    if gov.spring is not None and spring[i] < 0 and sd.kappa > 0:
+        key = f"design.{gov.free_length_key}"
+        if design is not None and design.free_half_length is not None:
+            # restoring > 0  <=>  B l0 < A + cf / kappa
+            bound = (A + cf / sd.kappa) / B
+            above = B < 0
+            if above.all() or not above.any():
+                limit = float(np.max(bound) if above.all() else np.min(bound))
+                way = "above" if above.all() else "below"
+                return head + (f"the spring pushes the governor outward there: {key} = "
+                               f"{sd.l0:.4g} m; equilibrium over the whole range needs it "
+                               f"{way} {limit:.4g} m")
+        elif spec.speed is not None:
+            tn = terms(spec, gov.x_normal, sd.m, sd.central)
+            Q_n = required_spring_moment(spec, gov.x_normal, spec.speed.omega_mean, sd.m,
+                                         sd.central)
+            c1 = A - B * tn.A / tn.B  # restoring = kappa c1 + c0 with l0 from the normal
+            c0 = B * Q_n / tn.B + cf
+            softer = ", ".join(f"{way} design.{k}" for k, way in SOFTER
+                               if design is not None and getattr(design, k, None) is not None)
+            if np.all(c0[c1 < 0] > 0):
+                kmax = float(np.min(c0[c1 < 0] / -c1[c1 < 0]))
+                return head + (f"the spring is too stiff ({key} from the normal "
+                               f"configuration): rate {sd.kappa:.4g} N/m, at most {kmax:.4g} N/m "
+                               f"holds the range ({softer or 'a softer spring'}; or [governor])")
+            return head + (f"with {key} set at the normal configuration no spring rate holds "
+                           "every configuration: the geometry in [governor] or the speeds in "
+                           "[speed]")
+    return head + ("the dead loads push the governor outward there: lighter loads on the "
+                   "regulating gear (the spec's loads and levers)"
+                   + (", or a stiffer spring" if gov.spring is not None else ""))
+
+
 def characteristic(spec: Spec, sd: SpringDesign, alpha=None) -> Characteristic:
     """Characteristic curve and spring loading of one design (Hamabe, eqs. 1, 2, 11, 12; the
     textbook's controlling-force curve, section 3.3), by virtual work on the seam."""
@@ -217,10 +283,7 @@ def characteristic(spec: Spec, sd: SpringDesign, alpha=None) -> Characteristic:
     t = terms(spec, alpha, sd.m, sd.central)
     w2 = t.omega_squared(sd.kappa, sd.l0)
     if np.any(w2 <= 0):
-        where = alpha[~(w2 > 0)][0]
-        shown = f"{np.degrees(where):.2f} deg" if gov.coordinate == "angle" else f"{where:.6g} m"
-        raise DesignError(f"{spec.path}: design: no equilibrium speed at {gov.coordinate_name} = "
-                          f"{shown}: the spring and dead loads push the governor outward there")
+        raise DesignError(no_equilibrium(spec, sd, alpha, t, w2))
     omega = np.sqrt(w2)
     F = spring_force(spec, alpha, sd.kappa, sd.l0)
     stress = (gov.spring_stress(alpha, F, sd, spec.material)

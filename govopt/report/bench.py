@@ -973,18 +973,32 @@ def plot(points: list[Point], path: Path) -> None:
     fig.savefig(path, dpi=110, format="png")
 
 
+#: the files of :func:`write_report`, in its folder
+REPORT_FILES = ("speed-vs-error.md", "speed-vs-error.csv", "speed-vs-error.png")
+
+
+def check_report(out: str | Path, *, overwrite: bool = False) -> Path:
+    """Before the benchmark: the folder ``out`` (made if only its parent exists) can take
+    :data:`REPORT_FILES`, none of which exists unless ``overwrite`` (regular files only)."""
+    from .files import check_output, output_folder
+
+    out = output_folder(out, "the benchmark report")
+    for name in REPORT_FILES:
+        check_output(out / name, overwrite=overwrite, what="benchmark report")
+    return out
+
+
 def write_report(points: list[Point], out: str | Path,
-                 target_rows: list[dict] | None = None) -> list[Path]:
-    """``speed-vs-error.md``, ``.csv`` and ``.png`` in folder ``out`` (created; replaced)."""
+                 target_rows: list[dict] | None = None, *,
+                 overwrite: bool = True) -> list[Path]:
+    """``speed-vs-error.md``, ``.csv`` and ``.png`` in folder ``out`` (:func:`check_report`;
+    an existing file replaced only with ``overwrite``)."""
     from .files import atomic_write
 
-    out = Path(out)
-    out.mkdir(parents=True, exist_ok=True)
-    md = out / "speed-vs-error.md"
-    csv_path = out / "speed-vs-error.csv"
-    png = out / "speed-vs-error.png"
+    out = check_report(out, overwrite=overwrite)
+    md, csv_path, png = (out / name for name in REPORT_FILES)
     text = markdown(points, target_rows)
-    atomic_write(md, lambda p: p.write_text(text + "\n"), overwrite=True, what="report")
+    atomic_write(md, lambda p: p.write_text(text + "\n"), overwrite=overwrite, what="report")
 
     def write_csv(p):
         with open(p, "w", newline="") as fh:
@@ -994,8 +1008,8 @@ def write_report(points: list[Point], out: str | Path,
                 w.writerow({**asdict(pt), "time_s": f"{pt.time_s:.6g}",
                             "error": f"{pt.error:.6g}"})
 
-    atomic_write(csv_path, write_csv, overwrite=True, what="CSV")
-    atomic_write(png, lambda p: plot(points, p), overwrite=True, what="plot")
+    atomic_write(csv_path, write_csv, overwrite=overwrite, what="CSV")
+    atomic_write(png, lambda p: plot(points, p), overwrite=overwrite, what="plot")
     return [md, csv_path, png]
 
 

@@ -76,14 +76,48 @@ def remove_stale_temps(directory: str | Path) -> list[Path]:
     return removed
 
 
+def names_folder(path: str | Path) -> bool:
+    """Whether ``path`` as typed ends with a separator (``out/``): it names a folder. (A
+    :class:`~pathlib.Path` has dropped it: the CLI passes outputs on as the text typed.)"""
+    return isinstance(path, str) and path.endswith(tuple(filter(None, (os.sep, os.altsep))))
+
+
+def _file_name(path: str | Path, what: str) -> Path:
+    """``path`` as a file's path, refused (one line) if it names a folder."""
+    if str(path) == "" or Path(path).name in ("", ".", ".."):
+        raise GovoptError(f"{what}: expected a file name, got {str(path)!r}")
+    if names_folder(path) and not os.path.isdir(path):
+        raise GovoptError(f"{path}: cannot write {what}: a name ending in '/' is a folder, and "
+                          f"{path} does not exist; expected a file name")
+    return Path(path)
+
+
+def output_folder(directory: str | Path, what: str) -> Path:
+    """The folder ``directory`` for outputs, made if only its parent exists (as ``--plots``);
+    one line if it is not a folder or cannot be made."""
+    directory = Path(directory)
+    if directory.is_dir():
+        return directory
+    if directory.exists() or directory.is_symlink():
+        raise GovoptError(f"{directory}: cannot write {what}: it is not a folder")
+    if not directory.absolute().parent.is_dir():
+        raise GovoptError(f"{directory}: cannot write {what}: folder {directory.parent} does not "
+                          "exist")
+    try:
+        directory.mkdir()
+    except OSError as exc:
+        raise GovoptError(f"{directory}: cannot make the folder for {what} "
+                          f"({_reason(exc)})") from None
+    return directory
+
+
 def check_output(path: str | Path, *, overwrite: bool = False, inputs: Iterable = (),
                  others: Iterable = (), what: str = "output") -> Path:
-    """Check before a run that ``path`` can be written: its folder exists, it is not the input
-    (``inputs``) nor another output of the same run (``others``), and it is absent or a regular
-    file that ``overwrite`` allows to replace. Raises :class:`GovoptError` with one line."""
-    path = Path(path)
-    if path.name in ("", ".", ".."):
-        raise GovoptError(f"{what}: expected a file name, got {str(path)!r}")
+    """Check before a run that ``path`` can be written: a file name (not a folder's: ``x/``),
+    its folder exists, it is not the input (``inputs``) nor another output of the same run
+    (``others``), and it is absent or a regular file that ``overwrite`` allows to replace.
+    Raises :class:`GovoptError` with one line."""
+    path = _file_name(path, what)
     try:
         st = os.stat(path)
     except FileNotFoundError:
@@ -212,7 +246,7 @@ def atomic_write(path: str | Path, write: Callable[[Path], object], *,
     :func:`overwrite_policy`, outside it True). Any
     :class:`OSError` becomes a one-line :class:`GovoptError` naming ``path`` and ``what``.
     """
-    shown = Path(path)
+    shown = _file_name(path, what)
     overwrite = _OVERWRITE.get() if overwrite is None else overwrite
     target = Path(os.path.realpath(shown))
     directory = target.parent
