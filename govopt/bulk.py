@@ -486,6 +486,14 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
     if gov.spring is not None and mat is not None:
         checks.add("shear stress", stress.max(axis=1), mat.allowable_shear_stress, "<=",
                    where=np.isfinite(cols["wire_diameter"]))
+        if helical.any():  # Governor.spring_checks' geometric rows: no grade needed
+            from .analysis import spring_engineering
+
+            for name, (value, limit, sense) in spring_engineering.geometry_rows(
+                    spec, cols["wire_diameter"], 2.0 * cols["coil_radius"],
+                    cols["active_turns"], kappa[:, 0], l0[:, 0], F.min(axis=1),
+                    F.max(axis=1)).items():
+                checks.add(name, value, limit, sense, where=helical)
     if spec.speed is not None:
         checks.add("irregularity", out["irregularity"], spec.speed.irregularity, "<=")
     checks.add("characteristic rises (stable)", rise, 0.0, ">=", scale=np.sqrt(w0sq))
@@ -630,12 +638,6 @@ def _requirement_checks(spec, req, cols, l0, out, checks, helical):
         ("active turns >= min", nt, req.active_turns[0], ">="),
         ("active turns <= max", nt, req.active_turns[1], "<="),
     ]
-    if spec.material.grade is None:  # evaluation.requirement_checks' geometric rows
-        from .analysis import spring_engineering
-
-        rows += [(k, *v) for k, v in spring_engineering.geometry_rows(
-            spec, d, 2.0 * r, nt, out["stiffness_N_per_m"], l0, out["min_spring_force_N"],
-            out["max_spring_force_N"]).items()]
     if req.max_outer_diameter is not None:
         rows.append(("outer diameter", 2.0 * r + d, req.max_outer_diameter, "<="))
     if req.min_surge_frequency is not None:

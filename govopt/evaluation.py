@@ -213,10 +213,6 @@ def requirement_checks(spec: Spec, req, sd: statics.SpringDesign, props) -> list
         Check("active turns >= min", sd.n, req.active_turns[0], ">=", ""),
         Check("active turns <= max", sd.n, req.active_turns[1], "<=", ""),
     ]
-    if spec.material.grade is None:  # with a grade, the spring engineering table has them
-        from .analysis import spring_engineering
-
-        out += spring_engineering.geometry_checks(spec, sd)
     if req.max_outer_diameter is not None:
         out.append(Check("outer diameter", 2.0 * sd.r + sd.d, req.max_outer_diameter, "<=", "m"))
     if req.min_surge_frequency is not None:

@@ -236,18 +236,23 @@ class Governor(ABC):
         shear stress against the allowable (Hamabe Ex. 1); with a wire grade
         (``material.grade``) the spring engineering table instead - static stresses against
         the grade's allowables at ``d``, the spring kind's geometry, and fatigue and surge under
-        ``vib``, the type's forced vibration (:mod:`govopt.analysis.spring_engineering`)."""
+        ``vib``, the type's forced vibration (:mod:`govopt.analysis.spring_engineering`).
+        Without a grade, the spring kind's geometric rows (coil clash, buckling, free pitch:
+        :func:`~govopt.analysis.spring_engineering.geometry_checks`) follow the stress."""
         from ..result import Check
 
         if spec.material is None or not np.isfinite(sd.d):
             return []
-        if spec.material.grade is not None:
-            from ..analysis import spring_engineering
+        from ..analysis import spring_engineering
 
+        if spec.material.grade is not None:
             return spring_engineering.checks(spec, sd, char, vib)
+        # the spring's geometry (coil clash, buckling, pitch) needs no wire grade: checked
+        # whenever d, r, n are known
         return [Check("shear stress", float(np.max(char.stress)),
                       spec.material.allowable_shear_stress, "<=", "Pa",
-                      "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s")]
+                      "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"),
+                *spring_engineering.geometry_checks(spec, sd)]
 
     def spring_report(self, spec, sd, char, vib=None):
         """The spring maker's sheet, the fatigue loads under ``vib`` and the manufacturing
