@@ -496,6 +496,14 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
                 checks.add(name, value, limit, sense, where=helical)
     if spec.speed is not None:
         checks.add("irregularity", out["irregularity"], spec.speed.irregularity, "<=")
+    if spec.speed is not None and spec.speed.band:  # evaluate's band rows (statics)
+        fr = _friction_at(gov, cols, np.array([gov.x_inner, gov.x_outer]))
+        with np.errstate(all="ignore"):
+            low, high = (np.sqrt(np.maximum(_flat(w2, n), 0.0)) for w2 in
+                         statics.band_speeds_squared(spec, m, kappa, l0, central,
+                                                     (fr[:, :1], fr[:, 1:])))
+        checks.add(statics.BAND_INNER, low, spec.speed.omega_inner, ">=")
+        checks.add(statics.BAND_OUTER, high, spec.speed.omega_outer, "<=")
     checks.add("characteristic rises (stable)", rise, 0.0, ">=", scale=np.sqrt(w0sq))
     if gov.spring is not None:
         top = np.abs(F).max(axis=1)
@@ -646,18 +654,25 @@ def _requirement_checks(spec, req, cols, l0, out, checks, helical):
         checks.add(name, value, limit, sense, where=h)
 
 
+def _friction_at(gov: Governor, cols: dict, x) -> np.ndarray:
+    """The friction band :meth:`Governor.friction` of every design at configurations ``x``,
+    shape ``(N, K)`` (evaluated once per distinct friction moment)."""
+    fm = cols["friction_moment"]
+    band = np.zeros((fm.size, np.size(x)))
+    for value in np.unique(fm):
+        rows = (fm == value) | (np.isnan(fm) & np.isnan(value))
+        probe = Design(pendulum_mass=1.0, friction_moment=None if np.isnan(value) else value)
+        band[rows] = gov.friction(x, probe)
+    return band
+
+
 def _classic(spec, cols, t, sd, w2, x, omega, ok):
     """:func:`govopt.analysis.classic.classic_measures` (its scalar figures), vectorised."""
     from .analysis.classic import EFFORT_CHANGE
 
     gov = spec.governor
     n = omega.shape[0]
-    fm = cols["friction_moment"]
-    band = np.zeros((n, x.size))
-    for value in np.unique(fm):
-        rows = (fm == value) | (np.isnan(fm) & np.isnan(value))
-        probe = Design(pendulum_mass=1.0, friction_moment=None if np.isnan(value) else value)
-        band[rows] = gov.friction(x, probe)
+    band = _friction_at(gov, cols, x)
     with np.errstate(all="ignore"):
         rise = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, band), 0.0))
         fall = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, -band), 0.0))

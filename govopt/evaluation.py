@@ -75,6 +75,14 @@ def _evaluate(spec: Spec, design: Design) -> Result:
         checks.append(Check("irregularity", char.irregularity, spec.speed.irregularity, "<=", "",
                             "Hamabe Part I: (omega_a - omega_i) / omega0, omega0 the spec's "
                             "mean speed"))
+    if spec.speed is not None and spec.speed.band:  # the whole operating band in the spec's
+        fr = gov.friction(np.array([gov.x_inner, gov.x_outer]), design)
+        low, high = (float(np.sqrt(max(float(w2), 0.0))) for w2 in statics.band_speeds_squared(
+            spec, sd.m, sd.kappa, sd.l0, sd.central, fr))
+        checks.append(Check(statics.BAND_INNER, low, spec.speed.omega_inner, ">=", "rad/s",
+                            statics.BAND_SOURCE))
+        checks.append(Check(statics.BAND_OUTER, high, spec.speed.omega_outer, "<=", "rad/s",
+                            statics.BAND_SOURCE))
     checks.append(Check("characteristic rises (stable)", rise, 0.0, ">=", f"rad/s/{unit}",
                         "d omega/dx > 0 over the range: the equilibrium (eq. 12) "
                         "differentiated; Hamabe Part III, stable by the characteristic curve",

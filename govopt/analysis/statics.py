@@ -105,6 +105,29 @@ def required_spring(spec: Spec, m, central=None):
             spring_force(spec, gov.x_outer, kappa, l0))
 
 
+#: the speed band's two requirements, one rule for every governor type (the names every path
+#: reports: evaluate, bulk, the design search and studies)
+BAND_INNER = "lowest speed >= speed.inner"
+BAND_OUTER = "highest speed <= speed.outer"
+BAND_SOURCE = ("[speed] inner/outer: the whole operating band inside the spec's; with friction "
+               "the governor closes at omega_fall and opens at omega_rise, omega^2 = (Q_s + cf "
+               "-+ F) / (jp - ci) (textbook 3.4(b), 'Friction at the sleeve'; Hamabe eq. 42)")
+
+
+def band_speeds_squared(spec: Spec, m, kappa, l0, central=None, friction=(0.0, 0.0)):
+    """``(omega_fall^2 at x_inner, omega_rise^2 at x_outer)``, (rad/s)^2: the ends of the
+    operating band, the governor closing at the innermost configuration and opening at the
+    outermost against the friction band ``friction = (F_inner, F_outer)`` (generalised forces,
+    the type's :meth:`Governor.friction`; textbook 3.4(b)). Arrays broadcast over designs.
+    The requirement (where the spec states ``[speed] inner/outer``, :attr:`Speed.band`):
+    ``omega_fall(x_inner) >= omega_inner`` and ``omega_rise(x_outer) <= omega_outer``."""
+    gov = spec.governor
+    t_i = terms(spec, gov.x_inner, m, central)
+    t_a = terms(spec, gov.x_outer, m, central)
+    return (t_i.omega_squared(kappa, l0, -np.asarray(friction[0])),
+            t_a.omega_squared(kappa, l0, np.asarray(friction[1])))
+
+
 def inertia(spec: Spec, sd: SpringDesign, x):
     """Generalised inertia at ``x``: the design's own value if it gives one, else the type's."""
     if sd.inertia_given:

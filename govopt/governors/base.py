@@ -269,6 +269,12 @@ class Governor(ABC):
         unit); default none."""
         return {}
 
+    def free_length_limits(self) -> dict:
+        """``{requirement name: (sense, limit)}``: the bounds on the spring's free length ``l0``
+        (m, the type's form) that the design search keeps among the statics (affine in
+        ``kappa`` with ``kappa l0``); a positive free length where it is a length."""
+        return {"free length > 0": (">=", 0.0)} if self.free_length_positive else {}
+
     def spring_force_coefficients(self, x):
         """``(A_F, B_F)`` with the spring force ``F = kappa (A_F - B_F l0)`` (N per N/m), for
         stresses; types without a spring return zeros."""
