@@ -64,3 +64,69 @@ def test_coil_clash_fails_on_every_path(clash_spec):
     row = evaluate_many(spec, [spec.design]).iloc[0]
     assert row["status"] == "fail" and CLASH in row["message"]
     assert row[f"passed: {CLASH}"] is False or not row[f"passed: {CLASH}"]
+
+
+def test_issue21_a_governor_far_below_its_band_fails_evaluate(tmp_path):
+    """A Hartnell with a 1e-6 kgf/cm spring holds the normal configuration at 0.13 rpm: the
+    spec's band 240-256.8 rpm is a requirement of evaluate, on both of its ends."""
+    text = (SPECS / "textbook-ex4-hartnell.toml").read_text()
+    text = text.replace('spring_stiffness = "3.572 kgf/cm"', 'spring_stiffness = "1e-6 kgf/cm"')
+    path = tmp_path / "soft.toml"
+    path.write_text(text)
+    res = evaluate(load_spec(path))
+    band = {c.name: c for c in res.checks if c.name.startswith(("lowest", "highest"))}
+    assert set(band) == {"lowest speed >= speed.inner", "highest speed <= speed.outer"}
+    low = band["lowest speed >= speed.inner"]
+    assert not low.passed and low.value < 0.01 * low.limit
+    spec = load_spec(path)
+    row = evaluate_many(spec, [spec.design]).iloc[0]
+    assert row["status"] == "fail" and "lowest speed >= speed.inner" in row["message"]
+    assert invoke(["evaluate", str(path)]).exit_code == 1
+
+
+@pytest.mark.parametrize("name", ["hartnell-design", "spring_loaded-design",
+                                  "traction-coil-design"])
+def test_designs_keep_their_whole_band_with_friction(name):
+    """The issue's cases: spring governors left their band (hartnell-design 139.4-156.7 rpm for
+    140-160, 124-165 with its sleeve friction). Now every design's band, friction included, is
+    inside the spec's, as evaluate and bulk check it."""
+    import numpy as np
+
+    from govopt.optimize.design import design
+
+    spec = load_spec(SPECS / f"{name}.toml")
+    res = design(spec)
+    sp = res.spec.speed
+    fall = np.asarray(res.classic["omega_fall_rad_s"])
+    rise = np.asarray(res.classic["omega_rise_rad_s"])
+    assert fall[0] >= sp.omega_inner * (1 - 1e-12) and rise[-1] <= sp.omega_outer * (1 + 1e-12)
+    assert res.statics.omega[0] >= sp.omega_inner and res.statics.omega[-1] <= sp.omega_outer
+    row = evaluate_many(res.spec, [res.design]).iloc[0]
+    assert row["status"] == "pass"
+
+
+def test_porter_diagnosis_names_the_k2_margin(tmp_path):
+    """porter-design at 200-235.8 rpm: the band is wide enough; what binds is the default
+    k2_margin 0.05 (0.03 makes it feasible). The diagnosis names it, with the value that
+    makes it feasible, and that value does make it feasible."""
+    import re
+
+    from govopt.errors import InfeasibleError
+    from govopt.optimize.design import design
+
+    text = (SPECS / "porter-design.toml").read_text()
+    text = text.replace('inner = "190 rpm"', 'inner = "200 rpm"').replace(
+        'outer = "224 rpm"', 'outer = "235.8 rpm"')
+    path = tmp_path / "porter.toml"
+    path.write_text(text)
+    with pytest.raises(InfeasibleError) as info:
+        design(load_spec(path))
+    message = str(info.value)
+    found = re.search(r"requirements\.k2_margin 0\.05 -> ([0-9.]+)", message)
+    assert found, message
+    assert "widen speed.inner/outer" not in message
+    relaxed = float(found.group(1))
+    assert 0.03 < relaxed < 0.05
+    path.write_text(text.replace('objective = "moving_mass"',
+                                 f'objective = "moving_mass"\nk2_margin = {relaxed}'))
+    assert design(load_spec(path)).optimisation["status"] == "optimal"

@@ -796,31 +796,20 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     ratio of the band's ends; the masses set its level (``M/m``) and, against friction, its
     width. With an engine and load changes the dash-pot is designed as for spring governors.
     """
-    gov, sp = spec.governor, spec.speed
+    gov = spec.governor
     grid = Grid.build(spec)
     m, c = masses(req)
     if m.size == 0:
         raise InfeasibleError(f"{spec.path}: bounds.{gov.mass_key}_weight: no weight on the "
                               "catalogue's weight_step grid lies within the bounds")
-    t = statics.terms(spec, grid.alpha, m[:, None], c[:, None])
-    fr = gov.friction(grid.alpha)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        w2, rise, fall = (t.omega_squared(0.0, 0.0, s * fr) for s in (0.0, 1.0, -1.0))
-        inertia = gov.inertia(grid.alpha, m[:, None], c[:, None]) + 0.0 * w2
-        k2 = t.stiffness(0.0, 0.0, w2) / inertia
-    k2_lo, k2_hi = k2_limits(spec, req)
-    ok_parts = {
-        "equilibrium speed > 0": np.all(fall > 0, axis=1),
-        "k^2 within its margins": np.all((k2 >= k2_lo) & (k2 <= k2_hi), axis=1),
-        statics.BAND_INNER: np.sqrt(np.maximum(fall[:, 0], 0)) >= sp.omega_inner,
-        statics.BAND_OUTER: np.sqrt(rise[:, -1]) <= sp.omega_outer,
-    }
+    ok_parts, w2, rise, fall, k2, inertia = _dead_weight_statics(spec, req, grid, m, c)
     ok = np.logical_and.reduce(list(ok_parts.values()))
     stats = {"masses": int(m.size), "combinations": int(m.size),
              "statics_feasible": int(ok.sum()), "spring_feasible": int(ok.sum())}
     if not ok.any():
-        raise InfeasibleError(_dead_weight_diagnosis(spec, ok_parts, rise, fall))
+        raise InfeasibleError(_dead_weight_diagnosis(spec, req, ok_parts, rise, fall))
     zero = Affine(0.0 * w2, w2)
+
     km = KappaModel(spec, m[:, None], grid.alpha, zero, Affine(0.0 * k2, k2),
                     Affine(0.0 * w2, 0.0 * w2), Affine(0.0 * m[:, None], 0.0 * m[:, None]),
                     inertia, c[:, None])
@@ -840,22 +829,86 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     raise InfeasibleError(_dynamics_conflict(spec, req, stats))
 
 
-def _dead_weight_diagnosis(spec: Spec, parts: dict, rise, fall) -> str:
-    """Which requirement no ball and central-load weight meets, with the nearest the geometry
-    allows."""
+def _dead_weight_statics(spec: Spec, req: Requirements, grid: Grid, m, c):
+    """The statics requirements of a dead-weight governor at every (ball, central) weight pair:
+    ``({name: met}, omega^2, omega_rise^2, omega_fall^2, k^2, inertia)`` over the grid."""
+    gov, sp = spec.governor, spec.speed
+    t = statics.terms(spec, grid.alpha, m[:, None], c[:, None])
+    fr = gov.friction(grid.alpha)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w2, rise, fall = (t.omega_squared(0.0, 0.0, s * fr) for s in (0.0, 1.0, -1.0))
+        inertia = gov.inertia(grid.alpha, m[:, None], c[:, None]) + 0.0 * w2
+        k2 = t.stiffness(0.0, 0.0, w2) / inertia
+    k2_lo, k2_hi = k2_limits(spec, req)
+    parts = {
+        "equilibrium speed > 0": np.all(fall > 0, axis=1),
+        "k^2 within its margins": np.all((k2 >= k2_lo) & (k2 <= k2_hi), axis=1),
+        statics.BAND_INNER: np.sqrt(np.maximum(fall[:, 0], 0)) >= sp.omega_inner,
+        statics.BAND_OUTER: np.sqrt(rise[:, -1]) <= sp.omega_outer,
+    }
+    return parts, w2, rise, fall, k2, inertia
+
+
+def _bisect(feasible, lo: float = 1.0, hi: float = 100.0, iters: int = 12) -> float | None:
+    """Smallest factor ``x`` in ``[lo, hi]`` with ``feasible(x)``, by bisection in log space;
+    None if even ``hi`` is not enough."""
+    if not feasible(hi):
+        return None
+    for _ in range(iters):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (lo, mid) if feasible(mid) else (mid, hi)
+    return hi
+
+
+def _dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall) -> str:
+    """Which requirement no ball and central-load weight meets, and the requirements that bind:
+    each relaxed in turn (the k^2 margin, the band's ends, the weight bounds), with the value
+    that makes the search feasible."""
     sp = spec.speed
     failing = [k for k, v in parts.items() if not v.any()]
+    head = (f"{spec.path}: infeasible: no {spec.governor.mass_key} and central-load weight in "
+            f"the bounds meets " + (", ".join(f"'{k}'" for k in failing) if failing else
+                                    "all the statics requirements together"))
+    grid = Grid.build(spec)
+
+    def feasible(s, r):
+        m, c = masses(r)
+        if m.size == 0:
+            return False
+        return bool(np.logical_and.reduce(list(
+            _dead_weight_statics(s, r, grid, m, c)[0].values())).any())
+
+    def band(inner, outer):
+        return replace(spec, speed=Speed((inner + outer) / 2.0, 2.0 * (outer - inner)
+                                         / (outer + inner), band=sp.band))
+
+    rpm = 30.0 / math.pi
+    moves = []
+    x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=req.k2_margin / x)))
+    if x is not None and req.k2_margin:
+        moves.append(f"requirements.k2_margin {req.k2_margin:g} -> {req.k2_margin / x:.4g}")
+    x = _bisect(lambda x: feasible(band(sp.omega_inner / x, sp.omega_outer), req))
+    if x is not None:
+        moves.append(f"speed.inner {sp.omega_inner * rpm:.5g} rpm -> "
+                     f"{sp.omega_inner / x * rpm:.5g} rpm")
+    x = _bisect(lambda x: feasible(band(sp.omega_inner, sp.omega_outer * x), req))
+    if x is not None:
+        moves.append(f"speed.outer {sp.omega_outer * rpm:.5g} rpm -> "
+                     f"{sp.omega_outer * x * rpm:.5g} rpm")
+    x = _bisect(lambda x: feasible(spec, replace(
+        req, pendulum_mass=(req.pendulum_mass[0] / x, req.pendulum_mass[1] * x),
+        central_mass=(req.central_mass[0] / x, req.central_mass[1] * x))), hi=4.0)
+    if x is not None:
+        moves.append(f"the weight bounds widened x{x:.3g}")
     with np.errstate(invalid="ignore"):
         ratio = np.sqrt(rise[:, -1] / fall[:, 0])
     best = float(np.nanmin(np.where(np.isfinite(ratio), ratio, np.nan))) \
         if np.isfinite(ratio).any() else math.inf
-    need = sp.omega_outer / sp.omega_inner
-    head = (f"{spec.path}: infeasible: no {spec.governor.mass_key} and central-load weight in "
-            f"the bounds meets " + (", ".join(f"'{k}'" for k in failing) if failing else
-                                    "all the speed-range requirements together"))
-    return (f"{head}; the narrowest operating band the geometry and friction allow spans a "
-            f"speed ratio {best:.4g}, the spec's range {need:.4g} (widen speed.inner/outer, "
-            f"reduce governor.sleeve_friction, or widen the weight bounds)")
+    tail = ("; it becomes feasible if one of these moves: " + "; ".join(moves)) if moves else (
+        f"; no single requirement within a factor of 100 makes it feasible (the narrowest "
+        f"operating band the geometry and friction allow spans a speed ratio {best:.4g}, the "
+        f"spec's range {sp.omega_outer / sp.omega_inner:.4g})")
+    return head + tail
 
 
 def _check_grids(spec: Spec, req: Requirements) -> None:
@@ -884,12 +937,7 @@ def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
 def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, iters=12):
     """Smallest factor ``x`` in ``[lo, hi]`` with ``make(x) = (spec, req)`` feasible, by
     bisection in log space; None if even ``hi`` is not enough."""
-    if not _feasible(*make(hi), stage):
-        return None
-    for _ in range(iters):
-        mid = math.sqrt(lo * hi)
-        lo, hi = (lo, mid) if _feasible(*make(mid), stage) else (mid, hi)
-    return hi
+    return _bisect(lambda x: _feasible(*make(x), stage), lo, hi, iters)
 
 
 def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> str:
