@@ -504,7 +504,8 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
                                                      (fr[:, :1], fr[:, 1:])))
         checks.add(statics.BAND_INNER, low, spec.speed.omega_inner, ">=")
         checks.add(statics.BAND_OUTER, high, spec.speed.omega_outer, "<=")
-    checks.add("characteristic rises (stable)", rise, 0.0, ">=", scale=np.sqrt(w0sq))
+    checks.add("characteristic rises (stable)", rise, 0.0, ">=",
+               scale=statics.slope_scale(spec, np.sqrt(w0sq)))
     if gov.spring is not None:
         top = np.abs(F).max(axis=1)
         checks.add(gov.spring_loaded_check, F.min(axis=1), 0.0, ">=",
@@ -676,11 +677,10 @@ def _classic(spec, cols, t, sd, w2, x, omega, ok):
     with np.errstate(all="ignore"):
         rise = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, band), 0.0))
         fall = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, -band), 0.0))
-        dw2 = 2.0 * omega * statics.characteristic_slope(spec, sd, x, omega)
-        top = np.abs(dw2).max(axis=1)
-        tol = (1e-9 * np.where(top != 0, top, 1.0))[:, None]
-        stability = np.where((dw2 < -tol).any(axis=1), "unstable",
-                             np.where((np.abs(dw2) <= tol).all(axis=1), "isochronous", "stable"))
+        i_c = int(np.searchsorted(x, gov.x_normal))
+        w0 = spec.speed.omega_mean if spec.speed is not None else omega[:, i_c]
+        stability = statics.stability(statics.rising_slopes(spec, sd, x, omega),
+                                      np.broadcast_to(statics.slope_scale(spec, w0), (n,)))
         wi, wa = omega[:, 0], omega[:, -1]
         grow = (1.0 + EFFORT_CHANGE) ** 2 - 1.0
         lever = np.broadcast_to(t.lever, (n, x.size))

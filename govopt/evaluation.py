@@ -85,8 +85,9 @@ def _evaluate(spec: Spec, design: Design) -> Result:
                             statics.BAND_SOURCE))
     checks.append(Check("characteristic rises (stable)", rise, 0.0, ">=", f"rad/s/{unit}",
                         "d omega/dx > 0 over the range: the equilibrium (eq. 12) "
-                        "differentiated; Hamabe Part III, stable by the characteristic curve",
-                        scale=float(np.sqrt(w0sq))))
+                        "differentiated; Hamabe Part III, stable by the characteristic curve; "
+                        "margin on omega0 / (x_outer - x_inner) (statics.stability)",
+                        scale=float(statics.slope_scale(spec, np.sqrt(w0sq)))))
     if gov.spring is not None:
         checks.append(Check(gov.spring_loaded_check, float(np.min(char.spring_force)), 0.0,
                             ">=", "N", "the spring stays loaded over the range (Hamabe eq. 2: "
@@ -192,9 +193,7 @@ def characteristic_rise(spec: Spec, sd: statics.SpringDesign, char) -> float:
     characteristic at every row (:func:`statics.characteristic_slope`) and the secant between
     neighbouring rows, so that a fall between two rows (or a negative irregularity) cannot
     pass."""
-    slope = statics.characteristic_slope(spec, sd, char.alpha, char.omega)
-    secant = np.diff(char.omega) / np.diff(char.alpha)
-    return float(min(np.min(slope), np.min(secant, initial=np.inf)))
+    return float(np.min(statics.rising_slopes(spec, sd, char.alpha, char.omega)))
 
 
 #: where the spring index limits come from (the requirements; the standard's scope for reference)

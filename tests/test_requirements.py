@@ -130,3 +130,39 @@ def test_porter_diagnosis_names_the_k2_margin(tmp_path):
     path.write_text(text.replace('objective = "moving_mass"',
                                  f'objective = "moving_mass"\nk2_margin = {relaxed}'))
     assert design(load_spec(path)).optimisation["status"] == "optimal"
+
+
+def test_an_isochronous_governor_is_labelled_so_on_every_path(tmp_path):
+    """Textbook Example 6's balls joined by springs, with springs of 2 cm free length that are
+    19 cm long at the inner radius: the controlling force is 4 kappa r, exactly proportional
+    to the radius, so omega^2 = 4 kappa / m everywhere. The classic label used to say
+    "unstable" (a tolerance of 1e-9 of the largest slope, itself rounding noise) while the
+    "characteristic rises" check passed; both now read statics.stability."""
+    text = (SPECS / "textbook-ex6-spring_loaded.toml").read_text()
+    text = text.replace('spring_length = "15 cm"', 'spring_length = "19 cm"  #').replace(
+        'free_length = "11.5 cm"', 'free_length = "2 cm"  #')
+    path = tmp_path / "iso.toml"
+    path.write_text(text)
+    spec = load_spec(path)
+    res = evaluate(spec)
+    omega = res.statics.omega
+    assert omega.max() - omega.min() <= 1e-12 * omega.max()  # flat to rounding
+    assert res.classic["stability"] == "isochronous"
+    assert res.check("characteristic rises (stable)").passed
+    row = evaluate_many(spec, [spec.design]).iloc[0]
+    assert row["stability"] == "isochronous"
+    assert bool(row["passed: characteristic rises (stable)"])
+
+
+def test_a_falling_characteristic_is_unstable_on_every_path(tmp_path):
+    """The other side of the one tolerance: a spring whose free length is too short makes the
+    characteristic fall; the label and the check agree on it."""
+    text = (SPECS / "textbook-ex6-spring_loaded.toml").read_text()
+    text = text.replace('spring_length = "15 cm"', 'spring_length = "19 cm"  #').replace(
+        'free_length = "11.5 cm"', 'free_length = "1.5 cm"  #')
+    path = tmp_path / "falling.toml"
+    path.write_text(text)
+    res = evaluate(load_spec(path))
+    assert res.statics.omega[-1] < res.statics.omega[0]
+    assert res.classic["stability"] == "unstable"
+    assert not res.check("characteristic rises (stable)").passed

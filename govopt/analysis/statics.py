@@ -279,3 +279,42 @@ def characteristic_slope(spec: Spec, sd: SpringDesign, alpha, omega):
     t = terms(spec.with_analysis(reaction_slope=True), alpha, sd.m, sd.central)
     return t.stiffness(sd.kappa, sd.l0, omega**2) / (2.0 * omega * t.lever)
 
+
+#: a slope of the characteristic below this share of ``omega0 / (x_outer - x_inner)`` is flat:
+#: rounding, not a rise or a fall (the one tolerance of stability and isochronism; it equals
+#: the pass tolerance of a check's margin, so the check and the label agree)
+SLOPE_RTOL = 1e-9
+
+
+def slope_scale(spec: Spec, omega0):
+    """The scale of ``d omega / d x`` (rad/s per unit ``x``): the reference speed ``omega0``
+    (the spec's mean, else the normal configuration's) over the configuration range."""
+    g = spec.governor
+    return np.asarray(omega0, dtype=float) / (g.x_outer - g.x_inner)
+
+
+def rising_slopes(spec: Spec, sd: SpringDesign, alpha, omega):
+    """``d omega / d x`` at every configuration (:func:`characteristic_slope`) and the secant
+    between neighbours, along the last axis: a fall between two rows cannot pass."""
+    slope = np.broadcast_to(characteristic_slope(spec, sd, alpha, omega), np.shape(omega))
+    secant = np.diff(omega, axis=-1) / np.diff(alpha)
+    return np.concatenate([slope, secant], axis=-1)
+
+
+def stability(slopes, scale):
+    """``"stable"``, ``"isochronous"`` or ``"unstable"`` (Rattan; textbook 3.2) from the slopes
+    of the characteristic (:func:`rising_slopes`, last axis) at ``scale``
+    (:func:`slope_scale`): unstable where one falls by more than :data:`SLOPE_RTOL` of the
+    scale, isochronous where every one is within it, else stable. Decided once, here: the
+    "characteristic rises" check and the classic label read it.
+
+    An exactly isochronous governor (controlling force ``c r``) is flat to rounding:
+
+    >>> stability(np.array([1e-15, -2e-15, 0.0]), 10.0)
+    array('isochronous', dtype='<U11')
+    >>> str(stability(np.array([0.5, -1e-6]), 10.0))
+    'unstable'
+    """
+    s = np.asarray(slopes, dtype=float) / np.asarray(scale, dtype=float)[..., None]
+    return np.where((s < -SLOPE_RTOL).any(axis=-1), "unstable",
+                    np.where((np.abs(s) <= SLOPE_RTOL).all(axis=-1), "isochronous", "stable"))
