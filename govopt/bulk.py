@@ -566,14 +566,6 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
     return frame, impossible
 
 
-def _design_columns(gov: Governor) -> tuple[str, ...]:
-    """The design columns of a row (inputs, kept in error rows)."""
-    cols = [f"{gov.mass_key}_mass_kg", "central_mass_kg"]
-    if gov.spring is not None:
-        cols += ["wire_diameter_m", "coil_radius_m", "active_turns"]
-    return (*cols, _dashpot_column(gov))
-
-
 def _row_design(sd: statics.SpringDesign, i: int, given: bool) -> statics.SpringDesign:
     """Design ``i`` of a vectorised :class:`SpringDesign` as scalars (``given``: the inertia is
     the design's own, as :func:`statics.spring_design` marks it)."""
