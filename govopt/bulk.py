@@ -618,33 +618,16 @@ def _flat(v, n: int) -> np.ndarray:
 
 
 def _requirement_checks(spec, req, cols, l0, out, checks, helical):
-    """:func:`govopt.evaluation.requirement_checks`, vectorised (helical springs)."""
+    """:func:`govopt.evaluation.requirement_rows` over the chunk's designs (helical springs)."""
+    from .evaluation import requirement_rows
+
     if not helical.any():
         return
-    h = helical
-    d, r, nt, m = (cols[k] for k in ("wire_diameter", "coil_radius", "active_turns",
-                                      "pendulum_mass"))
-    C = out["spring_index"]
-    rows = [
-        ("spring index >= min", C, req.spring_index[0], ">="),
-        ("spring index <= max", C, req.spring_index[1], "<="),
-        ("body length within free length", out["body_length_m"],
-         spec.governor.spring_length_factor * l0, "<="),
-        ("pendulum mass >= min", m, req.pendulum_mass[0], ">="),
-        ("pendulum mass <= max", m, req.pendulum_mass[1], "<="),
-        ("wire diameter >= min", d, req.wire_diameter[0], ">="),
-        ("wire diameter <= max", d, req.wire_diameter[1], "<="),
-        ("coil radius >= min", r, req.coil_radius[0], ">="),
-        ("coil radius <= max", r, req.coil_radius[1], "<="),
-        ("active turns >= min", nt, req.active_turns[0], ">="),
-        ("active turns <= max", nt, req.active_turns[1], "<="),
-    ]
-    if req.max_outer_diameter is not None:
-        rows.append(("outer diameter", 2.0 * r + d, req.max_outer_diameter, "<="))
-    if req.min_surge_frequency is not None:
-        rows.append(("surge frequency", out["surge_frequency_Hz"], req.min_surge_frequency, ">="))
-    for name, value, limit, sense in rows:
-        checks.add(name, value, limit, sense, where=h)
+    ev = {"d": cols["wire_diameter"], "r": cols["coil_radius"], "n": cols["active_turns"],
+          "m": cols["pendulum_mass"], "l0": l0, "C": out["spring_index"],
+          "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}
+    for name, sense, _unit, value, limit, _source in requirement_rows(spec, req):
+        checks.add(name, value(ev), limit(ev), sense, where=helical)
 
 
 def _friction_at(gov: Governor, cols: dict, x) -> np.ndarray:

@@ -201,28 +201,45 @@ INDEX_SOURCE = ("requirements.spring_index (EN 13906-1 scope, cold coiled: 4 <= 
                 "Shigley prefers 4 <= C <= 12)")
 
 
-def requirement_checks(spec: Spec, req, sd: statics.SpringDesign, props) -> list[Check]:
-    """Checks of the design requirements and bounds of `govopt design`."""
-    out = [
-        Check("spring index >= min", props["spring_index"], req.spring_index[0], ">=", "",
-              INDEX_SOURCE),
-        Check("spring index <= max", props["spring_index"], req.spring_index[1], "<=", "",
-              INDEX_SOURCE),
-        Check("body length within free length", props["body_length_m"],
-              spec.governor.spring_length_factor * sd.l0, "<=", "m",
-              "close-wound body (n + 1) d within 2 l0"),
-        Check("pendulum mass >= min", sd.m, req.pendulum_mass[0], ">=", "kg"),
-        Check("pendulum mass <= max", sd.m, req.pendulum_mass[1], "<=", "kg"),
-        Check("wire diameter >= min", sd.d, req.wire_diameter[0], ">=", "m"),
-        Check("wire diameter <= max", sd.d, req.wire_diameter[1], "<=", "m"),
-        Check("coil radius >= min", sd.r, req.coil_radius[0], ">=", "m"),
-        Check("coil radius <= max", sd.r, req.coil_radius[1], "<=", "m"),
-        Check("active turns >= min", sd.n, req.active_turns[0], ">=", ""),
-        Check("active turns <= max", sd.n, req.active_turns[1], "<=", ""),
+def requirement_rows(spec: Spec, req) -> list[tuple]:
+    """The design requirements and bounds of `govopt design` as rows, declared once for one
+    design and for many: ``(name, sense, unit, value(ev), limit(ev), source)`` with ``ev`` a
+    dict of SI values (floats, or arrays over N designs): ``d``, ``r``, ``n`` (wire diameter,
+    coil radius, active turns), ``m`` (flying mass), ``l0`` (the type's free length), ``C``
+    (spring index), ``body`` (close-wound body length ``(n + 1) d``), ``surge`` (Hz). Read by
+    :func:`requirement_checks` (N = 1) and by the bulk evaluation (:mod:`govopt.bulk`)."""
+    factor = spec.governor.spring_length_factor
+
+    def const(v):
+        return lambda ev: v
+
+    rows = [
+        ("spring index >= min", ">=", "", lambda ev: ev["C"], const(req.spring_index[0]),
+         INDEX_SOURCE),
+        ("spring index <= max", "<=", "", lambda ev: ev["C"], const(req.spring_index[1]),
+         INDEX_SOURCE),
+        ("body length within free length", "<=", "m", lambda ev: ev["body"],
+         lambda ev: factor * ev["l0"], "close-wound body (n + 1) d within 2 l0"),
     ]
+    for name, key, bounds, unit in (("pendulum mass", "m", req.pendulum_mass, "kg"),
+                                    ("wire diameter", "d", req.wire_diameter, "m"),
+                                    ("coil radius", "r", req.coil_radius, "m"),
+                                    ("active turns", "n", req.active_turns, "")):
+        rows += [(f"{name} >= min", ">=", unit, lambda ev, k=key: ev[k], const(bounds[0]), ""),
+                 (f"{name} <= max", "<=", unit, lambda ev, k=key: ev[k], const(bounds[1]), "")]
     if req.max_outer_diameter is not None:
-        out.append(Check("outer diameter", 2.0 * sd.r + sd.d, req.max_outer_diameter, "<=", "m"))
+        rows.append(("outer diameter", "<=", "m", lambda ev: 2.0 * ev["r"] + ev["d"],
+                     const(req.max_outer_diameter), ""))
     if req.min_surge_frequency is not None:
-        out.append(Check("surge frequency", props["surge_frequency_Hz"], req.min_surge_frequency,
-                         ">=", "Hz", "Wahl 1944 ch. 25"))
-    return out
+        rows.append(("surge frequency", ">=", "Hz", lambda ev: ev["surge"],
+                     const(req.min_surge_frequency), "Wahl 1944 ch. 25"))
+    return rows
+
+
+def requirement_checks(spec: Spec, req, sd: statics.SpringDesign, props) -> list[Check]:
+    """Checks of the design requirements and bounds of `govopt design`
+    (:func:`requirement_rows` for one design)."""
+    ev = {"d": sd.d, "r": sd.r, "n": sd.n, "m": sd.m, "l0": sd.l0, "C": props["spring_index"],
+          "body": props["body_length_m"], "surge": props["surge_frequency_Hz"]}
+    return [Check(name, value(ev), limit(ev), sense, unit, source)
+            for name, sense, unit, value, limit, source in requirement_rows(spec, req)]
