@@ -66,38 +66,23 @@ def _evaluate(spec: Spec, design: Design) -> Result:
     unit = SI_UNITS[gov.coordinate]
     i_n = int(np.searchsorted(char.alpha, gov.x_normal))  # the normal configuration is on the grid
     w0sq = spec.speed.omega_mean**2 if spec.speed is not None else float(char.omega[i_n]) ** 2
-    margin = req.k2_margin if req else 0.0
     vib = None  # the type's forced vibration (Hamabe Part II): also the spring's load cycle
     if wanted("vibration") and (design.dashpot is not None or spec.engine is not None):
         vib = gov.vibration(spec, sd, float(k2[i_n]), design.dashpot or 0.0)
     checks = gov.spring_checks(spec, sd, char, vib) if gov.spring is not None else []
-    if spec.speed is not None:
-        checks.append(Check("irregularity", char.irregularity, spec.speed.irregularity, "<=", "",
-                            "Hamabe Part I: (omega_a - omega_i) / omega0, omega0 the spec's "
-                            "mean speed"))
+    band = (None, None)
     if spec.speed is not None and spec.speed.band:  # the whole operating band in the spec's
         fr = gov.friction(np.array([gov.x_inner, gov.x_outer]), design)
-        low, high = (float(np.sqrt(max(float(w2), 0.0))) for w2 in statics.band_speeds_squared(
+        band = tuple(float(np.sqrt(max(float(w2), 0.0))) for w2 in statics.band_speeds_squared(
             spec, sd.m, sd.kappa, sd.l0, sd.central, fr))
-        checks.append(Check(statics.BAND_INNER, low, spec.speed.omega_inner, ">=", "rad/s",
-                            statics.BAND_SOURCE))
-        checks.append(Check(statics.BAND_OUTER, high, spec.speed.omega_outer, "<=", "rad/s",
-                            statics.BAND_SOURCE))
-    checks.append(Check("characteristic rises (stable)", rise, 0.0, ">=", f"rad/s/{unit}",
-                        "d omega/dx > 0 over the range: the equilibrium (eq. 12) "
-                        "differentiated; Hamabe Part III, stable by the characteristic curve; "
-                        "margin on omega0 / (x_outer - x_inner) (statics.stability)",
-                        scale=float(statics.slope_scale(spec, np.sqrt(w0sq)))))
-    if gov.spring is not None:
-        checks.append(Check(gov.spring_loaded_check, float(np.min(char.spring_force)), 0.0,
-                            ">=", "N", "the spring stays loaded over the range (Hamabe eq. 2: "
-                            "F = 2 kappa (l - l0) > 0)",
-                            scale=float(np.max(np.abs(char.spring_force))) or 1.0))
-    checks.append(Check("k^2 > 0 (stability)", float(np.min(k2)), margin * w0sq, ">=",
-                        "rad^2/s^2", "Hamabe Part II, case 3", scale=w0sq))
-    if gov.resonance_ceiling:
-        checks.append(Check("k^2 < omega0^2 (no resonance)", float(np.max(k2)),
-                            (1.0 - margin) * w0sq, "<=", "rad^2/s^2", "Hamabe Part II, case 2"))
+    ev = {"irregularity": char.irregularity, "band_low": band[0], "band_high": band[1],
+          "rise": rise, "w0sq": w0sq, "F_min": float(np.min(char.spring_force)),
+          "F_top": float(np.max(np.abs(char.spring_force))), "k2_min": float(np.min(k2)),
+          "k2_max": float(np.max(k2))}
+    for name, sense, unit_, value, limit, scale, source in statics_rows(spec):
+        sc = scale(ev)
+        checks.append(Check(name, float(value(ev)), float(limit(ev)), sense, unit_, source,
+                            scale=None if sc is None else float(sc)))
     props = spring_properties(spec, sd) if helical else {}
     dynamics = {}
     if wanted("load_change") and spec.engine is not None and spec.load_changes and \
@@ -194,6 +179,50 @@ def characteristic_rise(spec: Spec, sd: statics.SpringDesign, char) -> float:
     neighbouring rows, so that a fall between two rows (or a negative irregularity) cannot
     pass."""
     return float(np.min(statics.rising_slopes(spec, sd, char.alpha, char.omega)))
+
+
+def statics_rows(spec: Spec) -> list[tuple]:
+    """The statics requirements, declared once for one design and for many:
+    ``(name, sense, unit, value(ev), limit(ev), scale(ev), source)`` with ``ev`` a dict of SI
+    figures (floats, or arrays over N designs): ``irregularity``; ``band_low``, ``band_high``
+    (the operating band's ends with friction, :func:`statics.band_speeds_squared`); ``rise``
+    (the least slope of the characteristic, :func:`statics.rising_slopes`); ``w0sq`` (the
+    reference ``omega0^2``); ``F_min``, ``F_top`` (the least and the largest absolute spring
+    force); ``k2_min``, ``k2_max``. ``scale`` None: the margin on the limit. Read by
+    :func:`evaluate` (N = 1) and by the bulk evaluation (:mod:`govopt.bulk`)."""
+    gov, sp, req = spec.governor, spec.speed, spec.requirements
+    margin = req.k2_margin if req else 0.0
+    unit = SI_UNITS[gov.coordinate]
+
+    def none(ev):
+        return None
+
+    rows = []
+    if sp is not None:
+        rows.append(("irregularity", "<=", "", lambda ev: ev["irregularity"],
+                     lambda ev: sp.irregularity, none,
+                     "Hamabe Part I: (omega_a - omega_i) / omega0, omega0 the spec's mean speed"))
+        if sp.band:
+            rows += [(statics.BAND_INNER, ">=", "rad/s", lambda ev: ev["band_low"],
+                      lambda ev: sp.omega_inner, none, statics.BAND_SOURCE),
+                     (statics.BAND_OUTER, "<=", "rad/s", lambda ev: ev["band_high"],
+                      lambda ev: sp.omega_outer, none, statics.BAND_SOURCE)]
+    rows.append(("characteristic rises (stable)", ">=", f"rad/s/{unit}", lambda ev: ev["rise"],
+                 lambda ev: 0.0, lambda ev: statics.slope_scale(spec, np.sqrt(ev["w0sq"])),
+                 "d omega/dx > 0 over the range: the equilibrium (eq. 12) differentiated; "
+                 "Hamabe Part III, stable by the characteristic curve; margin on omega0 / "
+                 "(x_outer - x_inner) (statics.stability)"))
+    if gov.spring is not None:
+        rows.append((gov.spring_loaded_check, ">=", "N", lambda ev: ev["F_min"], lambda ev: 0.0,
+                     lambda ev: ev["F_top"], "the spring stays loaded over the range (Hamabe "
+                     "eq. 2: F = 2 kappa (l - l0) > 0)"))
+    rows.append(("k^2 > 0 (stability)", ">=", "rad^2/s^2", lambda ev: ev["k2_min"],
+                 lambda ev: margin * ev["w0sq"], lambda ev: ev["w0sq"], "Hamabe Part II, case 3"))
+    if gov.resonance_ceiling:
+        rows.append(("k^2 < omega0^2 (no resonance)", "<=", "rad^2/s^2",
+                     lambda ev: ev["k2_max"], lambda ev: (1.0 - margin) * ev["w0sq"], none,
+                     "Hamabe Part II, case 2"))
+    return rows
 
 
 #: where the spring index limits come from (the requirements; the standard's scope for reference)
