@@ -482,21 +482,31 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
     checks = _Checks(n)
     req = spec.requirements
     w0sq = np.full(n, omega_mean**2) if spec.speed is not None else wn**2
-    margin = req.k2_margin if req else 0.0
     if gov.spring is not None and mat is not None:
         checks.add("shear stress", stress.max(axis=1), mat.allowable_shear_stress, "<=",
                    where=np.isfinite(cols["wire_diameter"]))
-    if spec.speed is not None:
-        checks.add("irregularity", out["irregularity"], spec.speed.irregularity, "<=")
-    checks.add("characteristic rises (stable)", rise, 0.0, ">=", scale=np.sqrt(w0sq))
-    if gov.spring is not None:
-        top = np.abs(F).max(axis=1)
-        checks.add(gov.spring_loaded_check, F.min(axis=1), 0.0, ">=",
-                   scale=np.where(top != 0, top, 1.0))
-    checks.add("k^2 > 0 (stability)", k2.min(axis=1), margin * w0sq, ">=", scale=w0sq)
-    if gov.resonance_ceiling:
-        checks.add("k^2 < omega0^2 (no resonance)", k2.max(axis=1), (1.0 - margin) * w0sq,
-                   "<=")
+        if helical.any():  # Governor.spring_checks' geometric rows: no grade needed
+            from .analysis import spring_engineering
+
+            for name, (value, limit, sense) in spring_engineering.geometry_rows(
+                    spec, cols["wire_diameter"], 2.0 * cols["coil_radius"],
+                    cols["active_turns"], kappa[:, 0], l0[:, 0], F.min(axis=1),
+                    F.max(axis=1)).items():
+                checks.add(name, value, limit, sense, where=helical)
+    band = (None, None)
+    if spec.speed is not None and spec.speed.band:  # evaluate's band rows (statics)
+        fr = _friction_at(gov, cols, np.array([gov.x_inner, gov.x_outer]))
+        with np.errstate(all="ignore"):
+            band = tuple(np.sqrt(np.maximum(_flat(w2, n), 0.0)) for w2 in
+                         statics.band_speeds_squared(spec, m, kappa, l0, central,
+                                                     (fr[:, :1], fr[:, 1:])))
+    ev = {"irregularity": out["irregularity"], "band_low": band[0], "band_high": band[1],
+          "rise": rise, "w0sq": w0sq, "F_min": F.min(axis=1), "F_top": np.abs(F).max(axis=1),
+          "k2_min": k2.min(axis=1), "k2_max": k2.max(axis=1)}
+    from .evaluation import statics_rows
+
+    for name, sense, _unit, value, limit, scale, _source in statics_rows(spec):
+        checks.add(name, value(ev), limit(ev), sense, scale=scale(ev))
     dashpot = cols["dashpot"]
     has_dashpot = np.isfinite(dashpot)
     if dynamics and spec.engine is not None and spec.load_changes:
@@ -547,14 +557,6 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
     frame["objective_value"] = frame[key] if key in frame else np.nan
     frame["status"], frame["message"] = checks.status()
     return frame, impossible
-
-
-def _design_columns(gov: Governor) -> tuple[str, ...]:
-    """The design columns of a row (inputs, kept in error rows)."""
-    cols = [f"{gov.mass_key}_mass_kg", "central_mass_kg"]
-    if gov.spring is not None:
-        cols += ["wire_diameter_m", "coil_radius_m", "active_turns"]
-    return (*cols, _dashpot_column(gov))
 
 
 def _row_design(sd: statics.SpringDesign, i: int, given: bool) -> statics.SpringDesign:
@@ -609,39 +611,28 @@ def _flat(v, n: int) -> np.ndarray:
 
 
 def _requirement_checks(spec, req, cols, l0, out, checks, helical):
-    """:func:`govopt.evaluation.requirement_checks`, vectorised (helical springs)."""
+    """:func:`govopt.evaluation.requirement_rows` over the chunk's designs (helical springs)."""
+    from .evaluation import requirement_rows
+
     if not helical.any():
         return
-    h = helical
-    d, r, nt, m = (cols[k] for k in ("wire_diameter", "coil_radius", "active_turns",
-                                      "pendulum_mass"))
-    C = out["spring_index"]
-    rows = [
-        ("spring index >= min", C, req.spring_index[0], ">="),
-        ("spring index <= max", C, req.spring_index[1], "<="),
-        ("body length within free length", out["body_length_m"],
-         spec.governor.spring_length_factor * l0, "<="),
-        ("pendulum mass >= min", m, req.pendulum_mass[0], ">="),
-        ("pendulum mass <= max", m, req.pendulum_mass[1], "<="),
-        ("wire diameter >= min", d, req.wire_diameter[0], ">="),
-        ("wire diameter <= max", d, req.wire_diameter[1], "<="),
-        ("coil radius >= min", r, req.coil_radius[0], ">="),
-        ("coil radius <= max", r, req.coil_radius[1], "<="),
-        ("active turns >= min", nt, req.active_turns[0], ">="),
-        ("active turns <= max", nt, req.active_turns[1], "<="),
-    ]
-    if spec.material.grade is None:  # evaluation.requirement_checks' geometric rows
-        from .analysis import spring_engineering
+    ev = {"d": cols["wire_diameter"], "r": cols["coil_radius"], "n": cols["active_turns"],
+          "m": cols["pendulum_mass"], "l0": l0, "C": out["spring_index"],
+          "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}
+    for name, sense, _unit, value, limit, _source in requirement_rows(spec, req):
+        checks.add(name, value(ev), limit(ev), sense, where=helical)
 
-        rows += [(k, *v) for k, v in spring_engineering.geometry_rows(
-            spec, d, 2.0 * r, nt, out["stiffness_N_per_m"], l0, out["min_spring_force_N"],
-            out["max_spring_force_N"]).items()]
-    if req.max_outer_diameter is not None:
-        rows.append(("outer diameter", 2.0 * r + d, req.max_outer_diameter, "<="))
-    if req.min_surge_frequency is not None:
-        rows.append(("surge frequency", out["surge_frequency_Hz"], req.min_surge_frequency, ">="))
-    for name, value, limit, sense in rows:
-        checks.add(name, value, limit, sense, where=h)
+
+def _friction_at(gov: Governor, cols: dict, x) -> np.ndarray:
+    """The friction band :meth:`Governor.friction` of every design at configurations ``x``,
+    shape ``(N, K)`` (evaluated once per distinct friction moment)."""
+    fm = cols["friction_moment"]
+    band = np.zeros((fm.size, np.size(x)))
+    for value in np.unique(fm):
+        rows = (fm == value) | (np.isnan(fm) & np.isnan(value))
+        probe = Design(pendulum_mass=1.0, friction_moment=None if np.isnan(value) else value)
+        band[rows] = gov.friction(x, probe)
+    return band
 
 
 def _classic(spec, cols, t, sd, w2, x, omega, ok):
@@ -650,20 +641,14 @@ def _classic(spec, cols, t, sd, w2, x, omega, ok):
 
     gov = spec.governor
     n = omega.shape[0]
-    fm = cols["friction_moment"]
-    band = np.zeros((n, x.size))
-    for value in np.unique(fm):
-        rows = (fm == value) | (np.isnan(fm) & np.isnan(value))
-        probe = Design(pendulum_mass=1.0, friction_moment=None if np.isnan(value) else value)
-        band[rows] = gov.friction(x, probe)
+    band = _friction_at(gov, cols, x)
     with np.errstate(all="ignore"):
         rise = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, band), 0.0))
         fall = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, -band), 0.0))
-        dw2 = 2.0 * omega * statics.characteristic_slope(spec, sd, x, omega)
-        top = np.abs(dw2).max(axis=1)
-        tol = (1e-9 * np.where(top != 0, top, 1.0))[:, None]
-        stability = np.where((dw2 < -tol).any(axis=1), "unstable",
-                             np.where((np.abs(dw2) <= tol).all(axis=1), "isochronous", "stable"))
+        i_c = int(np.searchsorted(x, gov.x_normal))
+        w0 = spec.speed.omega_mean if spec.speed is not None else omega[:, i_c]
+        stability = statics.stability(statics.rising_slopes(spec, sd, x, omega),
+                                      np.broadcast_to(statics.slope_scale(spec, w0), (n,)))
         wi, wa = omega[:, 0], omega[:, -1]
         grow = (1.0 + EFFORT_CHANGE) ** 2 - 1.0
         lever = np.broadcast_to(t.lever, (n, x.size))

@@ -66,29 +66,23 @@ def _evaluate(spec: Spec, design: Design) -> Result:
     unit = SI_UNITS[gov.coordinate]
     i_n = int(np.searchsorted(char.alpha, gov.x_normal))  # the normal configuration is on the grid
     w0sq = spec.speed.omega_mean**2 if spec.speed is not None else float(char.omega[i_n]) ** 2
-    margin = req.k2_margin if req else 0.0
     vib = None  # the type's forced vibration (Hamabe Part II): also the spring's load cycle
     if wanted("vibration") and (design.dashpot is not None or spec.engine is not None):
         vib = gov.vibration(spec, sd, float(k2[i_n]), design.dashpot or 0.0)
     checks = gov.spring_checks(spec, sd, char, vib) if gov.spring is not None else []
-    if spec.speed is not None:
-        checks.append(Check("irregularity", char.irregularity, spec.speed.irregularity, "<=", "",
-                            "Hamabe Part I: (omega_a - omega_i) / omega0, omega0 the spec's "
-                            "mean speed"))
-    checks.append(Check("characteristic rises (stable)", rise, 0.0, ">=", f"rad/s/{unit}",
-                        "d omega/dx > 0 over the range: the equilibrium (eq. 12) "
-                        "differentiated; Hamabe Part III, stable by the characteristic curve",
-                        scale=float(np.sqrt(w0sq))))
-    if gov.spring is not None:
-        checks.append(Check(gov.spring_loaded_check, float(np.min(char.spring_force)), 0.0,
-                            ">=", "N", "the spring stays loaded over the range (Hamabe eq. 2: "
-                            "F = 2 kappa (l - l0) > 0)",
-                            scale=float(np.max(np.abs(char.spring_force))) or 1.0))
-    checks.append(Check("k^2 > 0 (stability)", float(np.min(k2)), margin * w0sq, ">=",
-                        "rad^2/s^2", "Hamabe Part II, case 3", scale=w0sq))
-    if gov.resonance_ceiling:
-        checks.append(Check("k^2 < omega0^2 (no resonance)", float(np.max(k2)),
-                            (1.0 - margin) * w0sq, "<=", "rad^2/s^2", "Hamabe Part II, case 2"))
+    band = (None, None)
+    if spec.speed is not None and spec.speed.band:  # the whole operating band in the spec's
+        fr = gov.friction(np.array([gov.x_inner, gov.x_outer]), design)
+        band = tuple(float(np.sqrt(max(float(w2), 0.0))) for w2 in statics.band_speeds_squared(
+            spec, sd.m, sd.kappa, sd.l0, sd.central, fr))
+    ev = {"irregularity": char.irregularity, "band_low": band[0], "band_high": band[1],
+          "rise": rise, "w0sq": w0sq, "F_min": float(np.min(char.spring_force)),
+          "F_top": float(np.max(np.abs(char.spring_force))), "k2_min": float(np.min(k2)),
+          "k2_max": float(np.max(k2))}
+    for name, sense, unit_, value, limit, scale, source in statics_rows(spec):
+        sc = scale(ev)
+        checks.append(Check(name, float(value(ev)), float(limit(ev)), sense, unit_, source,
+                            scale=None if sc is None else float(sc)))
     props = spring_properties(spec, sd) if helical else {}
     dynamics = {}
     if wanted("load_change") and spec.engine is not None and spec.load_changes and \
@@ -184,9 +178,51 @@ def characteristic_rise(spec: Spec, sd: statics.SpringDesign, char) -> float:
     characteristic at every row (:func:`statics.characteristic_slope`) and the secant between
     neighbouring rows, so that a fall between two rows (or a negative irregularity) cannot
     pass."""
-    slope = statics.characteristic_slope(spec, sd, char.alpha, char.omega)
-    secant = np.diff(char.omega) / np.diff(char.alpha)
-    return float(min(np.min(slope), np.min(secant, initial=np.inf)))
+    return float(np.min(statics.rising_slopes(spec, sd, char.alpha, char.omega)))
+
+
+def statics_rows(spec: Spec) -> list[tuple]:
+    """The statics requirements, declared once for one design and for many:
+    ``(name, sense, unit, value(ev), limit(ev), scale(ev), source)`` with ``ev`` a dict of SI
+    figures (floats, or arrays over N designs): ``irregularity``; ``band_low``, ``band_high``
+    (the operating band's ends with friction, :func:`statics.band_speeds_squared`); ``rise``
+    (the least slope of the characteristic, :func:`statics.rising_slopes`); ``w0sq`` (the
+    reference ``omega0^2``); ``F_min``, ``F_top`` (the least and the largest absolute spring
+    force); ``k2_min``, ``k2_max``. ``scale`` None: the margin on the limit. Read by
+    :func:`evaluate` (N = 1) and by the bulk evaluation (:mod:`govopt.bulk`)."""
+    gov, sp, req = spec.governor, spec.speed, spec.requirements
+    margin = req.k2_margin if req else 0.0
+    unit = SI_UNITS[gov.coordinate]
+
+    def none(ev):
+        return None
+
+    rows = []
+    if sp is not None:
+        rows.append(("irregularity", "<=", "", lambda ev: ev["irregularity"],
+                     lambda ev: sp.irregularity, none,
+                     "Hamabe Part I: (omega_a - omega_i) / omega0, omega0 the spec's mean speed"))
+        if sp.band:
+            rows += [(statics.BAND_INNER, ">=", "rad/s", lambda ev: ev["band_low"],
+                      lambda ev: sp.omega_inner, none, statics.BAND_SOURCE),
+                     (statics.BAND_OUTER, "<=", "rad/s", lambda ev: ev["band_high"],
+                      lambda ev: sp.omega_outer, none, statics.BAND_SOURCE)]
+    rows.append(("characteristic rises (stable)", ">=", f"rad/s/{unit}", lambda ev: ev["rise"],
+                 lambda ev: 0.0, lambda ev: statics.slope_scale(spec, np.sqrt(ev["w0sq"])),
+                 "d omega/dx > 0 over the range: the equilibrium (eq. 12) differentiated; "
+                 "Hamabe Part III, stable by the characteristic curve; margin on omega0 / "
+                 "(x_outer - x_inner) (statics.stability)"))
+    if gov.spring is not None:
+        rows.append((gov.spring_loaded_check, ">=", "N", lambda ev: ev["F_min"], lambda ev: 0.0,
+                     lambda ev: ev["F_top"], "the spring stays loaded over the range (Hamabe "
+                     "eq. 2: F = 2 kappa (l - l0) > 0)"))
+    rows.append(("k^2 > 0 (stability)", ">=", "rad^2/s^2", lambda ev: ev["k2_min"],
+                 lambda ev: margin * ev["w0sq"], lambda ev: ev["w0sq"], "Hamabe Part II, case 3"))
+    if gov.resonance_ceiling:
+        rows.append(("k^2 < omega0^2 (no resonance)", "<=", "rad^2/s^2",
+                     lambda ev: ev["k2_max"], lambda ev: (1.0 - margin) * ev["w0sq"], none,
+                     "Hamabe Part II, case 2"))
+    return rows
 
 
 #: where the spring index limits come from (the requirements; the standard's scope for reference)
@@ -194,32 +230,45 @@ INDEX_SOURCE = ("requirements.spring_index (EN 13906-1 scope, cold coiled: 4 <= 
                 "Shigley prefers 4 <= C <= 12)")
 
 
-def requirement_checks(spec: Spec, req, sd: statics.SpringDesign, props) -> list[Check]:
-    """Checks of the design requirements and bounds of `govopt design`."""
-    out = [
-        Check("spring index >= min", props["spring_index"], req.spring_index[0], ">=", "",
-              INDEX_SOURCE),
-        Check("spring index <= max", props["spring_index"], req.spring_index[1], "<=", "",
-              INDEX_SOURCE),
-        Check("body length within free length", props["body_length_m"],
-              spec.governor.spring_length_factor * sd.l0, "<=", "m",
-              "close-wound body (n + 1) d within 2 l0"),
-        Check("pendulum mass >= min", sd.m, req.pendulum_mass[0], ">=", "kg"),
-        Check("pendulum mass <= max", sd.m, req.pendulum_mass[1], "<=", "kg"),
-        Check("wire diameter >= min", sd.d, req.wire_diameter[0], ">=", "m"),
-        Check("wire diameter <= max", sd.d, req.wire_diameter[1], "<=", "m"),
-        Check("coil radius >= min", sd.r, req.coil_radius[0], ">=", "m"),
-        Check("coil radius <= max", sd.r, req.coil_radius[1], "<=", "m"),
-        Check("active turns >= min", sd.n, req.active_turns[0], ">=", ""),
-        Check("active turns <= max", sd.n, req.active_turns[1], "<=", ""),
-    ]
-    if spec.material.grade is None:  # with a grade, the spring engineering table has them
-        from .analysis import spring_engineering
+def requirement_rows(spec: Spec, req) -> list[tuple]:
+    """The design requirements and bounds of `govopt design` as rows, declared once for one
+    design and for many: ``(name, sense, unit, value(ev), limit(ev), source)`` with ``ev`` a
+    dict of SI values (floats, or arrays over N designs): ``d``, ``r``, ``n`` (wire diameter,
+    coil radius, active turns), ``m`` (flying mass), ``l0`` (the type's free length), ``C``
+    (spring index), ``body`` (close-wound body length ``(n + 1) d``), ``surge`` (Hz). Read by
+    :func:`requirement_checks` (N = 1) and by the bulk evaluation (:mod:`govopt.bulk`)."""
+    factor = spec.governor.spring_length_factor
 
-        out += spring_engineering.geometry_checks(spec, sd)
+    def const(v):
+        return lambda ev: v
+
+    rows = [
+        ("spring index >= min", ">=", "", lambda ev: ev["C"], const(req.spring_index[0]),
+         INDEX_SOURCE),
+        ("spring index <= max", "<=", "", lambda ev: ev["C"], const(req.spring_index[1]),
+         INDEX_SOURCE),
+        ("body length within free length", "<=", "m", lambda ev: ev["body"],
+         lambda ev: factor * ev["l0"], "close-wound body (n + 1) d within 2 l0"),
+    ]
+    for name, key, bounds, unit in (("pendulum mass", "m", req.pendulum_mass, "kg"),
+                                    ("wire diameter", "d", req.wire_diameter, "m"),
+                                    ("coil radius", "r", req.coil_radius, "m"),
+                                    ("active turns", "n", req.active_turns, "")):
+        rows += [(f"{name} >= min", ">=", unit, lambda ev, k=key: ev[k], const(bounds[0]), ""),
+                 (f"{name} <= max", "<=", unit, lambda ev, k=key: ev[k], const(bounds[1]), "")]
     if req.max_outer_diameter is not None:
-        out.append(Check("outer diameter", 2.0 * sd.r + sd.d, req.max_outer_diameter, "<=", "m"))
+        rows.append(("outer diameter", "<=", "m", lambda ev: 2.0 * ev["r"] + ev["d"],
+                     const(req.max_outer_diameter), ""))
     if req.min_surge_frequency is not None:
-        out.append(Check("surge frequency", props["surge_frequency_Hz"], req.min_surge_frequency,
-                         ">=", "Hz", "Wahl 1944 ch. 25"))
-    return out
+        rows.append(("surge frequency", ">=", "Hz", lambda ev: ev["surge"],
+                     const(req.min_surge_frequency), "Wahl 1944 ch. 25"))
+    return rows
+
+
+def requirement_checks(spec: Spec, req, sd: statics.SpringDesign, props) -> list[Check]:
+    """Checks of the design requirements and bounds of `govopt design`
+    (:func:`requirement_rows` for one design)."""
+    ev = {"d": sd.d, "r": sd.r, "n": sd.n, "m": sd.m, "l0": sd.l0, "C": props["spring_index"],
+          "body": props["body_length_m"], "surge": props["surge_frequency_Hz"]}
+    return [Check(name, value(ev), limit(ev), sense, unit, source)
+            for name, sense, unit, value, limit, source in requirement_rows(spec, req)]

@@ -228,6 +228,10 @@ class Speed:
 
     omega_mean: float
     irregularity: float
+    #: the spec states the band ``[speed] inner/outer``: every design keeps its whole operating
+    #: band (friction band included) inside it (:data:`govopt.analysis.statics.BAND_INNER`);
+    #: ``mean``/``irregularity`` state only Hamabe's irregularity about the mean
+    band: bool = False
 
     @property
     def omega_inner(self) -> float:
@@ -711,7 +715,8 @@ def _speed(sp: _Reader) -> Speed:
         outer = sp.quantity("outer", "angular_velocity")
         if outer <= inner:
             sp.fail("outer", "expected outer > inner speed")
-        speed = Speed((inner + outer) / 2.0, 2.0 * (outer - inner) / (outer + inner))
+        speed = Speed((inner + outer) / 2.0, 2.0 * (outer - inner) / (outer + inner),
+                      band=True)
     else:
         speed = Speed(sp.quantity("mean", "angular_velocity"),
                       sp.number("irregularity", high=2.0))

@@ -282,7 +282,13 @@ def test_help_does_not_import_matplotlib():
 
 
 def test_cli_plots_written_refused_and_forced(tmp_path):
-    spec = SPECS / "textbook-ex4-hartnell.toml"
+    # the book's answer (3.572 kgf/cm) spans 0.002 % more than its 240-256.8 rpm band, which
+    # evaluate requires (issue 20): a passing copy with the band's top at 257 rpm
+    text = (SPECS / "textbook-ex4-hartnell.toml").read_text()
+    assert 'outer = "256.8 rpm"' in text
+    (tmp_path / "spec").mkdir()
+    spec = tmp_path / "spec" / "textbook-ex4-hartnell.toml"
+    spec.write_text(text.replace('outer = "256.8 rpm"', 'outer = "257 rpm"'))
     out = tmp_path / "plots"  # made by the run (its parent exists)
     run = subprocess.run(CLI + ["evaluate", str(spec), "--plots", str(out)], cwd=tmp_path,
                          capture_output=True, text=True)

@@ -68,6 +68,21 @@ def test_sweep_forms():
             Sweep.parse("k", bad)
 
 
+def _wide(tmp_path) -> Path:
+    """textbook-ex4-hartnell with a 200-300 rpm band. The studies below sweep its design over
+    weights and free lengths whose operating bands the book's 240-256.8 rpm refuses: the band
+    is a requirement of every path (issue 20), and the book's own rounded spring (3.572 kgf/cm)
+    spans 0.002 % more than it."""
+    text = HARTNELL.read_text(encoding="utf-8")
+    for old, new in (('inner = "240 rpm"', 'inner = "200 rpm"'),
+                     ('outer = "256.8 rpm"', 'outer = "300 rpm"')):
+        assert old in text
+        text = text.replace(old, new)
+    path = tmp_path / "wide.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
 def _study(tmp_path, table: str, spec: Path = HARTNELL) -> Path:
     path = tmp_path / "study.toml"
     path.write_text(spec.read_text(encoding="utf-8") + "\n" + table, encoding="utf-8")
@@ -97,7 +112,7 @@ def test_grid_zip_and_samplers(tmp_path):
 def test_bad_points_are_rows_not_crashes(tmp_path):
     """A value the spec parser refuses, one out of range and one that leaves no equilibrium
     are error rows with the reason; the good points are evaluated; nothing is dropped."""
-    path = _study(tmp_path, "")
+    path = _study(tmp_path, "", _wide(tmp_path))
     study = load_study(path, sweeps=["design.free_length=15.41 cm,-1 cm,2 kg,15.5 cm,8 cm"])
     report = run_study(study, tmp_path / "s.db")
     assert (report.total, report.done) == (5, 5)
@@ -133,7 +148,8 @@ def test_outcome_all_failed_exits_nonzero(tmp_path):
                                          "evaluated): most common reason (1 of 3): "
                                          "design.free_length: ")
     assert line.count(str(spec)) == 1 and "\n" not in line
-    code, line = run(_study(tmp_path, ""), "design.free_length=15.41 cm,15.5 cm", "pass.db")
+    code, line = run(_study(tmp_path, "", _wide(tmp_path)), "design.free_length=15.41 cm,15.5 cm",
+                     "pass.db")
     assert (code, line) == (0, "")
 
 
@@ -194,9 +210,10 @@ def test_sigkill_and_resume_give_the_uninterrupted_table(tmp_path):
     table of one uninterrupted run; the database passes PRAGMA integrity_check after every
     kill and never holds a partial chunk."""
     sweep = "design.ball_weight=1.5 kgf:2.5 kgf:2400"
-    args = ["study", HARTNELL, "--sweep", sweep, "--chunk", "100", "--skip", "classic"]
+    spec = _wide(tmp_path)
+    args = ["study", spec, "--sweep", sweep, "--chunk", "100", "--skip", "classic"]
     ref_db = tmp_path / "ref.db"
-    run_study(load_study(HARTNELL, sweeps=[sweep], skip="classic"), ref_db, chunk=100)
+    run_study(load_study(spec, sweeps=[sweep], skip="classic"), ref_db, chunk=100)
     with Store(ref_db) as store:
         reference = store.table()
     db = tmp_path / "killed.db"
@@ -366,7 +383,8 @@ def test_cli_study_show_export(tmp_path, monkeypatch):
     def cli(*args):
         return invoke(args)
 
-    r = cli("study", HARTNELL, "--sweep", "design.ball_weight=1.9 kgf:2.1 kgf:3", "--sweep",
+    wide = _wide(tmp_path)
+    r = cli("study", wide, "--sweep", "design.ball_weight=1.9 kgf:2.1 kgf:3", "--sweep",
             "design.free_length=15 cm,16 cm", "--pareto", "moving_mass,max:k2_margin",
             "--db", "s.db", "--out", "s.csv", "--plot", "plots")
     assert r.exit_code == 0, r.output
@@ -376,7 +394,7 @@ def test_cli_study_show_export(tmp_path, monkeypatch):
     assert f"wrote {tmp_path / 'plots' / 'pareto.png'}" in r.stdout.splitlines()
     assert {p.name for p in (tmp_path / "plots").iterdir()} >= {
         "sweep-design.ball_weight.png", "sweep-design.free_length.svg", "pareto.png"}
-    again = cli("study", HARTNELL, "--sweep", "design.ball_weight=2 kgf", "--db", "s.db")
+    again = cli("study", wide, "--sweep", "design.ball_weight=2 kgf", "--db", "s.db")
     assert again.exit_code == 2 and "holds another study" in again.output  # not --resume
     show = cli("study", "show", "s.db")
     assert show.exit_code == 0 and "status:" in show.stdout

@@ -584,7 +584,9 @@ def test_coil_design_is_buildable():
 
     spec, res = _design("traction-coil-design.toml")
     sd, gov = res.spring, spec.governor
-    assert sd.l0 < 2.0 * gov.spring_length  # was 0.6127 m: 6 times the installed length
+    # was 0.6127 m: 6 times the installed length; 0.1397 m until the whole operating band,
+    # friction band included, had to lie in 220-250 rpm (issue 20): 0.2092 m now
+    assert sd.l0 < 2.1 * gov.spring_length
     F = np.asarray(res.statics.spring_force)
     s = (F.max() + 0.1 * (F.max() - F.min())) / sd.kappa
     assert s < _buckling_deflection(sd.l0, 2 * sd.r, spec.material.shear_modulus, 206e9, 0.5)
@@ -643,5 +645,9 @@ def test_article_replacement_spring_passes_without_a_resonance_ceiling():
     assert not spec.governor.resonance_ceiling
     res = evaluate(spec)
     assert np.max(res.k2) / spec.speed.omega_mean**2 == pytest.approx(2.69, abs=0.005)
-    assert all(c.passed for c in res.checks)
+    # every check passes but the band's top end: the article's rounded answer (K = 30.406
+    # lbf/in, L = 5.3133 in) spans exactly the 30 rpm of the band, and runs 220.008-250.008 rpm
+    failed = [c for c in res.checks if not c.passed]
+    assert [c.name for c in failed] == ["highest speed <= speed.outer"]
+    assert 0 < failed[0].value * 30 / np.pi - 250.0 < 0.01
     assert "k^2 < omega0^2 (no resonance)" not in {c.name for c in res.checks}

@@ -54,18 +54,16 @@ def classic_measures(spec, sd: statics.SpringDesign, char: statics.Characteristi
     band = gov.friction(x, design)
     rise = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, band), 0.0))
     fall = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, -band), 0.0))
-    # d(omega^2)/dx at equilibrium from I k^2 = lever * d(omega^2)/dx (exact, no differences),
-    # the dead loads' slope included whatever reaction_slope says for k^2: it is the
-    # characteristic's own slope (statics.characteristic_slope, the "characteristic rises" check)
-    dw2 = 2.0 * char.omega * statics.characteristic_slope(spec, sd, x, char.omega)
+    # the characteristic's own slope d omega/dx (exact, the dead loads' slope included) and its
+    # secants, at the one tolerance the "characteristic rises" check reads (statics.stability)
     wi, wa = float(char.omega[0]), float(char.omega[-1])
-    tol = 1e-9 * float(np.max(np.abs(dw2)) or 1.0)
-    stability = ("unstable" if np.any(dw2 < -tol) else
-                 "isochronous" if np.all(np.abs(dw2) <= tol) else "stable")
+    i_n = int(np.argmin(np.abs(x - gov.x_normal)))
+    w0 = spec.speed.omega_mean if spec.speed is not None else float(char.omega[i_n])
+    stability = str(statics.stability(statics.rising_slopes(spec, sd, x, char.omega),
+                                      statics.slope_scale(spec, w0)))
     grow = (1.0 + EFFORT_CHANGE) ** 2 - 1.0
     slope = gov.travel_slope(x)
     effort = gov.flying_masses * grow * w2 * t.lever / (2.0 * slope)
-    i_n = int(np.argmin(np.abs(x - gov.x_normal)))
     travel = _travel(spec, sd, float(x[i_n]), float(x[-1]), (1.0 + EFFORT_CHANGE) ** 2 * w2[i_n])
     return {
         "range_rad_s": wa - wi,

@@ -398,6 +398,12 @@ def static_range(spec, kappa, l0):
     """Least and largest spring force (N) over the characteristic's configurations
     (:func:`govopt.analysis.statics.configurations`), for arrays of springs."""
     A_F, B_F = spec.governor.spring_force_coefficients(statics.configurations(spec))
+    A_F, B_F = np.ravel(A_F), np.ravel(B_F)
+    if B_F.size and np.all(B_F == B_F[0]) and np.all(np.asarray(kappa) >= 0):
+        # F = kappa (A_F - B l0) is monotone in A_F: its extremes at A_F's, the same numbers
+        # as the loop below (rounding is monotone), without a pass per configuration
+        b = B_F[0]
+        return kappa * (np.min(A_F) - b * l0), kappa * (np.max(A_F) - b * l0)
     lo = hi = None
     for a, b in zip(np.ravel(A_F), np.ravel(B_F), strict=True):
         F = kappa * (a - b * l0)

@@ -105,6 +105,29 @@ def required_spring(spec: Spec, m, central=None):
             spring_force(spec, gov.x_outer, kappa, l0))
 
 
+#: the speed band's two requirements, one rule for every governor type (the names every path
+#: reports: evaluate, bulk, the design search and studies)
+BAND_INNER = "lowest speed >= speed.inner"
+BAND_OUTER = "highest speed <= speed.outer"
+BAND_SOURCE = ("[speed] inner/outer: the whole operating band inside the spec's; with friction "
+               "the governor closes at omega_fall and opens at omega_rise, omega^2 = (Q_s + cf "
+               "-+ F) / (jp - ci) (textbook 3.4(b), 'Friction at the sleeve'; Hamabe eq. 42)")
+
+
+def band_speeds_squared(spec: Spec, m, kappa, l0, central=None, friction=(0.0, 0.0)):
+    """``(omega_fall^2 at x_inner, omega_rise^2 at x_outer)``, (rad/s)^2: the ends of the
+    operating band, the governor closing at the innermost configuration and opening at the
+    outermost against the friction band ``friction = (F_inner, F_outer)`` (generalised forces,
+    the type's :meth:`Governor.friction`; textbook 3.4(b)). Arrays broadcast over designs.
+    The requirement (where the spec states ``[speed] inner/outer``, :attr:`Speed.band`):
+    ``omega_fall(x_inner) >= omega_inner`` and ``omega_rise(x_outer) <= omega_outer``."""
+    gov = spec.governor
+    t_i = terms(spec, gov.x_inner, m, central)
+    t_a = terms(spec, gov.x_outer, m, central)
+    return (t_i.omega_squared(kappa, l0, -np.asarray(friction[0])),
+            t_a.omega_squared(kappa, l0, np.asarray(friction[1])))
+
+
 def inertia(spec: Spec, sd: SpringDesign, x):
     """Generalised inertia at ``x``: the design's own value if it gives one, else the type's."""
     if sd.inertia_given:
@@ -319,3 +342,42 @@ def characteristic_slope(spec: Spec, sd: SpringDesign, alpha, omega):
     t = terms(spec.with_analysis(reaction_slope=True), alpha, sd.m, sd.central)
     return t.stiffness(sd.kappa, sd.l0, omega**2) / (2.0 * omega * t.lever)
 
+
+#: a slope of the characteristic below this share of ``omega0 / (x_outer - x_inner)`` is flat:
+#: rounding, not a rise or a fall (the one tolerance of stability and isochronism; it equals
+#: the pass tolerance of a check's margin, so the check and the label agree)
+SLOPE_RTOL = 1e-9
+
+
+def slope_scale(spec: Spec, omega0):
+    """The scale of ``d omega / d x`` (rad/s per unit ``x``): the reference speed ``omega0``
+    (the spec's mean, else the normal configuration's) over the configuration range."""
+    g = spec.governor
+    return np.asarray(omega0, dtype=float) / (g.x_outer - g.x_inner)
+
+
+def rising_slopes(spec: Spec, sd: SpringDesign, alpha, omega):
+    """``d omega / d x`` at every configuration (:func:`characteristic_slope`) and the secant
+    between neighbours, along the last axis: a fall between two rows cannot pass."""
+    slope = np.broadcast_to(characteristic_slope(spec, sd, alpha, omega), np.shape(omega))
+    secant = np.diff(omega, axis=-1) / np.diff(alpha)
+    return np.concatenate([slope, secant], axis=-1)
+
+
+def stability(slopes, scale):
+    """``"stable"``, ``"isochronous"`` or ``"unstable"`` (Rattan; textbook 3.2) from the slopes
+    of the characteristic (:func:`rising_slopes`, last axis) at ``scale``
+    (:func:`slope_scale`): unstable where one falls by more than :data:`SLOPE_RTOL` of the
+    scale, isochronous where every one is within it, else stable. Decided once, here: the
+    "characteristic rises" check and the classic label read it.
+
+    An exactly isochronous governor (controlling force ``c r``) is flat to rounding:
+
+    >>> stability(np.array([1e-15, -2e-15, 0.0]), 10.0)
+    array('isochronous', dtype='<U11')
+    >>> str(stability(np.array([0.5, -1e-6]), 10.0))
+    'unstable'
+    """
+    s = np.asarray(slopes, dtype=float) / np.asarray(scale, dtype=float)[..., None]
+    return np.where((s < -SLOPE_RTOL).any(axis=-1), "unstable",
+                    np.where((np.abs(s) <= SLOPE_RTOL).all(axis=-1), "isochronous", "stable"))

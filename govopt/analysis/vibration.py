@@ -152,15 +152,6 @@ def _forcing(spec: Spec, p: dict, tau, friction_factor=None):
     return x["lever"] * eta * (2.0 * w0 + eta) - (reaction - x["M_r0"]) + x["euler"] * eta_dot
 
 
-def forcing_moment(spec: Spec, alpha0, m, inertia, tau, omega0=None, *, speed_fluctuation=None,
-                   tangential_inertia: int = 0):
-    """The periodic moment ``G(tau)`` driving each pendulum about ``alpha0`` (N m), ``tau =
-    omega0 t`` (Hamabe, eqs. 14, 18, 19; see the module docstring). ``tau`` may be an array
-    (last axis); the other arguments broadcast with each other."""
-    p = _setup(spec, alpha0, m, inertia, omega0, tangential_inertia, speed_fluctuation)
-    return _forcing(spec, p, np.asarray(tau, dtype=float))
-
-
 def _switch_start(p: dict):
     """``tau_a`` with ``theta(tau_a) = pi/2 - delta``: the friction switch that starts the half
     period where ``cos(theta + delta) < 0``. ``theta(tau + pi) = theta(tau) + pi``, so the other

@@ -241,18 +241,23 @@ class Governor(ABC):
         shear stress against the allowable (Hamabe Ex. 1); with a wire grade
         (``material.grade``) the spring engineering table instead - static stresses against
         the grade's allowables at ``d``, the spring kind's geometry, and fatigue and surge under
-        ``vib``, the type's forced vibration (:mod:`govopt.analysis.spring_engineering`)."""
+        ``vib``, the type's forced vibration (:mod:`govopt.analysis.spring_engineering`).
+        Without a grade, the spring kind's geometric rows (coil clash, buckling, free pitch:
+        :func:`~govopt.analysis.spring_engineering.geometry_checks`) follow the stress."""
         from ..result import Check
 
         if spec.material is None or not np.isfinite(sd.d):
             return []
-        if spec.material.grade is not None:
-            from ..analysis import spring_engineering
+        from ..analysis import spring_engineering
 
+        if spec.material.grade is not None:
             return spring_engineering.checks(spec, sd, char, vib)
+        # the spring's geometry (coil clash, buckling, pitch) needs no wire grade: checked
+        # whenever d, r, n are known
         return [Check("shear stress", float(np.max(char.stress)),
                       spec.material.allowable_shear_stress, "<=", "Pa",
-                      "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s")]
+                      "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"),
+                *spring_engineering.geometry_checks(spec, sd)]
 
     def spring_report(self, spec, sd, char, vib=None):
         """The spring maker's sheet, the fatigue loads under ``vib`` and the manufacturing
@@ -268,6 +273,12 @@ class Governor(ABC):
         """The type's own geometry over ``x`` for the characteristic table: name -> (values, SI
         unit); default none."""
         return {}
+
+    def free_length_limits(self) -> dict:
+        """``{requirement name: (sense, limit)}``: the bounds on the spring's free length ``l0``
+        (m, the type's form) that the design search keeps among the statics (affine in
+        ``kappa`` with ``kappa l0``); a positive free length where it is a length."""
+        return {"free length > 0": (">=", 0.0)} if self.free_length_positive else {}
 
     def spring_force_coefficients(self, x):
         """``(A_F, B_F)`` with the spring force ``F = kappa (A_F - B_F l0)`` (N per N/m), for

@@ -230,6 +230,13 @@ class TractionLeafGovernor(FlyWeights):
                   scale=None if self.set_min else self.leaf_length),
             Check("leaf set <= max", sd.l0, self.set_max, "<=", "m", source)]
 
+    def free_length_limits(self) -> dict:
+        """The set's bounds as the design search's statics rows (the names of the checks of
+        :meth:`spring_checks`)."""
+        return {name: (sense, limit) for name, sense, limit in (
+            ("leaf set >= min", ">=", self.set_min), ("leaf set <= max", "<=", self.set_max))
+            if np.isfinite(limit)}
+
     def set_ok(self, l0):
         """True where the leaf's set ``l0`` (m) lies within ``set_min`` .. ``set_max``."""
         return (l0 >= self.set_min) & (l0 <= self.set_max)

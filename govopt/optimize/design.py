@@ -36,7 +36,7 @@ from ..analysis import transient as tr
 from ..errors import DesignError, InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS, design_size_error
 from ..model import spring
-from ..spec import Design, Requirements, Spec
+from ..spec import Design, Requirements, Spec, Speed
 from ..units import G_STANDARD, SI_UNITS
 from .kappa import Affine, KappaModel
 from .margins import margins_to_ends, window_centre
@@ -102,13 +102,43 @@ def k2_limits(spec: Spec, req: Requirements) -> tuple[float, float]:
     return req.k2_margin * w0sq, ceiling
 
 
+#: reference speeds across a stated band at which the normal configuration may be held
+BAND_REFERENCES = 9
+
+
+#: the finer scan where none of the coarse reference speeds admits a spring (a leaf without set
+#: holds the band only with its normal configuration in a narrow window of speeds)
+BAND_REFERENCES_FINE = 65
+
+
+def reference_speeds(spec: Spec, count: int = BAND_REFERENCES) -> np.ndarray | None:
+    """The speeds (rad/s) at which the design search holds the normal configuration: the mean
+    speed only (Hamabe, Example 1: ``[speed] mean/irregularity``), or, where the spec states a
+    band ``[speed] inner/outer``, :data:`BAND_REFERENCES` speeds across it, the mean first: the
+    band is the requirement, where in it the normal configuration runs is a design choice (the
+    free length), and holding it at the mean can rule out every spring (a leaf without set)."""
+    sp = spec.speed
+    if not sp.band:
+        return None
+    w = np.linspace(sp.omega_inner, sp.omega_outer, count)
+    mid = count // 2
+    return np.concatenate([[sp.omega_mean], w[:mid], w[mid + 1:]])
+
+
 def statics_window(spec: Spec, req: Requirements):
-    """Configurations, the kappa-affine model over the weight grid and the admissible stiffness
-    interval per mass: ``(grid, km, lo, hi, parts)`` (see :meth:`KappaModel.statics_interval`)."""
+    """Configurations, the kappa-affine model over the weight grid (times the reference speeds
+    of :func:`reference_speeds`) and the admissible stiffness interval per row:
+    ``(grid, km, lo, hi, parts)`` (see :meth:`KappaModel.statics_interval`)."""
     grid = Grid.build(spec)
-    m, c = masses(req)
-    km = KappaModel.build(spec, m, grid.alpha, c[:, None])
-    lo, hi, parts = km.statics_interval(*k2_limits(spec, req), spec.speed.irregularity)
+    for count in (BAND_REFERENCES, BAND_REFERENCES_FINE):
+        m, c = masses(req)
+        refs = reference_speeds(spec, count) if spec.governor.spring is not None else None
+        if refs is not None:  # rows mass-major, the mean speed first (ties keep it)
+            m, c, refs = np.repeat(m, refs.size), np.repeat(c, refs.size), np.tile(refs, m.size)
+        km = KappaModel.build(spec, m, grid.alpha, c[:, None], refs)
+        lo, hi, parts = km.statics_interval(*k2_limits(spec, req), spec.speed.irregularity)
+        if refs is None or np.any(lo <= hi):
+            break
     return grid, km, lo, hi, parts
 
 
@@ -456,7 +486,8 @@ def best_discrete(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, lo,
     kappa, smass = cat.kappa, cat.mass
     M = km.m.shape[0]
     rows, cols, l0, n_statics = spring_screen(spec, req, km, lo, hi, cat)
-    stats = {"gp": cat.gp, "springs": cat.size, "masses": int(M),
+    per = 1 if km.reference is None else int(np.unique(km.reference).size)
+    stats = {"gp": cat.gp, "springs": cat.size, "masses": int(M) // per,
              "combinations": cat.size * int(M),
              "statics_feasible": n_statics, "spring_feasible": int(rows.size)}
     m = km.m[rows, 0]
@@ -797,31 +828,20 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     ratio of the band's ends; the masses set its level (``M/m``) and, against friction, its
     width. With an engine and load changes the dash-pot is designed as for spring governors.
     """
-    gov, sp = spec.governor, spec.speed
+    gov = spec.governor
     grid = Grid.build(spec)
     m, c = masses(req)
     if m.size == 0:
         raise InfeasibleError(f"{spec.path}: bounds.{gov.mass_key}_weight: no weight on the "
                               "catalogue's weight_step grid lies within the bounds")
-    t = statics.terms(spec, grid.alpha, m[:, None], c[:, None])
-    fr = gov.friction(grid.alpha)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        w2, rise, fall = (t.omega_squared(0.0, 0.0, s * fr) for s in (0.0, 1.0, -1.0))
-        inertia = gov.inertia(grid.alpha, m[:, None], c[:, None]) + 0.0 * w2
-        k2 = t.stiffness(0.0, 0.0, w2) / inertia
-    k2_lo, k2_hi = k2_limits(spec, req)
-    ok_parts = {
-        "equilibrium speed > 0": np.all(fall > 0, axis=1),
-        "k^2 within its margins": np.all((k2 >= k2_lo) & (k2 <= k2_hi), axis=1),
-        "lowest speed >= speed.inner": np.sqrt(np.maximum(fall[:, 0], 0)) >= sp.omega_inner,
-        "highest speed <= speed.outer": np.sqrt(rise[:, -1]) <= sp.omega_outer,
-    }
+    ok_parts, w2, rise, fall, k2, inertia = _dead_weight_statics(spec, req, grid, m, c)
     ok = np.logical_and.reduce(list(ok_parts.values()))
     stats = {"masses": int(m.size), "combinations": int(m.size),
              "statics_feasible": int(ok.sum()), "spring_feasible": int(ok.sum())}
     if not ok.any():
-        raise InfeasibleError(_dead_weight_diagnosis(spec, ok_parts, rise, fall))
+        raise InfeasibleError(_dead_weight_diagnosis(spec, req, ok_parts, rise, fall))
     zero = Affine(0.0 * w2, w2)
+
     km = KappaModel(spec, m[:, None], grid.alpha, zero, Affine(0.0 * k2, k2),
                     Affine(0.0 * w2, 0.0 * w2), Affine(0.0 * m[:, None], 0.0 * m[:, None]),
                     inertia, c[:, None])
@@ -841,22 +861,86 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     raise InfeasibleError(_dynamics_conflict(spec, req, stats))
 
 
-def _dead_weight_diagnosis(spec: Spec, parts: dict, rise, fall) -> str:
-    """Which requirement no ball and central-load weight meets, with the nearest the geometry
-    allows."""
+def _dead_weight_statics(spec: Spec, req: Requirements, grid: Grid, m, c):
+    """The statics requirements of a dead-weight governor at every (ball, central) weight pair:
+    ``({name: met}, omega^2, omega_rise^2, omega_fall^2, k^2, inertia)`` over the grid."""
+    gov, sp = spec.governor, spec.speed
+    t = statics.terms(spec, grid.alpha, m[:, None], c[:, None])
+    fr = gov.friction(grid.alpha)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w2, rise, fall = (t.omega_squared(0.0, 0.0, s * fr) for s in (0.0, 1.0, -1.0))
+        inertia = gov.inertia(grid.alpha, m[:, None], c[:, None]) + 0.0 * w2
+        k2 = t.stiffness(0.0, 0.0, w2) / inertia
+    k2_lo, k2_hi = k2_limits(spec, req)
+    parts = {
+        "equilibrium speed > 0": np.all(fall > 0, axis=1),
+        "k^2 within its margins": np.all((k2 >= k2_lo) & (k2 <= k2_hi), axis=1),
+        statics.BAND_INNER: np.sqrt(np.maximum(fall[:, 0], 0)) >= sp.omega_inner,
+        statics.BAND_OUTER: np.sqrt(rise[:, -1]) <= sp.omega_outer,
+    }
+    return parts, w2, rise, fall, k2, inertia
+
+
+def _bisect(feasible, lo: float = 1.0, hi: float = 100.0, iters: int = 12) -> float | None:
+    """Smallest factor ``x`` in ``[lo, hi]`` with ``feasible(x)``, by bisection in log space;
+    None if even ``hi`` is not enough."""
+    if not feasible(hi):
+        return None
+    for _ in range(iters):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (lo, mid) if feasible(mid) else (mid, hi)
+    return hi
+
+
+def _dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall) -> str:
+    """Which requirement no ball and central-load weight meets, and the requirements that bind:
+    each relaxed in turn (the k^2 margin, the band's ends, the weight bounds), with the value
+    that makes the search feasible."""
     sp = spec.speed
     failing = [k for k, v in parts.items() if not v.any()]
+    head = (f"{spec.path}: infeasible: no {spec.governor.mass_key} and central-load weight in "
+            f"the bounds meets " + (", ".join(f"'{k}'" for k in failing) if failing else
+                                    "all the statics requirements together"))
+    grid = Grid.build(spec)
+
+    def feasible(s, r):
+        m, c = masses(r)
+        if m.size == 0:
+            return False
+        return bool(np.logical_and.reduce(list(
+            _dead_weight_statics(s, r, grid, m, c)[0].values())).any())
+
+    def band(inner, outer):
+        return replace(spec, speed=Speed((inner + outer) / 2.0, 2.0 * (outer - inner)
+                                         / (outer + inner), band=sp.band))
+
+    rpm = 30.0 / math.pi
+    moves = []
+    x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=req.k2_margin / x)))
+    if x is not None and req.k2_margin:
+        moves.append(f"requirements.k2_margin {req.k2_margin:g} -> {req.k2_margin / x:.4g}")
+    x = _bisect(lambda x: feasible(band(sp.omega_inner / x, sp.omega_outer), req))
+    if x is not None:
+        moves.append(f"speed.inner {sp.omega_inner * rpm:.5g} rpm -> "
+                     f"{sp.omega_inner / x * rpm:.5g} rpm")
+    x = _bisect(lambda x: feasible(band(sp.omega_inner, sp.omega_outer * x), req))
+    if x is not None:
+        moves.append(f"speed.outer {sp.omega_outer * rpm:.5g} rpm -> "
+                     f"{sp.omega_outer * x * rpm:.5g} rpm")
+    x = _bisect(lambda x: feasible(spec, replace(
+        req, pendulum_mass=(req.pendulum_mass[0] / x, req.pendulum_mass[1] * x),
+        central_mass=(req.central_mass[0] / x, req.central_mass[1] * x))), hi=4.0)
+    if x is not None:
+        moves.append(f"the weight bounds widened x{x:.3g}")
     with np.errstate(invalid="ignore"):
         ratio = np.sqrt(rise[:, -1] / fall[:, 0])
     best = float(np.nanmin(np.where(np.isfinite(ratio), ratio, np.nan))) \
         if np.isfinite(ratio).any() else math.inf
-    need = sp.omega_outer / sp.omega_inner
-    head = (f"{spec.path}: infeasible: no {spec.governor.mass_key} and central-load weight in "
-            f"the bounds meets " + (", ".join(f"'{k}'" for k in failing) if failing else
-                                    "all the speed-range requirements together"))
-    return (f"{head}; the narrowest operating band the geometry and friction allow spans a "
-            f"speed ratio {best:.4g}, the spec's range {need:.4g} (widen speed.inner/outer, "
-            f"reduce governor.sleeve_friction, or widen the weight bounds)")
+    tail = ("; it becomes feasible if one of these moves: " + "; ".join(moves)) if moves else (
+        f"; no single requirement within a factor of 100 makes it feasible (the narrowest "
+        f"operating band the geometry and friction allow spans a speed ratio {best:.4g}, the "
+        f"spec's range {sp.omega_outer / sp.omega_inner:.4g})")
+    return head + tail
 
 
 def _check_grids(spec: Spec, req: Requirements) -> None:
@@ -885,12 +969,7 @@ def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
 def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, iters=12):
     """Smallest factor ``x`` in ``[lo, hi]`` with ``make(x) = (spec, req)`` feasible, by
     bisection in log space; None if even ``hi`` is not enough."""
-    if not _feasible(*make(hi), stage):
-        return None
-    for _ in range(iters):
-        mid = math.sqrt(lo * hi)
-        lo, hi = (lo, mid) if _feasible(*make(mid), stage) else (mid, hi)
-    return hi
+    return _bisect(lambda x: _feasible(*make(x), stage), lo, hi, iters)
 
 
 def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> str:
@@ -915,6 +994,20 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
         return spec, replace(req, pendulum_mass=(req.pendulum_mass[0] / x,
                                                  req.pendulum_mass[1] * x))
 
+    def with_band(inner, outer):  # a band stated [speed] inner/outer, re-derived as the parser
+        return replace(spec, speed=Speed((inner + outer) / 2.0, 2.0 * (outer - inner)
+                                         / (outer + inner), band=True)), req
+
+    def with_inner(x):
+        return with_band(speed.omega_inner / x, speed.omega_outer)
+
+    def with_outer(x):
+        return with_band(speed.omega_inner, speed.omega_outer * x)
+
+    # the speed requirement as the spec states it: the band's ends, or the irregularity
+    speed_moves = ([("speed.inner", with_inner, "rpm /", speed.omega_inner),
+                    ("speed.outer", with_outer, "rpm x", speed.omega_outer)] if speed.band
+                   else [("irregularity", with_irr, "x", speed.irregularity)])
     if stage == "statics":
         lo_name = max(parts, key=lambda k: np.median(parts[k][0]))
         lo, hi = parts[lo_name]
@@ -927,16 +1020,20 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
             hi_name = min(others, key=lambda k: np.median(parts[k][1]))
             head = (f"{spec.path}: infeasible: the requirement '{lo_name}' needs a stiffer "
                     f"spring than '{hi_name}' allows at every {weight} in the bounds")
-        cands = [("irregularity", with_irr, "x", speed.irregularity),
-                 ("k2_margin", with_k2, "/", req.k2_margin),
+        cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin),
                  ("pendulum weight bounds", with_mass, "widen x", None)]
+    elif stage == "spring" and stats["statics_feasible"] == 0:
+        head = (f"{spec.path}: infeasible: no catalogue spring's stiffness falls in the window "
+                "the statics allow (the speed band, k^2 margins, free length) at any "
+                f"{spec.governor.mass_key} weight in the bounds")
+        cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin)]
     elif stage == "spring":
         head = (f"{spec.path}: infeasible: no spring in the catalogue and bounds meets the "
                 f"allowable shear stress (with index, envelope and surge limits) at a stiffness "
                 f"the statics allow ({stats['statics_feasible']} mass-spring combinations pass "
                 f"the statics, none the spring checks)")
         cands = [("allowable_shear_stress", with_ks, "x", mat.allowable_shear_stress),
-                 ("irregularity", with_irr, "x", speed.irregularity)]
+                 *speed_moves]
         if mat.allowable_shear_stress is None:  # a wire grade's allowables: not one number
             cands = cands[1:]
     else:
@@ -947,6 +1044,10 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
             continue
         if how == "x" and value is not None:
             moves.append(f"{name} {value:g} -> {value * x:.4g} (x{x:.3g})")
+        elif how.startswith("rpm"):  # a band's end, shown as the spec's speeds are
+            rpm = 30.0 / math.pi
+            to = value / x if how == "rpm /" else value * x
+            moves.append(f"{name} {value * rpm:.5g} rpm -> {to * rpm:.5g} rpm")
         elif how == "/" and value:
             moves.append(f"{name} {value:g} -> {value / x:.4g}")
         elif how == "widen x":

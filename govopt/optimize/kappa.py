@@ -65,16 +65,21 @@ class KappaModel:
     l0: Affine  # kappa * l0 is affine: stored as (x, y) of kappa*l0
     inertia: np.ndarray
     central: np.ndarray | float | None = None  # the central (sleeve) load's mass, kg
+    #: the speed at which each row holds the normal configuration (rad/s, shape (M, 1)); None:
+    #: the spec's mean speed for every row
+    reference: np.ndarray | None = None
 
     @classmethod
-    def build(cls, spec: Spec, m, alpha, central=None) -> KappaModel:
+    def build(cls, spec: Spec, m, alpha, central=None, reference=None) -> KappaModel:
         """On the seam (:mod:`govopt.governors.base`): with ``Q_n`` the spring force that holds
-        the normal configuration at the mean speed, ``kappa l0 = (kappa A_n - Q_n) / B_n``, so
+        the normal configuration at the reference speed (the mean speed, Hamabe Example 1, or a
+        row's own ``reference``), ``kappa l0 = (kappa A_n - Q_n) / B_n``, so
         ``Q_s = kappa (A - B A_n / B_n) + Q_n B / B_n`` and every figure below is affine."""
         gov = spec.governor
         m = np.asarray(m, dtype=float).reshape(-1, 1)
         alpha = np.asarray(alpha, dtype=float)
-        w0 = spec.speed.omega_mean
+        w0 = spec.speed.omega_mean if reference is None else np.asarray(
+            reference, dtype=float).reshape(-1, 1)
         t_n = statics.terms(spec, gov.x_normal, m, central)
         M_n = w0**2 * t_n.lever - t_n.cf  # (M, 1)
         A_n, B_n = t_n.A, t_n.B
@@ -92,7 +97,7 @@ class KappaModel:
         central = np.zeros_like(m) if central is None else np.broadcast_to(
             np.asarray(central, dtype=float).reshape(-1, 1), m.shape)
         return cls(spec, m, alpha, w2, Affine(slope_x / inertia, slope_y / inertia), force,
-                   l0, inertia, central)
+                   l0, inertia, central, None if reference is None else w0 + 0.0 * m)
 
     def free_half_length(self, kappa):
         """``l0 = A_n / B_n - M_n / (B_n kappa)`` (Hamabe, Example 1)."""
@@ -143,8 +148,25 @@ class KappaModel:
             "spring in tension": _interval(*start, Affine(self.force.x, self.force.y), 0.0,
                                            ">="),
         }
-        if self.spec.governor.free_length_positive:
-            parts["free length > 0"] = _interval(*start, Affine(self.l0.x, self.l0.y), 0.0, ">=")
+        for name, (sense, limit) in self.spec.governor.free_length_limits().items():
+            # l0 sense limit <=> kappa l0 - limit kappa sense 0 (kappa > 0)
+            parts[name] = _interval(*start, Affine(self.l0.x - limit, self.l0.y), 0.0, sense)
+        sp = self.spec.speed
+        if sp.band:  # the whole operating band inside [speed] inner/outer, friction included
+            gov = self.spec.governor
+            x_ends = self.alpha[[i_inner, i_outer]]
+            fr = gov.friction(x_ends)
+            # omega_fall^2, omega_rise^2 at the ends are affine in kappa: the same slope in
+            # kappa as omega^2, shifted by -+ F / (jp - ci) (statics.band_speeds_squared)
+            zero = statics.band_speeds_squared(self.spec, self.m, 0.0, 0.0, self.central,
+                                               (fr[0], fr[1]))
+            one = statics.band_speeds_squared(self.spec, self.m, 0.0, 0.0, self.central)
+            fall = Affine(self.omega2.x[:, [i_inner]],
+                          self.omega2.y[:, [i_inner]] + (zero[0] - one[0]))
+            rise = Affine(self.omega2.x[:, [i_outer]],
+                          self.omega2.y[:, [i_outer]] + (zero[1] - one[1]))
+            parts[statics.BAND_INNER] = _interval(*start, fall, sp.omega_inner**2, ">=")
+            parts[statics.BAND_OUTER] = _interval(*start, rise, sp.omega_outer**2, "<=")
         lo_irr, hi_irr = self.irregularity_interval(i_inner, i_outer, delta)
         parts["irregularity"] = (np.maximum(start[0], lo_irr), np.minimum(start[1], hi_irr))
         lo = np.max([p[0] for p in parts.values()], axis=0)
