@@ -531,20 +531,21 @@ def test_damaged_database_is_one_line(tmp_path, monkeypatch):
     from clirun import invoke
 
     monkeypatch.chdir(tmp_path)
+    spec = _wide(tmp_path)  # every swept weight keeps its band: the runs pass (exit 0)
     sweep = "design.ball_weight=1.8 kgf:2.2 kgf:300"
-    assert invoke(["study", "run", HARTNELL, "--sweep", sweep, "--db", "d.db",
+    assert invoke(["study", "run", spec, "--sweep", sweep, "--db", "d.db",
                    "--skip", "dynamics,vibration,classic"]).exit_code == 0
     with open(tmp_path / "d.db", "r+b") as fh:
         assert fh.seek(0, 2) > 8192
         fh.seek(4096)
         fh.write(os.urandom(4096))
-    for args in (["study", "run", HARTNELL, "--sweep", sweep, "--db", "d.db", "--resume"],
+    for args in (["study", "run", spec, "--sweep", sweep, "--db", "d.db", "--resume"],
                  ["study", "show", "d.db"], ["study", "export", "d.db", "--out", "d.csv"]):
         r = invoke(args)
         assert r.exit_code == 2, r.output
         assert r.stderr.startswith("error: d.db: the study database is damaged"), r.stderr
         assert r.stderr.count("\n") == 1
-    r = invoke(["study", "run", HARTNELL, "--sweep", sweep, "--db", "d.db", "--force",
+    r = invoke(["study", "run", spec, "--sweep", sweep, "--db", "d.db", "--force",
                 "--skip", "dynamics,vibration,classic"])
     assert r.exit_code == 0 and "points: 300 of 300 done" in r.stdout, r.output
 
