@@ -194,8 +194,8 @@ def test_monte_carlo_is_seeded_and_its_interval_holds_the_estimate():
 def test_textbook_robust_design_holds_at_its_corners():
     """The spring-loaded robust spec: EN 15800 grade 2 on the coil diameter and an adjusting nut
     of +-3 mm. At either end of the coil tolerance some nut setting within its range passes every
-    check (l0 is the whole free length: spring_length_factor 1): searched here on a 1/20 mm grid through the ordinary evaluator, independently of the
-    optimiser's own corner code."""
+    check (l0 is the whole free length, spring_length_factor 1): searched on a 1/20 mm grid
+    through the ordinary evaluator, independently of the optimiser's own corner code."""
     spec = govopt.load_spec(TEXTBOOK)
     res = dz.design(spec)
     design = _design(res)
