@@ -35,3 +35,10 @@ def pytest_terminal_summary(terminalreporter):
             for name, line in getattr(report, "user_properties", ()):
                 if name == "hostile_summary":
                     terminalreporter.write_line(line)
+
+
+def pytest_collection_modifyitems(items):
+    """The long cases (marked ``slow``) first: on several workers they then run beside the rest
+    instead of ending the run alone. The sort is stable, so the order is the same in every
+    worker, as pytest-xdist requires."""
+    items.sort(key=lambda item: item.get_closest_marker("slow") is None)

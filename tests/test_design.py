@@ -240,6 +240,7 @@ def test_design_without_engine_says_dynamics_were_not_designed(tmp_path):
     assert all(c.passed for c in res.checks)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("inertia", ["4e7 kg m^2", "1e9 kg m^2"])
 def test_huge_flywheel_design_agrees_with_evaluate(tmp_path, inertia):
     """A flywheel 1e5-2e6 times Hamabe's (43 kgf m s^2 = 421.7 kg m^2): the slow modes decay
@@ -252,6 +253,12 @@ def test_huge_flywheel_design_agrees_with_evaluate(tmp_path, inertia):
     old = 'flywheel_inertia = "43 kgf*m*s^2"'
     assert old in text
     path = tmp_path / "flywheel.toml"
+    # the swing under the valve gear is not what this case is about: without the bundled limit
+    # the search visits what it did when the case was found (a vibration bound per candidate
+    # quadrupled its time)
+    vib = 'max_vibration = "25 deg"'
+    assert vib in text
+    text = text.replace(vib, "")
     path.write_text(text.replace(old, f'flywheel_inertia = "{inertia}"'))
     res = dz.design(govopt.load_spec(path))
     assert [c.name for c in res.checks if not c.passed] == []

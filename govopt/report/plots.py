@@ -42,7 +42,7 @@ import numpy as np
 
 from ..errors import GovoptError
 from ..units import SI_UNITS
-from .files import atomic_write, check_output
+from .files import atomic_write, check_output, output_folder
 
 FORMATS = ("png", "svg")
 #: inches and dots per inch of a single plot: 1050 x 675 px, text readable at 100 % zoom
@@ -537,17 +537,7 @@ def check_plot_dir(directory: str | Path, stem: str, *, overwrite: bool = False,
         if pattern.fullmatch(other.name) and os.path.realpath(other.parent) == os.path.realpath(
                 directory):
             raise GovoptError(f"{other}: cannot write it: it is also a plot of this run")
-    if not directory.is_dir():
-        if directory.exists() or directory.is_symlink():
-            raise GovoptError(f"{directory}: cannot write plots: it is not a folder")
-        if not directory.parent.is_dir():
-            raise GovoptError(f"{directory}: cannot write plots: folder {directory.parent} does "
-                              "not exist")
-        try:
-            directory.mkdir()
-        except OSError as exc:
-            raise GovoptError(f"{directory}: cannot make the plots' folder "
-                              f"({exc.strerror or exc})") from None
+    directory = output_folder(directory, "plots")
     check_output(directory / f"{stem}-characteristic.png", overwrite=overwrite, inputs=inputs,
                  what="plot")
     for entry in sorted(directory.iterdir()):
