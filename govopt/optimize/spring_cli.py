@@ -104,6 +104,13 @@ class _Where:
     def fail(self, key: str, message: str):
         raise GovoptError(f"{self(key)}: {message}")
 
+    def missing(self, key: str, also: str = "") -> None:
+        """A required value given nowhere: named in the spec when there is one."""
+        option = "--" + key.replace("_", "-")
+        if self.file is None:
+            raise GovoptError(f"{option}: required{also}")
+        raise GovoptError(f"{self.file}: spring.{key}: required (or {option}){also}")
+
 
 def read_spring_spec(path: str | Path) -> tuple[dict, str | None, str]:
     """A spring spec's ``[spring]`` table (raw TOML values), its ``problem`` and its name;
@@ -241,7 +248,7 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, **options) ->
 def _require(v: dict, where: _Where, *keys) -> None:
     for key in keys:
         if v.get(key) is None:
-            where.fail(key, "required (an option, or the key in a spring spec's [spring])")
+            where.missing(key)
 
 
 def _size(v: dict, where: _Where, name: str, json_out: bool) -> Outcome:
@@ -251,13 +258,13 @@ def _size(v: dict, where: _Where, name: str, json_out: bool) -> Outcome:
     _require(v, where, "force")
     _lengths(v, where)
     if v.get("stiffness") is None:
-        where.fail("stiffness", "required (or the stroke: length_1 and length_2, or stroke, "
-                                "with the forces)")
+        where.missing("stiffness", " (or the stroke: length_1 and length_2, or stroke, with "
+                                   "the forces)")
     material = v.get("material")
     if material is not None and v.get("shear_modulus") is None and not isinstance(
             materials.material(material, tensile_strength=1.0).G, float):
-        where.fail("shear_modulus", f"required with material {material!r}, whose shear "
-                                    "modulus varies with the wire diameter")
+        where.missing("shear_modulus", f" with material {material!r}, whose shear modulus "
+                                       "varies with the wire diameter")
     if material is None:
         _require(v, where, "allowable_stress", "shear_modulus")
     cycle = None
