@@ -155,3 +155,38 @@ def test_init_names_the_spring_command(tmp_path):
     assert result.exit_code == 0, result.output
     assert "govopt spring" in result.output
     assert (tmp_path / "sandgren-1990.toml").read_bytes() == example("sandgren-1990").read_bytes()
+
+
+def test_finite_life_is_basquins_line_through_its_two_points():
+    """Shigley §6-7: S_f = a N^b through (1e3, 0.9 S_su) and (1e7, S_se); the life at a safety
+    s < 1 is where S_f = S_se / s. Its ends: the 1e3-cycle point, and 1e7 as s -> 1."""
+    from govopt.springs import fatigue as fat
+
+    Sse, Ssu = 336e6, 1340e6
+    assert float(fat.finite_life(Sse / (0.9 * Ssu), Sse, Ssu)) == pytest.approx(1e3, rel=1e-9)
+    assert float(fat.finite_life(1 - 1e-9, Sse, Ssu)) == pytest.approx(1e7, rel=1e-6)
+    assert math.isinf(fat.finite_life(1.0, Sse, Ssu)) and math.isnan(fat.finite_life(0.1, Sse,
+                                                                                     Ssu))
+    b = math.log10(Sse / (0.9 * Ssu)) / 4.0
+    a = Sse / 1e7**b
+    N = float(fat.finite_life(0.7, Sse, Ssu))
+    assert a * N**b == pytest.approx(Sse / 0.7, rel=1e-9)
+
+
+def test_fatigue_below_the_endurance_gives_a_finite_life():
+    """A spring allowed a fatigue safety of 0.5 at the data's 1e7 cycles for a required 1e5:
+    the verdict gives its estimated life, the JSON the same number."""
+    from govopt.springs import fatigue as fat
+    from govopt.springs.materials import material
+
+    args = ["--force", "500 N", "--stiffness", "20 N/mm", "--material", "EN10270-1 SH",
+            "--fatigue-min-force", "100 N", "--fatigue-max-force", "500 N", "--life", "1e5",
+            "--min-fatigue-safety", "0.5"]
+    out = _json(*args)
+    row = next(c for c in out["checks"] if c["name"] == "body fatigue safety factor")
+    assert row["value"] < 1.0
+    Sse, Ssu = fat.reversed_endurance(material("EN10270-1 SH"), out["wire_diameter_m"])
+    life = float(fat.finite_life(row["value"], Sse, Ssu))
+    assert out["fatigue_life_cycles"] == pytest.approx(life, rel=1e-9) and 1e3 < life < 1e7
+    text = invoke(["spring", *args]).output
+    assert f"estimated finite life {life:.3g} cycles, enough for the required 1e+05" in text

@@ -345,6 +345,9 @@ def _data(sizing, v: dict, name: str) -> dict:
                     "free_length_m": sizing.free_length,
                     "initial_tension_N": sizing.initial_tension,
                     "checks": [c.to_dict() for c in sizing.checks], "notes": sizing.notes})
+        life = body_life(sizing, v)
+        if life is not None:  # inf: at least the data's life (JSON null with a flag)
+            out["fatigue_life_cycles"] = life
     return out
 
 
@@ -354,14 +357,45 @@ def _shown(value: float, v: dict) -> float:
     return 1.0 / value if v["objective"] == "energy per mass" else value
 
 
-def _verdict(check, sizing) -> str:
-    """PASS or FAIL; a fatigue row past its data's life says so (strength held constant)."""
+#: the body's fatigue row (:mod:`govopt.springs.checks`)
+BODY_FATIGUE = "body fatigue safety factor"
+
+
+def body_life(sizing, v: dict) -> float | None:
+    """The estimated life (cycles) of the body under the fatigue load cycle
+    (:func:`govopt.springs.fatigue.finite_life`: Basquin's line from ``0.9 S_su`` at 1e3
+    cycles to the data's endurance at 1e7, read at the row's safety): ``inf`` when it passes
+    at the data's life, nan below 1e3 cycles; None without a fatigue row."""
+    from ..springs import fatigue, materials
+    from ..springs.checks import DATA_CYCLES
+
+    row = next((c for c in sizing.checks if c.name == BODY_FATIGUE), None)
+    if row is None:
+        return None
+    mat = materials.material(v["material"], tensile_strength=v.get("tensile_strength"),
+                             G=v.get("shear_modulus"), density=v.get("density"))
+    Sse, Ssu = fatigue.reversed_endurance(mat, sizing.solution.d, v["rules"], v["peened"])
+    return float(fatigue.finite_life(row.value, Sse, Ssu, DATA_CYCLES))
+
+
+def _verdict(check, sizing, life=None) -> str:
+    """PASS or FAIL; a fatigue row past its data's life says so (strength held constant), and
+    the body's row below 1 (the stress above the data's endurance) its estimated finite
+    life."""
     from ..springs.checks import DATA_CYCLES
 
     verdict = "PASS" if check.passed else "FAIL"
     if "fatigue" in check.name and sizing.cycles > DATA_CYCLES:
         verdict += (f" (life {sizing.cycles:.3g} cycles is beyond the data's {DATA_CYCLES:.0e}:"
                     " extrapolated)")
+    if check.name == BODY_FATIGUE and life is not None and check.value < 1.0:
+        if math.isnan(life):
+            verdict += " (estimated life below 1e3 cycles: quasi-static, no S-N estimate)"
+        elif math.isfinite(life):
+            enough = "enough for" if life >= sizing.cycles else "short of"
+            verdict += (f" at the data's {DATA_CYCLES:.0e} cycles; estimated finite life "
+                        f"{life:.3g} cycles, {enough} the required {sizing.cycles:.3g} (Basquin "
+                        "line 0.9 S_su at 1e3 to the endurance at 1e7, Shigley 9th ed. §6-7)")
     return verdict
 
 
@@ -411,11 +445,12 @@ def _text(sizing, data: dict, v: dict) -> str:
                  f"initial tension {sizing.initial_tension:.4g} N")
         lines.append(f"{kind} spring of {material}: {extra}; checks (value, limit, margin, "
                      "source):")
+        life = data.get("fatigue_life_cycles")
         for c in sizing.checks:
             scale, unit = CHECK_UNITS.get(c.unit, (1.0, c.unit))
             lines.append(f"  {c.name}: {c.value * scale:.6g} {c.sense} {c.limit * scale:.6g} "
-                         f"{unit}, margin {100 * c.margin:+.2f} % {_verdict(c, sizing)} - "
-                         f"{c.source}")
+                         f"{unit}, margin {100 * c.margin:+.2f} % "
+                         f"{_verdict(c, sizing, life)} - {c.source}")
         lines.extend(f"  note: {note}" for note in sizing.notes)
     return "\n".join(lines)
 
