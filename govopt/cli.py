@@ -201,14 +201,16 @@ def _q(text: str | None, dimension: str, option: str, positive: bool = True):
 
 
 @_guarded
-def spring(*, spec, json_out, **options) -> None:
+def spring(*, spec, json_out, xlsx, plots, replace, **options) -> None:
     """Least-mass helical spring for a force and stiffness (an exact GP, certified global),
     from the options, a spring spec file or both (the options override the file); with
     --material the wire grade's allowables per diameter and the spring maker's checks."""
     from .optimize.spring_cli import run
 
-    out = run(spec, json_out=json_out, **options)
+    out = run(spec, json_out=json_out, xlsx=xlsx, plots=plots, replace=replace, **options)
     _echo(out.text)
+    for path in out.written:
+        _echo(f"wrote {Path(path).absolute()}", err=json_out)
     if out.failed:  # as evaluate: the spring is reported, and exit code 1 says a check failed
         _echo(f"{len(out.failed)} of {out.total} checks failed: {'; '.join(out.failed)}",
               err=True)
@@ -599,6 +601,12 @@ def _spring_parser(group) -> None:
                  "coils) D d^2, as the optimisation literature), 'solid length', 'outer "
                  "diameter', or 'energy per mass' (the most stored energy per mass).")
     _flag(p, "--json", dest="json_out", help=_JSON_HELP)
+    _option(p, "--xlsx", type=_typed, help="Write a workbook: the spring maker's sheet, the "
+                                           "checks, the force-length table.")
+    _option(p, "--plots", type=Path, help="Write the plots (force-length; the fatigue diagram "
+                                          "with a load cycle), PNG and SVG, into this folder.")
+    _flag(p, "--replace", help="Replace output files that exist (--force is the spring's "
+                               "force here).")
 
 
 @functools.cache

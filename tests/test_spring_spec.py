@@ -190,3 +190,36 @@ def test_fatigue_below_the_endurance_gives_a_finite_life():
     assert out["fatigue_life_cycles"] == pytest.approx(life, rel=1e-9) and 1e3 < life < 1e7
     text = invoke(["spring", *args]).output
     assert f"estimated finite life {life:.3g} cycles, enough for the required 1e+05" in text
+
+
+def test_workbook_and_plots(tmp_path):
+    """--xlsx: the answer and the spring maker's sheet in engineering units, every check, the
+    force-length table; --plots: force-length and the fatigue diagram; an existing file is
+    refused before the run without --replace, and a failed run writes nothing."""
+    import openpyxl
+
+    args = ["--force", "500 N", "--stiffness", "20 N/mm", "--material", "EN10270-1 SH",
+            "--fatigue-min-force", "100 N", "--fatigue-max-force", "500 N"]
+    book, folder = tmp_path / "s.xlsx", tmp_path / "plots"
+    run = invoke(["spring", *args, "--xlsx", str(book), "--plots", str(folder)])
+    assert run.exit_code == 0, run.output
+    out = _json(*args)
+    wb = openpyxl.load_workbook(book)
+    assert wb.sheetnames == ["Spring", "Checks", "Force-length"]
+    rows = {r[0]: r[1:3] for r in wb["Spring"].iter_rows(values_only=True) if r[0]}
+    assert rows["wire diameter d"] == (pytest.approx(out["wire_diameter_m"] * 1e3), "mm")
+    assert rows["free length"] == (pytest.approx(out["free_length_m"] * 1e3), "mm")
+    checks = [r for r in wb["Checks"].iter_rows(min_row=2, values_only=True) if r[0]]
+    assert [r[0] for r in checks] == [c["name"] for c in out["checks"]]
+    table = [r for r in wb["Force-length"].iter_rows(min_row=2, values_only=True)]
+    R = out["stiffness_N_per_m"]
+    assert all(f == pytest.approx(R * (out["free_length_m"] - L / 1e3), abs=1e-6)
+               for L, f in table)
+    assert sorted(p.name for p in folder.iterdir()) == [
+        f"spring-{k}.{x}" for k in ("fatigue", "force-length") for x in ("png", "svg")]
+    again = invoke(["spring", *args, "--xlsx", str(book)])
+    assert again.exit_code == 2 and "already exists; use --replace" in again.output
+    assert invoke(["spring", *args, "--xlsx", str(book), "--replace"]).exit_code == 0
+    none = tmp_path / "none.xlsx"
+    bad = invoke(["spring", *args, "--max-outer-diameter", "1 mm", "--xlsx", str(none)])
+    assert bad.exit_code == 2 and not none.exists()

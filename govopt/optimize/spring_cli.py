@@ -88,6 +88,12 @@ class Outcome:
     failed: list[str] = field(default_factory=list)
     total: int = 0
     sizing: Any = None
+    #: the problem's values (SI, defaults applied), its name and the optimality claim
+    values: dict = field(default_factory=dict)
+    name: str = "spring"
+    claim: str = ""
+    #: the files written (--xlsx, --plots)
+    written: list = field(default_factory=list)
 
 
 class _Where:
@@ -233,16 +239,38 @@ def merged(spec: str | Path | None, options: dict) -> tuple[dict, _Where, str | 
     return _values({**table, **given}, where), where, None, name
 
 
-def run(spec: str | Path | None = None, *, json_out: bool = False, **options) -> Outcome:
+def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
+        replace: bool = False, **options) -> Outcome:
     """`govopt spring [SPEC] [options]` (module docstring): the sized spring's report (text or
-    JSON) and its failed checks. Raises :class:`GovoptError` (exit code 2) on bad input or
-    when no spring meets the requirements."""
+    JSON) and its failed checks; with ``xlsx`` a workbook (the spring maker's sheet, the
+    checks, the force-length table) and with ``plots`` a folder of plots
+    (:mod:`govopt.springs.outputs`), checked before the run and written after it (existing
+    files only with ``replace``). Raises :class:`GovoptError` (exit code 2) on bad input or
+    when no spring meets the requirements: nothing is written then."""
     values, where, problem, name = merged(spec, options)
+    stem = Path(spec).stem if spec is not None else "spring"
+    if (xlsx is not None or plots is not None) and problem:
+        raise GovoptError(f"--xlsx, --plots: not for the literature problem {problem!r} "
+                          "(its answer is the printed one)")
+    if xlsx is not None or plots is not None:
+        from ..springs.outputs import check_outputs
+
+        check_outputs(xlsx, plots, stem, replace=replace,
+                      inputs=[] if spec is None else [spec])
     if problem == "sandgren-1990":
         return _sandgren(values, where, json_out)
     for key, value in DEFAULTS.items():
         values.setdefault(key, value)
-    return _size(values, where, name, json_out)
+    out = _size(values, where, name, json_out)
+    if xlsx is not None:
+        from ..springs.outputs import write_workbook
+
+        out.written.append(write_workbook(out, xlsx))
+    if plots is not None:
+        from ..springs.outputs import write_plots
+
+        out.written += write_plots(out, plots, stem)
+    return out
 
 
 def _require(v: dict, where: _Where, *keys) -> None:
@@ -317,7 +345,8 @@ def _size(v: dict, where: _Where, name: str, json_out: bool) -> Outcome:
 
         text = json.dumps(jsonable(data), indent=2)
     failed = [c.name for c in sizing.checks if not c.passed] if material is not None else []
-    return Outcome(text, data, failed, len(sizing.checks), sizing)
+    return Outcome(text, data, failed, len(sizing.checks), sizing, v, name,
+                   claim(sizing, bound_text(sizing, v)))
 
 
 def _data(sizing, v: dict, name: str) -> dict:
@@ -399,6 +428,24 @@ def _verdict(check, sizing, life=None) -> str:
     return verdict
 
 
+def bound_text(sizing, v: dict) -> str:
+    """The certified bound in the objective's unit (the energy per mass: an upper bound)."""
+    if v["objective"] == "energy per mass":
+        return f"{1.0 / sizing.lower_bound:.5g} J/kg"
+    scale, unit = OBJECTIVE_UNITS[OBJECTIVES[v["objective"]]]
+    return f"{sizing.lower_bound * scale:.5g} {unit}"
+
+
+def claim(sizing, bound: str) -> str:
+    """What the optimiser can say of its design: a certified global optimum, or optimal within
+    X % of a certified lower bound (``bound``: that bound as text), or no bound."""
+    if sizing.certified:
+        return "global optimum certified"
+    if math.isfinite(sizing.gap):
+        return f"optimal within {100 * sizing.gap:.3g} % of a certified bound ({bound})"
+    return "no certified bound (the relaxation was not solved to optimality)"
+
+
 def _text(sizing, data: dict, v: dict) -> str:
     """The text report: the spring first, then the certificate, sensitivities, checks."""
     from ..springs.helical import correction_factor
@@ -416,24 +463,17 @@ def _text(sizing, data: dict, v: dict) -> str:
                      f"{v.get('min_force') or 0.0:.4g} N, L2 = {v['length_2'] * 1e3:.2f} mm at "
                      f"{v['force']:.4g} N (stroke {v['stroke'] * 1e3:.2f} mm), stiffness "
                      f"{sol.stiffness * 1e-3:.4f} N/mm")
-    objective = v["objective"]
+    objective, bound = v["objective"], bound_text(sizing, v)
     if objective == "energy per mass":
-        bound = f"{1.0 / sizing.lower_bound:.5g} J/kg"
         lines.append(f"most stored energy per mass: {data['objective_value']:.6g} J/kg "
                      f"({data['stored_energy_J']:.4g} J at {v['force']:.4g} N)")
     else:
         scale, unit = OBJECTIVE_UNITS[OBJECTIVES[objective]]
-        bound = f"{sizing.lower_bound * scale:.5g} {unit}"
         if objective != "mass":
             lines.append(f"least {objective}: {sol.objective * scale:.6g} {unit}")
-    if sizing.certified:
-        claim = "global optimum certified"
-    elif math.isfinite(sizing.gap):
-        claim = f"optimal within {100 * sizing.gap:.3g} % of a certified bound ({bound})"
-    else:
-        claim = "no certified bound (the relaxation was not solved to optimality)"
-    lines.append(f"{claim} (duality gap in log space {data['duality_gap_log']:.2g}); active in "
-                 f"the last GP: {', '.join(sol.active)}")
+    lines.append(f"{claim(sizing, bound)} (duality gap in log space "
+                 f"{data['duality_gap_log']:.2g}); active in the last GP: "
+                 f"{', '.join(sol.active)}")
     for name, value in sol.sensitivities.items():
         if abs(value) > 1e-6:
             lines.append(f"  +1 % on {name} -> {value:+.3f} % {sol.objective_name}")
