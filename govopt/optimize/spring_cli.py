@@ -113,8 +113,8 @@ class _Where:
     def missing(self, key: str, also: str = "") -> None:
         """A required value given nowhere: named in the spec when there is one."""
         option = "--" + key.replace("_", "-")
-        if self.file is None:
-            raise GovoptError(f"{option}: required{also}")
+        if self.file is None:  # as the parser's own errors: where to look
+            raise GovoptError(f"{option}: required{also} (see 'govopt spring --help')")
         raise GovoptError(f"{self.file}: spring.{key}: required (or {option}){also}")
 
 
