@@ -95,6 +95,12 @@ def test_sandgren_spec_is_the_exact_mixed_discrete_optimum(tmp_path):
     want = sl.solve_sandgren({**sl.SANDGREN, "S": 150e3})
     assert moved["objective_value_in3"] == pytest.approx(want.objective, rel=1e-12)
     assert moved["objective_value_in3"] > out["objective_value_in3"]
+    # an option of its own data overrides the file's; another is an error naming it
+    more = _json(example("sandgren-1990"), "--force", "2000 lbf")
+    assert more["objective_value_in3"] == pytest.approx(
+        sl.solve_sandgren({**sl.SANDGREN, "F_max": 2000.0}).objective, rel=1e-12)
+    wrong = invoke(["spring", str(example("sandgren-1990")), "--stiffness", "1 N/mm"])
+    assert wrong.exit_code == 2 and wrong.output.startswith("error: --stiffness: not a value")
     # data no wire meets: a diagnosis, exit code 2 (the enumeration ends)
     tight.write_text(example("sandgren-1990").read_text().replace('"14 in"', '"1 in"'))
     none = invoke(["spring", str(tight)])

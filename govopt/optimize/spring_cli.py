@@ -235,6 +235,10 @@ def merged(spec: str | Path | None, options: dict) -> tuple[dict, _Where, str | 
     given = {k: v for k, v in options.items() if v is not None}
     where = _Where(None if spec is None else str(spec), set(table) - set(given))
     if problem:
+        for key in given:
+            if key not in SANDGREN_KEYS:
+                where.fail(key, f"not a value of the problem {problem!r} of {spec} (its "
+                                f"values: {', '.join(sorted(SANDGREN_KEYS))})")
         return {**table, **given}, where, problem, name
     return _values({**table, **given}, where), where, None, name
 
