@@ -229,3 +229,24 @@ def test_workbook_and_plots(tmp_path):
     none = tmp_path / "none.xlsx"
     bad = invoke(["spring", *args, "--max-outer-diameter", "1 mm", "--xlsx", str(none)])
     assert bad.exit_code == 2 and not none.exists()
+
+
+def test_long_installed_lengths_pass_their_solid_stress_and_pitch():
+    """L2 120 mm, L1 150 mm: the force at solid length F + R (L2 - L_c) and the free pitch are
+    not posynomials; the GP restricts them (F + R (L2 - lam), lam <= L_c; m <= L0/n) so the
+    design passes every check (they failed when the GP took the least free length's F_c), and
+    the bound is the relaxation's: "optimal within X %", not a global optimum."""
+    args = ["--force", "500 N", "--min-force", "200 N", "--length-1", "150 mm", "--length-2",
+            "120 mm", "--material", "EN10270-1 SH"]
+    out = _json(*args)
+    rows = {c["name"]: c for c in out["checks"]}
+    assert all(c["passed"] for c in out["checks"]), [n for n, c in rows.items() if not c["passed"]]
+    d, D, n = out["wire_diameter_m"], 2 * out["coil_radius_m"], out["active_turns"]
+    L_c = float(hx.solid_length(d, n + 2, "closed_ground"))
+    F_c = 500.0 + out["stiffness_N_per_m"] * (0.120 - L_c)  # the force at solid length
+    tau_c = float(hx.shear_stress(F_c, d, D))  # EN 13906-1 static: uncorrected
+    assert rows["shear stress at solid length"]["value"] == pytest.approx(tau_c, rel=1e-6)
+    assert out["global_optimum"] is False
+    assert out["lower_bound"] < out["mass_kg"] and math.isfinite(out["gap_to_bound"])
+    text = invoke(["spring", *args]).output
+    assert f"optimal within {100 * out['gap_to_bound']:.3g} % of a certified bound" in text

@@ -98,10 +98,12 @@ CORRECTIONS = spring.STRESS_CORRECTIONS
 STIFFNESS_MODES = ("equality", "band")
 #: :meth:`SpringGP.solve` keywords of the free-length limit (``free_length=True``)
 FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "Di_min",
-                    "L0_max", "Lc_max", "L2", "clear", "Ln_max")
+                    "L0_max", "Lc_max", "L2", "clear", "Ln_max", "L2_solid", "clear_solid",
+                    "pitch_on")
 #: their values when not given: far outside any spring (the constraint never binds); ``L2``
 #: (an installed length at ``F_max``) tiny and ``clear`` 1 (the least free length)
-_FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12, "L2": 1e-12, "clear": 1.0}
+_FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12, "L2": 1e-12, "clear": 1.0, "L2_solid": 1e-12,
+                         "clear_solid": 1.0, "pitch_on": 1e-12}
 
 
 #: Clarabel tolerances tighter than its 1e-8 defaults: same solve time here (a few more
@@ -495,13 +497,19 @@ class SpringGP:
         length of :meth:`_least_free_length` ``<= L0_max``, the solid length ``(n +
         solid_coils) d <= Lc_max`` (EN 13906-1:2013, ``L_c = (n_t + extra) d``) and the least
         working length ``L_c + S_a <= Ln_max``, the installed length at ``F_max`` (coils clear,
-        EN 13906-1: ``L_n`` is the shortest working length allowed)."""
+        EN 13906-1: ``L_n`` is the shortest working length allowed). With ``pitch_on`` 1 (tiny:
+        off) the free pitch ``m = (L0 - L_c)/n + d <= 0.7 (D - d)`` (Gutekunst, as
+        :func:`govopt.springs.helical.max_pitch`) as the posynomial ``L0/n + 0.7 d <= 1.4 r``,
+        a restriction (``m <= L0/n``: the ``solid_coils d / n`` it drops is small)."""
         d, r, n, Q = self.d, self.r, self.n, self.free_length_params
         out = {"inside diameter": (Q["Di_min"] + d) / (2.0 * r) <= 1.0}
         if kind == "compression":
             out["free length"] = self._least_free_length() <= Q["L0_max"]
             out["solid length"] = (n + Q["solid_coils"]) * d <= Q["Lc_max"]
             out["working length"] = self._working_length() <= Q["Ln_max"]
+            # m = (L0 - L_c)/n + d = L0/n - solid_coils d/n <= L0/n: a restriction
+            out["free pitch"] = (Q["pitch_on"] * (self._least_free_length() / n + 0.7 * d)
+                                 <= 1.4 * r)
         return out
 
     def _deflection_bound(self):
@@ -523,9 +531,15 @@ class SpringGP:
         solid length is ``F_c = F_max + R S_a = F_max + 1.5 G (0.006 d^3/(64 r) + 0.1 d^5 /
         (64 r^3))`` (N), a posynomial; the stress correction is the GP's (as
         :func:`govopt.model.spring.shear_stress`: none, Wahl ``1 + 0.75 t + 0.615/C`` or
-        Bergstraesser ``1 + 1.25 t``)."""
+        Bergstraesser ``1 + 1.25 t``). With an installed length ``L2`` at ``F_max``
+        (``clear_solid`` tiny, ``L2_solid = L2``) the force at solid length ``F_max + R (L2 -
+        L_c)`` is bounded by ``F_max + R L2`` (``R L2 = G d^4 L2 / (64 r^3 n)``, a monomial): a
+        restriction, as ``- R L_c`` is not a posynomial."""
         d, r, t, P = self.d, self.r, self.t, self.params
-        F = P["F_max"] + 1.5 * P["G"] * (0.006 * d**3 / (64.0 * r) + 0.1 * d**5 / (64.0 * r**3))
+        Q = self.free_length_params
+        F = (P["F_max"] + Q["clear_solid"] * 1.5 * P["G"]
+             * (0.006 * d**3 / (64.0 * r) + 0.1 * d**5 / (64.0 * r**3))
+             + P["G"] * d**4 * Q["L2_solid"] / (64.0 * r**3 * self.n))
         base = r * d**-3
         if self.correction == "wahl":
             g = base + 0.75 * t * base + 0.3075 * d**-2

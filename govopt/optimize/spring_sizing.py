@@ -145,6 +145,9 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     envelope = kind if space else None
     if kind == "compression":
         space["solid_coils"] = end_coils(kind) + hx.END_FORMS[ends][0]
+    relaxed = dict(space)  # the relaxation gives the bound; with L2 the design's GP restricts
+    if L2 is not None:
+        space.update(L2_solid=L2, clear_solid=1e-12, pitch_on=1.0)
     mode, rate = "equality", {"kappa": stiffness}
     if stiffness_max is not None:
         if not stiffness <= stiffness_max:
@@ -176,13 +179,14 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         stable = float(hx.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
                                                hx.SEATING[seating]))
 
-    def attempt(factor, slender=None, refit=True):
+    def attempt(factor, slender=None, refit=True, relax=False):
         """The GP at ``factor`` times the rule, re-fitted until the wire settles (with
         ``slender``: free length <= ``slender`` times the longest that cannot buckle; without
         ``refit`` one solve with the current fit, the same compiled GP); the checks and the
         worst ratio of a stress or fatigue row (< 1: it fails)."""
-        extra = dict(space) if slender is None else {**space,
-                                                     "L0_over_D_max": slender * stable}
+        base = relaxed if relax else {**space, **state.get("installed", {})}
+        extra = dict(base) if slender is None else {**base,
+                                                    "L0_over_D_max": slender * stable}
         for _ in range(60):
             k, m = _monomial(mat, place, rules, k_s, *state["window"])
             m_c = None
@@ -215,9 +219,13 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
 
     sizing, worst = attempt(1.0)
     bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
+    if L2 is not None:  # there the design's GP restricts; its relaxation bounds
+        bound = _bound(attempt(1.0, relax=True)[0].solution)
     sizing = _stress_search(attempt, sizing, worst)
     if sizing.solution.ok and kind == "compression":
         sizing = _buckling_search(attempt, sizing, stable)
+    if sizing.solution.ok and L2 is not None:
+        sizing = _installed_search(attempt, sizing, state, L2, ends)
     sizing.lower_bound, sizing.cycles = bound, cycles
     return sizing
 
@@ -278,6 +286,37 @@ def _buckling_search(attempt, sizing, stable):
         f"buckling binds: the free length is held to {good:.4g} times the slenderness that "
         "cannot buckle (EN 13906-1, 9.14), found by bisection to 0.1 %"]
     return safe
+
+
+def _installed_search(attempt, sizing, state, L2, ends):
+    """The installed length's stress at solid length, tightened. The GP bounds the force at
+    solid length ``F_max + R (L2 - L_c)`` by ``F_max + R (L2 - lam)`` (``L2_solid = L2 - lam``,
+    a monomial), which is safe for every spring with ``L_c >= lam``; ``lam = 0`` (the first
+    design) always is. Bisection on ``lam = theta L_c`` of the design found keeps the lightest
+    design whose solid length is at least its ``lam`` and that passes every check, to 0.1 %;
+    the bound stays the relaxation's (:func:`size_spring`)."""
+    def solid(s):
+        sol = s.solution
+        return float(hx.solid_length(sol.d, sol.n + sol.end_coils, ends))
+
+    factor, best, notes = sizing.allowable_factor, sizing, list(sizing.notes)
+    lo, hi = 0.0, 1.0
+    while hi - lo > 1e-3:  # one compiled GP: the allowable's fit is frozen meanwhile
+        mid = 0.5 * (lo + hi)
+        lam = mid * solid(best)
+        state["installed"] = {"L2_solid": L2 - lam}
+        trial, _ = attempt(factor, refit=False)
+        if trial.solution.ok and solid(trial) >= lam and trial.passed and \
+                trial.solution.objective <= best.solution.objective:
+            lo, best = mid, trial
+        else:
+            hi = mid
+    if best is not sizing:
+        best.allowable_factor = factor
+        best.notes = notes + [
+            f"the force at solid length is bounded by F + R (L2 - {lo:.3g} L_c) (a posynomial "
+            "restriction of F + R (L2 - L_c)), found by bisection to 0.1 %"]
+    return best
 
 
 def _stress_search(attempt, sizing, worst):
