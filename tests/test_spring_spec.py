@@ -121,6 +121,7 @@ def test_installed_lengths_and_stroke():
     assert L_n <= 0.050 * (1 + 1e-6)
     assert "working length" in out["active"]
     assert all(c["passed"] for c in out["checks"]), [c["name"] for c in out["checks"]]
+    assert out["global_optimum"] is True  # the relaxation's design passes: it is the optimum
     free = _json("--force", "500 N", "--stiffness", "10 N/mm", "--material", "EN10270-1 SH")
     assert out["mass_kg"] > free["mass_kg"]  # the short installed length costs mass
     same = _json("--force", "500 N", "--min-force", "200 N", "--stroke", "30 mm",

@@ -220,7 +220,11 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     sizing, worst = attempt(1.0)
     bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
     if L2 is not None:  # there the design's GP restricts; its relaxation bounds
-        bound = _bound(attempt(1.0, relax=True)[0].solution)
+        loose, _ = attempt(1.0, relax=True)
+        bound = _bound(loose.solution)
+        if loose.solution.ok and loose.passed:  # the relaxation's design passes: optimal
+            loose.lower_bound, loose.cycles = bound, cycles
+            return loose
     sizing = _stress_search(attempt, sizing, worst)
     if sizing.solution.ok and kind == "compression":
         sizing = _buckling_search(attempt, sizing, stable)
