@@ -10,7 +10,6 @@ from __future__ import annotations
 import argparse
 import functools
 import json
-import math
 import os
 import re
 import signal
@@ -202,177 +201,20 @@ def _q(text: str | None, dimension: str, option: str, positive: bool = True):
 
 
 @_guarded
-def spring(*, force, stiffness, allowable_stress, shear_modulus, density, correction, material,
-           tensile_strength, kind, rules, index_min, index_max, turns_min, turns_max,
-           min_force, fatigue_min_force, fatigue_max_force, min_fatigue_safety, life, peened,
-           ends, seating, max_outer_diameter, max_body_length, min_surge_frequency,
-           min_wire_diameter, max_wire_diameter, objective, min_inside_diameter,
-           max_free_length, max_solid_length, max_stiffness, json_out) -> None:
-    """Least-mass helical spring for a force and stiffness (an exact GP, certified global);
-    with --material the wire grade's allowables per diameter and the spring maker's checks
-    (spring type, index and turn limits, fatigue load cycle)."""
-    from .optimize.spring_sizing import size_spring
-    from .springs import helical, materials
+def spring(*, spec, json_out, xlsx, plots, replace, **options) -> None:
+    """Least-mass helical spring for a force and stiffness (an exact GP, certified global),
+    from the options, a spring spec file or both (the options override the file); with
+    --material the wire grade's allowables per diameter and the spring maker's checks."""
+    from .optimize.spring_cli import run
 
-    for option, value, allowed in (
-            ("--correction", correction, (None, "wahl", "bergstrasser", "none")),
-            ("--material", material, materials.GRADES),
-            ("--kind", kind, ("compression", "extension")),
-            ("--rules", rules, materials.METHODS), ("--ends", ends, tuple(helical.END_FORMS)),
-            ("--seating", seating, tuple(helical.SEATING)),
-            ("--objective", objective, SPRING_OBJECTIVES)):
-        if value is not None and value not in allowed:
-            _fail(f"{option}: expected one of {', '.join(map(repr, allowed))}, got {value!r}")
-    for option, value, what in (("--life", life, "a positive number of cycles"),
-                                ("--min-fatigue-safety", min_fatigue_safety,
-                                 "a positive safety factor"),
-                                ("--index-min", index_min, "a positive spring index"),
-                                ("--index-max", index_max, "a positive spring index"),
-                                ("--turns-min", turns_min, "a positive number of turns"),
-                                ("--turns-max", turns_max, "a positive number of turns")):
-        if value is not None and not (math.isfinite(value) and value > 0.0):
-            _fail(f"{option}: expected {what}, got {value!r}")
-    if material is not None and shear_modulus is None and not isinstance(
-            materials.material(material, tensile_strength=1.0).G, float):
-        _fail(f"--shear-modulus: required with --material {material!r}, whose shear modulus "
-              "varies with the wire diameter")
-    if material is None:
-        for option, value in (("--allowable-stress", allowable_stress),
-                              ("--shear-modulus", shear_modulus)):
-            if value is None:
-                _fail(f"{option}: required without --material")
-    values = dict(
-        k_s=_q(allowable_stress, "stress", "--allowable-stress"),
-        G=_q(shear_modulus, "stress", "--shear-modulus"),
-        density=_q(density, "density", "--density") or (None if material else 7850.0),
-        D_out_max=_q(max_outer_diameter, "length", "--max-outer-diameter"),
-        L_body_max=_q(max_body_length, "length", "--max-body-length"),
-        f_surge_min=_q(min_surge_frequency, "frequency", "--min-surge-frequency"),
-        d_min=_q(min_wire_diameter, "length", "--min-wire-diameter"),
-        d_max=_q(max_wire_diameter, "length", "--max-wire-diameter"),
-        Di_min=_q(min_inside_diameter, "length", "--min-inside-diameter"),
-        L0_max=_q(max_free_length, "length", "--max-free-length"),
-        Lc_max=_q(max_solid_length, "length", "--max-solid-length"),
-        **{k: v for k, v in (("n_min", turns_min), ("n_max", turns_max),
-                             ("C_min", index_min), ("C_max", index_max)) if v is not None})
-    F, k = _q(force, "force", "--force"), _q(stiffness, "stiffness", "--stiffness")
-    cycle = None
-    if (fatigue_min_force is None) != (fatigue_max_force is None):
-        _fail("--fatigue-min-force and --fatigue-max-force: give both (the load cycle)")
-    if fatigue_min_force is not None:
-        cycle = (_q(fatigue_min_force, "force", "--fatigue-min-force", positive=False),
-                 _q(fatigue_max_force, "force", "--fatigue-max-force"))
-        if cycle[0] > cycle[1]:
-            _fail(f"--fatigue-min-force: expected at most --fatigue-max-force "
-                  f"({fatigue_max_force}), got {fatigue_min_force!r}")
-    k_max = _q(max_stiffness, "stiffness", "--max-stiffness")
-    if k_max is not None and k_max < k:
-        _fail(f"--max-stiffness: expected at least --stiffness ({stiffness}), "
-              f"got {max_stiffness!r}")
-    F_min = _q(min_force, "force", "--min-force", positive=False) or 0.0
-    if F_min > F:
-        _fail(f"--min-force: expected at most --force ({force}), got {min_force!r}")
-    try:
-        sizing = size_spring(
-            F, k, grade=material, kind=kind, rules=rules, correction=correction,
-            tensile_strength=_q(tensile_strength, "stress", "--tensile-strength"),
-            F_min=F_min, fatigue=cycle,
-            min_fatigue_safety=min_fatigue_safety, peened=peened, cycles=life, ends=ends,
-            seating=seating, objective=objective,
-            stiffness_max=k_max, **values)
-    except ValueError as exc:
-        _fail(str(exc))
-    sol = sizing.solution
-    if not sol.ok:
-        why = sizing.diagnosis
-        _fail("no spring meets these requirements" + (f": {why}" if why else ""))
-    out = {"wire_diameter_m": sol.d, "coil_radius_m": sol.r, "active_turns": sol.n,
-           "mass_kg": sol.mass, "end_coils": sol.end_coils,
-           "active_mass_kg": sol.mass * sol.n / (sol.n + sol.end_coils),
-           "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
-           "wahl_factor": sol.wahl_factor, "spring_index": sol.index,
-           "surge_frequency_Hz": sol.surge_frequency, "sensitivities": sol.sensitivities,
-           "objective": sol.objective_name, "objective_value": sol.objective,
-           "active": sol.active, "global_optimum": sizing.certified,
-           "lower_bound": sizing.lower_bound, "gap_to_bound": sizing.gap,
-           "stress_correction": sol.correction,
-           "duality_gap_log": sol.certificate.get("duality_gap_log")}
-    if material is not None:
-        out.update({"material": material, "kind": kind,
-                    "free_length_m": sizing.free_length,
-                    "initial_tension_N": sizing.initial_tension,
-                    "checks": [c.to_dict() for c in sizing.checks], "notes": sizing.notes})
-    if json_out:
-        from .jsonable import jsonable
-
-        _echo(json.dumps(jsonable(out), indent=2))
-    else:
-        _print_spring(sol, out, sizing, material, kind)
-    failed = [c.name for c in sizing.checks if not c.passed] if material is not None else []
-    if failed:  # as evaluate: the spring is reported, and exit code 1 says a check failed
-        _echo(f"{len(failed)} of {len(sizing.checks)} checks failed: {'; '.join(failed)}",
+    out = run(spec, json_out=json_out, xlsx=xlsx, plots=plots, replace=replace, **options)
+    _echo(out.text)
+    for path in out.written:
+        _echo(f"wrote {Path(path).absolute()}", err=json_out)
+    if out.failed:  # as evaluate: the spring is reported, and exit code 1 says a check failed
+        _echo(f"{len(out.failed)} of {out.total} checks failed: {'; '.join(out.failed)}",
               err=True)
-        raise SystemExit(1)
-
-
-#: ``govopt spring --objective`` choices (:data:`govopt.optimize.spring_gp.OBJECTIVES`)
-SPRING_OBJECTIVES = ("mass", "volume", "solid length", "outer diameter")
-
-#: how each objective is printed (scale from SI, unit)
-_OBJECTIVE_UNITS = {"mass": (1e3, "g"), "volume": (1e6, "cm^3"), "solid length": (1e3, "mm"),
-                    "outer diameter": (1e3, "mm")}
-
-#: SI units of the spring checks and the units they are printed in (scale, unit)
-_CHECK_UNITS = {"Pa": (1e-6, "MPa"), "m": (1e3, "mm"), "N/m": (1e-3, "N/mm"), "N": (1.0, "N")}
-
-
-def _verdict(check, sizing) -> str:
-    """PASS or FAIL; a fatigue row past its data's life says so (strength held constant)."""
-    from .springs.checks import DATA_CYCLES
-
-    verdict = "PASS" if check.passed else "FAIL"
-    if "fatigue" in check.name and sizing.cycles > DATA_CYCLES:
-        verdict += (f" (life {sizing.cycles:.3g} cycles is beyond the data's {DATA_CYCLES:.0e}:"
-                    " extrapolated)")
-    return verdict
-
-
-def _print_spring(sol, out, sizing, material, kind) -> None:
-    """The text report of `govopt spring`."""
-    from .springs.helical import correction_factor
-
-    k_b = float(correction_factor(sol.index, "bergstrasser"))
-    factor = {"none": "uncorrected stress", "wahl": f"Wahl K {sol.wahl_factor:.4f}",
-              "bergstrasser": f"Bergstraesser k {k_b:.4f}"}[sol.correction]
-    _echo(f"d = {sol.d * 1e3:.4f} mm, D = {2e3 * sol.r:.4f} mm, n = {sol.n:.4f} active "
-          f"+ {sol.end_coils:.3g} end coils, mass = {sol.mass * 1e3:.5g} g, stress = "
-          f"{sol.stress / 1e6:.2f} MPa (index {sol.index:.2f}, {factor})")
-    scale, unit = _OBJECTIVE_UNITS[sol.objective_name]
-    if sol.objective_name != "mass":
-        _echo(f"least {sol.objective_name}: {sol.objective * scale:.6g} {unit}")
-    if sizing.certified:
-        claim = "global optimum certified"
-    elif math.isfinite(sizing.gap):
-        claim = (f"optimal within {100 * sizing.gap:.3g} % of a certified bound "
-                 f"({sizing.lower_bound * scale:.5g} {unit})")
-    else:
-        claim = "no certified bound (the relaxation was not solved to optimality)"
-    _echo(f"{claim} (duality gap in log space {out['duality_gap_log']:.2g}); active in the "
-          f"last GP: {', '.join(sol.active)}")
-    for name, value in sol.sensitivities.items():
-        if abs(value) > 1e-6:
-            _echo(f"  +1 % on {name} -> {value:+.3f} % {sol.objective_name}")
-    if material is not None:
-        extra = (f"free length {sizing.free_length * 1e3:.2f} mm (coils clear at the force)"
-                 if kind == "compression" else
-                 f"initial tension {sizing.initial_tension:.4g} N")
-        _echo(f"{kind} spring of {material}: {extra}; checks (value, limit, margin, source):")
-        for c in sizing.checks:
-            scale, unit = _CHECK_UNITS.get(c.unit, (1.0, c.unit))
-            _echo(f"  {c.name}: {c.value * scale:.6g} {c.sense} {c.limit * scale:.6g} {unit}, "
-                  f"margin {100 * c.margin:+.2f} % {_verdict(c, sizing)} - {c.source}")
-        for note in sizing.notes:
-            _echo(f"  note: {note}")
+        raise _ChecksFailed
 
 
 @_guarded
@@ -541,7 +383,8 @@ def init_command(*, name, output, force) -> None:
     data = source.read_bytes()
     atomic_write(target, lambda tmp: tmp.write_bytes(data), overwrite=force, what="spec")
     table = tomllib.loads(data.decode("utf-8"))
-    command = "study" if "study" in table else "evaluate" if "design" in table else "design"
+    command = ("study" if "study" in table else "spring" if "spring" in table and
+               "governor" not in table else "evaluate" if "design" in table else "design")
     _echo(f"wrote {target.absolute()} (the bundled {source.stem}); edit it, then: "
           f"govopt {command} {target}")
 
@@ -698,8 +541,12 @@ def _study_parser(group) -> None:
 def _spring_parser(group) -> None:
     p = _command(group, "spring", spring, "Least-mass helical spring for a force and stiffness "
                                           "(an exact GP, certified global).")
-    _option(p, "--force", required=True, help="Largest working force, e.g. '606 kgf'.")
-    _option(p, "--stiffness", required=True, help="Stiffness, e.g. '59.7 kgf/cm'.")
+    p.add_argument("spec", nargs="?", type=Path, metavar="spec",
+                   help="Spring spec file (TOML with units, a [spring] table of these "
+                        "options); the options override it.")
+    _option(p, "--force", help="Largest working force, e.g. '606 kgf' (required, here or in "
+                               "the spec).")
+    _option(p, "--stiffness", help="Stiffness, e.g. '59.7 kgf/cm' (or from the stroke).")
     _option(p, "--allowable-stress", help="Allowable shear stress k_s (required without "
                                           "--material; overrides its rule).")
     _option(p, "--shear-modulus", help="Shear modulus G (required without --material).")
@@ -710,31 +557,35 @@ def _spring_parser(group) -> None:
                                   "(govopt/data/spring_materials.toml): allowables per wire "
                                   "diameter and the spring maker's checks.")
     _option(p, "--tensile-strength", help="R_m of --material custom.")
-    _option(p, "--kind", default="compression",
-            help="Spring type: 'compression' or 'extension'.")
-    _option(p, "--rules", default="EN13906", help="Allowables and fatigue: 'EN13906' or "
-                                                  "'Shigley'.")
-    _option(p, "--index-min", type=float, default=4.0,
-            help="Least spring index D/d (EN 13906-1 scope and Shigley's preferred range: 4).")
-    _option(p, "--index-max", type=float, default=12.0,
-            help="Largest spring index D/d (Shigley's preferred range: 12; EN 13906-1 allows "
-                 "20).")
-    _option(p, "--turns-min", type=float, default=3.0,
-            help="Least active turns (3: fewer coil poorly and load unevenly).")
+    _option(p, "--kind", help="Spring type: 'compression' (default) or 'extension'.")
+    _option(p, "--rules", help="Allowables and fatigue: 'EN13906' (default) or 'Shigley'.")
+    _option(p, "--index-min", type=float,
+            help="Least spring index D/d (default 4: EN 13906-1 scope and Shigley's preferred "
+                 "range).")
+    _option(p, "--index-max", type=float,
+            help="Largest spring index D/d (default 12: Shigley's preferred range; EN 13906-1 "
+                 "allows 20).")
+    _option(p, "--turns-min", type=float,
+            help="Least active turns (default 3: fewer coil poorly and load unevenly).")
     _option(p, "--turns-max", type=float, help="Most active turns.")
-    _option(p, "--min-force", help="Least working force (extension: the initial tension stays "
-                                   "below it).")
+    _option(p, "--min-force", help="Least working force F1 (extension: the initial tension "
+                                   "stays below it).")
+    _option(p, "--length-1", help="Installed length L1 at --min-force (compression).")
+    _option(p, "--length-2", help="Installed length L2 at --force: the coils stay clear there; "
+                                  "free length L2 + F/R (compression).")
+    _option(p, "--stroke", help="Working stroke H = L1 - L2: the stiffness (F - F1) / H.")
     _option(p, "--fatigue-min-force", help="Least force of the fatigue load cycle (with "
                                            "--fatigue-max-force).")
     _option(p, "--fatigue-max-force", help="Largest force of the fatigue load cycle.")
-    _option(p, "--min-fatigue-safety", type=float, default=1.0,
-            help="Required fatigue safety.")
-    _option(p, "--life", type=float, default=1e7, help="Required life, cycles.")
-    _flag(p, "--peened", switch=False, help="Shot-peened wire (fatigue).")
-    _option(p, "--ends", default="closed_ground", help="Compression spring ends (EN 13906-1).")
-    _option(p, "--seating", default="fixed-fixed",
-            help="Compression spring seating for buckling.")
-    _option(p, "--max-outer-diameter", help="Envelope, e.g. '10 cm'.")
+    _option(p, "--min-fatigue-safety", type=float, help="Required fatigue safety (default 1).")
+    _option(p, "--life", type=float, help="Required life, cycles (default 1e7).")
+    p.add_argument("--peened", action=argparse.BooleanOptionalAction, default=None,
+                   help="Shot-peened wire (fatigue; default: not peened).")
+    _option(p, "--ends", help="Compression spring ends (EN 13906-1; default closed_ground).")
+    _option(p, "--seating", help="Compression spring seating for buckling (default "
+                                 "fixed-fixed).")
+    _option(p, "--max-outer-diameter", help="Outside diameter in a bore (envelope), e.g. "
+                                            "'10 cm'.")
     _option(p, "--max-body-length", help="Close-wound body length limit.")
     _option(p, "--min-surge-frequency", help="e.g. '40 Hz'.")
     _option(p, "--min-wire-diameter", help="Thinnest wire, e.g. '2 mm'.")
@@ -745,10 +596,17 @@ def _spring_parser(group) -> None:
     _option(p, "--max-free-length", help="Longest free length (compression: the least free "
                                          "length that keeps the coils clear at --force).")
     _option(p, "--max-solid-length", help="Longest solid length (compression).")
-    _option(p, "--objective", default="mass",
-            help="What to minimise: 'mass' (all coils of wire), 'volume' ((n + end coils) D "
-                 "d^2, as the optimisation literature), 'solid length', 'outer diameter'.")
+    _option(p, "--objective",
+            help="What to minimise: 'mass' (default; all coils of wire), 'volume' ((n + end "
+                 "coils) D d^2, as the optimisation literature), 'solid length', 'outer "
+                 "diameter', or 'energy per mass' (the most stored energy per mass).")
     _flag(p, "--json", dest="json_out", help=_JSON_HELP)
+    _option(p, "--xlsx", type=_typed, help="Write a workbook: the spring maker's sheet, the "
+                                           "checks, the force-length table.")
+    _option(p, "--plots", type=Path, help="Write the plots (force-length; the fatigue diagram "
+                                          "with a load cycle), PNG and SVG, into this folder.")
+    _flag(p, "--replace", help="Replace output files that exist (--force is the spring's "
+                               "force here).")
 
 
 @functools.cache

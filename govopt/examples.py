@@ -1,7 +1,7 @@
 """The bundled example specs: shipped inside the package (``govopt/specs/``), so that any
 install, editable or not, has them. ``govopt examples`` lists them (the trade studies of
-``specs/studies/`` too) and ``govopt init NAME`` copies one to start from; the CLI's default
-specs are two of them.
+``specs/studies/`` and the spring specs of ``specs/springs/`` too) and ``govopt init NAME``
+copies one to start from; the CLI's default specs are two of them.
 
 >>> "hamabe-a" in examples() and example("hamabe-a.toml").name
 'hamabe-a.toml'
@@ -24,12 +24,14 @@ SPECS = Path(__file__).resolve().parent / "specs"
 
 def examples() -> dict[str, Path]:
     """Name (the file's stem) -> path of every bundled spec, the studies'
-    (``specs/studies/``) too, sorted by name.
+    (``specs/studies/``) and the spring specs' (``specs/springs/``, `govopt spring`) too,
+    sorted by name.
 
     >>> examples()["hamabe-study"].parent.name
     'studies'
     """
-    paths = [*SPECS.glob("*.toml"), *SPECS.glob("studies/*.toml")]
+    paths = [*SPECS.glob("*.toml"), *SPECS.glob("studies/*.toml"),
+             *SPECS.glob("springs/*.toml")]
     return {p.stem: p for p in sorted(paths, key=lambda p: p.stem)}
 
 

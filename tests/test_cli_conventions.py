@@ -167,7 +167,8 @@ def test_examples_and_init(tmp_path):
     listed = _govopt("examples", cwd=tmp_path)
     assert listed.returncode == 0, listed.stderr
     names = [line.split()[0] for line in listed.stdout.splitlines()]
-    assert names == sorted(p.stem for p in [*SPECS.glob("*.toml"), *SPECS.glob("studies/*")])
+    assert names == sorted(p.stem for p in [*SPECS.glob("*.toml"), *SPECS.glob("studies/*"),
+                                            *SPECS.glob("springs/*")])
     assert "hamabe-a" in names and "hamabe-study" in names
     assert "Hamabe Example 1, case a" in listed.stdout  # each with its description
     run = _govopt("init", "hamabe-a", cwd=tmp_path)

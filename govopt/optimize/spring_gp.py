@@ -89,15 +89,21 @@ __all__ = [
 #: ``"mass"`` counts ``n + end_coils`` coils (:class:`SpringGP`); ``"volume"`` is the
 #: optimisation literature's ``(n + end_coils) D d^2`` (Belegundu 1982, Arora) and
 #: ``"solid length"`` the close-wound length ``(n + end_coils) d``.
-OBJECTIVES = ("mass", "stress", "outer diameter", "body length", "volume", "solid length")
+#: ``"mass per energy"`` is the mass over the energy stored at ``F_max``, ``F_max^2 / (2 R)``:
+#: its least is the most stored energy per mass (a posynomial, ``R`` being a monomial).
+OBJECTIVES = ("mass", "stress", "outer diameter", "body length", "volume", "solid length",
+              "mass per energy")
 #: Stress corrections, as in :func:`govopt.model.spring.shear_stress`.
 CORRECTIONS = spring.STRESS_CORRECTIONS
 STIFFNESS_MODES = ("equality", "band")
 #: :meth:`SpringGP.solve` keywords of the free-length limit (``free_length=True``)
 FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "Di_min",
-                    "L0_max", "Lc_max")
-#: their values when not given: far outside any spring (the constraint never binds)
-_FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12}
+                    "L0_max", "Lc_max", "L2", "clear", "Ln_max", "L2_solid", "clear_solid",
+                    "pitch_on")
+#: their values when not given: far outside any spring (the constraint never binds); ``L2``
+#: (an installed length at ``F_max``) tiny and ``clear`` 1 (the least free length)
+_FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12, "L2": 1e-12, "clear": 1.0, "L2_solid": 1e-12,
+                         "clear_solid": 1.0, "pitch_on": 1e-12}
 
 
 #: Clarabel tolerances tighter than its 1e-8 defaults: same solve time here (a few more
@@ -138,6 +144,9 @@ def _objective_expr(objective, d, r, n, t, P, correction, end_coils=0.0):
         return _coils(n, end_coils) * d
     if objective == "stress":
         return _stress_g(d, r, n, t, P, correction)
+    if objective == "mass per energy":  # m / (F^2 / (2 R)), R = G d^4 / (64 r^3 n)
+        return (P["density"] * P["G"] * np.pi**2 / 64.0 * P["F_max"]**-2 * d**6 * r**-2
+                * (1.0 + end_coils * n**-1 if end_coils else 1.0))
     if objective == "outer diameter":
         return 2.0 * r + d
     if objective == "body length":
@@ -145,7 +154,8 @@ def _objective_expr(objective, d, r, n, t, P, correction, end_coils=0.0):
     raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
 
 
-_OBJECTIVE_EXPS = {"mass": {"density": 1.0}, "stress": {"F_max": 1.0}}
+_OBJECTIVE_EXPS = {"mass": {"density": 1.0}, "stress": {"F_max": 1.0},
+                   "mass per energy": {"density": 1.0, "G": 1.0, "F_max": -2.0}}
 
 
 def _force(v, d, r, n):
@@ -163,6 +173,9 @@ def _objective_np(objective, d, r, n, v, correction, end_coils=0.0):
         return (n + end_coils) * d
     if objective == "stress":
         return spring.shear_stress(_force(v, d, r, n), d, r, correction)
+    if objective == "mass per energy":
+        R = spring.stiffness(d, r, n, v["G"])
+        return spring.wire_mass(d, r, n + end_coils, v["density"]) * 2.0 * R / v["F_max"]**2
     if objective == "outer diameter":
         return 2.0 * r + d
     if objective == "body length":
@@ -463,22 +476,40 @@ class SpringGP:
                 <= self.free_length_params["L0_over_D_max"] * 2.0 * self.r]
 
     def _least_free_length(self):
-        """``L0 = (n + solid_coils) d + 1.5 n (0.0015 D^2/d + 0.1 d) + F_max / R`` (m), the
-        posynomial of :meth:`_free_length`."""
+        """The free length ``L0 = clear (L_c + S_a) + L2 + F_max / R`` (m), a posynomial:
+        without an installed length (``clear`` 1, ``L2`` tiny) the least that keeps the coils
+        clear at ``F_max`` under dynamic load, ``L_c + S_a = (n + solid_coils) d + 1.5 n (0.0015
+        D^2/d + 0.1 d)`` (EN 13906-1:2013, least working length ``L_n = L_c + S_a``, ``S_a``
+        x1.5 dynamic, cold coiled; ``L_c = (n_t + extra) d``); with the installed length ``L2``
+        at ``F_max`` (``clear`` tiny) ``L2 + F_max / R`` (``F/R = 64 F r^3 n / (G d^4)``)."""
         d, r, n, P, Q = self.d, self.r, self.n, self.params, self.free_length_params
-        return ((n + Q["solid_coils"]) * d + 1.5 * n * (0.006 * r**2 / d + 0.1 * d)
+        return (Q["clear"] * self._working_length() + Q["L2"]
                 + 64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4))
+
+    def _working_length(self):
+        """The least working length ``L_n = L_c + S_a`` of :meth:`_least_free_length` (m)."""
+        d, r, n, Q = self.d, self.r, self.n, self.free_length_params
+        return (n + Q["solid_coils"]) * d + 1.5 * n * (0.006 * r**2 / d + 0.1 * d)
 
     def _envelope(self, kind: str) -> dict:
         """The space a spring is built into: inside diameter over a rod ``D - d >= Di_min``
-        (the posynomial ``(Di_min + d) / (2 r) <= 1``) and, for a compression spring, the least
-        free length of :meth:`_free_length` ``<= L0_max`` and the solid length ``(n +
-        solid_coils) d <= Lc_max`` (EN 13906-1:2013, ``L_c = (n_t + extra) d``)."""
+        (the posynomial ``(Di_min + d) / (2 r) <= 1``) and, for a compression spring, the free
+        length of :meth:`_least_free_length` ``<= L0_max``, the solid length ``(n +
+        solid_coils) d <= Lc_max`` (EN 13906-1:2013, ``L_c = (n_t + extra) d``) and the least
+        working length ``L_c + S_a <= Ln_max``, the installed length at ``F_max`` (coils clear,
+        EN 13906-1: ``L_n`` is the shortest working length allowed). With ``pitch_on`` 1 (tiny:
+        off) the free pitch ``m = (L0 - L_c)/n + d <= 0.7 (D - d)`` (Gutekunst, as
+        :func:`govopt.springs.helical.max_pitch`) as the posynomial ``L0/n + 0.7 d <= 1.4 r``,
+        a restriction (``m <= L0/n``: the ``solid_coils d / n`` it drops is small)."""
         d, r, n, Q = self.d, self.r, self.n, self.free_length_params
         out = {"inside diameter": (Q["Di_min"] + d) / (2.0 * r) <= 1.0}
         if kind == "compression":
             out["free length"] = self._least_free_length() <= Q["L0_max"]
             out["solid length"] = (n + Q["solid_coils"]) * d <= Q["Lc_max"]
+            out["working length"] = self._working_length() <= Q["Ln_max"]
+            # m = (L0 - L_c)/n + d = L0/n - solid_coils d/n <= L0/n: a restriction
+            out["free pitch"] = (Q["pitch_on"] * (self._least_free_length() / n + 0.7 * d)
+                                 <= 1.4 * r)
         return out
 
     def _deflection_bound(self):
@@ -500,9 +531,15 @@ class SpringGP:
         solid length is ``F_c = F_max + R S_a = F_max + 1.5 G (0.006 d^3/(64 r) + 0.1 d^5 /
         (64 r^3))`` (N), a posynomial; the stress correction is the GP's (as
         :func:`govopt.model.spring.shear_stress`: none, Wahl ``1 + 0.75 t + 0.615/C`` or
-        Bergstraesser ``1 + 1.25 t``)."""
+        Bergstraesser ``1 + 1.25 t``). With an installed length ``L2`` at ``F_max``
+        (``clear_solid`` tiny, ``L2_solid = L2``) the force at solid length ``F_max + R (L2 -
+        L_c)`` is bounded by ``F_max + R L2`` (``R L2 = G d^4 L2 / (64 r^3 n)``, a monomial): a
+        restriction, as ``- R L_c`` is not a posynomial."""
         d, r, t, P = self.d, self.r, self.t, self.params
-        F = P["F_max"] + 1.5 * P["G"] * (0.006 * d**3 / (64.0 * r) + 0.1 * d**5 / (64.0 * r**3))
+        Q = self.free_length_params
+        F = (P["F_max"] + Q["clear_solid"] * 1.5 * P["G"]
+             * (0.006 * d**3 / (64.0 * r) + 0.1 * d**5 / (64.0 * r**3))
+             + P["G"] * d**4 * Q["L2_solid"] / (64.0 * r**3 * self.n))
         base = r * d**-3
         if self.correction == "wahl":
             g = base + 0.75 * t * base + 0.3075 * d**-2

@@ -151,8 +151,8 @@ def solve_sandgren(p=SANDGREN, wires=SANDGREN_WIRES) -> SandgrenSpring:
         if d < p["d_min"]:  # g3 holds or fails whatever N and D
             continue
         N = 1
-        while math.pi**2 * 3.0 * d**3 * (N + 2) / 4.0 <= best.objective or (
-                math.isinf(best.objective) and N <= 1000):
+        while (math.pi**2 * 3.0 * d**3 * (N + 2) / 4.0 <= best.objective
+               if math.isfinite(best.objective) else N <= 1000):  # none yet: 1000 coils
             D = max(3.0 * d, (p["delta_w"] * p["G"] * d**4
                               / (8.0 * N * (p["F_max"] - p["F_load"]))) ** (1.0 / 3.0))
             g, f = sandgren_constraints(N, D, d, p)

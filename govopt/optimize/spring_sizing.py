@@ -92,16 +92,18 @@ class Sizing:
 
 
 def _kw(kind, mat, d, D, n, F_min, F_max, *, rules, allowable, correction, peened, cycles,
-        index, ends, seating):
+        index, ends, seating, L2=None):
     """The library's keywords for one spring (free length, coils and initial tension as the
-    module docstring says)."""
+    module docstring says; with the installed length ``L2`` at ``F_max`` the free length is
+    ``L2 + F_max / R``)."""
     kw = dict(mat=mat, d=d, D=D, F1=F_min, F2=F_max, method=rules, allowable=allowable,
               correction=correction, peened=peened, cycles=cycles, index_min=index[0],
               index_max=index[1])
     if kind == "compression":
         R = float(hx.stiffness(d, D, n, mat.shear_modulus(d)))
         n_t = n + 2.0
-        L0 = float(hx.min_working_length(d, D, n, n_t, ends, dynamic=True)) + F_max / R
+        L0 = (float(hx.min_working_length(d, D, n, n_t, ends, dynamic=True)) if L2 is None
+              else L2) + F_max / R
         kw.update(n=n, n_t=n_t, L0=L0, ends=ends, seating=seating)
     else:
         lo, hi = hx.initial_tension_range(hx.spring_index(d, D))
@@ -117,7 +119,8 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 fatigue: tuple[float, float] | None = None, min_fatigue_safety: float = 1.0,
                 peened: bool = False, cycles: float = 1e7, ends: str = "closed_ground",
                 seating: str = "fixed-fixed", objective: str = "mass",
-                stiffness_max: float | None = None, **bounds) -> Sizing:
+                stiffness_max: float | None = None, L2: float | None = None,
+                **bounds) -> Sizing:
     """Size a spring (SI): see the module docstring. ``bounds``: the GP's optional limits
     (``n_min``, ``n_max``, ``C_min``, ``C_max``, ``D_out_max``, ``L_body_max``,
     ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20.
@@ -125,18 +128,26 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     inside diameter over a rod), and for a compression spring ``L0_max`` (its least free
     length: coils clear at ``F_max``) and ``Lc_max`` (its solid length). With
     ``stiffness_max`` the stiffness may lie anywhere in ``stiffness .. stiffness_max`` (the GP's
-    band mode)."""
+    band mode). ``L2``: the installed (working) length at ``F_max`` of a compression spring; the
+    coils stay clear there (GP row ``working length``) and the free length is ``L2 + F_max /
+    R`` (the solid-length stress row of the GP then takes the least free length: a relaxation,
+    checked exactly afterwards)."""
     if kind not in KINDS:
         raise ValueError(f"spring kind must be one of {KINDS}, got {kind!r}")
     space = {k: bounds.pop(k) for k in ("Di_min", "L0_max", "Lc_max")
              if bounds.get(k) is not None}
     for k in ("Di_min", "L0_max", "Lc_max"):
         bounds.pop(k, None)
-    if kind == "extension" and set(space) - {"Di_min"}:
-        raise ValueError("free and solid length limits are for compression springs")
+    if kind == "extension" and (set(space) - {"Di_min"} or L2 is not None):
+        raise ValueError("free, solid and installed length limits are for compression springs")
+    if L2 is not None:
+        space.update(L2=L2, Ln_max=L2, clear=1e-12)
     envelope = kind if space else None
     if kind == "compression":
         space["solid_coils"] = end_coils(kind) + hx.END_FORMS[ends][0]
+    relaxed = dict(space)  # the relaxation gives the bound; with L2 the design's GP restricts
+    if L2 is not None:
+        space.update(L2_solid=L2, clear_solid=1e-12, pitch_on=1.0)
     mode, rate = "equality", {"kappa": stiffness}
     if stiffness_max is not None:
         if not stiffness <= stiffness_max:
@@ -168,13 +179,14 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         stable = float(hx.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
                                                hx.SEATING[seating]))
 
-    def attempt(factor, slender=None, refit=True):
+    def attempt(factor, slender=None, refit=True, relax=False):
         """The GP at ``factor`` times the rule, re-fitted until the wire settles (with
         ``slender``: free length <= ``slender`` times the longest that cannot buckle; without
         ``refit`` one solve with the current fit, the same compiled GP); the checks and the
         worst ratio of a stress or fatigue row (< 1: it fails)."""
-        extra = dict(space) if slender is None else {**space,
-                                                     "L0_over_D_max": slender * stable}
+        base = relaxed if relax else {**space, **state.get("installed", {})}
+        extra = dict(base) if slender is None else {**base,
+                                                    "L0_over_D_max": slender * stable}
         for _ in range(60):
             k, m = _monomial(mat, place, rules, k_s, *state["window"])
             m_c = None
@@ -199,7 +211,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
             state["window"] = new  # re-fit the allowable about this wire
         sizing = _checked(sol, kind, mat, F_min, F_max, fatigue, rules=rules, k_s=k_s,
                           correction=correction, peened=peened, cycles=cycles, index=index,
-                          ends=ends, seating=seating, need=min_fatigue_safety)
+                          ends=ends, seating=seating, need=min_fatigue_safety, L2=L2)
         sizing.allowable_factor = factor
         return sizing, min((_ratio(c) for c in sizing.checks
                             if (c.unit == "Pa" and c.sense == "<=") or "fatigue" in c.name),
@@ -207,9 +219,17 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
 
     sizing, worst = attempt(1.0)
     bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
+    if L2 is not None:  # there the design's GP restricts; its relaxation bounds
+        loose, _ = attempt(1.0, relax=True)
+        bound = _bound(loose.solution)
+        if loose.solution.ok and loose.passed:  # the relaxation's design passes: optimal
+            loose.lower_bound, loose.cycles = bound, cycles
+            return loose
     sizing = _stress_search(attempt, sizing, worst)
     if sizing.solution.ok and kind == "compression":
         sizing = _buckling_search(attempt, sizing, stable)
+    if sizing.solution.ok and L2 is not None:
+        sizing = _installed_search(attempt, sizing, state, L2, ends)
     sizing.lower_bound, sizing.cycles = bound, cycles
     return sizing
 
@@ -272,6 +292,37 @@ def _buckling_search(attempt, sizing, stable):
     return safe
 
 
+def _installed_search(attempt, sizing, state, L2, ends):
+    """The installed length's stress at solid length, tightened. The GP bounds the force at
+    solid length ``F_max + R (L2 - L_c)`` by ``F_max + R (L2 - lam)`` (``L2_solid = L2 - lam``,
+    a monomial), which is safe for every spring with ``L_c >= lam``; ``lam = 0`` (the first
+    design) always is. Bisection on ``lam = theta L_c`` of the design found keeps the lightest
+    design whose solid length is at least its ``lam`` and that passes every check, to 0.1 %;
+    the bound stays the relaxation's (:func:`size_spring`)."""
+    def solid(s):
+        sol = s.solution
+        return float(hx.solid_length(sol.d, sol.n + sol.end_coils, ends))
+
+    factor, best, notes = sizing.allowable_factor, sizing, list(sizing.notes)
+    lo, hi = 0.0, 1.0
+    while hi - lo > 1e-3:  # one compiled GP: the allowable's fit is frozen meanwhile
+        mid = 0.5 * (lo + hi)
+        lam = mid * solid(best)
+        state["installed"] = {"L2_solid": L2 - lam}
+        trial, _ = attempt(factor, refit=False)
+        if trial.solution.ok and solid(trial) >= lam and trial.passed and \
+                trial.solution.objective <= best.solution.objective:
+            lo, best = mid, trial
+        else:
+            hi = mid
+    if best is not sizing:
+        best.allowable_factor = factor
+        best.notes = notes + [
+            f"the force at solid length is bounded by F + R (L2 - {lo:.3g} L_c) (a posynomial "
+            "restriction of F + R (L2 - L_c)), found by bisection to 0.1 %"]
+    return best
+
+
 def _stress_search(attempt, sizing, worst):
     """The body's allowable lowered until the hooks' and fatigue rows pass (module docstring)."""
     if not sizing.solution.ok or worst >= 1.0:
@@ -321,12 +372,12 @@ def _monomial(mat, place, rules, k_s, lo, hi):
 
 
 def _checked(sol, kind, mat, F_min, F_max, fatigue, *, rules, k_s, correction, peened,
-             cycles, index, ends, seating, need) -> Sizing:
+             cycles, index, ends, seating, need, L2=None) -> Sizing:
     """The spring kind's table on the GP's spring, with the fatigue rows for the cycle."""
     d, D, n = sol.d, 2.0 * sol.r, sol.n
     kw = _kw(kind, mat, d, D, n, F_min, F_max, rules=rules, allowable=k_s,
              correction=correction, peened=peened, cycles=cycles, index=index, ends=ends,
-             seating=seating)
+             seating=seating, L2=L2)
     rows = [c for c in ck.checks(kind, fatigue_safety=need, **kw) if "fatigue" not in c.name]
     if fatigue is not None:
         kw.update(F1=min(fatigue), F2=max(fatigue))

@@ -133,6 +133,59 @@ def en13906_fatigue_safety(F_min, F_max, d, D, diagram):
         return en13906_stroke_limit(lower, d, diagram) / stroke
 
 
+#: Cycles where the S-N line of :func:`finite_life` starts: a strength amplitude ``f S_su``
+#: at 1e3 cycles (Shigley 9th ed. §6-7, the fatigue strength fraction ``f`` at 10^3 cycles,
+#: 0.9 where Figure 6-18 gives nothing better, here in shear with the torsional ultimate)
+LOW_CYCLES, LOW_CYCLE_FRACTION = 1e3, 0.9
+
+
+def reversed_endurance(mat, d, method: str = "EN13906", peened: bool = False,
+                       criterion: str = "goodman"):
+    """The fully reversed shear endurance ``S_se`` (Pa) at the data's life of the diagram the
+    body's check reads (:func:`body_locus`) for wire ``d`` (m), and the torsional ultimate
+    ``S_su = 0.67 S_ut`` (Shigley eq. (10-30)): Zimmerli's line's intercept (Shigley §10-9,
+    :func:`endurance_intercept`), or for an EN 13906-1 diagram its point at zero lower stress
+    (amplitude and midrange ``tau_O / 2``) taken to zero midrange on a Goodman line,
+    ``S_se = (tau_O/2) / (1 - tau_O / (2 S_su))`` (Shigley §6-12, the equivalent fully
+    reversed stress of Example 6-12).
+
+    >>> from govopt.springs.materials import material
+    >>> Sse, Ssu = reversed_endurance(material("Shigley A228"), 2e-3, method="Shigley")
+    >>> # S_ut = 2211 MPa mm^0.145 / 2^0.145 = 2000 MPa, S_su 1340 MPa, 241 / (1 - 379/1340)
+    >>> round(float(Sse / 1e6), 1), round(float(Ssu / 1e6), 1)
+    (336.1, 1339.7)
+    """
+    Ssu = torsional_ultimate(mat.tensile_strength(d))
+    diagram = mat.fatigue_diagram(peened) if method == "EN13906" else None
+    if diagram is not None:
+        half = np.asarray(diagram.upper_at_zero(d), dtype=float) / 2.0
+        return half / (1.0 - half / Ssu), Ssu
+    Ssa, Ssm = ZIMMERLI[bool(peened)]
+    return endurance_intercept(Ssa, Ssm, Ssu, criterion), Ssu
+
+
+def finite_life(safety, Sse, Ssu, data_cycles: float = 1e7):
+    """Estimated life (cycles) of a spring whose fatigue safety at the data's life
+    ``data_cycles`` is ``safety`` (< 1: the stress exceeds the endurance by ``1/safety``
+    along its load line): Basquin's S-N line ``S_f = a N^b`` through ``f S_su`` at
+    :data:`LOW_CYCLES` and ``S_se`` at ``data_cycles`` (Shigley 9th ed. §6-7, eqs. (6-13)-(6-16),
+    with the data's life in place of 10^6 and shear strengths), read at ``S_se / safety``:
+    ``N = data_cycles * safety^(-1/b)``, ``b = log10(S_se / (f S_su)) / log10(data_cycles /
+    1e3)``. ``inf`` where ``safety >= 1`` (beyond the data: no estimate, the strength is held
+    constant), ``nan`` below :data:`LOW_CYCLES` (quasi-static: the line does not reach).
+
+    >>> N = float(finite_life(0.8, 300e6, 1200e6))  # b = lg(300/1080)/4 = -0.139
+    >>> round(N / 1e6, 3), round(float(300e6 * (N / 1e7) ** (np.log10(300 / 1080) / 4)) / 1e6, 6)
+    (2.01, 375.0)
+    """
+    safety, Sse, Ssu = (np.asarray(x, dtype=float) for x in (safety, Sse, Ssu))
+    b = np.log10(Sse / (LOW_CYCLE_FRACTION * Ssu)) / np.log10(data_cycles / LOW_CYCLES)
+    with np.errstate(divide="ignore", over="ignore"):
+        life = data_cycles * safety ** (-1.0 / b)
+    low = LOW_CYCLES * (1.0 - 1e-9)  # the line's end itself, whatever the rounding
+    return np.where(safety >= 1.0, np.inf, np.where(life >= low, life, np.nan))
+
+
 def body_locus(mat, d, method: str = "EN13906", peened: bool = False,
                criterion: str = "goodman", points: int = 41) -> dict:
     """The fatigue diagram the body's check reads (:mod:`govopt.springs.checks`: the grade's

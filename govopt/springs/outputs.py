@@ -1,0 +1,304 @@
+"""The files of `govopt spring` (issue 22): a workbook with the spring maker's sheet, and the
+plots, a force-length diagram and the fatigue (Goodman/Haigh) diagram of the load cycle.
+
+They read the sized spring and its checks (:class:`govopt.result.Check`) and never recompute
+the design: the maker's sheet is :mod:`govopt.springs.sheet`'s, the fatigue diagram
+:func:`govopt.springs.fatigue.body_locus` drawn by :func:`govopt.report.plots.fatigue`, the
+numbers in engineering units by :func:`govopt.report.excel.engineering`; files are written
+atomically after the checks of :mod:`govopt.report.files` (nothing half-written, nothing
+replaced without ``--replace``).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+
+from ..errors import GovoptError
+from . import fatigue as ft
+from . import helical as hx
+from . import materials as mt
+from . import sheet as sh
+
+#: the plots `govopt spring --plots` writes (``fatigue`` only with a fatigue load cycle)
+PLOTS = ("force-length", "fatigue")
+
+
+def material(v: dict) -> mt.Material | None:
+    """The wire grade of the options (None without ``material``), as the sizing built it."""
+    if v.get("material") is None:
+        return None
+    return mt.material(v["material"], tensile_strength=v.get("tensile_strength"),
+                       G=v.get("shear_modulus"), density=v.get("density"))
+
+
+def maker_sheet(sizing, v: dict) -> sh.SpringSheet | None:
+    """The spring maker's sheet of the sized spring (EN 15800 grade 2 tolerances; a grade is
+    needed for the wire standard and its tolerances: None without one)."""
+    mat = material(v)
+    if mat is None:
+        return None
+    sol = sizing.solution
+    d, D, n = sol.d, 2.0 * sol.r, sol.n
+    F1, F2 = v.get("min_force") or 0.0, v["force"]
+    surface = "shot peened" if v["peened"] else "not shot peened"
+    if sizing.kind == "compression":
+        return sh.compression_sheet(mat, d, D, n, n + sol.end_coils, sizing.free_length, F1, F2,
+                                    ends=v["ends"], surface=surface)
+    G, E = float(mat.shear_modulus(d)), float(mat.elastic_modulus(d))
+    return sh.extension_sheet(mat, d, D, n - G / E, sizing.initial_tension, F1, F2,
+                              surface=surface)
+
+
+def fatigue_cycle(sizing, v: dict) -> dict | None:
+    """The fatigue load cycle's corrected (Bergstraesser) stresses and the body's diagram, in
+    the form :func:`govopt.report.plots.fatigue` reads (None without a cycle or a grade)."""
+    mat = material(v)
+    if mat is None or v.get("fatigue_min_force") is None:
+        return None
+    sol = sizing.solution
+    d, D = sol.d, 2.0 * sol.r
+    K = hx.bergstrasser_factor(hx.spring_index(d, D))
+    lo, hi = (float(K * hx.shear_stress(f, d, D))
+              for f in (v["fatigue_min_force"], v["fatigue_max_force"]))
+    return {"force_min_N": v["fatigue_min_force"], "force_max_N": v["fatigue_max_force"],
+            "corrected_stress_min_Pa": lo, "corrected_stress_max_Pa": hi,
+            "mean_stress_Pa": 0.5 * (lo + hi), "alternating_stress_Pa": 0.5 * (hi - lo),
+            "diagram": ft.body_locus(mat, d, v["rules"], v["peened"])}
+
+
+def force_length(sizing, v: dict, ax, name: str) -> None:
+    """Force against length: the line ``F = R (L0 - L)`` of a compression spring from its free
+    length to its solid length ``L_c``, the working points (L1, F1) and (L2, F2), the least
+    working length ``L_n = L_c + S_a`` (EN 13906-1); an extension spring's ``F = F0 + R (L -
+    L0)`` from its free length (initial tension F0) to past L2. mm and N."""
+    sol = sizing.solution
+    d, D, n, R = sol.d, 2.0 * sol.r, sol.n, sol.stiffness
+    F1, F2 = v.get("min_force") or 0.0, v["force"]
+    if sizing.kind == "compression":
+        L0 = sizing.free_length
+        if not math.isfinite(L0):  # no grade: the installed length's, or the least
+            L0 = (v["length_2"] if v.get("length_2") is not None else float(
+                hx.min_working_length(d, D, n, n + sol.end_coils, v["ends"], dynamic=True))
+                ) + F2 / R
+        Lc = float(hx.solid_length(d, n + sol.end_coils, v["ends"]))
+        Ln = float(hx.min_working_length(d, D, n, n + sol.end_coils, v["ends"], dynamic=True))
+        L = np.array([L0, Lc])
+        ax.plot(L * 1e3, R * (L0 - L), color="tab:blue", lw=2,
+                label=f"F = R (L0 - L), R = {R * 1e-3:.4g} N/mm")
+        ax.axvline(Lc * 1e3, color="k", lw=1, label=f"solid length L_c {Lc * 1e3:.4g} mm")
+        ax.axvline(Ln * 1e3, color="tab:red", ls="--", lw=1,
+                   label=f"least working length L_n {Ln * 1e3:.4g} mm")
+        points = ((L0 - F1 / R, F1, "L1, F1"), (L0 - F2 / R, F2, "L2, F2"))
+        ax.invert_xaxis()  # compressing: the length falls as the force rises
+    else:
+        F0, L0 = _initial_tension(sizing), float(hx.extension_free_length(
+            d, D, sol.n + sol.end_coils - 2.0))
+        L2 = L0 + (F2 - F0) / R
+        L = np.array([L0, L0 + 1.1 * (L2 - L0)])
+        ax.plot(L * 1e3, F0 + R * (L - L0), color="tab:blue", lw=2,
+                label=f"F = F0 + R (L - L0), F0 = {F0:.4g} N")
+        points = ((L0 + (F1 - F0) / R, F1, "L1, F1"), (L2, F2, "L2, F2"))
+    for x, f, label in points:
+        ax.plot(x * 1e3, f, "o", color="tab:orange", mec="k",
+                label=f"{label}: {x * 1e3:.4g} mm, {f:.4g} N")
+    ax.set_xlabel("spring length L (mm)")
+    ax.set_ylabel("force F (N)")
+    ax.set_ylim(bottom=0.0)
+    ax.set_title(f"{name}: force against length")
+    ax.legend(loc="best", fontsize=8)
+
+
+def _plot_input(outcome):
+    """What :func:`govopt.report.plots.fatigue` reads of a Result: the fatigue load cycle
+    (``spring_report.loads``), the checks and the name."""
+    cycle = fatigue_cycle(outcome.sizing, outcome.values)
+    return SimpleNamespace(spring_report=SimpleNamespace(loads={"fatigue": cycle}),
+                           checks=outcome.sizing.checks, spec=SimpleNamespace(name=outcome.name))
+
+
+def plot_names(outcome) -> list[str]:
+    """The plots this spring has (the fatigue diagram needs a grade and a load cycle)."""
+    has_cycle = fatigue_cycle(outcome.sizing, outcome.values) is not None
+    return [k for k in PLOTS if k != "fatigue" or has_cycle]
+
+
+def check_outputs(xlsx, plots, stem: str, *, replace: bool, inputs=()) -> None:
+    """Before the run: each output can be written, and exists only if ``replace``
+    (:func:`govopt.report.files.check_output`; a folder for the plots is made if only its
+    parent exists). Raises :class:`GovoptError` with one line."""
+    from ..report.files import check_output, output_folder
+
+    paths = [] if xlsx is None else [(Path(xlsx), "workbook")]
+    if plots is not None:
+        folder = output_folder(Path(plots), "plots")
+        paths += [(folder / f"{stem}-{k}.{fmt}", "plot") for k in PLOTS for fmt in ("png", "svg")]
+    for path, what in paths:
+        if path.exists() and not replace:
+            raise GovoptError(f"{path}: {what} already exists; use --replace to replace it")
+        check_output(path, overwrite=True, inputs=inputs, what=what,
+                     others=[p for p, _ in paths if p != path])
+
+
+def write_plots(outcome, folder, stem: str) -> list[Path]:
+    """``<folder>/<stem>-<kind>.png|svg`` of every plot (:func:`plot_names`), atomically."""
+    import matplotlib as mpl
+
+    from ..report import plots
+    from ..report.files import atomic_write
+
+    written = []
+    for kind in plot_names(outcome):
+        with mpl.rc_context(plots.STYLE):
+            from matplotlib.backends.backend_agg import FigureCanvasAgg
+            from matplotlib.figure import Figure
+
+            fig = Figure(figsize=plots.SIZE, dpi=plots.DPI, layout="constrained")
+            FigureCanvasAgg(fig)
+            ax = fig.add_subplot()
+            if kind == "force-length":
+                force_length(outcome.sizing, outcome.values, ax, outcome.name)
+            else:
+                plots.fatigue(_plot_input(outcome), ax)
+        for fmt in plots.FORMATS:
+            def save(tmp, fmt=fmt, fig=fig):
+                with mpl.rc_context(plots.STYLE):
+                    fig.savefig(tmp, format=fmt, metadata={"Date": None} if fmt == "svg" else {})
+
+            written.append(atomic_write(Path(folder) / f"{stem}-{kind}.{fmt}", save,
+                                        overwrite=True, what="plot"))
+    return written
+
+
+def workbook_rows(outcome) -> list[tuple[str, object, str]]:
+    """The Spring sheet's rows, answer first: (label, SI value or text, SI unit); a section
+    title has the value None and the unit ``"section"``."""
+    sizing, data = outcome.sizing, outcome.data
+    sol = sizing.solution
+    rows = [("Answer", None, "section"),
+            ("wire diameter d", sol.d, "m"), ("mean coil diameter D", 2.0 * sol.r, "m"),
+            ("active coils n", sol.n, ""), ("end coils", sol.end_coils, ""),
+            ("mass (all coils)", sol.mass, "kg"), ("stiffness R", sol.stiffness, "N/m"),
+            ("shear stress at the force", sol.stress, "Pa"),
+            ("stress correction", sol.correction, ""), ("spring index D/d", sol.index, ""),
+            ("surge frequency", sol.surge_frequency, "Hz"),
+            (f"objective: {outcome.values['objective']}", data["objective_value"], ""),
+            ("certified lower bound", data["lower_bound"], ""),
+            ("claim", outcome.claim, ""),
+            ("active in the last GP", ", ".join(sol.active), "")]
+    life = data.get("fatigue_life_cycles")
+    if life is not None:
+        rows.append(("estimated fatigue life (cycles)", life if math.isfinite(life) else
+                     "at least the data's 1e7 (the body passes there)", ""))
+    return rows
+
+
+def write_workbook(outcome, path) -> Path:
+    """The workbook: sheet "Spring" (the answer, then the spring maker's sheet in engineering
+    units), "Checks" (value, limit, margin, verdict, source) and "Force-length" (a table and
+    its chart), written atomically."""
+    from openpyxl import Workbook
+    from openpyxl.chart import Reference, ScatterChart, Series
+
+    from ..report.excel import engineering
+    from ..report.files import atomic_write
+
+    sizing = outcome.sizing
+    wb = Workbook()
+    ws = wb.active
+    ws.title = "Spring"
+    ws.append(["quantity", "value", "unit"])
+
+    def put(label, value, unit=""):
+        if unit == "section":
+            ws.append([label])
+            return
+        if isinstance(value, float) and not math.isfinite(value):
+            value = "not bounded" if math.isinf(value) else "none"
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            value, unit, fmt = engineering(value, unit)
+            ws.append([label, value, unit])
+            ws.cell(ws.max_row, 2).number_format = fmt
+        else:
+            ws.append([label, str(value), unit])
+
+    for row in workbook_rows(outcome):
+        put(*row)
+    sheet = maker_sheet(sizing, outcome.values)
+    if sheet is not None:
+        put("Specification for the spring maker (EN 15800 grade 2)", None, "section")
+        for key, value in sheet.to_dict().items():
+            for k, x in (value.items() if isinstance(value, dict) else [(key, value)]):
+                if isinstance(x, list | tuple):
+                    for note in x:
+                        put("note", note, "")
+                elif isinstance(x, str):
+                    put(k.replace("_", " "), x)
+                else:
+                    label, unit = _labelled(k)
+                    put(label, x, unit)
+    checks = wb.create_sheet("Checks")
+    checks.append(["check", "value", "sense", "limit", "unit", "margin", "result", "source"])
+    for c in sizing.checks:
+        (value, unit, fmt), (limit, _, _) = (engineering(x, c.unit) for x in (c.value, c.limit))
+        checks.append([c.name, value, c.sense, limit, unit, c.margin,
+                       "PASS" if c.passed else "FAIL", c.source])
+        checks.cell(checks.max_row, 6).number_format = "0.00%"
+    if not sizing.checks:
+        checks.append(["no spring engineering checks: they need a wire grade (--material)"])
+    fl = wb.create_sheet("Force-length")
+    fl.append(["length L (mm)", "force F (N)"])
+    for length, force in _force_length_points(outcome):
+        fl.append([length * 1e3, force])
+    chart = ScatterChart()
+    chart.title, chart.x_axis.title, chart.y_axis.title = ("force against length",
+                                                           "length L (mm)", "force F (N)")
+    chart.series.append(Series(Reference(fl, min_col=2, min_row=2, max_row=fl.max_row),
+                               Reference(fl, min_col=1, min_row=2, max_row=fl.max_row),
+                               title="spring"))
+    fl.add_chart(chart, "D2")
+    for w in (ws, checks):
+        w.column_dimensions["A"].width = 44
+        w.column_dimensions["B"].width = 24
+    return atomic_write(Path(path), wb.save, overwrite=True, what="workbook")
+
+
+#: the unit suffixes of the maker's sheet's JSON keys (:meth:`SpringSheet.to_dict`)
+_SUFFIXES = (("_N_per_m", "N/m"), ("_Hz", "Hz"), ("_kg", "kg"), ("_Pa", "Pa"), ("_m", "m"),
+             ("_N", "N"))
+
+
+def _labelled(key: str) -> tuple[str, str]:
+    """A JSON key with its unit suffix as (label, SI unit): ``free_length_m`` -> ``("free
+    length", "m")``."""
+    for suffix, unit in _SUFFIXES:
+        if key.endswith(suffix):
+            return key[:-len(suffix)].replace("_", " "), unit
+    return key.replace("_", " "), ""
+
+
+def _force_length_points(outcome) -> list[tuple[float, float]]:
+    """(length m, force N) at the free length and the working points, solid length last
+    (compression), as the force-length plot draws them."""
+    sizing, v = outcome.sizing, outcome.values
+    sol = sizing.solution
+    R, F1, F2 = sol.stiffness, v.get("min_force") or 0.0, v["force"]
+    if sizing.kind == "compression":
+        L0 = outcome.data.get("free_length_m", math.nan)
+        if not math.isfinite(L0):
+            return [(F / R, F) for F in (0.0, F1, F2)]  # deflections: no free length known
+        Lc = float(hx.solid_length(sol.d, sol.n + sol.end_coils, v["ends"]))
+        return [(L0 - F / R, F) for F in (0.0, F1, F2)] + [(Lc, R * (L0 - Lc))]
+    F0 = _initial_tension(sizing)
+    L0 = float(hx.extension_free_length(sol.d, 2.0 * sol.r, sol.n + sol.end_coils - 2.0))
+    return [(L0, F0)] + [(L0 + (F - F0) / R, F) for F in (F1, F2)]
+
+
+def _initial_tension(sizing) -> float:
+    """An extension spring's initial tension (N): the sizing's, 0 where none was set (no
+    grade: the GP has no initial-tension rule)."""
+    F0 = sizing.initial_tension
+    return F0 if math.isfinite(F0) else 0.0
