@@ -4,7 +4,7 @@ A study is a spec plus the inputs to vary (:class:`Study`): sweeps of dotted spe
 (``design.pendulum_weight = 6 kgf:12 kgf:4``, ``speed.irregularity = 0.12,0.104``) combined as
 a grid, zipped, or sampled (Latin hypercube, Sobol'), or manufacturing tolerances sampled
 around the spec's own design. Each point is the spec with the swept keys replaced and
-re-validated (:meth:`govopt.spec.Spec.with_values`); it is evaluated (:func:`govopt.bulk.
+re-validated (:func:`govopt.spec.with_values`); it is evaluated (:func:`govopt.bulk.
 evaluate_many`, vectorised over the points that differ only in their design) or designed
 (:func:`govopt.design`, on a process pool or a Dask cluster) and becomes one row: the inputs
 as written and in SI, the design, every check's value, margin and verdict, the objective,
@@ -37,7 +37,7 @@ import pandas as pd
 
 from . import limits
 from .errors import GovoptError
-from .spec import Spec, parse_spec, read_spec_data
+from .spec import Spec, parse_spec, read_spec_data, with_values
 
 MODES = ("evaluate", "design")
 COMBINE = ("grid", "zip", "lhs", "sobol")
@@ -632,13 +632,13 @@ _CACHE_SIZE = 512
 
 
 def _variant(spec: Spec, values: dict):
-    """``spec.with_values(values)`` or the SpecError's message, parsed once per process."""
+    """``with_values(spec, values)`` or the SpecError's message, parsed once per process."""
     key = (id(spec), _canonical(values))
     hit = _VARIANTS.get(key)
     if hit is not None and hit[0] is spec:
         return hit[1]
     try:
-        out = spec.with_values(values) if values else spec
+        out = with_values(spec, values) if values else spec
     except GovoptError as exc:
         out = str(exc)
     if len(_VARIANTS) >= _CACHE_SIZE:
@@ -786,7 +786,7 @@ def _key_values(spec: Spec, key: str, written: list, span: tuple | None = None):
     field -> array (NaN where unchanged) and ``errors`` index -> the parser's message.
 
     Up to :data:`EXACT_VALUES` distinct values each give a variant of the spec, parsed in full
-    (``Spec.with_values``: every check, the exact conversion). Beyond that (a fine range, a
+    (``spec.with_values``: every check, the exact conversion). Beyond that (a fine range, a
     tolerance study's samples), where every value is a number in one unit, the smallest and the
     largest (and one non-integral value, if any) are parsed in full and the rest mapped
     linearly: a design value's SI form is proportional to the number written (``m = W/g``,

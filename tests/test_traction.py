@@ -25,7 +25,7 @@ from scipy.optimize import brentq
 from govopt.governors import governor_class
 from govopt.governors import traction_coil as tc
 from govopt.governors import traction_leaf as tl
-from govopt.spec import SpecError, _Reader
+from govopt.spec import Reader, SpecError
 from govopt.springs import leaf
 from govopt.units import G_STANDARD, Q_
 from govopt.units import parse_quantity as q
@@ -42,12 +42,12 @@ def load(name):
     """``(governor, data)`` of a bundled spec, the ``[governor]`` table through the type's own
     parser (the rest of the spec is read here with units, as the tests need it)."""
     data = tomllib.loads((SPECS / name).read_text(encoding="utf-8"))
-    reader = _Reader(name, data["governor"], "governor", [])
+    reader = Reader(name, data["governor"], "governor", [])
     return governor_class(reader.raw("type", True)).parse(reader), data
 
 
 def parse_governor(cls, **table):
-    return cls.parse(_Reader("test", table, "governor", []))
+    return cls.parse(Reader("test", table, "governor", []))
 
 
 # -- the constant -------------------------------------------------------------------------------
@@ -508,7 +508,7 @@ def _design(name, **governor):
     spec = load_spec(SPECS / name)
     if governor:
         data = tomllib.loads((SPECS / name).read_text(encoding="utf-8"))
-        reader = _Reader(name, {**data["governor"], **governor}, "governor", [])
+        reader = Reader(name, {**data["governor"], **governor}, "governor", [])
         spec = replace(spec, governor=governor_class(reader.raw("type", True)).parse(reader))
     return spec, design(spec)
 

@@ -13,8 +13,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..governors.base import KEY_UNITS
+from ..inputs import LoadChange, Spec
 from ..jsonable import number
-from ..spec import LoadChange, Spec
 from . import statics, vyshnegradsky
 from . import transient as tr
 

@@ -46,7 +46,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..spec import LoadChange, Spec
+from ..inputs import LoadChange, Spec
 from . import statics
 from .friction import LoadChangeModel, linear_response, load_change_model
 

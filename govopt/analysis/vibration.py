@@ -66,9 +66,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..inputs import Spec
 from ..jsonable import jsonable
 from ..model import valvegear
-from ..spec import Spec
 from .roots import RTOL_MIN, brentq  # scipy's brentq without importing scipy (issue 14)
 from .statics import SpringDesign, restoring_k2
 
