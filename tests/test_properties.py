@@ -22,8 +22,8 @@ from hypothesis import strategies as st
 from govopt.errors import GovoptError
 from govopt.evaluation import evaluate
 from govopt.governors import REGISTRY
-from govopt.model import spring
 from govopt.spec import parse_spec
+from govopt.springs import helical as hx
 from govopt.units import _normalise, registry
 
 SPECS = {p.stem: p for p in bundled_specs()}
@@ -170,10 +170,10 @@ def test_stress_scales_as_F_r_over_d_cubed(F, d, index, k, correction):
     proportional to ``F``, and ``k^-2`` when ``d`` and ``r`` both grow by ``k`` (the index
     kept); uncorrected, exactly ``16 F r / (pi d^3)``."""
     r = index * d / 2.0
-    tau = spring.shear_stress(F, d, r, correction)
+    tau = hx.shear_stress_r(F, d, r, correction)
     assume(np.isfinite(tau) and tau > 0)
-    assert spring.shear_stress(3.0 * F, d, r, correction) == pytest.approx(3.0 * tau, rel=1e-12)
-    assert spring.shear_stress(F, k * d, k * r, correction) == pytest.approx(tau / k**2,
+    assert hx.shear_stress_r(3.0 * F, d, r, correction) == pytest.approx(3.0 * tau, rel=1e-12)
+    assert hx.shear_stress_r(F, k * d, k * r, correction) == pytest.approx(tau / k**2,
                                                                               rel=1e-12)
     if correction == "none":
         assert tau == pytest.approx(16.0 * F * r / (math.pi * d**3), rel=1e-14)

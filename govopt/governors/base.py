@@ -220,21 +220,19 @@ class Governor(ABC):
     def spring_rate(self, design, material) -> float:
         """The spring's stiffness ``kappa`` (N/m) from the design's section: a helical spring,
         ``G d^4 / (64 r^3 n)`` (Wahl 1944; Hamabe Ex. 1)."""
-        from ..model import spring
+        from ..springs import helical as hx
 
-        return spring.stiffness(design.wire_diameter, design.coil_radius, design.active_turns,
-                                material.shear_modulus)
+        return hx.stiffness_r(design.wire_diameter, design.coil_radius, design.active_turns,
+                              material.shear_modulus)
 
     def spring_stress(self, x, F, sd, material):
         """The spring's stress (Pa) under force ``F`` at ``x``: helical shear ``16 F r/(pi d^3)``
         with the material's correction (Wahl 1944; Bergstraesser's k, EN 13906-1)."""
-        from ..model import spring
+        from ..springs import helical as hx
 
         if material.stress_correction == "bergstrasser":
-            from ..springs import helical
-
-            return helical.shear_stress(F, sd.d, 2.0 * sd.r, "bergstrasser")
-        return spring.shear_stress(F, sd.d, sd.r, material.stress_correction)
+            return hx.shear_stress(F, sd.d, 2.0 * sd.r, "bergstrasser")
+        return hx.shear_stress_r(F, sd.d, sd.r, material.stress_correction)
 
     def spring_checks(self, spec, sd, char, vib=None) -> list:
         """The spring's own checks (:class:`govopt.result.Check`): a helical spring's largest

@@ -24,7 +24,8 @@ from typing import ClassVar
 
 import numpy as np
 
-from ..model import linkage, spring, valvegear
+from ..model import linkage, valvegear
+from ..springs import helical as hx
 from ..units import G_STANDARD
 from .base import Governor, Terms
 
@@ -359,8 +360,8 @@ def paper_sizing(spec, m: float, r: float) -> dict:
         out[f"l_{tag}"] = linkage.half_length(alpha, g.a, g.b)
         out[f"F_{tag}"] = out[f"M_f{tag}"] / out[f"h_{tag}"]
     out["kappa"] = (out["F_a"] - out["F_i"]) / (2.0 * (out["l_a"] - out["l_i"]))
-    out["d"] = spring.wire_diameter_for_stress(out["F_a"], r, mat.allowable_shear_stress)
-    out["n"] = spring.turns_for_stiffness(out["kappa"], out["d"], r, mat.shear_modulus)
+    out["d"] = hx.wire_diameter_for_stress(out["F_a"], r, mat.allowable_shear_stress)
+    out["n"] = hx.turns_for_stiffness(out["kappa"], out["d"], r, mat.shear_modulus)
     return out
 
 

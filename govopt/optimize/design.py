@@ -35,8 +35,8 @@ from ..analysis import loadchange, statics
 from ..analysis import transient as tr
 from ..errors import DesignError, InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS, design_size_error
-from ..model import spring
 from ..spec import Design, Requirements, Spec, Speed
+from ..springs import helical as hx
 from ..units import G_STANDARD, SI_UNITS
 from .kappa import Affine, KappaModel
 from .margins import margins_to_ends, window_centre
@@ -312,7 +312,7 @@ def helical_catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
     """Catalogue wire x coil-radius grid x turn step (helical springs; Wahl 1944)."""
     d, r, n = spring_catalogue(req)
     mat = spec.material
-    kappa = spring.stiffness(d, r, n, mat.shear_modulus)
+    kappa = hx.stiffness_r(d, r, n, mat.shear_modulus)
     harmonics, fatigue = (), None
     if mat.grade is not None:  # the wire grade's table (govopt.analysis.spring_engineering)
         from ..analysis import spring_engineering as se
@@ -324,7 +324,7 @@ def helical_catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
                 return se.screen_fatigue(spec, d[cc], r[cc], n[cc], kappa[cc], l0, swing)
     return SpringCatalogue(
         kappa=kappa,
-        mass=spring.wire_mass(d, r, n, mat.density),
+        mass=hx.wire_mass(d, r, n, mat.density),
         fields={"wire_diameter": d, "coil_radius": r, "active_turns": n},
         check=lambda cc, F, l0: spring_checks(spec, req, d[cc], r[cc], n[cc], F, l0,
                                               harmonics),
@@ -370,22 +370,22 @@ def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=(
     one, the compression spring's geometric rows too (coil clash, buckling, free pitch:
     :func:`govopt.analysis.spring_engineering.geometry_rows`)."""
     mat = spec.material
-    C = spring.spring_index(d, r)
+    C = hx.spring_index_r(d, r)
     ok = (C >= req.spring_index[0]) & (C <= req.spring_index[1])
     from ..analysis import spring_engineering as se
 
     if mat.grade is None:  # the stress against the spec's allowable; coil clash and buckling
-        ok &= spring.shear_stress(F_max, d, r, mat.stress_correction) \
+        ok &= hx.shear_stress_r(F_max, d, r, mat.stress_correction) \
             <= mat.allowable_shear_stress
-        ok &= se.geometry_screen(spec, d, r, n, spring.stiffness(d, r, n, mat.shear_modulus), l0)
+        ok &= se.geometry_screen(spec, d, r, n, hx.stiffness_r(d, r, n, mat.shear_modulus), l0)
     else:
-        ok &= se.screen(spec, d, r, n, spring.stiffness(d, r, n, mat.shear_modulus), l0,
+        ok &= se.screen(spec, d, r, n, hx.stiffness_r(d, r, n, mat.shear_modulus), l0,
                         harmonics)
     ok &= (n + 1.0) * d <= spec.governor.spring_length_factor * l0
     if req.max_outer_diameter is not None:
         ok &= 2.0 * r + d <= req.max_outer_diameter
     if req.min_surge_frequency is not None:
-        ok &= spring.surge_frequency(d, r, n, mat.shear_modulus, mat.density) \
+        ok &= hx.surge_frequency_r(d, r, n, mat.shear_modulus, mat.density) \
             >= req.min_surge_frequency
     return ok
 
@@ -614,11 +614,11 @@ def spring_mass_lower_bound(F, per_kappa, k_lo, k_hi, k_s, G, density):
 
     A spring stressed to exactly ``k_s`` meets the bound (d = 10 mm, r = 50 mm, n = 5):
 
-    >>> from govopt.model import spring
+    >>> from govopt.springs import helical as hx
     >>> G, rho, F = 80e9, 7850.0, 500.0
-    >>> kappa, tau = spring.stiffness(0.01, 0.05, 5, G), spring.shear_stress(F, 0.01, 0.05)
+    >>> kappa, tau = hx.stiffness_r(0.01, 0.05, 5, G), hx.shear_stress_r(F, 0.01, 0.05)
     >>> lb = spring_mass_lower_bound(F, 0.0, kappa, kappa, tau, G, rho)
-    >>> bool(np.isclose(lb, spring.wire_mass(0.01, 0.05, 5, rho), rtol=1e-12))
+    >>> bool(np.isclose(lb, hx.wire_mass(0.01, 0.05, 5, rho), rtol=1e-12))
     True
     """
     F, p = np.asarray(F, dtype=float), np.maximum(np.asarray(per_kappa, dtype=float), 0.0)

@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from govopt.model import spring
+from govopt.springs import helical as hx
 
 #: Stand-ins for "no limit" (the GP needs a positive number for every parameter).
 _BIG = 1e6
@@ -227,7 +227,7 @@ def energy_optimum(values: Mapping[str, float], correction: str = "none",
     if not slack[best] > _ROUNDING:  # no spring of the family meets every row
         return None
     d, r, n = float(d[best]), float(r[best]), float(n[best])
-    return EnergyOptimum(d=d, r=r, n=n, objective=float(spring.wire_mass(d, r, n, P["density"])),
-                         stiffness=float(spring.stiffness(d, r, n, G)),
-                         stress=float(spring.shear_stress(F0 + p * spring.stiffness(d, r, n, G),
+    return EnergyOptimum(d=d, r=r, n=n, objective=float(hx.wire_mass(d, r, n, P["density"])),
+                         stiffness=float(hx.stiffness_r(d, r, n, G)),
+                         stress=float(hx.shear_stress_r(F0 + p * hx.stiffness_r(d, r, n, G),
                                                           d, r, correction)))
