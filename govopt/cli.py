@@ -113,7 +113,7 @@ def evaluate(*, spec, geometry, json_out, xlsx, force, plots, full, section) -> 
 def design(*, spec, json_out, output, xlsx, force, plots, full, section) -> None:
     """Find the best design for the spec's requirements (default: bundled hamabe-design).
     Files are written only where asked (-o, --xlsx, --plots), as by evaluate."""
-    from .optimize.design import design as run
+    from .optimize.search import design as run
 
     _run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN)), json_out, spec or DEFAULT_DESIGN,
                     xlsx=xlsx, output=output, force=force, plots=plots,

@@ -38,6 +38,7 @@ import pandas as pd
 from . import limits
 from .errors import GovoptError
 from .spec import Spec, parse_spec, read_spec_data, with_values
+from .stats import wilson
 
 MODES = ("evaluate", "design")
 COMBINE = ("grid", "zip", "lhs", "sobol")
@@ -51,9 +52,6 @@ OBJECTIVES = {
     "irregularity": ("irregularity", "min"), "max_stress": ("max_stress_Pa", "min"),
     "k2_margin": ("margin: k^2 > 0 (stability)", "max"),
 }
-
-#: z of the two-sided 95 % confidence interval (Wilson score interval)
-Z95 = 1.959963984540054
 
 #: a tolerance band ``+-X`` is read as +-3 standard deviations of a normal scatter (the usual
 #: reading of a manufacturing tolerance: 99.73 % of the parts within it), unless ``uniform``
@@ -910,7 +908,7 @@ def _design_points(study: Study, points: list[dict]) -> list[dict]:
     :func:`govopt.bulk.result_row`, with the optimiser's objective and status."""
     from .bulk import result_row
     from .errors import InfeasibleError
-    from .optimize.design import design
+    from .optimize.search import design
 
     base = study.base()
     rows = []
@@ -1601,25 +1599,6 @@ def pareto_front(frame: pd.DataFrame, objectives) -> np.ndarray:
         keep.append(i)
     out[idx[keep]] = True
     return out
-
-
-def wilson(k: int, n: int, z: float = Z95) -> tuple[float, float]:
-    """Wilson score interval of a binomial proportion ``k/n`` (E. B. Wilson, "Probable inference,
-    the law of succession, and statistical inference", JASA 22, 1927; Agresti & Coull, Am. Stat.
-    52, 1998): ``(p + z^2/2n -+ z sqrt(p(1-p)/n + z^2/4n^2)) / (1 + z^2/n)``.
-
-    >>> [round(v, 4) for v in wilson(95, 100)]
-    [0.8882, 0.9785]
-    """
-    if n == 0:
-        return math.nan, math.nan
-    p = k / n
-    den = 1.0 + z * z / n
-    mid = p + z * z / (2 * n)
-    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n))
-    lo = 0.0 if k == 0 else max(0.0, (mid - half) / den)  # exact ends, not rounding
-    hi = 1.0 if k == n else min(1.0, (mid + half) / den)
-    return lo, hi
 
 
 def tolerance_summary(frame: pd.DataFrame) -> dict:

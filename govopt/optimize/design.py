@@ -707,13 +707,10 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
     return best
 
 
-def design(spec: Spec):
-    """Find the best design for the spec's requirements; see the module docstring.
-
-    Raises :class:`~govopt.errors.InfeasibleError` with a diagnosis when no design exists, and
-    :class:`~govopt.errors.DesignError` naming the failed checks when the chosen design fails
-    its final re-evaluation (never returns a design that fails a check).
-    """
+def validated(spec: Spec) -> Spec:
+    """The spec with its design requirements filled in (:func:`requirements`), after the checks
+    every search needs: grids of a size govopt allows, a ``[material]`` where a spring is to be
+    chosen, a speed range. Raises :class:`~govopt.errors.InfeasibleError` naming the key."""
     req = requirements(spec)
     spec = replace(spec, requirements=req)  # the checks report the requirements designed to
     too_big = design_size_error(req, spec.analysis.points, spec.governor.spring,
@@ -725,10 +722,23 @@ def design(spec: Spec):
                               "which needs its [material]")
     if spec.speed is None:
         raise InfeasibleError(f"{spec.path}: speed: missing: a design needs the speed range")
-    if req.robust:  # a tolerance box: the worst case over it (govopt.optimize.robust)
-        from .robust import robust_design
+    return spec
 
-        return robust_design(spec)
+
+def design(spec: Spec):
+    """Find the best nominal design for the spec's requirements; see the module docstring.
+    (:func:`govopt.optimize.search.design`, which ``govopt.design`` is, runs the robust search of
+    :mod:`govopt.optimize.robust` instead where the requirements ask for a tolerance box.)
+
+    Raises :class:`~govopt.errors.InfeasibleError` with a diagnosis when no design exists, and
+    :class:`~govopt.errors.DesignError` naming the failed checks when the chosen design fails
+    its final re-evaluation (never returns a design that fails a check).
+    """
+    spec = validated(spec)
+    req = spec.requirements
+    if req.robust:
+        raise ValueError("a robust spec is designed by govopt.optimize.search.design (the "
+                         "tolerance box's search), not the nominal search")
     if spec.governor.spring is None:  # a dead-weight governor: masses only
         cand, stats = dead_weight_search(spec, req)
         return _result(spec, req, cand, stats, None)

@@ -29,7 +29,7 @@ the robust optimum (the least objective among the catalogue's candidates that do
 the check that fails at a corner most often). It is then verified by a seeded Monte-Carlo
 sample, uniform within the box (every part anywhere within its tolerance), through the same
 evaluator: the probability that every check holds, with its 95 % Wilson interval
-(:func:`govopt.study.wilson`), and the checks that fail in the sample - where the corners hold
+(:func:`govopt.stats.wilson`), and the checks that fail in the sample - where the corners hold
 and the sample does not, a check is not monotone in a tolerance (no inner maximisation is done).
 
 The checks of the search bounds (``pendulum mass >= min`` ...) are not requirements on a made
@@ -47,6 +47,7 @@ import numpy as np
 
 from ..errors import InfeasibleError
 from ..spec import Design, Requirements, Spec
+from ..stats import wilson
 from . import design as dz
 
 #: the fitter's settings of the adjusting nut and of the dash-pot valve tried over each one's
@@ -332,7 +333,6 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     box (``requirements.robust_samples`` samples, ``robust_seed``), the nut set by the fitter as
     at the corners; the probability that every check holds with its 95 % Wilson interval."""
     from ..bulk import design_arrays
-    from ..study import wilson
 
     base = {k: v[:1] for k, v in design_arrays(spec.with_design(design), [design]).items()}
     box = candidate_box(spec, req, base)
