@@ -362,7 +362,8 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
     mat = top.sub("material", required=False)
     material = None
     if mat is not None:
-        helical = governor.spring != "leaf"
+        kind = governor.spring_kind
+        helical = kind is None or kind.helical  # shear values for a wire, E for a leaf
         grade = _grade(mat, helical)
         material = Material(
             allowable_shear_stress=mat.quantity("allowable_shear_stress", "stress",
@@ -421,7 +422,7 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
         analysis = replace(analysis, omega_mean=speed.omega_mean)
     requirements = _requirements(top, governor)
     too_big = requirements and limits.design_size_error(requirements, analysis.points,
-                                                        governor.spring, governor.mass_key)
+                                                        governor.spring_kind, governor.mass_key)
     if too_big:  # counted before anything is allocated
         top.fail(*too_big)
     form = _spring_form(top.sub("spring", required=False))
@@ -537,26 +538,18 @@ def _design(ds: Reader | None, governor: Governor, material: Material | None) ->
     dashpot = ds.quantity("dashpot_f", damping, required=False, nonnegative=True)
     a1 = ds.quantity("dashpot_a1", damping, required=False, nonnegative=True)
     spring = {}
-    if governor.spring is not None:
+    kind = governor.spring_kind
+    if kind is not None:
         if ds.has("spring_stiffness"):
             spring["spring_stiffness"] = ds.quantity("spring_stiffness", "stiffness")
-        elif governor.spring == "leaf":  # a flat spring: its section (the length is the type's)
+        else:  # the kind's section (a leaf's length is the governor type's)
             if material is None:
-                ds.fail("leaf_width", "a leaf given by its section needs a [material] table "
-                                      "(or give spring_stiffness)")
-            spring = dict(leaf_width=ds.quantity("leaf_width", "length"),
-                          leaf_thickness=ds.quantity("leaf_thickness", "length"))
-            if spring["leaf_thickness"] >= spring["leaf_width"]:
-                ds.fail("leaf_thickness", "expected a strip thinner than it is wide")
-        else:
-            if material is None:
-                ds.fail("wire_diameter", "a spring given by its wire needs a [material] table "
-                                         "(or give spring_stiffness)")
-            spring = dict(wire_diameter=ds.quantity("wire_diameter", "length"),
-                          coil_radius=ds.quantity("coil_radius", "length"),
-                          active_turns=ds.number("active_turns"))
-            if spring["wire_diameter"] >= 2.0 * spring["coil_radius"]:
-                ds.fail("wire_diameter", "expected a wire thinner than the coil diameter 2 r")
+                ds.fail(*kind.needs_material)
+            spring = {key: ds.number(key) if dim is None else ds.quantity(key, dim)
+                      for key, dim in kind.section}
+            bad = kind.section_error(spring)
+            if bad:
+                ds.fail(*bad)
     key = governor.mass_key
     design = Design(
         pendulum_mass=ds.weight_or_mass(key),
@@ -636,6 +629,7 @@ def _requirements(top: Reader, governor: Governor) -> Requirements | None:
     if req is None and bnd is None and cat is None:
         return None
     d = Requirements()
+    kind = governor.spring_kind
     kw = {}
     if req is not None:
         kw.update(
@@ -671,9 +665,8 @@ def _requirements(top: Reader, governor: Governor) -> Requirements | None:
             robust_seed=req.number("robust_seed", required=False, default=d.robust_seed,
                                    nonnegative=True, integer=True),
         )
-        if governor.spring == "leaf":
-            kw["max_bow_ratio"] = req.number("max_bow_ratio", required=False,
-                                             default=d.max_bow_ratio, high=0.5)
+        for key, high in kind.requirement_numbers if kind is not None else ():
+            kw[key] = req.number(key, required=False, default=getattr(d, key), high=high)
         req.finish()
     if bnd is not None:
         mk = governor.mass_key
@@ -683,19 +676,12 @@ def _requirements(top: Reader, governor: Governor) -> Requirements | None:
             dashpot=_pair(bnd, "dashpot_f", "damping" if governor.coordinate == "angle"
                           else "linear_damping", None),
         )
-        if governor.spring == "leaf":
-            kw.update(leaf_width=_pair(bnd, "leaf_width", "length", d.leaf_width),
-                      leaf_thickness=_pair(bnd, "leaf_thickness", "length", d.leaf_thickness))
-        elif governor.spring is not None:
-            kw.update(
-                wire_diameter=_pair(bnd, "wire_diameter", "length", d.wire_diameter),
-                coil_radius=_pair(bnd, "coil_radius", "length", d.coil_radius),
-                active_turns=_pair(bnd, "active_turns", "dimensionless", d.active_turns),
-            )
+        for key, dim in kind.bounds if kind is not None else ():
+            kw[key] = _pair(bnd, key, dim, getattr(d, key))
         bnd.finish()
     if cat is not None:
-        if governor.spring == "leaf":
-            cat.choice("leaf_sections", ("standard",), "standard")  # govopt/data/leaf_stock.csv
+        for key, choices, default in kind.catalogue_choices if kind is not None else ():
+            cat.choice(key, choices, default)
         wires = cat.raw("wire_diameters", False)
         kw.update(
             wire_diameters=PREFERRED_WIRE if wires in (None, "preferred")

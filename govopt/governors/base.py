@@ -40,6 +40,8 @@ from typing import ClassVar
 
 import numpy as np
 
+from ..springs.kinds import KINDS, SpringKind
+
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
 #: (govopt's rule: every key's unit in its name), by the coordinate's dimension: ``x`` itself
 #: and its rate; the generalised force ``Q`` (N m about an angle, N along a length) and inertia
@@ -211,6 +213,12 @@ class Governor(ABC):
         return f"{stem}_m", float(x)
 
     # -- the spring plug: a helical spring by default (a type with another spring overrides) --
+
+    @property
+    def spring_kind(self) -> SpringKind | None:
+        """The spring's kind (:data:`govopt.springs.kinds.KINDS`: its spec keys and catalogue
+        limits), None for a dead-weight governor."""
+        return None if self.spring is None else KINDS[self.spring]
 
     @property
     def spring_loaded_check(self) -> str:

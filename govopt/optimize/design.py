@@ -713,7 +713,7 @@ def validated(spec: Spec) -> Spec:
     chosen, a speed range. Raises :class:`~govopt.errors.InfeasibleError` naming the key."""
     req = requirements(spec)
     spec = replace(spec, requirements=req)  # the checks report the requirements designed to
-    too_big = design_size_error(req, spec.analysis.points, spec.governor.spring,
+    too_big = design_size_error(req, spec.analysis.points, spec.governor.spring_kind,
                                 spec.governor.mass_key)
     if too_big:  # counted from bounds and steps before any grid is built (govopt.limits)
         raise InfeasibleError(f"{spec.path}: {too_big[0]}: {too_big[1]}")

@@ -130,7 +130,7 @@ def candidate_box(spec: Spec, req: Requirements, cols: dict) -> Box:
     n = len(cols["pendulum_mass"])
     out = {}
     if req.robust_spring_grade is not None:
-        if spec.governor.spring in (None, "leaf"):
+        if spec.governor.spring_kind is None or not spec.governor.spring_kind.helical:
             raise InfeasibleError(f"{spec.path}: requirements.robust_spring_grade: EN 15800 "
                                   "tolerances are for helical springs")
         d_tol, r_tol, l0_tol = spring_tolerances(spec, req.robust_spring_grade,
