@@ -140,12 +140,12 @@ def result_row(res: Result) -> dict:
 #: the objectives of `govopt design` (:func:`govopt.optimize.design.objective_values`) as columns:
 #: moving mass ``m + M + spring mass``, spring mass, the longest settling time, the vibration's
 #: peak-to-peak
-_OBJECTIVE_COLUMN = {"moving_mass": "moving_mass_kg", "spring_mass": "spring_mass_kg",
+OBJECTIVE_COLUMN = {"moving_mass": "moving_mass_kg", "spring_mass": "spring_mass_kg",
                      "settling_time": "settling_time_s", "vibration": "vibration_p2p_rad"}
 
 
 def _objective(name: str, row: dict) -> float:
-    return float(row.get(_OBJECTIVE_COLUMN[name], math.nan))
+    return float(row.get(OBJECTIVE_COLUMN[name], math.nan))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -553,7 +553,7 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
     frame = pd.DataFrame(out)
     obj = _objective_name(spec)
     frame["objective"] = obj
-    key = _OBJECTIVE_COLUMN[obj]
+    key = OBJECTIVE_COLUMN[obj]
     frame["objective_value"] = frame[key] if key in frame else np.nan
     frame["status"], frame["message"] = checks.status()
     return frame, impossible

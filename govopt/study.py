@@ -81,17 +81,17 @@ def _scalar(text: str):
 
 def _quantity(text: str, where: str):
     """``text`` as a pint quantity; an error names ``where`` (``sweep KEY``)."""
-    from .units import UnitError, _normalise, _strict_units, registry
+    from .units import UnitError, normalise, registry, strict_units
 
     if len(text) > limits.MAX_QUANTITY_CHARS:
         raise StudyError(f"{where}: {limits.shorten(text)}: a quantity of at most "
                          f"{limits.MAX_QUANTITY_CHARS} characters (govopt's limit)")
     try:  # what pint would misread, or take minutes over ('9**9**9'), refused first
-        _strict_units(_normalise(text), shown=text)
+        strict_units(normalise(text), shown=text)
     except UnitError as exc:
         raise StudyError(f"{where}: cannot read {text!r} as a quantity: {exc}") from None
     try:
-        return registry().Quantity(_normalise(text))
+        return registry().Quantity(normalise(text))
     except Exception as exc:
         raise StudyError(f"{where}: cannot read {text!r} as a quantity "
                          f"({type(exc).__name__})") from None

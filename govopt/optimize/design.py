@@ -690,9 +690,9 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
         sol = energy_optimum(complete_values(values, "band"), mat.stress_correction, k_exp)
         if sol is None:  # not certified by the energy bound: the GP (cvxpy) decides
             if gp is None:
-                from .spring_gp import _cached_gp
+                from .spring_gp import cached_gp
 
-                gp = _cached_gp("mass", mat.stress_correction, "band", k_exp)
+                gp = cached_gp("mass", mat.stress_correction, "band", k_exp)
             sol = gp.solve(**values)
         if not sol.ok:
             continue

@@ -62,12 +62,12 @@ from govopt.springs import helical as hx
 from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize (issue 14)
 from ._cvxpy import installed_solvers
 from .gp_table import (
-    _MATERIAL_KEYS,
     DEFAULT_BOUNDS,
-    _Spec,
-    _specs,
-    _stress_g,
+    MATERIAL_KEYS,
+    GPConstraint,
     complete_values,
+    gp_constraints,
+    stress_g,
 )
 
 __all__ = [
@@ -137,7 +137,7 @@ def _objective_expr(objective, d, r, n, t, P, correction, end_coils=0.0):
     if objective == "solid length":
         return _coils(n, end_coils) * d
     if objective == "stress":
-        return _stress_g(d, r, n, t, P, correction)
+        return stress_g(d, r, n, t, P, correction)
     if objective == "outer diameter":
         return 2.0 * r + d
     if objective == "body length":
@@ -407,11 +407,11 @@ class SpringGP:
         self.solver_opts = {**defaults, **(solver_opts or {})}
         self._fallback_opts = {} if defaults and not solver_opts else None
         kappa_keys = ("kappa",) if stiffness == "equality" else ("kappa_min", "kappa_max")
-        self.parameter_names = kappa_keys + _MATERIAL_KEYS + tuple(DEFAULT_BOUNDS)
+        self.parameter_names = kappa_keys + MATERIAL_KEYS + tuple(DEFAULT_BOUNDS)
         self.params = {k: cp.Parameter(pos=True, name=k) for k in self.parameter_names}
         #: ``m`` of a diameter-dependent allowable ``k_s d^-m`` (0: a constant ``k_s``)
         self.allowable_exponent = float(allowable_exponent)
-        self.specs = _specs(correction, stiffness, self.allowable_exponent)
+        self.specs = gp_constraints(correction, stiffness, self.allowable_exponent)
         self.d = cp.Variable(pos=True, name="d")
         self.r = cp.Variable(pos=True, name="r")
         self.n = cp.Variable(pos=True, name="n")
@@ -512,7 +512,7 @@ class SpringGP:
             g = base
         return [16.0 / np.pi * F * g * d**m <= self.free_length_params["k_solid"]]
 
-    def _constraint(self, s: _Spec, slack=None):
+    def _constraint(self, s: GPConstraint, slack=None):
         g = s.g(self.d, self.r, self.n, self.t, self.params)
         c = self.params[s.limit]
         if s.sense == "upper":
@@ -899,7 +899,7 @@ def best_discrete(solution_bounds: Mapping[str, float] | SpringSolution,
         correction = solution_bounds.correction
         objective = solution_bounds.objective_name
         solution_bounds = solution_bounds.inputs
-    gp = _cached_gp(objective, correction)
+    gp = cached_gp(objective, correction)
     return gp.best_discrete(catalogue_d, turn_step=turn_step, r_step=r_step,
                             stiffness_tol=stiffness_tol, prune=prune, **solution_bounds)
 
@@ -911,7 +911,7 @@ def best_discrete(solution_bounds: Mapping[str, float] | SpringSolution,
 _local = threading.local()
 
 
-def _cached_gp(objective: str, correction: str, stiffness: str = "equality",
+def cached_gp(objective: str, correction: str, stiffness: str = "equality",
                allowable_exponent: float = 0.0, end_coils: float = 0.0,
                free_length: bool = False, solid_exponent: float | None = None,
                envelope: str | None = None) -> SpringGP:
@@ -964,7 +964,7 @@ def size_helical_spring(F_max: float | None = None, stiffness: float | None = No
         stiffness = kappa
     if stiffness is None or F_max is None:
         raise TypeError("give F_max and stiffness, or loads=(F1, x1, F2, x2)")
-    gp = _cached_gp(objective, correction, end_coils=end_coils, envelope=envelope)
+    gp = cached_gp(objective, correction, end_coils=end_coils, envelope=envelope)
     sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k_s, G=G, density=density,
                    **bounds)
     sol.extras = extras

@@ -666,7 +666,7 @@ def design_in_process(repeats: int = 7) -> dict:
     check that its bound (pruned masses, certified by the energy bound where it is attained)
     equals the GP solved by cvxpy at every mass."""
     from ..optimize import design as dz
-    from ..optimize.spring_gp import _cached_gp
+    from ..optimize.spring_gp import cached_gp
     from ..spec import load_spec
 
     spec = load_spec(SPECS / "hamabe-design.toml")
@@ -687,7 +687,7 @@ def design_in_process(repeats: int = 7) -> dict:
         "continuous bound": _cpu_per_call(lambda: dz.continuous_bound(spec, req, km, lo, hi)),
     }
     pruned = dz.continuous_bound(spec, req, km, lo, hi)["objective"]
-    gp = _cached_gp("mass", spec.material.stress_correction, "band")
+    gp = cached_gp("mass", spec.material.stress_correction, "band")
     every = []
     mat = spec.material
     t0 = time.process_time()
