@@ -184,9 +184,9 @@ class Requirements:
     leaf_width: tuple[float, float] = (0.003, 0.06)  # a leaf's section bounds, m
     leaf_thickness: tuple[float, float] = (0.0002, 0.006)
     max_bow_ratio: float = 0.2  # bow / length: the article's stated range of its eq. 8
-    #: robust requirements (issue 24): every check holds over a tolerance box. The spring's
-    #: EN 15800 quality grade (coil diameter, free length; the wire per its EN 10270 grade);
-    #: None: the spring is taken exact
+    #: robust requirements (:mod:`govopt.optimize.robust`): every check holds over a tolerance
+    #: box. The spring's EN 15800 quality grade (coil diameter, free length; the wire per its
+    #: EN 10270 grade); None: the spring is taken exact
     robust_spring_grade: int | None = None
     robust_dashpot: float = 0.0  # the dash-pot setting +- this fraction
     robust_masses: float = 0.0  # the flying and central masses +- this fraction

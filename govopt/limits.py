@@ -1,4 +1,4 @@
-"""Limits on every size a spec or an option can set (issue 15, item 2), each with its reason.
+"""Limits on every size a spec or an option can set, each with its reason.
 
 A spec is a few KiB written by a person; these limits are far beyond any real governor and
 keep every run within seconds and a few hundred MB whatever a spec says. Each one exceeded is

@@ -552,13 +552,9 @@ def _load_study(path: str | Path, *, sweeps: Iterable[str] = (), tolerances: Ite
 # Evaluating points
 # ---------------------------------------------------------------------------------------------
 
-def point_hash(base_digest: str, mode: str, skip, point: dict) -> str:
+def _hasher(base_digest: str, mode: str, skip: tuple) -> Callable[[dict], str]:
     """The key of a point in the database: SHA-256 of its canonical inputs (the spec's digest,
     the mode and analyses, the swept values as written) and govopt's version."""
-    return _hasher(base_digest, mode, tuple(sorted(skip)))(point)
-
-
-def _hasher(base_digest: str, mode: str, skip: tuple) -> Callable[[dict], str]:
     from . import __version__
 
     prefix = _canonical({"base": base_digest, "mode": mode, "skip": list(skip),

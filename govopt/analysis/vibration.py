@@ -69,7 +69,7 @@ import numpy as np
 from ..inputs import Spec
 from ..jsonable import jsonable
 from ..model import valvegear
-from .roots import RTOL_MIN, brentq  # scipy's brentq without importing scipy (issue 14)
+from .roots import RTOL_MIN, brentq  # scipy's brentq without importing scipy
 from .statics import SpringDesign, restoring_k2
 
 #: Relative detuning ``|k^2 - n^2 omega0^2| / max(k^2, n^2 omega0^2)`` below which an undamped
@@ -362,10 +362,6 @@ class VibrationResult:
             return 3
         return 1 if self.k2 < self.omega0**2 else 2
 
-    @property
-    def half_peak_to_peak_rad(self) -> float:
-        return 0.5 * self.peak_to_peak_rad
-
     def amplitude(self, order: int) -> float:
         return self.harmonics[order - 1]["amplitude_rad"]
 
@@ -506,7 +502,7 @@ def first_harmonic_amplitude(spec: Spec, alpha0, k2, inertia, dashpot=None, omeg
         *(np.asarray(v, dtype=float) for v in (k2, inertia, omega0, _f(dashpot), alpha0)))
     eE, eF = E2 / (2.0 * omega0), F2 / (2.0 * omega0)
     beta = np.hypot(eE, eF)
-    from scipy import special  # imported when used (issue 14)
+    from scipy import special  # imported when used (docs/decisions.md)
 
     J0 = special.j0(beta)
     J1_over_beta = np.where(beta > 0, special.j1(beta) / np.where(beta > 0, beta, 1.0), 0.5)

@@ -23,8 +23,8 @@ class _PiecewiseCubic:
     """``f(x) = sum_k c[k, i] (x - x_i)^(3 - k)`` on ``[x_i, x_{i+1}]``, the first and last pieces
     continued outside: scipy's ``PPoly`` for cubics, evaluated in its order of operations (its
     ``evaluate_poly1``: ``c[3] + c[2] s + c[1] s^2 + c[0] s^3``, powers by repeated products), so
-    the numbers are scipy's to the last bit without importing scipy (issue 14: ``evaluate``
-    starts fast). ``x`` and ``f`` in the table's units (here rad)."""
+    the numbers are scipy's to the last bit without importing scipy (``evaluate`` starts fast:
+    docs/decisions.md, imports on demand). ``x`` and ``f`` in the table's units (here rad)."""
 
     def __init__(self, x: np.ndarray, c: np.ndarray):
         self.x, self.c = x, c

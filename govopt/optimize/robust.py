@@ -1,4 +1,4 @@
-"""Robust design: every check holds over a tolerance box, after the fitter's adjustment (issue 24).
+"""Robust design: every check holds over a tolerance box, after the fitter's adjustment.
 
 ``[requirements]`` may ask that the design hold for parts made anywhere within their tolerances:
 
