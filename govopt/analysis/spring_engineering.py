@@ -1,4 +1,4 @@
-"""Spring engineering of a governor's helical spring on the mechanism's own loads (issue 11).
+"""Spring engineering of a governor's helical spring on the mechanism's own loads.
 
 The rules live in :mod:`govopt.springs` (materials, helical geometry, fatigue, EN 15800
 tolerances, the constraint tables); this module feeds them a governor's loads and geometry, for

@@ -178,11 +178,11 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
     give no over-regulation, settle within the limit for every load change and keep the
     vibration bound within its limit; and the best of them (fastest settling, or least
     vibration for that objective; for the mass objectives, which do not depend on it, the
-    centre of its admissible window on a log scale, :func:`~govopt.optimize.margins.window_centre`,
-    issue 24). ``fatigue(swing)``: the candidates' least spring fatigue
-    safety under peak-to-peak swings (candidates x dash-pots; the vibration bound is used, so
-    it errs safe), kept at ``requirements.min_fatigue_safety`` (default 1). Returns a dict of
-    arrays over candidates."""
+    centre of its admissible window on a log scale,
+    :func:`~govopt.optimize.margins.window_centre`). ``fatigue(swing)``: the candidates' least
+    spring fatigue safety under peak-to-peak swings (candidates x dash-pots; the vibration
+    bound is used, so it errs safe), kept at ``requirements.min_fatigue_safety`` (default 1).
+    Returns a dict of arrays over candidates."""
     n = len(rows)
     nan = np.full(n, np.nan)
     if spec.engine is None or not spec.load_changes:  # no dash-pot is designed
@@ -230,7 +230,7 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
         least["vibration"] = np.min(np.where(ok, vib, np.inf), axis=1)
         if req.max_vibration is not None:
             ok = ok & (vib <= req.max_vibration)
-    if fatigue is not None:  # the spring's life under the vibration (issue 11)
+    if fatigue is not None:  # the spring's life under the vibration
         ok = ok & (fatigue(vib) >= (req.min_fatigue_safety or 1.0))
     # the best admissible dash-pot: an infinite score (settling not decided within the time
     # grid's limit, limits.MAX_TRANSIENT_POINTS: a huge flywheel) ranks after every finite one

@@ -5,7 +5,8 @@ The rows of the least-mass helical spring's geometric programme (:mod:`govopt.op
 whose docstring gives each row's source) are functions of ``d, r, n, t`` and the parameter values
 ``P``: cvxpy builds the GP from them, and :func:`energy_optimum` evaluates them in numpy. They
 live apart from :mod:`~govopt.optimize.spring_gp` so that a design whose continuous bound
-:func:`energy_optimum` certifies never imports cvxpy (issue 14, target 2).
+:func:`energy_optimum` certifies never imports cvxpy (docs/decisions.md, imports
+on demand).
 """
 
 from __future__ import annotations

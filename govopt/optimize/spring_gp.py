@@ -59,7 +59,7 @@ import numpy as np
 
 from govopt.springs import helical as hx
 
-from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize (issue 14)
+from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize
 from ._cvxpy import installed_solvers
 from .gp_table import (
     DEFAULT_BOUNDS,

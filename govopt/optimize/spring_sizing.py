@@ -1,5 +1,5 @@
 """A helical spring sized on its own (``govopt spring``): the spring GP, then the spring maker's
-checks of a wire grade (issue 11, item 7).
+checks of a wire grade.
 
 Without a grade this is :func:`govopt.optimize.spring_gp.size_helical_spring` (least mass at a
 stiffness and largest force, certified global). With a grade (:mod:`govopt.springs.materials`)

@@ -443,7 +443,7 @@ def format_summary(res: Result, colour: bool | None = None) -> str:
 
 def format_spring(res: Result) -> list[str]:
     """The spring maker's sheet, the spring's loads, fatigue and tolerance spread, and the
-    sources of the spring engineering checks (issue 11; the checks themselves are rows of the
+    sources of the spring engineering checks (the checks themselves are rows of the
     Checks table, shown once); nothing without a wire spring."""
     from ..analysis.spring_engineering import is_engineering_check
 
