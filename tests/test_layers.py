@@ -2,10 +2,11 @@
 
 Every module's imports are read with :mod:`ast` (module level and inside functions; not the
 annotation-only ``if TYPE_CHECKING:`` blocks, which never run), resolved to govopt modules and
-checked: no import cycle, the physics (analysis, model, springs) imports nothing of the parser,
-the evaluator, the optimiser, the studies, the writers or the CLI, and each module imports only
-its own layer or those below it (docs/architecture: ground floor -> spring and mechanism parts
--> governor types -> analyses -> parser -> evaluator -> optimiser -> studies -> writers -> CLI).
+checked: no import cycle, the physics (analysis, springs, governors) imports nothing of the
+parser, the evaluator, the optimiser, the studies, the writers or the CLI, and each module
+imports only its own layer or those below it (docs/decisions.md, layers: ground floor ->
+springs -> the governor seam -> generic analyses -> governor types -> parser -> evaluator ->
+optimiser -> studies -> writers -> CLI).
 """
 
 import ast
@@ -18,13 +19,14 @@ import govopt
 PACKAGE = Path(govopt.__file__).resolve().parent
 
 #: The layers, lowest first: (name, module prefixes). A module is in the layer of its longest
-#: matching prefix.
+#: matching prefix; the seam's modules are named exactly (:data:`SEAM`).
 LAYERS = (
     ("ground", ("govopt.units", "govopt.limits", "govopt.errors", "govopt.inputs",
                 "govopt.stats", "govopt.jsonable", "govopt.examples")),
-    ("parts", ("govopt.springs", "govopt.model")),
-    ("governors", ("govopt.governors",)),
+    ("springs", ("govopt.springs",)),
+    ("seam", ()),
     ("analysis", ("govopt.analysis", "govopt.fidelity")),
+    ("governor types", ("govopt.governors",)),
     ("parser", ("govopt.spec",)),
     ("evaluator", ("govopt.result", "govopt.evaluation", "govopt.bulk")),
     ("optimize", ("govopt.optimize",)),
@@ -33,7 +35,11 @@ LAYERS = (
     ("cli", ("govopt.cli", "govopt")),
 )
 
-PHYSICS = ("govopt.analysis", "govopt.model", "govopt.springs")
+#: The seam every governor type plugs into (and the registry that finds a type by name, which
+#: imports the types only when asked): the analyses are written on it; a type may use them.
+SEAM = ("govopt.governors", "govopt.governors.base")
+
+PHYSICS = ("govopt.analysis", "govopt.springs", "govopt.governors")
 NOT_FOR_PHYSICS = ("govopt.spec", "govopt.evaluation", "govopt.bulk", "govopt.optimize",
                    "govopt.report", "govopt.cli", "govopt.study")
 
@@ -57,9 +63,6 @@ KNOWN_UPWARD = KNOWN_CYCLE_EDGES | {
     # the helical spring's default checks and sheet on the governor seam (Governor.spring_checks,
     # spring_report) until the spring's requirement rows are read by the one evaluator
     ("govopt.governors.base", "govopt.analysis.spring_engineering"),
-    # the shaft governor's own Part II forcing and Example 1 sizing, written on the analyses
-    ("govopt.governors.shaft", "govopt.analysis.vibration"),
-    ("govopt.governors.shaft", "govopt.analysis.statics"),
     # a study writes its files atomically with the writers' helper
     ("govopt.study", "govopt.report.files"),
 }
@@ -146,6 +149,8 @@ def cycles(graph: dict[str, set[str]]) -> list[list[str]]:
 
 
 def layer(module: str) -> int:
+    if module in SEAM:
+        return [name for name, _ in LAYERS].index("seam")
     best = max(((len(p), i) for i, (_, prefixes) in enumerate(LAYERS) for p in prefixes
                 if module == p or module.startswith(p + ".")), default=None)
     assert best is not None, f"{module} is in no layer: add it to LAYERS"

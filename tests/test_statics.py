@@ -15,8 +15,7 @@ from hypothesis import strategies as st
 import govopt
 from govopt.analysis import statics
 from govopt.governors import shaft
-from govopt.governors.shaft import paper_sizing
-from govopt.model import linkage, valvegear
+from govopt.governors.shaft import linkage, paper_sizing, valvegear
 from govopt.springs import helical as hx
 
 KGF, CM = 9.80665, 0.01

@@ -254,7 +254,7 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
 def vibration_bound(spec: Spec, km: KappaModel, grid: Grid, rows, kappa, f):
     """Sum of the harmonic amplitudes at the normal configuration (Hamabe Part II, with the
     dash-pot): an upper bound of half the peak-to-peak vibration, for candidates x dash-pots."""
-    from ..analysis.vibration import peak_amplitude_bound
+    from ..governors.shaft.vibration import peak_amplitude_bound
 
     i_n = int(np.argmin(np.abs(grid.alpha - spec.governor.alpha_normal)))
     k2 = (km.k2.x[rows, i_n] * np.asarray(kappa) + km.k2.y[rows, i_n])[:, None]

@@ -425,7 +425,8 @@ def load_change_suite(quick: bool = False) -> list[Point]:
 def vibration_suite(quick: bool = False) -> list[Point]:
     """Peak-to-peak vibration of Hamabe's case a (with its dash-pot) and near resonance
     (``k^2 = 0.98 omega0^2``, undamped) with N harmonics, against 1024 harmonics."""
-    from ..analysis import statics, vibration
+    from ..analysis import statics
+    from ..governors.shaft import vibration
     from ..spec import load_spec
 
     spec = load_spec(SPECS / "hamabe-a.toml")

@@ -537,7 +537,7 @@ def truncation_error(n_harmonics: int, delta, omega, q, e, s, P1, P3, P4, m_v, m
     tail does not decay at all: at each friction switch a truncated Fourier series misses half the
     jump, ``(q/2) P1 |cos delta|``, plus Gibbs' overshoot. The pendulum filters the tail by
     ``1/n^2``, so its response converges like ``1/N^2``; see
-    :mod:`govopt.analysis.vibration`.)
+    :mod:`govopt.governors.shaft.vibration`.)
     """
     a, b = reaction_harmonics(delta, omega, q, e, s, P1, P3, P4, m_v, m_e, n_harmonics, engine)
     total = mean_square_reaction(delta, omega, q, e, s, P1, P3, P4, m_v, m_e, engine)

@@ -66,11 +66,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..inputs import Spec
-from ..jsonable import jsonable
-from ..model import valvegear
-from .roots import RTOL_MIN, brentq  # scipy's brentq without importing scipy
-from .statics import SpringDesign, restoring_k2
+from ...analysis.roots import RTOL_MIN, brentq  # scipy's brentq without importing scipy
+from ...analysis.statics import SpringDesign, restoring_k2
+from ...inputs import Spec
+from ...jsonable import jsonable
+from . import valvegear
 
 #: Relative detuning ``|k^2 - n^2 omega0^2| / max(k^2, n^2 omega0^2)`` below which an undamped
 #: harmonic is treated as exactly resonant (amplitude ``inf``).
@@ -175,7 +175,8 @@ def forcing_harmonics(spec: Spec, alpha0, m, inertia, omega0=None, n_harmonics: 
     tau) + b_n sin(n tau)]``, N m, shape ``broadcast(alpha0, m, inertia, omega0).shape + (N+1,)``.
 
     ``a_n, b_n`` are the paper's ``I M_n, I N_n`` (eq. 20, 21); without speed fluctuation
-    ``a_n + i b_n = -(reaction harmonic n)`` of :func:`govopt.model.valvegear.reaction_harmonics`,
+    ``a_n + i b_n = -(reaction harmonic n)`` of
+    :func:`govopt.governors.shaft.valvegear.reaction_harmonics`,
     e.g. ``b_1 = -B1``. Exact to rounding for every order (:func:`valvegear.piecewise_fourier`,
     split at the friction switches in ``tau``). Vectorised over designs and configurations.
     """
