@@ -208,3 +208,37 @@ def test_no_private_name_imported_across_modules():
                 bad += [f"{path.name}: {a.name}" for a in node.names
                         if a.name.startswith("_") and a.name != "__version__"]
     assert bad == []
+
+
+def test_no_spring_kind_branch_outside_the_spring_plug():
+    """No ``== "leaf"`` (or ``!=``, ``in (..., "leaf")``) outside the springs and the leaf's
+    governor: the spec parser, the limits and the searches read the kind's declarations
+    (:mod:`govopt.springs.kinds`)."""
+    import re
+
+    branch = re.compile(r"""(==|!=)\s*["']leaf["']|["']leaf["']\s*(==|!=)|in \([^)]*["']leaf["']""")
+    own = (PACKAGE / "springs", PACKAGE / "governors" / "traction_leaf.py")
+    bad = [f"{p.relative_to(PACKAGE)}:{i}" for p in PACKAGE.rglob("*.py")
+           if not any(p == o or o in p.parents for o in own)
+           for i, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1)
+           if branch.search(line)]
+    assert bad == []
+    assert branch.search('if governor.spring == "leaf":')  # the pattern finds what it forbids
+
+
+def test_spring_kinds_declare_their_spec_keys():
+    """Each governor spring kind is a plug; the parser reads a leaf's and a wire's section from
+    its declaration, in the order it states (errors name the first missing key)."""
+    from govopt.springs.kinds import KINDS
+
+    assert set(KINDS) == {"compression", "tension", "leaf"}
+    assert [k for k, _ in KINDS["leaf"].section] == ["leaf_width", "leaf_thickness"]
+    assert [k for k, _ in KINDS["tension"].section] == ["wire_diameter", "coil_radius",
+                                                        "active_turns"]
+    assert KINDS["compression"].helical and not KINDS["leaf"].helical
+    assert KINDS["leaf"].section_error({"leaf_width": 0.01, "leaf_thickness": 0.02})[0] \
+        == "leaf_thickness"
+    assert KINDS["tension"].section_error({"wire_diameter": 0.01, "coil_radius": 0.004}) \
+        is not None
+    assert KINDS["tension"].section_error({"wire_diameter": 0.002, "coil_radius": 0.01}) \
+        is None
