@@ -67,7 +67,8 @@ class LoadChangeModel:
 
     @property
     def net0(self) -> float:
-        """Initial net generalised force ``C eta0 - I k^2 xi0`` on the resting flying masses, N m."""
+        """Initial net generalised force ``C eta0 - I k^2 xi0`` on the resting flying masses
+        (N m about an angle)."""
         return self.C * self.eta0 - self.I * self.k2 * self.xi0
 
     def to_dict(self) -> dict:
