@@ -28,8 +28,8 @@ import sys
 if {scipy!r}:
     import numpy as np
     from scipy import interpolate, optimize
-    from govopt.analysis import friction, roots, transient, vibration
-    from govopt.model import valvegear
+    from govopt.analysis import friction, roots, transient
+    from govopt.governors.shaft import valvegear, vibration
 
     def smooth(table_alpha, table_delta, kind):
         make = {{"pchip": interpolate.PchipInterpolator, "cubic": interpolate.CubicSpline}}[kind]

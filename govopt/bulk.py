@@ -27,9 +27,9 @@ import pandas as pd
 from .analysis import loadchange, statics
 from .analysis import transient as tr
 from .governors import Governor
-from .model import spring
 from .result import Result
 from .spec import Design, Spec
+from .springs import helical as hx
 
 #: the fields of :class:`govopt.spec.Design`: the columns a frame of designs may have (SI)
 DESIGN_FIELDS = tuple(f.name for f in fields(Design))
@@ -140,12 +140,12 @@ def result_row(res: Result) -> dict:
 #: the objectives of `govopt design` (:func:`govopt.optimize.design.objective_values`) as columns:
 #: moving mass ``m + M + spring mass``, spring mass, the longest settling time, the vibration's
 #: peak-to-peak
-_OBJECTIVE_COLUMN = {"moving_mass": "moving_mass_kg", "spring_mass": "spring_mass_kg",
+OBJECTIVE_COLUMN = {"moving_mass": "moving_mass_kg", "spring_mass": "spring_mass_kg",
                      "settling_time": "settling_time_s", "vibration": "vibration_p2p_rad"}
 
 
 def _objective(name: str, row: dict) -> float:
-    return float(row.get(_OBJECTIVE_COLUMN[name], math.nan))
+    return float(row.get(OBJECTIVE_COLUMN[name], math.nan))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -403,7 +403,7 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
         if gov.spring is None:
             kappa, l0 = np.zeros_like(m), np.zeros_like(m)
         else:
-            rate = (spring.stiffness(d, r, nt, mat.shear_modulus) if mat is not None
+            rate = (hx.stiffness_r(d, r, nt, mat.shear_modulus) if mat is not None
                     and mat.shear_modulus is not None else np.full_like(m, np.nan))
             kappa = np.where(np.isfinite(col["spring_stiffness"]), col["spring_stiffness"], rate)
             l0 = col["free_half_length"]
@@ -436,7 +436,7 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
         helical = (mat is not None) & np.isfinite(cols["wire_diameter"])
         stress = np.full((n, K), np.nan)
         if gov.spring is not None and mat is not None:
-            stress = np.broadcast_to(spring.shear_stress(F, d, r, mat.stress_correction), (n, K))
+            stress = np.broadcast_to(hx.shear_stress_r(F, d, r, mat.stress_correction), (n, K))
         finite = [omega, M_f, M_z, F, k2]
         impossible |= ~np.all([np.isfinite(v).all(axis=1) for v in finite], axis=0)
         impossible |= helical & ~np.isfinite(stress).all(axis=1)
@@ -465,12 +465,12 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
     if mat is not None and mat.shear_modulus is not None:
         dd, rr, nn = cols["wire_diameter"], cols["coil_radius"], cols["active_turns"]
         with np.errstate(all="ignore"):
-            C = spring.spring_index(dd, rr)
-            props = {"spring_index": C, "wahl_factor": spring.wahl_factor(C),
-                     "surge_frequency_Hz": spring.surge_frequency(dd, rr, nn, mat.shear_modulus,
+            C = hx.spring_index_r(dd, rr)
+            props = {"spring_index": C, "wahl_factor": hx.wahl_factor(C),
+                     "surge_frequency_Hz": hx.surge_frequency_r(dd, rr, nn, mat.shear_modulus,
                                                                   mat.density),
                      "body_length_m": (nn + 1.0) * dd}
-            smass = spring.wire_mass(dd, rr, nn, mat.density)
+            smass = hx.wire_mass(dd, rr, nn, mat.density)
         for k, v in props.items():
             out[k] = np.where(helical, v, np.nan)
     out["spring_mass_kg"] = np.where(helical, smass, np.nan)
@@ -553,7 +553,7 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
     frame = pd.DataFrame(out)
     obj = _objective_name(spec)
     frame["objective"] = obj
-    key = _OBJECTIVE_COLUMN[obj]
+    key = OBJECTIVE_COLUMN[obj]
     frame["objective_value"] = frame[key] if key in frame else np.nan
     frame["status"], frame["message"] = checks.status()
     return frame, impossible

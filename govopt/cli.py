@@ -1,8 +1,8 @@
 """Command-line interface: parses arguments, calls the API, prints. No physics here.
 
-The standard library's argparse parses (issue 14, target 2): typer builds every parameter
-through pydantic, ~0.1 s of CPU before any command ran. A command's own imports come when it
-runs; rich only where the reports and the study's progress bar draw with it.
+The standard library's argparse parses (docs/decisions.md, imports on demand): typer builds
+every parameter through pydantic, ~0.1 s of CPU before any command ran. A command's own imports
+come when it runs; rich only where the reports and the study's progress bar draw with it.
 """
 
 from __future__ import annotations
@@ -112,7 +112,7 @@ def evaluate(*, spec, geometry, json_out, xlsx, force, plots, full, section) -> 
 def design(*, spec, json_out, output, xlsx, force, plots, full, section) -> None:
     """Find the best design for the spec's requirements (default: bundled hamabe-design).
     Files are written only where asked (-o, --xlsx, --plots), as by evaluate."""
-    from .optimize.design import design as run
+    from .optimize.search import design as run
 
     _run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN)), json_out, spec or DEFAULT_DESIGN,
                     xlsx=xlsx, output=output, force=force, plots=plots,
@@ -640,7 +640,7 @@ def parser() -> _Parser:
     _option(p, "--out", type=Path, help="Folder for speed-vs-error.md, .csv and .png (made "
                                         "if only its parent exists).")
     _flag(p, "--force", help=_FORCE_HELP)
-    _flag(p, "--targets", switch=True, help="Also measure the speed targets (issue 14).")
+    _flag(p, "--targets", switch=True, help="Also measure the speed targets.")
     _command(group, "examples", examples_command, "List the bundled example specs.")
     p = _command(group, "init", init_command, "Copy a bundled example spec here, to start "
                                               "from.")

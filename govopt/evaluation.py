@@ -10,21 +10,21 @@ import numpy as np
 
 from .analysis import loadchange, statics
 from .errors import DesignError
-from .model import spring
 from .result import Check, Result
 from .spec import Design, Spec
+from .springs import helical as hx
 from .units import SI_UNITS
 
 
 def spring_properties(spec: Spec, sd: statics.SpringDesign) -> dict[str, float]:
     """Derived spring quantities (SI) for reports: index, Wahl factor, mass, surge frequency."""
     mat = spec.material
-    C = spring.spring_index(sd.d, sd.r)
+    C = hx.spring_index_r(sd.d, sd.r)
     return {
         "spring_index": C,
-        "wahl_factor": float(spring.wahl_factor(C)),
-        "mass_kg": spring.wire_mass(sd.d, sd.r, sd.n, mat.density),
-        "surge_frequency_Hz": spring.surge_frequency(sd.d, sd.r, sd.n, mat.shear_modulus,
+        "wahl_factor": float(hx.wahl_factor(C)),
+        "mass_kg": hx.wire_mass(sd.d, sd.r, sd.n, mat.density),
+        "surge_frequency_Hz": hx.surge_frequency_r(sd.d, sd.r, sd.n, mat.shear_modulus,
                                                      mat.density),
         "body_length_m": (sd.n + 1.0) * sd.d,
     }

@@ -1,4 +1,4 @@
-"""Limits on every size a spec or an option can set (issue 15, item 2), each with its reason.
+"""Limits on every size a spec or an option can set, each with its reason.
 
 A spec is a few KiB written by a person; these limits are far beyond any real governor and
 keep every run within seconds and a few hundred MB whatever a spec says. Each one exceeded is
@@ -32,7 +32,7 @@ MAX_LIST_ITEMS = 1000
 MAX_POINTS = 1001
 #: ``analysis.harmonics``: Fourier harmonics of a periodic forcing (default 12); past the 50th
 #: the valve gear's reaction is its friction's square wave alone, falling as 1/n
-#: (:func:`govopt.model.valvegear.truncation_error`); ``govopt design``'s vibration
+#: (:func:`govopt.governors.shaft.valvegear.truncation_error`); ``govopt design``'s vibration
 #: objective takes ~30 s at 50 harmonics (the bundled design; ~20 s at 12)
 MAX_HARMONICS = 50
 #: ``[[load_change]]`` tables: each is a transient solved for every design candidate
@@ -147,9 +147,9 @@ def steps(lo: float, hi: float, step: float) -> float:
 def design_size_error(req, points: int, spring: str | None, mass_key: str):
     """The first design grid past its limit, as ``(key, message)``, else None: weight-grid
     pairs, their cells with ``points``, catalogue springs and their combinations with the
-    weights (``req``: :class:`govopt.spec.Requirements`; ``spring``: the governor's spring
-    kind, None for a dead-weight governor). Counted from the bounds and steps before anything
-    is allocated."""
+    weights (``req``: :class:`govopt.inputs.Requirements`; ``spring``: the governor's spring
+    kind, a :class:`govopt.springs.kinds.SpringKind` that counts its own catalogue, None for a
+    dead-weight governor). Counted from the bounds and steps before anything is allocated."""
     grid = steps(*req.pendulum_mass, req.mass_step) * steps(*req.central_mass, req.mass_step)
     step_key = "catalogue.weight_step"
     what = (f"(flying, central) weight pairs on the weight grid (bounds.{mass_key}_weight on "
@@ -157,20 +157,6 @@ def design_size_error(req, points: int, spring: str | None, mass_key: str):
     checks = [(step_key, count_error(grid, MAX_MASSES, what)),
               ("analysis.points", count_error(grid * points, MAX_GRID_CELLS,
                                               "weight pairs x analysis.points"))]
-    if spring not in (None, "leaf"):
-        wires = sum(req.wire_diameter[0] - 1e-12 <= w <= req.wire_diameter[1] + 1e-12
-                    for w in req.wire_diameters)
-        radii = steps(*req.coil_radius, req.coil_radius_step)
-        turns = steps(*req.active_turns, req.turn_step)
-        springs = wires * radii * turns
-        checks += [
-            ("catalogue.coil_radius_step", count_error(radii, MAX_SPRINGS,
-                                                        "coil radii within bounds.coil_radius")),
-            ("catalogue.turn_step", count_error(turns, MAX_SPRINGS,
-                                                 "turns within bounds.active_turns")),
-            ("catalogue", count_error(springs, MAX_SPRINGS, "springs (wire diameters x coil "
-                                                            "radii x turns within the bounds)")),
-            ("catalogue", count_error(springs * grid, MAX_COMBINATIONS,
-                                      "weight pairs x springs")),
-        ]
+    if spring is not None:
+        checks += spring.size_errors(req, grid)
     return next(((key, msg) for key, msg in checks if msg), None)

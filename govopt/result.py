@@ -12,8 +12,8 @@ from typing import Any
 import numpy as np
 
 from .analysis.statics import Characteristic, SpringDesign, classify_k2
+from .inputs import Design, Spec
 from .jsonable import jsonable
-from .spec import Design, Spec
 
 #: Relative margin below which a satisfied constraint is reported as active (binding).
 ACTIVE_TOL = 1e-3

@@ -10,7 +10,7 @@ from __future__ import annotations
 import difflib
 import math
 import tomllib
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -18,21 +18,25 @@ import numpy as np
 from . import limits
 from .errors import GovoptError
 from .governors import REGISTRY, Governor, governor_class
+from .inputs import (
+    OBJECTIVES,
+    PREFERRED_WIRE,
+    Analysis,
+    Design,
+    Engine,
+    Entry,
+    LoadChange,
+    Material,
+    Requirements,
+    Spec,
+    Speed,
+    SpringForm,
+)
 from .units import G_STANDARD, SI_UNITS, UnitError, parse_quantity
 
 
 class SpecError(GovoptError):
     """A spec that cannot be used, with the file and key path in the message."""
-
-
-@dataclass(frozen=True)
-class Entry:
-    """One input as written in the spec and in SI."""
-
-    key: str
-    written: str
-    si: float | str
-    unit: str
 
 
 #: Keys an engineer may write for what a spec names otherwise: key -> (the spec's key, how
@@ -52,7 +56,7 @@ KEY_SYNONYMS: dict[str, tuple[str, str]] = {
 }
 
 
-class _Reader:
+class Reader:
     """Reads one TOML table, recording which keys were used; :meth:`finish` rejects the rest."""
 
     def __init__(self, file: str, table: dict, path: str, entries: list[Entry]):
@@ -175,7 +179,7 @@ class _Reader:
             self.fail(name, f"expected a non-empty list of {dimension} strings, got {values!r}")
         if len(values) > limits.MAX_LIST_ITEMS:
             self.fail(name, limits.count_error(len(values), limits.MAX_LIST_ITEMS, "items"))
-        sub = _Reader(self.file, {str(i): v for i, v in enumerate(values)}, self.key(name),
+        sub = Reader(self.file, {str(i): v for i, v in enumerate(values)}, self.key(name),
                       self.entries)
         sub.key = lambda i: f"{self.key(name)}[{i}]"  # type: ignore[method-assign]
         return np.array([sub.quantity(str(i), dimension, **kw) for i in range(len(values))])
@@ -184,7 +188,7 @@ class _Reader:
         value = self.raw(name, required)
         if value is None:
             return None
-        return _Reader(self.file, value, self.key(name), self.entries)
+        return Reader(self.file, value, self.key(name), self.entries)
 
     def tables(self, name):
         values = self.raw(name, False)
@@ -192,7 +196,7 @@ class _Reader:
             return []
         if not isinstance(values, list):
             self.fail(name, "expected an array of tables ([[" + name + "]])")
-        return [_Reader(self.file, v, f"{self.key(name)}[{i}]", self.entries)
+        return [Reader(self.file, v, f"{self.key(name)}[{i}]", self.entries)
                 for i, v in enumerate(values)]
 
     def weight_or_mass(self, stem, *, required=True, default=None):
@@ -222,266 +226,6 @@ class _Reader:
 ANGLE_RANGE = dict(low=0.0, high=math.pi, range_text="(0 deg, 180 deg)")
 
 
-@dataclass(frozen=True)
-class Speed:
-    """Mean speed ``omega0`` and irregularity ``delta0`` with the paper's split of the range."""
-
-    omega_mean: float
-    irregularity: float
-    #: the spec states the band ``[speed] inner/outer``: every design keeps its whole operating
-    #: band (friction band included) inside it (:data:`govopt.analysis.statics.BAND_INNER`);
-    #: ``mean``/``irregularity`` state only Hamabe's irregularity about the mean
-    band: bool = False
-
-    @property
-    def omega_inner(self) -> float:
-        return self.omega_mean * (1.0 - self.irregularity / 2.0)
-
-    @property
-    def omega_outer(self) -> float:
-        return self.omega_mean * (1.0 + self.irregularity / 2.0)
-
-
-@dataclass(frozen=True)
-class Material:
-    """The spring's material (SI): shear values for a helical spring, E for a leaf."""
-
-    allowable_shear_stress: float | None
-    shear_modulus: float | None
-    density: float
-    stress_correction: str
-    elastic_modulus: float | None = None
-    allowable_bending_stress: float | None = None
-    #: spring wire grade (``govopt/data/spring_materials.toml``, e.g. ``"EN10270-1 DH"``): the
-    #: allowables follow from the standard's rules per wire diameter (explicit values override)
-    #: and the spring engineering checks run (:mod:`govopt.springs.engineering`)
-    grade: str | None = None
-    tensile_strength: float | None = None  # R_m for grade "custom" (or to override), Pa
-    surface: str = "not shot peened"  # the surface the fatigue check assumes
-    tolerance_grade: int = 2  # EN 15800 quality grade 1, 2 or 3
-    life_cycles: float = 1e7  # required fatigue life
-    rules: str = "EN13906"  # allowable-stress and fatigue rules: "EN13906" or "Shigley"
-
-
-@dataclass(frozen=True)
-class SpringForm:
-    """``[spring]``: the helical spring's form for the spring engineering checks (SI).
-
-    ``ends`` (:data:`govopt.springs.helical.END_FORMS`) and ``seating``
-    (:data:`~govopt.springs.helical.SEATING`) of a compression spring, its ``inactive_turns``
-    (``n_t = n + 2`` for closed ends, EN 13906-1), ``overtravel``: the deflection beyond full
-    lift (overspeed margin) as a fraction of the working stroke; an extension spring's
-    ``initial_tension`` (default: the middle of Shigley's preferred range, at most the least
-    working force) and ``hook_bend_radius`` (default ``2 d``)."""
-
-    ends: str = "closed_ground"
-    seating: str = "fixed-fixed"
-    inactive_turns: float = 2.0
-    overtravel: float = 0.1
-    initial_tension: float | None = None
-    hook_bend_radius: float | None = None
-
-
-@dataclass(frozen=True)
-class Design:
-    """A given design: flying mass, spring, central load, dash-pot and friction, SI.
-
-    ``pendulum_inertia`` overrides the type's generalised inertia; ``friction_moment`` is the
-    shaft governor's Coulomb moment at the fulcrum (Hamabe eq. 42)."""
-
-    pendulum_mass: float  # the flying mass: the pendulum, each ball or each fly weight, kg
-    wire_diameter: float | None = None
-    coil_radius: float | None = None
-    active_turns: float | None = None
-    free_half_length: float | None = None  # the spring's free length in the type's own form
-    central_mass: float | None = None  # central (sleeve) load, kg
-    spring_stiffness: float | None = None  # given directly instead of by wire, coil and turns
-    leaf_width: float | None = None  # a leaf spring's section, m
-    leaf_thickness: float | None = None
-    pendulum_inertia: float | None = None
-    dashpot: float | None = None
-    friction_moment: float | None = None
-
-
-@dataclass(frozen=True)
-class Engine:
-    flywheel_inertia: float
-    torque_slope: float
-    insensibility: float = 0.0
-    speed_fluctuation_cos: float = 0.0
-    speed_fluctuation_sin: float = 0.0
-
-
-@dataclass(frozen=True)
-class LoadChange:
-    name: str
-    alpha_from: float
-    alpha_to: float
-
-
-@dataclass(frozen=True)
-class Analysis:
-    """Fidelity settings shared by every analysis."""
-
-    geometry: str = "exact"
-    reaction_speed: str = "local"
-    #: the spec's mean speed, rad/s: for fidelity options that take a quantity at the mean speed
-    #: (Hamabe's ``reaction_speed = "mean"``); set by the parser from [speed]
-    omega_mean: float = float("nan")
-    reaction_slope: bool = True
-    #: interpolant of the valve-gear table: "pchip" (monotone C^1), "cubic" (C^2 spline) or
-    #: "linear" (the paper's; d delta/d alpha and so k^2 jump at each row)
-    valve_table: str = "pchip"
-    points: int = 31
-    harmonics: int = 12
-    settling_band: float = 0.02
-    #: what the evaluation is for (:mod:`govopt.fidelity`): only the analyses it needs run, at
-    #: the cheapest settings whose measured error is within ``tolerance``; None: every analysis
-    #: the spec has data for, at the settings above
-    use_case: str | None = None
-    tolerance: float = 1e-6
-
-
-#: ISO 3 R20 preferred numbers, 1 mm to 25 mm: the default catalogue of wire diameters (m).
-PREFERRED_WIRE = tuple(x / 1000 for x in (
-    1.0, 1.12, 1.25, 1.4, 1.6, 1.8, 2.0, 2.24, 2.5, 2.8, 3.15, 3.55, 4.0, 4.5, 5.0, 5.6, 6.3, 7.1,
-    8.0, 9.0, 10.0, 11.2, 12.5, 14.0, 16.0, 18.0, 20.0, 22.4, 25.0))
-
-OBJECTIVES = ("moving_mass", "spring_mass", "settling_time", "vibration")
-
-
-@dataclass(frozen=True)
-class Requirements:
-    """What `govopt design` must achieve, within which bounds, from which catalogue (SI)."""
-
-    objective: str = "moving_mass"
-    k2_margin: float = 0.05
-    hurwitz_margin: float = 0.1
-    max_settling_time: float | None = None
-    max_vibration: float | None = None
-    spring_index: tuple[float, float] = (4.0, 16.0)
-    max_outer_diameter: float | None = None
-    min_surge_frequency: float | None = None
-    #: least fatigue safety factor of the spring under the mechanism's own vibration (with a
-    #: material grade; None: 1)
-    min_fatigue_safety: float | None = None
-    #: least relative distance of the surge frequency from each excitation harmonic present
-    surge_detuning: float = 0.2
-    pendulum_mass: tuple[float, float] = (2.0, 20.0)  # the flying mass (pendulum, each ball)
-    central_mass: tuple[float, float] = (0.0, 0.0)  # central (sleeve) load, kg
-    wire_diameter: tuple[float, float] = (0.001, 0.025)
-    coil_radius: tuple[float, float] = (0.01, 0.1)
-    active_turns: tuple[float, float] = (3.0, 30.0)
-    dashpot: tuple[float, float] | None = None
-    wire_diameters: tuple[float, ...] = PREFERRED_WIRE
-    turn_step: float = 0.5
-    coil_radius_step: float = 0.001
-    mass_step: float = 0.25
-    leaf_width: tuple[float, float] = (0.003, 0.06)  # a leaf's section bounds, m
-    leaf_thickness: tuple[float, float] = (0.0002, 0.006)
-    max_bow_ratio: float = 0.2  # bow / length: the article's stated range of its eq. 8
-    #: robust requirements (issue 24): every check holds over a tolerance box. The spring's
-    #: EN 15800 quality grade (coil diameter, free length; the wire per its EN 10270 grade);
-    #: None: the spring is taken exact
-    robust_spring_grade: int | None = None
-    robust_dashpot: float = 0.0  # the dash-pot setting +- this fraction
-    robust_masses: float = 0.0  # the flying and central masses +- this fraction
-    robust_torque_slope: float = 0.0  # the engine's torque slope +- this fraction
-    #: what the fitter adjusts on assembly: the spring's free length by an adjusting nut, +- m
-    adjusting_nut: float = 0.0
-    #: the fitter sets the dash-pot valve within +- this fraction of the design's setting
-    dashpot_valve: float = 0.0
-    robust_samples: int = 2000  # Monte-Carlo verification: samples and seed
-    robust_seed: int = 0
-
-    @property
-    def robust(self) -> bool:
-        """Whether the requirements ask for a tolerance box (robust design)."""
-        return (self.robust_spring_grade is not None or self.robust_dashpot > 0
-                or self.robust_masses > 0 or self.robust_torque_slope > 0
-                or self.adjusting_nut > 0 or self.dashpot_valve > 0)
-
-
-@dataclass(frozen=True)
-class Spec:
-    path: str
-    name: str
-    governor_type: str
-    governor: Governor
-    speed: Speed | None
-    material: Material | None
-    design: Design | None
-    engine: Engine | None
-    load_changes: tuple[LoadChange, ...]
-    analysis: Analysis
-    requirements: Requirements | None = None
-    entries: tuple[Entry, ...] = field(default=(), repr=False)
-    #: the TOML as read (keys as in the file), for :meth:`with_values`; set by :func:`parse_spec`
-    data: dict | None = field(default=None, repr=False, compare=False)
-    spring_form: SpringForm = field(default_factory=SpringForm)
-
-    def with_values(self, values: dict) -> Spec:
-        """The spec re-validated with some inputs replaced: ``values`` maps dotted key paths of
-        the TOML (``"speed.irregularity"``, ``"design.pendulum_weight"``, ``"bounds.wire_diameter
-        [1]"``, ``"load_change[0].to"``) to values as they would be written in the file
-        (``"10 kgf"``, ``0.1``). Missing tables and keys are created; the result is
-        :func:`parse_spec` of a copy of :attr:`data`, so a bad value raises :class:`SpecError`
-        naming the key. Changes made with :meth:`with_design` or :meth:`with_analysis` are not
-        in :attr:`data` and so not in the result.
-
-        >>> s = parse_spec({"governor": {"type": "watt", "suspension": "axis", "arm": "30 cm",
-        ...     "radius_inner": "10 cm", "radius_outer": "20 cm"}, "speed": {"inner": "55 rpm",
-        ...     "outer": "64 rpm"}})
-        >>> round(s.with_values({"speed.outer": "66 rpm"}).speed.omega_outer, 4)
-        6.9115
-        """
-        import copy
-
-        if self.data is None:
-            raise SpecError(f"{self.path}: the spec was not read from TOML: no values to replace")
-        data = copy.deepcopy(self.data)
-        for key, value in values.items():
-            Spec._set_value(data, key, value, self.path)
-        return parse_spec(data, self.path)
-
-    @staticmethod
-    def _set_value(data: dict, key: str, value, file: str) -> None:
-        """Set the dotted path ``key`` (parts ``name`` or ``name[i]``) in ``data``."""
-        import re
-
-        parts = key.split(".")
-        node = data
-        for depth, part in enumerate(parts):
-            m = re.fullmatch(r"([^\[\]]+)((?:\[\d+\])*)", part)
-            if m is None:
-                raise SpecError(f"{file}: {key}: expected a dotted key path like "
-                                "'speed.irregularity' or 'load_change[0].to'")
-            steps: list = [m[1]] + [int(i) for i in re.findall(r"\[(\d+)\]", m[2])]
-            if depth < len(parts) - 1:
-                steps.append(None)  # descend into a table
-            for i, step in enumerate(steps):
-                if step is None:  # the path goes on: this must be a table
-                    if not isinstance(node, dict):
-                        raise SpecError(f"{file}: {key}: {'.'.join(parts[:depth + 1])} is not "
-                                        "a table")
-                    continue
-                if not isinstance(node, list if isinstance(step, int) else dict) or (
-                        isinstance(step, int) and step >= len(node)):
-                    raise SpecError(f"{file}: {key}: no {step!r} to replace in the spec")
-                if i == len(steps) - 1:
-                    node[step] = value
-                else:
-                    if isinstance(step, str) and step not in node:
-                        node[step] = {}
-                    node = node[step]
-
-    def with_analysis(self, **changes) -> Spec:
-        """The same spec with some fidelity settings changed."""
-        return replace(self, analysis=replace(self.analysis, **changes))
-
-    def with_design(self, design: Design) -> Spec:
-        return replace(self, design=design)
-
 
 def load_spec(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int = 32) -> Spec:
     """Read and validate a spec file; raises :class:`SpecError` naming file and key.
@@ -492,6 +236,62 @@ def load_spec(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int = 32
     """
     return parse_spec(read_spec_data(path, max_bytes=max_bytes, max_depth=max_depth),
                       str(path))
+
+
+def with_values(spec: Spec, values: dict) -> Spec:
+    """The spec re-validated with some inputs replaced: ``values`` maps dotted key paths of
+    the TOML (``"speed.irregularity"``, ``"design.pendulum_weight"``, ``"bounds.wire_diameter
+    [1]"``, ``"load_change[0].to"``) to values as they would be written in the file
+    (``"10 kgf"``, ``0.1``). Missing tables and keys are created; the result is
+    :func:`parse_spec` of a copy of :attr:`Spec.data`, so a bad value raises
+    :class:`SpecError` naming the key. Changes made with :meth:`Spec.with_design` or
+    :meth:`Spec.with_analysis` are not in :attr:`Spec.data` and so not in the result.
+
+    >>> s = parse_spec({"governor": {"type": "watt", "suspension": "axis", "arm": "30 cm",
+    ...     "radius_inner": "10 cm", "radius_outer": "20 cm"}, "speed": {"inner": "55 rpm",
+    ...     "outer": "64 rpm"}})
+    >>> round(with_values(s, {"speed.outer": "66 rpm"}).speed.omega_outer, 4)
+    6.9115
+    """
+    import copy
+
+    if spec.data is None:
+        raise SpecError(f"{spec.path}: the spec was not read from TOML: no values to replace")
+    data = copy.deepcopy(spec.data)
+    for key, value in values.items():
+        _set_value(data, key, value, spec.path)
+    return parse_spec(data, spec.path)
+
+
+def _set_value(data: dict, key: str, value, file: str) -> None:
+    """Set the dotted path ``key`` (parts ``name`` or ``name[i]``) in ``data``."""
+    import re
+
+    parts = key.split(".")
+    node = data
+    for depth, part in enumerate(parts):
+        m = re.fullmatch(r"([^\[\]]+)((?:\[\d+\])*)", part)
+        if m is None:
+            raise SpecError(f"{file}: {key}: expected a dotted key path like "
+                            "'speed.irregularity' or 'load_change[0].to'")
+        steps: list = [m[1]] + [int(i) for i in re.findall(r"\[(\d+)\]", m[2])]
+        if depth < len(parts) - 1:
+            steps.append(None)  # descend into a table
+        for i, step in enumerate(steps):
+            if step is None:  # the path goes on: this must be a table
+                if not isinstance(node, dict):
+                    raise SpecError(f"{file}: {key}: {'.'.join(parts[:depth + 1])} is not "
+                                    "a table")
+                continue
+            if not isinstance(node, list if isinstance(step, int) else dict) or (
+                    isinstance(step, int) and step >= len(node)):
+                raise SpecError(f"{file}: {key}: no {step!r} to replace in the spec")
+            if i == len(steps) - 1:
+                node[step] = value
+            else:
+                if isinstance(step, str) and step not in node:
+                    node[step] = {}
+                node = node[step]
 
 
 def read_spec_data(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int = 32) -> dict:
@@ -544,7 +344,7 @@ def read_spec_data(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int
 def parse_spec(data: dict, file: str = "<spec>") -> Spec:
     """Validate a spec already read into a dict (keys as in the TOML file)."""
     entries: list[Entry] = []
-    top = _Reader(file, data, "", entries)
+    top = Reader(file, data, "", entries)
     name = top.text("name", default=Path(file).stem)
     top.text("description")
 
@@ -562,7 +362,8 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
     mat = top.sub("material", required=False)
     material = None
     if mat is not None:
-        helical = governor.spring != "leaf"
+        kind = governor.spring_kind
+        helical = kind is None or kind.helical  # shear values for a wire, E for a leaf
         grade = _grade(mat, helical)
         material = Material(
             allowable_shear_stress=mat.quantity("allowable_shear_stress", "stress",
@@ -621,7 +422,7 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
         analysis = replace(analysis, omega_mean=speed.omega_mean)
     requirements = _requirements(top, governor)
     too_big = requirements and limits.design_size_error(requirements, analysis.points,
-                                                        governor.spring, governor.mass_key)
+                                                        governor.spring_kind, governor.mass_key)
     if too_big:  # counted before anything is allocated
         top.fail(*too_big)
     form = _spring_form(top.sub("spring", required=False))
@@ -632,7 +433,7 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
                 spring_form=form)
 
 
-def _grade(mat: _Reader, helical: bool) -> dict | None:
+def _grade(mat: Reader, helical: bool) -> dict | None:
     """``material.grade`` and the keys that go with it (``tensile_strength``, ``surface``,
     ``tolerance_grade``, ``life_cycles``, ``rules``): Material fields, plus the grade's G and
     density as defaults and the rules' static stress correction (EN 13906-1/-2: uncorrected;
@@ -666,7 +467,7 @@ def _grade(mat: _Reader, helical: bool) -> dict | None:
     return out
 
 
-def _spring_form(sp: _Reader | None) -> SpringForm:
+def _spring_form(sp: Reader | None) -> SpringForm:
     """``[spring]``: the helical spring's form (:class:`SpringForm`)."""
     if sp is None:
         return SpringForm()
@@ -688,7 +489,7 @@ def _spring_form(sp: _Reader | None) -> SpringForm:
     return out
 
 
-def _configuration(rd: _Reader, name: str, governor: Governor) -> float:
+def _configuration(rd: Reader, name: str, governor: Governor) -> float:
     """A configuration ``x`` of ``governor`` (an angle or a length, within its range)."""
     if governor.coordinate == "angle":
         x = rd.quantity(name, "angle", **ANGLE_RANGE)
@@ -702,7 +503,7 @@ def _configuration(rd: _Reader, name: str, governor: Governor) -> float:
     return x
 
 
-def _speed(sp: _Reader) -> Speed:
+def _speed(sp: Reader) -> Speed:
     given = [k for k in ("min", "max", "minimum", "maximum", "low", "high") if sp.has(k)]
     if given and not (sp.has("inner") or sp.has("outer") or sp.has("mean")):
         sp.fail(given[0], "unknown key (did you mean 'inner' and 'outer', the speeds at the "
@@ -724,7 +525,7 @@ def _speed(sp: _Reader) -> Speed:
     return speed
 
 
-def _design(ds: _Reader | None, governor: Governor, material: Material | None) -> Design | None:
+def _design(ds: Reader | None, governor: Governor, material: Material | None) -> Design | None:
     """``[design]``: the flying mass (``<mass_key>_weight`` or ``_mass``), the central load, the
     spring (``wire_diameter``, ``coil_radius``, ``active_turns`` with ``[material]``, or
     ``spring_stiffness``; the free length under the type's key), dash-pot and friction."""
@@ -737,26 +538,18 @@ def _design(ds: _Reader | None, governor: Governor, material: Material | None) -
     dashpot = ds.quantity("dashpot_f", damping, required=False, nonnegative=True)
     a1 = ds.quantity("dashpot_a1", damping, required=False, nonnegative=True)
     spring = {}
-    if governor.spring is not None:
+    kind = governor.spring_kind
+    if kind is not None:
         if ds.has("spring_stiffness"):
             spring["spring_stiffness"] = ds.quantity("spring_stiffness", "stiffness")
-        elif governor.spring == "leaf":  # a flat spring: its section (the length is the type's)
+        else:  # the kind's section (a leaf's length is the governor type's)
             if material is None:
-                ds.fail("leaf_width", "a leaf given by its section needs a [material] table "
-                                      "(or give spring_stiffness)")
-            spring = dict(leaf_width=ds.quantity("leaf_width", "length"),
-                          leaf_thickness=ds.quantity("leaf_thickness", "length"))
-            if spring["leaf_thickness"] >= spring["leaf_width"]:
-                ds.fail("leaf_thickness", "expected a strip thinner than it is wide")
-        else:
-            if material is None:
-                ds.fail("wire_diameter", "a spring given by its wire needs a [material] table "
-                                         "(or give spring_stiffness)")
-            spring = dict(wire_diameter=ds.quantity("wire_diameter", "length"),
-                          coil_radius=ds.quantity("coil_radius", "length"),
-                          active_turns=ds.number("active_turns"))
-            if spring["wire_diameter"] >= 2.0 * spring["coil_radius"]:
-                ds.fail("wire_diameter", "expected a wire thinner than the coil diameter 2 r")
+                ds.fail(*kind.needs_material)
+            spring = {key: ds.number(key) if dim is None else ds.quantity(key, dim)
+                      for key, dim in kind.section}
+            bad = kind.section_error(spring)
+            if bad:
+                ds.fail(*bad)
     key = governor.mass_key
     design = Design(
         pendulum_mass=ds.weight_or_mass(key),
@@ -775,7 +568,7 @@ def _design(ds: _Reader | None, governor: Governor, material: Material | None) -
     return design
 
 
-def _analysis(an: _Reader | None) -> Analysis:
+def _analysis(an: Reader | None) -> Analysis:
     from .fidelity import USE_CASES
 
     if an is None:
@@ -799,7 +592,7 @@ def _analysis(an: _Reader | None) -> Analysis:
     return out
 
 
-def _pair(rd: _Reader, name, dimension, default):
+def _pair(rd: Reader, name, dimension, default):
     """A ``[low, high]`` bound; a bare number list for dimensionless."""
     value = rd.raw(name, False)
     if value is None:
@@ -807,7 +600,7 @@ def _pair(rd: _Reader, name, dimension, default):
     if not isinstance(value, list) or len(value) != 2:
         rd.fail(name, f"expected [low, high], got {value!r}")
     if dimension == "dimensionless":
-        sub = _Reader(rd.file, {"low": value[0], "high": value[1]}, rd.key(name), rd.entries)
+        sub = Reader(rd.file, {"low": value[0], "high": value[1]}, rd.key(name), rd.entries)
         lo, hi = sub.number("low"), sub.number("high")
     else:
         lo, hi = rd.quantities(name, dimension)
@@ -816,7 +609,7 @@ def _pair(rd: _Reader, name, dimension, default):
     return (float(lo), float(hi))
 
 
-def _mass_pair(rd: _Reader, stem: str, default, single: bool = False):
+def _mass_pair(rd: Reader, stem: str, default, single: bool = False):
     """Bounds ``<stem>_weight = [lo, hi]`` (forces) or ``<stem>_mass``; with ``single`` one
     value fixes it (a spring governor's sleeve load)."""
     w, m = f"{stem}_weight", f"{stem}_mass"
@@ -830,12 +623,13 @@ def _mass_pair(rd: _Reader, stem: str, default, single: bool = False):
     return default if pair is None else (pair[0] / scale, pair[1] / scale)
 
 
-def _requirements(top: _Reader, governor: Governor) -> Requirements | None:
+def _requirements(top: Reader, governor: Governor) -> Requirements | None:
     """``[requirements]``, ``[bounds]`` and ``[catalogue]`` for `govopt design`."""
     req, bnd, cat = (top.sub(k, required=False) for k in ("requirements", "bounds", "catalogue"))
     if req is None and bnd is None and cat is None:
         return None
     d = Requirements()
+    kind = governor.spring_kind
     kw = {}
     if req is not None:
         kw.update(
@@ -871,9 +665,8 @@ def _requirements(top: _Reader, governor: Governor) -> Requirements | None:
             robust_seed=req.number("robust_seed", required=False, default=d.robust_seed,
                                    nonnegative=True, integer=True),
         )
-        if governor.spring == "leaf":
-            kw["max_bow_ratio"] = req.number("max_bow_ratio", required=False,
-                                             default=d.max_bow_ratio, high=0.5)
+        for key, high in kind.requirement_numbers if kind is not None else ():
+            kw[key] = req.number(key, required=False, default=getattr(d, key), high=high)
         req.finish()
     if bnd is not None:
         mk = governor.mass_key
@@ -883,19 +676,12 @@ def _requirements(top: _Reader, governor: Governor) -> Requirements | None:
             dashpot=_pair(bnd, "dashpot_f", "damping" if governor.coordinate == "angle"
                           else "linear_damping", None),
         )
-        if governor.spring == "leaf":
-            kw.update(leaf_width=_pair(bnd, "leaf_width", "length", d.leaf_width),
-                      leaf_thickness=_pair(bnd, "leaf_thickness", "length", d.leaf_thickness))
-        elif governor.spring is not None:
-            kw.update(
-                wire_diameter=_pair(bnd, "wire_diameter", "length", d.wire_diameter),
-                coil_radius=_pair(bnd, "coil_radius", "length", d.coil_radius),
-                active_turns=_pair(bnd, "active_turns", "dimensionless", d.active_turns),
-            )
+        for key, dim in kind.bounds if kind is not None else ():
+            kw[key] = _pair(bnd, key, dim, getattr(d, key))
         bnd.finish()
     if cat is not None:
-        if governor.spring == "leaf":
-            cat.choice("leaf_sections", ("standard",), "standard")  # govopt/data/leaf_stock.csv
+        for key, choices, default in kind.catalogue_choices if kind is not None else ():
+            cat.choice(key, choices, default)
         wires = cat.raw("wire_diameters", False)
         kw.update(
             wire_diameters=PREFERRED_WIRE if wires in (None, "preferred")

@@ -4,7 +4,7 @@ A study is a spec plus the inputs to vary (:class:`Study`): sweeps of dotted spe
 (``design.pendulum_weight = 6 kgf:12 kgf:4``, ``speed.irregularity = 0.12,0.104``) combined as
 a grid, zipped, or sampled (Latin hypercube, Sobol'), or manufacturing tolerances sampled
 around the spec's own design. Each point is the spec with the swept keys replaced and
-re-validated (:meth:`govopt.spec.Spec.with_values`); it is evaluated (:func:`govopt.bulk.
+re-validated (:func:`govopt.spec.with_values`); it is evaluated (:func:`govopt.bulk.
 evaluate_many`, vectorised over the points that differ only in their design) or designed
 (:func:`govopt.design`, on a process pool or a Dask cluster) and becomes one row: the inputs
 as written and in SI, the design, every check's value, margin and verdict, the objective,
@@ -37,7 +37,8 @@ import pandas as pd
 
 from . import limits
 from .errors import GovoptError
-from .spec import Spec, parse_spec, read_spec_data
+from .spec import Spec, parse_spec, read_spec_data, with_values
+from .stats import wilson
 
 MODES = ("evaluate", "design")
 COMBINE = ("grid", "zip", "lhs", "sobol")
@@ -51,9 +52,6 @@ OBJECTIVES = {
     "irregularity": ("irregularity", "min"), "max_stress": ("max_stress_Pa", "min"),
     "k2_margin": ("margin: k^2 > 0 (stability)", "max"),
 }
-
-#: z of the two-sided 95 % confidence interval (Wilson score interval)
-Z95 = 1.959963984540054
 
 #: a tolerance band ``+-X`` is read as +-3 standard deviations of a normal scatter (the usual
 #: reading of a manufacturing tolerance: 99.73 % of the parts within it), unless ``uniform``
@@ -83,17 +81,17 @@ def _scalar(text: str):
 
 def _quantity(text: str, where: str):
     """``text`` as a pint quantity; an error names ``where`` (``sweep KEY``)."""
-    from .units import UnitError, _normalise, _strict_units, registry
+    from .units import UnitError, normalise, registry, strict_units
 
     if len(text) > limits.MAX_QUANTITY_CHARS:
         raise StudyError(f"{where}: {limits.shorten(text)}: a quantity of at most "
                          f"{limits.MAX_QUANTITY_CHARS} characters (govopt's limit)")
     try:  # what pint would misread, or take minutes over ('9**9**9'), refused first
-        _strict_units(_normalise(text), shown=text)
+        strict_units(normalise(text), shown=text)
     except UnitError as exc:
         raise StudyError(f"{where}: cannot read {text!r} as a quantity: {exc}") from None
     try:
-        return registry().Quantity(_normalise(text))
+        return registry().Quantity(normalise(text))
     except Exception as exc:
         raise StudyError(f"{where}: cannot read {text!r} as a quantity "
                          f"({type(exc).__name__})") from None
@@ -554,13 +552,9 @@ def _load_study(path: str | Path, *, sweeps: Iterable[str] = (), tolerances: Ite
 # Evaluating points
 # ---------------------------------------------------------------------------------------------
 
-def point_hash(base_digest: str, mode: str, skip, point: dict) -> str:
+def _hasher(base_digest: str, mode: str, skip: tuple) -> Callable[[dict], str]:
     """The key of a point in the database: SHA-256 of its canonical inputs (the spec's digest,
     the mode and analyses, the swept values as written) and govopt's version."""
-    return _hasher(base_digest, mode, tuple(sorted(skip)))(point)
-
-
-def _hasher(base_digest: str, mode: str, skip: tuple) -> Callable[[dict], str]:
     from . import __version__
 
     prefix = _canonical({"base": base_digest, "mode": mode, "skip": list(skip),
@@ -632,13 +626,13 @@ _CACHE_SIZE = 512
 
 
 def _variant(spec: Spec, values: dict):
-    """``spec.with_values(values)`` or the SpecError's message, parsed once per process."""
+    """``with_values(spec, values)`` or the SpecError's message, parsed once per process."""
     key = (id(spec), _canonical(values))
     hit = _VARIANTS.get(key)
     if hit is not None and hit[0] is spec:
         return hit[1]
     try:
-        out = spec.with_values(values) if values else spec
+        out = with_values(spec, values) if values else spec
     except GovoptError as exc:
         out = str(exc)
     if len(_VARIANTS) >= _CACHE_SIZE:
@@ -786,7 +780,7 @@ def _key_values(spec: Spec, key: str, written: list, span: tuple | None = None):
     field -> array (NaN where unchanged) and ``errors`` index -> the parser's message.
 
     Up to :data:`EXACT_VALUES` distinct values each give a variant of the spec, parsed in full
-    (``Spec.with_values``: every check, the exact conversion). Beyond that (a fine range, a
+    (``spec.with_values``: every check, the exact conversion). Beyond that (a fine range, a
     tolerance study's samples), where every value is a number in one unit, the smallest and the
     largest (and one non-integral value, if any) are parsed in full and the rest mapped
     linearly: a design value's SI form is proportional to the number written (``m = W/g``,
@@ -910,7 +904,7 @@ def _design_points(study: Study, points: list[dict]) -> list[dict]:
     :func:`govopt.bulk.result_row`, with the optimiser's objective and status."""
     from .bulk import result_row
     from .errors import InfeasibleError
-    from .optimize.design import design
+    from .optimize.search import design
 
     base = study.base()
     rows = []
@@ -1601,25 +1595,6 @@ def pareto_front(frame: pd.DataFrame, objectives) -> np.ndarray:
         keep.append(i)
     out[idx[keep]] = True
     return out
-
-
-def wilson(k: int, n: int, z: float = Z95) -> tuple[float, float]:
-    """Wilson score interval of a binomial proportion ``k/n`` (E. B. Wilson, "Probable inference,
-    the law of succession, and statistical inference", JASA 22, 1927; Agresti & Coull, Am. Stat.
-    52, 1998): ``(p + z^2/2n -+ z sqrt(p(1-p)/n + z^2/4n^2)) / (1 + z^2/n)``.
-
-    >>> [round(v, 4) for v in wilson(95, 100)]
-    [0.8882, 0.9785]
-    """
-    if n == 0:
-        return math.nan, math.nan
-    p = k / n
-    den = 1.0 + z * z / n
-    mid = p + z * z / (2 * n)
-    half = z * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n))
-    lo = 0.0 if k == 0 else max(0.0, (mid - half) / den)  # exact ends, not rounding
-    hi = 1.0 if k == n else min(1.0, (mid + half) / den)
-    return lo, hi
 
 
 def tolerance_summary(frame: pd.DataFrame) -> dict:

@@ -127,9 +127,9 @@ def parse_quantity(text, dimension: str) -> float:
                         f"characters (govopt's limit), got {len(text)}")
     pint = _import_pint()
     Q_ = registry().Quantity
-    typed = _normalise(text)
+    typed = normalise(text)
     try:
-        has_unit = _strict_units(typed, shown=text)
+        has_unit = strict_units(typed, shown=text)
         q = Q_(typed)
     except UnitError:
         raise
@@ -175,11 +175,11 @@ _POWER = re.compile(r"(?<![\w.])([A-Za-z_]+)([2-9])(?![\w.])")
 _SYMBOLS = str.maketrans({"\u00b7": "*", "\u22c5": "*", "\u00b2": "^2", "\u00b3": "^3"})
 
 
-def _normalise(text: str) -> str:
+def normalise(text: str) -> str:
     """``text`` in pint's syntax: powers written as a trailing digit or a superscript, the
     middle dot as a product.
 
-    >>> _normalise("4000 kgf/cm2"), _normalise("43 kgf\u00b7m\u00b7s\u00b2"), _normalise("2 H2O")
+    >>> normalise("4000 kgf/cm2"), normalise("43 kgf\u00b7m\u00b7s\u00b2"), normalise("2 H2O")
     ('4000 kgf/cm^2', '43 kgf*m*s^2', '2 H2O')
     """
     def power(m: re.Match) -> str:
@@ -204,7 +204,7 @@ _OPERATORS = {"+", "-", "*", "/", "**", "^", "(", ")"}
 _SKIP = {tokenize.NEWLINE, tokenize.NL, tokenize.ENDMARKER}
 
 
-def _strict_units(text: str, shown: str | None = None) -> bool:
+def strict_units(text: str, shown: str | None = None) -> bool:
     """Reject what pint would silently reinterpret; return whether ``text`` carries a unit.
 
     * only numbers, unit names, ``+ - * / ** ^`` and parentheses (``"=18 cm"``, ``"18 cm;3"``,
@@ -214,11 +214,11 @@ def _strict_units(text: str, shown: str | None = None) -> bool:
     * a sum or difference of a unit-less number and a quantity: ``"64 deg + 0.01"`` (pint adds
       0.01 *radians*, since an angle is dimensionless to it).
 
-    Messages quote ``shown`` (the text as typed, before :func:`_normalise`), else ``text``.
+    Messages quote ``shown`` (the text as typed, before :func:`normalise`), else ``text``.
 
-    >>> _strict_units("64 deg + 40 arcmin"), _strict_units("(64 + 0.5) deg"), _strict_units("0.12")
+    >>> strict_units("64 deg + 40 arcmin"), strict_units("(64 + 0.5) deg"), strict_units("0.12")
     (True, True, False)
-    >>> _strict_units("64 deg + 0.01")  # doctest: +ELLIPSIS
+    >>> strict_units("64 deg + 0.01")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     govopt.units.UnitError: '64 deg + 0.01': the number 0.01 has no unit ...
     """
@@ -269,7 +269,7 @@ def _check_power(node, text: str) -> None:
     so ``9**9**9`` or ``((10**30)**30)**30`` would take minutes and gigabytes, before any
     check of the result.
 
-    >>> _strict_units("9**9**9 cm")  # doctest: +ELLIPSIS
+    >>> strict_units("9**9**9 cm")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     govopt.units.UnitError: '9**9**9 cm': the exponent (9 ** 9) is not a plain number ...
     """

@@ -185,9 +185,9 @@ LONG = 200_000  # characters of a "200 kB" string
 
 
 def _registry():
-    from govopt.units import _normalise, registry
+    from govopt.units import normalise, registry
 
-    return registry(), _normalise
+    return registry(), normalise
 
 
 def _quantity(text: str):

@@ -19,7 +19,7 @@ from govopt.bulk import (
     result_row,
     value_column,
 )
-from govopt.spec import Design
+from govopt.spec import Design, with_values
 
 SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
 WITH_DESIGN = sorted(p.name for p in SPECS.glob("*.toml") if "[design]" in p.read_text())
@@ -158,8 +158,8 @@ def test_chunks_do_not_change_rows():
 def test_use_case_is_honoured(use_case):
     """``[analysis] use_case`` (govopt.fidelity): bulk rows run the use case's analyses at its
     settings, as evaluate does (a spring sizing has no load change columns)."""
-    spec = load_spec(SPECS / "hamabe-a.toml").with_values(
-        {"analysis.use_case": use_case, "analysis.tolerance": 1e-3})
+    spec = with_values(load_spec(SPECS / "hamabe-a.toml"),
+                       {"analysis.use_case": use_case, "analysis.tolerance": 1e-3})
     cols = design_arrays(spec, {"pendulum_mass": [11.0, 12.5]})
     frame = evaluate_many(spec, cols)
     for i in range(2):

@@ -10,8 +10,8 @@ from clirun import invoke
 
 import govopt
 from govopt.analysis import statics
-from govopt.model import spring
 from govopt.optimize import design as dz
+from govopt.springs import helical as hx
 
 SPEC = "govopt/specs/hamabe-design.toml"
 
@@ -59,12 +59,12 @@ def test_continuous_bound_below_discrete(result):
 
 def _brute_force(spec, masses, wires, radii, turns):
     """Independent exhaustive search: statics from govopt.analysis.statics (not the optimiser's
-    kappa-affine model), spring checks from govopt.model.spring; dynamics by the same dash-pot
+    kappa-affine model), spring checks from govopt.springs.helical; dynamics by the same dash-pot
     window as the optimiser. Returns the best moving mass and its design."""
     req = spec.requirements
     G, rho_s = spec.material.shear_modulus, spec.material.density
     M, D, R, N = (a.ravel() for a in np.meshgrid(masses, wires, radii, turns, indexing="ij"))
-    kappa = spring.stiffness(D, R, N, G)
+    kappa = hx.stiffness_r(D, R, N, G)
     m, k = M[:, None], kappa[:, None]
     l0 = statics.free_half_length(spec, m, k)
     grid = dz.Grid.build(spec)
@@ -82,9 +82,9 @@ def _brute_force(spec, masses, wires, radii, turns):
     ok = (np.all(w2 > 0, axis=1) & np.all(k2 >= req.k2_margin * w0sq, axis=1)
           & np.all(k2 <= (1 - req.k2_margin) * w0sq, axis=1) & (irr <= spec.speed.irregularity)
           & np.all(F >= 0, axis=1) & (l0[:, 0] > 0)
-          & (spring.shear_stress(F.max(axis=1), D, R) <= spec.material.allowable_shear_stress)
+          & (hx.shear_stress_r(F.max(axis=1), D, R) <= spec.material.allowable_shear_stress)
           & (C >= req.spring_index[0]) & (C <= req.spring_index[1]) & ((N + 1) * D <= 2 * l0[:, 0]))
-    obj = M + spring.wire_mass(D, R, N, rho_s)
+    obj = M + hx.wire_mass(D, R, N, rho_s)
     km = dz.KappaModel.build(spec, masses, grid.alpha)
     for i in np.argsort(np.where(ok, obj, np.inf)):
         if not ok[i]:

@@ -8,7 +8,8 @@ import pytest
 
 import govopt
 from govopt import fidelity
-from govopt.analysis import friction, loadchange, vibration
+from govopt.analysis import friction, loadchange
+from govopt.governors.shaft import vibration
 
 KGFCM = 9.80665 * 0.01
 

@@ -52,7 +52,7 @@ def test_import_govopt_loads_no_numerics():
 def test_lazy_exports_are_the_modules_objects():
     import govopt
     from govopt.evaluation import evaluate
-    from govopt.optimize.design import design
+    from govopt.optimize.search import design
 
     assert govopt.evaluate is evaluate and govopt.design is design
     assert set(govopt.__all__) <= set(dir(govopt))

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy.interpolate import CubicSpline, PchipInterpolator
 
-from govopt.model import valvegear as vg
+from govopt.governors.shaft import valvegear as vg
 
 REL = 1e-14  # relative to the largest |value| of the compared quantity
 

@@ -214,9 +214,9 @@ def test_length_coordinate_in_mm_everywhere(porter):
 def _both(draw):
     """``draw(report)`` through the plain renderer and through rich without colour: the two
     texts, and whether the plain report fell back on rich."""
-    from govopt.report.text import _Report
+    from govopt.report.text import TextReport
 
-    plain, rich = _Report(False), _Report(False, plain=False)
+    plain, rich = TextReport(False), TextReport(False, plain=False)
     draw(plain)
     draw(rich)
     return plain.text(), rich.text(), plain._console is not None
@@ -265,11 +265,11 @@ def test_plain_narrow_characters_are_one_cell_in_rich():
     (Latin, Greek); the combining marks between them (U+0300-U+036F) are not."""
     from rich.cells import cell_len
 
-    from govopt.report.text import _narrow
+    from govopt.report.text import is_narrow
 
     chars = [chr(i) for i in range(0x400) if chr(i).isprintable()]
-    assert {cell_len(ch) for ch in chars if _narrow(ch)} == {1}
-    assert {cell_len(ch) for ch in chars if not _narrow(ch)} == {0}
+    assert {cell_len(ch) for ch in chars if is_narrow(ch)} == {1}
+    assert {cell_len(ch) for ch in chars if not is_narrow(ch)} == {0}
 
 
 @pytest.mark.parametrize("cell", ["e\u0301", "\u6f22\u5b57", "x" * 400])
@@ -294,7 +294,7 @@ def test_piped_reports_are_rich_text_without_rich(which, request, monkeypatch):
         raise AssertionError("the piped report imported rich")
 
     with monkeypatch.context() as m:
-        m.setattr(text._Report, "console", property(no_rich))
+        m.setattr(text.TextReport, "console", property(no_rich))
         plain = format_result(res, colour=False)
     monkeypatch.setattr(text, "plain_table", lambda *args, **kw: None)  # every table by rich
     assert plain == format_result(res, colour=False)

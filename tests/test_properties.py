@@ -22,9 +22,9 @@ from hypothesis import strategies as st
 from govopt.errors import GovoptError
 from govopt.evaluation import evaluate
 from govopt.governors import REGISTRY
-from govopt.model import spring
 from govopt.spec import parse_spec
-from govopt.units import _normalise, registry
+from govopt.springs import helical as hx
+from govopt.units import normalise, registry
 
 SPECS = {p.stem: p for p in bundled_specs()}
 #: one spec per governor type with a design to evaluate (the Watt's is its design spec with the
@@ -40,7 +40,7 @@ TEMPLATES = {
 
 def _dimension(unit: str):
     """A hashable form of a unit's dimensionality."""
-    return tuple(sorted(dict(registry().Quantity(_normalise(unit)).dimensionality).items()))
+    return tuple(sorted(dict(registry().Quantity(normalise(unit)).dimensionality).items()))
 
 
 #: the scaled dimensions (named by a unit of each): all quantities of one dimension are scaled
@@ -67,7 +67,7 @@ def _quantity(text):
     if not isinstance(text, str) or not text.lstrip("-+(")[:1].isdigit():
         return None
     try:
-        q = registry().Quantity(_normalise(text))
+        q = registry().Quantity(normalise(text))
     except Exception:
         return None
     return None if not hasattr(q, "units") or q.unitless else q
@@ -149,7 +149,7 @@ def test_unit_restatements_agree(gtype, pick):
         if not units or "radian" in str(q.units) or "degree" in str(q.units):
             return f"{q.magnitude!r} {q.units:~}".replace(" ** ", "^")
         unit = units[pick % len(units)]
-        return f"{q.to(_normalise(unit)).magnitude!r} {unit}"
+        return f"{q.to(normalise(unit)).magnitude!r} {unit}"
 
     restated = {k: (_map_quantities(v, change) if k != "name" else v) for k, v in data.items()}
     a, b = _run(data), _run(restated)
@@ -170,10 +170,10 @@ def test_stress_scales_as_F_r_over_d_cubed(F, d, index, k, correction):
     proportional to ``F``, and ``k^-2`` when ``d`` and ``r`` both grow by ``k`` (the index
     kept); uncorrected, exactly ``16 F r / (pi d^3)``."""
     r = index * d / 2.0
-    tau = spring.shear_stress(F, d, r, correction)
+    tau = hx.shear_stress_r(F, d, r, correction)
     assume(np.isfinite(tau) and tau > 0)
-    assert spring.shear_stress(3.0 * F, d, r, correction) == pytest.approx(3.0 * tau, rel=1e-12)
-    assert spring.shear_stress(F, k * d, k * r, correction) == pytest.approx(tau / k**2,
+    assert hx.shear_stress_r(3.0 * F, d, r, correction) == pytest.approx(3.0 * tau, rel=1e-12)
+    assert hx.shear_stress_r(F, k * d, k * r, correction) == pytest.approx(tau / k**2,
                                                                               rel=1e-12)
     if correction == "none":
         assert tau == pytest.approx(16.0 * F * r / (math.pi * d**3), rel=1e-14)

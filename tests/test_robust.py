@@ -13,6 +13,7 @@ import govopt
 from govopt.bulk import check_names, evaluate_many
 from govopt.optimize import design as dz
 from govopt.optimize import robust as rb
+from govopt.optimize import search
 from govopt.optimize.margins import window_centre
 from govopt.spec import Design
 from govopt.springs import tolerances as tl
@@ -24,12 +25,12 @@ TEXTBOOK = "govopt/specs/spring_loaded-design-robust.toml"
 
 @pytest.fixture(scope="module")
 def nominal():
-    return dz.design(govopt.load_spec(SPEC))
+    return search.design(govopt.load_spec(SPEC))
 
 
 @pytest.fixture(scope="module")
 def robust():
-    return dz.design(govopt.load_spec(ROBUST))
+    return search.design(govopt.load_spec(ROBUST))
 
 
 def _design(res) -> Design:
@@ -197,7 +198,7 @@ def test_textbook_robust_design_holds_at_its_corners():
     check (l0 is the whole free length, spring_length_factor 1): searched on a 1/20 mm grid
     through the ordinary evaluator, independently of the optimiser's own corner code."""
     spec = govopt.load_spec(TEXTBOOK)
-    res = dz.design(spec)
+    res = search.design(spec)
     design = _design(res)
     D = 2.0 * design.coil_radius
     half_r = float(tl.coil_diameter_tolerance(D, D / design.wire_diameter, 2)) / 2.0
@@ -223,7 +224,7 @@ def test_adjusting_nut_and_valve_ranges_are_reported_within_their_ranges(tmp_pat
                                        "dashpot_valve = 0.5")
     path = tmp_path / "nut.toml"
     path.write_text(text)
-    res = dz.design(govopt.load_spec(path))
+    res = search.design(govopt.load_spec(path))
     nut = res.optimisation["robust"]["adjusting_nut"]
     assert nut["range_m"] == [-0.002, 0.002]
     lo, hi = nut["needed_range_m"]

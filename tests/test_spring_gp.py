@@ -1,6 +1,6 @@
 """Tests of the governor-spring GP (govopt.optimize.spring_gp) against the exact spring formulas.
 
-Every reference value here is recomputed with :mod:`govopt.model.spring` (brute force over grids
+Every reference value here is recomputed with :mod:`govopt.springs.helical` (brute force over grids
 or catalogues, Hamabe's closed forms), never with the GP module's own helpers.
 """
 
@@ -13,7 +13,6 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from govopt.model import spring
 from govopt.optimize.spring_gp import (
     Diagnosis,
     DiscreteSolution,
@@ -24,6 +23,7 @@ from govopt.optimize.spring_gp import (
     check_design,
     size_helical_spring,
 )
+from govopt.springs import helical as hx
 
 KGF = 9.80665  # N
 KGF_CM2 = KGF / 1e-4  # Pa
@@ -66,12 +66,12 @@ LIMITS = ("d_min", "d_max", "r_min", "r_max", "n_min", "n_max", "C_min", "C_max"
 def feasible(d, r, n, v, correction, kappa_band=None, rtol=1e-9):
     """Independent constraint check with spring.py (``kappa_band=(lo, hi)`` or ``None``)."""
     d, r, n = np.broadcast_arrays(*(np.asarray(a, dtype=float) for a in (d, r, n)))
-    C = spring.spring_index(d, r)
+    C = hx.spring_index_r(d, r)
     with np.errstate(divide="ignore", invalid="ignore"):  # Wahl's K is undefined for C <= 1
-        tau = spring.shear_stress(v["F_max"], d, r, correction)
+        tau = hx.shear_stress_r(v["F_max"], d, r, correction)
     ok = (C > 1) & (tau <= v["k_s"] * (1 + rtol))
     if kappa_band is not None:
-        k = spring.stiffness(d, r, n, v["G"])
+        k = hx.stiffness_r(d, r, n, v["G"])
         ok &= (k >= kappa_band[0] * (1 - rtol)) & (k <= kappa_band[1] * (1 + rtol))
     up = 1 + rtol
     ok &= (d >= v["d_min"] / up) & (d <= v["d_max"] * up)
@@ -80,7 +80,7 @@ def feasible(d, r, n, v, correction, kappa_band=None, rtol=1e-9):
     ok &= (C >= v["C_min"] / up) & (C <= v["C_max"] * up)
     ok &= 2 * r + d <= v["D_out_max"] * up
     ok &= (n + 1) * d <= v["L_body_max"] * up
-    ok &= spring.surge_frequency(d, r, n, v["G"], v["density"]) >= v["f_surge_min"] / up
+    ok &= hx.surge_frequency_r(d, r, n, v["G"], v["density"]) >= v["f_surge_min"] / up
     return ok
 
 
@@ -113,10 +113,10 @@ def test_gp_beats_fine_grid_and_grid_is_close(spec, correction):
     assert sol.status == "optimal"
     d = np.geomspace(spec["d_min"], spec["d_max"], 900)[:, None]
     r = np.geomspace(spec["r_min"], spec["r_max"], 900)[None, :]
-    n = spring.turns_for_stiffness(spec["kappa"], d, r, spec["G"])
+    n = hx.turns_for_stiffness(spec["kappa"], d, r, spec["G"])
     ok = feasible(d, r, n, spec, correction)
     assert ok.any()
-    mass = np.where(ok, spring.wire_mass(d, r, n, spec["density"]), np.inf)
+    mass = np.where(ok, hx.wire_mass(d, r, n, spec["density"]), np.inf)
     grid_best = float(mass.min())
     # the GP design itself is feasible for the exact formulas ...
     assert feasible(sol.d, sol.r, sol.n, spec, correction, rtol=1e-6)
@@ -136,7 +136,7 @@ def test_band_gp_beats_3d_grid():
     r = np.geomspace(spec["r_min"], spec["r_max"], 160)[None, :, None]
     n = np.geomspace(spec["n_min"], spec["n_max"], 160)[None, None, :]
     ok = feasible(d, r, n, spec, "wahl", kappa_band=band)
-    grid_best = float(np.where(ok, spring.wire_mass(d, r, n, spec["density"]), np.inf).min())
+    grid_best = float(np.where(ok, hx.wire_mass(d, r, n, spec["density"]), np.inf).min())
     assert sol.mass <= grid_best * (1 + 1e-6)
     assert grid_best <= sol.mass * 1.10  # a coarse 3-D grid
 
@@ -151,8 +151,8 @@ def test_hamabe_case_a(gp_none):
     r = 0.06
     sol = gp_none.solve(**HAMABE, r_min=r, r_max=r)
     assert sol.status == "optimal"
-    d_ref = float(spring.wire_diameter_for_stress(HAMABE["F_max"], r, HAMABE["k_s"]))
-    n_ref = float(spring.turns_for_stiffness(HAMABE["kappa"], d_ref, r, HAMABE["G"]))
+    d_ref = float(hx.wire_diameter_for_stress(HAMABE["F_max"], r, HAMABE["k_s"]))
+    n_ref = float(hx.turns_for_stiffness(HAMABE["kappa"], d_ref, r, HAMABE["G"]))
     assert d_ref * 100 == pytest.approx(1.667, abs=5e-4)  # Hamabe's 1.667 cm
     # same number in Hamabe's own units (kgf, cm)
     assert d_ref * 100 == pytest.approx((16 * 606 * 6 / (math.pi * 4000)) ** (1 / 3), rel=1e-12)
@@ -174,10 +174,10 @@ def test_wahl_auxiliary_exact_when_stress_active(gp_wahl, spec):
     assert "allowable stress" in sol.active
     C = 2 * sol.r / sol.d
     assert sol.t == pytest.approx(1 / (C - 1), rel=1e-6)
-    tau = float(spring.shear_stress(spec["F_max"], sol.d, sol.r, "wahl"))
+    tau = float(hx.shear_stress_r(spec["F_max"], sol.d, sol.r, "wahl"))
     assert tau <= spec["k_s"] * (1 + 1e-6)
     assert tau == pytest.approx(spec["k_s"], rel=1e-6)
-    assert sol.wahl_factor == pytest.approx(float(spring.wahl_factor(C)), rel=1e-12)
+    assert sol.wahl_factor == pytest.approx(float(hx.wahl_factor(C)), rel=1e-12)
     assert sol.wahl_factor == pytest.approx(1 + 0.75 * sol.t + 0.615 / C, rel=1e-6)
 
 
@@ -197,7 +197,7 @@ def exhaustive(spec, catalogue, turn_step, r_step, tol, correction="wahl"):
     r = (np.arange(1, math.floor(spec["r_max"] / r_step + 1e-9) + 1) * r_step)[None, :, None]
     n = (np.arange(1, math.floor(spec["n_max"] / turn_step + 1e-9) + 1) * turn_step)[None, None]
     ok = feasible(d, r, n, spec, correction, kappa_band=band)
-    mass = np.where(ok, spring.wire_mass(d, r, n, spec["density"]), np.inf)
+    mass = np.where(ok, hx.wire_mass(d, r, n, spec["density"]), np.inf)
     return float(mass.min())
 
 
@@ -374,9 +374,9 @@ def test_other_objectives_and_validation():
     assert sol.status == "optimal"
     d = np.geomspace(BIG["d_min"], BIG["d_max"], 600)[:, None]
     r = np.geomspace(BIG["r_min"], BIG["r_max"], 600)[None, :]
-    n = spring.turns_for_stiffness(BIG["kappa"], d, r, BIG["G"])
+    n = hx.turns_for_stiffness(BIG["kappa"], d, r, BIG["G"])
     ok = feasible(d, r, n, BIG, "wahl")
-    tau = np.where(ok, spring.shear_stress(BIG["F_max"], d, r, "wahl"), np.inf)
+    tau = np.where(ok, hx.shear_stress_r(BIG["F_max"], d, r, "wahl"), np.inf)
     assert sol.stress <= tau.min() * (1 + 1e-6)
     assert sol.objective == pytest.approx(sol.stress, rel=1e-6)
     with pytest.raises(TypeError, match="unknown"):
@@ -392,7 +392,7 @@ def test_other_objectives_and_validation():
                                 rtol=1e-6)
     assert bool(feas)
     assert ratios["allowable stress"] == pytest.approx(
-        float(spring.shear_stress(HAMABE["F_max"], 0.017, 0.06)) / HAMABE["k_s"])
+        float(hx.shear_stress_r(HAMABE["F_max"], 0.017, 0.06)) / HAMABE["k_s"])
     feas, ratios = check_design(0.017, 0.06, 8.0, HAMABE, "none")
     assert not bool(feas)  # 64.2 kgf/cm is not the required 59.7 kgf/cm
     assert ratios["stiffness"] == pytest.approx(62952.3 / HAMABE["kappa"], rel=1e-6)
@@ -421,7 +421,7 @@ def test_random_specs_gp_vs_grid(gp_wahl, fk, ff, fs, fd):
     sol = gp_wahl.solve(**spec)
     d = np.geomspace(spec["d_min"], spec["d_max"], 400)[:, None]
     r = np.geomspace(spec["r_min"], spec["r_max"], 400)[None, :]
-    n = spring.turns_for_stiffness(spec["kappa"], d, r, spec["G"])
+    n = hx.turns_for_stiffness(spec["kappa"], d, r, spec["G"])
     ok = feasible(d, r, n, spec, "wahl")
     if sol.status == "infeasible":
         assert not ok.any()  # nothing on the grid either
@@ -429,7 +429,7 @@ def test_random_specs_gp_vs_grid(gp_wahl, fk, ff, fs, fd):
     assert sol.status == "optimal"
     assert feasible(sol.d, sol.r, sol.n, spec, "wahl", rtol=1e-6)
     if ok.any():
-        grid_best = float(np.where(ok, spring.wire_mass(d, r, n, spec["density"]), np.inf).min())
+        grid_best = float(np.where(ok, hx.wire_mass(d, r, n, spec["density"]), np.inf).min())
         assert sol.mass <= grid_best * (1 + 1e-6)
 
 

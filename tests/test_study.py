@@ -16,6 +16,7 @@ import pytest
 
 from govopt import evaluate, load_spec
 from govopt.bulk import margin_column, passed_column, result_row
+from govopt.stats import wilson
 from govopt.study import (
     Store,
     StudyError,
@@ -28,7 +29,6 @@ from govopt.study import (
     run_study,
     summary_text,
     tolerance_summary,
-    wilson,
 )
 
 SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"

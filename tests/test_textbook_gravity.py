@@ -23,7 +23,7 @@ from govopt.governors import governor_class
 from govopt.governors.porter import PorterGovernor
 from govopt.governors.proell import ProellGovernor
 from govopt.governors.watt import WattGovernor, height_constant, height_for_speed
-from govopt.spec import SpecError, _Reader
+from govopt.spec import Reader, SpecError
 from govopt.units import G_STANDARD as G
 from govopt.units import parse_quantity
 
@@ -33,7 +33,7 @@ SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
 
 
 def build(cls, **table):
-    return cls.parse(_Reader("test.toml", table, "governor", []))
+    return cls.parse(Reader("test.toml", table, "governor", []))
 
 
 def spec_table(name):
@@ -44,7 +44,7 @@ def spec_table(name):
 def from_spec(name, **overrides):
     table, design = spec_table(name)
     cls = governor_class(table.pop("type"))
-    return cls.parse(_Reader(name, {**table, **overrides}, "governor", [])), design
+    return cls.parse(Reader(name, {**table, **overrides}, "governor", [])), design
 
 
 def within(actual, expected, tol):

@@ -23,7 +23,7 @@ from govopt.governors import governor_class
 from govopt.governors.hartnell import HartnellGovernor
 from govopt.governors.spring_gravity import SpringGravityGovernor
 from govopt.governors.spring_loaded import SpringLoadedGovernor
-from govopt.spec import SpecError, _Reader, load_spec
+from govopt.spec import Reader, SpecError, load_spec
 from govopt.units import G_STANDARD as G
 from govopt.units import parse_quantity
 
@@ -35,7 +35,7 @@ SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
 
 
 def build(cls, **table):
-    return cls.parse(_Reader("test.toml", table, "governor", []))
+    return cls.parse(Reader("test.toml", table, "governor", []))
 
 
 def through(gov, m, xs, omegas, central=None):
@@ -500,7 +500,7 @@ def spec_parts(name):
     """The example spec's governor (through the type's parse) and its [design] values (SI)."""
     data = tomllib.loads((SPECS / name).read_text())
     table = {k: v for k, v in data["governor"].items() if k != "type"}
-    gov = governor_class(data["governor"]["type"]).parse(_Reader(name, table, "governor", []))
+    gov = governor_class(data["governor"]["type"]).parse(Reader(name, table, "governor", []))
     design = data["design"]
     mass = parse_quantity(design["ball_weight"], "force") / G
     central = parse_quantity(design["central_weight"], "force") / G \

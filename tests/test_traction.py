@@ -25,7 +25,7 @@ from scipy.optimize import brentq
 from govopt.governors import governor_class
 from govopt.governors import traction_coil as tc
 from govopt.governors import traction_leaf as tl
-from govopt.spec import SpecError, _Reader
+from govopt.spec import Reader, SpecError
 from govopt.springs import leaf
 from govopt.units import G_STANDARD, Q_
 from govopt.units import parse_quantity as q
@@ -42,12 +42,12 @@ def load(name):
     """``(governor, data)`` of a bundled spec, the ``[governor]`` table through the type's own
     parser (the rest of the spec is read here with units, as the tests need it)."""
     data = tomllib.loads((SPECS / name).read_text(encoding="utf-8"))
-    reader = _Reader(name, data["governor"], "governor", [])
+    reader = Reader(name, data["governor"], "governor", [])
     return governor_class(reader.raw("type", True)).parse(reader), data
 
 
 def parse_governor(cls, **table):
-    return cls.parse(_Reader("test", table, "governor", []))
+    return cls.parse(Reader("test", table, "governor", []))
 
 
 # -- the constant -------------------------------------------------------------------------------
@@ -508,7 +508,7 @@ def _design(name, **governor):
     spec = load_spec(SPECS / name)
     if governor:
         data = tomllib.loads((SPECS / name).read_text(encoding="utf-8"))
-        reader = _Reader(name, {**data["governor"], **governor}, "governor", [])
+        reader = Reader(name, {**data["governor"], **governor}, "governor", [])
         spec = replace(spec, governor=governor_class(reader.raw("type", True)).parse(reader))
     return spec, design(spec)
 
@@ -560,12 +560,12 @@ def test_old_coil_design_buckles():
     (it could not even be compressed into place)."""
     from govopt import load_spec
     from govopt.analysis import spring_engineering as se
-    from govopt.model import spring
+    from govopt.springs import helical as hx
 
     spec = load_spec(SPECS / "traction-coil-design.toml")
     d, r, n, L0 = 3.55e-3, 28e-3, 19.5, 0.61265
     G = spec.material.shear_modulus
-    kappa = spring.stiffness(d, r, n, G)
+    kappa = hx.stiffness_r(d, r, n, G)
     rows = se.geometry_rows(spec, d, 2 * r, n, kappa, L0)
     F1, F2 = se.static_range(spec, kappa, L0)
     s_max = (F2 + 0.1 * (F2 - F1)) / kappa  # overtravel 10 % of the working stroke
@@ -622,10 +622,10 @@ def test_coil_design_helix_angle_within_the_limit():
     assert row.passed and row.value == pytest.approx(m, rel=1e-12)
     # the old design fails the row, and only it among the geometric ones
     from govopt.analysis import spring_engineering as se
-    from govopt.model import spring
+    from govopt.springs import helical as hx
 
     d0, r0, n0, L0 = 1.6e-3, 12e-3, 4.0, 0.14325147278048733
-    kappa0 = spring.stiffness(d0, r0, n0, G)
+    kappa0 = hx.stiffness_r(d0, r0, n0, G)
     rows = se.geometry_rows(spec, d0, 2 * r0, n0, kappa0, L0)
     value, limit, _ = rows["free pitch <= 0.7 inside diameter (helix angle)"]
     assert float(value) == pytest.approx(35.0e-3, abs=0.05e-3) and float(limit) == 0.7 * 22.4e-3

@@ -27,9 +27,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy import integrate
 
-from govopt.analysis import vibration as V
 from govopt.evaluation import evaluate
-from govopt.model import valvegear as vg
+from govopt.governors.shaft import valvegear as vg
+from govopt.governors.shaft import vibration as V
 from govopt.spec import load_spec
 
 SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"

@@ -71,10 +71,10 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..governors.base import KEY_UNITS
-from ..spec import LoadChange, Spec
+from ..inputs import LoadChange, Spec
 from . import statics
 from .loadchange import LoadChangeModel, load_change_model  # noqa: F401 (re-exported)
-from .roots import brentq  # scipy's brentq without importing scipy (issue 14)
+from .roots import brentq  # scipy's brentq without importing scipy
 
 __all__ = [
     "FrictionResult",

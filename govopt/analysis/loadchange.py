@@ -13,8 +13,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..governors.base import KEY_UNITS
+from ..inputs import LoadChange, Spec
 from ..jsonable import number
-from ..spec import LoadChange, Spec
 from . import statics, vyshnegradsky
 from . import transient as tr
 
@@ -43,7 +43,7 @@ class LoadChangeModel:
     42); ``a0 = I``, ``3 a1 = f``, ``3 a2 = I k^2``, ``a3 = C R`` (eq. 28).
     """
 
-    I: float  # pendulum inertia about the fulcrum, kg m^2
+    I: float  # generalised inertia of the moving parts about the coordinate x, kg m^2
     f: float  # dash-pot coefficient, N m s
     k2: float  # restoring stiffness k^2 at alpha0, 1/s^2
     C: float  # d(net moment)/d omega at (alpha0, omega0), N m s
@@ -67,7 +67,8 @@ class LoadChangeModel:
 
     @property
     def net0(self) -> float:
-        """Initial net moment ``C eta0 - I k^2 xi0`` on the resting pendulum, N m."""
+        """Initial net generalised force ``C eta0 - I k^2 xi0`` on the resting flying masses
+        (N m about an angle)."""
         return self.C * self.eta0 - self.I * self.k2 * self.xi0
 
     def to_dict(self) -> dict:

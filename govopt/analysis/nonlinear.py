@@ -46,7 +46,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..spec import LoadChange, Spec
+from ..inputs import LoadChange, Spec
 from . import statics
 from .friction import LoadChangeModel, linear_response, load_change_model
 
@@ -109,7 +109,7 @@ def nonlinear_load_change(spec: Spec, sd: statics.SpringDesign | None = None,
     ``t``: output times (default: 12 time constants of the slowest linear mode, 2001 points).
     ``dashpot`` defaults to the design's (0 when absent). Friction is not modelled here.
     """
-    from scipy.integrate import solve_ivp  # imported when used (issue 14)
+    from scipy.integrate import solve_ivp  # imported when used (docs/decisions.md)
 
     sd = sd or statics.spring_design(spec)
     m = load_change_model(spec, sd, load_change, dashpot=dashpot, friction_moment=0.0)

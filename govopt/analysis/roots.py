@@ -1,5 +1,5 @@
 """Brent's bracketing root finder in plain Python, so that ``govopt evaluate`` never imports
-``scipy.optimize`` (issue 14, target 2: its import alone costs about 0.4 s of CPU, several times
+``scipy.optimize`` (its import alone costs about 0.4 s of CPU, several times
 the few root solves an evaluation makes).
 
 The steps are those of ``scipy.optimize.brentq`` (Brent, *Algorithms for Minimization without

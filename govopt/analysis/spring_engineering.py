@@ -1,4 +1,4 @@
-"""Spring engineering of a governor's helical spring on the mechanism's own loads (issue 11).
+"""Spring engineering of a governor's helical spring on the mechanism's own loads.
 
 The rules live in :mod:`govopt.springs` (materials, helical geometry, fatigue, EN 15800
 tolerances, the constraint tables); this module feeds them a governor's loads and geometry, for
@@ -70,7 +70,8 @@ def wire(material) -> mt.Material:
 
 def harmonics_hz(vib) -> tuple[float, ...]:
     """Frequencies (Hz) ``k omega0 / 2 pi`` of the forcing harmonics present in ``vib`` (a
-    :class:`~govopt.analysis.vibration.VibrationResult`; orders up to ``analysis.harmonics``)."""
+    :class:`~govopt.governors.shaft.vibration.VibrationResult`; orders up to
+    ``analysis.harmonics``)."""
     if vib is None:
         return ()
     moments = np.array([math.hypot(h["moment_cos_N_m"], h["moment_sin_N_m"])

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..errors import DesignError
-from ..spec import Design, Spec
+from ..inputs import Design, Spec
 
 
 @dataclass(frozen=True)

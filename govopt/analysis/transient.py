@@ -59,7 +59,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..limits import MAX_TRANSIENT_POINTS
-from .roots import brentq  # scipy's brentq without importing scipy (issue 14)
+from .roots import brentq  # scipy's brentq without importing scipy
 
 __all__ = [
     "TransientResult",

@@ -40,6 +40,8 @@ from typing import ClassVar
 
 import numpy as np
 
+from ..springs.kinds import KINDS, SpringKind
+
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
 #: (govopt's rule: every key's unit in its name), by the coordinate's dimension: ``x`` itself
 #: and its rate; the generalised force ``Q`` (N m about an angle, N along a length) and inertia
@@ -145,7 +147,7 @@ class Governor(ABC):
     @classmethod
     @abstractmethod
     def parse(cls, reader) -> Governor:
-        """Read the type's ``[governor]`` table (a :class:`govopt.spec._Reader`; keys beyond
+        """Read the type's ``[governor]`` table (a :class:`govopt.spec.Reader`; keys beyond
         ``type``) and return an instance; errors name the file and key."""
 
     @abstractmethod
@@ -213,6 +215,12 @@ class Governor(ABC):
     # -- the spring plug: a helical spring by default (a type with another spring overrides) --
 
     @property
+    def spring_kind(self) -> SpringKind | None:
+        """The spring's kind (:data:`govopt.springs.kinds.KINDS`: its spec keys and catalogue
+        limits), None for a dead-weight governor."""
+        return None if self.spring is None else KINDS[self.spring]
+
+    @property
     def spring_loaded_check(self) -> str:
         """Name of the check that the spring stays loaded in its working sense over the range."""
         return f"spring in {self.spring}"
@@ -220,21 +228,19 @@ class Governor(ABC):
     def spring_rate(self, design, material) -> float:
         """The spring's stiffness ``kappa`` (N/m) from the design's section: a helical spring,
         ``G d^4 / (64 r^3 n)`` (Wahl 1944; Hamabe Ex. 1)."""
-        from ..model import spring
+        from ..springs import helical as hx
 
-        return spring.stiffness(design.wire_diameter, design.coil_radius, design.active_turns,
-                                material.shear_modulus)
+        return hx.stiffness_r(design.wire_diameter, design.coil_radius, design.active_turns,
+                              material.shear_modulus)
 
     def spring_stress(self, x, F, sd, material):
         """The spring's stress (Pa) under force ``F`` at ``x``: helical shear ``16 F r/(pi d^3)``
         with the material's correction (Wahl 1944; Bergstraesser's k, EN 13906-1)."""
-        from ..model import spring
+        from ..springs import helical as hx
 
         if material.stress_correction == "bergstrasser":
-            from ..springs import helical
-
-            return helical.shear_stress(F, sd.d, 2.0 * sd.r, "bergstrasser")
-        return spring.shear_stress(F, sd.d, sd.r, material.stress_correction)
+            return hx.shear_stress(F, sd.d, 2.0 * sd.r, "bergstrasser")
+        return hx.shear_stress_r(F, sd.d, sd.r, material.stress_correction)
 
     def spring_checks(self, spec, sd, char, vib=None) -> list:
         """The spring's own checks (:class:`govopt.result.Check`): a helical spring's largest

@@ -44,8 +44,8 @@ class HartnellGovernor(BellCrankGovernor):
         ``obliquity``, ``sleeve_friction`` (:meth:`BellCrankGovernor.read_common`) and
         ``spring_length`` (the spring's length at ``radius_inner``).
 
-        >>> from govopt.spec import _Reader
-        >>> gov = HartnellGovernor.parse(_Reader("ex5", {"ball_arm": "15 cm",
+        >>> from govopt.spec import Reader
+        >>> gov = HartnellGovernor.parse(Reader("ex5", {"ball_arm": "15 cm",
         ...     "sleeve_arm": "9 cm", "radius_inner": "10 cm", "radius_outer": "15 cm",
         ...     "spring_length": "10 cm"}, "governor", []))
         >>> round(float(gov.sleeve_lift(0.15)) * 100, 12)  # cm: (b/a) (r_1 - r_2)

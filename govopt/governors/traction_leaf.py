@@ -132,8 +132,8 @@ class TractionLeafGovernor(FlyWeights):
         (default 0), ``leaf_set_min`` and ``leaf_set_max``: the bounds of the leaf's set ``l0``
         (default 0 and ``leaf_length / 5``; see the module's docstring).
 
-        >>> from govopt.spec import _Reader
-        >>> gov = TractionLeafGovernor.parse(_Reader("ex", {"n_weights": 3,
+        >>> from govopt.spec import Reader
+        >>> gov = TractionLeafGovernor.parse(Reader("ex", {"n_weights": 3,
         ...     "leaf_length": "8 in", "hinge_radius": "1.25 in", "leaf_model": "straight",
         ...     "chord_open": "7.8125 in", "chord_closed": "7.625 in"}, "governor", []))
         >>> round((gov.x_outer - gov.hinge_radius) / 0.0254, 6)  # eq. 8: sqrt(8^2 - 7.625^2)/2

@@ -1,6 +1,6 @@
 """``import cvxpy`` without two ``scipy`` modules it loads at start-up and govopt never uses.
 
-cvxpy (1.4-1.9) imports, when it is imported (issue 14, target 2; CPU on the reference machine):
+cvxpy (1.4-1.9) imports, when it is imported (CPU on the reference machine):
 
 * ``scipy.stats`` for ``entropy``, used only by its quantum relative entropy atom: about 0.3 s;
 * ``scipy.optimize``, only to ask whether its SCIPY solver is installed (``installed_solvers()``

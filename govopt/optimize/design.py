@@ -35,8 +35,8 @@ from ..analysis import loadchange, statics
 from ..analysis import transient as tr
 from ..errors import DesignError, InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS, design_size_error
-from ..model import spring
 from ..spec import Design, Requirements, Spec, Speed
+from ..springs import helical as hx
 from ..units import G_STANDARD, SI_UNITS
 from .kappa import Affine, KappaModel
 from .margins import margins_to_ends, window_centre
@@ -178,11 +178,11 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
     give no over-regulation, settle within the limit for every load change and keep the
     vibration bound within its limit; and the best of them (fastest settling, or least
     vibration for that objective; for the mass objectives, which do not depend on it, the
-    centre of its admissible window on a log scale, :func:`~govopt.optimize.margins.window_centre`,
-    issue 24). ``fatigue(swing)``: the candidates' least spring fatigue
-    safety under peak-to-peak swings (candidates x dash-pots; the vibration bound is used, so
-    it errs safe), kept at ``requirements.min_fatigue_safety`` (default 1). Returns a dict of
-    arrays over candidates."""
+    centre of its admissible window on a log scale,
+    :func:`~govopt.optimize.margins.window_centre`). ``fatigue(swing)``: the candidates' least
+    spring fatigue safety under peak-to-peak swings (candidates x dash-pots; the vibration
+    bound is used, so it errs safe), kept at ``requirements.min_fatigue_safety`` (default 1).
+    Returns a dict of arrays over candidates."""
     n = len(rows)
     nan = np.full(n, np.nan)
     if spec.engine is None or not spec.load_changes:  # no dash-pot is designed
@@ -230,7 +230,7 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
         least["vibration"] = np.min(np.where(ok, vib, np.inf), axis=1)
         if req.max_vibration is not None:
             ok = ok & (vib <= req.max_vibration)
-    if fatigue is not None:  # the spring's life under the vibration (issue 11)
+    if fatigue is not None:  # the spring's life under the vibration
         ok = ok & (fatigue(vib) >= (req.min_fatigue_safety or 1.0))
     # the best admissible dash-pot: an infinite score (settling not decided within the time
     # grid's limit, limits.MAX_TRANSIENT_POINTS: a huge flywheel) ranks after every finite one
@@ -254,7 +254,7 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
 def vibration_bound(spec: Spec, km: KappaModel, grid: Grid, rows, kappa, f):
     """Sum of the harmonic amplitudes at the normal configuration (Hamabe Part II, with the
     dash-pot): an upper bound of half the peak-to-peak vibration, for candidates x dash-pots."""
-    from ..analysis.vibration import peak_amplitude_bound
+    from ..governors.shaft.vibration import peak_amplitude_bound
 
     i_n = int(np.argmin(np.abs(grid.alpha - spec.governor.alpha_normal)))
     k2 = (km.k2.x[rows, i_n] * np.asarray(kappa) + km.k2.y[rows, i_n])[:, None]
@@ -312,7 +312,7 @@ def helical_catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
     """Catalogue wire x coil-radius grid x turn step (helical springs; Wahl 1944)."""
     d, r, n = spring_catalogue(req)
     mat = spec.material
-    kappa = spring.stiffness(d, r, n, mat.shear_modulus)
+    kappa = hx.stiffness_r(d, r, n, mat.shear_modulus)
     harmonics, fatigue = (), None
     if mat.grade is not None:  # the wire grade's table (govopt.analysis.spring_engineering)
         from ..analysis import spring_engineering as se
@@ -324,7 +324,7 @@ def helical_catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
                 return se.screen_fatigue(spec, d[cc], r[cc], n[cc], kappa[cc], l0, swing)
     return SpringCatalogue(
         kappa=kappa,
-        mass=spring.wire_mass(d, r, n, mat.density),
+        mass=hx.wire_mass(d, r, n, mat.density),
         fields={"wire_diameter": d, "coil_radius": r, "active_turns": n},
         check=lambda cc, F, l0: spring_checks(spec, req, d[cc], r[cc], n[cc], F, l0,
                                               harmonics),
@@ -370,22 +370,22 @@ def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=(
     one, the compression spring's geometric rows too (coil clash, buckling, free pitch:
     :func:`govopt.analysis.spring_engineering.geometry_rows`)."""
     mat = spec.material
-    C = spring.spring_index(d, r)
+    C = hx.spring_index_r(d, r)
     ok = (C >= req.spring_index[0]) & (C <= req.spring_index[1])
     from ..analysis import spring_engineering as se
 
     if mat.grade is None:  # the stress against the spec's allowable; coil clash and buckling
-        ok &= spring.shear_stress(F_max, d, r, mat.stress_correction) \
+        ok &= hx.shear_stress_r(F_max, d, r, mat.stress_correction) \
             <= mat.allowable_shear_stress
-        ok &= se.geometry_screen(spec, d, r, n, spring.stiffness(d, r, n, mat.shear_modulus), l0)
+        ok &= se.geometry_screen(spec, d, r, n, hx.stiffness_r(d, r, n, mat.shear_modulus), l0)
     else:
-        ok &= se.screen(spec, d, r, n, spring.stiffness(d, r, n, mat.shear_modulus), l0,
+        ok &= se.screen(spec, d, r, n, hx.stiffness_r(d, r, n, mat.shear_modulus), l0,
                         harmonics)
     ok &= (n + 1.0) * d <= spec.governor.spring_length_factor * l0
     if req.max_outer_diameter is not None:
         ok &= 2.0 * r + d <= req.max_outer_diameter
     if req.min_surge_frequency is not None:
-        ok &= spring.surge_frequency(d, r, n, mat.shear_modulus, mat.density) \
+        ok &= hx.surge_frequency_r(d, r, n, mat.shear_modulus, mat.density) \
             >= req.min_surge_frequency
     return ok
 
@@ -614,11 +614,11 @@ def spring_mass_lower_bound(F, per_kappa, k_lo, k_hi, k_s, G, density):
 
     A spring stressed to exactly ``k_s`` meets the bound (d = 10 mm, r = 50 mm, n = 5):
 
-    >>> from govopt.model import spring
+    >>> from govopt.springs import helical as hx
     >>> G, rho, F = 80e9, 7850.0, 500.0
-    >>> kappa, tau = spring.stiffness(0.01, 0.05, 5, G), spring.shear_stress(F, 0.01, 0.05)
+    >>> kappa, tau = hx.stiffness_r(0.01, 0.05, 5, G), hx.shear_stress_r(F, 0.01, 0.05)
     >>> lb = spring_mass_lower_bound(F, 0.0, kappa, kappa, tau, G, rho)
-    >>> bool(np.isclose(lb, spring.wire_mass(0.01, 0.05, 5, rho), rtol=1e-12))
+    >>> bool(np.isclose(lb, hx.wire_mass(0.01, 0.05, 5, rho), rtol=1e-12))
     True
     """
     F, p = np.asarray(F, dtype=float), np.maximum(np.asarray(per_kappa, dtype=float), 0.0)
@@ -690,9 +690,9 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
         sol = energy_optimum(complete_values(values, "band"), mat.stress_correction, k_exp)
         if sol is None:  # not certified by the energy bound: the GP (cvxpy) decides
             if gp is None:
-                from .spring_gp import _cached_gp
+                from .spring_gp import cached_gp
 
-                gp = _cached_gp("mass", mat.stress_correction, "band", k_exp)
+                gp = cached_gp("mass", mat.stress_correction, "band", k_exp)
             sol = gp.solve(**values)
         if not sol.ok:
             continue
@@ -707,16 +707,13 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
     return best
 
 
-def design(spec: Spec):
-    """Find the best design for the spec's requirements; see the module docstring.
-
-    Raises :class:`~govopt.errors.InfeasibleError` with a diagnosis when no design exists, and
-    :class:`~govopt.errors.DesignError` naming the failed checks when the chosen design fails
-    its final re-evaluation (never returns a design that fails a check).
-    """
+def validated(spec: Spec) -> Spec:
+    """The spec with its design requirements filled in (:func:`requirements`), after the checks
+    every search needs: grids of a size govopt allows, a ``[material]`` where a spring is to be
+    chosen, a speed range. Raises :class:`~govopt.errors.InfeasibleError` naming the key."""
     req = requirements(spec)
     spec = replace(spec, requirements=req)  # the checks report the requirements designed to
-    too_big = design_size_error(req, spec.analysis.points, spec.governor.spring,
+    too_big = design_size_error(req, spec.analysis.points, spec.governor.spring_kind,
                                 spec.governor.mass_key)
     if too_big:  # counted from bounds and steps before any grid is built (govopt.limits)
         raise InfeasibleError(f"{spec.path}: {too_big[0]}: {too_big[1]}")
@@ -725,10 +722,23 @@ def design(spec: Spec):
                               "which needs its [material]")
     if spec.speed is None:
         raise InfeasibleError(f"{spec.path}: speed: missing: a design needs the speed range")
-    if req.robust:  # a tolerance box: the worst case over it (govopt.optimize.robust)
-        from .robust import robust_design
+    return spec
 
-        return robust_design(spec)
+
+def design(spec: Spec):
+    """Find the best nominal design for the spec's requirements; see the module docstring.
+    (:func:`govopt.optimize.search.design`, which ``govopt.design`` is, runs the robust search of
+    :mod:`govopt.optimize.robust` instead where the requirements ask for a tolerance box.)
+
+    Raises :class:`~govopt.errors.InfeasibleError` with a diagnosis when no design exists, and
+    :class:`~govopt.errors.DesignError` naming the failed checks when the chosen design fails
+    its final re-evaluation (never returns a design that fails a check).
+    """
+    spec = validated(spec)
+    req = spec.requirements
+    if req.robust:
+        raise ValueError("a robust spec is designed by govopt.optimize.search.design (the "
+                         "tolerance box's search), not the nominal search")
     if spec.governor.spring is None:  # a dead-weight governor: masses only
         cand, stats = dead_weight_search(spec, req)
         return _result(spec, req, cand, stats, None)

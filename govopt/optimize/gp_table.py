@@ -5,7 +5,8 @@ The rows of the least-mass helical spring's geometric programme (:mod:`govopt.op
 whose docstring gives each row's source) are functions of ``d, r, n, t`` and the parameter values
 ``P``: cvxpy builds the GP from them, and :func:`energy_optimum` evaluates them in numpy. They
 live apart from :mod:`~govopt.optimize.spring_gp` so that a design whose continuous bound
-:func:`energy_optimum` certifies never imports cvxpy (issue 14, target 2).
+:func:`energy_optimum` certifies never imports cvxpy (docs/decisions.md, imports
+on demand).
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from govopt.model import spring
+from govopt.springs import helical as hx
 
 #: Stand-ins for "no limit" (the GP needs a positive number for every parameter).
 _BIG = 1e6
@@ -42,11 +43,11 @@ DEFAULT_BOUNDS: dict[str, float | None] = {
     "force_per_stiffness": None,
 }
 _UPPER_KEYS = {"d_max", "r_max", "n_max", "C_max", "D_out_max", "L_body_max"}
-_MATERIAL_KEYS = ("F_max", "k_s", "G", "density")
+MATERIAL_KEYS = ("F_max", "k_s", "G", "density")
 
 
 @dataclass(frozen=True)
-class _Spec:
+class GPConstraint:
     """One named constraint ``g(x) <sense> limit``.
 
     ``g_exps`` are the exponents of the parameters appearing in ``g`` itself (``g`` is a monomial
@@ -68,7 +69,7 @@ class _Spec:
         return out
 
 
-def _stress_g(d, r, n, t, P, correction):
+def stress_g(d, r, n, t, P, correction):
     # F = F_max + force_per_stiffness * kappa(d, r, n): a posynomial (the second term is ~0
     # unless force_per_stiffness is given)
     F = P["F_max"] + P["force_per_stiffness"] * _stiffness_g(d, r, n, P)
@@ -88,7 +89,8 @@ def _stiffness_g(d, r, n, P):
     return P["G"] * d**4 / (64.0 * r**3 * n)
 
 
-def _specs(correction: str, stiffness: str, allowable_exponent: float = 0.0) -> list[_Spec]:
+def gp_constraints(correction: str, stiffness: str,
+                   allowable_exponent: float = 0.0) -> list[GPConstraint]:
     """The constraint table; ``allowable_exponent`` ``m``: the allowable stress is
     ``k_s d^-m`` (a wire grade's ``R_m ~ A d^-m``, a monomial), so the stress limit reads
     ``tau d^m <= k_s``."""
@@ -96,34 +98,34 @@ def _specs(correction: str, stiffness: str, allowable_exponent: float = 0.0) -> 
     hamabe = "Hamabe, Example 1"
     out = []
     if stiffness == "equality":
-        out.append(_Spec("stiffness", "kappa", "equal",
+        out.append(GPConstraint("stiffness", "kappa", "equal",
                          lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
     else:
-        out.append(_Spec("minimum stiffness", "kappa_min", "lower",
+        out.append(GPConstraint("minimum stiffness", "kappa_min", "lower",
                          lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
-        out.append(_Spec("maximum stiffness", "kappa_max", "upper",
+        out.append(GPConstraint("maximum stiffness", "kappa_max", "upper",
                          lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
     stress_src = hamabe + {"wahl": "; Wahl 1944 eq. 2-12",
                            "bergstrasser": "; Bergstraesser, EN 13906-1, Shigley eq. (10-5)"
                            }.get(correction, "")
     out += [
-        _Spec("allowable stress", "k_s", "upper",
-              lambda d, r, n, t, P: _stress_g(d, r, n, t, P, correction) * d**m
-              if m else _stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
+        GPConstraint("allowable stress", "k_s", "upper",
+              lambda d, r, n, t, P: stress_g(d, r, n, t, P, correction) * d**m
+              if m else stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
               stress_src),
-        _Spec("minimum wire diameter", "d_min", "lower", lambda d, r, n, t, P: d),
-        _Spec("maximum wire diameter", "d_max", "upper", lambda d, r, n, t, P: d),
-        _Spec("minimum coil radius", "r_min", "lower", lambda d, r, n, t, P: r),
-        _Spec("maximum coil radius", "r_max", "upper", lambda d, r, n, t, P: r),
-        _Spec("minimum active turns", "n_min", "lower", lambda d, r, n, t, P: n),
-        _Spec("maximum active turns", "n_max", "upper", lambda d, r, n, t, P: n),
-        _Spec("minimum spring index", "C_min", "lower", lambda d, r, n, t, P: 2.0 * r / d,
+        GPConstraint("minimum wire diameter", "d_min", "lower", lambda d, r, n, t, P: d),
+        GPConstraint("maximum wire diameter", "d_max", "upper", lambda d, r, n, t, P: d),
+        GPConstraint("minimum coil radius", "r_min", "lower", lambda d, r, n, t, P: r),
+        GPConstraint("maximum coil radius", "r_max", "upper", lambda d, r, n, t, P: r),
+        GPConstraint("minimum active turns", "n_min", "lower", lambda d, r, n, t, P: n),
+        GPConstraint("maximum active turns", "n_max", "upper", lambda d, r, n, t, P: n),
+        GPConstraint("minimum spring index", "C_min", "lower", lambda d, r, n, t, P: 2.0 * r / d,
               source="Wahl 1944 ch. 2"),
-        _Spec("maximum spring index", "C_max", "upper", lambda d, r, n, t, P: 2.0 * r / d,
+        GPConstraint("maximum spring index", "C_max", "upper", lambda d, r, n, t, P: 2.0 * r / d,
               source="Wahl 1944 ch. 2"),
-        _Spec("outer diameter", "D_out_max", "upper", lambda d, r, n, t, P: 2.0 * r + d),
-        _Spec("body length", "L_body_max", "upper", lambda d, r, n, t, P: (n + 1.0) * d),
-        _Spec("surge frequency", "f_surge_min", "lower",
+        GPConstraint("outer diameter", "D_out_max", "upper", lambda d, r, n, t, P: 2.0 * r + d),
+        GPConstraint("body length", "L_body_max", "upper", lambda d, r, n, t, P: (n + 1.0) * d),
+        GPConstraint("surge frequency", "f_surge_min", "lower",
               lambda d, r, n, t, P: _surge_g(d, r, n, P), (("G", 0.5), ("density", -0.5)),
               "Wahl 1944 ch. 25"),
     ]
@@ -133,7 +135,7 @@ def _specs(correction: str, stiffness: str, allowable_exponent: float = 0.0) -> 
 def complete_values(values: Mapping[str, float], stiffness: str) -> dict[str, float]:
     """Validate user values, fill the defaults and replace "no limit" by big/tiny numbers."""
     kappa_keys = ("kappa",) if stiffness == "equality" else ("kappa_min", "kappa_max")
-    required = kappa_keys + _MATERIAL_KEYS
+    required = kappa_keys + MATERIAL_KEYS
     allowed = set(required) | set(DEFAULT_BOUNDS)
     unknown = set(values) - allowed
     if unknown:
@@ -179,7 +181,7 @@ class EnergyOptimum:
 
 def energy_optimum(values: Mapping[str, float], correction: str = "none",
                    allowable_exponent: float = 0.0, points: int = 2001) -> EnergyOptimum | None:
-    """The least-mass spring of the band-mode GP (:func:`_specs`), where the energy bound is
+    """The least-mass spring of the band-mode GP (:func:`gp_constraints`), where the energy bound is
     attained; None where it cannot be shown so (then the GP is solved).
 
     The bound (:func:`govopt.optimize.design.spring_mass_lower_bound`): with Hamabe's Example 1
@@ -216,7 +218,7 @@ def energy_optimum(values: Mapping[str, float], correction: str = "none",
     defining = {"allowable stress", "maximum stiffness" if kappa == P["kappa_max"] else "",
                 "minimum stiffness" if kappa == P["kappa_min"] else ""}
     slack = np.full(d.shape, np.inf)
-    for row in _specs(correction, "band"):
+    for row in gp_constraints(correction, "band"):
         g = np.asarray(row.g(d, r, n, None, P), dtype=float)
         limit = P[row.limit]
         room = (limit - g) / limit if row.sense == "upper" else (g - limit) / limit
@@ -227,7 +229,7 @@ def energy_optimum(values: Mapping[str, float], correction: str = "none",
     if not slack[best] > _ROUNDING:  # no spring of the family meets every row
         return None
     d, r, n = float(d[best]), float(r[best]), float(n[best])
-    return EnergyOptimum(d=d, r=r, n=n, objective=float(spring.wire_mass(d, r, n, P["density"])),
-                         stiffness=float(spring.stiffness(d, r, n, G)),
-                         stress=float(spring.shear_stress(F0 + p * spring.stiffness(d, r, n, G),
+    return EnergyOptimum(d=d, r=r, n=n, objective=float(hx.wire_mass(d, r, n, P["density"])),
+                         stiffness=float(hx.stiffness_r(d, r, n, G)),
+                         stress=float(hx.shear_stress_r(F0 + p * hx.stiffness_r(d, r, n, G),
                                                           d, r, correction)))

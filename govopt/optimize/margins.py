@@ -6,7 +6,7 @@ anywhere in its feasible window. A value at an end of the window makes the check
 that end binding (Hamabe's eq. 32 at the low end, over-regulation at the high end), so a valve
 set a few per cent off fails it. :func:`window_centre` takes instead the admissible value whose
 least relative distance to an end of its admissible run is largest: the centre of the window on
-a log scale (issue 24). Every check the variable affects is in the admissibility mask, so a
+a log scale. Every check the variable affects is in the admissibility mask, so a
 check that narrows the window (fatigue, vibration, settling) moves the centre with it.
 """
 

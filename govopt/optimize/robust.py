@@ -1,4 +1,4 @@
-"""Robust design: every check holds over a tolerance box, after the fitter's adjustment (issue 24).
+"""Robust design: every check holds over a tolerance box, after the fitter's adjustment.
 
 ``[requirements]`` may ask that the design hold for parts made anywhere within their tolerances:
 
@@ -29,7 +29,7 @@ the robust optimum (the least objective among the catalogue's candidates that do
 the check that fails at a corner most often). It is then verified by a seeded Monte-Carlo
 sample, uniform within the box (every part anywhere within its tolerance), through the same
 evaluator: the probability that every check holds, with its 95 % Wilson interval
-(:func:`govopt.study.wilson`), and the checks that fail in the sample - where the corners hold
+(:func:`govopt.stats.wilson`), and the checks that fail in the sample - where the corners hold
 and the sample does not, a check is not monotone in a tolerance (no inner maximisation is done).
 
 The checks of the search bounds (``pendulum mass >= min`` ...) are not requirements on a made
@@ -47,6 +47,7 @@ import numpy as np
 
 from ..errors import InfeasibleError
 from ..spec import Design, Requirements, Spec
+from ..stats import wilson
 from . import design as dz
 
 #: the fitter's settings of the adjusting nut and of the dash-pot valve tried over each one's
@@ -129,7 +130,7 @@ def candidate_box(spec: Spec, req: Requirements, cols: dict) -> Box:
     n = len(cols["pendulum_mass"])
     out = {}
     if req.robust_spring_grade is not None:
-        if spec.governor.spring in (None, "leaf"):
+        if spec.governor.spring_kind is None or not spec.governor.spring_kind.helical:
             raise InfeasibleError(f"{spec.path}: requirements.robust_spring_grade: EN 15800 "
                                   "tolerances are for helical springs")
         d_tol, r_tol, l0_tol = spring_tolerances(spec, req.robust_spring_grade,
@@ -332,7 +333,6 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     box (``requirements.robust_samples`` samples, ``robust_seed``), the nut set by the fitter as
     at the corners; the probability that every check holds with its 95 % Wilson interval."""
     from ..bulk import design_arrays
-    from ..study import wilson
 
     base = {k: v[:1] for k, v in design_arrays(spec.with_design(design), [design]).items()}
     box = candidate_box(spec, req, base)

@@ -7,7 +7,7 @@ posynomial in ``(d, r, n)``, so the problem is a geometric programme (GP): conve
 primal-dual gap, and the dual variables are sensitivities
 ``d log(objective) / d log(limit)``.
 
-Constraints and their sources (the formulas are those of :mod:`govopt.model.spring`):
+Constraints and their sources (the formulas are those of :mod:`govopt.springs.helical`):
 
 =========================  =====================================================================
 ``stiffness``              ``G d^4 / (64 r^3 n) = kappa`` (monomial equality) — Hamabe, Example 1
@@ -57,17 +57,17 @@ from typing import Any
 
 import numpy as np
 
-from govopt.model import spring
+from govopt.springs import helical as hx
 
-from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize (issue 14)
+from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize
 from ._cvxpy import installed_solvers
 from .gp_table import (
-    _MATERIAL_KEYS,
     DEFAULT_BOUNDS,
-    _Spec,
-    _specs,
-    _stress_g,
+    MATERIAL_KEYS,
+    GPConstraint,
     complete_values,
+    gp_constraints,
+    stress_g,
 )
 
 __all__ = [
@@ -93,8 +93,8 @@ __all__ = [
 #: its least is the most stored energy per mass (a posynomial, ``R`` being a monomial).
 OBJECTIVES = ("mass", "stress", "outer diameter", "body length", "volume", "solid length",
               "mass per energy")
-#: Stress corrections, as in :func:`govopt.model.spring.shear_stress`.
-CORRECTIONS = spring.STRESS_CORRECTIONS
+#: Stress corrections, as in :func:`govopt.springs.helical.shear_stress_r`.
+CORRECTIONS = hx.CORRECTIONS
 STIFFNESS_MODES = ("equality", "band")
 #: :meth:`SpringGP.solve` keywords of the free-length limit (``free_length=True``)
 FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "Di_min",
@@ -143,7 +143,7 @@ def _objective_expr(objective, d, r, n, t, P, correction, end_coils=0.0):
     if objective == "solid length":
         return _coils(n, end_coils) * d
     if objective == "stress":
-        return _stress_g(d, r, n, t, P, correction)
+        return stress_g(d, r, n, t, P, correction)
     if objective == "mass per energy":  # m / (F^2 / (2 R)), R = G d^4 / (64 r^3 n)
         return (P["density"] * P["G"] * np.pi**2 / 64.0 * P["F_max"]**-2 * d**6 * r**-2
                 * (1.0 + end_coils * n**-1 if end_coils else 1.0))
@@ -160,22 +160,22 @@ _OBJECTIVE_EXPS = {"mass": {"density": 1.0}, "stress": {"F_max": 1.0},
 
 def _force(v, d, r, n):
     """Spring force for the stress check: ``F_max + force_per_stiffness * kappa``."""
-    return v["F_max"] + v["force_per_stiffness"] * spring.stiffness(d, r, n, v["G"])
+    return v["F_max"] + v["force_per_stiffness"] * hx.stiffness_r(d, r, n, v["G"])
 
 
 def _objective_np(objective, d, r, n, v, correction, end_coils=0.0):
-    """The objective evaluated with the exact formulas of :mod:`govopt.model.spring`."""
+    """The objective evaluated with the exact formulas of :mod:`govopt.springs.helical`."""
     if objective == "mass":
-        return spring.wire_mass(d, r, n + end_coils, v["density"])
+        return hx.wire_mass(d, r, n + end_coils, v["density"])
     if objective == "volume":
         return 2.0 * r * d**2 * (n + end_coils)
     if objective == "solid length":
         return (n + end_coils) * d
     if objective == "stress":
-        return spring.shear_stress(_force(v, d, r, n), d, r, correction)
+        return hx.shear_stress_r(_force(v, d, r, n), d, r, correction)
     if objective == "mass per energy":
-        R = spring.stiffness(d, r, n, v["G"])
-        return spring.wire_mass(d, r, n + end_coils, v["density"]) * 2.0 * R / v["F_max"]**2
+        R = hx.stiffness_r(d, r, n, v["G"])
+        return hx.wire_mass(d, r, n + end_coils, v["density"]) * 2.0 * R / v["F_max"]**2
     if objective == "outer diameter":
         return 2.0 * r + d
     if objective == "body length":
@@ -200,7 +200,7 @@ def _normalise_status(status: str | None) -> str:
 
 @dataclass(kw_only=True)
 class SpringFigures:
-    """A spring's design and the figures derived from it with :mod:`govopt.model.spring` (SI)."""
+    """A spring's design and the figures derived from it with :mod:`govopt.springs.helical` (SI)."""
 
     d: float = math.nan
     r: float = math.nan
@@ -221,14 +221,14 @@ class SpringFigures:
                    correction: str) -> None:
         """Set ``d, r, n`` and recompute every derived figure from the exact formulas."""
         self.d, self.r, self.n = d, r, n
-        self.mass = float(spring.wire_mass(d, r, n + self.end_coils, v["density"]))
-        self.stiffness = float(spring.stiffness(d, r, n, v["G"]))
-        self.stress = float(spring.shear_stress(_force(v, d, r, n), d, r, correction))
-        self.index = float(spring.spring_index(d, r))
-        self.wahl_factor = float(spring.wahl_factor(self.index)) if correction == "wahl" else 1.0
+        self.mass = float(hx.wire_mass(d, r, n + self.end_coils, v["density"]))
+        self.stiffness = float(hx.stiffness_r(d, r, n, v["G"]))
+        self.stress = float(hx.shear_stress_r(_force(v, d, r, n), d, r, correction))
+        self.index = float(hx.spring_index_r(d, r))
+        self.wahl_factor = float(hx.wahl_factor(self.index)) if correction == "wahl" else 1.0
         self.outer_diameter = 2.0 * r + d
         self.body_length = (n + 1.0) * d
-        self.surge_frequency = float(spring.surge_frequency(d, r, n, v["G"], v["density"]))
+        self.surge_frequency = float(hx.surge_frequency_r(d, r, n, v["G"], v["density"]))
 
 
 @dataclass
@@ -239,8 +239,8 @@ class SpringSolution(SpringFigures):
     ``{'allowable stress': -0.67}`` means 1 % more allowable stress saves 0.67 % of the mass.
     ``duals`` are the raw log-space multipliers from the solver (``>= 0`` for inequalities).
     ``parameter_sensitivities[p]`` is ``d log(objective) / d log(p)`` for every parameter.
-    ``stress`` and ``wahl_factor`` are recomputed with :func:`govopt.model.spring.shear_stress`
-    and :func:`~govopt.model.spring.wahl_factor`, not taken from the auxiliary ``t``.
+    ``stress`` and ``wahl_factor`` are recomputed with :func:`govopt.springs.helical.shear_stress_r`
+    and :func:`~govopt.springs.helical.wahl_factor`, not taken from the auxiliary ``t``.
     """
 
     status: str
@@ -342,10 +342,10 @@ def check_design(d, r, n, values: Mapping[str, float], correction: str = "wahl",
     """
     v = complete_values(values, "band" if "kappa" not in values else "equality")
     d, r, n = (np.asarray(a, dtype=float) for a in (d, r, n))
-    k = spring.stiffness(d, r, n, v["G"])
-    C = spring.spring_index(d, r)
+    k = hx.stiffness_r(d, r, n, v["G"])
+    C = hx.spring_index_r(d, r)
     with np.errstate(divide="ignore", invalid="ignore"):
-        tau = spring.shear_stress(_force(v, d, r, n), d, r, correction)
+        tau = hx.shear_stress_r(_force(v, d, r, n), d, r, correction)
         tau = np.where(C > 1.0, tau, np.inf) if correction != "none" else tau
     ratios: dict[str, np.ndarray] = {}
     if "kappa" in v:
@@ -365,7 +365,7 @@ def check_design(d, r, n, values: Mapping[str, float], correction: str = "wahl",
         "maximum spring index": C / v["C_max"],
         "outer diameter": (2.0 * r + d) / v["D_out_max"],
         "body length": (n + 1.0) * d / v["L_body_max"],
-        "surge frequency": v["f_surge_min"] / spring.surge_frequency(d, r, n, v["G"],
+        "surge frequency": v["f_surge_min"] / hx.surge_frequency_r(d, r, n, v["G"],
                                                                       v["density"]),
     })
     feasible = np.ones(np.broadcast(d, r, n).shape, dtype=bool)
@@ -420,11 +420,11 @@ class SpringGP:
         self.solver_opts = {**defaults, **(solver_opts or {})}
         self._fallback_opts = {} if defaults and not solver_opts else None
         kappa_keys = ("kappa",) if stiffness == "equality" else ("kappa_min", "kappa_max")
-        self.parameter_names = kappa_keys + _MATERIAL_KEYS + tuple(DEFAULT_BOUNDS)
+        self.parameter_names = kappa_keys + MATERIAL_KEYS + tuple(DEFAULT_BOUNDS)
         self.params = {k: cp.Parameter(pos=True, name=k) for k in self.parameter_names}
         #: ``m`` of a diameter-dependent allowable ``k_s d^-m`` (0: a constant ``k_s``)
         self.allowable_exponent = float(allowable_exponent)
-        self.specs = _specs(correction, stiffness, self.allowable_exponent)
+        self.specs = gp_constraints(correction, stiffness, self.allowable_exponent)
         self.d = cp.Variable(pos=True, name="d")
         self.r = cp.Variable(pos=True, name="r")
         self.n = cp.Variable(pos=True, name="n")
@@ -530,7 +530,7 @@ class SpringGP:
         like the working one). With the least free length of :meth:`_free_length` the force at
         solid length is ``F_c = F_max + R S_a = F_max + 1.5 G (0.006 d^3/(64 r) + 0.1 d^5 /
         (64 r^3))`` (N), a posynomial; the stress correction is the GP's (as
-        :func:`govopt.model.spring.shear_stress`: none, Wahl ``1 + 0.75 t + 0.615/C`` or
+        :func:`govopt.springs.helical.shear_stress_r`: none, Wahl ``1 + 0.75 t + 0.615/C`` or
         Bergstraesser ``1 + 1.25 t``). With an installed length ``L2`` at ``F_max``
         (``clear_solid`` tiny, ``L2_solid = L2``) the force at solid length ``F_max + R (L2 -
         L_c)`` is bounded by ``F_max + R L2`` (``R L2 = G d^4 L2 / (64 r^3 n)``, a monomial): a
@@ -549,7 +549,7 @@ class SpringGP:
             g = base
         return [16.0 / np.pi * F * g * d**m <= self.free_length_params["k_solid"]]
 
-    def _constraint(self, s: _Spec, slack=None):
+    def _constraint(self, s: GPConstraint, slack=None):
         g = s.g(self.d, self.r, self.n, self.t, self.params)
         c = self.params[s.limit]
         if s.sense == "upper":
@@ -918,7 +918,7 @@ def _enumerate_wire(d, v, correction, objective, turn_step, r_step, rtol,
         return None, r.size
     r, n = r[ok], n[ok]
     obj = _objective_np(objective, d, r, n, v, correction, end_coils) * np.ones_like(r)
-    mass = spring.wire_mass(d, r, n + end_coils, v["density"])
+    mass = hx.wire_mass(d, r, n + end_coils, v["density"])
     i = int(np.lexsort((mass, obj))[0])
     return (float(obj[i]), float(mass[i]), float(d), float(r[i]), float(n[i])), int(ok.size)
 
@@ -936,7 +936,7 @@ def best_discrete(solution_bounds: Mapping[str, float] | SpringSolution,
         correction = solution_bounds.correction
         objective = solution_bounds.objective_name
         solution_bounds = solution_bounds.inputs
-    gp = _cached_gp(objective, correction)
+    gp = cached_gp(objective, correction)
     return gp.best_discrete(catalogue_d, turn_step=turn_step, r_step=r_step,
                             stiffness_tol=stiffness_tol, prune=prune, **solution_bounds)
 
@@ -948,7 +948,7 @@ def best_discrete(solution_bounds: Mapping[str, float] | SpringSolution,
 _local = threading.local()
 
 
-def _cached_gp(objective: str, correction: str, stiffness: str = "equality",
+def cached_gp(objective: str, correction: str, stiffness: str = "equality",
                allowable_exponent: float = 0.0, end_coils: float = 0.0,
                free_length: bool = False, solid_exponent: float | None = None,
                envelope: str | None = None) -> SpringGP:
@@ -1001,7 +1001,7 @@ def size_helical_spring(F_max: float | None = None, stiffness: float | None = No
         stiffness = kappa
     if stiffness is None or F_max is None:
         raise TypeError("give F_max and stiffness, or loads=(F1, x1, F2, x2)")
-    gp = _cached_gp(objective, correction, end_coils=end_coils, envelope=envelope)
+    gp = cached_gp(objective, correction, end_coils=end_coils, envelope=envelope)
     sol = gp.solve(certify=True, kappa=stiffness, F_max=F_max, k_s=k_s, G=G, density=density,
                    **bounds)
     sol.extras = extras

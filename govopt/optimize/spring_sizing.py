@@ -1,5 +1,5 @@
 """A helical spring sized on its own (``govopt spring``): the spring GP, then the spring maker's
-checks of a wire grade (issue 11, item 7).
+checks of a wire grade.
 
 Without a grade this is :func:`govopt.optimize.spring_gp.size_helical_spring` (least mass at a
 stiffness and largest force, certified global). With a grade (:mod:`govopt.springs.materials`)
@@ -36,7 +36,7 @@ import numpy as np
 from ..springs import checks as ck
 from ..springs import helical as hx
 from ..springs import materials as mt
-from .spring_gp import SpringSolution, _cached_gp
+from .spring_gp import SpringSolution, cached_gp
 
 KINDS = ("compression", "extension")
 #: Inactive coils of a compression spring: one closed end coil each side, ``n_t = n + 2``
@@ -155,7 +155,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         mode, rate = "band", {"kappa_min": stiffness, "kappa_max": stiffness_max}
     if grade is None:
         correction = correction or "wahl"
-        gp = _cached_gp(objective, correction, mode, 0.0, end_coils(kind), envelope=envelope)
+        gp = cached_gp(objective, correction, mode, 0.0, end_coils(kind), envelope=envelope)
         sol = gp.solve(certify=True, **rate, F_max=F_max, k_s=k_s, G=G, density=density,
                        **space, **bounds)
         why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
@@ -193,7 +193,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
             if kind == "compression":  # the stress at solid length, a constraint too
                 k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
                 extra.update(k_solid=k_c, s_over_D_max=stable)
-            gp = _cached_gp(objective, correction, mode, m, Q, slender is not None, m_c,
+            gp = cached_gp(objective, correction, mode, m, Q, slender is not None, m_c,
                             envelope)
             sol = gp.solve(**rate, F_max=F_max, k_s=k * factor, G=G,
                            density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)

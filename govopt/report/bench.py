@@ -1,4 +1,4 @@
-"""Benchmarks: speed against error, and the speed targets of issue 14 beside what was measured.
+"""Benchmarks: speed against error, and the speed targets beside what was measured.
 
 Run with ``govopt bench [--quick] [--out DIR]`` (or the scripts in ``benchmarks/``). Never used
 as timed assertions in the tests. Two parts:
@@ -61,7 +61,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[2]
 SPECS = Path(__file__).resolve().parents[1] / "specs"  # the bundled specs (package data)
 
-#: Issue 14's targets: name -> (limit, unit, what is measured)
+#: The speed targets (docs/decisions.md, imports on demand): name -> (limit, unit, what is measured)
 TARGETS = {
     "design() in process": (0.1, "s CPU", "median CPU of design(), bundled hamabe-design"),
     "govopt --help": (0.3, "s CPU", "whole process, median user + system time"),
@@ -425,7 +425,8 @@ def load_change_suite(quick: bool = False) -> list[Point]:
 def vibration_suite(quick: bool = False) -> list[Point]:
     """Peak-to-peak vibration of Hamabe's case a (with its dash-pot) and near resonance
     (``k^2 = 0.98 omega0^2``, undamped) with N harmonics, against 1024 harmonics."""
-    from ..analysis import statics, vibration
+    from ..analysis import statics
+    from ..governors.shaft import vibration
     from ..spec import load_spec
 
     spec = load_spec(SPECS / "hamabe-a.toml")
@@ -666,7 +667,7 @@ def design_in_process(repeats: int = 7) -> dict:
     check that its bound (pruned masses, certified by the energy bound where it is attained)
     equals the GP solved by cvxpy at every mass."""
     from ..optimize import design as dz
-    from ..optimize.spring_gp import _cached_gp
+    from ..optimize.spring_gp import cached_gp
     from ..spec import load_spec
 
     spec = load_spec(SPECS / "hamabe-design.toml")
@@ -687,7 +688,7 @@ def design_in_process(repeats: int = 7) -> dict:
         "continuous bound": _cpu_per_call(lambda: dz.continuous_bound(spec, req, km, lo, hi)),
     }
     pruned = dz.continuous_bound(spec, req, km, lo, hi)["objective"]
-    gp = _cached_gp("mass", spec.material.stress_correction, "band")
+    gp = cached_gp("mass", spec.material.stress_correction, "band")
     every = []
     mat = spec.material
     t0 = time.process_time()
@@ -771,7 +772,7 @@ def peak_memory() -> dict:
 
 
 def targets(quick: bool = False, log=None) -> list[dict]:
-    """Every target of issue 14 beside what was measured (rows for :func:`write_report`)."""
+    """Every speed target beside what was measured (rows for :func:`write_report`)."""
     rows = []
 
     def add(name, value, extra=""):
@@ -838,7 +839,7 @@ def markdown(points: list[Point], target_rows: list[dict] | None = None) -> str:
     marked)."""
     lines = ["# Speed against error", ""]
     if target_rows:
-        lines += ["## Targets (issue 14)", "", "| target | limit | measured | met | notes |",
+        lines += ["## Speed targets", "", "| target | limit | measured | met | notes |",
                   "|---|---|---|---|---|"]
         for r in target_rows:
             lines.append(f"| {r['target']} | {r.get('sense', '<=')} {r['limit']:g} {r['unit']} | "
@@ -866,7 +867,7 @@ def summary(points: list[Point], target_rows: list[dict] | None = None) -> str:
     the default setting(s) and the Pareto front."""
     lines = []
     if target_rows:
-        lines.append("targets (issue 14)             limit        measured     met")
+        lines.append("speed targets                  limit        measured     met")
         for r in target_rows:
             lines.append(f"  {r['target']:<28s} {r.get('sense', '<=')} {r['limit']:<6g}"
                          f"{r['unit']:<5s} {r['measured']:<8.3g}{r['unit']:<5s} "

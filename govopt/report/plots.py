@@ -22,9 +22,9 @@ on the right-hand axis. The plots, each named by its *kind*:
   and the steady response over one revolution (Hamabe Part II, eqs. 18-22), where the type has a
   periodic forcing;
 * ``fatigue``: the spring's fatigue diagram with its load cycle under that vibration (EN 13906-1
-  Annex A or Shigley §10-9), where the spec names a wire grade (issue 11's spring report).
+  Annex A or Shigley §10-9), where the spec names a wire grade (the spring report).
 * ``speed-band``: a robust design's equilibrium speed at nominal values and its least and largest
-  over the tolerance box (issue 24, :mod:`govopt.optimize.robust`).
+  over the tolerance box (:mod:`govopt.optimize.robust`).
 
 matplotlib is imported only when a plot is drawn (``govopt --help`` never loads it); figures are
 :class:`matplotlib.figure.Figure` objects on the Agg canvas, so no GUI backend or pyplot state is
@@ -168,7 +168,7 @@ def characteristic(res, ax) -> None:
 
 
 def speed_band(res, ax) -> None:
-    """A robust design's speed band under its tolerances (issue 24): the equilibrium speed at
+    """A robust design's speed band under its tolerances: the equilibrium speed at
     nominal values, and the least and largest over the tolerance box's corners (each at the
     fitter's setting), against the configuration, with the required band."""
     band = res.optimisation["robust"]["speed_band"]

@@ -503,7 +503,7 @@ def optimisation(res) -> list[Table]:
 
 
 def robustness(rob) -> list[Table]:
-    """A robust design's record (issue 24, :mod:`govopt.optimize.robust`): the tolerance box,
+    """A robust design's record (:mod:`govopt.optimize.robust`): the tolerance box,
     the worst case of each check over its corners beside the nominal value, the adjusting nut,
     the Monte-Carlo verification and what robustness cost."""
     if not isinstance(rob, Mapping):
@@ -546,7 +546,7 @@ def robustness(rob) -> list[Table]:
             v, u = shown(value, unit)
             rows.append([f"robustness cost: {label}", u, cell(v)])
     notes = [str(n) for n in tol.get("notes") or []]
-    out = [Table("Robust design: the tolerance box (issue 24)", ["quantity", "unit", "value"],
+    out = [Table("Robust design: the tolerance box", ["quantity", "unit", "value"],
                  rows, notes, properties=True)]
     checks = [c for c in rob.get("checks") or [] if isinstance(c, Mapping)]
     if checks:

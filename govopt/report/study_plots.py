@@ -143,9 +143,9 @@ def _sweep_figure(frame: pd.DataFrame, key: str, keys: list[str], combine: str):
     y = pd.to_numeric(frame["objective_value"], errors="coerce").to_numpy(dtype=float)
     if _series(axes[0], frame, others, y, x, ticks, few):
         axes[0].legend(loc="best", fontsize=7)
-    from ..bulk import _OBJECTIVE_COLUMN
+    from ..bulk import OBJECTIVE_COLUMN
 
-    axes[0].set_ylabel(_OBJECTIVE_COLUMN.get(obj, obj))
+    axes[0].set_ylabel(OBJECTIVE_COLUMN.get(obj, obj))
     note = "; labels: point numbers" if few else ""
     axes[0].set_title(f"objective and binding constraints (hollow: fails a check{note})",
                       fontsize=9)

@@ -55,17 +55,17 @@ def _plain(text: str) -> bool:
     return text.replace("\n", "").isprintable()
 
 
-def _narrow(text: str) -> bool:
+def is_narrow(text: str) -> bool:
     """Whether every character of ``text`` is one cell wide in rich's measure: Latin (up to
     U+02FF, before the combining marks) and Greek (U+0370-U+03FF), e.g. "deg", "°", "ω"."""
     return all(ch < "\u0300" or "\u0370" <= ch < "\u0400" for ch in text)
 
 
 def plain_table(headers, rows, *, right=(), show_header=True, width=400) -> list[str] | None:
-    r"""The lines rich prints for :meth:`_Report.table` without colour (the ASCII box: a rule of
+    r"""The lines rich prints for :meth:`TextReport.table` without colour (the ASCII box: a rule of
     dashes under the header only, no edge, one space of padding each side of a column but at
     the edges, a space between columns), trailing spaces stripped; None where rich could print
-    otherwise: a cell with a character not printable or not :func:`_narrow` (rich measures wide
+    otherwise: a cell with a character not printable or not :func:`is_narrow` (rich measures wide
     and zero-width characters, drops control codes, expands tabs), no rows at all, or a table
     wider than ``width`` (rich wraps the last column).
 
@@ -73,7 +73,7 @@ def plain_table(headers, rows, *, right=(), show_header=True, width=400) -> list
     ['        x', 'n    (mm)', '---------', 'a     1.5', 'bb']
     """
     rows = [headers, *rows] if show_header else list(rows)
-    if not headers or not rows or not all(_narrow(c) and _plain(c) for r in rows for c in r):
+    if not headers or not rows or not all(is_narrow(c) and _plain(c) for r in rows for c in r):
         return None
     cells = [[c.split("\n") for c in r] for r in rows]
     sizes = [max(len(x) for r in cells for x in r[j]) for j in range(len(headers))]
@@ -97,7 +97,7 @@ def plain_table(headers, rows, *, right=(), show_header=True, width=400) -> list
     return lines
 
 
-class _Report:
+class TextReport:
     """Collects the report: coloured on a terminal (rich, imported then), plain text when not
     (:func:`plain_table`, the same text as rich's without colour; rich where it could differ).
     ``plain``: None for not ``colour``; False renders through rich without colour."""
@@ -219,7 +219,7 @@ def _check_rows(checks, res: Result) -> tuple[list[list[str]], list[str]]:
 _CHECK_HEADERS = ["check", "value", "limit", "unit", "margin", "result"]
 
 
-def _checks(out: _Report, res: Result) -> None:
+def _checks(out: TextReport, res: Result) -> None:
     rows, styles = _check_rows(res.checks, res)
     out.title("Checks")
     out.table(_CHECK_HEADERS, rows, right=(1, 2, 4), styles=styles)
@@ -272,7 +272,7 @@ SECTIONS = ("summary", "design", "checks", "characteristic", "dynamics", "vibrat
             "optimisation", "spring")
 
 
-def _summary_section(out: _Report, res: Result, every_check: bool = False) -> None:
+def _summary_section(out: TextReport, res: Result, every_check: bool = False) -> None:
     """The answer: the verdict, the design, the checks to watch (none where ``every_check``:
     the whole Checks table follows) and the notes."""
     line = verdict(res)
@@ -360,12 +360,12 @@ def _summary(res: Result) -> list[list[str]]:
     return rows
 
 
-def _design_section(out: _Report, res: Result) -> None:
+def _design_section(out: TextReport, res: Result) -> None:
     out.title("Design")
     out.table(["", "", "", ""], _summary(res), right=(1,), show_header=False)
 
 
-def _characteristic(out: _Report, res: Result) -> None:
+def _characteristic(out: TextReport, res: Result) -> None:
     st, gov = res.statics, res.spec.governor
     q = "N m" if gov.coordinate == "angle" else "N"
     xs, xunit = gov.shown(st.alpha)
@@ -385,12 +385,12 @@ def _characteristic(out: _Report, res: Result) -> None:
               right=range(len(cols)))
 
 
-def _tables(out: _Report, tables) -> None:
+def _tables(out: TextReport, tables) -> None:
     for table in tables:
         out.section(table)
 
 
-def _spring_section(out: _Report, res: Result) -> None:
+def _spring_section(out: TextReport, res: Result) -> None:
     for line in format_spring(res):
         out.line(line)
 
@@ -413,7 +413,7 @@ def format_result(res: Result, colour: bool | None = None,
     (names of :data:`SECTIONS`, in that order; None: all of them, the full report). The
     ``summary`` alone (:func:`format_summary`) fits a screen. ``colour``: None for
     :func:`colour_default` (a terminal)."""
-    out = _Report(colour_default() if colour is None else colour)
+    out = TextReport(colour_default() if colour is None else colour)
     spec = res.spec
     fid = [f"geometry={spec.analysis.geometry}", f"reaction_speed={spec.analysis.reaction_speed}"]
     if spec.material is not None:
@@ -443,7 +443,7 @@ def format_summary(res: Result, colour: bool | None = None) -> str:
 
 def format_spring(res: Result) -> list[str]:
     """The spring maker's sheet, the spring's loads, fatigue and tolerance spread, and the
-    sources of the spring engineering checks (issue 11; the checks themselves are rows of the
+    sources of the spring engineering checks (the checks themselves are rows of the
     Checks table, shown once); nothing without a wire spring."""
     from ..analysis.spring_engineering import is_engineering_check
 

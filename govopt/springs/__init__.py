@@ -16,7 +16,7 @@
 - :mod:`.leaf`       leaf springs (width, thickness, length; hinged or clamped) and their table.
 
 Symbols follow EN 13906: wire diameter ``d``, *mean coil diameter* ``D`` (``D = 2 r`` in Hamabe's
-notation used by :mod:`govopt.model.spring`), active coils ``n``, total coils ``n_t``, index
+notation used by :mod:`govopt.springs.helical`), active coils ``n``, total coils ``n_t``, index
 ``w = C = D/d``. Every function broadcasts over numpy arrays so an optimiser can screen millions of
 candidate springs in one call.
 """

@@ -122,7 +122,7 @@ def mass(w, t, L, density):
 def _elastica(theta0):
     """The cantilever elastica with tip angle ``theta0`` (rad, in (0, pi/2)): ``u = delta/l_c``,
     ``c = a/l_c``, ``alpha`` and their derivatives in ``k`` (suffix ``_k``)."""
-    from scipy.special import ellipeinc, ellipkinc  # imported when used (issue 14)
+    from scipy.special import ellipeinc, ellipkinc  # imported when used (docs/decisions.md)
 
     s0 = np.sin(theta0)
     m = 0.5 * (1.0 + s0)

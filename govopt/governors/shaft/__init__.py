@@ -7,7 +7,7 @@ driven by the lever ``q``. Per pendulum (Hamabe, Part I):
 
 * ``J = m (a^2 + rho^2 - 2 a rho cos(alpha))``, so ``jp = J'/2 = m a rho sin(alpha)`` (eq. 1);
 * spring moment ``M_f = kappa (A - B l0)``, exact (eq. 2) or the paper's series (eq. 3),
-  :mod:`govopt.model.linkage`; the spring force is ``F = 2 kappa (l - l0)``;
+  :mod:`govopt.governors.shaft.linkage`; the spring force is ``F = 2 kappa (l - l0)``;
 * the valve gear's mean reaction ``M_r0 = C_f + omega^2 C_i`` (eq. 11), at the local speed
   (``reaction_speed = "local"``, exact) or at the spec's mean speed (``"mean"``, the paper), with
   its slope in ``alpha`` (``reaction_slope``, which the paper leaves out of k^2);
@@ -24,9 +24,10 @@ from typing import ClassVar
 
 import numpy as np
 
-from ..model import linkage, spring, valvegear
-from ..units import G_STANDARD
-from .base import Governor, Terms
+from ...springs import helical as hx
+from ...units import G_STANDARD
+from ..base import Governor, Terms
+from . import linkage, valvegear
 
 ANGLE_RANGE = dict(low=0.0, high=np.pi, range_text="(0 deg, 180 deg)")
 
@@ -288,8 +289,8 @@ class ShaftGovernor(Governor):
 
     def vibration(self, spec, sd, k2_normal: float, dashpot: float):
         """Hamabe Part II: the pendulum's vibration under the valve gear's fluctuating reaction
-        (:mod:`govopt.analysis.vibration`), with the dash-pot."""
-        from ..analysis import vibration
+        (:mod:`govopt.governors.shaft.vibration`), with the dash-pot."""
+        from . import vibration
 
         return vibration.vibration(spec, sd, self.alpha_normal, k2_normal, dashpot=dashpot)
 
@@ -346,7 +347,7 @@ def paper_sizing(spec, m: float, r: float) -> dict:
     ``kappa = (F_a - F_i) / (2 (l_a - l_i))``; ``d = (16 F_a r / (pi k_s))^(1/3)``;
     ``n = G d^4 / (64 r^3 kappa)``. The reaction is taken at the mean speed, as in the paper.
     """
-    from ..analysis import statics
+    from ...analysis import statics
 
     g, sp, mat = spec.governor, spec.speed, spec.material
     paper = spec.with_analysis(reaction_speed="mean")
@@ -359,8 +360,8 @@ def paper_sizing(spec, m: float, r: float) -> dict:
         out[f"l_{tag}"] = linkage.half_length(alpha, g.a, g.b)
         out[f"F_{tag}"] = out[f"M_f{tag}"] / out[f"h_{tag}"]
     out["kappa"] = (out["F_a"] - out["F_i"]) / (2.0 * (out["l_a"] - out["l_i"]))
-    out["d"] = spring.wire_diameter_for_stress(out["F_a"], r, mat.allowable_shear_stress)
-    out["n"] = spring.turns_for_stiffness(out["kappa"], out["d"], r, mat.shear_modulus)
+    out["d"] = hx.wire_diameter_for_stress(out["F_a"], r, mat.allowable_shear_stress)
+    out["n"] = hx.turns_for_stiffness(out["kappa"], out["d"], r, mat.shear_modulus)
     return out
 
 

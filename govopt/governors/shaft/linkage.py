@@ -43,11 +43,6 @@ def centrifugal_moment(alpha, omega, m, a, rho):
     return omega**2 * m * a * rho * np.sin(alpha)
 
 
-def centrifugal_moment_slope(alpha, omega, m, a, rho):
-    """``dM_z/dalpha = omega^2 m a rho cos(alpha)`` at constant speed (Hamabe, eq. 19)."""
-    return omega**2 * m * a * rho * np.cos(alpha)
-
-
 def spring_moment_coefficients(alpha, a, b, geometry: str = "exact"):
     """Return ``(A, B, dA/dalpha, dB/dalpha)`` with ``M_f = kappa (A - B l0)``.
 

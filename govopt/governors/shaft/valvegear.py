@@ -23,8 +23,8 @@ class _PiecewiseCubic:
     """``f(x) = sum_k c[k, i] (x - x_i)^(3 - k)`` on ``[x_i, x_{i+1}]``, the first and last pieces
     continued outside: scipy's ``PPoly`` for cubics, evaluated in its order of operations (its
     ``evaluate_poly1``: ``c[3] + c[2] s + c[1] s^2 + c[0] s^3``, powers by repeated products), so
-    the numbers are scipy's to the last bit without importing scipy (issue 14: ``evaluate``
-    starts fast). ``x`` and ``f`` in the table's units (here rad)."""
+    the numbers are scipy's to the last bit without importing scipy (``evaluate`` starts fast:
+    docs/decisions.md, imports on demand). ``x`` and ``f`` in the table's units (here rad)."""
 
     def __init__(self, x: np.ndarray, c: np.ndarray):
         self.x, self.c = x, c
@@ -537,7 +537,7 @@ def truncation_error(n_harmonics: int, delta, omega, q, e, s, P1, P3, P4, m_v, m
     tail does not decay at all: at each friction switch a truncated Fourier series misses half the
     jump, ``(q/2) P1 |cos delta|``, plus Gibbs' overshoot. The pendulum filters the tail by
     ``1/n^2``, so its response converges like ``1/N^2``; see
-    :mod:`govopt.analysis.vibration`.)
+    :mod:`govopt.governors.shaft.vibration`.)
     """
     a, b = reaction_harmonics(delta, omega, q, e, s, P1, P3, P4, m_v, m_e, n_harmonics, engine)
     total = mean_square_reaction(delta, omega, q, e, s, P1, P3, P4, m_v, m_e, engine)

@@ -66,11 +66,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..jsonable import jsonable
-from ..model import valvegear
-from ..spec import Spec
-from .roots import RTOL_MIN, brentq  # scipy's brentq without importing scipy (issue 14)
-from .statics import SpringDesign, restoring_k2
+from ...analysis.roots import RTOL_MIN, brentq  # scipy's brentq without importing scipy
+from ...analysis.statics import SpringDesign, restoring_k2
+from ...inputs import Spec
+from ...jsonable import jsonable
+from . import valvegear
 
 #: Relative detuning ``|k^2 - n^2 omega0^2| / max(k^2, n^2 omega0^2)`` below which an undamped
 #: harmonic is treated as exactly resonant (amplitude ``inf``).
@@ -175,7 +175,8 @@ def forcing_harmonics(spec: Spec, alpha0, m, inertia, omega0=None, n_harmonics: 
     tau) + b_n sin(n tau)]``, N m, shape ``broadcast(alpha0, m, inertia, omega0).shape + (N+1,)``.
 
     ``a_n, b_n`` are the paper's ``I M_n, I N_n`` (eq. 20, 21); without speed fluctuation
-    ``a_n + i b_n = -(reaction harmonic n)`` of :func:`govopt.model.valvegear.reaction_harmonics`,
+    ``a_n + i b_n = -(reaction harmonic n)`` of
+    :func:`govopt.governors.shaft.valvegear.reaction_harmonics`,
     e.g. ``b_1 = -B1``. Exact to rounding for every order (:func:`valvegear.piecewise_fourier`,
     split at the friction switches in ``tau``). Vectorised over designs and configurations.
     """
@@ -362,10 +363,6 @@ class VibrationResult:
             return 3
         return 1 if self.k2 < self.omega0**2 else 2
 
-    @property
-    def half_peak_to_peak_rad(self) -> float:
-        return 0.5 * self.peak_to_peak_rad
-
     def amplitude(self, order: int) -> float:
         return self.harmonics[order - 1]["amplitude_rad"]
 
@@ -506,7 +503,7 @@ def first_harmonic_amplitude(spec: Spec, alpha0, k2, inertia, dashpot=None, omeg
         *(np.asarray(v, dtype=float) for v in (k2, inertia, omega0, _f(dashpot), alpha0)))
     eE, eF = E2 / (2.0 * omega0), F2 / (2.0 * omega0)
     beta = np.hypot(eE, eF)
-    from scipy import special  # imported when used (issue 14)
+    from scipy import special  # imported when used (docs/decisions.md)
 
     J0 = special.j0(beta)
     J1_over_beta = np.where(beta > 0, special.j1(beta) / np.where(beta > 0, beta, 1.0), 0.5)

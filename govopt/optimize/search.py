@@ -1,0 +1,25 @@
+"""The design search's entry point (``govopt.design``, ``govopt design``): the nominal optimum
+of :mod:`govopt.optimize.design`, or, where the requirements ask for a tolerance box (a spring
+grade, mass or dash-pot spreads, an adjusting nut), the robust search of
+:mod:`govopt.optimize.robust`, which itself starts from the nominal optimum.
+
+Imports run one way: this module -> robust -> design.
+"""
+
+from __future__ import annotations
+
+from . import design as dz
+from . import robust
+
+
+def design(spec):
+    """The best design for the spec's requirements (a :class:`govopt.result.Result`).
+
+    Raises :class:`~govopt.errors.InfeasibleError` with a diagnosis when no design exists, and
+    :class:`~govopt.errors.DesignError` naming the failed checks when the chosen design fails
+    its final re-evaluation (never returns a design that fails a check).
+    """
+    spec = dz.validated(spec)
+    if spec.requirements.robust:
+        return robust.robust_design(spec)
+    return dz.design(spec)
