@@ -205,7 +205,7 @@ def spring(*, spec, json_out, xlsx, plots, replace, **options) -> None:
     """Least-mass helical spring for a force and stiffness (an exact GP, certified global),
     from the options, a spring spec file or both (the options override the file); with
     --material the wire grade's allowables per diameter and the spring maker's checks."""
-    from .optimize.spring_cli import run
+    from .spring_command import run
 
     out = run(spec, json_out=json_out, xlsx=xlsx, plots=plots, replace=replace, **options)
     _echo(out.text)

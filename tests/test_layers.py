@@ -32,7 +32,7 @@ LAYERS = (
     ("optimize", ("govopt.optimize",)),
     ("study", ("govopt.study",)),
     ("report", ("govopt.report",)),
-    ("cli", ("govopt.cli", "govopt")),
+    ("cli", ("govopt.cli", "govopt.spring_command", "govopt")),
 )
 
 #: The seam every governor type plugs into (and the registry that finds a type by name, which

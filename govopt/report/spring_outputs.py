@@ -18,10 +18,10 @@ from types import SimpleNamespace
 import numpy as np
 
 from ..errors import GovoptError
-from . import fatigue as ft
-from . import helical as hx
-from . import materials as mt
-from . import sheet as sh
+from ..springs import fatigue as ft
+from ..springs import helical as hx
+from ..springs import materials as mt
+from ..springs import sheet as sh
 
 #: the plots `govopt spring --plots` writes (``fatigue`` only with a fatigue load cycle)
 PLOTS = ("force-length", "fatigue")
@@ -130,7 +130,7 @@ def check_outputs(xlsx, plots, stem: str, *, replace: bool, inputs=()) -> None:
     """Before the run: each output can be written, and exists only if ``replace``
     (:func:`govopt.report.files.check_output`; a folder for the plots is made if only its
     parent exists). Raises :class:`GovoptError` with one line."""
-    from ..report.files import check_output, output_folder
+    from .files import check_output, output_folder
 
     paths = [] if xlsx is None else [(Path(xlsx), "workbook")]
     if plots is not None:
@@ -147,8 +147,8 @@ def write_plots(outcome, folder, stem: str) -> list[Path]:
     """``<folder>/<stem>-<kind>.png|svg`` of every plot (:func:`plot_names`), atomically."""
     import matplotlib as mpl
 
-    from ..report import plots
-    from ..report.files import atomic_write
+    from . import plots
+    from .files import atomic_write
 
     written = []
     for kind in plot_names(outcome):
@@ -203,8 +203,8 @@ def write_workbook(outcome, path) -> Path:
     from openpyxl import Workbook
     from openpyxl.chart import Reference, ScatterChart, Series
 
-    from ..report.excel import engineering
-    from ..report.files import atomic_write
+    from .excel import engineering
+    from .files import atomic_write
 
     sizing = outcome.sizing
     wb = Workbook()

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..errors import GovoptError
+from .errors import GovoptError
 
 #: option -> (kind, detail): ``quantity`` (its dimension), ``number`` (what it must be: a
 #: positive finite number), ``choice`` (None: the allowed values are looked up), ``flag``,
@@ -121,7 +121,7 @@ class _Where:
 def read_spring_spec(path: str | Path) -> tuple[dict, str | None, str]:
     """A spring spec's ``[spring]`` table (raw TOML values), its ``problem`` and its name;
     errors name the file and key (``FILE: spring.KEY: ...``)."""
-    from ..spec import read_spec_data
+    from .spec import read_spec_data
 
     data = read_spec_data(path)
     file = str(path)
@@ -154,7 +154,7 @@ def read_spring_spec(path: str | Path) -> tuple[dict, str | None, str]:
 
 
 def _choices(key: str):
-    from ..springs import helical, materials
+    from .springs import helical, materials
 
     return {"material": materials.GRADES, "rules": materials.METHODS,
             "ends": tuple(helical.END_FORMS), "seating": tuple(helical.SEATING),
@@ -164,7 +164,7 @@ def _choices(key: str):
 def _values(raw: dict, where: _Where) -> dict:
     """The merged raw values checked and in SI: quantities parsed (positive; forces and
     lengths of a cycle zero or more), numbers positive and finite, choices among theirs."""
-    from ..units import UnitError, parse_quantity
+    from .units import UnitError, parse_quantity
 
     out = {}
     for key, value in raw.items():
@@ -248,7 +248,7 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
     """`govopt spring [SPEC] [options]` (module docstring): the sized spring's report (text or
     JSON) and its failed checks; with ``xlsx`` a workbook (the spring maker's sheet, the
     checks, the force-length table) and with ``plots`` a folder of plots
-    (:mod:`govopt.springs.outputs`), checked before the run and written after it (existing
+    (:mod:`govopt.report.spring_outputs`), checked before the run and written after it (existing
     files only with ``replace``). Raises :class:`GovoptError` (exit code 2) on bad input or
     when no spring meets the requirements: nothing is written then."""
     values, where, problem, name = merged(spec, options)
@@ -257,7 +257,7 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
         raise GovoptError(f"--xlsx, --plots: not for the literature problem {problem!r} "
                           "(its answer is the printed one)")
     if xlsx is not None or plots is not None:
-        from ..springs.outputs import check_outputs
+        from .report.spring_outputs import check_outputs
 
         check_outputs(xlsx, plots, stem, replace=replace,
                       inputs=[] if spec is None else [spec])
@@ -267,11 +267,11 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
         values.setdefault(key, value)
     out = _size(values, where, name, json_out)
     if xlsx is not None:
-        from ..springs.outputs import write_workbook
+        from .report.spring_outputs import write_workbook
 
         out.written.append(write_workbook(out, xlsx))
     if plots is not None:
-        from ..springs.outputs import write_plots
+        from .report.spring_outputs import write_plots
 
         out.written += write_plots(out, plots, stem)
     return out
@@ -284,8 +284,8 @@ def _require(v: dict, where: _Where, *keys) -> None:
 
 
 def _size(v: dict, where: _Where, name: str, json_out: bool) -> Outcome:
-    from ..springs import materials
-    from .spring_sizing import size_spring
+    from .springs import materials
+    from .optimize.spring_sizing import size_spring
 
     _require(v, where, "force")
     _lengths(v, where)
@@ -345,7 +345,7 @@ def _size(v: dict, where: _Where, name: str, json_out: bool) -> Outcome:
     if json_out:
         import json
 
-        from ..jsonable import jsonable
+        from .jsonable import jsonable
 
         text = json.dumps(jsonable(data), indent=2)
     failed = [c.name for c in sizing.checks if not c.passed] if material is not None else []
@@ -401,8 +401,8 @@ def body_life(sizing, v: dict) -> float | None:
     (:func:`govopt.springs.fatigue.finite_life`: Basquin's line from ``0.9 S_su`` at 1e3
     cycles to the data's endurance at 1e7, read at the row's safety): ``inf`` when it passes
     at the data's life, nan below 1e3 cycles; None without a fatigue row."""
-    from ..springs import fatigue, materials
-    from ..springs.checks import DATA_CYCLES
+    from .springs import fatigue, materials
+    from .springs.checks import DATA_CYCLES
 
     row = next((c for c in sizing.checks if c.name == BODY_FATIGUE), None)
     if row is None:
@@ -417,7 +417,7 @@ def _verdict(check, sizing, life=None) -> str:
     """PASS or FAIL; a fatigue row past its data's life says so (strength held constant), and
     the body's row below 1 (the stress above the data's endurance) its estimated finite
     life."""
-    from ..springs.checks import DATA_CYCLES
+    from .springs.checks import DATA_CYCLES
 
     verdict = "PASS" if check.passed else "FAIL"
     if "fatigue" in check.name and sizing.cycles > DATA_CYCLES:
@@ -454,7 +454,7 @@ def claim(sizing, bound: str) -> str:
 
 def _text(sizing, data: dict, v: dict) -> str:
     """The text report: the spring first, then the certificate, sensitivities, checks."""
-    from ..springs.helical import correction_factor
+    from .springs.helical import correction_factor
 
     sol, lines = sizing.solution, []
     k_b = float(correction_factor(sol.index, "bergstrasser"))
@@ -504,8 +504,8 @@ def _text(sizing, data: dict, v: dict) -> str:
 def _sandgren(raw: dict, where: _Where, json_out: bool) -> Outcome:
     """Sandgren's (1990) mixed-discrete spring with the spec's data (inch, lbf, psi inside,
     as the problem is stated): the exact optimum by enumeration."""
-    from ..units import UnitError, parse_quantity
-    from .spring_literature import SANDGREN, solve_sandgren
+    from .units import UnitError, parse_quantity
+    from .optimize.spring_literature import SANDGREN, solve_sandgren
 
     inch, lbf = 0.0254, 4.4482216152605
     scale = {"length": inch, "force": lbf, "stress": lbf / inch**2}
