@@ -284,8 +284,8 @@ def _require(v: dict, where: _Where, *keys) -> None:
 
 
 def _size(v: dict, where: _Where, name: str, json_out: bool) -> Outcome:
-    from .springs import materials
     from .optimize.spring_sizing import size_spring
+    from .springs import materials
 
     _require(v, where, "force")
     _lengths(v, where)
@@ -504,8 +504,8 @@ def _text(sizing, data: dict, v: dict) -> str:
 def _sandgren(raw: dict, where: _Where, json_out: bool) -> Outcome:
     """Sandgren's (1990) mixed-discrete spring with the spec's data (inch, lbf, psi inside,
     as the problem is stated): the exact optimum by enumeration."""
-    from .units import UnitError, parse_quantity
     from .optimize.spring_literature import SANDGREN, solve_sandgren
+    from .units import UnitError, parse_quantity
 
     inch, lbf = 0.0254, 4.4482216152605
     scale = {"length": inch, "force": lbf, "stress": lbf / inch**2}
