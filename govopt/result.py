@@ -14,49 +14,9 @@ import numpy as np
 from .analysis.statics import Characteristic, SpringDesign, classify_k2
 from .jsonable import jsonable
 from .spec import Design, Spec
+from .verdict import ACTIVE_TOL, Check
 
-#: Relative margin below which a satisfied constraint is reported as active (binding).
-ACTIVE_TOL = 1e-3
-
-
-@dataclass(frozen=True)
-class Check:
-    """One requirement: ``value`` against ``limit`` in the sense ``"<="`` or ``">="`` (SI)."""
-
-    name: str
-    value: float
-    limit: float
-    sense: str
-    unit: str = ""
-    source: str = ""
-    scale: float | None = None
-    #: Pass/fail decided elsewhere (e.g. :func:`govopt.analysis.transient.over_regulates`)
-    #: where the margin alone cannot decide it; None: from the margin.
-    verdict: bool | None = None
-
-    @property
-    def margin(self) -> float:
-        """Relative margin: positive when satisfied, ``(limit - value)/|limit|`` for ``<=``
-        (divided by ``scale`` instead where the limit is zero)."""
-        scale = self.scale or (abs(self.limit) if self.limit != 0 else 1.0)
-        diff = self.limit - self.value if self.sense == "<=" else self.value - self.limit
-        return diff / scale
-
-    @property
-    def passed(self) -> bool:
-        return self.margin >= -1e-9 if self.verdict is None else self.verdict
-
-    @property
-    def active(self) -> bool:
-        return self.passed and self.margin < ACTIVE_TOL
-
-    def to_dict(self) -> dict:
-        """JSON-ready; ``value`` and ``limit`` in ``unit`` (the checks differ in units, so the
-        unit is a field), infinities as null with a flag (:func:`govopt.jsonable.jsonable`)."""
-        return jsonable({"name": self.name, "value": self.value, "limit": self.limit,
-                         "sense": self.sense, "unit": self.unit, "margin": self.margin,
-                         "passed": self.passed, "active": self.active, "source": self.source})
-
+__all__ = ["ACTIVE_TOL", "Check", "Result"]
 
 @dataclass
 class Result:

@@ -20,7 +20,7 @@ import pytest
 import govopt
 from govopt.errors import GovoptError
 from govopt.report import excel
-from govopt.result import Check
+from govopt.verdict import Check
 
 ROOT = Path(__file__).resolve().parent.parent
 SPECS = ROOT / "govopt" / "specs"

@@ -39,7 +39,7 @@ import re
 import zipfile
 from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from openpyxl import Workbook
@@ -54,10 +54,13 @@ from openpyxl.worksheet.pagebreak import Break
 from openpyxl.worksheet.worksheet import Worksheet
 
 from ..analysis import statics
-from ..result import ACTIVE_TOL, Result
 from ..units import G_STANDARD
+from ..verdict import ACTIVE_TOL
 from . import sections
 from .files import atomic_write
+
+if TYPE_CHECKING:
+    from ..result import Result
 
 __all__ = ["SHEETS", "build_workbook", "write_workbook"]
 
@@ -895,8 +898,6 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
     """The spring maker's sheet, the material at the wire diameter, the static and fatigue
     loads, the tolerance spread of the governed speed range, and the spring engineering checks
     with value, limit, margin and source (govopt values; no formulas)."""
-    from ..analysis.spring_engineering import is_engineering_check
-
     _title(ws, 1, "Spring: specification for the spring maker and spring engineering")
     ws.freeze_panes = "A2"
     rep = res.spring_report
@@ -918,7 +919,7 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
         row += 1
     row += 1
     graded = res.spec.material.grade is not None
-    rows = [c for c in res.checks if graded and is_engineering_check(c.name)]
+    rows = [c for c in res.checks if graded and c.group == "spring"]
     _title(ws, row, "Spring engineering checks" + ("" if rows else ": none (they need a "
                                                     "material.grade)"), font=_BOLD)
     row += 1

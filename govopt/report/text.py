@@ -18,13 +18,17 @@ import os
 import shutil
 import sys
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..limits import printable
-from ..result import ACTIVE_TOL, Check, Result
 from ..units import G_STANDARD, to_unit
+from ..verdict import ACTIVE_TOL, Check
 from . import sections as sec
+
+if TYPE_CHECKING:  # the result imports this module (Result.summary): no import back
+    from ..result import Result
 
 RPM = 30.0 / math.pi
 
@@ -445,8 +449,6 @@ def format_spring(res: Result) -> list[str]:
     """The spring maker's sheet, the spring's loads, fatigue and tolerance spread, and the
     sources of the spring engineering checks (issue 11; the checks themselves are rows of the
     Checks table, shown once); nothing without a wire spring."""
-    from ..analysis.spring_engineering import is_engineering_check
-
     rep = res.spring_report
     if rep is None:
         return []
@@ -482,7 +484,7 @@ def format_spring(res: Result) -> list[str]:
                f"{rpm[0]} rpm, at the outer end {rpm[1]} rpm")
     out += [f"  note: {n}" for n in [*sp["notes"], *d["notes"]]]
     graded = res.spec.material is not None and res.spec.material.grade is not None
-    rows = [c for c in res.checks if graded and is_engineering_check(c.name)]
+    rows = [c for c in res.checks if graded and c.group == "spring"]
     if rows:  # their values, limits and margins are the Checks table's rows
         out += ["", "Spring engineering checks: sources (values and margins under Checks)"]
         out += [f"  {c.name}: {c.source}" for c in rows]
