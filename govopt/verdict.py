@@ -13,15 +13,53 @@ derives such a key from a figure's name and unit, one way only.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
 from .jsonable import jsonable
 
-__all__ = ["ACTIVE_TOL", "GROUPS", "Check", "Figure", "json_key"]
+__all__ = ["ACTIVE_TOL", "GROUPS", "SHOWN", "Check", "Figure", "json_key", "shown"]
 
 #: Relative margin below which a satisfied check is reported as active (binding).
 ACTIVE_TOL = 1e-3
+
+#: How an SI unit is shown to a person (text, workbook, notebook, ``to_frame(engineering=True)``):
+#: SI unit -> (shown unit, factor to multiply by). Units not listed are shown as they are.
+SHOWN: dict[str, tuple[str, float]] = {
+    "rad": ("deg", 180.0 / math.pi),
+    "m": ("mm", 1e3),
+    "Pa": ("MPa", 1e-6),
+    "N/m": ("N/mm", 1e-3),
+    "rad/s": ("rpm", 30.0 / math.pi),
+    "rad/s/rad": ("rad/s per deg", math.pi / 180.0),
+    "rad/s/m": ("rad/s per mm", 1e-3),
+    "rad^2/s^2": ("1/s^2", 1.0),
+    "N*m": ("N m", 1.0),
+    "kg*m^2": ("kg m^2", 1.0),
+}
+
+
+def shown(value: Any, unit: str, only=None) -> tuple[Any, str]:
+    """``(value, unit)`` converted from SI to the unit people read (:data:`SHOWN`); numbers,
+    arrays and lists of numbers are converted, anything else is returned as is. ``only``: the
+    SI units to convert (the rest stay SI).
+
+    >>> shown(0.5, "rad")[1], round(shown(0.5, "rad")[0], 4), shown(2e8, "Pa")
+    ('deg', 28.6479, (200.0, 'MPa'))
+    """
+    if unit not in SHOWN or (only is not None and unit not in only):
+        return value, unit
+    new, factor = SHOWN[unit]
+    if isinstance(value, bool) or value is None:
+        return value, new
+    if isinstance(value, list | tuple):
+        return [shown(v, unit)[0] for v in value], new
+    try:
+        return value * factor, new
+    except TypeError:
+        return value, new
+
 
 #: The groups checks and figures fall in, in the order reports list them. ``"spring"``: the
 #: spring engineering tables (:mod:`govopt.springs.checks`: static stresses, geometry, fatigue,
