@@ -55,7 +55,7 @@ from openpyxl.worksheet.worksheet import Worksheet
 
 from ..analysis import statics
 from ..units import G_STANDARD
-from ..verdict import ACTIVE_TOL
+from ..verdict import ACTIVE_TOL, SHOWN
 from . import sections
 from .files import atomic_write
 
@@ -89,6 +89,7 @@ _FORMATS = {
     "N*m": "0.000000", "Hz": "0.000", "": "0.000000", "kg/m^3": "#,##0.00",
     "m/s^2": "0.00000", "N*m*s/rad": "0.000000", "deg": "0.0000", "rad^2/s^2": "0.000",
     "s": "0.0000", "N*m/rad": "#,##0.000", "MPa": "#,##0.00", "mm": "0.000",
+    "N/mm": "#,##0.000", "1/s^2": "0.000",
 }
 _GENERAL_FORMAT = "0.000000"
 _RELDIFF_FORMAT = "0.0E+00"
@@ -153,6 +154,7 @@ def build_workbook(result: Result) -> Workbook:
     wb.active = sheets["Design"]
     for ws in wb.worksheets:
         ws.sheet_view.tabSelected = ws is sheets["Design"]
+        _align_top(ws)
         _fit_rows(ws)
         _print_setup(ws)
     from .. import __version__
@@ -276,6 +278,11 @@ def _unit_label(unit: str) -> str:
     return unit.replace("*", " ") if unit else "-"
 
 
+def shown_unit(unit: str) -> str:
+    """The engineering unit an SI unit is shown in (:data:`govopt.verdict.SHOWN`)."""
+    return SHOWN.get(unit, (unit, 1.0))[0]
+
+
 def _fmt(unit: str) -> str:
     return _FORMATS.get(unit, _GENERAL_FORMAT)
 
@@ -336,9 +343,17 @@ def _build_spec(ws: Worksheet, res: Result) -> None:
 # Design: input cells with defined names and live formulas
 
 
-_DESIGN_HEADERS = ["quantity", "symbol", "value (SI)", "SI unit", "govopt value",
-                   "rel. difference", "defined name", "formula / source"]
-_VALUE, _GOVOPT, _RELDIFF, _NAME, _NOTE = 3, 5, 6, 7, 8
+_DESIGN_HEADERS = ["quantity", "symbol", "value", "unit", "govopt value", "rel. difference",
+                   "formula / source", "defined name", "value (SI)", "SI unit"]
+#: The Design sheet's columns: a person reads and edits the value in engineering units
+#: (:data:`govopt.verdict.SHOWN`: mm, MPa, N/mm, rpm, deg); the defined names are the SI cells
+#: beside it (converted from the input, or the live formula in SI), which every formula uses.
+_VALUE, _UNIT, _GOVOPT, _RELDIFF, _NOTE, _NAME, _SI, _SI_UNIT = 3, 4, 5, 6, 7, 8, 9, 10
+#: The Design sheet's widths (characters) and the characters of a line of text across the
+#: printed columns A .. formula / source (about 1.1 per width unit).
+_DESIGN_WIDTHS = {1: 44, 2: 12, _VALUE: 16, _UNIT: 10, _GOVOPT: 16, _RELDIFF: 11, _NOTE: 60,
+                  _NAME: 24, _SI: 18, _SI_UNIT: 10}
+_TEXT_LINE = int(1.1 * sum(w for j, w in _DESIGN_WIDTHS.items() if j <= _NOTE)) - 4
 
 #: Defined names must not look like a cell reference (A1 or R1C1) or clash with a function.
 _NAME_OK = re.compile(r"^[a-z][a-z_]*$")
@@ -347,6 +362,7 @@ _NAME_OK = re.compile(r"^[a-z][a-z_]*$")
 class _DesignSheet:
     def __init__(self, wb: Workbook, ws: Worksheet):
         self.wb, self.ws, self.row = wb, ws, 1
+        self.titles: list[int] = []  # the sections' title rows (kept with their rows)
         _header(ws, 1, _DESIGN_HEADERS)
         ws.freeze_panes = "A2"
         self.row = 2
@@ -354,39 +370,54 @@ class _DesignSheet:
     def _name(self, name: str) -> None:
         if not _NAME_OK.match(name) or name in self.wb.defined_names:
             raise ValueError(f"bad or repeated defined name {name!r}")
-        ref = f"'{self.ws.title}'!${get_column_letter(_VALUE)}${self.row}"
+        ref = f"'{self.ws.title}'!${get_column_letter(_SI)}${self.row}"
         self.wb.defined_names[name] = DefinedName(name, attr_text=ref)
         _set(self.ws.cell(self.row, _NAME), name)
 
     def section(self, text: str) -> None:
         self.row += 1 if self.row > 2 else 0
         _title(self.ws, self.row, text, font=_BOLD)
+        self.titles.append(self.row)
         self.row += 1
 
     def _label(self, label, symbol, unit, note):
         ws = self.ws
         _set(ws.cell(self.row, 1), label)
         _set(ws.cell(self.row, 2), symbol)
-        _set(ws.cell(self.row, 4), _unit_label(unit))
+        _set(ws.cell(self.row, _UNIT), _unit_label(shown_unit(unit)))
+        _set(ws.cell(self.row, _SI_UNIT), _unit_label(unit))
         if note:
             _set(ws.cell(self.row, _NOTE), note)
 
     def input(self, name, label, symbol, value, unit, note="", number_format=None) -> None:
+        """A yellow input in engineering units, and its defined name: the SI cell converting
+        it (``value`` in SI; blank for None)."""
         self._label(label, symbol, unit, note)
-        c = self.ws.cell(self.row, _VALUE)
+        r, factor = self.row, SHOWN.get(unit, (unit, 1.0))[1]
+        c = self.ws.cell(r, _VALUE)
         if value is None:
             c.value = None
         else:
-            _set(c, float(value), number_format or _fmt(unit))
+            _set(c, float(value) * factor, number_format or _fmt(shown_unit(unit)))
         c.fill = _INPUT_FILL
+        ref = f"{get_column_letter(_VALUE)}{r}"
+        _formula(self.ws.cell(r, _SI), f"={ref}" if factor == 1.0 else f"={ref}/{factor!r}",
+                 number_format or _fmt(unit), 0.0 if value is None else float(value))
         self._name(name)
         self.row += 1
 
     def formula(self, name, label, symbol, formula, unit, govopt_value, note="") -> None:
+        """A live formula in SI on the defined names (blue, named), shown in engineering units
+        beside govopt's value and their relative difference."""
         ws, r = self.ws, self.row
         self._label(label, symbol, unit, note)
-        _formula(ws.cell(r, _VALUE), formula, _fmt(unit), govopt_value).fill = _FORMULA_FILL
-        _set(ws.cell(r, _GOVOPT), govopt_value, _fmt(unit))
+        shown, factor = SHOWN.get(unit, (unit, 1.0))
+        _formula(ws.cell(r, _SI), formula, _fmt(unit), govopt_value).fill = _FORMULA_FILL
+        si = f"{get_column_letter(_SI)}{r}"
+        seen = None if govopt_value is None else govopt_value * factor
+        _formula(ws.cell(r, _VALUE), f"={si}" if factor == 1.0 else f"={si}*{factor!r}",
+                 _fmt(shown), seen).fill = _FORMULA_FILL
+        _set(ws.cell(r, _GOVOPT), seen, _fmt(shown))
         v, g = f"{get_column_letter(_VALUE)}{r}", f"{get_column_letter(_GOVOPT)}{r}"
         _formula(ws.cell(r, _RELDIFF), f"=IF({g}=0,ABS({v}),ABS({v}/{g}-1))", _RELDIFF_FORMAT,
                  0.0)
@@ -429,8 +460,14 @@ class _DesignSheet:
         return "*wahl_factor" if correction == "wahl" else ""
 
     def text(self, text: str) -> None:
+        """An explanation in italics across the printed columns (quantity .. formula /
+        source), wrapped."""
         c = _set(self.ws.cell(self.row, 1), text)
         c.font = _ITALIC
+        c.alignment = _WRAP
+        self.ws.merge_cells(start_row=self.row, start_column=1, end_row=self.row,
+                            end_column=_NOTE)
+        self.ws.row_dimensions[self.row].height = 15.0 * math.ceil(len(text) / _TEXT_LINE)
         self.row += 1
 
 
@@ -439,15 +476,20 @@ def _build_design(wb: Workbook, ws: Worksheet, res: Result) -> None:
     if not res.spec.governor.excel_design(s, res):  # a type may write its own live sheet
         _generic_design(s, res)
     s.row += 1
-    s.text("Yellow cells are inputs; blue cells are formulas on the defined names (column G). "
-           "'govopt value' is govopt's result when the workbook was written; 'rel. difference' "
-           "compares the two, so it shows how far an edited design has moved.")
+    s.text("Yellow cells are inputs, in the units beside them (mm, N/mm, MPa, rpm, deg); blue "
+           "cells are formulas. The formulas work in SI on the defined names (column "
+           f"{get_column_letter(_NAME)}): each is the SI cell of column "
+           f"{get_column_letter(_SI)}, converted from the input or shown in column "
+           f"{get_column_letter(_VALUE)} in the unit beside it. 'govopt value' is govopt's result "
+           "when the workbook was written; 'rel. difference' compares the two, so it shows how "
+           "far an edited design has moved.")
     s.text("The characteristic table, k^2 and dynamics on the other sheets are govopt values "
            "and do not follow edits here; re-run govopt for them.")
-    _widths(ws, {1: 44, 2: 12, _VALUE: 18, 4: 10, _GOVOPT: 18, _RELDIFF: 12, _NAME: 24,
-                 _NOTE: 70})
+    for first, end in zip(s.titles, [*s.titles[1:], s.row + 1], strict=True):
+        _keep_table(ws, first, end - 2)  # printed: a section whole, or its ends kept
+    _widths(ws, _DESIGN_WIDTHS)
     for (c,) in ws.iter_rows(min_row=2, min_col=_NOTE, max_col=_NOTE):
-        if isinstance(c.value, str) and len(c.value) > 70:
+        if isinstance(c.value, str) and len(c.value) > 60:
             c.alignment = _WRAP  # the page's width ends here: a long source wraps
 
 
@@ -470,18 +512,16 @@ def _seam_meanings(q: str, mass: str) -> dict[str, tuple[str, str]]:
     generalised force's, N m or N), for the Design sheet's labels: ``omega^2 = (kappa (A - B
     l0) + cf + m cf_m + M cf_c) / (lv + m lv_m + M lv_c)``, ``F = kappa (A_F - B_F l0)``."""
     return {
-        "A": ("spring's generalised force per unit stiffness", f"{q}/(N/m)"),
-        "B": ("spring's generalised force per unit stiffness and free length", f"{q}/N"),
-        "A_F": ("spring force per unit stiffness", "m"),
-        "B_F": ("spring force per unit stiffness and free length", ""),
-        "cf": ("dead loads' generalised force without the masses", q),
-        "cf_m": (f"dead loads' generalised force per kg of {mass}", f"{q}/kg"),
-        "cf_c": ("dead loads' generalised force per kg of central load", f"{q}/kg"),
-        "lv": ("centrifugal generalised force per omega^2 without the masses", f"{q}*s^2"),
-        "lv_m": (f"centrifugal generalised force per omega^2 and kg of {mass}",
-                 f"{q}*s^2/kg"),
-        "lv_c": ("centrifugal generalised force per omega^2 and kg of central load",
-                 f"{q}*s^2/kg"),
+        "A": ("spring's pull per N/m of rate", f"{q}/(N/m)"),
+        "B": ("spring's pull per N/m of rate and m of free length", f"{q}/N"),
+        "A_F": ("spring's stretch term (force per N/m of rate)", "m"),
+        "B_F": ("spring's free-length factor (a pure number)", ""),
+        "cf": ("dead loads' pull without the weights (links, valve gear)", q),
+        "cf_m": (f"dead loads' pull per kg of {mass}", f"{q}/kg"),
+        "cf_c": ("dead loads' pull per kg of central load", f"{q}/kg"),
+        "lv": ("centrifugal pull per omega^2 without the weights", f"{q}*s^2"),
+        "lv_m": (f"centrifugal pull per omega^2 and kg of {mass}", f"{q}*s^2/kg"),
+        "lv_c": ("centrifugal pull per omega^2 and kg of central load", f"{q}*s^2/kg"),
     }
 
 
@@ -491,7 +531,8 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
     gov, sp, mat, st = spec.governor, spec.speed, spec.material, res.statics
     mk = gov.mass_key
     helical = bool(props)
-    s.section("Inputs (yellow, SI units): edit them and the formulas below follow")
+    s.section("Inputs (yellow, in the units beside them): edit them and the formulas below "
+              "follow")
     s.input(f"{mk}_weight", f"{mk} weight (each)", "w", sd.m * G_STANDARD, "N",
             f"design.{mk}_weight (or mass x standard gravity)")
     s.input("std_gravity", "standard gravity", "g_n", G_STANDARD, "m/s^2",
@@ -524,12 +565,22 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
               "generalised forces per unit of the masses)")
     q = "N*m" if gov.coordinate == "angle" else "N"  # the generalised force's unit
     meaning = _seam_meanings(q, mk)
+    s.text("omega^2 = (kappa (A - B l0) + cf + m cf_m + M cf_c) / (lv + m lv_m + M lv_c) and "
+           "F = kappa (A_F - B_F l0): the equilibrium by virtual work, split by what it is "
+           "linear in (the spring's rate kappa and free length l0, the weights' masses m and "
+           "M); 'pull' is the generalised force along the coordinate "
+           f"({'N m about the angle' if gov.coordinate == 'angle' else 'N along the length'})."
+           " These constants depend on the linkage alone; govopt wrote them at the inner (_i) "
+           "and outer (_a) end of the range.")
+    spring_terms = ("A", "B", "A_F", "B_F")
     for tag, i, sym in ends:
         for key, value in _seam_constants(res, st.alpha[i]).items():
+            if gov.spring is None and key in spring_terms:
+                continue  # no spring: its terms are zero and no formula reads them
             what, unit = meaning[key]
-            s.input(f"{key.lower()}_{tag}", f"{what} at {gov.coordinate_name}_{sym} ({key})",
-                    f"{key}_{sym}", value, unit, "govopt.analysis.statics.terms (the seam)",
-                    "0.0000E+00")  # constants of any size: none shows as 0.000000
+            s.input(f"{key.lower()}_{tag}", f"{what}, {tag} end", f"{key}_{sym}", value, unit,
+                    "govopt.analysis.statics.terms (the seam)",
+                    _sig_format(value * SHOWN.get(unit, (unit, 1.0))[1]))
     s.section("Derived quantities (blue, live formulas) next to govopt's values as written")
     s.formula(f"{mk}_mass", f"{mk} mass", "m", f"={mk}_weight/std_gravity", "kg", sd.m,
               "m = w / g_n")
@@ -569,38 +620,67 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
 
 
 def _build_characteristic(ws: Worksheet, res: Result) -> None:
-    st, gov = res.statics, res.spec.governor
-    xs, xu = gov.shown(st.alpha)  # the configuration as people read it (deg or mm), and SI
-    si = "rad" if gov.coordinate == "angle" else "m"
-    cols: list[tuple[str, Any, str]] = [
-        (f"{gov.coordinate_name} ({xu})", xs, xu),
-        (f"{gov.coordinate_name} ({si})", st.alpha, si),
-        ("omega (rad/s)", st.omega, "rad/s"),
-        ("speed (rpm)", st.omega * 30.0 / math.pi, "rpm"),
-        ("M_z (N m)", st.M_z, "N*m"),
-        ("M_f (N m)", st.M_f, "N*m"),
-        ("M_r0 (N m)", st.M_r0, "N*m"),
-        ("spring force F (N)", st.spring_force, "N"),
-        ("shear stress tau (Pa)", st.stress, "Pa"),
-        *((f"{name} ({unit})", values, unit) for name, (values, unit) in st.extra.items()),
+    """The characteristic in the units people read (deg or mm, rpm, MPa; omega in rad/s, the
+    paper's), and its chart under it with the spec's required speed band: printed, the chart
+    shares its page with the table's last rows (:func:`_paginate`), never alone under a
+    repeated header."""
+    st, gov, spec = res.statics, res.spec.governor, res.spec
+    xs, xu = gov.shown(st.alpha)  # the configuration as people read it (deg or mm)
+    q = "N*m" if gov.coordinate == "angle" else "N"  # the generalised force's unit
+    raw: list[tuple[str, Any, str]] = [
+        ("omega", st.omega, "rad/s/"),  # rad/s as the paper writes it (rpm beside it)
+        ("speed", st.omega, "rad/s"),
+        *((name, v, q) for name, v in zip(gov.force_names, (st.M_z, st.M_f, st.M_r0),
+                                          strict=True)),
     ]
+    if gov.spring is not None:
+        raw.append(("spring force F", st.spring_force, "N"))
+        if np.isfinite(st.stress).any():  # a spring given by its rate alone has no stress
+            raw.append(("shear stress tau", st.stress, "Pa"))
+    raw += [(name, values, unit) for name, (values, unit) in st.extra.items()]
     if res.k2 is not None:
-        cols.append(("k^2 (rad^2/s^2)", res.k2, "rad^2/s^2"))
+        raw.append(("k^2", res.k2, "rad^2/s^2"))
+    cols = [(f"{gov.coordinate_name} ({xu})", np.asarray(xs, dtype=float), xu)]
+    for name, values, unit in raw:
+        if unit == "rad/s/":
+            cols.append((f"{name} (rad/s)", np.asarray(values, dtype=float), "rad/s"))
+            continue
+        shown, factor = SHOWN.get(unit, (unit, 1.0))
+        cols.append((f"{name} ({_unit_label(shown)})", np.asarray(values, dtype=float) * factor,
+                     shown))
     _header(ws, 1, [c[0] for c in cols])
     ws.freeze_panes = "B2"
     n = len(st.alpha)
     for j, (_, values, unit) in enumerate(cols, start=1):
         for i in range(n):
             _set(ws.cell(i + 2, j), values[i], _fmt(unit))
-    chart = _scatter("Characteristic (Hamabe eq. 12): equilibrium speed",
-                     f"configuration: {gov.coordinate_name} ({xu})", "speed (rpm)",
-                     width=28.0, height=13.0)  # a page of its own: as wide as the table
-    _add_series(chart, ws, 1, 4, 1, n + 1)
-    chart.legend = None  # one curve: the axis titles name it
-    chart.x_axis.scaling.min, chart.x_axis.scaling.max = _axis_range(xs)
-    ws.add_chart(chart, f"B{n + 4}")  # below the table: the page's width is the table's
-    ws.row_breaks.append(Break(id=n + 2))  # printed: the table, then the chart on its own page
     _widths(ws, {j: 13 for j in range(1, len(cols) + 1)})
+    rpm = 3  # the speed column
+    chart = _scatter("Characteristic (equilibrium by virtual work; Hamabe eq. 12): speed "
+                     "against configuration", f"{gov.coordinate_name} ({xu})", "speed (rpm)",
+                     width=24.0, height=11.0)
+    _add_series(chart, ws, 1, rpm, 1, n + 1, colour=0)
+    if spec.speed is not None:  # the required band: two dashed lines, data right of the table
+        col = len(cols) + 2
+        _title(ws, 1, "required band (chart data)", col=col, font=_BOLD)
+        band = ((spec.speed.omega_inner, "required inner speed (rpm)"),
+                (spec.speed.omega_outer, "required outer speed (rpm)"))
+        _set(ws.cell(2, col), f"{gov.coordinate_name} ({xu})")
+        for k, (_, label) in enumerate(band, start=1):
+            _set(ws.cell(2, col + k), label)
+        for i, x in enumerate((float(xs[0]), float(xs[-1])), start=3):
+            _set(ws.cell(i, col), x, _fmt(xu))
+            for k, (w, _) in enumerate(band, start=1):
+                _set(ws.cell(i, col + k), w * 30.0 / math.pi, _fmt("rpm"))
+        for k in (1, 2):
+            _add_series(chart, ws, col, col + k, 2, 4, colour=1, dash=True)
+        ws._govopt_print_cols = len(cols)
+    else:
+        chart.legend = None  # one curve: the axis titles name it
+    chart.x_axis.scaling.min, chart.x_axis.scaling.max = _axis_range(xs)
+    anchor = f"B{n + 3}"
+    ws.add_chart(chart, anchor)  # below the table
+    _keep(ws, max(2, n + 1 - 5), _extent(ws, anchor, 24.0, 11.0)[1])  # with the last rows
 
 
 # --------------------------------------------------------------------------------------------
@@ -641,6 +721,8 @@ def _build_dynamics(ws: Worksheet, res: Result) -> None:
         chart.y_axis.scaling.min = min(0.0, float(np.min(res.k2)))
         chart.x_axis.scaling.min, chart.x_axis.scaling.max = _axis_range(xs)
         ws.add_chart(chart, f"F{head}")
+        _keep_table(ws, row, last)
+        _keep(ws, row, _extent(ws, f"F{head}", 18.0, 9.0)[1])  # the chart beside the table
         row = max(last + 2, head + 20)
     dyn = res.dynamics or {}
     if not dyn:
@@ -671,6 +753,7 @@ def _build_dynamics(ws: Worksheet, res: Result) -> None:
             chart.legend = None  # one curve: the axis titles name it
             anchor = f"{'A' if k % 2 == 0 else 'F'}{row}"
             ws.add_chart(chart, anchor)
+            _keep(ws, row - (k == 0), _extent(ws, anchor, *_CHART_SIZE)[1])
             if k % 2 == 1 or k == len(series) - 1:
                 row = _extent(ws, anchor, *_CHART_SIZE)[1] + 2
             for j in (0, 1):
@@ -713,6 +796,7 @@ def _write_table(ws: Worksheet, row: int, table: sections.Table, col: int = 1) -
     _, last = _write_rows(ws, row + 1, table, col)
     for k, note in enumerate(table.notes, start=1):
         _set(ws.cell(last + k, col), note).font = _ITALIC
+    _keep_table(ws, row, last + len(table.notes))
     return last + len(table.notes) + 2
 
 
@@ -800,6 +884,7 @@ def _build_checks(ws: Worksheet, res: Result) -> None:
         _set(ws.cell(row, 10), c.source).alignment = _WRAP
         row += 1
     last = row - 1
+    _keep_table(ws, 1, last + 4)  # with the binding and failed lines under it
     if res.checks:
         green = FormulaRule(formula=["$G2=\"PASS\""], fill=_PASS_FILL, font=_PASS_FONT)
         red = FormulaRule(formula=["$G2=\"FAIL\""], fill=_FAIL_FILL, font=_FAIL_FONT)
@@ -904,12 +989,14 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
     if rep is None:
         _set(ws.cell(3, 1), "No wire spring in this design (a dead-weight governor, a leaf, or "
              "a spring given by its stiffness only).").font = _ITALIC
+        ws.column_dimensions["A"].width = 90  # printed: the title and the line whole
         return
     _header(ws, 2, ["quantity", "value", "unit"])
     row = 3
     for label, value, unit in _flat_rows(rep.to_dict()):
         if value is _SECTION:
             _title(ws, row, label, font=_BOLD)
+            _keep(ws, row, row + 3)
         else:  # engineering units, each number with its display format
             value, unit, fmt = engineering(value, unit)
             _set(ws.cell(row, 1), label)
@@ -946,7 +1033,7 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
 _CHART_SIZE = (18.0, 9.0)
 #: Check units the Checks sheet shows as people read them (a live stress is the Design sheet's
 #: name in Pa times 1E-6: MPa).
-SHOWN_IN_CHECKS = ("rad", "m", "rad/s/rad", "rad/s/m", "Pa")
+SHOWN_IN_CHECKS = tuple(SHOWN)  # every unit a person reads otherwise: rpm, mm, MPa, deg
 #: Printable width of an A4 page in portrait, in screen pixels (96 per inch, 1.5 cm margins).
 _PORTRAIT_PX = 680
 
@@ -966,9 +1053,19 @@ def _extent(ws: Worksheet, anchor: str, width_cm: float, height_cm: float) -> tu
         col += 1
     px = height_cm / 2.54 * 96
     while px > 0:
-        px -= (ws.row_dimensions[row].height or 15) * 96 / 72
+        px -= (ws.row_dimensions[row].height or _ROW_PT) * 96 / 72
         row += 1
     return col - 1, row - 1
+
+
+def _align_top(ws: Worksheet) -> None:
+    """Every cell aligned at the top of its row: a label beside a wrapped text (a long source,
+    a note) reads as that text's row, not the next one's."""
+    for c in _written(ws):
+        if c.alignment.vertical is None:
+            a = c.alignment
+            c.alignment = Alignment(horizontal=a.horizontal, vertical="top",
+                                    wrap_text=a.wrap_text, indent=a.indent)
 
 
 def _fit_rows(ws: Worksheet) -> None:
@@ -976,8 +1073,10 @@ def _fit_rows(ws: Worksheet) -> None:
     does not fit rows on opening would draw wrapped lines over the next row. Lines are
     estimated from the column's width (about 1.1 characters of text per width unit)."""
     need: dict[int, int] = {}
+    merged = {r.start_cell.coordinate for r in ws.merged_cells.ranges}  # sized where merged
     for c in _written(ws):
-        if not (isinstance(c.value, str) and c.alignment.wrap_text) or c.data_type == "f":
+        if not (isinstance(c.value, str) and c.alignment.wrap_text) or c.data_type == "f" \
+                or c.coordinate in merged:
             continue
         per_line = max(1.0, 1.1 * (ws.column_dimensions[c.column_letter].width or 8.43) - 1)
         lines = sum(max(1, math.ceil(len(part) / per_line)) for part in c.value.split("\n"))
@@ -1017,6 +1116,69 @@ def _print_setup(ws: Worksheet) -> None:
     ws.print_title_rows = "1:1"
     ws.print_area = f"A1:{get_column_letter(cols)}{rows}"
     ws.oddFooter.center.text = "&A, page &P of &N"
+    page_w, page_h = _PAGE_PX[ws.page_setup.orientation]
+    _paginate(ws, rows, page_h / min(1.0, page_w / max(_SPREADSHEET_WIDTH * width, 1)))
+
+
+#: The printable width and height of an A4 page (px at 96 dpi) inside the margins of
+#: :func:`_print_setup` (0.5 in left and right, 0.6 in top and bottom), by orientation.
+_PAGE_PX = {"portrait": (21.0 / 2.54 * 96 - 96, 29.7 / 2.54 * 96 - 115.2),
+            "landscape": (29.7 / 2.54 * 96 - 96, 21.0 / 2.54 * 96 - 115.2)}
+#: The share of a page's height :func:`_paginate` fills (room for the renderer's rounding).
+_PAGE_FILL = 0.96
+#: A row's height where none is set (pt), and the printed width of the columns against
+#: :func:`_px`'s, as LibreOffice lays out the sheets (measured on its PDF: a default row 12.75
+#: pt, columns about 1.1 times Excel's 7 px per character).
+_ROW_PT, _SPREADSHEET_WIDTH = 12.75, 1.1
+
+
+def _keep(ws: Worksheet, first: int, last: int) -> None:
+    """Rows ``first`` .. ``last`` print on one page where they fit on one (a table's title with
+    its header and first rows, a table's last rows with the chart under it)."""
+    if not hasattr(ws, "_govopt_keep"):
+        ws._govopt_keep = []
+    ws._govopt_keep.append((first, last))
+
+
+def _keep_table(ws: Worksheet, title: int, last: int, rows: int = 3) -> None:
+    """A table from its title row to ``last``: whole on a page where it fits on one; else its
+    title and header never end a page and its last ``rows`` rows never start one alone."""
+    if last - title <= 30:
+        _keep(ws, title, last)
+    else:
+        _keep(ws, title, title + 1 + rows)
+        _keep(ws, last - rows, last)
+
+
+def _paginate(ws: Worksheet, last: int, height: float) -> None:
+    """Manual page breaks so that no kept block (:func:`_keep`) is split where it fits on a
+    page: rows are laid out by their heights on pages ``height`` px tall (the page's height at
+    the print scale), the repeated first row on every page after the first."""
+    keep = sorted(getattr(ws, "_govopt_keep", []))
+    if not keep:
+        return
+
+    def px(r: int) -> float:
+        return (ws.row_dimensions[r].height or _ROW_PT) * 96 / 72
+
+    room = height * _PAGE_FILL
+    title = px(1)
+    used, start = 0.0, 1
+    r = 1
+    while r <= last:
+        h = px(r)
+        if used + h <= room or r == start:
+            used += h
+            r += 1
+            continue
+        # row r starts a new page: move the break up to the start of a block it would split
+        brk = r
+        for first, end in keep:
+            if first < brk <= end and first > start and \
+                    sum(px(k) for k in range(first, end + 1)) + title <= room:
+                brk = first
+        ws.row_breaks.append(Break(id=brk - 1))
+        start, r, used = brk, brk, title
 
 
 _CELL = re.compile(rb'<c r="([A-Z]+[0-9]+)"([^>]*)><f>(.*?)</f><v\s*/>\s*</c>', re.S)

@@ -425,6 +425,7 @@ def _quantities(res, data: Mapping, skip: Sequence[str] = ()) -> list[list[Any]]
             continue
         label, unit = units.get(str(key), (str(key).replace("_", " "), ""))
         v, u = shown(value, unit)
+        u = u.replace("*", " ")  # as people write it: N m s/rad
         if isinstance(v, list | tuple):
             for end, x in zip(("from", "to"), v, strict=False):
                 rows.append([f"{label} {end}", u, cell(x, "no upper end found")])
