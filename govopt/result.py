@@ -107,9 +107,11 @@ class Result:
                 Figure("speed at the outer end", float(st.omega[-1]), "rad/s", "speed",
                        symbol="omega_a", note=f"{gov.coordinate_name} at its outer end")]
         inertia = "kg*m^2" if gov.coordinate == "angle" else "kg"
+        weight = (f"{gov.mass_name}, its weight" if gov.mass_name.endswith("weight")
+                  else f"{gov.mass_name} weight")
         out += [Figure(f"{gov.mass_name} mass", sd.m, "kg", "design", symbol="m",
                        json=f"{gov.mass_key}_mass_kg"),
-                Figure(f"{gov.mass_name} weight", sd.m * G_STANDARD, "N", "design",
+                Figure(weight, sd.m * G_STANDARD, "N", "design", note=f"{sd.m:.4g} kgf",
                        json=f"{gov.mass_key}_weight_N"),
                 Figure(f"{gov.mass_name} inertia", sd.inertia, inertia, "design", symbol="I",
                        json=f"{gov.mass_key}_inertia_{'kg_m2' if inertia != 'kg' else 'kg'}",
@@ -117,7 +119,8 @@ class Result:
         if sd.central:
             out += [Figure("central load", sd.central, "kg", "design", symbol="M",
                            json="central_mass_kg"),
-                    Figure("central load weight", sd.central * G_STANDARD, "N", "design")]
+                    Figure("central load weight", sd.central * G_STANDARD, "N", "design",
+                           note=f"{sd.central:.4g} kgf")]
         if gov.spring is not None:
             out += [Figure("spring stiffness", sd.kappa, "N/m", "spring", symbol="kappa",
                            note=f"{gov.spring} spring", json="stiffness_N_per_m"),

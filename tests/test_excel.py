@@ -760,3 +760,34 @@ def test_spring_sheet_reads_in_engineering_units(tmp_path):
         assert value.number_format != "General"
     units = {r[2].value for r in rows.values() if r[2].value}
     assert not units & {"m", "Pa", "N/m", "rad/s"}, units
+
+
+def test_page_breaks_keep_blocks_together():
+    """Printing (issue 23): a break never splits a kept block that fits on a page (it moves up
+    to the block's first row); a block longer than a page is split; the repeated first row is
+    counted on every page after the first."""
+    ws = openpyxl.Workbook().active
+    for r in range(1, 121):
+        ws.cell(r, 1, r)
+    height = 50 * excel._ROW_PT * 96 / 72 / excel._PAGE_FILL  # 50 default rows a page
+    excel._keep(ws, 40, 70)  # 31 rows: would straddle the first page's end (row 50)
+    excel._paginate(ws, 120, height)
+    breaks = [b.id for b in ws.row_breaks.brk]
+    assert breaks[0] == 39  # the block starts the second page
+    assert breaks[1] == 39 + 49  # 49 rows under the repeated first row
+    ws2 = openpyxl.Workbook().active
+    excel._keep(ws2, 10, 80)  # longer than a page: split where the page ends
+    excel._paginate(ws2, 120, height)
+    assert [b.id for b in ws2.row_breaks.brk][0] == 50
+
+
+def test_characteristic_chart_shares_its_page(results):
+    """The characteristic's chart is printed with the table's last rows, never alone under the
+    repeated header: the page break (if any) falls at least five rows above the chart."""
+    for name in ("hamabe-a", "hamabe-b"):
+        wb = excel.build_workbook(results[name])
+        ws = wb["Characteristic"]
+        n = len(results[name].statics.alpha)
+        (chart,) = ws._charts
+        assert chart.anchor == f"B{n + 3}"  # under the table
+        assert all(b.id <= n + 1 - 5 for b in ws.row_breaks.brk), [b.id for b in ws.row_breaks.brk]

@@ -130,7 +130,8 @@ def load_changes(res) -> list[Table]:
         value = lc.get(key)
         if value is None:
             return None
-        return value if key.endswith("_deg") else shown(value, si)[0]
+        # json_coordinate writes an angle in degrees already, a length in SI (m)
+        return value if gov.coordinate == "angle" else shown(value, si)[0]
 
     def get(lc, key, default=None):
         return lc.get(key, default) if isinstance(lc, Mapping) else default

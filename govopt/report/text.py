@@ -415,8 +415,7 @@ def format_spring(res: Result) -> list[str]:
     if fat is None:
         out.append("  fatigue             no periodic forcing modelled: fatigue not checked")
     else:
-        key = next(k for k in fat if k.startswith("peak_to_peak"))
-        swing, unit = gov.shown(fat[key])
+        swing, unit = gov.shown(fat[f"peak_to_peak_{gov.key_unit('x')}"])  # in x's SI unit
         out.append(f"  fatigue load cycle  swing {float(swing):.4g} {unit} peak-to-peak at the "
                    f"normal configuration ({fat['forcing']})")
         if "force_min_N" in fat:
