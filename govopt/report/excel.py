@@ -993,10 +993,13 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
         return
     _header(ws, 2, ["quantity", "value", "unit"])
     row = 3
+    tops = []  # the top-level sections' title rows: printed whole where they fit on a page
     for label, value, unit in _flat_rows(rep.to_dict()):
         if value is _SECTION:
             _title(ws, row, label, font=_BOLD)
             _keep(ws, row, row + 3)
+            if not label.startswith(" "):
+                tops.append(row)
         else:  # engineering units, each number with its display format
             value, unit, fmt = engineering(value, unit)
             _set(ws.cell(row, 1), label)
@@ -1004,6 +1007,8 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
             ws.cell(row, 2).alignment = _LEFT_WRAP
             _set(ws.cell(row, 3), "" if value is None else unit)
         row += 1
+    for first, end in zip(tops, [*tops[1:], row], strict=True):
+        _keep_table(ws, first, end - 1)
     row += 1
     graded = res.spec.material.grade is not None
     rows = [c for c in res.checks if graded and c.group == "spring"]
@@ -1023,6 +1028,7 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
                               (6, c.margin, "0.00%"), (7, "PASS" if c.passed else "FAIL", None),
                               (8, c.source, None)):
                 _set(ws.cell(row, col), v, f)
+    _keep_table(ws, row - len(rows) - 1 - bool(rows), row)
     _widths(ws, {1: 40, 2: 40, 3: 14, 4: 18, 5: 10, 6: 11, 7: 9, 8: 80})
 
 
@@ -1282,10 +1288,13 @@ def _build_notes(ws: Worksheet, res: Result) -> None:
         *SOURCES,
         ("", None),
         ("Workbook", None),
-        ("units", "SI throughout (m, kg, s, N, Pa, rad) unless a header says otherwise."),
-        ("Design sheet", "Yellow input cells carry workbook names (wire_diameter, coil_radius, "
-                         "turns, free_half_length, pendulum_weight, ...); blue cells are live "
-                         "formulas on them, each beside govopt's own value."),
+        ("units", "Engineering units where a person reads (mm, N/mm, MPa, rpm, deg), each "
+                  "column or row with its unit; the Design sheet's formulas work in SI (m, "
+                  "kg, s, N, Pa, rad) on its defined names, the SI cells at its right."),
+        ("Design sheet", "Yellow input cells, in the units beside them, feed the workbook "
+                         "names (wire_diameter, coil_radius, turns, free_half_length, "
+                         "pendulum_weight, ...: the SI cells converting them); blue cells are "
+                         "live formulas on the names, each shown beside govopt's own value."),
         ("not live", "Characteristic, k^2, dynamics and checks other than stress and "
                      "irregularity are govopt's values when the workbook was written."),
         ("cached values", "Every formula cell also stores govopt's value as its cached "
@@ -1296,15 +1305,20 @@ def _build_notes(ws: Worksheet, res: Result) -> None:
                   "decided' for a settling time beyond what the solver's time grid resolves; "
                   "'unbounded' for an unstable excursion; a blank cell is not defined."),
         ("printing", "Each sheet prints to the page width (landscape where wide) with its "
-                     "first row repeated; response data beside the Dynamics charts are not "
-                     "printed."),
+                     "first row repeated; page breaks keep a table with its title and header, "
+                     "its last rows, and a chart with its rows; response data beside the "
+                     "Dynamics charts are not printed."),
     ]
     _title(ws, 1, f"govopt {res.kind}: {spec.name}")
     ws.freeze_panes = "A2"
+    titles = []
     for i, (key, value) in enumerate(rows, start=3):
         c = _set(ws.cell(i, 1), key)
         if value is None and key:
             c.font = _BOLD
+            titles.append(i)
         if value is not None:
             _set(ws.cell(i, 2), value, "General").alignment = _WRAP
+    for first, end in zip(titles, [*titles[1:], len(rows) + 4], strict=True):
+        _keep_table(ws, first, end - 2)  # printed: a section whole where it fits
     _widths(ws, {1: 28, 2: 110})
