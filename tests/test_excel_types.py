@@ -105,6 +105,8 @@ def test_workbook_reads_in_engineering_units(recalculated, results, name):
     assert labels["cf_m_i"].startswith("dead loads' pull per kg of")
     assert all(c.alignment.vertical == "top" for row in design.iter_rows(min_row=2) for c in row
                if c.value is not None)
+    spec_units = {r[3] for r in wb["Spec"].iter_rows(min_row=2, values_only=True)} - {None, ""}
+    assert not spec_units & {"Pa", "m", "rad/s", "N/m", "rad"}, spec_units
     head = [c.value for c in wb["Characteristic"][1]]
     assert not any(h and ("(m)" in h or "(Pa)" in h or "(rad)" in h) for h in head), head
     (chart,) = wb["Characteristic"]._charts

@@ -326,13 +326,14 @@ def _add_series(chart: ScatterChart, ws: Worksheet, x_col: int, y_col: int, head
 
 def _build_spec(ws: Worksheet, res: Result) -> None:
     spec = res.spec
-    _header(ws, 1, ["key", "value as written", "value (SI)", "SI unit"])
+    _header(ws, 1, ["key", "value as written", "value as read", "unit"])
     ws.freeze_panes = "A2"
     for i, e in enumerate(spec.entries, start=2):
         _set(ws.cell(i, 1), e.key)
         _set(ws.cell(i, 2), e.written)  # always text: a spec string is never a formula
-        _set(ws.cell(i, 3), e.si, "General")
-        _set(ws.cell(i, 4), e.unit)
+        value, unit = sections.shown(e.si, e.unit)  # as read, in the units people read
+        _set(ws.cell(i, 3), value, _sig_format(value) or "General")
+        _set(ws.cell(i, 4), _unit_label(unit) if e.unit else "")
     row = len(spec.entries) + 3
     _set(ws.cell(row, 1), "spec file")
     _set(ws.cell(row, 2), str(spec.path))
