@@ -154,7 +154,7 @@ def _run_and_report(compute, json_out: bool, spec: Path, xlsx: Path | None = Non
         check_output(p, overwrite=overwrite, inputs=[spec], what=what,
                      others=[q for q, _, _ in outputs if q is not p])
     if plots is not None:  # the folder, and no plot replaced without --force
-        from .report.plots import check_plot_dir, write_plots
+        from .report.plot_files import check_plot_dir, write_plots
 
         check_plot_dir(plots, spec.stem, overwrite=force, inputs=[spec],
                        others=[p for p, _, _ in outputs])

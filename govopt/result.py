@@ -1,6 +1,15 @@
 """The one result type: an evaluated (or optimised) design, flowing to JSON, text, Excel, plots.
 
-A :class:`Result` holds SI numbers only; writers format it and never recompute physics.
+A :class:`Result` holds SI numbers only; writers format it and never recompute physics. Its
+checks (:class:`~govopt.verdict.Check`) and figures (:meth:`Result.figures`,
+:class:`~govopt.verdict.Figure`) carry their unit, group and source as fields, which every writer
+reads (none parses a unit back from a name). In a notebook or a script::
+
+    res = govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a.toml"))
+    print(res.summary())      # the answer first: verdict, design, the checks to watch, notes
+    res.to_frame()            # checks and figures as a pandas DataFrame, with a unit column
+    res.plot("characteristic")  # matplotlib axes (report/plots); res.plot() draws every plot
+    res                       # in Jupyter: the summary as HTML (_repr_html_)
 """
 
 from __future__ import annotations
@@ -14,49 +23,10 @@ import numpy as np
 from .analysis.statics import Characteristic, SpringDesign, classify_k2
 from .inputs import Design, Spec
 from .jsonable import jsonable
+from .units import G_STANDARD
+from .verdict import ACTIVE_TOL, Check, Figure, shown
 
-#: Relative margin below which a satisfied constraint is reported as active (binding).
-ACTIVE_TOL = 1e-3
-
-
-@dataclass(frozen=True)
-class Check:
-    """One requirement: ``value`` against ``limit`` in the sense ``"<="`` or ``">="`` (SI)."""
-
-    name: str
-    value: float
-    limit: float
-    sense: str
-    unit: str = ""
-    source: str = ""
-    scale: float | None = None
-    #: Pass/fail decided elsewhere (e.g. :func:`govopt.analysis.transient.over_regulates`)
-    #: where the margin alone cannot decide it; None: from the margin.
-    verdict: bool | None = None
-
-    @property
-    def margin(self) -> float:
-        """Relative margin: positive when satisfied, ``(limit - value)/|limit|`` for ``<=``
-        (divided by ``scale`` instead where the limit is zero)."""
-        scale = self.scale or (abs(self.limit) if self.limit != 0 else 1.0)
-        diff = self.limit - self.value if self.sense == "<=" else self.value - self.limit
-        return diff / scale
-
-    @property
-    def passed(self) -> bool:
-        return self.margin >= -1e-9 if self.verdict is None else self.verdict
-
-    @property
-    def active(self) -> bool:
-        return self.passed and self.margin < ACTIVE_TOL
-
-    def to_dict(self) -> dict:
-        """JSON-ready; ``value`` and ``limit`` in ``unit`` (the checks differ in units, so the
-        unit is a field), infinities as null with a flag (:func:`govopt.jsonable.jsonable`)."""
-        return jsonable({"name": self.name, "value": self.value, "limit": self.limit,
-                         "sense": self.sense, "unit": self.unit, "margin": self.margin,
-                         "passed": self.passed, "active": self.active, "source": self.source})
-
+__all__ = ["ACTIVE_TOL", "Check", "Figure", "Result"]
 
 @dataclass
 class Result:
@@ -107,6 +77,138 @@ class Result:
 
     def check(self, name: str) -> Check:
         return next(c for c in self.checks if c.name == name)
+
+    def figures(self) -> list[Figure]:
+        """The design's reported figures, typed: each a :class:`~govopt.verdict.Figure` with
+        its SI value, unit, group (``"design"``, ``"speed"``, ``"spring"``, ``"classic"``),
+        symbol and a note (what it means, its source). The text's Design section, the
+        notebook's display and :meth:`to_frame` read these fields."""
+        st, sd, sp, spec = self.statics, self.spring, self.spring_properties, self.spec
+        gov = spec.governor
+        out: list[Figure] = []
+        opt = self.optimisation or {}
+        if opt.get("objective"):
+            obj = opt["objective"]
+            unit = obj.get("unit", "")
+            gap = opt.get("gap")
+            out.append(Figure(
+                f"objective: {str(obj.get('name', '')).replace('_', ' ')}",
+                obj.get(f"value_{unit}") if unit else obj.get("value"), unit, "design",
+                note=f"status {opt.get('status')}" + (
+                    "" if gap is None else f"; {100 * gap:.3g} % above the continuous bound")))
+        if spec.speed is not None:
+            out.append(Figure("irregularity", self.irregularity, "", "speed", symbol="delta",
+                              note=f"required <= {spec.speed.irregularity:g}; (omega_a - "
+                                   "omega_i) / omega0, omega0 the mean speed (Hamabe Part I)"))
+            out.append(Figure("mean speed", spec.speed.omega_mean, "rad/s", "speed",
+                              symbol="omega0", note="the spec's"))
+        out += [Figure("speed at the inner end", float(st.omega[0]), "rad/s", "speed",
+                       symbol="omega_i", note=f"{gov.coordinate_name} at its inner end"),
+                Figure("speed at the outer end", float(st.omega[-1]), "rad/s", "speed",
+                       symbol="omega_a", note=f"{gov.coordinate_name} at its outer end")]
+        inertia = "kg*m^2" if gov.coordinate == "angle" else "kg"
+        weight = (f"{gov.mass_name}, its weight" if gov.mass_name.endswith("weight")
+                  else f"{gov.mass_name} weight")
+        out += [Figure(f"{gov.mass_name} mass", sd.m, "kg", "design", symbol="m",
+                       json=f"{gov.mass_key}_mass_kg"),
+                Figure(weight, sd.m * G_STANDARD, "N", "design", note=f"{sd.m:.4g} kgf",
+                       json=f"{gov.mass_key}_weight_N"),
+                Figure(f"{gov.mass_name} inertia", sd.inertia, inertia, "design", symbol="I",
+                       json=f"{gov.mass_key}_inertia_{'kg_m2' if inertia != 'kg' else 'kg'}",
+                       note="about the coordinate (generalised inertia)")]
+        if sd.central:
+            out += [Figure("central load", sd.central, "kg", "design", symbol="M",
+                           json="central_mass_kg"),
+                    Figure("central load weight", sd.central * G_STANDARD, "N", "design",
+                           note=f"{sd.central:.4g} kgf")]
+        if gov.spring is not None:
+            out += [Figure("spring stiffness", sd.kappa, "N/m", "spring", symbol="kappa",
+                           note=f"{gov.spring} spring", json="stiffness_N_per_m"),
+                    Figure(gov.free_length_key.replace("_", " "), sd.l0, "m", "spring",
+                           symbol="l0", json=f"{gov.free_length_key}_m")]
+        if sp:
+            out += [Figure("wire diameter", sd.d, "m", "spring", symbol="d"),
+                    Figure("mean coil radius", sd.r, "m", "spring", symbol="r",
+                           json="coil_radius_m"),
+                    Figure("active turns", sd.n, "", "spring", symbol="n"),
+                    Figure("spring index", sp["spring_index"], "", "spring", symbol="C",
+                           note="C = 2 r / d"),
+                    Figure("Wahl factor", sp["wahl_factor"], "", "spring", symbol="K",
+                           source="Wahl 1944"),
+                    Figure("spring mass", sp["mass_kg"], "kg", "spring",
+                           note="active coils", json="mass_kg"),
+                    Figure("surge frequency", sp["surge_frequency_Hz"], "Hz", "spring",
+                           source="Wahl 1944"),
+                    Figure("max shear stress", self.max_stress, "Pa", "spring", symbol="tau")]
+            allowable = self.allowable_shear_stress
+            if allowable is not None:
+                out.append(Figure("allowable shear stress", allowable, "Pa", "spring"))
+        cm = self.classic
+        if cm:
+            change = f"for a {100 * cm['effort_change']:g} % speed change"
+            out += [Figure("range (classic)", cm["range_rad_s"], "rad/s", "classic",
+                           json="range_rad_s"),
+                    Figure("sensitiveness", cm["sensitiveness"], "", "classic",
+                           note="range / mean of its ends (textbook 3.2)"),
+                    Figure("stability", str(cm["stability"]), "", "classic",
+                           note="the characteristic's slope"),
+                    Figure("effort", cm["effort"], str(cm.get("effort_unit", "N*m")), "classic",
+                           note=f"{change} at the normal configuration"),
+                    Figure("power", cm["power"], str(cm.get("power_unit", "J")), "classic",
+                           note=change)]
+            if cm["friction_band"]:
+                out += [Figure("friction band", cm["friction_band"],
+                               "N*m" if gov.coordinate == "angle" else "N", "classic",
+                               note="generalised force"),
+                        Figure("coefficient of insensitiveness", cm["insensitiveness"], "",
+                               "classic")]
+        return out
+
+    def figure(self, name: str) -> Figure:
+        """The figure named ``name`` (:meth:`figures`)."""
+        return next(f for f in self.figures() if f.name == name)
+
+    def summary(self) -> str:
+        """The answer first, as plain text: the verdict, the design in engineering units, the
+        failing, binding and tightest checks, and the notes (``govopt evaluate``'s default
+        output; :func:`govopt.report.text.format_summary`)."""
+        from .report.text import format_summary
+
+        return format_summary(self, colour=False)
+
+    def to_frame(self, engineering: bool = False):
+        """The checks and figures as a :class:`pandas.DataFrame`, one row each, with columns
+        ``kind`` (``"check"`` or ``"figure"``), ``group``, ``name``, ``value``, ``limit``,
+        ``sense``, ``unit``, ``margin``, ``passed``, ``active`` and ``source`` (a figure's
+        limit, sense, margin and verdict are empty). Values in SI, or with ``engineering`` in
+        the units the reports show (mm, MPa, deg, rpm, N/mm: the ``unit`` column says which).
+        pandas is imported here, not with govopt."""
+        import pandas as pd
+
+        def conv(value, unit):
+            return shown(value, unit) if engineering else (value, unit)
+
+        rows = []
+        for c in self.checks:
+            value, unit = conv(c.value, c.unit)
+            limit, _ = conv(c.limit, c.unit)
+            rows.append({"kind": "check", "group": c.group, "name": c.name, "value": value,
+                         "limit": limit, "sense": c.sense, "unit": unit, "margin": c.margin,
+                         "passed": c.passed, "active": c.active, "source": c.source})
+        for f in self.figures():
+            value, unit = conv(f.value, f.unit)
+            rows.append({"kind": "figure", "group": f.group, "name": f.name, "value": value,
+                         "limit": None, "sense": "", "unit": unit, "margin": None,
+                         "passed": None, "active": None, "source": f.source or f.note})
+        return pd.DataFrame(rows, columns=["kind", "group", "name", "value", "limit", "sense",
+                                           "unit", "margin", "passed", "active", "source"])
+
+    def _repr_html_(self) -> str:
+        """A notebook's rich display: the summary as HTML tables
+        (:func:`govopt.report.text.format_html`)."""
+        from .report.text import format_html
+
+        return format_html(self)
 
     def plot(self, kind: str | None = None, ax=None):
         """Draw plot ``kind`` (``"characteristic"``, ``"k2"``, ``"load-change-1"`` ...: see

@@ -20,7 +20,7 @@ import pytest
 import govopt
 from govopt.errors import GovoptError
 from govopt.report import excel
-from govopt.result import Check
+from govopt.verdict import SHOWN, Check
 
 ROOT = Path(__file__).resolve().parent.parent
 SPECS = ROOT / "govopt" / "specs"
@@ -100,6 +100,13 @@ def _expected(res) -> dict[str, float]:
     if res.design.pendulum_inertia is None:
         out["pendulum_inertia"] = sd.inertia
     return {k: float(v) for k, v in out.items()}
+
+
+def _factor(design, row: int) -> float:
+    """The factor from the Design sheet's SI value of ``row`` to the value shown beside it
+    (govopt.verdict.SHOWN by the row's SI unit; 1 where it is shown in SI)."""
+    label = design.cell(row, excel._SI_UNIT).value
+    return next((f for unit, (_, f) in SHOWN.items() if excel._unit_label(unit) == label), 1.0)
 
 
 def _named_cells(wb) -> dict[str, tuple[str, str]]:
@@ -199,8 +206,9 @@ def recalculated(results, workbooks, tmp_path_factory):
     # the design edited in the workbook: wire diameter 17 mm -> 16 mm
     wb = openpyxl.load_workbook(workbooks["hamabe-a"])
     sheet, ref = _named_cells(wb)["wire_diameter"]
-    assert wb[sheet][ref].value == pytest.approx(0.017)
-    wb[sheet][ref].value = 0.016
+    shown = wb[sheet].cell(wb[sheet][ref].row, excel._VALUE)  # the input, in mm
+    assert shown.value == pytest.approx(17.0)
+    shown.value = 16.0
     files["edited"] = d / "hamabe-a-d16.xlsx"
     wb.save(files["edited"])
     files["text"] = excel.write_workbook(_text_result(d), d / "text.xlsx")
@@ -253,20 +261,32 @@ def test_sheets_charts_and_names(workbooks, results, name):
     formulas = set(_expected(res))
     assert set(names) == inputs | formulas
     design = wb["Design"]
-    for n in inputs:
+    for n in inputs:  # the name is the SI cell converting the yellow input beside it
         sheet, ref = names[n]
         assert sheet == "Design"
         cell = design[ref]
-        assert cell.data_type == "n", n
-        assert cell.fill.fgColor.rgb.endswith("FFF2CC"), n
+        shown = design.cell(cell.row, excel._VALUE)
+        assert cell.column == excel._SI and cell.data_type == "f", n
+        assert cell.value.startswith(f"={shown.coordinate}"), n
+        assert shown.data_type == "n", n
+        assert shown.fill.fgColor.rgb.endswith("FFF2CC"), n
     for n in formulas:
         cell = design[names[n][1]]
         assert cell.data_type == "f" and cell.value.startswith("="), n
     sd = res.spring
-    for n, v in (("wire_diameter", sd.d), ("coil_radius", sd.r), ("turns", sd.n),
-                 ("free_half_length", sd.l0), ("pendulum_weight", sd.m * 9.80665)):
-        assert design[names[n][1]].value == pytest.approx(v, rel=1e-15)
-    assert (design[names["dashpot"][1]].value is None) == (res.design.dashpot is None)
+    for n, v, unit in (("wire_diameter", sd.d, "mm"), ("coil_radius", sd.r, "mm"),
+                       ("turns", sd.n, "-"), ("free_half_length", sd.l0, "mm"),
+                       ("pendulum_weight", sd.m * 9.80665, "N")):
+        row = design[names[n][1]].row
+        assert design.cell(row, excel._UNIT).value == unit
+        assert design.cell(row, excel._VALUE).value == pytest.approx(
+            v * _factor(design, row), rel=1e-15)
+    dashpot = design.cell(design[names["dashpot"][1]].row, excel._VALUE)
+    assert (dashpot.value is None) == (res.design.dashpot is None)
+    # a person reads engineering units: no Pa, m or rad/s in the value column's units
+    units = {design.cell(r, excel._UNIT).value for r in range(2, design.max_row + 1)}
+    assert not units & {"Pa", "m", "rad/s", "N/m", "rad"}, units
+    assert {"MPa", "mm", "rpm"} <= units
 
     # every formula cell carries govopt's value as its cached result (issue 13, item 2: was
     # empty; test_formula_cells_carry_govopts_values checks the values): the recalculation
@@ -305,14 +325,15 @@ def test_characteristic_table_matches_result(workbooks, results):
     res = results["hamabe-a"]
     ws = openpyxl.load_workbook(workbooks["hamabe-a"])["Characteristic"]
     head = [c.value for c in ws[1]]
-    assert head[:4] == ["alpha (deg)", "alpha (rad)", "omega (rad/s)", "speed (rpm)"]
+    assert head[:4] == ["alpha (deg)", "omega (rad/s)", "speed (rpm)", "M_z (N m)"]
     col = {h: i for i, h in enumerate(head)}
     rows = list(ws.iter_rows(min_row=2, values_only=True))
     assert len(rows) == len(res.statics.alpha)
     st = res.statics
     # openpyxl writes numbers with 16 significant digits ("%.16g")
-    for head, want in (("omega (rad/s)", st.omega), ("shear stress tau (Pa)", st.stress),
-                       ("k^2 (rad^2/s^2)", res.k2), ("M_r0 (N m)", st.M_r0)):
+    for head, want in (("omega (rad/s)", st.omega), ("shear stress tau (MPa)", st.stress / 1e6),
+                       ("k^2 (1/s^2)", res.k2), ("M_r0 (N m)", st.M_r0),
+                       ("alpha (deg)", np.degrees(st.alpha))):
         np.testing.assert_allclose([r[col[head]] for r in rows], want, rtol=1e-15, atol=0)
     np.testing.assert_allclose([r[col["speed (rpm)"]] for r in rows], st.omega * 30 / math.pi,
                                rtol=1e-15)
@@ -471,8 +492,14 @@ def test_formula_cells_carry_govopts_values(workbooks, results):
     n = 0
     for c in _formula_cells(wf["Design"]):
         got = wv["Design"][c.coordinate].value
-        if c.column == excel._VALUE:
-            assert got == expected[names[c.coordinate]], names[c.coordinate]  # exactly
+        name = names.get(wf["Design"].cell(c.row, excel._SI).coordinate)
+        if c.column == excel._SI and name in expected:
+            assert got == expected[name], name  # exactly
+        elif c.column == excel._SI:  # an input's SI value
+            shown = wv["Design"].cell(c.row, excel._VALUE).value or 0.0  # blank: 0
+            assert got == pytest.approx(shown / _factor(wf["Design"], c.row), rel=1e-15), name
+        elif c.column == excel._VALUE:  # the formula's value as shown
+            assert got == expected[name] * _factor(wf["Design"], c.row), name
         else:  # the relative difference to govopt's value beside it
             assert got == 0.0
         n += 1
@@ -573,12 +600,17 @@ def _compare_all_formulas(written: Path, recalculated: Path, res, *, design_only
         total += 1
         got = wv["Design"][c.coordinate].value
         assert isinstance(got, float | int) and not isinstance(got, bool), (c.coordinate, got)
-        if c.column == 3:  # value column: a named formula
-            want = expected[names[c.coordinate]]
-            worst = max(worst, _rel(got, want))
-            assert got == pytest.approx(want, rel=RTOL, abs=0), names[c.coordinate]
+        name = names.get(design.cell(c.row, excel._SI).coordinate)
+        if c.column == excel._SI and name not in expected:  # an input, converted to SI
+            shown = wv["Design"].cell(c.row, excel._VALUE).value or 0.0
+            assert got == pytest.approx(shown / _factor(design, c.row), rel=1e-14), name
             compared += 1
-        elif c.column == 6:  # relative difference to the govopt value written beside it
+        elif c.column in (excel._SI, excel._VALUE):  # a named formula, in SI and shown
+            want = expected[name] * (_factor(design, c.row) if c.column == excel._VALUE else 1)
+            worst = max(worst, _rel(got, want))
+            assert got == pytest.approx(want, rel=RTOL, abs=0), name
+            compared += 1
+        elif c.column == excel._RELDIFF:  # relative difference to govopt's value beside it
             if check_reldiff:
                 assert abs(got) <= RTOL, c.coordinate
             compared += 1
@@ -728,3 +760,34 @@ def test_spring_sheet_reads_in_engineering_units(tmp_path):
         assert value.number_format != "General"
     units = {r[2].value for r in rows.values() if r[2].value}
     assert not units & {"m", "Pa", "N/m", "rad/s"}, units
+
+
+def test_page_breaks_keep_blocks_together():
+    """Printing (issue 23): a break never splits a kept block that fits on a page (it moves up
+    to the block's first row); a block longer than a page is split; the repeated first row is
+    counted on every page after the first."""
+    ws = openpyxl.Workbook().active
+    for r in range(1, 121):
+        ws.cell(r, 1, r)
+    height = 50 * excel._ROW_PT * 96 / 72 / excel._PAGE_FILL  # 50 default rows a page
+    excel._keep(ws, 40, 70)  # 31 rows: would straddle the first page's end (row 50)
+    excel._paginate(ws, 120, height)
+    breaks = [b.id for b in ws.row_breaks.brk]
+    assert breaks[0] == 39  # the block starts the second page
+    assert breaks[1] == 39 + 49  # 49 rows under the repeated first row
+    ws2 = openpyxl.Workbook().active
+    excel._keep(ws2, 10, 80)  # longer than a page: split where the page ends
+    excel._paginate(ws2, 120, height)
+    assert [b.id for b in ws2.row_breaks.brk][0] == 50
+
+
+def test_characteristic_chart_shares_its_page(results):
+    """The characteristic's chart is printed with the table's last rows, never alone under the
+    repeated header: the page break (if any) falls at least five rows above the chart."""
+    for name in ("hamabe-a", "hamabe-b"):
+        wb = excel.build_workbook(results[name])
+        ws = wb["Characteristic"]
+        n = len(results[name].statics.alpha)
+        (chart,) = ws._charts
+        assert chart.anchor == f"B{n + 3}"  # under the table
+        assert all(b.id <= n + 1 - 5 for b in ws.row_breaks.brk), [b.id for b in ws.row_breaks.brk]

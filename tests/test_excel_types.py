@@ -77,3 +77,37 @@ def test_designs_pass_every_check(results, name):
     failing = [c.name for c in again.checks if not c.passed]
     assert failing == []
     assert again.statics.omega[0] == pytest.approx(res.statics.omega[0], rel=1e-12)
+
+
+@pytest.mark.parametrize("name", EVALUATE + DESIGN)
+def test_workbook_reads_in_engineering_units(recalculated, results, name):
+    """Issue 23: every number a person reads on the Design, Characteristic and Checks sheets has
+    a display format and an engineering unit (mm, MPa, N/mm, rpm, deg: no Pa, m, rad/s); the
+    seam's spring terms only where the type has a spring; every cell aligned at the top; the
+    characteristic's chart draws the spec's required band."""
+    written, _ = recalculated
+    res = results[name]
+    wb = openpyxl.load_workbook(written[name])
+    for ws in (wb["Design"], wb["Characteristic"], wb["Checks"]):
+        for row in ws.iter_rows():
+            for c in row:
+                if isinstance(c.value, float):
+                    assert c.number_format != "General", (ws.title, c.coordinate)
+    design = wb["Design"]
+    rows = range(2, design.max_row + 1)
+    units = {design.cell(r, excel._UNIT).value for r in rows} - {None}
+    assert not units & {"Pa", "m", "rad/s", "N/m", "rad"}, units
+    assert "rpm" in units
+    symbols = {design.cell(r, 2).value for r in rows}
+    assert ("A_F_i" in symbols) == (res.spec.governor.spring is not None)
+    assert {"cf_m_i", "lv_m_a"} <= symbols
+    labels = {design.cell(r, 2).value: design.cell(r, 1).value for r in rows}
+    assert labels["cf_m_i"].startswith("dead loads' pull per kg of")
+    assert all(c.alignment.vertical == "top" for row in design.iter_rows(min_row=2) for c in row
+               if c.value is not None)
+    spec_units = {r[3] for r in wb["Spec"].iter_rows(min_row=2, values_only=True)} - {None, ""}
+    assert not spec_units & {"Pa", "m", "rad/s", "N/m", "rad"}, spec_units
+    head = [c.value for c in wb["Characteristic"][1]]
+    assert not any(h and ("(m)" in h or "(Pa)" in h or "(rad)" in h) for h in head), head
+    (chart,) = wb["Characteristic"]._charts
+    assert len(chart.series) == (3 if res.spec.speed is not None else 1)

@@ -16,7 +16,7 @@ import govopt
 from govopt.analysis import vyshnegradsky as vy
 from govopt.evaluation import evaluate
 from govopt.governors import REGISTRY
-from govopt.report import plots
+from govopt.report import plot_files, plots
 from govopt.spec import load_spec
 
 SPECS = Path(govopt.__file__).resolve().parent / "specs"
@@ -64,7 +64,7 @@ def _check_svg(path: Path) -> None:
 def test_write_plots_png_and_svg_not_blank(tmp_path, name, expected):
     res = _result(name)
     assert plots.kinds(res) == expected
-    written = plots.write_plots(res, tmp_path)
+    written = plot_files.write_plots(res, tmp_path)
     assert [p.name for p in written] == [f"{name}-{k}.{f}" for k in expected
                                          for f in plots.FORMATS]
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(p.name for p in written)
@@ -77,7 +77,7 @@ def test_fatigue_plot_written_for_a_graded_spring(tmp_path):
     assert "fatigue" in plots.kinds(res)
     out = tmp_path / "out"
     out.mkdir()
-    (png,) = plots.write_plots(res, out, formats=("png",))[-1:]
+    (png,) = plot_files.write_plots(res, out, formats=("png",))[-1:]
     assert png.name == "hamabe-a-graded-fatigue.png"
     _check_png(png)
 
@@ -89,13 +89,13 @@ def test_files_are_reproducible_and_never_clobbered(tmp_path):
     a, b = tmp_path / "a", tmp_path / "b"
     a.mkdir(), b.mkdir()
     for d in (a, b):
-        plots.write_plots(res, d, formats=("svg",))
+        plot_files.write_plots(res, d, formats=("svg",))
     assert len(list(a.iterdir())) == 3
     for p in a.iterdir():
         assert p.read_bytes() == (b / p.name).read_bytes(), p.name
     with pytest.raises(govopt.errors.GovoptError, match="already exists"):
-        plots.write_plots(res, a, overwrite=False, formats=("svg",))
-    assert plots.write_plots(res, a, overwrite=True, formats=("svg",))
+        plot_files.write_plots(res, a, overwrite=False, formats=("svg",))
+    assert plot_files.write_plots(res, a, overwrite=True, formats=("svg",))
 
 
 # ---------------------------------------------------------------------------- every type

@@ -46,6 +46,7 @@ from ..springs import helical as hx
 from ..springs import materials as mt
 from ..springs import sheet as sh
 from ..springs import tolerances as tl
+from ..verdict import Check
 from . import statics
 
 #: ``Governor.spring`` -> the library's spring kind.
@@ -185,10 +186,8 @@ def _static_range(char):
 
 
 def checks(spec, sd, char, vib=None) -> list:
-    """The spring engineering checks of one design (:class:`govopt.result.Check`): the static
+    """The spring engineering checks of one design (:class:`govopt.verdict.Check`): the static
     table, an extension spring's fit, and the fatigue rows under the forcing's load cycle."""
-    from ..result import Check
-
     kind = KINDS[spec.governor.spring]
     d, D, n = sd.d, 2.0 * sd.r, sd.n
     F1, F2 = _static_range(char)
@@ -196,7 +195,7 @@ def checks(spec, sd, char, vib=None) -> list:
     out = [c for c in ck.checks(kind, **kw) if _static(c.name, spec)]
     if kind == "extension":
         value, limit = _fits(ck.prepare(kind, **kw))
-        out.append(Check(FITS, float(value), float(limit), "<=", "m", FITS_SOURCE))
+        out.append(Check(FITS, float(value), float(limit), "<=", "m", FITS_SOURCE, group="spring"))
     if vib is None:
         return out
     swing = float(vib.peak_to_peak_rad)
@@ -458,7 +457,7 @@ def geometry_screen(spec, d, r, n, kappa, l0):
 
 
 def geometry_checks(spec, sd) -> list:
-    """:func:`geometry_rows` of one design as :class:`govopt.result.Check` objects."""
+    """:func:`geometry_rows` of one design as :class:`govopt.verdict.Check` objects."""
     F1, F2 = static_range(spec, sd.kappa, sd.l0)
     kw = _kw(spec, sd.d, 2.0 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2)
     return ck.checks(KINDS[spec.governor.spring], ck.GEOMETRY, **kw)
@@ -477,13 +476,8 @@ def screen_fatigue(spec, d, r, n, kappa, l0, swing):
                           col(F2), np.min(F, axis=0), np.max(F, axis=0))
 
 
-def is_engineering_check(name: str) -> bool:
-    """True for the name of a check of the spring engineering tables (for reports)."""
-    return name == FITS or any(name == r.name for t in ck.TABLES.values() for r in t)
-
-
 __all__ = ["KINDS", "NO_FORCING", "Spread", "SpringReport", "allowable_monomial", "checks",
            "evaluate_rows", "fatigue_forces", "fatigue_safety", "feasible", "geometry_checks",
            "geometry_rows", "geometry_screen", "harmonics_hz",
-           "initial_tension", "is_engineering_check", "report", "screen", "screen_fatigue",
+           "initial_tension", "report", "screen", "screen_fatigue",
            "screen_vibration", "spread", "static_range", "wire"]

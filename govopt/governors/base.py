@@ -41,6 +41,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..springs.kinds import KINDS, SpringKind
+from ..verdict import Check
 
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
 #: (govopt's rule: every key's unit in its name), by the coordinate's dimension: ``x`` itself
@@ -243,15 +244,13 @@ class Governor(ABC):
         return hx.shear_stress_r(F, sd.d, sd.r, material.stress_correction)
 
     def spring_checks(self, spec, sd, char, vib=None) -> list:
-        """The spring's own checks (:class:`govopt.result.Check`): a helical spring's largest
+        """The spring's own checks (:class:`govopt.verdict.Check`): a helical spring's largest
         shear stress against the allowable (Hamabe Ex. 1); with a wire grade
         (``material.grade``) the spring engineering table instead - static stresses against
         the grade's allowables at ``d``, the spring kind's geometry, and fatigue and surge under
         ``vib``, the type's forced vibration (:mod:`govopt.analysis.spring_engineering`).
         Without a grade, the spring kind's geometric rows (coil clash, buckling, free pitch:
         :func:`~govopt.analysis.spring_engineering.geometry_checks`) follow the stress."""
-        from ..result import Check
-
         if spec.material is None or not np.isfinite(sd.d):
             return []
         from ..analysis import spring_engineering

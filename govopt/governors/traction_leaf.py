@@ -53,6 +53,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..springs import leaf
+from ..verdict import Check
 from .base import Terms
 from .traction_coil import FlyWeights, centrifugal_force
 
@@ -215,8 +216,6 @@ class TractionLeafGovernor(FlyWeights):
         """The leaf's constraint table (:data:`govopt.springs.leaf.CONSTRAINTS`): bending stress
         against the material's allowable, bow/length within the chord models' stated range; and
         the set ``l0`` within ``leaf_set_min`` .. ``leaf_set_max`` (:meth:`set_ok`)."""
-        from ..result import Check
-
         mat, req = spec.material, spec.requirements
         allowable = mat.allowable_bending_stress if mat is not None else None
         rows = leaf.checks(F=np.max(np.abs(char.spring_force)),

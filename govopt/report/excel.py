@@ -39,7 +39,7 @@ import re
 import zipfile
 from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from openpyxl import Workbook
@@ -54,10 +54,13 @@ from openpyxl.worksheet.pagebreak import Break
 from openpyxl.worksheet.worksheet import Worksheet
 
 from ..analysis import statics
-from ..result import ACTIVE_TOL, Result
 from ..units import G_STANDARD
+from ..verdict import ACTIVE_TOL, SHOWN
 from . import sections
 from .files import atomic_write
+
+if TYPE_CHECKING:
+    from ..result import Result
 
 __all__ = ["SHEETS", "build_workbook", "write_workbook"]
 
@@ -86,6 +89,7 @@ _FORMATS = {
     "N*m": "0.000000", "Hz": "0.000", "": "0.000000", "kg/m^3": "#,##0.00",
     "m/s^2": "0.00000", "N*m*s/rad": "0.000000", "deg": "0.0000", "rad^2/s^2": "0.000",
     "s": "0.0000", "N*m/rad": "#,##0.000", "MPa": "#,##0.00", "mm": "0.000",
+    "N/mm": "#,##0.000", "1/s^2": "0.000",
 }
 _GENERAL_FORMAT = "0.000000"
 _RELDIFF_FORMAT = "0.0E+00"
@@ -150,6 +154,7 @@ def build_workbook(result: Result) -> Workbook:
     wb.active = sheets["Design"]
     for ws in wb.worksheets:
         ws.sheet_view.tabSelected = ws is sheets["Design"]
+        _align_top(ws)
         _fit_rows(ws)
         _print_setup(ws)
     from .. import __version__
@@ -203,20 +208,6 @@ def _scalar(value: Any) -> Any:
     if isinstance(value, np.ndarray) and value.ndim == 0:
         return _scalar(value.item())
     return str(value)
-
-
-def _is_scalar(value: Any) -> bool:
-    return value is None or isinstance(value, str | bool | int | float | complex | np.generic) \
-        or (isinstance(value, np.ndarray) and value.ndim == 0)
-
-
-def _text_of(value: Any) -> str:
-    """A list or array of scalars as one line of text (e.g. the roots of a characteristic
-    equation)."""
-    if _is_scalar(value):
-        v = _scalar(value)
-        return f"{v:.10g}" if isinstance(v, float) else str(v)
-    return "; ".join(_text_of(v) for v in value)
 
 
 def _xml_safe(text: str) -> str:
@@ -287,6 +278,11 @@ def _unit_label(unit: str) -> str:
     return unit.replace("*", " ") if unit else "-"
 
 
+def shown_unit(unit: str) -> str:
+    """The engineering unit an SI unit is shown in (:data:`govopt.verdict.SHOWN`)."""
+    return SHOWN.get(unit, (unit, 1.0))[0]
+
+
 def _fmt(unit: str) -> str:
     return _FORMATS.get(unit, _GENERAL_FORMAT)
 
@@ -330,13 +326,14 @@ def _add_series(chart: ScatterChart, ws: Worksheet, x_col: int, y_col: int, head
 
 def _build_spec(ws: Worksheet, res: Result) -> None:
     spec = res.spec
-    _header(ws, 1, ["key", "value as written", "value (SI)", "SI unit"])
+    _header(ws, 1, ["key", "value as written", "value as read", "unit"])
     ws.freeze_panes = "A2"
     for i, e in enumerate(spec.entries, start=2):
         _set(ws.cell(i, 1), e.key)
         _set(ws.cell(i, 2), e.written)  # always text: a spec string is never a formula
-        _set(ws.cell(i, 3), e.si, "General")
-        _set(ws.cell(i, 4), e.unit)
+        value, unit = sections.shown(e.si, e.unit)  # as read, in the units people read
+        _set(ws.cell(i, 3), value, _sig_format(value) or "General")
+        _set(ws.cell(i, 4), _unit_label(unit) if e.unit else "")
     row = len(spec.entries) + 3
     _set(ws.cell(row, 1), "spec file")
     _set(ws.cell(row, 2), str(spec.path))
@@ -347,9 +344,17 @@ def _build_spec(ws: Worksheet, res: Result) -> None:
 # Design: input cells with defined names and live formulas
 
 
-_DESIGN_HEADERS = ["quantity", "symbol", "value (SI)", "SI unit", "govopt value",
-                   "rel. difference", "defined name", "formula / source"]
-_VALUE, _GOVOPT, _RELDIFF, _NAME, _NOTE = 3, 5, 6, 7, 8
+_DESIGN_HEADERS = ["quantity", "symbol", "value", "unit", "govopt value", "rel. difference",
+                   "formula / source", "defined name", "value (SI)", "SI unit"]
+#: The Design sheet's columns: a person reads and edits the value in engineering units
+#: (:data:`govopt.verdict.SHOWN`: mm, MPa, N/mm, rpm, deg); the defined names are the SI cells
+#: beside it (converted from the input, or the live formula in SI), which every formula uses.
+_VALUE, _UNIT, _GOVOPT, _RELDIFF, _NOTE, _NAME, _SI, _SI_UNIT = 3, 4, 5, 6, 7, 8, 9, 10
+#: The Design sheet's widths (characters) and the characters of a line of text across the
+#: printed columns A .. formula / source (about 1.1 per width unit).
+_DESIGN_WIDTHS = {1: 44, 2: 12, _VALUE: 16, _UNIT: 10, _GOVOPT: 16, _RELDIFF: 11, _NOTE: 60,
+                  _NAME: 24, _SI: 18, _SI_UNIT: 10}
+_TEXT_LINE = int(1.1 * sum(w for j, w in _DESIGN_WIDTHS.items() if j <= _NOTE)) - 4
 
 #: Defined names must not look like a cell reference (A1 or R1C1) or clash with a function.
 _NAME_OK = re.compile(r"^[a-z][a-z_]*$")
@@ -358,6 +363,7 @@ _NAME_OK = re.compile(r"^[a-z][a-z_]*$")
 class _DesignSheet:
     def __init__(self, wb: Workbook, ws: Worksheet):
         self.wb, self.ws, self.row = wb, ws, 1
+        self.titles: list[int] = []  # the sections' title rows (kept with their rows)
         _header(ws, 1, _DESIGN_HEADERS)
         ws.freeze_panes = "A2"
         self.row = 2
@@ -365,39 +371,54 @@ class _DesignSheet:
     def _name(self, name: str) -> None:
         if not _NAME_OK.match(name) or name in self.wb.defined_names:
             raise ValueError(f"bad or repeated defined name {name!r}")
-        ref = f"'{self.ws.title}'!${get_column_letter(_VALUE)}${self.row}"
+        ref = f"'{self.ws.title}'!${get_column_letter(_SI)}${self.row}"
         self.wb.defined_names[name] = DefinedName(name, attr_text=ref)
         _set(self.ws.cell(self.row, _NAME), name)
 
     def section(self, text: str) -> None:
         self.row += 1 if self.row > 2 else 0
         _title(self.ws, self.row, text, font=_BOLD)
+        self.titles.append(self.row)
         self.row += 1
 
     def _label(self, label, symbol, unit, note):
         ws = self.ws
         _set(ws.cell(self.row, 1), label)
         _set(ws.cell(self.row, 2), symbol)
-        _set(ws.cell(self.row, 4), _unit_label(unit))
+        _set(ws.cell(self.row, _UNIT), _unit_label(shown_unit(unit)))
+        _set(ws.cell(self.row, _SI_UNIT), _unit_label(unit))
         if note:
             _set(ws.cell(self.row, _NOTE), note)
 
     def input(self, name, label, symbol, value, unit, note="", number_format=None) -> None:
+        """A yellow input in engineering units, and its defined name: the SI cell converting
+        it (``value`` in SI; blank for None)."""
         self._label(label, symbol, unit, note)
-        c = self.ws.cell(self.row, _VALUE)
+        r, factor = self.row, SHOWN.get(unit, (unit, 1.0))[1]
+        c = self.ws.cell(r, _VALUE)
         if value is None:
             c.value = None
         else:
-            _set(c, float(value), number_format or _fmt(unit))
+            _set(c, float(value) * factor, number_format or _fmt(shown_unit(unit)))
         c.fill = _INPUT_FILL
+        ref = f"{get_column_letter(_VALUE)}{r}"
+        _formula(self.ws.cell(r, _SI), f"={ref}" if factor == 1.0 else f"={ref}/{factor!r}",
+                 number_format or _fmt(unit), 0.0 if value is None else float(value))
         self._name(name)
         self.row += 1
 
     def formula(self, name, label, symbol, formula, unit, govopt_value, note="") -> None:
+        """A live formula in SI on the defined names (blue, named), shown in engineering units
+        beside govopt's value and their relative difference."""
         ws, r = self.ws, self.row
         self._label(label, symbol, unit, note)
-        _formula(ws.cell(r, _VALUE), formula, _fmt(unit), govopt_value).fill = _FORMULA_FILL
-        _set(ws.cell(r, _GOVOPT), govopt_value, _fmt(unit))
+        shown, factor = SHOWN.get(unit, (unit, 1.0))
+        _formula(ws.cell(r, _SI), formula, _fmt(unit), govopt_value).fill = _FORMULA_FILL
+        si = f"{get_column_letter(_SI)}{r}"
+        seen = None if govopt_value is None else govopt_value * factor
+        _formula(ws.cell(r, _VALUE), f"={si}" if factor == 1.0 else f"={si}*{factor!r}",
+                 _fmt(shown), seen).fill = _FORMULA_FILL
+        _set(ws.cell(r, _GOVOPT), seen, _fmt(shown))
         v, g = f"{get_column_letter(_VALUE)}{r}", f"{get_column_letter(_GOVOPT)}{r}"
         _formula(ws.cell(r, _RELDIFF), f"=IF({g}=0,ABS({v}),ABS({v}/{g}-1))", _RELDIFF_FORMAT,
                  0.0)
@@ -440,8 +461,14 @@ class _DesignSheet:
         return "*wahl_factor" if correction == "wahl" else ""
 
     def text(self, text: str) -> None:
+        """An explanation in italics across the printed columns (quantity .. formula /
+        source), wrapped."""
         c = _set(self.ws.cell(self.row, 1), text)
         c.font = _ITALIC
+        c.alignment = _WRAP
+        self.ws.merge_cells(start_row=self.row, start_column=1, end_row=self.row,
+                            end_column=_NOTE)
+        self.ws.row_dimensions[self.row].height = 15.0 * math.ceil(len(text) / _TEXT_LINE)
         self.row += 1
 
 
@@ -450,15 +477,20 @@ def _build_design(wb: Workbook, ws: Worksheet, res: Result) -> None:
     if not res.spec.governor.excel_design(s, res):  # a type may write its own live sheet
         _generic_design(s, res)
     s.row += 1
-    s.text("Yellow cells are inputs; blue cells are formulas on the defined names (column G). "
-           "'govopt value' is govopt's result when the workbook was written; 'rel. difference' "
-           "compares the two, so it shows how far an edited design has moved.")
+    s.text("Yellow cells are inputs, in the units beside them (mm, N/mm, MPa, rpm, deg); blue "
+           "cells are formulas. The formulas work in SI on the defined names (column "
+           f"{get_column_letter(_NAME)}): each is the SI cell of column "
+           f"{get_column_letter(_SI)}, converted from the input or shown in column "
+           f"{get_column_letter(_VALUE)} in the unit beside it. 'govopt value' is govopt's result "
+           "when the workbook was written; 'rel. difference' compares the two, so it shows how "
+           "far an edited design has moved.")
     s.text("The characteristic table, k^2 and dynamics on the other sheets are govopt values "
            "and do not follow edits here; re-run govopt for them.")
-    _widths(ws, {1: 44, 2: 12, _VALUE: 18, 4: 10, _GOVOPT: 18, _RELDIFF: 12, _NAME: 24,
-                 _NOTE: 70})
+    for first, end in zip(s.titles, [*s.titles[1:], s.row + 1], strict=True):
+        _keep_table(ws, first, end - 2)  # printed: a section whole, or its ends kept
+    _widths(ws, _DESIGN_WIDTHS)
     for (c,) in ws.iter_rows(min_row=2, min_col=_NOTE, max_col=_NOTE):
-        if isinstance(c.value, str) and len(c.value) > 70:
+        if isinstance(c.value, str) and len(c.value) > 60:
             c.alignment = _WRAP  # the page's width ends here: a long source wraps
 
 
@@ -481,18 +513,16 @@ def _seam_meanings(q: str, mass: str) -> dict[str, tuple[str, str]]:
     generalised force's, N m or N), for the Design sheet's labels: ``omega^2 = (kappa (A - B
     l0) + cf + m cf_m + M cf_c) / (lv + m lv_m + M lv_c)``, ``F = kappa (A_F - B_F l0)``."""
     return {
-        "A": ("spring's generalised force per unit stiffness", f"{q}/(N/m)"),
-        "B": ("spring's generalised force per unit stiffness and free length", f"{q}/N"),
-        "A_F": ("spring force per unit stiffness", "m"),
-        "B_F": ("spring force per unit stiffness and free length", ""),
-        "cf": ("dead loads' generalised force without the masses", q),
-        "cf_m": (f"dead loads' generalised force per kg of {mass}", f"{q}/kg"),
-        "cf_c": ("dead loads' generalised force per kg of central load", f"{q}/kg"),
-        "lv": ("centrifugal generalised force per omega^2 without the masses", f"{q}*s^2"),
-        "lv_m": (f"centrifugal generalised force per omega^2 and kg of {mass}",
-                 f"{q}*s^2/kg"),
-        "lv_c": ("centrifugal generalised force per omega^2 and kg of central load",
-                 f"{q}*s^2/kg"),
+        "A": ("spring's pull per N/m of rate", f"{q}/(N/m)"),
+        "B": ("spring's pull per N/m of rate and m of free length", f"{q}/N"),
+        "A_F": ("spring's stretch term (force per N/m of rate)", "m"),
+        "B_F": ("spring's free-length factor (a pure number)", ""),
+        "cf": ("dead loads' pull without the weights (links, valve gear)", q),
+        "cf_m": (f"dead loads' pull per kg of {mass}", f"{q}/kg"),
+        "cf_c": ("dead loads' pull per kg of central load", f"{q}/kg"),
+        "lv": ("centrifugal pull per omega^2 without the weights", f"{q}*s^2"),
+        "lv_m": (f"centrifugal pull per omega^2 and kg of {mass}", f"{q}*s^2/kg"),
+        "lv_c": ("centrifugal pull per omega^2 and kg of central load", f"{q}*s^2/kg"),
     }
 
 
@@ -502,7 +532,8 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
     gov, sp, mat, st = spec.governor, spec.speed, spec.material, res.statics
     mk = gov.mass_key
     helical = bool(props)
-    s.section("Inputs (yellow, SI units): edit them and the formulas below follow")
+    s.section("Inputs (yellow, in the units beside them): edit them and the formulas below "
+              "follow")
     s.input(f"{mk}_weight", f"{mk} weight (each)", "w", sd.m * G_STANDARD, "N",
             f"design.{mk}_weight (or mass x standard gravity)")
     s.input("std_gravity", "standard gravity", "g_n", G_STANDARD, "m/s^2",
@@ -535,12 +566,22 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
               "generalised forces per unit of the masses)")
     q = "N*m" if gov.coordinate == "angle" else "N"  # the generalised force's unit
     meaning = _seam_meanings(q, mk)
+    s.text("omega^2 = (kappa (A - B l0) + cf + m cf_m + M cf_c) / (lv + m lv_m + M lv_c) and "
+           "F = kappa (A_F - B_F l0): the equilibrium by virtual work, split by what it is "
+           "linear in (the spring's rate kappa and free length l0, the weights' masses m and "
+           "M); 'pull' is the generalised force along the coordinate "
+           f"({'N m about the angle' if gov.coordinate == 'angle' else 'N along the length'})."
+           " These constants depend on the linkage alone; govopt wrote them at the inner (_i) "
+           "and outer (_a) end of the range.")
+    spring_terms = ("A", "B", "A_F", "B_F")
     for tag, i, sym in ends:
         for key, value in _seam_constants(res, st.alpha[i]).items():
+            if gov.spring is None and key in spring_terms:
+                continue  # no spring: its terms are zero and no formula reads them
             what, unit = meaning[key]
-            s.input(f"{key.lower()}_{tag}", f"{what} at {gov.coordinate_name}_{sym} ({key})",
-                    f"{key}_{sym}", value, unit, "govopt.analysis.statics.terms (the seam)",
-                    "0.0000E+00")  # constants of any size: none shows as 0.000000
+            s.input(f"{key.lower()}_{tag}", f"{what}, {tag} end", f"{key}_{sym}", value, unit,
+                    "govopt.analysis.statics.terms (the seam)",
+                    _sig_format(value * SHOWN.get(unit, (unit, 1.0))[1]))
     s.section("Derived quantities (blue, live formulas) next to govopt's values as written")
     s.formula(f"{mk}_mass", f"{mk} mass", "m", f"={mk}_weight/std_gravity", "kg", sd.m,
               "m = w / g_n")
@@ -580,176 +621,67 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
 
 
 def _build_characteristic(ws: Worksheet, res: Result) -> None:
-    st, gov = res.statics, res.spec.governor
-    xs, xu = gov.shown(st.alpha)  # the configuration as people read it (deg or mm), and SI
-    si = "rad" if gov.coordinate == "angle" else "m"
-    cols: list[tuple[str, Any, str]] = [
-        (f"{gov.coordinate_name} ({xu})", xs, xu),
-        (f"{gov.coordinate_name} ({si})", st.alpha, si),
-        ("omega (rad/s)", st.omega, "rad/s"),
-        ("speed (rpm)", st.omega * 30.0 / math.pi, "rpm"),
-        ("M_z (N m)", st.M_z, "N*m"),
-        ("M_f (N m)", st.M_f, "N*m"),
-        ("M_r0 (N m)", st.M_r0, "N*m"),
-        ("spring force F (N)", st.spring_force, "N"),
-        ("shear stress tau (Pa)", st.stress, "Pa"),
-        *((f"{name} ({unit})", values, unit) for name, (values, unit) in st.extra.items()),
+    """The characteristic in the units people read (deg or mm, rpm, MPa; omega in rad/s, the
+    paper's), and its chart under it with the spec's required speed band: printed, the chart
+    shares its page with the table's last rows (:func:`_paginate`), never alone under a
+    repeated header."""
+    st, gov, spec = res.statics, res.spec.governor, res.spec
+    xs, xu = gov.shown(st.alpha)  # the configuration as people read it (deg or mm)
+    q = "N*m" if gov.coordinate == "angle" else "N"  # the generalised force's unit
+    raw: list[tuple[str, Any, str]] = [
+        ("omega", st.omega, "rad/s/"),  # rad/s as the paper writes it (rpm beside it)
+        ("speed", st.omega, "rad/s"),
+        *((name, v, q) for name, v in zip(gov.force_names, (st.M_z, st.M_f, st.M_r0),
+                                          strict=True)),
     ]
+    if gov.spring is not None:
+        raw.append(("spring force F", st.spring_force, "N"))
+        if np.isfinite(st.stress).any():  # a spring given by its rate alone has no stress
+            raw.append(("shear stress tau", st.stress, "Pa"))
+    raw += [(name, values, unit) for name, (values, unit) in st.extra.items()]
     if res.k2 is not None:
-        cols.append(("k^2 (rad^2/s^2)", res.k2, "rad^2/s^2"))
+        raw.append(("k^2", res.k2, "rad^2/s^2"))
+    cols = [(f"{gov.coordinate_name} ({xu})", np.asarray(xs, dtype=float), xu)]
+    for name, values, unit in raw:
+        if unit == "rad/s/":
+            cols.append((f"{name} (rad/s)", np.asarray(values, dtype=float), "rad/s"))
+            continue
+        shown, factor = SHOWN.get(unit, (unit, 1.0))
+        cols.append((f"{name} ({_unit_label(shown)})", np.asarray(values, dtype=float) * factor,
+                     shown))
     _header(ws, 1, [c[0] for c in cols])
     ws.freeze_panes = "B2"
     n = len(st.alpha)
     for j, (_, values, unit) in enumerate(cols, start=1):
         for i in range(n):
             _set(ws.cell(i + 2, j), values[i], _fmt(unit))
-    chart = _scatter("Characteristic (Hamabe eq. 12): equilibrium speed",
-                     f"configuration: {gov.coordinate_name} ({xu})", "speed (rpm)",
-                     width=28.0, height=13.0)  # a page of its own: as wide as the table
-    _add_series(chart, ws, 1, 4, 1, n + 1)
-    chart.legend = None  # one curve: the axis titles name it
-    chart.x_axis.scaling.min, chart.x_axis.scaling.max = _axis_range(xs)
-    ws.add_chart(chart, f"B{n + 4}")  # below the table: the page's width is the table's
-    ws.row_breaks.append(Break(id=n + 2))  # printed: the table, then the chart on its own page
     _widths(ws, {j: 13 for j in range(1, len(cols) + 1)})
-
-
-# --------------------------------------------------------------------------------------------
-# generic writers for the open-ended dicts (dynamics, optimisation)
-
-
-def _as_list(value: Any) -> list | None:
-    """``value`` as a list when it is a sequence or array (not text or a mapping)."""
-    if _is_scalar(value) or isinstance(value, Mapping):
-        return None
-    try:
-        return list(value)
-    except TypeError:
-        return None
-
-
-def _roots(value: Any) -> Any:
-    """Roots given as ``[re, im]`` pairs become complex numbers (written as ``a+bj`` text)."""
-    items = _as_list(value)
-    if items is None:
-        return value
-    out = []
-    for x in items:
-        pair = _as_list(x)
-        if pair is not None and len(pair) == 2 and all(
-                isinstance(p, int | float | np.integer | np.floating) for p in pair):
-            x = complex(float(pair[0]), float(pair[1]))
-        out.append(x)
-    return out
-
-
-def _records_table(ws: Worksheet, row: int, records: list, col: int = 1) -> tuple[int, list]:
-    """A list of records (dicts) as a table, one row each; fields holding a dict or a list of
-    non-scalars are returned as ``(index, key, value)`` for separate writing."""
-    records = [{k: _roots(v) if "root" in str(k) else v for k, v in r.items()}
-               if isinstance(r, Mapping) else {"value": r} for r in records]
-    keys: list[str] = []
-    nested: list[tuple[int, str, Any]] = []
-    for k, rec in enumerate(records):
-        for key, v in rec.items():
-            items = _as_list(v)
-            if isinstance(v, Mapping) or (items is not None
-                                          and not all(_is_scalar(x) for x in items)):
-                nested.append((k, str(key), v))
-            elif str(key) not in keys:
-                keys.append(str(key))
-    _header(ws, row, ["#", *keys], col)
-    for k, rec in enumerate(records):
-        row += 1
-        _set(ws.cell(row, col), k + 1)
-        by_name = {str(key): v for key, v in rec.items()}
-        for j, key in enumerate(keys, start=1):
-            v = by_name.get(key)
-            items = _as_list(v)
-            if v is None or isinstance(v, Mapping) or (
-                    items is not None and not all(_is_scalar(x) for x in items)):
-                continue
-            _set(ws.cell(row, col + j), v if items is None else _text_of(items), _GENERAL_FORMAT)
-    return row + 2, nested
-
-
-def _columns_table(ws: Worksheet, row: int, data: Mapping, col: int = 1) -> tuple[int, int]:
-    """A dict of equal-length lists as columns; returns (header row, last data row)."""
-    keys = list(data)
-    _header(ws, row, [str(k) for k in keys], col)
-    columns = [_as_list(data[k]) or [] for k in keys]
-    for j, values in enumerate(columns):
-        for i, v in enumerate(values):
-            _set(ws.cell(row + 1 + i, col + j), v, _GENERAL_FORMAT)
-    return row, row + max(len(c) for c in columns)
-
-
-def _is_column_dict(value: Any) -> bool:
-    """A dict of lists of scalars, each longer than one (a response table, say)."""
-    if not isinstance(value, Mapping) or not value:
-        return False
-    columns = [_as_list(v) for v in value.values()]
-    return all(c is not None and len(c) > 1 and all(_is_scalar(x) for x in c) for c in columns)
-
-
-def _columns_chart(ws: Worksheet, data: Mapping, head: int, last: int, col: int,
-                   title: str) -> int:
-    """A chart of columns 2.. against column 1 of a column table; returns the last row the
-    chart covers."""
-    keys = [str(k) for k in data]
-    if len(keys) < 2:
-        return last
-    chart = _scatter(title, keys[0], ", ".join(keys[1:]))
-    for j in range(col + 1, col + len(keys)):
-        _add_series(chart, ws, col, j, head, last)
-    ws.add_chart(chart, f"{get_column_letter(col + len(keys) + 1)}{head}")
-    return max(last, head + 19)
-
-
-def _nested(ws: Worksheet, row: int, name: str, value: Any, col: int) -> int:
-    """A field of a record that did not fit in its table row: a dict or a list of records."""
-    if isinstance(value, Mapping) and not _is_column_dict(value):
-        return _dump(ws, row, value, col) + 1
-    items = _as_list(value)
-    if items is not None and not all(_is_scalar(x) for x in items):
-        return _records_table(ws, row, items, col)[0]
-    return _dump(ws, row, {name: value}, col) + 1
-
-
-def _dump(ws: Worksheet, row: int, data: Mapping, col: int = 1) -> int:
-    """Any nested dict: scalars as ``key | value`` rows, lists of records as tables, dicts of
-    lists as column tables (charted when the key names a response), nested dicts indented.
-    Returns the next free row."""
-    for key, v in data.items():
-        items = _as_list(v)
-        if _is_scalar(v) or (items is None and not isinstance(v, Mapping)):
-            _set(ws.cell(row, col), str(key)).font = _BOLD
-            _set(ws.cell(row, col + 1), v, _GENERAL_FORMAT)
-            row += 1
-            continue
-        _set(ws.cell(row, col), str(key)).font = _BOLD
-        if _is_column_dict(v):
-            head, last = _columns_table(ws, row + 1, v, col)
-            if "response" in str(key):
-                last = _columns_chart(ws, v, head, last, col, str(key))
-            row = last + 2
-        elif isinstance(v, Mapping):
-            row = _dump(ws, row + 1, v, col + 1)
-        elif all(_is_scalar(x) for x in items):
-            if len(items) <= 24:
-                for j, x in enumerate(items, start=1):
-                    _set(ws.cell(row, col + j), x, _GENERAL_FORMAT)
-                row += 1
-            else:
-                for i, x in enumerate(items, start=1):
-                    _set(ws.cell(row + i, col + 1), x, _GENERAL_FORMAT)
-                row += len(items) + 1
-        else:
-            row, nested = _records_table(ws, row + 1, items, col)
-            for k, name, sub in nested:
-                _set(ws.cell(row, col), f"{key} #{k + 1}: {name}").font = _BOLD
-                row = _nested(ws, row + 1, name, sub, col + 1)
-    return row
+    rpm = 3  # the speed column
+    chart = _scatter("Characteristic (equilibrium by virtual work; Hamabe eq. 12): speed "
+                     "against configuration", f"{gov.coordinate_name} ({xu})", "speed (rpm)",
+                     width=24.0, height=11.0)
+    _add_series(chart, ws, 1, rpm, 1, n + 1, colour=0)
+    if spec.speed is not None:  # the required band: two dashed lines, data right of the table
+        col = len(cols) + 2
+        _title(ws, 1, "required band (chart data)", col=col, font=_BOLD)
+        band = ((spec.speed.omega_inner, "required inner speed (rpm)"),
+                (spec.speed.omega_outer, "required outer speed (rpm)"))
+        _set(ws.cell(2, col), f"{gov.coordinate_name} ({xu})")
+        for k, (_, label) in enumerate(band, start=1):
+            _set(ws.cell(2, col + k), label)
+        for i, x in enumerate((float(xs[0]), float(xs[-1])), start=3):
+            _set(ws.cell(i, col), x, _fmt(xu))
+            for k, (w, _) in enumerate(band, start=1):
+                _set(ws.cell(i, col + k), w * 30.0 / math.pi, _fmt("rpm"))
+        for k in (1, 2):
+            _add_series(chart, ws, col, col + k, 2, 4, colour=1, dash=True)
+        ws._govopt_print_cols = len(cols)
+    else:
+        chart.legend = None  # one curve: the axis titles name it
+    chart.x_axis.scaling.min, chart.x_axis.scaling.max = _axis_range(xs)
+    anchor = f"B{n + 3}"
+    ws.add_chart(chart, anchor)  # below the table
+    _keep(ws, max(2, n + 1 - 5), _extent(ws, anchor, 24.0, 11.0)[1])  # with the last rows
 
 
 # --------------------------------------------------------------------------------------------
@@ -790,6 +722,8 @@ def _build_dynamics(ws: Worksheet, res: Result) -> None:
         chart.y_axis.scaling.min = min(0.0, float(np.min(res.k2)))
         chart.x_axis.scaling.min, chart.x_axis.scaling.max = _axis_range(xs)
         ws.add_chart(chart, f"F{head}")
+        _keep_table(ws, row, last)
+        _keep(ws, row, _extent(ws, f"F{head}", 18.0, 9.0)[1])  # the chart beside the table
         row = max(last + 2, head + 20)
     dyn = res.dynamics or {}
     if not dyn:
@@ -820,6 +754,7 @@ def _build_dynamics(ws: Worksheet, res: Result) -> None:
             chart.legend = None  # one curve: the axis titles name it
             anchor = f"{'A' if k % 2 == 0 else 'F'}{row}"
             ws.add_chart(chart, anchor)
+            _keep(ws, row - (k == 0), _extent(ws, anchor, *_CHART_SIZE)[1])
             if k % 2 == 1 or k == len(series) - 1:
                 row = _extent(ws, anchor, *_CHART_SIZE)[1] + 2
             for j in (0, 1):
@@ -862,6 +797,7 @@ def _write_table(ws: Worksheet, row: int, table: sections.Table, col: int = 1) -
     _, last = _write_rows(ws, row + 1, table, col)
     for k, note in enumerate(table.notes, start=1):
         _set(ws.cell(last + k, col), note).font = _ITALIC
+    _keep_table(ws, row, last + len(table.notes))
     return last + len(table.notes) + 2
 
 
@@ -949,6 +885,7 @@ def _build_checks(ws: Worksheet, res: Result) -> None:
         _set(ws.cell(row, 10), c.source).alignment = _WRAP
         row += 1
     last = row - 1
+    _keep_table(ws, 1, last + 4)  # with the binding and failed lines under it
     if res.checks:
         green = FormulaRule(formula=["$G2=\"PASS\""], fill=_PASS_FILL, font=_PASS_FONT)
         red = FormulaRule(formula=["$G2=\"FAIL\""], fill=_FAIL_FILL, font=_FAIL_FONT)
@@ -1047,20 +984,23 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
     """The spring maker's sheet, the material at the wire diameter, the static and fatigue
     loads, the tolerance spread of the governed speed range, and the spring engineering checks
     with value, limit, margin and source (govopt values; no formulas)."""
-    from ..analysis.spring_engineering import is_engineering_check
-
     _title(ws, 1, "Spring: specification for the spring maker and spring engineering")
     ws.freeze_panes = "A2"
     rep = res.spring_report
     if rep is None:
         _set(ws.cell(3, 1), "No wire spring in this design (a dead-weight governor, a leaf, or "
              "a spring given by its stiffness only).").font = _ITALIC
+        ws.column_dimensions["A"].width = 90  # printed: the title and the line whole
         return
     _header(ws, 2, ["quantity", "value", "unit"])
     row = 3
+    tops = []  # the top-level sections' title rows: printed whole where they fit on a page
     for label, value, unit in _flat_rows(rep.to_dict()):
         if value is _SECTION:
             _title(ws, row, label, font=_BOLD)
+            _keep(ws, row, row + 3)
+            if not label.startswith(" "):
+                tops.append(row)
         else:  # engineering units, each number with its display format
             value, unit, fmt = engineering(value, unit)
             _set(ws.cell(row, 1), label)
@@ -1068,9 +1008,11 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
             ws.cell(row, 2).alignment = _LEFT_WRAP
             _set(ws.cell(row, 3), "" if value is None else unit)
         row += 1
+    for first, end in zip(tops, [*tops[1:], row], strict=True):
+        _keep_table(ws, first, end - 1)
     row += 1
     graded = res.spec.material.grade is not None
-    rows = [c for c in res.checks if graded and is_engineering_check(c.name)]
+    rows = [c for c in res.checks if graded and c.group == "spring"]
     _title(ws, row, "Spring engineering checks" + ("" if rows else ": none (they need a "
                                                     "material.grade)"), font=_BOLD)
     row += 1
@@ -1087,6 +1029,7 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
                               (6, c.margin, "0.00%"), (7, "PASS" if c.passed else "FAIL", None),
                               (8, c.source, None)):
                 _set(ws.cell(row, col), v, f)
+    _keep_table(ws, row - len(rows) - 1 - bool(rows), row)
     _widths(ws, {1: 40, 2: 40, 3: 14, 4: 18, 5: 10, 6: 11, 7: 9, 8: 80})
 
 
@@ -1097,7 +1040,7 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
 _CHART_SIZE = (18.0, 9.0)
 #: Check units the Checks sheet shows as people read them (a live stress is the Design sheet's
 #: name in Pa times 1E-6: MPa).
-SHOWN_IN_CHECKS = ("rad", "m", "rad/s/rad", "rad/s/m", "Pa")
+SHOWN_IN_CHECKS = tuple(SHOWN)  # every unit a person reads otherwise: rpm, mm, MPa, deg
 #: Printable width of an A4 page in portrait, in screen pixels (96 per inch, 1.5 cm margins).
 _PORTRAIT_PX = 680
 
@@ -1117,9 +1060,19 @@ def _extent(ws: Worksheet, anchor: str, width_cm: float, height_cm: float) -> tu
         col += 1
     px = height_cm / 2.54 * 96
     while px > 0:
-        px -= (ws.row_dimensions[row].height or 15) * 96 / 72
+        px -= (ws.row_dimensions[row].height or _ROW_PT) * 96 / 72
         row += 1
     return col - 1, row - 1
+
+
+def _align_top(ws: Worksheet) -> None:
+    """Every cell aligned at the top of its row: a label beside a wrapped text (a long source,
+    a note) reads as that text's row, not the next one's."""
+    for c in _written(ws):
+        if c.alignment.vertical is None:
+            a = c.alignment
+            c.alignment = Alignment(horizontal=a.horizontal, vertical="top",
+                                    wrap_text=a.wrap_text, indent=a.indent)
 
 
 def _fit_rows(ws: Worksheet) -> None:
@@ -1127,8 +1080,10 @@ def _fit_rows(ws: Worksheet) -> None:
     does not fit rows on opening would draw wrapped lines over the next row. Lines are
     estimated from the column's width (about 1.1 characters of text per width unit)."""
     need: dict[int, int] = {}
+    merged = {r.start_cell.coordinate for r in ws.merged_cells.ranges}  # sized where merged
     for c in _written(ws):
-        if not (isinstance(c.value, str) and c.alignment.wrap_text) or c.data_type == "f":
+        if not (isinstance(c.value, str) and c.alignment.wrap_text) or c.data_type == "f" \
+                or c.coordinate in merged:
             continue
         per_line = max(1.0, 1.1 * (ws.column_dimensions[c.column_letter].width or 8.43) - 1)
         lines = sum(max(1, math.ceil(len(part) / per_line)) for part in c.value.split("\n"))
@@ -1168,6 +1123,69 @@ def _print_setup(ws: Worksheet) -> None:
     ws.print_title_rows = "1:1"
     ws.print_area = f"A1:{get_column_letter(cols)}{rows}"
     ws.oddFooter.center.text = "&A, page &P of &N"
+    page_w, page_h = _PAGE_PX[ws.page_setup.orientation]
+    _paginate(ws, rows, page_h / min(1.0, page_w / max(_SPREADSHEET_WIDTH * width, 1)))
+
+
+#: The printable width and height of an A4 page (px at 96 dpi) inside the margins of
+#: :func:`_print_setup` (0.5 in left and right, 0.6 in top and bottom), by orientation.
+_PAGE_PX = {"portrait": (21.0 / 2.54 * 96 - 96, 29.7 / 2.54 * 96 - 115.2),
+            "landscape": (29.7 / 2.54 * 96 - 96, 21.0 / 2.54 * 96 - 115.2)}
+#: The share of a page's height :func:`_paginate` fills (room for the renderer's rounding).
+_PAGE_FILL = 0.96
+#: A row's height where none is set (pt), and the printed width of the columns against
+#: :func:`_px`'s, as LibreOffice lays out the sheets (measured on its PDF: a default row 12.75
+#: pt, columns about 1.1 times Excel's 7 px per character).
+_ROW_PT, _SPREADSHEET_WIDTH = 12.75, 1.1
+
+
+def _keep(ws: Worksheet, first: int, last: int) -> None:
+    """Rows ``first`` .. ``last`` print on one page where they fit on one (a table's title with
+    its header and first rows, a table's last rows with the chart under it)."""
+    if not hasattr(ws, "_govopt_keep"):
+        ws._govopt_keep = []
+    ws._govopt_keep.append((first, last))
+
+
+def _keep_table(ws: Worksheet, title: int, last: int, rows: int = 3) -> None:
+    """A table from its title row to ``last``: whole on a page where it fits on one; else its
+    title and header never end a page and its last ``rows`` rows never start one alone."""
+    if last - title <= 30:
+        _keep(ws, title, last)
+    else:
+        _keep(ws, title, title + 1 + rows)
+        _keep(ws, last - rows, last)
+
+
+def _paginate(ws: Worksheet, last: int, height: float) -> None:
+    """Manual page breaks so that no kept block (:func:`_keep`) is split where it fits on a
+    page: rows are laid out by their heights on pages ``height`` px tall (the page's height at
+    the print scale), the repeated first row on every page after the first."""
+    keep = sorted(getattr(ws, "_govopt_keep", []))
+    if not keep:
+        return
+
+    def px(r: int) -> float:
+        return (ws.row_dimensions[r].height or _ROW_PT) * 96 / 72
+
+    room = height * _PAGE_FILL
+    title = px(1)
+    used, start = 0.0, 1
+    r = 1
+    while r <= last:
+        h = px(r)
+        if used + h <= room or r == start:
+            used += h
+            r += 1
+            continue
+        # row r starts a new page: move the break up to the start of a block it would split
+        brk = r
+        for first, end in keep:
+            if first < brk <= end and first > start and \
+                    sum(px(k) for k in range(first, end + 1)) + title <= room:
+                brk = first
+        ws.row_breaks.append(Break(id=brk - 1))
+        start, r, used = brk, brk, title
 
 
 _CELL = re.compile(rb'<c r="([A-Z]+[0-9]+)"([^>]*)><f>(.*?)</f><v\s*/>\s*</c>', re.S)
@@ -1271,10 +1289,13 @@ def _build_notes(ws: Worksheet, res: Result) -> None:
         *SOURCES,
         ("", None),
         ("Workbook", None),
-        ("units", "SI throughout (m, kg, s, N, Pa, rad) unless a header says otherwise."),
-        ("Design sheet", "Yellow input cells carry workbook names (wire_diameter, coil_radius, "
-                         "turns, free_half_length, pendulum_weight, ...); blue cells are live "
-                         "formulas on them, each beside govopt's own value."),
+        ("units", "Engineering units where a person reads (mm, N/mm, MPa, rpm, deg), each "
+                  "column or row with its unit; the Design sheet's formulas work in SI (m, "
+                  "kg, s, N, Pa, rad) on its defined names, the SI cells at its right."),
+        ("Design sheet", "Yellow input cells, in the units beside them, feed the workbook "
+                         "names (wire_diameter, coil_radius, turns, free_half_length, "
+                         "pendulum_weight, ...: the SI cells converting them); blue cells are "
+                         "live formulas on the names, each shown beside govopt's own value."),
         ("not live", "Characteristic, k^2, dynamics and checks other than stress and "
                      "irregularity are govopt's values when the workbook was written."),
         ("cached values", "Every formula cell also stores govopt's value as its cached "
@@ -1285,15 +1306,20 @@ def _build_notes(ws: Worksheet, res: Result) -> None:
                   "decided' for a settling time beyond what the solver's time grid resolves; "
                   "'unbounded' for an unstable excursion; a blank cell is not defined."),
         ("printing", "Each sheet prints to the page width (landscape where wide) with its "
-                     "first row repeated; response data beside the Dynamics charts are not "
-                     "printed."),
+                     "first row repeated; page breaks keep a table with its title and header, "
+                     "its last rows, and a chart with its rows; response data beside the "
+                     "Dynamics charts are not printed."),
     ]
     _title(ws, 1, f"govopt {res.kind}: {spec.name}")
     ws.freeze_panes = "A2"
+    titles = []
     for i, (key, value) in enumerate(rows, start=3):
         c = _set(ws.cell(i, 1), key)
         if value is None and key:
             c.font = _BOLD
+            titles.append(i)
         if value is not None:
             _set(ws.cell(i, 2), value, "General").alignment = _WRAP
+    for first, end in zip(titles, [*titles[1:], len(rows) + 4], strict=True):
+        _keep_table(ws, first, end - 2)  # printed: a section whole where it fits
     _widths(ws, {1: 28, 2: 110})

@@ -28,21 +28,18 @@ on the right-hand axis. The plots, each named by its *kind*:
 
 matplotlib is imported only when a plot is drawn (``govopt --help`` never loads it); figures are
 :class:`matplotlib.figure.Figure` objects on the Agg canvas, so no GUI backend or pyplot state is
-touched. Files go through :func:`govopt.report.files.atomic_write` and its no-clobber policy.
+touched. :mod:`govopt.report.plot_files` writes them to files (through
+:func:`govopt.report.files.atomic_write` and its no-clobber policy); this module only draws, so
+:meth:`govopt.result.Result.plot` imports it without importing the evaluator back.
 """
 
 from __future__ import annotations
 
 import math
-import os
-import re
-from pathlib import Path
 
 import numpy as np
 
-from ..errors import GovoptError
 from ..units import SI_UNITS
-from .files import atomic_write, check_output, output_folder
 
 FORMATS = ("png", "svg")
 #: inches and dots per inch of a single plot: 1050 x 675 px, text readable at 100 % zoom
@@ -512,55 +509,3 @@ def plot(res, kind: str | None = None, ax=None):
                              "draw on ax")
         return overview(res)
     return draw(res, kind, ax)
-
-
-def _stem(res) -> str:
-    path = getattr(res.spec, "path", None)
-    return Path(path).stem if path else re.sub(r"[^\w.-]+", "-", res.spec.name)
-
-
-def _pattern(stem: str):
-    names = "|".join(re.escape(k) for k in KINDS if k != "load-change")
-    exts = "|".join(FORMATS)
-    return re.compile(rf"{re.escape(stem)}-(?:{names}|load-change-\d+)\.(?:{exts})")
-
-
-def check_plot_dir(directory: str | Path, stem: str, *, overwrite: bool = False,
-                   inputs=(), others=()) -> Path:
-    """Before a run (the CLI's ``--plots DIR``): the folder exists (it is made if only its parent
-    does), can be written, and holds no plot ``<stem>-<kind>.png|svg`` unless ``overwrite``
-    (only regular files are ever replaced); no other output of the run (``others``) has a plot's
-    name in it. Raises :class:`GovoptError` with one line."""
-    directory = Path(directory)
-    pattern = _pattern(stem)
-    for other in map(Path, others):
-        if pattern.fullmatch(other.name) and os.path.realpath(other.parent) == os.path.realpath(
-                directory):
-            raise GovoptError(f"{other}: cannot write it: it is also a plot of this run")
-    directory = output_folder(directory, "plots")
-    check_output(directory / f"{stem}-characteristic.png", overwrite=overwrite, inputs=inputs,
-                 what="plot")
-    for entry in sorted(directory.iterdir()):
-        if pattern.fullmatch(entry.name):
-            check_output(entry, overwrite=overwrite, inputs=inputs, what="plot")
-    return directory
-
-
-def write_plots(res, directory: str | Path, *, stem: str | None = None,
-                overwrite: bool | None = None, formats=FORMATS) -> list[Path]:
-    """Write every plot of ``res`` as ``<directory>/<stem>-<kind>.<format>`` (stem: the spec
-    file's name) through :func:`atomic_write` (``overwrite``: its policy); return the paths."""
-    import matplotlib as mpl
-
-    stem = stem or _stem(res)
-    written = []
-    for name in kinds(res):
-        fig = draw(res, name).figure
-        for fmt in formats:
-            def save(tmp, fmt=fmt, fig=fig):
-                with mpl.rc_context(STYLE):  # the same file for the same result (no date)
-                    fig.savefig(tmp, format=fmt, metadata={"Date": None} if fmt == "svg" else {})
-
-            path = Path(directory) / f"{stem}-{name}.{fmt}"
-            written.append(atomic_write(path, save, overwrite=overwrite, what="plot"))
-    return written

@@ -27,64 +27,10 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["SHOWN", "Chart", "Table", "cell", "dynamics", "key_unit", "optimisation", "restoring",
-           "shown", "unflag"]
+from ..verdict import SHOWN, json_key, shown
 
-#: How an SI unit is shown in reports: SI unit -> (shown unit, factor to multiply by).
-SHOWN: dict[str, tuple[str, float]] = {
-    "rad": ("deg", 180.0 / math.pi),
-    "m": ("mm", 1e3),
-    "Pa": ("MPa", 1e-6),
-    "rad/s/rad": ("rad/s per deg", math.pi / 180.0),
-    "rad/s/m": ("rad/s per mm", 1e-3),
-    "rad^2/s^2": ("1/s^2", 1.0),
-    "N*m": ("N m", 1.0),
-    "kg*m^2": ("kg m^2", 1.0),
-}
-
-#: The SI unit a JSON key names by its suffix (govopt's rule: every key's unit in its name),
-#: longest first so ``_N_m`` wins over ``_m``.
-_SUFFIXES = (
-    ("_N_m_s_per_rad", "N m s/rad"), ("_N_s_per_m", "N s/m"), ("_rad2_s2", "rad^2/s^2"),
-    ("_N_per_m", "N/m"), ("_kg_m2", "kg*m^2"), ("_rad_s", "rad/s"), ("_per_s", "1/s"),
-    ("_N_m", "N*m"), ("_Pa", "Pa"), ("_kg", "kg"), ("_Hz", "Hz"), ("_rad", "rad"),
-    ("_deg", "deg"), ("_J", "J"), ("_N", "N"), ("_m", "m"), ("_s", "s"), ("_percent", "%"),
-)
-
-
-def key_unit(key: str) -> tuple[str, str]:
-    """``(label, SI unit)`` of a JSON key by govopt's naming rule (the unit is the key's
-    suffix); ``""`` for a dimensionless key.
-
-    >>> key_unit("dashpot_N_m_s_per_rad"), key_unit("wire_diameter_m"), key_unit("active_turns")
-    (('dashpot', 'N m s/rad'), ('wire diameter', 'm'), ('active turns', ''))
-    """
-    for suffix, unit in _SUFFIXES:
-        if key.endswith(suffix) and len(key) > len(suffix):
-            return key[: -len(suffix)].replace("_", " "), unit
-    return key.replace("_", " "), ""
-
-
-def shown(value: Any, unit: str, only: Sequence[str] | None = None) -> tuple[Any, str]:
-    """``(value, unit)`` converted from SI to the unit people read (:data:`SHOWN`); numbers,
-    arrays and lists of numbers are converted, anything else is returned as is. ``only``: the
-    SI units to convert (the rest stay SI).
-
-    >>> shown(0.5, "rad")[1], round(shown(0.5, "rad")[0], 4), shown(2e8, "Pa")
-    ('deg', 28.6479, (200.0, 'MPa'))
-    """
-    if unit not in SHOWN or (only is not None and unit not in only):
-        return value, unit
-    new, factor = SHOWN[unit]
-    if isinstance(value, bool) or value is None:
-        return value, new
-    if isinstance(value, list | tuple):
-        return [shown(v, unit)[0] for v in value], new
-    try:
-        return value * factor, new
-    except TypeError:
-        return value, new
-
+__all__ = ["SHOWN", "Chart", "Table", "cell", "dynamics", "optimisation", "recorded_units",
+           "restoring", "shown", "unflag"]
 
 def cell(value: Any, inf: str = "unbounded") -> Any:
     """A value as a table shows it: a finite number (float or int), a word, or None (blank).
@@ -184,7 +130,8 @@ def load_changes(res) -> list[Table]:
         value = lc.get(key)
         if value is None:
             return None
-        return value if key.endswith("_deg") else shown(value, si)[0]
+        # json_coordinate writes an angle in degrees already, a length in SI (m)
+        return value if gov.coordinate == "angle" else shown(value, si)[0]
 
     def get(lc, key, default=None):
         return lc.get(key, default) if isinstance(lc, Mapping) else default
@@ -418,14 +365,15 @@ def dynamics(res) -> list[Table]:
 
 
 def _recorded(title: str, data: Mapping) -> Table:
-    """Keys no table declares, each with its unit from its name and its value as JSON text."""
+    """Keys no table declares, each as recorded (its key, which names its unit, as the label)
+    with its value as JSON text."""
     import json
 
     from ..jsonable import jsonable
 
     rows = []
     for key, value in data.items():
-        label, unit = key_unit(str(key))
+        label, unit = str(key).replace("_", " "), ""
         v = jsonable(value) if not callable(getattr(value, "to_dict", None)) else value.to_dict()
         try:
             text = v if isinstance(v, int | float | str) else json.dumps(jsonable(v))
@@ -446,14 +394,39 @@ _SEARCH = {"springs": "springs on the catalogue grid", "masses": "flying masses 
            "dynamics_checked": "dynamics checked (best first)"}
 
 
-def _quantities(data: Mapping, skip: Sequence[str] = ()) -> list[list[Any]]:
-    """``[label, shown unit, value]`` rows of a record whose keys name their units."""
+def recorded_units(res) -> dict[str, tuple[str, str]]:
+    """The optimiser's records (``optimisation["design"]``, the continuous bound, a robust
+    design's tolerances, nut, valve and cost): JSON key -> (label, SI unit), declared here once.
+    Each key is made from its label and unit (:func:`govopt.verdict.json_key`, the rule the
+    records follow), never the unit read back from a key."""
+    gov = res.spec.governor
+    damping = "N*m*s/rad" if gov.coordinate == "angle" else "N*s/m"
+    objective = ((res.optimisation or {}).get("objective") or {}).get("unit", "")
+    declared = [
+        (f"{gov.mass_key} weight", "N"), (f"{gov.mass_key} mass", "kg"), ("central mass", "kg"),
+        ("wire diameter", "m"), ("coil radius", "m"), ("active turns", ""),
+        (gov.free_length_key.replace("_", " "), "m"), ("free half length", "m"),
+        ("dashpot", damping), ("dashpot feasible range", damping),
+        ("dashpot margin to lower end", "%"), ("dashpot margin to upper end", "%"),
+        ("spring mass", "kg"), ("stiffness", "N/m"), ("shear stress", "Pa"),
+        ("range", "m"), ("needed range", "m"), ("nominal setting", "m"),
+        ("range", damping), ("needed range", damping), ("nominal setting", damping),
+        ("nominal objective", objective), ("robust objective", objective), ("increase", "%")]
+    return {json_key(name, unit): (name, unit) for name, unit in declared}
+
+
+def _quantities(res, data: Mapping, skip: Sequence[str] = ()) -> list[list[Any]]:
+    """``[label, shown unit, value]`` rows of an optimiser's record, each key's label and unit
+    as :func:`recorded_units` declares them (a key it does not declare: as recorded, no
+    unit)."""
+    units = recorded_units(res)
     rows = []
     for key, value in data.items():
         if key in skip or value is None:  # unset (no dash-pot without an engine): no row
             continue
-        label, unit = key_unit(str(key))
+        label, unit = units.get(str(key), (str(key).replace("_", " "), ""))
         v, u = shown(value, unit)
+        u = u.replace("*", " ")  # as people write it: N m s/rad
         if isinstance(v, list | tuple):
             for end, x in zip(("from", "to"), v, strict=False):
                 rows.append([f"{label} {end}", u, cell(x, "no upper end found")])
@@ -487,12 +460,12 @@ def optimisation(res) -> list[Table]:
                  [str(n) for n in opt.get("notes") or []], properties=True)]
     if opt.get("design"):
         out.append(Table("Chosen design", ["quantity", "unit", "value"],
-                         _quantities(opt["design"]), properties=True))
+                         _quantities(res, opt["design"]), properties=True))
     if bound:
         out.append(Table("Continuous bound's design (not buildable: a lower bound)",
                          ["quantity", "unit", "value"],
-                         _quantities(bound, skip=(f"objective_{unit}",)), properties=True))
-    out += robustness(opt.get("robust"))
+                         _quantities(res, bound, skip=(f"objective_{unit}",)), properties=True))
+    out += robustness(res, opt.get("robust"))
     sens = [s for s in opt.get("sensitivities") or [] if isinstance(s, Mapping)]
     if sens:
         out.append(Table("Sensitivities: +1 % on a requirement",
@@ -502,7 +475,7 @@ def optimisation(res) -> list[Table]:
     return out
 
 
-def robustness(rob) -> list[Table]:
+def robustness(res, rob) -> list[Table]:
     """A robust design's record (:mod:`govopt.optimize.robust`): the tolerance box,
     the worst case of each check over its corners beside the nominal value, the adjusting nut,
     the Monte-Carlo verification and what robustness cost."""
@@ -515,11 +488,11 @@ def robustness(rob) -> list[Table]:
              cell(100.0 * (tol.get("masses_fraction") or 0.0))],
             ["engine torque slope +-", "%",
              cell(100.0 * (tol.get("torque_slope_fraction") or 0.0))]]
-    rows += [[f"{r[0]} +-", r[1], r[2]] for r in _quantities(tol.get("half_widths") or {})]
+    rows += [[f"{r[0]} +-", r[1], r[2]] for r in _quantities(res, tol.get("half_widths") or {})]
     for key, label in (("adjusting_nut", "adjusting nut"), ("dashpot_valve", "dash-pot valve")):
         item = rob.get(key)
         if isinstance(item, Mapping):
-            rows += [[f"{label}: {r[0]}", r[1], r[2]] for r in _quantities(item)]
+            rows += [[f"{label}: {r[0]}", r[1], r[2]] for r in _quantities(res, item)]
         else:
             rows.append([label, "", "not adjusted by the fitter"])
     rows.append(["corners of the box evaluated", "", cell(rob.get("corners"))])
@@ -539,12 +512,8 @@ def robustness(rob) -> list[Table]:
                  ["  95 % Wilson interval", "%", f"{100.0 * lo:.4g} .. {100.0 * hi:.4g}"]]
         rows += [[f"  samples failing '{name}'", "", cell(count)]
                  for name, count in (mc.get("failing_checks") or {}).items()]
-    cost = rob.get("cost") or {}
-    for key, value in cost.items():
-        if isinstance(value, int | float):
-            label, unit = key_unit(key)
-            v, u = shown(value, unit)
-            rows.append([f"robustness cost: {label}", u, cell(v)])
+    cost = {k: v for k, v in (rob.get("cost") or {}).items() if isinstance(v, int | float)}
+    rows += [[f"robustness cost: {r[0]}", r[1], r[2]] for r in _quantities(res, cost)]
     notes = [str(n) for n in tol.get("notes") or []]
     out = [Table("Robust design: the tolerance box", ["quantity", "unit", "value"],
                  rows, notes, properties=True)]

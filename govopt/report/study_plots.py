@@ -23,7 +23,7 @@ import numpy as np
 import pandas as pd
 
 from ..errors import GovoptError
-from ..result import ACTIVE_TOL
+from ..verdict import ACTIVE_TOL
 from .files import atomic_write
 
 FORMATS = ("png", "svg")

@@ -18,13 +18,16 @@ import os
 import shutil
 import sys
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..limits import printable
-from ..result import ACTIVE_TOL, Check, Result
-from ..units import G_STANDARD, to_unit
+from ..verdict import ACTIVE_TOL, Check
 from . import sections as sec
+
+if TYPE_CHECKING:  # the result imports this module (Result.summary): no import back
+    from ..result import Result
 
 RPM = 30.0 / math.pi
 
@@ -293,70 +296,25 @@ def _summary_section(out: TextReport, res: Result, every_check: bool = False) ->
             out.line(f"  - {note}")
 
 
+def figure_text(value, unit: str) -> tuple[str, str]:
+    """A figure's value and unit as the reports show them (:func:`govopt.verdict.shown`: mm,
+    MPa, N/mm, rpm, deg), 5 significant digits: ``("139.4", "rpm")``; a word as it is."""
+    v, u = sec.shown(value, unit)
+    if isinstance(v, str):
+        return v, u.replace("*", " ") or "-"
+    return _num(v), u.replace("*", " ") or "-"
+
+
 def _summary(res: Result) -> list[list[str]]:
-    """Rows ``[quantity, value, unit, note]`` of the design's figures."""
-    st, sd, sp, spec = res.statics, res.spring, res.spring_properties, res.spec
-    gov = spec.governor
-    wi, wa = float(st.omega[0]), float(st.omega[-1])
+    """Rows ``[quantity, value, unit, note]`` of the design's figures
+    (:meth:`~govopt.result.Result.figures`), each in the unit a person reads."""
     rows = []
-    opt = res.optimisation or {}
-    if opt.get("objective"):
-        obj = opt["objective"]
-        unit = obj.get("unit", "")
-        value, shown_unit = sec.shown(obj.get(f"value_{unit}") if unit else obj.get("value"),
-                                      unit)
-        gap = opt.get("gap")
-        rows.append([f"objective: {str(obj.get('name', '')).replace('_', ' ')}", _num(value),
-                     shown_unit or "-", f"status {opt.get('status')}" + (
-                         "" if gap is None else f"; {100 * gap:.3g} % above the continuous "
-                                                "bound")])
-    if spec.speed is not None:
-        rows.append(["irregularity", f"{res.irregularity:.5f}", "-",
-                     f"required <= {spec.speed.irregularity:g}; (omega_a - omega_i) / omega0, "
-                     f"omega0 = {spec.speed.omega_mean * RPM:.2f} rpm the mean speed (Hamabe "
-                     "Part I)"])
-    rows.append(["speed range", f"{wi * RPM:.2f} .. {wa * RPM:.2f}", "rpm",
-                 f"{wi:.4f} .. {wa:.4f} rad/s"])
-    inertia = "kg m^2" if gov.coordinate == "angle" else "kg"
-    rows.append([f"{gov.mass_name} mass", f"{sd.m:.4g}", "kg",
-                 f"weight {sd.m * G_STANDARD:.4g} N "
-                 f"({to_unit(sd.m * G_STANDARD, 'force', 'kgf'):.4g} kgf); "
-                 f"inertia I = {sd.inertia:.5g} {inertia}"])
-    if sd.central:
-        rows.append(["central load", f"{sd.central:.4g}", "kg",
-                     f"weight {sd.central * G_STANDARD:.4g} N "
-                     f"({to_unit(sd.central * G_STANDARD, 'force', 'kgf'):.4g} kgf)"])
-    if gov.spring is not None:
-        rows += [["spring stiffness", f"{sd.kappa / 1e3:.5g}", "N/mm", f"{gov.spring} spring"],
-                 [gov.free_length_key.replace("_", " "), _num(sd.l0 * 1e3, ".5g"), "mm", "l0"]]
-    if sp:
-        rows += [["wire diameter", f"{sd.d * 1e3:.4g}", "mm", "d"],
-                 ["mean coil radius", f"{sd.r * 1e3:.4g}", "mm", "r"],
-                 ["active turns", f"{sd.n:g}", "-", "n"],
-                 ["spring index", f"{sp['spring_index']:.3f}", "-", "C = 2 r / d"],
-                 ["Wahl factor", f"{sp['wahl_factor']:.4f}", "-", "K (Wahl 1944)"],
-                 ["spring mass", f"{sp['mass_kg']:.4g}", "kg", "active coils"],
-                 ["surge frequency", f"{sp['surge_frequency_Hz']:.4g}", "Hz", "Wahl 1944"]]
-        allowable = res.allowable_shear_stress
-        rows.append(["max shear stress", f"{res.max_stress / 1e6:.2f}", "MPa",
-                     "" if allowable is None else f"allowable {allowable / 1e6:.2f} MPa"])
-    cm = res.classic
-    if cm:
-        effort_unit = str(cm.get("effort_unit", "N*m")).replace("*", " ")
-        rows += [["range (classic)", f"{cm['range_rpm']:.4g}", "rpm", ""],
-                 ["sensitiveness", f"{cm['sensitiveness']:.4g}", "-",
-                  "range / mean of its ends (textbook 3.2)"],
-                 ["stability", str(cm["stability"]), "-", "the characteristic's slope"],
-                 ["effort", f"{cm['effort']:.4g}", effort_unit,
-                  f"for a {100 * cm['effort_change']:g} % speed change at the normal "
-                  "configuration"],
-                 ["power", f"{cm['power']:.4g}", "J",
-                  f"for a {100 * cm['effort_change']:g} % speed change"]]
-        if cm["friction_band"]:
-            rows += [["friction band", f"{cm['friction_band']:.4g}",
-                      "N m" if gov.coordinate == "angle" else "N", "generalised force"],
-                     ["coefficient of insensitiveness", f"{cm['insensitiveness']:.4g}", "-",
-                      ""]]
+    for f in res.figures():
+        value, unit = figure_text(f.value, f.unit)
+        note = "; ".join(x for x in (f.note, f.source) if x)
+        if f.symbol and f.symbol not in note:
+            note = f"{f.symbol}" + (f"; {note}" if note else "")
+        rows.append([f.name, value, unit, note])
     return rows
 
 
@@ -445,8 +403,6 @@ def format_spring(res: Result) -> list[str]:
     """The spring maker's sheet, the spring's loads, fatigue and tolerance spread, and the
     sources of the spring engineering checks (the checks themselves are rows of the
     Checks table, shown once); nothing without a wire spring."""
-    from ..analysis.spring_engineering import is_engineering_check
-
     rep = res.spring_report
     if rep is None:
         return []
@@ -459,8 +415,7 @@ def format_spring(res: Result) -> list[str]:
     if fat is None:
         out.append("  fatigue             no periodic forcing modelled: fatigue not checked")
     else:
-        key = next(k for k in fat if k.startswith("peak_to_peak"))
-        swing, unit = gov.shown(fat[key])
+        swing, unit = gov.shown(fat[f"peak_to_peak_{gov.key_unit('x')}"])  # in x's SI unit
         out.append(f"  fatigue load cycle  swing {float(swing):.4g} {unit} peak-to-peak at the "
                    f"normal configuration ({fat['forcing']})")
         if "force_min_N" in fat:
@@ -482,8 +437,35 @@ def format_spring(res: Result) -> list[str]:
                f"{rpm[0]} rpm, at the outer end {rpm[1]} rpm")
     out += [f"  note: {n}" for n in [*sp["notes"], *d["notes"]]]
     graded = res.spec.material is not None and res.spec.material.grade is not None
-    rows = [c for c in res.checks if graded and is_engineering_check(c.name)]
+    rows = [c for c in res.checks if graded and c.group == "spring"]
     if rows:  # their values, limits and margins are the Checks table's rows
         out += ["", "Spring engineering checks: sources (values and margins under Checks)"]
         out += [f"  {c.name}: {c.source}" for c in rows]
     return out
+
+
+def format_html(res: Result) -> str:
+    """The answer as HTML for a notebook (``Result._repr_html_``): the verdict, the design's
+    figures and every check, each number in the unit a person reads (the same rows as
+    :func:`format_summary`'s, from the checks' and figures' fields)."""
+    from html import escape
+
+    def table(headers, rows, styles=None):
+        head = "".join(f"<th>{escape(h)}</th>" for h in headers)
+        body = "".join(
+            f"<tr{'' if not styles or not styles[i] else f' style={chr(34)}{styles[i]}{chr(34)}'}>"
+            + "".join(f"<td>{escape(str(c))}</td>" for c in r) + "</tr>"
+            for i, r in enumerate(rows))
+        return f"<table><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+
+    line = verdict(res)
+    colour = {"red bold": "color:#9c0006", "yellow": "color:#9c6500",
+              "green": "color:#006100"}
+    rows, styles = _check_rows(res.checks, res)
+    return (f"<div><p><b>govopt {escape(res.kind)}: {escape(str(res.spec.name))}</b> "
+            f"[{escape(res.spec.governor.title)}]</p>"
+            f"<p style=\"{'color:#006100' if line.startswith('PASS') else 'color:#9c0006'}\">"
+            f"<b>{escape(line)}</b></p><p><b>Design</b></p>"
+            + table(["quantity", "value", "unit", "note"], _summary(res))
+            + "<p><b>Checks</b></p>"
+            + table(_CHECK_HEADERS, rows, [colour.get(s, "") for s in styles]) + "</div>")

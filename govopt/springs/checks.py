@@ -2,7 +2,7 @@
 
 Each :class:`Row` is ``value(kw) sense limit(kw)`` with a source; the same rows evaluate over
 numpy arrays (an optimiser's screen: :func:`evaluate`) and, for one design, become
-:class:`govopt.result.Check` objects with value, limit, margin and source (:func:`checks`).
+:class:`govopt.verdict.Check` objects with value, limit, margin and source (:func:`checks`).
 
 Keywords (SI): ``mat`` (:class:`~govopt.springs.materials.Material`), ``d``, ``D`` (m), ``n``
 (active coils; for an extension spring the *body* coils ``n_body``), ``F1 <= F2`` the least and
@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..verdict import Check
 from . import fatigue as fat
 from . import helical as hx
 from .materials import allowable_static_stress, static_rule
@@ -275,13 +276,11 @@ def feasible(kind: str, only=None, **kw) -> np.ndarray:
 
 def checks(kind: str, only=None, **kw):
     """The ``kind`` table (or the rows named in ``only``) for one design as
-    :class:`govopt.result.Check` objects.
+    :class:`govopt.verdict.Check` objects.
 
     Arrays (e.g. forces over the governor's range) are reduced to the worst case: the largest
     value of a ``<=`` row, the smallest of a ``>=`` row (with its own limit).
     """
-    from ..result import Check  # the result type; imported here to keep physics import-light
-
     kw = prepare(kind, **kw)
     out = []
     for r in _rows(kind, kw, only):
@@ -291,5 +290,5 @@ def checks(kind: str, only=None, **kw):
         i = int(np.argmin(np.where(np.isnan(slack), -np.inf, slack))) if slack.size else 0
         source = r.source(kw) if callable(r.source) else r.source
         out.append(Check(r.name, float(value.flat[i]), float(limit.flat[i]), r.sense, r.unit,
-                         source))
+                         source, group="spring"))
     return out

@@ -57,6 +57,8 @@ from importlib import resources
 
 import numpy as np
 
+from ..verdict import Check
+
 #: end fixity -> ``c`` in ``kappa = c E I / L^3`` (Roark Table 8.1 cases 1a, 1e; article eq. 5)
 ENDS = {"hinged": 48.0, "clamped": 192.0}
 #: the chord-bow relations: the article's eq. 8, the circular arc, the exact elastica
@@ -285,14 +287,12 @@ CONSTRAINTS = (
 
 
 def checks(**kw):
-    """The constraint table evaluated: a list of :class:`govopt.result.Check` (keywords as in
+    """The constraint table evaluated: a list of :class:`govopt.verdict.Check` (keywords as in
     :data:`CONSTRAINTS`).
 
     >>> [c.passed for c in checks(F=1.0, x=0.01, w=0.02, t=0.001, L=0.2, span=0.2,
     ...                           ends="hinged", allowable=1e9)]
     [True, True, True]
     """
-    from ..result import Check
-
     return [Check(c.name, float(np.max(c.value(**kw))), float(c.limit(**kw)), c.sense, c.unit,
                   c.source) for c in CONSTRAINTS]

@@ -154,7 +154,8 @@ class ShaftGovernor(Governor):
         spec, sd, ds, props = res.spec, res.spring, res.design, res.spring_properties
         g, sp, mat, an = self, spec.speed, spec.material, spec.analysis
         st = res.statics
-        s.section("Inputs (yellow, SI units): edit them and the formulas below follow")
+        s.section("Inputs (yellow, in the units beside them): edit them and the formulas below "
+                  "follow")
         s.input("wire_diameter", "wire diameter", "d", sd.d, "m", "design.wire_diameter")
         s.input("coil_radius", "mean coil radius", "r", sd.r, "m", "design.coil_radius")
         s.input("turns", "active turns", "n", sd.n, "", "design.active_turns")
