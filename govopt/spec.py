@@ -340,6 +340,11 @@ class Analysis:
     #: the spec has data for, at the settings above
     use_case: str | None = None
     tolerance: float = 1e-6
+    #: the speed change ``c`` of the classic effort and power (Rattan: "a given percentage change
+    #: of speed"), a fraction, or ``"range"``: the governor's own, from its lowest to its highest
+    #: speed (the textbook's problems: a Porter's effort over its range, a Hartnell's over its
+    #: lift)
+    speed_change: float | str = 0.01
 
 
 #: ISO 3 R20 preferred numbers, 1 mm to 25 mm: the default catalogue of wire diameters (m).
@@ -794,6 +799,10 @@ def _analysis(an: _Reader | None) -> Analysis:
         settling_band=an.number("settling_band", required=False, default=0.02, high=1.0),
         use_case=an.choice("use_case", tuple(USE_CASES), None),
         tolerance=an.number("tolerance", required=False, default=1e-6, high=1.0),
+        speed_change=an.choice("speed_change", ("range",), "range")
+        if isinstance(an.table.get("speed_change"), str) else
+        an.number("speed_change", required=False, default=0.01, high=1.0,
+                  range_text="(0, 1) (a fraction of the speed, e.g. 0.01), or \"range\""),
     )
     an.finish()
     return out

@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from ..examples import SPECS
-from .common import FORCE_HELP, JSON_HELP, ChecksFailed, Command, echo, fail, guarded
+from .common import FORCE_HELP, JSON_HELP, ChecksFailed, Command, echo, fail, guarded, option
 
 DEFAULT_EVALUATE = SPECS / "hamabe-a.toml"
 DEFAULT_DESIGN = SPECS / "hamabe-design.toml"
@@ -36,6 +36,11 @@ Section = Annotated[list[str] | None, typer.Option(
     "--section", metavar="<str>",
     help="Print these sections of the report (repeat, or comma-separated): summary, "
          "characteristic, design, dynamics, vibration, optimisation, checks, spring.")]
+Change = Annotated[str | None, option(
+    "--speed-change", help="The speed change of the effort and power: a fraction c (e.g. 0.01) "
+    "at the normal configuration, or 'range': the governor's own, from its lowest to its "
+    "highest speed (default: the spec's [analysis] speed_change, else 0.01).")]
+
 evaluate_app = typer.Typer(add_completion=False)
 design_app = typer.Typer(add_completion=False)
 
@@ -56,12 +61,15 @@ def evaluate(spec: Spec = None,
                  help="Linkage geometry: 'exact' (default) or 'series' (the paper's eq. 3).")]
              = None,
              json_out: Json = False, xlsx: Xlsx = None, force: Force = False,
-             plots: Plots = None, full: Full = False, section: Section = None) -> None:
+             plots: Plots = None, full: Full = False, section: Section = None,
+             speed_change: Change = None) -> None:
     from ..evaluation import evaluate as run
 
     if geometry is not None and geometry not in ("exact", "series"):
         fail(f"--geometry: expected 'exact' or 'series', got {geometry!r}")
-    run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, geometry=geometry)), json_out,
+    change = _speed_change(speed_change)
+    run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, geometry=geometry,
+                                     speed_change=change)), json_out,
                    spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots,
                    sections=_sections(full, section))
 
@@ -73,12 +81,28 @@ def design(spec: Spec = None, json_out: Json = False,
                "-o", "--output", metavar="<path>", help="Write the design as a spec file.")]
            = None,
            xlsx: Xlsx = None, force: Force = False, plots: Plots = None, full: Full = False,
-           section: Section = None) -> None:
+           section: Section = None, speed_change: Change = None) -> None:
     from ..optimize.design import design as run
 
-    run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN)), json_out, spec or DEFAULT_DESIGN,
+    change = _speed_change(speed_change)
+    run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN, speed_change=change)), json_out,
+                   spec or DEFAULT_DESIGN,
                    xlsx=xlsx, output=output, force=force, plots=plots,
                    sections=_sections(full, section))
+
+
+def _speed_change(text: str | None) -> float | str | None:
+    """``--speed-change``: 'range' or a fraction in (0, 1)."""
+    if text is None or text.strip() == "range":
+        return None if text is None else "range"
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not 0.0 < value < 1.0:
+        fail(f"--speed-change: expected a fraction of the speed in (0, 1), e.g. 0.01, or "
+             f"'range', got {text!r}")
+    return value
 
 
 def _sections(full: bool, section: list[str] | None) -> list[str] | None:

@@ -257,6 +257,34 @@ def verdict(res: Result) -> str:
             + "; ".join(f"{check_name(c, res)} ({margin_words(c)})" for c in failed))
 
 
+def _effort_basis(cm) -> str:
+    """What the effort and power are for: the spec's speed change, or the range's own."""
+    change = f"{100 * cm['effort_change']:.4g} %"
+    if cm.get("effort_over") == "range":
+        return f"over the range: a {change} speed change, innermost to outermost"
+    return f"for a {change} speed change at the normal configuration"
+
+
+#: the type's geometry shown in the Design table (the key of the classic measures' geometry,
+#: its label, the scale to the unit shown and that unit)
+_GEOMETRY = {"height_m": ("height h", 1e3, "mm"), "k": ("arm ratio k", 1.0, "-"),
+             "sleeve_lift_m": ("sleeve lift", 1e3, "mm"),
+             "spring_arm_h_m": ("spring arm h", 1e3, "mm")}
+
+
+def _geometry_rows(geometry: dict) -> list[list[str]]:
+    """Rows of the type's geometry (height h, arm ratio k = tan(beta)/tan(alpha), sleeve lift,
+    the shaft's spring arm h) at the innermost, normal and outermost configurations."""
+    rows = []
+    for key, (label, scale, unit) in _GEOMETRY.items():
+        if key in geometry:
+            v = geometry[key]
+            rows.append([label, f"{v['normal'] * scale:.4g}", unit,
+                         f"normal; {v['inner'] * scale:.4g} .. {v['outer'] * scale:.4g} "
+                         "innermost .. outermost"])
+    return rows
+
+
 def _warnings(res: Result) -> list[str]:
     """The notes a reader should not miss: the optimiser's and the spring sheet's."""
     notes = [str(n) for n in (res.optimisation or {}).get("notes") or []]
@@ -347,11 +375,9 @@ def _summary(res: Result) -> list[list[str]]:
                  ["sensitiveness", f"{cm['sensitiveness']:.4g}", "-",
                   "range / mean of its ends (textbook 3.2)"],
                  ["stability", str(cm["stability"]), "-", "the characteristic's slope"],
-                 ["effort", f"{cm['effort']:.4g}", effort_unit,
-                  f"for a {100 * cm['effort_change']:g} % speed change at the normal "
-                  "configuration"],
-                 ["power", f"{cm['power']:.4g}", "J",
-                  f"for a {100 * cm['effort_change']:g} % speed change"]]
+                 ["effort", f"{cm['effort']:.4g}", effort_unit, _effort_basis(cm)],
+                 ["power", f"{cm['power']:.4g}", "J", _effort_basis(cm)]]
+        rows += _geometry_rows(cm.get("geometry") or {})
         if cm["friction_band"]:
             rows += [["friction band", f"{cm['friction_band']:.4g}",
                       "N m" if gov.coordinate == "angle" else "N", "generalised force"],
