@@ -198,6 +198,12 @@ class Result:
                                for c in ("stable", "resonance risk", "unstable")}
         if self.spring_report is not None:
             out["spring_sheet"] = self.spring_report.to_dict()
+        found = getattr(spec, "band_spring", None)
+        if found:  # the spec gave no spring: the one that floats the governor in its band
+            out["band_spring"] = {"stiffness_N_per_m": found["stiffness"],
+                                  "free_length_m": found["free_length"],
+                                  "force_inner_N": found["force_inner"],
+                                  "force_outer_N": found["force_outer"]}
         out.update(self.dynamics)
         out.update(self.optimisation)
         return jsonable(out)
