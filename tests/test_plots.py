@@ -251,6 +251,29 @@ def test_fatigue_diagram_reads_the_checks_safety_factor(tmp_path, rules):
     assert any(f"{want:.3g}" in t.get_text() for t in ax.get_legend().get_texts())
 
 
+def test_fatigue_diagram_draws_the_hooks_at_their_checks_safety_factors(tmp_path):
+    """An extension spring's hooks (issue 23: the binding hook A was only in the legend): the
+    inset's load lines meet the Goodman line (x + y = 1 in the hooks' normalised coordinates)
+    at each hook check's safety factor times its cycle, and the governing hook is red."""
+    res = evaluate(load_spec(_graded(tmp_path, "hamabe-d")))
+    hooks = res.spring_report.loads["fatigue"]["hooks"]
+    assert hooks["criterion"] == "goodman"
+    ax = plots.draw(res, "fatigue")
+    (inset,) = ax.child_axes
+    marks = {tuple(np.round(line.get_xydata()[0], 12)): line.get_color()
+             for line in inset.get_lines() if line.get_marker() == "x"}
+    assert len(marks) == 2
+    checks = {p: res.check(f"hook {p} fatigue safety factor") for p in "AB"}
+    governs = min(checks.values(), key=lambda c: c.margin)
+    for point, check in checks.items():
+        h = hooks[point]
+        x, y = h["midrange_Pa"] / h["ultimate_Pa"], h["amplitude_Pa"] / h["endurance_Pa"]
+        assert check.value * (x + y) == pytest.approx(1.0, rel=1e-9)  # on the Goodman line
+        mark = (round(check.value * x, 12), round(check.value * y, 12))
+        assert mark in marks, (point, marks)
+        assert (marks[mark] == "tab:red") == (check is governs)
+
+
 # ---------------------------------------------------------------------------- API and CLI
 
 
