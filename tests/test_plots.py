@@ -402,10 +402,14 @@ def test_bench_plot_draws_an_exact_error_on_its_own_line_and_joins_near_labels(t
     ax = Figure().add_subplot()
     ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.set_xlim(0.03, 0.06)
     bench.label_points(ax, [(0.0410, 5e-3, "grids x2"), (0.0385, 5e-3, "grids x4"),
                             (0.0552, 1e-4, "full catalogue")])
     texts = sorted(t.get_text() for t in ax.texts)
     assert texts == ["full catalogue", "grids x2, x4"]
+    # a label at the right edge is written to the left of its point, inside the axes
+    align = {t.get_text(): t.get_horizontalalignment() for t in ax.texts}
+    assert align == {"full catalogue": "right", "grids x2, x4": "left"}
     points = [bench.Point("optimiser", "exhaustive", s, t, e) for s, t, e in (
         ("full", 0.055, 0.0), ("grids x2", 0.041, 5e-3), ("grids x4", 0.0385, 5e-3))]
     bench.plot(points, tmp_path / "p.png")
