@@ -426,3 +426,15 @@ def test_a_rounding_that_breaks_a_check_is_not_written(monkeypatch):
     assert note.startswith("design written at full precision") and "evaluate" in note
     broken = note.split("fails ", 1)[1]
     assert re.search(r"\((over|short) by [\d.,]+ %\)", broken), note
+
+
+def test_shell_completion_completes_commands_and_options(tmp_path):
+    """typer's shell completion (issue 23): the commands, and a command's options, which it
+    builds on demand like any other use of that command."""
+    env = {**os.environ, "_GOVOPT_COMPLETE": "complete_bash", "COMP_WORDS": "govopt ev",
+           "COMP_CWORD": "1"}
+    run = _govopt(cwd=tmp_path, env=env)
+    assert run.returncode == 0 and run.stdout.split() == ["evaluate"], run.stderr
+    env.update(COMP_WORDS="govopt evaluate --ge", COMP_CWORD="2")
+    run = _govopt(cwd=tmp_path, env=env)
+    assert run.returncode == 0 and run.stdout.split() == ["--geometry"], run.stderr
