@@ -18,7 +18,7 @@ import pytest
 from clirun import invoke
 
 import govopt
-from govopt.cli import COMMANDS, command
+from govopt import cli
 from govopt.examples import SPECS, examples
 from govopt.report.files import READ_BACK_ULPS, design_toml
 from govopt.units import G_STANDARD, UnitError, parse_quantity
@@ -118,8 +118,8 @@ def test_readme_documents_the_exit_codes():
 
 def _commands():
     """Every command of the CLI, as the words that name it (``("study", "run")``)."""
-    for name in COMMANDS:
-        built = command(name)
+    for name in cli.COMMANDS:
+        built = cli.command(name)
         subcommands = getattr(built, "commands", {})
         yield from ((name, sub) for sub in subcommands) if subcommands else [(name,)]
 
