@@ -144,6 +144,11 @@ class Analysis:
     #: the spec has data for, at the settings above
     use_case: str | None = None
     tolerance: float = 1e-6
+    #: the speed change ``c`` of the classic effort and power (Rattan: "a given percentage change
+    #: of speed"), a fraction, or ``"range"``: the governor's own, from its lowest to its highest
+    #: speed (the textbook's problems: a Porter's effort over its range, a Hartnell's over its
+    #: lift)
+    speed_change: float | str = 0.01
 
 
 #: ISO 3 R20 preferred numbers, 1 mm to 25 mm: the default catalogue of wire diameters (m).
@@ -223,6 +228,11 @@ class Spec:
     #: the TOML as read (keys as in the file), for :meth:`with_values`; set by :func:`parse_spec`
     data: dict | None = field(default=None, repr=False, compare=False)
     spring_form: SpringForm = field(default_factory=SpringForm)
+    #: where ``[design]`` gives no spring and ``[speed]`` a band: the spring that makes the
+    #: governor float between the band's speeds (:func:`govopt.spec.band_spring`), SI:
+    #: ``stiffness``, ``free_length`` (the type's form), ``force_inner`` and ``force_outer`` (N);
+    #: else None
+    band_spring: dict | None = field(default=None, compare=False)
 
     def with_analysis(self, **changes) -> Spec:
         """The same spec with some fidelity settings changed."""

@@ -28,6 +28,12 @@ from .verdict import ACTIVE_TOL, Check, Figure, shown
 
 __all__ = ["ACTIVE_TOL", "Check", "Figure", "Result"]
 
+#: the type's geometry among the design's figures (the key of the classic measures' geometry:
+#: its label and SI unit): a Porter's height and arm ratio k = tan(beta)/tan(alpha), a ball
+#: governor's sleeve lift, the shaft governor's spring arm h
+GEOMETRY = {"height_m": ("height h", "m"), "k": ("arm ratio k", ""),
+            "sleeve_lift_m": ("sleeve lift", "m"), "spring_arm_h_m": ("spring arm h", "m")}
+
 @dataclass
 class Result:
     """Everything govopt knows about one design (SI)."""
@@ -145,7 +151,10 @@ class Result:
                 out.append(Figure("allowable shear stress", allowable, "Pa", "spring"))
         cm = self.classic
         if cm:
-            change = f"for a {100 * cm['effort_change']:g} % speed change"
+            pct = f"{100 * cm['effort_change']:.4g} %"
+            change = (f"over the range: a {pct} speed change, innermost to outermost"
+                      if cm.get("effort_over") == "range" else
+                      f"for a {pct} speed change at the normal configuration")
             out += [Figure("range (classic)", cm["range_rad_s"], "rad/s", "classic",
                            json="range_rad_s"),
                     Figure("sensitiveness", cm["sensitiveness"], "", "classic",
@@ -153,9 +162,16 @@ class Result:
                     Figure("stability", str(cm["stability"]), "", "classic",
                            note="the characteristic's slope"),
                     Figure("effort", cm["effort"], str(cm.get("effort_unit", "N*m")), "classic",
-                           note=f"{change} at the normal configuration"),
+                           note=change),
                     Figure("power", cm["power"], str(cm.get("power_unit", "J")), "classic",
                            note=change)]
+            for key, (label, unit) in GEOMETRY.items():  # the type's own geometry
+                g = (cm.get("geometry") or {}).get(key)
+                if g:
+                    (lo, u), (hi, _) = shown(g["inner"], unit), shown(g["outer"], unit)
+                    out.append(Figure(label, g["normal"], unit, "classic",
+                                      note=f"normal; {lo:.4g} .. {hi:.4g} {u or '-'} "
+                                           "innermost .. outermost"))
             if cm["friction_band"]:
                 out += [Figure("friction band", cm["friction_band"],
                                "N*m" if gov.coordinate == "angle" else "N", "classic",
@@ -300,6 +316,12 @@ class Result:
                                for c in ("stable", "resonance risk", "unstable")}
         if self.spring_report is not None:
             out["spring_sheet"] = self.spring_report.to_dict()
+        found = getattr(spec, "band_spring", None)
+        if found:  # the spec gave no spring: the one that floats the governor in its band
+            out["band_spring"] = {"stiffness_N_per_m": found["stiffness"],
+                                  "free_length_m": found["free_length"],
+                                  "force_inner_N": found["force_inner"],
+                                  "force_outer_N": found["force_outer"]}
         out.update(self.dynamics)
         out.update(self.optimisation)
         return jsonable(out)

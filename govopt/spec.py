@@ -383,7 +383,8 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
         )
         mat.finish()
 
-    design = _design(top.sub("design", required=False), governor, material)
+    design = _design(top.sub("design", required=False), governor, material,
+                     band=speed is not None and speed.band)
     eng = top.sub("engine", required=False)
     engine = None
     if eng is not None:
@@ -428,9 +429,41 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
     form = _spring_form(top.sub("spring", required=False))
     top.raw("study", False)  # a trade study's own table (govopt.study reads it)
     top.finish()
-    return Spec(file, name, gtype, governor, speed, material, design, engine,
+    spec = Spec(file, name, gtype, governor, speed, material, design, engine,
                 tuple(load_changes), analysis, requirements, tuple(entries), data=data,
                 spring_form=form)
+    if design is not None and governor.spring is not None and design.spring_stiffness is None \
+            and design.wire_diameter is None and design.leaf_width is None:
+        spec = band_spring(spec)
+    return spec
+
+
+def band_spring(spec: Spec) -> Spec:
+    """The spec with the spring that makes its governor float between the band's two speeds:
+    at the innermost configuration in equilibrium at ``speed.inner`` and at the outermost at
+    ``speed.outer`` (the textbook's question, ch. 3, Examples 4 and 8: "find the initial load
+    on the sleeve and the spring's stiffness"; Hamabe, Example 1, ``kappa = (F_a - F_i) /
+    (2 (l_a - l_i))``): two linear equations in ``kappa`` and ``kappa l0``
+    (:func:`govopt.analysis.statics.required_spring`). Friction is not in them: with a friction
+    band the governor's own band is wider than the spec's by it. Raises :class:`SpecError`
+    where no spring does it (a rate or free length that is not positive and finite)."""
+    from .analysis import statics
+
+    ds = spec.design
+    kappa, l0, f_inner, f_outer = (float(v) for v in statics.required_spring(
+        spec, ds.pendulum_mass, ds.central_mass or 0.0))
+    key = f"{spec.path}: design"
+    if not (math.isfinite(kappa) and kappa > 0.0):
+        raise SpecError(f"{key}: no spring given, and none makes this governor float between "
+                        f"speed.inner and speed.outer: the rate that would is {kappa:.4g} N/m "
+                        "(give spring_stiffness, or a wire with [material])")
+    if not math.isfinite(l0) or (spec.governor.free_length_positive and l0 <= 0.0):
+        raise SpecError(f"{key}: no spring given, and none makes this governor float between "
+                        f"speed.inner and speed.outer: its free length would be {l0:.4g} m")
+    design = replace(ds, spring_stiffness=kappa, free_half_length=l0)
+    found = {"stiffness": kappa, "free_length": l0, "force_inner": f_inner,
+             "force_outer": f_outer}
+    return replace(spec, design=design, band_spring=found)
 
 
 def _grade(mat: Reader, helical: bool) -> dict | None:
@@ -525,10 +558,12 @@ def _speed(sp: Reader) -> Speed:
     return speed
 
 
-def _design(ds: Reader | None, governor: Governor, material: Material | None) -> Design | None:
+def _design(ds: Reader | None, governor: Governor, material: Material | None,
+            band: bool = False) -> Design | None:
     """``[design]``: the flying mass (``<mass_key>_weight`` or ``_mass``), the central load, the
     spring (``wire_diameter``, ``coil_radius``, ``active_turns`` with ``[material]``, or
-    ``spring_stiffness``; the free length under the type's key), dash-pot and friction."""
+    ``spring_stiffness``; the free length under the type's key), dash-pot and friction. With
+    a speed band (``band``) the spring may be left out: :func:`band_spring` finds it."""
     if ds is None:
         return None
     angular = governor.coordinate == "angle"
@@ -539,7 +574,11 @@ def _design(ds: Reader | None, governor: Governor, material: Material | None) ->
     a1 = ds.quantity("dashpot_a1", damping, required=False, nonnegative=True)
     spring = {}
     kind = governor.spring_kind
-    if kind is not None:
+    spring_keys = () if kind is None else (
+        "spring_stiffness", *(key for key, _ in kind.section), governor.free_length_key)
+    if kind is not None and band and not any(map(ds.has, spring_keys)):
+        pass  # no spring: the one that floats the governor between the band's speeds
+    elif kind is not None:
         if ds.has("spring_stiffness"):
             spring["spring_stiffness"] = ds.quantity("spring_stiffness", "stiffness")
         else:  # the kind's section (a leaf's length is the governor type's)
@@ -587,6 +626,10 @@ def _analysis(an: Reader | None) -> Analysis:
         settling_band=an.number("settling_band", required=False, default=0.02, high=1.0),
         use_case=an.choice("use_case", tuple(USE_CASES), None),
         tolerance=an.number("tolerance", required=False, default=1e-6, high=1.0),
+        speed_change=an.choice("speed_change", ("range",), "range")
+        if isinstance(an.table.get("speed_change"), str) else
+        an.number("speed_change", required=False, default=0.01, high=1.0,
+                  range_text="(0, 1) (a fraction of the speed, e.g. 0.01), or \"range\""),
     )
     an.finish()
     return out

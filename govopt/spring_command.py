@@ -8,7 +8,7 @@ options with underscores (``force = "500 N"``, ``max_outer_diameter = "40 mm"``,
 3``, ``peened = true``). ``problem = "sandgren-1990"`` states Sandgren's mixed-discrete spring
 (:func:`govopt.optimize.spring_literature.solve_sandgren`) with its data as keys.
 
-The problem statements beyond a force and a stiffness (issue 22):
+The problem statements beyond a force and a stiffness:
 
 - installed lengths and working stroke: ``length_2`` (``L2``, the length at ``force``),
   ``length_1`` (``L1`` at ``min_force``) and ``stroke`` (``H = L1 - L2``); two of them, or the

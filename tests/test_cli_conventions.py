@@ -12,14 +12,13 @@ import re
 import subprocess
 import sys
 import tomllib
-from argparse import PARSER
 from pathlib import Path
 
 import pytest
 from clirun import invoke
 
 import govopt
-from govopt.cli import parser
+from govopt import cli
 from govopt.examples import SPECS, examples
 from govopt.report.files import READ_BACK_ULPS, design_toml
 from govopt.units import G_STANDARD, UnitError, parse_quantity
@@ -76,9 +75,9 @@ def test_no_command_prints_the_help():
                            ("spring", "Least-mass helical"), ("bench", "Speed against error"),
                            ("examples", "List the bundled"), ("init", "Copy a bundled"),
                            ("study", "Batch trade studies")):
-        assert re.search(rf"^\s+{command}\s+{re.escape(short)}", run.stdout, re.M), command
+        assert re.search(rf"^[\s│]+{command}\s+{re.escape(short)}", run.stdout, re.M), command
     study = invoke(["study"])
-    assert study.exit_code == 2 and re.search(r"^\s+export\s+Export", study.stdout, re.M)
+    assert study.exit_code == 2 and re.search(r"^[\s│]+export\s+Export", study.stdout, re.M)
 
 
 @pytest.mark.parametrize("args", [
@@ -117,23 +116,21 @@ def test_readme_documents_the_exit_codes():
         assert re.search(rf"^\| {code} \|", errors, re.M), code
 
 
-def _commands(group, prefix=()):
-    """Every command of an argparse parser, as the words that name it (``("study", "run")``)."""
-    for action in group._actions:
-        for name, command in (action.choices.items() if action.nargs == PARSER else ()):
-            if any(a.nargs == PARSER for a in command._actions):
-                yield from _commands(command, (*prefix, name))
-            else:
-                yield (*prefix, name)
+def _commands():
+    """Every command of the CLI, as the words that name it (``("study", "run")``)."""
+    for name in cli.COMMANDS:
+        built = cli.command(name)
+        subcommands = getattr(built, "commands", {})
+        yield from ((name, sub) for sub in subcommands) if subcommands else [(name,)]
 
 
 def test_flags_shown_without_a_type(tmp_path):
     """Flags read `--json  Print ...`, as in git or pip, not `--json <bool>`; options that take
     a value name it (`--xlsx <path>`)."""
     run = _govopt("evaluate", "--help", cwd=tmp_path)
-    assert run.returncode == 0 and re.search(r"^\s+--json\s+Print", run.stdout, re.M)
-    assert "<bool>" not in run.stdout and "--xlsx <path>" in run.stdout
-    commands = list(_commands(parser()))
+    assert run.returncode == 0 and re.search(r"^[\s│]+--json\s+Print", run.stdout, re.M)
+    assert "<bool>" not in run.stdout and re.search(r"--xlsx\s+<path>", run.stdout)
+    commands = list(_commands())
     assert {("evaluate",), ("design",), ("examples",), ("init",), ("study", "run")} <= set(
         commands)
     for command in [(), *commands]:
@@ -430,3 +427,15 @@ def test_a_rounding_that_breaks_a_check_is_not_written(monkeypatch):
     assert note.startswith("design written at full precision") and "evaluate" in note
     broken = note.split("fails ", 1)[1]
     assert re.search(r"\((over|short) by [\d.,]+ %\)", broken), note
+
+
+def test_shell_completion_completes_commands_and_options(tmp_path):
+    """typer's shell completion (issue 23): the commands, and a command's options, which it
+    builds on demand like any other use of that command."""
+    env = {**os.environ, "_GOVOPT_COMPLETE": "complete_bash", "COMP_WORDS": "govopt ev",
+           "COMP_CWORD": "1"}
+    run = _govopt(cwd=tmp_path, env=env)
+    assert run.returncode == 0 and run.stdout.split() == ["evaluate"], run.stderr
+    env.update(COMP_WORDS="govopt evaluate --ge", COMP_CWORD="2")
+    run = _govopt(cwd=tmp_path, env=env)
+    assert run.returncode == 0 and run.stdout.split() == ["--geometry"], run.stderr

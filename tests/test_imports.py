@@ -16,9 +16,10 @@ import sys
 import pytest
 
 HEAVY = ("cvxpy", "scipy", "scipy.optimize", "pint", "numpy")
-#: the command-line frameworks govopt left for argparse (issue 14, target 2: typer built every
-#: option through pydantic, ~0.1 s of CPU before a command ran): no command imports them
-FRAMEWORKS = ("typer", "click", "pydantic")
+#: typer converts options through pydantic (~0.1 s of CPU at every start, issue 14, target 2):
+#: govopt's commands convert their own (govopt/commands/common.py), so none imports pydantic;
+#: typer vendors its click, so the separate click package is not loaded either
+FRAMEWORKS = ("click", "pydantic")
 
 
 def modules_after(*args: str, cwd=None) -> set[str]:
@@ -35,11 +36,25 @@ def modules_after(*args: str, cwd=None) -> set[str]:
 
 
 def test_help_loads_no_numerics():
+    """The root's help lists the commands without importing one (govopt/cli.py: COMMANDS);
+    typer draws it with rich."""
     loaded = modules_after("--help")
-    assert "govopt.cli" in loaded
+    assert "govopt.cli" in loaded and "typer" in loaded and "rich" in loaded
     assert not loaded & set(HEAVY), sorted(loaded & set(HEAVY))
-    unwanted = {*FRAMEWORKS, "openpyxl", "matplotlib", "rich", "pandas"}
+    unwanted = {*FRAMEWORKS, "openpyxl", "matplotlib", "pandas"}
     assert not loaded & unwanted, sorted(loaded & unwanted)
+    assert not {m for m in loaded if m.startswith("govopt.commands.")} - {
+        "govopt.commands.common"}
+
+
+@pytest.mark.parametrize("args", [("evaluate", "--help"), ("spring", "--help"),
+                                  ("study", "run", "--help"), ("bench", "--help"),
+                                  ("init", "--help")])
+def test_command_help_loads_its_module_only(args):
+    loaded = modules_after(*args)
+    assert not loaded & {*HEAVY, *FRAMEWORKS}, sorted(loaded & {*HEAVY, *FRAMEWORKS})
+    modules = {m for m in loaded if m.startswith("govopt.commands.")}
+    assert len(modules - {"govopt.commands.common"}) == 1, sorted(modules)
 
 
 def test_import_govopt_loads_no_numerics():

@@ -251,6 +251,29 @@ def test_fatigue_diagram_reads_the_checks_safety_factor(tmp_path, rules):
     assert any(f"{want:.3g}" in t.get_text() for t in ax.get_legend().get_texts())
 
 
+def test_fatigue_diagram_draws_the_hooks_at_their_checks_safety_factors(tmp_path):
+    """An extension spring's hooks (issue 23: the binding hook A was only in the legend): the
+    inset's load lines meet the Goodman line (x + y = 1 in the hooks' normalised coordinates)
+    at each hook check's safety factor times its cycle, and the governing hook is red."""
+    res = evaluate(load_spec(_graded(tmp_path, "hamabe-d")))
+    hooks = res.spring_report.loads["fatigue"]["hooks"]
+    assert hooks["criterion"] == "goodman"
+    ax = plots.draw(res, "fatigue")
+    (inset,) = ax.child_axes
+    marks = {tuple(np.round(line.get_xydata()[0], 12)): line.get_color()
+             for line in inset.get_lines() if line.get_marker() == "x"}
+    assert len(marks) == 2
+    checks = {p: res.check(f"hook {p} fatigue safety factor") for p in "AB"}
+    governs = min(checks.values(), key=lambda c: c.margin)
+    for point, check in checks.items():
+        h = hooks[point]
+        x, y = h["midrange_Pa"] / h["ultimate_Pa"], h["amplitude_Pa"] / h["endurance_Pa"]
+        assert check.value * (x + y) == pytest.approx(1.0, rel=1e-9)  # on the Goodman line
+        mark = (round(check.value * x, 12), round(check.value * y, 12))
+        assert mark in marks, (point, marks)
+        assert (marks[mark] == "tab:red") == (check is governs)
+
+
 # ---------------------------------------------------------------------------- API and CLI
 
 
@@ -379,10 +402,14 @@ def test_bench_plot_draws_an_exact_error_on_its_own_line_and_joins_near_labels(t
     ax = Figure().add_subplot()
     ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.set_xlim(0.03, 0.06)
     bench.label_points(ax, [(0.0410, 5e-3, "grids x2"), (0.0385, 5e-3, "grids x4"),
                             (0.0552, 1e-4, "full catalogue")])
     texts = sorted(t.get_text() for t in ax.texts)
     assert texts == ["full catalogue", "grids x2, x4"]
+    # a label at the right edge is written to the left of its point, inside the axes
+    align = {t.get_text(): t.get_horizontalalignment() for t in ax.texts}
+    assert align == {"full catalogue": "right", "grids x2, x4": "left"}
     points = [bench.Point("optimiser", "exhaustive", s, t, e) for s, t, e in (
         ("full", 0.055, 0.0), ("grids x2", 0.041, 5e-3), ("grids x4", 0.0385, 5e-3))]
     bench.plot(points, tmp_path / "p.png")

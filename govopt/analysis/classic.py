@@ -20,12 +20,16 @@ All are computed from the characteristic, written once on the seam
   (differentiate the characteristic), so with a positive lever the sign of ``d omega/dx`` is
   the sign of ``k^2``;
 * **effort** (Rattan): the mean force on the regulating member when the speed changes by
-  ``c`` (1 %) with the member held: the generalised force grows from 0 to
+  ``c`` (``[analysis] speed_change``, default 1 %, at the normal configuration; ``"range"``: the
+  governor's own change ``c = omega_a / omega_i - 1`` from the innermost configuration, the
+  textbook's effort over the range or the lift) with the member held: the generalised force
+  grows from 0 to
   ``((1 + c)^2 - 1) omega^2 (jp - ci)``, which each of the ``n`` flying masses puts on the member
   through ``s'(x)``; mean effort ``P = n ((1 + c)^2 - 1) omega^2 (jp - ci) / (2 s')``. For the
   Porter with equal arms this is the book's ``P = c (w + W)`` to first order in ``c``;
 * **power** (Rattan): effort times the member's travel for the same speed change: the
-  configuration ``x'`` in equilibrium at ``(1 + c) omega`` (a root of the characteristic) and
+  configuration ``x'`` in equilibrium at ``(1 + c) omega`` (a root of the characteristic; over
+  the range, the outermost configuration: the whole travel) and
   ``Delta s = int_x^x' s'(u) du`` (Gauss-Legendre, exact to rounding for these smooth
   linkages);
 * **friction band** (textbook 3.4(b), "Friction at the sleeve"; Hamabe eq. 42): the speeds at
@@ -47,7 +51,10 @@ EFFORT_CHANGE = 0.01
 def classic_measures(spec, sd: statics.SpringDesign, char: statics.Characteristic,
                      k2=None, design=None) -> dict:
     """The textbook's measures of one design over its range (SI; see the module docstring);
-    effort and power at the normal configuration."""
+    effort and power at the normal configuration for the spec's speed change (over the range:
+    from the innermost configuration to the outermost); the type's geometry (``h``, the arm
+    ratio ``k``, the sleeve lift ...: :meth:`Governor.columns`) at the ends of the range and
+    the normal configuration."""
     gov, x = spec.governor, char.alpha
     t = statics.terms(spec, x, sd.m, sd.central)
     w2 = char.omega**2
@@ -61,25 +68,55 @@ def classic_measures(spec, sd: statics.SpringDesign, char: statics.Characteristi
     w0 = spec.speed.omega_mean if spec.speed is not None else float(char.omega[i_n])
     stability = str(statics.stability(statics.rising_slopes(spec, sd, x, char.omega),
                                       statics.slope_scale(spec, w0)))
-    grow = (1.0 + EFFORT_CHANGE) ** 2 - 1.0
+    change = getattr(spec.analysis, "speed_change", EFFORT_CHANGE)
+    over_range = change == "range"
+    c = wa / wi - 1.0 if over_range else float(change)
+    at = 0 if over_range else i_n  # the configuration the speed changes from
+    grow = (1.0 + c) ** 2 - 1.0
     slope = gov.travel_slope(x)
     effort = gov.flying_masses * grow * w2 * t.lever / (2.0 * slope)
-    travel = _travel(spec, sd, float(x[i_n]), float(x[-1]), (1.0 + EFFORT_CHANGE) ** 2 * w2[i_n])
+    travel = (_travel_between(spec, float(x[0]), float(x[-1])) if over_range else
+              _travel(spec, sd, float(x[i_n]), float(x[-1]), (1.0 + c) ** 2 * w2[i_n]))
     return {
         "range_rad_s": wa - wi,
         "range_rpm": (wa - wi) * 30.0 / np.pi,
         "sensitiveness": char.sensitiveness,
         "stability": stability,
-        "effort_change": EFFORT_CHANGE,
-        "effort": float(effort[i_n]),
+        "effort_change": c,
+        "effort_over": "range" if over_range else "normal",
+        "effort": float(effort[at]),
         "effort_unit": "N*m" if gov.travel == "angle" else "N",
-        "power": float(effort[i_n] * travel),
+        "power": float(effort[at] * travel),
         "power_unit": "J",
         "friction_band": float(band[i_n]),
         "omega_rise_rad_s": rise.tolist(),
         "omega_fall_rad_s": fall.tolist(),
         "insensitiveness": float(np.max((rise - fall) / char.omega)),
+        "geometry": geometry(spec, x[i_n]),
     }
+
+
+def geometry(spec, x_normal) -> dict:
+    """The type's own geometry (:meth:`Governor.columns`: the Porter's height ``h`` and arm
+    ratio ``k = tan(beta)/tan(alpha)`` (textbook 3.4(b)), a bell-crank governor's sleeve lift,
+    the shaft governor's spring arm ``h`` (Hamabe eq. 2) ...) at the innermost, normal and
+    outermost configurations, SI; each name carries its unit (``height_m``, ``k``)."""
+    gov = spec.governor
+    x = np.array([gov.x_inner, float(x_normal), gov.x_outer])
+    out = {}
+    for name, (values, unit) in gov.columns(x).items():
+        key = name.replace(" ", "_") + (f"_{unit}" if unit else "")
+        values = np.broadcast_to(np.asarray(values, dtype=float), x.shape)
+        out[key] = dict(zip(("inner", "normal", "outer"), map(float, values), strict=True))
+    return out
+
+
+def _travel_between(spec, x0: float, x1: float) -> float:
+    """Travel of the regulating member from ``x0`` to ``x1``: ``int s'(u) du`` (Gauss-Legendre,
+    as :func:`_travel`)."""
+    nodes, weights = np.polynomial.legendre.leggauss(8)
+    u = 0.5 * (x1 - x0) * nodes + 0.5 * (x1 + x0)
+    return float(0.5 * (x1 - x0) * np.sum(weights * spec.governor.travel_slope(u)))
 
 
 def _travel(spec, sd, x0: float, x_end: float, target: float) -> float:
@@ -92,7 +129,4 @@ def _travel(spec, sd, x0: float, x_end: float, target: float) -> float:
 
     if not excess(x_end) > 0:
         return float("inf")
-    x1 = brentq(excess, x0, x_end, xtol=1e-15, rtol=1e-15)
-    nodes, weights = np.polynomial.legendre.leggauss(8)
-    u = 0.5 * (x1 - x0) * nodes + 0.5 * (x1 + x0)
-    return float(0.5 * (x1 - x0) * np.sum(weights * spec.governor.travel_slope(u)))
+    return _travel_between(spec, x0, brentq(excess, x0, x_end, xtol=1e-15, rtol=1e-15))

@@ -301,6 +301,31 @@ class SpringReport:
                 "notes": list(self.notes)}
 
 
+def hook_cycles(mat, d, D, F_lo, F_hi, r2=None, r1=None,
+                criterion: str = ck.DEFAULTS["criterion"]) -> dict:
+    """The fatigue cycle of an extension spring's hooks between the forces ``F_lo`` and
+    ``F_hi`` (N), as the hook checks read it (:mod:`govopt.springs.checks`: Shigley §10-11,
+    hooks taken unpeened; ``r1`` default ``D/2``, ``r2`` default ``2 d``): for point A (bending,
+    Shigley Example 10-7: ``S_e = S_se / 0.577`` with the tensile ``S_ut``) and point B
+    (torsion, ``S_se`` with ``S_su = 0.67 S_ut``) the midrange and amplitude stresses and the
+    line's intercepts (``endurance_Pa`` on the amplitude axis, ``ultimate_Pa`` on the midrange
+    axis), Pa; the safety factor is where the load line through the cycle meets the line."""
+    r1 = D / 2.0 if r1 is None else r1
+    r2 = 2.0 * d if r2 is None else r2
+    Sut = float(mat.tensile_strength(d))
+    Ssu = float(ft.torsional_ultimate(Sut))
+    Ssa, Ssm = ft.ZIMMERLI[False]
+    Sse = float(ft.endurance_intercept(Ssa, Ssm, Ssu, criterion))
+    half, mid = abs(F_hi - F_lo) / 2.0, (F_hi + F_lo) / 2.0
+    return {"criterion": criterion, "source": ft.ZIMMERLI_SOURCE, "A": {
+        "stress": "bending", "midrange_Pa": float(hx.hook_bending_stress(mid, d, D, r1)),
+        "amplitude_Pa": float(hx.hook_bending_stress(half, d, D, r1)),
+        "endurance_Pa": Sse / ft.SHEAR_TO_NORMAL, "ultimate_Pa": Sut}, "B": {
+        "stress": "torsion", "midrange_Pa": float(hx.hook_torsion_stress(mid, d, D, r2)),
+        "amplitude_Pa": float(hx.hook_torsion_stress(half, d, D, r2)),
+        "endurance_Pa": Sse, "ultimate_Pa": Ssu}}
+
+
 def report(spec, sd, char, vib=None) -> SpringReport:
     """The sheet (material, d, D, n, ends or hooks, free length, rate, the loads at the range's
     two ends, tolerance grade, surface), the material's figures at ``d``, the static and
@@ -361,6 +386,8 @@ def report(spec, sd, char, vib=None) -> SpringReport:
             if graded:  # the diagram the body's fatigue check reads (for the plot)
                 fat["diagram"] = ft.body_locus(mat, d, m.rules, m.surface == "shot peened",
                                                ck.DEFAULTS["criterion"])
+                if kind == "extension":  # and the hooks' (the check's own line and cycle)
+                    fat["hooks"] = hook_cycles(mat, d, D, lo, hi, form.hook_bend_radius)
         loads["fatigue"] = fat
         if not graded:
             notes.append("no material.grade: the fatigue and spring engineering checks need "

@@ -896,7 +896,8 @@ def zero_floor(errors) -> float:
 
 def label_points(ax, marks: list[tuple[float, float, str]]) -> None:
     """Annotate points, one label per cluster of points that would overlap (within
-    :data:`LABEL_NEAR` in log space), the cluster's texts joined."""
+    :data:`LABEL_NEAR` in log space), the cluster's texts joined; a label in the right fifth of
+    the (log) x axis is written to the left of its point, inside the axes."""
     groups: list[list[tuple[float, float, str]]] = []
     for x, y, text in marks:
         for g in groups:
@@ -913,7 +914,10 @@ def label_points(ax, marks: list[tuple[float, float, str]]) -> None:
         common = os.path.commonprefix(texts).rsplit(" ", 1)[0] + " " if len(texts) > 1 else ""
         text = (common + ", ".join(t[len(common):] for t in texts)) if common.strip() else \
             ", ".join(texts)
-        ax.annotate(text, (x, y), fontsize=6, xytext=(3, 3), textcoords="offset points")
+        lo, hi = (math.log10(v) for v in ax.get_xlim())
+        left = math.log10(x) > hi - 0.2 * (hi - lo)
+        ax.annotate(text, (x, y), fontsize=6, xytext=(-4 if left else 3, 3),
+                    textcoords="offset points", ha="right" if left else "left")
 
 
 def plot(points: list[Point], path: Path) -> None:
@@ -950,7 +954,6 @@ def plot(points: list[Point], path: Path) -> None:
                     ax.plot([xi], [yi], "o", mfc="none", mec="k", ms=12)
                 if len(mp_) > 1:
                     marks.append((xi, yi, p.setting.split("=")[-1].strip()))
-        label_points(ax, marks)
         if any(p.error == 0 for p in pts):
             ax.axhline(floor, color="0.5", ls="--", lw=0.8)
             ax.annotate("error 0 (exact)", (0.01, floor), xycoords=("axes fraction", "data"),
@@ -962,6 +965,7 @@ def plot(points: list[Point], path: Path) -> None:
         lo, hi = min(p.time_s for p in pts), max(p.time_s for p in pts)
         span = max(math.sqrt(hi / lo), 4.0)
         ax.set_xlim(math.sqrt(lo * hi) / span / 1.5, math.sqrt(lo * hi) * span * 1.5)
+        label_points(ax, marks)  # after the limits: a label near the right edge goes left
         ax.xaxis.set_minor_formatter(NullFormatter())
         ax.set_title(analysis)
         ax.set_xlabel("CPU time per evaluation (s)")

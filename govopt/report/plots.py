@@ -448,14 +448,49 @@ def fatigue(res, ax) -> None:
     factors = [c for c in res.checks if c.name.endswith("fatigue safety factor")]
     governs = min(factors, key=lambda c: c.margin, default=None)
     for c in factors:  # the verdicts, as the Result's checks give them; the least governs
-        note = "" if c is not governs or len(factors) == 1 else (
-            ", governs" + ("" if c.name.startswith("body") else ": its cycle not drawn"))
+        note = "" if c is not governs or len(factors) == 1 else ", governs"
         ax.plot([], [], " ", label=f"{c.name.replace(' factor', '')}: {c.value:.3g} "
                                    f"(need {c.limit:.3g}){note}")
     ax.set_xlim(0.0, float(x[-1]) * 1.05)
     ax.set_ylim(bottom=0.0)
+    if fat.get("hooks"):  # room above the body's diagram for the hooks' own
+        ax.set_ylim(0.0, 1.7 * ax.get_ylim()[1])
+        _hooks(fat["hooks"], {c.name.split()[1]: c for c in factors
+                              if c.name.startswith("hook ")}, ax, governs)
     _title(res, ax, f"spring fatigue: {what}")
     ax.legend(loc=corner, fontsize=8 if len(factors) > 1 else 8.5)
+
+
+def _hooks(hooks: dict, checks: dict, ax, governs) -> None:
+    """The hooks' fatigue diagram in an inset of ``ax`` (Shigley §10-11, Example 10-7): each
+    point's amplitude over its line's endurance intercept against its midrange over the
+    ultimate, so that one line (Goodman ``x + y = 1``, Gerber ``y = 1 - x^2``) serves bending at
+    A and torsion at B; the load line through each cycle meets it at the safety factor times
+    the cycle (marked x; the amplitude axis zoomed to show it). The governing hook is red."""
+    ins = ax.inset_axes([0.07, 0.6, 0.36, 0.33])
+    u = np.linspace(0.0, 1.0, 201)
+    line = {"goodman": 1.0 - u, "gerber": 1.0 - u**2}.get(hooks["criterion"], 0.0 * u + 1.0)
+    ins.plot(u, line, color="tab:red", lw=1.5)
+    top = 0.0
+    for point, offset in (("A", (5, -11)), ("B", (-12, 5))):
+        h, check = hooks[point], checks.get(point)
+        xm, ya = h["midrange_Pa"] / h["ultimate_Pa"], h["amplitude_Pa"] / h["endurance_Pa"]
+        colour = "tab:red" if check is not None and check is governs else "tab:blue"
+        n = None if check is None else check.value
+        reach = n if n is not None and np.isfinite(n) else 1.0
+        ins.plot([0.0, reach * xm], [0.0, reach * ya], color=colour, ls=":", lw=1)
+        ins.plot(reach * xm, reach * ya, "x", color=colour, ms=5)  # the cycle times n: on the line
+        ins.plot(xm, ya, "o", color=colour, mec="k", ms=5)
+        ins.annotate(point + ("" if n is None else f" {n:.3g}"), (xm, ya), xytext=offset,
+                     textcoords="offset points", fontsize=7, color=colour)
+        top = max(top, reach * ya)
+    ins.set_xlim(0.0, 1.0)
+    ins.set_ylim(0.0, min(1.05, 2.0 * top) if top > 0 else 1.05)
+    ins.set_xlabel("midrange / ultimate", fontsize=7)
+    ins.set_ylabel("amplitude / endurance", fontsize=7)
+    ins.tick_params(labelsize=6)
+    ins.set_title(f"hooks: A bending, B torsion ({hooks['criterion'].capitalize()}, Shigley "
+                  "10-11)", fontsize=7)
 
 
 DRAW = {"characteristic": characteristic, "controlling-force": controlling_force, "k2": k2,

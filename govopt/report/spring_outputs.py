@@ -1,4 +1,4 @@
-"""The files of `govopt spring` (issue 22): a workbook with the spring maker's sheet, and the
+"""The files of `govopt spring`: a workbook with the spring maker's sheet, and the
 plots, a force-length diagram and the fatigue (Goodman/Haigh) diagram of the load cycle.
 
 They read the sized spring and its checks (:class:`govopt.result.Check`) and never recompute

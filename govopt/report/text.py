@@ -260,9 +260,23 @@ def verdict(res: Result) -> str:
             + "; ".join(f"{check_name(c, res)} ({margin_words(c)})" for c in failed))
 
 
+def band_spring_note(spec) -> str:
+    """What the spring found for the band is (:func:`govopt.spec.band_spring`)."""
+    found, gov = spec.band_spring, spec.governor
+    return (f"no spring given: the one that floats the governor between speed.inner and "
+            f"speed.outer has the rate {found['stiffness'] / 1e3:.5g} N/mm and the "
+            f"{gov.free_length_key.replace('_', ' ')} {found['free_length'] * 1e3:.5g} mm, the "
+            f"initial force {found['force_inner']:.5g} N at the innermost configuration "
+            f"({found['force_outer']:.5g} N at the outermost); evaluated with it")
+
+
 def _warnings(res: Result) -> list[str]:
-    """The notes a reader should not miss: the optimiser's and the spring sheet's."""
+    """The notes a reader should not miss: the spring found for the band, the optimiser's and
+    the spring sheet's."""
     notes = [str(n) for n in (res.optimisation or {}).get("notes") or []]
+    found = getattr(res.spec, "band_spring", None)
+    if found:
+        notes.insert(0, band_spring_note(res.spec))
     if res.spring_report is not None:
         d = res.spring_report.to_dict()
         notes += [*d["tolerance_spread"]["notes"], *d["notes"]]

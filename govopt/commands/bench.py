@@ -1,0 +1,48 @@
+"""`govopt bench`: speed against error of every analysis and the speed targets beside what was
+measured."""
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from . import common
+from .common import FORCE_HELP, Command, echo, guarded
+
+BENCH_HELP = ("Speed against error of every analysis (one point per method and setting, errors "
+              "against high-precision references) and the speed targets beside what was "
+              "measured.")
+BENCH_SHORT = ("Speed against error of every analysis and the speed targets beside what was "
+               "measured.")
+
+app = typer.Typer(add_completion=False)
+
+
+@app.command("bench", cls=Command, help=BENCH_HELP, short_help=BENCH_SHORT)
+@guarded
+def bench(quick: Annotated[bool, common.flag(
+              "--quick/--no-quick",
+              help="A smaller suite and fewer repeats (under a minute).")] = False,
+          out: Annotated[Path | None, common.option(
+              "--out", metavar="<path>", help="Folder for speed-vs-error.md, .csv and .png "
+                                              "(made if only its parent exists).")] = None,
+          force: Annotated[bool, common.flag("--force", help=FORCE_HELP)] = False,
+          targets: Annotated[bool, common.flag(
+              "--targets/--no-targets", help="Also measure the speed targets.")]
+          = True) -> None:
+    """Speed against error of every analysis (one point per method and setting, errors
+    against high-precision references) and the speed targets beside what was measured."""
+    from ..report import bench as b
+
+    if out is not None:  # before the benchmark: fail in a second, not after it
+        b.check_report(out, overwrite=force)
+
+    def log(message: str) -> None:
+        echo(f"  {message}", err=True)
+
+    rows = b.targets(quick, log=log) if targets else None
+    points = b.speed_vs_error(quick, log=log)
+    echo(b.summary(points, rows))
+    if out is not None:
+        for path in b.write_report(points, out, rows, overwrite=force):
+            echo(f"wrote {Path(path).absolute()}")

@@ -1,0 +1,172 @@
+"""`govopt evaluate` and `govopt design`: a spec's design evaluated, or the best design for its
+requirements, reported as text or JSON and written where asked (-o, --xlsx, --plots)."""
+
+import json
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ..examples import SPECS
+from .common import FORCE_HELP, JSON_HELP, ChecksFailed, Command, echo, fail, guarded, option
+
+DEFAULT_EVALUATE = SPECS / "hamabe-a.toml"
+DEFAULT_DESIGN = SPECS / "hamabe-design.toml"
+
+EVALUATE_HELP = ("Evaluate the spec's design (default: the bundled Hamabe case a). Exit code 0: "
+                 "every check passed; 1: some check failed; 2: bad input.")
+EVALUATE_SHORT = "Evaluate the spec's design (default: the bundled Hamabe case a)."
+DESIGN_HELP = ("Find the best design for the spec's requirements (default: bundled "
+               "hamabe-design). Files are written only where asked (-o, --xlsx, --plots), as by "
+               "evaluate.")
+DESIGN_SHORT = "Find the best design for the spec's requirements (default: bundled hamabe-design)."
+
+Spec = Annotated[Path | None, typer.Argument(help="Spec file (TOML with units).",
+                                             metavar="spec", show_default=False)]
+Json = Annotated[bool, typer.Option("--json", help=JSON_HELP)]
+Xlsx = Annotated[str | None, typer.Option("--xlsx", metavar="<path>",
+                                          help="Write an Excel design sheet.")]
+Force = Annotated[bool, typer.Option("--force", help=FORCE_HELP)]
+Plots = Annotated[Path | None, typer.Option(
+    "--plots", metavar="<path>", help="Write the plots (PNG and SVG) into this folder.")]
+Full = Annotated[bool, typer.Option("--full", help="Print the whole report (the default is the "
+                                                   "answer: verdict, design, the checks to "
+                                                   "watch, notes).")]
+Section = Annotated[list[str] | None, typer.Option(
+    "--section", metavar="<str>",
+    help="Print these sections of the report (repeat, or comma-separated): summary, "
+         "characteristic, design, dynamics, vibration, optimisation, checks, spring.")]
+Change = Annotated[str | None, option(
+    "--speed-change", help="The speed change of the effort and power: a fraction c (e.g. 0.01) "
+    "at the normal configuration, or 'range': the governor's own, from its lowest to its "
+    "highest speed (default: the spec's [analysis] speed_change, else 0.01).")]
+
+evaluate_app = typer.Typer(add_completion=False)
+design_app = typer.Typer(add_completion=False)
+
+
+def _load(spec: Path | None, default: Path, **analysis):
+    from ..spec import load_spec
+
+    s = load_spec(spec or default)
+    changes = {k: v for k, v in analysis.items() if v is not None}
+    return s.with_analysis(**changes) if changes else s
+
+
+@evaluate_app.command("evaluate", cls=Command, help=EVALUATE_HELP, short_help=EVALUATE_SHORT)
+@guarded
+def evaluate(spec: Spec = None,
+             geometry: Annotated[str | None, typer.Option(
+                 "--geometry", metavar="<str>",
+                 help="Linkage geometry: 'exact' (default) or 'series' (the paper's eq. 3).")]
+             = None,
+             json_out: Json = False, xlsx: Xlsx = None, force: Force = False,
+             plots: Plots = None, full: Full = False, section: Section = None,
+             speed_change: Change = None) -> None:
+    from ..evaluation import evaluate as run
+
+    if geometry is not None and geometry not in ("exact", "series"):
+        fail(f"--geometry: expected 'exact' or 'series', got {geometry!r}")
+    change = _speed_change(speed_change)
+    run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, geometry=geometry,
+                                     speed_change=change)), json_out,
+                   spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots,
+                   sections=_sections(full, section))
+
+
+@design_app.command("design", cls=Command, help=DESIGN_HELP, short_help=DESIGN_SHORT)
+@guarded
+def design(spec: Spec = None, json_out: Json = False,
+           output: Annotated[str | None, typer.Option(
+               "-o", "--output", metavar="<path>", help="Write the design as a spec file.")]
+           = None,
+           xlsx: Xlsx = None, force: Force = False, plots: Plots = None, full: Full = False,
+           section: Section = None, speed_change: Change = None) -> None:
+    from ..optimize.search import design as run
+
+    change = _speed_change(speed_change)
+    run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN, speed_change=change)), json_out,
+                   spec or DEFAULT_DESIGN,
+                   xlsx=xlsx, output=output, force=force, plots=plots,
+                   sections=_sections(full, section))
+
+
+def _speed_change(text: str | None) -> float | str | None:
+    """``--speed-change``: 'range' or a fraction in (0, 1)."""
+    if text is None or text.strip() == "range":
+        return None if text is None else "range"
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not 0.0 < value < 1.0:
+        fail(f"--speed-change: expected a fraction of the speed in (0, 1), e.g. 0.01, or "
+             f"'range', got {text!r}")
+    return value
+
+
+def _sections(full: bool, section: list[str] | None) -> list[str] | None:
+    """The report's sections: the answer (``summary``) by default, all with ``--full``, the
+    named ones with ``--section`` (names checked: a wrong one is exit 2)."""
+    from ..report.text import SECTIONS
+
+    if full and section:
+        fail("--full and --section: choose one (--full prints every section)")
+    if full:
+        return None
+    names = [n.strip() for s in section or () for n in s.split(",") if n.strip()]
+    for name in names:
+        if name not in SECTIONS:
+            import difflib
+
+            close = difflib.get_close_matches(name, SECTIONS, n=1)
+            fail(f"--section: expected one of {', '.join(SECTIONS)}, got {name!r}"
+                 + (f" (did you mean {close[0]!r}?)" if close else ""))
+    return names or ["summary"]
+
+
+def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
+                   output: str | None = None, force: bool = False, plots: Path | None = None,
+                   sections: list[str] | None = None) -> None:
+    """Check the outputs, compute a Result, write the requested files, print it and say what
+    was written where (on stderr with ``--json``); a user's error (GovoptError) exits 2 and a
+    result with failed checks 1, through :func:`~govopt.commands.common.guarded`."""
+    from ..report.files import check_output, drawn_design, overwrite_policy, write_design_spec
+    from ..report.text import format_result
+
+    outputs = [(p, what, force)
+               for p, what in ((output, "design spec"), (xlsx, "workbook")) if p is not None]
+    for p, what, overwrite in outputs:  # before the run: fail in a second, not after it
+        check_output(p, overwrite=overwrite, inputs=[spec], what=what,
+                     others=[q for q, _, _ in outputs if q is not p])
+    if plots is not None:  # the folder, and no plot replaced without --force
+        from ..report.plot_files import check_plot_dir, write_plots
+
+        check_plot_dir(plots, spec.stem, overwrite=force, inputs=[spec],
+                       others=[p for p, _, _ in outputs])
+    res = compute()
+    if output is not None:  # rounded as drawn, and evaluated again: the report is its
+        text, res, _ = drawn_design(res)
+        write_design_spec(res, output, overwrite=force, text=text)
+    if xlsx is not None:
+        from ..report.excel import write_workbook
+
+        with overwrite_policy(force):
+            write_workbook(res, xlsx)
+    drawn = [] if plots is None else write_plots(res, plots, stem=spec.stem, overwrite=force)
+    echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res,
+                                                                             sections=sections))
+    for path in (output, xlsx, *drawn):
+        if path is not None:
+            echo(f"wrote {Path(path).absolute()}", err=json_out)
+    exit_on_failed_checks(res, json_out)
+
+
+def exit_on_failed_checks(res, json_out: bool) -> None:
+    """Exit code 1 (after the report) when any of the result's checks failed."""
+    failed = [c.name for c in res.checks if not c.passed]
+    if failed:
+        if not json_out:
+            echo(f"{len(failed)} of {len(res.checks)} checks failed: {'; '.join(failed)}",
+                 err=True)
+        raise ChecksFailed
