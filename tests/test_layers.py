@@ -157,9 +157,9 @@ def graph():
 
 def test_the_graph_sees_imports_inside_functions(graph):
     """The reader counts an import inside a function (statics imports errors at module level;
-    the CLI imports the evaluator only inside its commands)."""
+    the evaluate command imports the evaluator only when it runs)."""
     assert "govopt.errors" in graph["govopt.analysis.statics"]
-    assert "govopt.evaluation" in graph["govopt.cli"]
+    assert "govopt.evaluation" in graph["govopt.commands.evaluate"]
     assert "govopt.inputs" in graph["govopt.analysis.statics"]
 
 
