@@ -45,6 +45,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..bulk import PASS_TOL, margin_column, passed_column, value_column
 from ..errors import InfeasibleError
 from ..spec import Design, Requirements, Spec
 from . import design as dz
@@ -176,13 +177,8 @@ def robust_checks(frame) -> list[str]:
 def holds(frame) -> np.ndarray:
     """Rows where every robust check holds (a check that does not apply holds; an error row
     does not)."""
-    from ..bulk import passed_column
-
-    ok = (frame["status"] != "error").to_numpy(dtype=bool).copy()
-    for c in robust_checks(frame):
-        p = frame[passed_column(c)]
-        ok = ok & (p.isna() | (p == True)).to_numpy(dtype=bool)  # noqa: E712 (nullable booleans)
-    return ok
+    error = (frame["status"] == "error").to_numpy(dtype=bool)
+    return ~error & np.all(check_margins(frame) >= PASS_TOL, axis=1)
 
 
 def nut_settings(req: Requirements):
@@ -258,7 +254,7 @@ def robust_search(spec: Spec, req: Requirements):
                                  central=km.central[rows, 0])
     order = np.argsort(values, kind="stable")
     stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0}
-    failing: dict[str, int] = {}
+    failing: dict[tuple[str, str], int] = {}
     start, b = 0, 0
     while start < order.size and stats["nominal_feasible_checked"] < MAX_CHECKED:
         size = BATCHES[min(b, len(BATCHES) - 1)]
@@ -288,12 +284,21 @@ def robust_search(spec: Spec, req: Requirements):
         n_nut = nut_settings(req)[0].size
         ok_f, _ = corner_verdict(frame, int(finite.sum()), len(signs), n_nut)
         for name, count in failures(frame, int(finite.sum()), len(signs), n_nut).items():
-            failing[name] = failing.get(name, 0) + count
+            failing[(name, "at a corner")] = failing.get((name, "at a corner"), 0) + count
         ok = np.zeros(s.size, bool)
         ok[finite] = ok_f
-        if ok.any():
-            j = int(np.argmax(ok))  # the first in objective order
+        for j in np.nonzero(ok)[0]:  # in objective order: the whole box, not only its corners
             i, g = s[j], good[j]
+            one = {k: v[j:j + 1] for k, v in dcols.items()}
+            wc = worst_case(spec, req, one, Box({k: v[j:j + 1] for k, v in box.fields.items()},
+                                                box.torque), stop_on_failure=True)
+            stats["inner_maximisations"] = stats.get("inner_maximisations", 0) + int(
+                bool(wc["not_monotone"]))
+            if not wc["holds"]:
+                for name in failures(wc["frame"], len(wc["frame"]), 1, 1):
+                    key = (name, "inside the box")
+                    failing[key] = failing.get(key, 0) + 1
+                continue
             stats["candidates_visited"] = int(first + g + 1)
             cand = dz.Candidate(float(km.m[rows[i], 0]),
                                 {k: float(v[cols[i]]) for k, v in cat.fields.items()},
@@ -301,9 +306,9 @@ def robust_search(spec: Spec, req: Requirements):
                                 float(values[i]), float(win["settling"][g]),
                                 float(win["f_lo"][g]), float(win["f_hi"][g]),
                                 float(km.central[rows[i], 0]))
-            return cand, stats
+            return cand, stats, wc
     worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
-    which = "; ".join(f"'{k}' fails at a corner for {v}" for k, v in worst) or \
+    which = "; ".join(f"'{k}' fails {where} for {v}" for (k, where), v in worst) or \
         "none is within the EN 15800 / EN 10270 tables"
     raise InfeasibleError(
         f"{spec.path}: infeasible: requirements.robust_*: no candidate holds every check over "
@@ -315,8 +320,6 @@ def robust_search(spec: Spec, req: Requirements):
 def failures(frame, n: int, n_corners: int, n_nut: int) -> dict:
     """Per robust check, on how many of ``n`` candidates it fails at some corner whatever the
     nut's setting (for the diagnosis)."""
-    from ..bulk import passed_column
-
     out = {}
     for c in robust_checks(frame):
         p = frame[passed_column(c)]
@@ -380,9 +383,9 @@ def robust_design(spec: Spec):
     nominal = dz.design(replace(spec, requirements=nominal_req))
     t_nominal = time.perf_counter() - t0
     t0 = time.perf_counter()
-    cand, stats = robust_search(spec, req)
+    cand, stats, wc = robust_search(spec, req)
     res = dz.result_of(spec, req, cand, stats, None)
-    record = robust_record(spec, req, cand, res.checks)
+    record = robust_record(spec, req, cand, res.checks, wc)
     record["monte_carlo"] = monte_carlo(spec, req, design_of(spec, cand))
     t_robust = time.perf_counter() - t0
     unit = res.optimisation["objective"]["unit"]
@@ -403,67 +406,87 @@ def design_of(spec: Spec, cand) -> Design:
                   dashpot=None if math.isnan(cand.f) else cand.f)
 
 
-def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
-    """The box of the chosen design, the worst case of each check at its corners beside the
-    nominal value (SI; unit, limit and sense from the evaluated ``checks``), and the adjusting
-    nut's range."""
-    from ..bulk import design_arrays, margin_column, passed_column, value_column
+def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> dict:
+    """The box of the chosen design, the worst case of each check over it (:func:`worst_case`,
+    ``wc`` if already found) beside the nominal value (SI; unit, limit and sense from the
+    evaluated ``checks``), where it lies and how it was found, and the fitter's settings: the
+    range the box needs and the setting for nominal parts."""
+    from ..bulk import design_arrays
 
     d = design_of(spec, cand)
     cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}
     box = candidate_box(spec, req, cols)
-    frame, _, _, _, signs, dims = corners(spec, req, cols, box)
+    if wc is None:
+        wc = worst_case(spec, req, cols, box)
+    at, dims, pts = wc["frame"], wc["dims"], wc["points"]
     nut, valve = nut_settings(req)
-    ok, first = corner_verdict(frame, 1, len(signs), nut.size)
     nominal = _evaluate(spec, req, cols, np.zeros(1))
-    # the worst case: over the corners, each at the setting the fitter uses there
-    use = np.array([c * nut.size + max(int(first[0, c]), 0) for c in range(len(signs))])
-    at = frame.iloc[use].reset_index(drop=True)
+    *_, nominal_setting = at_points(spec, req, cols, box, np.zeros((1, len(dims))))
     evaluated = {c.name: c for c in checks}
     checks = []
-    for name in robust_checks(frame):
-        m = at[margin_column(name)].to_numpy(dtype=float)
-        if not np.isfinite(m).any():
+    for j, name in enumerate(robust_checks(at)):
+        m = wc["margins"][:, j]
+        if not np.any(m < np.inf):  # applies nowhere
             continue
-        w = int(np.nanargmin(m))
         c = evaluated.get(name)
+        w = worst_row(m, at[value_column(name)].to_numpy(dtype=float), wc["found_by"],
+                      c.sense if c else "")
+        passed = at[passed_column(name)]
         checks.append({"check": name, "unit": c.unit if c else "",
                        "sense": c.sense if c else "", "limit": c.limit if c else math.nan,
                        "nominal": float(nominal[value_column(name)].iloc[0]),
                        "worst_case": float(at[value_column(name)].iloc[w]),
-                       "worst_margin": float(m[w]),
-                       "worst_corner": {dims[j]: ("+" if signs[w, j] > 0 else "-")
-                                        for j in range(len(dims))},
-                       "holds": bool((at[passed_column(name)].isna()
-                                      | (at[passed_column(name)] == True)).all())})  # noqa: E712
-    used = np.maximum(first[0], 0)
+                       "worst_margin": float(at[margin_column(name)].iloc[w]),
+                       # in half-widths of each tolerance: -1 and +1 are the box's faces
+                       "worst_at": {dims[j]: float(pts[w, j]) for j in range(len(dims))},
+                       "found_by": wc["found_by"][w],
+                       "not_monotone_in": wc["not_monotone"].get(name, []),
+                       "holds": bool((passed.isna() | (passed == True)).all())})  # noqa: E712
+    used = wc["setting"]
     band = speed_band(spec, at)
-    nominal_ok = bool(holds(nominal)[0])  # nominal parts at the nominal setting
+    corner = np.array([f == "corner" for f in wc["found_by"]])
     damping = spec.governor.key_unit("damping")
     halves = {f"{k}_m" if k in ("wire_diameter", "coil_radius", "free_half_length")
               else f"{spec.governor.mass_key}_mass_kg" if k == "pendulum_mass"
               else f"{k}_kg" if k.endswith("mass") else f"{k}_{damping}": float(v[0])
               for k, v in box.fields.items() if v[0] > 0}
+    s0 = int(nominal_setting[0])
     return {
         "tolerances": {"spring_grade": req.robust_spring_grade,
                        "dashpot_fraction": req.robust_dashpot,
                        "masses_fraction": req.robust_masses,
                        "torque_slope_fraction": req.robust_torque_slope,
                        "half_widths": halves, "notes": box_notes(spec, req)},
-        "corners": len(signs), "holds_at_every_corner": bool(ok[0]),
+        "corners": 2 ** len(dims), "points_evaluated": len(at),
+        "holds_at_every_corner": bool(np.all(wc["margins"][corner] >= PASS_TOL)),
+        "holds_over_the_box": bool(wc["holds"]),
         "speed_band": band,
         "checks": checks,
         "adjusting_nut": None if req.adjusting_nut <= 0 else {
             "range_m": [-req.adjusting_nut, req.adjusting_nut],
             "needed_range_m": [float(nut[used].min()), float(nut[used].max())],
-            "nominal_setting_m": 0.0 if nominal_ok else None},
+            "nominal_setting_m": float(nut[s0]),
+            f"{spec.governor.free_length_key}_at_nominal_setting_m":
+                float(cols["free_half_length"][0] + nut[s0])},
         "dashpot_valve": None if req.dashpot_valve <= 0 else {
             f"range_{damping}": [cand.f * (1 - req.dashpot_valve),
                                  cand.f * (1 + req.dashpot_valve)],
             f"needed_range_{damping}": [float(cand.f * valve[used].min()),
                                         float(cand.f * valve[used].max())],
-            f"nominal_setting_{damping}": cand.f if nominal_ok else None},
+            f"nominal_setting_{damping}": float(cand.f * valve[s0])},
     }
+
+
+def worst_row(margin, value, found_by, sense: str) -> int:
+    """The row of the least margin; among rows tied with it (to 1e-12: a margin that is a ratio
+    of forces is the same at every coil diameter) a corner first, then the worst value in the
+    check's sense."""
+    m = np.asarray(margin, dtype=float)
+    tied = np.nonzero(m <= m.min() + 1e-12 * max(1.0, abs(float(m.min()))))[0] \
+        if np.isfinite(m.min()) else np.array([int(np.argmin(m))])
+    sign = -1.0 if sense == "<=" else 1.0
+    key = [(found_by[i] != "corner", sign * np.nan_to_num(value[i]), i) for i in tied]
+    return int(min(key)[2])
 
 
 def speed_band(spec: Spec, frame) -> dict:
@@ -484,3 +507,188 @@ def speed_band(spec: Spec, frame) -> dict:
     unit = "rad" if spec.governor.coordinate == "angle" else "m"
     return {f"configuration_{unit}": x.tolist(), "lowest_rad_s": np.nanmin(w, axis=0).tolist(),
             "highest_rad_s": np.nanmax(w, axis=0).tolist()}
+
+
+# ---------------------------------------------------------------------------------------------
+# The worst case over the box: corners where a check is monotone, an inner maximisation where not
+# ---------------------------------------------------------------------------------------------
+
+#: the points probed along each edge of the box, in half-widths (the ends are its corners)
+EDGE_POINTS = (-1.0, -0.5, 0.0, 0.5, 1.0)
+#: a check's margin that turns back along an edge by more than this is not monotone there
+#: (below it: the evaluator's rounding)
+MONOTONE_TOL = 1e-9
+#: the inner maximisation (:func:`inner_minimum`): its step of the finite-difference gradient
+#: (half-widths) and its iterations
+INNER_STEP = 1e-4
+INNER_ITERATIONS = 12
+
+
+def dimensions(box: Box) -> list[str]:
+    """The box's toleranced quantities (design columns, then ``torque_slope``)."""
+    return box.active() + (["torque_slope"] if box.torque > 0 else [])
+
+
+def at_points(spec: Spec, req: Requirements, cols: dict, box: Box, points):
+    """One design (columns of length 1) made at ``points`` of its box (P x dims, each in
+    half-widths, -1 .. 1) and set by the fitter: at each point the first setting of
+    :func:`nut_settings` (least change first) at which every robust check holds, else the one
+    with the largest least margin (the point fails whatever the fitter does). Returns the
+    evaluated frame (P rows, each at its setting), its :func:`check_margins` and the settings'
+    indices."""
+    points = np.atleast_2d(np.asarray(points, dtype=float))
+    names = box.active()
+    nut, valve = nut_settings(req)
+    p, s = (a.ravel() for a in np.meshgrid(np.arange(len(points)), np.arange(nut.size),
+                                           indexing="ij"))
+    rows = {f: np.repeat(v[:1], p.size) for f, v in cols.items()}
+    for j, name in enumerate(names):
+        rows[name] = rows[name] + points[p, j] * box.fields[name][0]
+    rows["free_half_length"] = rows["free_half_length"] + nut[s]
+    rows["dashpot"] = rows["dashpot"] * valve[s]
+    torque = points[p, -1] * box.torque if box.torque > 0 else np.zeros(p.size)
+    frame = _evaluate(spec, req, rows, torque)
+    margins = check_margins(frame)
+    if nut.size == 1:
+        return frame, margins, np.zeros(len(points), int)
+    least = margins.min(axis=1, initial=np.inf).reshape(len(points), nut.size)
+    ok = least >= PASS_TOL
+    use = np.where(ok.any(axis=1), np.argmax(ok, axis=1), np.argmax(least, axis=1))
+    pick = np.arange(len(points)) * nut.size + use
+    return frame.iloc[pick].reset_index(drop=True), margins[pick], use
+
+
+def check_margins(frame) -> np.ndarray:
+    """The robust checks' relative margins (rows x :func:`robust_checks`), for the worst case:
+    -inf on an error row and where a check fails by its own verdict at a margin >= 0 (so a
+    row holds exactly where every entry is >= :data:`PASS_TOL`), +inf where a check does not
+    apply."""
+    names = robust_checks(frame)
+    out = np.empty((len(frame), len(names)))
+    error = (frame["status"] == "error").to_numpy(dtype=bool)
+    for j, c in enumerate(names):
+        m = frame[margin_column(c)].to_numpy(dtype=float)
+        p = frame[passed_column(c)].to_numpy(dtype=float, na_value=np.nan)  # 1, 0, NaN: n/a
+        m = np.where((p == 0) & ~(m < PASS_TOL), -np.inf,
+                     np.where(p == 1, np.maximum(m, PASS_TOL), m))  # its verdict rules
+        m = np.where(np.isnan(p), np.inf, m)
+        out[:, j] = np.where(error, -np.inf, m)
+    return out
+
+
+def edges(k: int) -> tuple[np.ndarray, np.ndarray]:
+    """Every edge of a k-dimensional box of half-widths, probed at :data:`EDGE_POINTS`:
+    ``(points, dim)``, points (edges x len(EDGE_POINTS) x k) and the dimension each edge runs
+    along."""
+    out, dim = [], []
+    t = np.asarray(EDGE_POINTS)
+    for j in range(k):
+        for rest in itertools.product((-1.0, 1.0), repeat=k - 1):
+            p = np.repeat(np.insert(np.array(rest), j, 0.0)[None, :], t.size, axis=0)
+            p[:, j] = t
+            out.append(p)
+            dim.append(j)
+    return np.array(out).reshape(-1, t.size, k), np.array(dim, dtype=int)
+
+
+def monotone(values, tol: float = MONOTONE_TOL) -> np.ndarray:
+    """Whether each row of ``values`` (along an edge) is monotone, either way, within ``tol``;
+    a row with a NaN (the check does not apply there) counts as monotone.
+
+    >>> monotone(np.array([[0, 1, 2.0], [2, 1, 0.0], [1, 0, 1.0], [0, 0, 0.0]])).tolist()
+    [True, True, False, True]
+    """
+    d = np.diff(np.asarray(values, dtype=float), axis=1)
+    with np.errstate(invalid="ignore"):
+        up, down = np.all(~(d < -tol), axis=1), np.all(~(d > tol), axis=1)
+    return up | down
+
+
+class Failed(Exception):
+    """Raised by a search's function to stop it at the first failing point."""
+
+
+def inner_minimum(fun, start, step: float = INNER_STEP, iterations: int = INNER_ITERATIONS):
+    """A least of ``fun`` over the box ``[-1, 1]^q`` near ``start`` by a bounded quasi-Newton
+    search (L-BFGS-B, scipy.optimize.minimize); ``fun(points)`` evaluates P x q points at once
+    and returns their values (the forward-difference gradient is one call: the point and its q
+    neighbours, stepped inwards at a bound; +-inf, a check that does not apply or an error, is
+    clipped to +-1e3). Returns the point found and its value."""
+    from scipy.optimize import minimize
+
+    def value_and_gradient(t):
+        h = np.where(t + step <= 1.0, step, -step)
+        v = np.asarray(fun(np.vstack([t, t + np.diag(h)])), dtype=float)
+        v = np.clip(np.nan_to_num(v, posinf=1e3, neginf=-1e3), -1e3, 1e3)
+        return float(v[0]), (v[1:] - v[0]) / h
+
+    r = minimize(value_and_gradient, np.clip(np.asarray(start, dtype=float), -1.0, 1.0),
+                 jac=True, method="L-BFGS-B", bounds=[(-1.0, 1.0)] * len(start),
+                 options={"maxiter": iterations})
+    return r.x, float(r.fun)
+
+
+def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
+               stop_on_failure: bool = False) -> dict:
+    """The worst case of one design (columns of length 1) over its box, after the fitter's
+    adjustment.
+
+    The box is probed along every edge (:func:`edges`, the corners included). A check whose
+    margin is monotone along every edge in every tolerance has its worst case at a corner. A
+    check that is not monotone in some tolerances is minimised over those (an inner
+    maximisation of its violation, :func:`inner_minimum`), from its worst probed point, the
+    tolerances it is monotone in held at that point's faces. ``stop_on_failure``: return at the
+    first point where a check fails (a search's candidate is then rejected).
+
+    Returns ``dims``; every evaluated ``points`` (half-widths) with its ``frame`` row (at the
+    fitter's setting), ``margins`` (:func:`check_margins`), ``setting`` index and ``found_by``
+    ("corner", "edge", "inner maximisation"); per check the tolerances it is not monotone in
+    (``not_monotone``); and ``holds``: every robust check holds at every point."""
+    import pandas as pd
+
+    dims = dimensions(box)
+    k = len(dims)
+    grid, along = edges(k) if k else (np.zeros((1, 1, 0)), np.zeros(1, int))
+    flat = grid.reshape(-1, k)
+    frame, margins, setting = at_points(spec, req, cols, box, flat)
+    corner = np.all(np.abs(flat) == 1.0, axis=1)
+    seen = {"points": [flat], "frame": [frame], "margins": [margins], "setting": [setting],
+            "found_by": ["corner" if c else "edge" for c in corner]}
+
+    def result(ok: bool) -> dict:
+        return {"dims": dims, "points": np.vstack(seen["points"]),
+                "frame": pd.concat(seen["frame"], ignore_index=True),
+                "margins": np.vstack(seen["margins"]),
+                "setting": np.concatenate(seen["setting"]), "found_by": seen["found_by"],
+                "not_monotone": not_monotone, "holds": ok}
+
+    not_monotone: dict[str, list[str]] = {}
+    ok = bool(np.all(margins >= PASS_TOL))
+    if k == 0 or (stop_on_failure and not ok):
+        return result(ok)
+    names = robust_checks(frame)
+    for c, name in enumerate(names):
+        bad = ~monotone(np.where(np.isfinite(margins[:, c]), margins[:, c],
+                                 np.nan).reshape(grid.shape[:2]))
+        if not bad.any():
+            continue
+        free = sorted(set(along[bad].tolist()))
+        not_monotone[name] = [dims[j] for j in free]
+        base = flat[int(np.argmin(margins[:, c]))].copy()
+
+        def fun(sub, c=c, base=base, free=free):
+            pts = np.repeat(base[None, :], len(sub), axis=0)
+            pts[:, free] = sub
+            f, m, s = at_points(spec, req, cols, box, pts)
+            for key, v in (("points", pts), ("frame", f), ("margins", m), ("setting", s)):
+                seen[key].append(v)
+            seen["found_by"] += ["inner maximisation"] * len(pts)
+            if stop_on_failure and np.any(m < PASS_TOL):
+                raise Failed
+            return m[:, c]
+
+        try:
+            inner_minimum(fun, base[free])
+        except Failed:
+            return result(False)
+    return result(bool(np.all(np.vstack(seen["margins"]) >= PASS_TOL)))
