@@ -6,6 +6,7 @@ import itertools
 
 import numpy as np
 import pytest
+from clirun import invoke
 
 import govopt
 from govopt.bulk import design_arrays, evaluate_many, value_column
@@ -105,3 +106,68 @@ def test_a_limit_between_corners_and_inside_fails_inside(box_case):
             for s, name in zip(signs, again["dims"], strict=True)})
         res = govopt.evaluate(tight.with_design(corner_part))
         assert next(c for c in res.checks if c.name == "irregularity").passed
+
+
+# ------------------------------------------------------------------ other governors, objectives
+
+
+def _robust_copy(tmp_path, source, lines, name="robust.toml"):
+    text = open(source).read().replace("[requirements]\n", "[requirements]\n" + lines, 1)
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_dead_weight_robust_design_holds_at_its_mass_corners(tmp_path):
+    """A Porter governor (dead weight: no spring) with its balls and central load +-0.5 %: the
+    robust design passes every check at each corner of the masses, by the ordinary evaluator;
+    the nominal optimum does not (its band is at the spec's edge), so robustness costs."""
+    path = _robust_copy(tmp_path, "govopt/specs/porter-design.toml", "robust_masses = 0.005\n")
+    spec = govopt.load_spec(path)
+    res = dz.design(spec)
+    rec = res.optimisation["robust"]
+    assert rec["holds_over_the_box"] and rec["monte_carlo"]["probability"] == 1.0
+    o = res.optimisation["design"]
+    ball, central = o["ball_mass_kg"], o["central_mass_kg"]
+    nominal = rec["cost"]["nominal_design"]
+
+    def failures_at_corners(m, c):
+        out = set()
+        for sm, sc in itertools.product((-1, 1), repeat=2):
+            d = Design(pendulum_mass=m * (1 + 0.005 * sm), central_mass=c * (1 + 0.005 * sc))
+            out |= {ck.name for ck in govopt.evaluate(spec.with_design(d)).checks
+                    if not ck.passed and not any(b in ck.name for b in rb.BOUND_NAMES)}
+        return out
+
+    assert failures_at_corners(ball, central) == set()
+    assert failures_at_corners(nominal["ball_mass_kg"], nominal["central_mass_kg"])
+    assert rec["cost"]["robust_objective_kg"] > rec["cost"]["nominal_objective_kg"]
+    assert rec["speed_band"]["lowest_rad_s"][0] < res.statics.omega[0]
+
+
+@pytest.mark.parametrize("source, lines, key, words", [
+    (ROBUST, 'objective = "settling_time"\n', "requirements.objective",
+     "requirements.max_settling_time"),
+    ("govopt/specs/porter-design.toml", "robust_spring_grade = 2\n",
+     "requirements.robust_spring_grade", "no spring"),
+    ("govopt/specs/porter-design.toml", 'adjusting_nut = "2 mm"\n', "requirements.adjusting_nut",
+     "no spring"),
+    ("govopt/specs/traction-leaf-design.toml", "robust_spring_grade = 2\n",
+     "requirements.robust_spring_grade", "leaf spring"),
+    ("govopt/specs/spring_loaded-design.toml", "robust_dashpot = 0.1\n",
+     "requirements.robust_dashpot", "[[load_change]]"),
+])
+def test_robust_designs_it_cannot_make_are_one_line_errors(tmp_path, source, lines, key, words):
+    """Each says which key, why, and what to do instead; exit code 2, no traceback."""
+    text = open(source).read()
+    if "objective =" in lines:
+        text = text.replace('objective = "moving_mass"', lines.strip(), 1)
+    else:
+        text = text.replace("[requirements]\n", "[requirements]\n" + lines, 1)
+    path = tmp_path / "bad.toml"
+    path.write_text(text)
+    run = invoke(["design", str(path)])
+    assert run.exit_code == 2 and run.exception is None
+    lines_out = run.stderr.strip().splitlines()
+    assert len(lines_out) == 1 and lines_out[0].startswith("error: "), run.stderr
+    assert key in lines_out[0] and words in lines_out[0]

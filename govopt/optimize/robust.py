@@ -235,15 +235,40 @@ def _design_columns(cat, rows, cols, l0, km, f) -> dict:
     return out
 
 
-def robust_search(spec: Spec, req: Requirements):
-    """The least-objective candidate that holds at every corner of its tolerance box:
-    ``(Candidate, stats)``; raises :class:`InfeasibleError` when none does."""
-    if spec.governor.spring is None:
-        raise InfeasibleError(f"{spec.path}: requirements.robust_*: a robust design is for "
-                              "spring governors (a dead-weight type's masses alone: not yet)")
+def supported(spec: Spec, req: Requirements) -> None:
+    """Raise a one-line :class:`InfeasibleError` for a robust design the search cannot make:
+    a dynamic objective, or a tolerance the governor does not have."""
+    gov = spec.governor
     if req.objective not in ("moving_mass", "spring_mass"):
-        raise InfeasibleError(f"{spec.path}: requirements.objective: a robust design (robust_* "
-                              f"keys) minimises the moving or spring mass, not {req.objective}")
+        what = req.objective.replace("_", " ")
+        raise InfeasibleError(
+            f"{spec.path}: requirements.objective: a robust design (robust_* keys) minimises "
+            f"the moving or spring mass, not the {what} (it moves with the dash-pot setting "
+            "the box varies): minimise a mass and bound the "
+            f"{what} by requirements.max_{req.objective}")
+    if gov.spring is None:
+        for key, on in (("robust_spring_grade", req.robust_spring_grade is not None),
+                        ("adjusting_nut", req.adjusting_nut > 0)):
+            if on:
+                raise InfeasibleError(
+                    f"{spec.path}: requirements.{key}: a {gov.type_name} governor has no spring "
+                    "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+    elif gov.spring == "leaf" and req.robust_spring_grade is not None:
+        raise InfeasibleError(
+            f"{spec.path}: requirements.robust_spring_grade: EN 15800 tolerances are for "
+            "helical springs, not a leaf spring: tolerance the masses and the dash-pot instead")
+    if (req.dashpot_valve > 0 or req.robust_dashpot > 0) and (
+            spec.engine is None or not spec.load_changes):
+        key = "dashpot_valve" if req.dashpot_valve > 0 else "robust_dashpot"
+        raise InfeasibleError(f"{spec.path}: requirements.{key}: no dash-pot is designed "
+                              "without [engine] and [[load_change]]: drop the key or add them")
+
+
+def spring_batches(spec: Spec, req: Requirements):
+    """A spring governor's candidates feasible at nominal values, in objective order, in
+    batches (:data:`BATCHES`): ``(design columns, candidates)``, the statics screen and spring
+    checks of the nominal search (:func:`govopt.optimize.design.spring_screen`) with the dash-pot
+    in its window (:func:`govopt.optimize.design.dashpot_window`)."""
     dz.check_grids(spec, req)
     grid, km, lo, hi, parts = dz.statics_window(spec, req)
     if not np.any(lo <= hi):
@@ -253,10 +278,8 @@ def robust_search(spec: Spec, req: Requirements):
     values = dz.objective_values(req, km.m[rows, 0], cat.mass[cols],
                                  central=km.central[rows, 0])
     order = np.argsort(values, kind="stable")
-    stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0}
-    failing: dict[tuple[str, str], int] = {}
     start, b = 0, 0
-    while start < order.size and stats["nominal_feasible_checked"] < MAX_CHECKED:
+    while start < order.size:
         size = BATCHES[min(b, len(BATCHES) - 1)]
         first, sel = start, order[start:start + size]
         start, b = start + size, b + 1
@@ -265,16 +288,60 @@ def robust_search(spec: Spec, req: Requirements):
         win = dz.dashpot_window(spec, req, km, grid, rows[sel], cat.kappa[cols[sel]],
                                 fatigue=fat)
         good = np.nonzero(win["feasible"])[0]
-        if good.size == 0:
-            continue
         s = sel[good]
-        dcols = _design_columns(cat, rows[s], cols[s], l0[s], km, win["f"][good])
+        cands = [dz.Candidate(float(km.m[rows[i], 0]),
+                              {k: float(v[cols[i]]) for k, v in cat.fields.items()},
+                              float(cat.kappa[cols[i]]), float(l0[i]), float(win["f"][g]),
+                              float(values[i]), float(win["settling"][g]),
+                              float(win["f_lo"][g]), float(win["f_hi"][g]),
+                              float(km.central[rows[i], 0])) for i, g in zip(s, good, strict=True)]
+        visited = [int(first + g + 1) for g in good]
+        yield _design_columns(cat, rows[s], cols[s], l0[s], km, win["f"][good]), cands, visited
+
+
+def dead_weight_batches(spec: Spec, req: Requirements):
+    """A dead-weight governor's (ball, central) weight pairs feasible at nominal values, least
+    moving mass first, in batches, as :func:`spring_batches` gives them
+    (:func:`govopt.optimize.design.dead_weight_candidates`, the dash-pot in its window)."""
+    grid, km, rows, m, c, _ = dz.dead_weight_candidates(spec, req)
+    start, b = 0, 0
+    while start < rows.size:
+        size = BATCHES[min(b, len(BATCHES) - 1)]
+        first, sel = start, rows[start:start + size]
+        start, b = start + size, b + 1
+        win = dz.dashpot_window(spec, req, km, grid, sel, np.zeros(sel.size))
+        good = np.nonzero(win["feasible"])[0]
+        s = sel[good]
+        cands = [dz.Candidate(float(m[i]), {}, 0.0, 0.0, float(win["f"][g]), float(m[i] + c[i]),
+                              float(win["settling"][g]), float(win["f_lo"][g]),
+                              float(win["f_hi"][g]), float(c[i]))
+                 for i, g in zip(s, good, strict=True)]
+        visited = [int(first + g + 1) for g in good]
+        yield ({"pendulum_mass": m[s], "central_mass": np.where(c[s] > 0, c[s], np.nan),
+                "free_half_length": np.full(s.size, np.nan), "dashpot": win["f"][good]},
+               cands, visited)
+
+
+def robust_search(spec: Spec, req: Requirements):
+    """The least-objective candidate that holds every check over its tolerance box (corners
+    first, then the whole box, :func:`worst_case`): ``(Candidate, stats, worst case)``; raises
+    :class:`InfeasibleError` when none does."""
+    stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0,
+             "inner_maximisations": 0, "rejected_inside_the_box": 0}
+    batches = spring_batches if spec.governor.spring is not None else dead_weight_batches
+    failing: dict[tuple[str, str], int] = {}
+    for dcols, cands, visited in batches(spec, req):
+        if stats["nominal_feasible_checked"] >= MAX_CHECKED:
+            break
+        if not cands:
+            continue
+        n = len(cands)
         if spec.engine is None or not spec.load_changes:
-            dcols["dashpot"] = np.full(s.size, np.nan)
+            dcols["dashpot"] = np.full(n, np.nan)
         box = candidate_box(spec, req, dcols)
         finite = np.all([np.isfinite(v) for v in box.fields.values()], axis=0) \
-            if box.fields else np.ones(s.size, bool)
-        stats["nominal_feasible_checked"] += int(s.size)
+            if box.fields else np.ones(n, bool)
+        stats["nominal_feasible_checked"] += n
         if not finite.any():  # outside the tolerance tables: not certifiable
             continue
         frame, *_, signs, _ = corners(spec, req, {k: v[finite] for k, v in dcols.items()},
@@ -285,36 +352,31 @@ def robust_search(spec: Spec, req: Requirements):
         ok_f, _ = corner_verdict(frame, int(finite.sum()), len(signs), n_nut)
         for name, count in failures(frame, int(finite.sum()), len(signs), n_nut).items():
             failing[(name, "at a corner")] = failing.get((name, "at a corner"), 0) + count
-        ok = np.zeros(s.size, bool)
+        ok = np.zeros(n, bool)
         ok[finite] = ok_f
         for j in np.nonzero(ok)[0]:  # in objective order: the whole box, not only its corners
-            i, g = s[j], good[j]
-            one = {k: v[j:j + 1] for k, v in dcols.items()}
-            wc = worst_case(spec, req, one, Box({k: v[j:j + 1] for k, v in box.fields.items()},
-                                                box.torque), stop_on_failure=True)
-            stats["inner_maximisations"] = stats.get("inner_maximisations", 0) + int(
-                bool(wc["not_monotone"]))
+            wc = worst_case(spec, req, {k: v[j:j + 1] for k, v in dcols.items()},
+                            Box({k: v[j:j + 1] for k, v in box.fields.items()}, box.torque),
+                            stop_on_failure=True)
+            stats["inner_maximisations"] += int(bool(wc["not_monotone"]))
             if not wc["holds"]:
+                stats["rejected_inside_the_box"] += 1
                 for name in failures(wc["frame"], len(wc["frame"]), 1, 1):
                     key = (name, "inside the box")
                     failing[key] = failing.get(key, 0) + 1
                 continue
-            stats["candidates_visited"] = int(first + g + 1)
-            cand = dz.Candidate(float(km.m[rows[i], 0]),
-                                {k: float(v[cols[i]]) for k, v in cat.fields.items()},
-                                float(cat.kappa[cols[i]]), float(l0[i]), float(win["f"][g]),
-                                float(values[i]), float(win["settling"][g]),
-                                float(win["f_lo"][g]), float(win["f_hi"][g]),
-                                float(km.central[rows[i], 0]))
-            return cand, stats, wc
+            stats["candidates_visited"] = visited[j]
+            return cands[j], stats, wc
     worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
-    which = "; ".join(f"'{k}' fails {where} for {v}" for (k, where), v in worst) or \
-        "none is within the EN 15800 / EN 10270 tables"
+    which = "; ".join(f"'{k}' fails {where} for {v}" for (k, where), v in worst) or (
+        "at some corner no setting of the fitter's makes every check hold at once"
+        if stats["corner_evaluations"] else "none is within the EN 15800 / EN 10270 tables")
     raise InfeasibleError(
         f"{spec.path}: infeasible: requirements.robust_*: no candidate holds every check over "
         f"its tolerance box ({stats['nominal_feasible_checked']} candidates feasible at nominal "
         f"values checked best first, at most {MAX_CHECKED}: {which}); narrow the tolerances, "
-        f"add requirements.adjusting_nut, or widen the bounds")
+        + ("add requirements.adjusting_nut, " if spec.governor.spring is not None else "")
+        + "or widen the bounds (or the speed range)")
 
 
 def failures(frame, n: int, n_corners: int, n_nut: int) -> dict:
@@ -378,6 +440,7 @@ def robust_design(spec: Spec):
     each check beside its nominal value, the adjusting nut's range and nominal setting, the
     Monte-Carlo verification and the cost against the nominal optimum."""
     req = dz.requirements(spec)
+    supported(spec, req)
     nominal_req = nominal_requirements(req)
     t0 = time.perf_counter()
     nominal = dz.design(replace(spec, requirements=nominal_req))
@@ -498,9 +561,11 @@ def speed_band(spec: Spec, frame) -> dict:
 
     x = statics.configurations(spec)
     gov = spec.governor
-    col = {k: frame[c].to_numpy(dtype=float)[:, None] for k, c in (
-        ("m", f"{gov.mass_key}_mass_kg"), ("kappa", "stiffness_N_per_m"),
-        ("l0", f"{gov.free_length_key}_m"), ("central", "central_mass_kg"))}
+    keys = (("m", f"{gov.mass_key}_mass_kg"), ("kappa", "stiffness_N_per_m"),
+            ("l0", f"{gov.free_length_key}_m"), ("central", "central_mass_kg"))
+    # a dead-weight governor's frame has no spring columns: no spring
+    col = {k: (frame[c].to_numpy(dtype=float) if c in frame else np.zeros(len(frame)))[:, None]
+           for k, c in keys}
     with np.errstate(invalid="ignore"):
         w = np.sqrt(statics.omega_squared(spec, x[None, :], col["m"], col["kappa"], col["l0"],
                                           np.nan_to_num(col["central"])))
