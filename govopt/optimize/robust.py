@@ -57,7 +57,10 @@ NUT_SETTINGS = 9
 #: column: each level is one bulk evaluation)
 TORQUE_LEVELS = 11
 #: batches of candidates evaluated at their corners, and the most checked before giving up
-BATCHES = (8, 32, 128)
+BATCHES = (8, 64, 256)
+#: the Monte-Carlo's failing samples are adjusted by the fitter in this many groups of settings,
+#: least change first (a sample fixed by a small change is not tried at the others)
+ADJUSTMENT_GROUPS = 3
 MAX_CHECKED = 1024
 #: the search bounds' rows (limits of the catalogue search, not of a made part)
 BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diameter <= max",
@@ -382,14 +385,9 @@ def robust_search(spec: Spec, req: Requirements):
 def failures(frame, n: int, n_corners: int, n_nut: int) -> dict:
     """Per robust check, on how many of ``n`` candidates it fails at some corner whatever the
     nut's setting (for the diagnosis)."""
-    out = {}
-    for c in robust_checks(frame):
-        p = frame[passed_column(c)]
-        bad = (~(p.isna() | (p == True))).to_numpy(dtype=bool)  # noqa: E712
-        count = int(bad.reshape(n, n_corners, n_nut).all(axis=2).any(axis=1).sum())
-        if count:
-            out[c] = count
-    return out
+    bad = check_margins(frame) < PASS_TOL
+    count = bad.reshape(n, n_corners, n_nut, -1).all(axis=2).any(axis=1).sum(axis=0)
+    return {c: int(k) for c, k in zip(robust_checks(frame), count, strict=True) if k}
 
 
 def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
@@ -413,16 +411,18 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     frame = _evaluate(spec, req, rows, torque)
     ok = holds(frame)
     adjusted = 0
-    if (req.adjusting_nut > 0 or req.dashpot_valve > 0) and not ok.all():
-        bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones
-        nut, valve = (x[1:] for x in nut_settings(req))
-        rep = {k: np.repeat(v[bad], nut.size) for k, v in rows.items()}
-        rep["free_half_length"] = rep["free_half_length"] + np.tile(nut, bad.size)
-        rep["dashpot"] = rep["dashpot"] * np.tile(valve, bad.size)
-        fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], nut.size))) \
-            .reshape(bad.size, nut.size).any(axis=1)
+    nut, valve = (x[1:] for x in nut_settings(req))
+    for part in [p for p in np.array_split(np.arange(nut.size), ADJUSTMENT_GROUPS) if p.size]:
+        bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones, least change first
+        if bad.size == 0:
+            break
+        rep = {k: np.repeat(v[bad], part.size) for k, v in rows.items()}
+        rep["free_half_length"] = rep["free_half_length"] + np.tile(nut[part], bad.size)
+        rep["dashpot"] = rep["dashpot"] * np.tile(valve[part], bad.size)
+        fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], part.size))) \
+            .reshape(bad.size, part.size).any(axis=1)
         ok[bad] = fixed
-        adjusted = int(fixed.sum())
+        adjusted += int(fixed.sum())
     k = int(ok.sum())
     lo, hi = wilson(k, n)
     # the checks that fail in the sample before any adjustment (a failure inside a box whose
@@ -483,8 +483,7 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> di
         wc = worst_case(spec, req, cols, box)
     at, dims, pts = wc["frame"], wc["dims"], wc["points"]
     nut, valve = nut_settings(req)
-    nominal = _evaluate(spec, req, cols, np.zeros(1))
-    *_, nominal_setting = at_points(spec, req, cols, box, np.zeros((1, len(dims))))
+    nominal = at.iloc[:1]  # nominal parts, at the fitter's setting for them
     evaluated = {c.name: c for c in checks}
     checks = []
     for j, name in enumerate(robust_checks(at)):
@@ -513,7 +512,7 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> di
               else f"{spec.governor.mass_key}_mass_kg" if k == "pendulum_mass"
               else f"{k}_kg" if k.endswith("mass") else f"{k}_{damping}": float(v[0])
               for k, v in box.fields.items() if v[0] > 0}
-    s0 = int(nominal_setting[0])
+    s0 = int(wc["setting"][0])
     return {
         "tolerances": {"spring_grade": req.robust_spring_grade,
                        "dashpot_fraction": req.robust_dashpot,
@@ -705,20 +704,22 @@ def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
     tolerances it is monotone in held at that point's faces. ``stop_on_failure``: return at the
     first point where a check fails (a search's candidate is then rejected).
 
-    Returns ``dims``; every evaluated ``points`` (half-widths) with its ``frame`` row (at the
-    fitter's setting), ``margins`` (:func:`check_margins`), ``setting`` index and ``found_by``
-    ("corner", "edge", "inner maximisation"); per check the tolerances it is not monotone in
-    (``not_monotone``); and ``holds``: every robust check holds at every point."""
+    Returns ``dims``; every evaluated ``points`` (half-widths; the first, 0, nominal parts) with
+    its ``frame`` row (at the fitter's setting), ``margins`` (:func:`check_margins`),
+    ``setting`` index and ``found_by`` ("nominal", "corner", "edge", "inner maximisation");
+    per check the tolerances it is not monotone in (``not_monotone``); and ``holds``: every
+    robust check holds at every point."""
     import pandas as pd
 
     dims = dimensions(box)
     k = len(dims)
-    grid, along = edges(k) if k else (np.zeros((1, 1, 0)), np.zeros(1, int))
-    flat = grid.reshape(-1, k)
+    grid, along = edges(k) if k else (np.zeros((0, len(EDGE_POINTS), 0)), np.zeros(0, int))
+    flat = np.vstack([np.zeros((1, k)), grid.reshape(-1, k)])  # nominal parts first
     frame, margins, setting = at_points(spec, req, cols, box, flat)
-    corner = np.all(np.abs(flat) == 1.0, axis=1)
+    corner = np.all(np.abs(flat[1:]) == 1.0, axis=1)
     seen = {"points": [flat], "frame": [frame], "margins": [margins], "setting": [setting],
-            "found_by": ["corner" if c else "edge" for c in corner]}
+            "found_by": ["nominal"] + ["corner" if c else "edge" for c in corner]}
+    flat, margins = flat[1:], margins[1:]  # the edges
 
     def result(ok: bool) -> dict:
         return {"dims": dims, "points": np.vstack(seen["points"]),
@@ -728,7 +729,7 @@ def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
                 "not_monotone": not_monotone, "holds": ok}
 
     not_monotone: dict[str, list[str]] = {}
-    ok = bool(np.all(margins >= PASS_TOL))
+    ok = bool(np.all(seen["margins"][0] >= PASS_TOL))  # nominal parts and the edges
     if k == 0 or (stop_on_failure and not ok):
         return result(ok)
     names = robust_checks(frame)
