@@ -17,20 +17,25 @@ valve, within ``+-dashpot_valve`` of the design's setting (a fraction; the setti
 ``robust_dashpot`` applies on top).
 
 Method. The nominal search's candidates (statics screen and spring checks,
-:func:`govopt.optimize.design.spring_screen`; dash-pot in the centre of its window,
+:func:`govopt.optimize.design.spring_screen`, or a dead-weight governor's weight pairs,
+:func:`govopt.optimize.design.dead_weight_candidates`; dash-pot in the centre of its window,
 :func:`govopt.optimize.design.dashpot_window`) are visited in objective order, and each one that
-is feasible at nominal values is evaluated at every corner of its tolerance box (the checks are
-taken monotone in each tolerance, so the worst case is at a corner) by the bulk evaluator
-(:func:`govopt.bulk.evaluate_many`, vectorised over candidates x corners). With an adjusting
-nut or valve, a corner holds if some setting on a grid over their ranges makes every check hold
-(the fitter sets them for the parts at hand). The first candidate that holds at every corner is
-the robust optimum (the least objective among the catalogue's candidates that do; at most
-:data:`MAX_CHECKED` candidates feasible at nominal values are checked, then the diagnosis names
-the check that fails at a corner most often). It is then verified by a seeded Monte-Carlo
-sample, uniform within the box (every part anywhere within its tolerance), through the same
-evaluator: the probability that every check holds, with its 95 % Wilson interval
-(:func:`govopt.study.wilson`), and the checks that fail in the sample - where the corners hold
-and the sample does not, a check is not monotone in a tolerance (no inner maximisation is done).
+is feasible at nominal values is evaluated at every corner of its tolerance box by the bulk
+evaluator (:func:`govopt.bulk.evaluate_many`, vectorised over candidates x corners). With an
+adjusting nut or valve, a point of the box holds if some setting on a grid over their ranges
+makes every check hold (the fitter sets them for the parts at hand). A candidate that holds at
+every corner is then taken over the whole box (:func:`worst_case`): every edge of the box is
+probed at its quarter points; a check whose margin is monotone along every edge in every
+tolerance has its worst case at a corner, and one that is not (the irregularity in the flying
+mass, for one) is minimised over the tolerances it is not monotone in by a bounded quasi-Newton
+search (L-BFGS-B) from its worst probed point - the inner maximisation of its violation. The
+first candidate that holds over its box is the robust optimum (the least objective among the
+catalogue's candidates that do; at most :data:`MAX_CHECKED` candidates feasible at nominal
+values are checked, then the diagnosis names the check that fails most often, at a corner or
+inside the box). It is then verified by a seeded Monte-Carlo sample, uniform within the box
+(every part anywhere within its tolerance), through the same evaluator: the probability that
+every check holds, with its 95 % Wilson interval (:func:`govopt.study.wilson`), and the checks
+that fail in the sample.
 
 The checks of the search bounds (``pendulum mass >= min`` ...) are not requirements on a made
 part and are left out of the worst case.
@@ -553,9 +558,9 @@ def worst_row(margin, value, found_by, sense: str) -> int:
 
 def speed_band(spec: Spec, frame) -> dict:
     """The equilibrium speed over the configurations (Hamabe eq. 12 by virtual work,
-    :func:`govopt.analysis.statics.omega_squared`) at nominal values and its least and largest
-    over the designs of ``frame`` (the box's corners, each at the fitter's setting): the speed
-    band the tolerances give, rad/s, against the configuration (the type's unit)."""
+    :func:`govopt.analysis.statics.omega_squared`): its least and largest over the designs of
+    ``frame`` (the points of the box evaluated, each at the fitter's setting): the speed band
+    the tolerances give, rad/s, against the configuration (the type's unit)."""
     from ..analysis import statics
 
     x = statics.configurations(spec)

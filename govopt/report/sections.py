@@ -523,6 +523,11 @@ def robustness(rob) -> list[Table]:
         else:
             rows.append([label, "", "not adjusted by the fitter"])
     rows.append(["corners of the box evaluated", "", cell(rob.get("corners"))])
+    if rob.get("points_evaluated") is not None:  # corners, edges and inner maximisations
+        rows.append(["points of the box evaluated", "", cell(rob.get("points_evaluated"))])
+    bent = [f"{c['check']} ({', '.join(c['not_monotone_in'])})"
+            for c in rob.get("checks") or [] if c.get("not_monotone_in")]
+    rows.append(["checks not monotone in a tolerance", "", "; ".join(bent) or "none"])
     band = rob.get("speed_band") or {}
     if band.get("lowest_rad_s"):
         rpm = 30.0 / math.pi
