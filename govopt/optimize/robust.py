@@ -211,8 +211,8 @@ def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
     its candidate, corner and nut indices (flat arrays), and the corners' sign table."""
     names = box.active()
     dims = names + (["torque_slope"] if box.torque > 0 else [])
-    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=len(dims)))).reshape(-1,
-                                                                                     len(dims))
+    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=len(dims))),
+                     dtype=float).reshape(2 ** len(dims), len(dims))  # one, empty, without any
     nut, valve = nut_settings(req)
     n = len(cols["pendulum_mass"])
     cand, corner, k = (a.ravel() for a in np.meshgrid(np.arange(n), np.arange(len(signs)),
@@ -719,7 +719,8 @@ def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
     dims = dimensions(box)
     k = len(dims)
     grid, along = edges(k) if k else (np.zeros((0, len(EDGE_POINTS), 0)), np.zeros(0, int))
-    flat = np.vstack([np.zeros((1, k)), grid.reshape(-1, k)])  # nominal parts first
+    flat = np.vstack([np.zeros((1, k)), grid.reshape(grid.shape[0] * grid.shape[1], k)])
+    # (nominal parts first)
     frame, margins, setting = at_points(spec, req, cols, box, flat)
     corner = np.all(np.abs(flat[1:]) == 1.0, axis=1)
     seen = {"points": [flat], "frame": [frame], "margins": [margins], "setting": [setting],
