@@ -165,6 +165,9 @@ ZERO_OK = {
     "k2_margin": "k^2 within (0, omega0^2) itself", "surge_detuning": "no detuning asked",
     "overtravel": "none", "inactive_turns": "none", "initial_tension": "none",
     "extension_angle": "no extension", "ball_spring_tension": "unloaded at radius_inner",
+    "robust_dashpot": "no tolerance", "robust_masses": "no tolerance",
+    "robust_torque_slope": "no tolerance", "adjusting_nut": "not adjusted",
+    "dashpot_valve": "not adjusted",
 }
 
 

@@ -838,6 +838,26 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     ratio of the band's ends; the masses set its level (``M/m``) and, against friction, its
     width. With an engine and load changes the dash-pot is designed as for spring governors.
     """
+    grid, km, rows, m, c, stats = dead_weight_candidates(spec, req)
+    for part in _batches(rows.size, 64):
+        sel, start = rows[part], part.start
+        win = dashpot_window(spec, req, km, grid, sel, np.zeros(sel.size))
+        if np.any(win["feasible"]):
+            j = int(np.argmax(win["feasible"]))
+            i = sel[j]
+            stats["dynamics_checked"] = int(start + j + 1)
+            return Candidate(float(m[i]), {}, 0.0, 0.0, float(win["f"][j]),
+                             float(m[i] + c[i]), float(win["settling"][j]),
+                             float(win["f_lo"][j]), float(win["f_hi"][j]), float(c[i])), stats
+    stats["dynamics_checked"] = int(rows.size)
+    raise InfeasibleError(_dynamics_conflict(spec, req, stats))
+
+
+def dead_weight_candidates(spec: Spec, req: Requirements):
+    """The (ball, central) weight pairs of a dead-weight governor that meet the statics
+    requirements (:func:`dead_weight_search`), least moving mass first: ``(grid, km, rows, m,
+    c, stats)``, ``km`` the kappa-free model :func:`dashpot_window` takes (rows of ``m``, ``c``).
+    Raises :class:`InfeasibleError` with the diagnosis when none does."""
     gov = spec.governor
     grid = Grid.build(spec)
     m, c = masses(req)
@@ -856,19 +876,7 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
                     Affine(0.0 * w2, 0.0 * w2), Affine(0.0 * m[:, None], 0.0 * m[:, None]),
                     inertia, c[:, None])
     rows = np.nonzero(ok)[0]
-    rows = rows[np.argsort(m[rows] + c[rows], kind="stable")]
-    for part in _batches(rows.size, 64):
-        sel, start = rows[part], part.start
-        win = dashpot_window(spec, req, km, grid, sel, np.zeros(sel.size))
-        if np.any(win["feasible"]):
-            j = int(np.argmax(win["feasible"]))
-            i = sel[j]
-            stats["dynamics_checked"] = int(start + j + 1)
-            return Candidate(float(m[i]), {}, 0.0, 0.0, float(win["f"][j]),
-                             float(m[i] + c[i]), float(win["settling"][j]),
-                             float(win["f_lo"][j]), float(win["f_hi"][j]), float(c[i])), stats
-    stats["dynamics_checked"] = int(rows.size)
-    raise InfeasibleError(_dynamics_conflict(spec, req, stats))
+    return grid, km, rows[np.argsort(m[rows] + c[rows], kind="stable")], m, c, stats
 
 
 def _dead_weight_statics(spec: Spec, req: Requirements, grid: Grid, m, c):

@@ -17,20 +17,25 @@ valve, within ``+-dashpot_valve`` of the design's setting (a fraction; the setti
 ``robust_dashpot`` applies on top).
 
 Method. The nominal search's candidates (statics screen and spring checks,
-:func:`govopt.optimize.design.spring_screen`; dash-pot in the centre of its window,
+:func:`govopt.optimize.design.spring_screen`, or a dead-weight governor's weight pairs,
+:func:`govopt.optimize.design.dead_weight_candidates`; dash-pot in the centre of its window,
 :func:`govopt.optimize.design.dashpot_window`) are visited in objective order, and each one that
-is feasible at nominal values is evaluated at every corner of its tolerance box (the checks are
-taken monotone in each tolerance, so the worst case is at a corner) by the bulk evaluator
-(:func:`govopt.bulk.evaluate_many`, vectorised over candidates x corners). With an adjusting
-nut or valve, a corner holds if some setting on a grid over their ranges makes every check hold
-(the fitter sets them for the parts at hand). The first candidate that holds at every corner is
-the robust optimum (the least objective among the catalogue's candidates that do; at most
-:data:`MAX_CHECKED` candidates feasible at nominal values are checked, then the diagnosis names
-the check that fails at a corner most often). It is then verified by a seeded Monte-Carlo
-sample, uniform within the box (every part anywhere within its tolerance), through the same
-evaluator: the probability that every check holds, with its 95 % Wilson interval
-(:func:`govopt.stats.wilson`), and the checks that fail in the sample - where the corners hold
-and the sample does not, a check is not monotone in a tolerance (no inner maximisation is done).
+is feasible at nominal values is evaluated at every corner of its tolerance box by the bulk
+evaluator (:func:`govopt.bulk.evaluate_many`, vectorised over candidates x corners). With an
+adjusting nut or valve, a point of the box holds if some setting on a grid over their ranges
+makes every check hold (the fitter sets them for the parts at hand). A candidate that holds at
+every corner is then taken over the whole box (:func:`worst_case`): every edge of the box is
+probed at its quarter points; a check whose margin is monotone along every edge in every
+tolerance has its worst case at a corner, and one that is not (the irregularity in the flying
+mass, for one) is minimised over the tolerances it is not monotone in by a bounded quasi-Newton
+search (L-BFGS-B) from its worst probed point - the inner maximisation of its violation. The
+first candidate that holds over its box is the robust optimum (the least objective among the
+catalogue's candidates that do; at most :data:`MAX_CHECKED` candidates feasible at nominal
+values are checked, then the diagnosis names the check that fails most often, at a corner or
+inside the box). It is then verified by a seeded Monte-Carlo sample, uniform within the box
+(every part anywhere within its tolerance), through the same evaluator: the probability that
+every check holds, with its 95 % Wilson interval (:func:`govopt.stats.wilson`), and the checks
+that fail in the sample.
 
 The checks of the search bounds (``pendulum mass >= min`` ...) are not requirements on a made
 part and are left out of the worst case.
@@ -45,6 +50,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..bulk import PASS_TOL, margin_column, passed_column, value_column
 from ..errors import InfeasibleError
 from ..spec import Design, Requirements, Spec
 from ..stats import wilson
@@ -57,7 +63,10 @@ NUT_SETTINGS = 9
 #: column: each level is one bulk evaluation)
 TORQUE_LEVELS = 11
 #: batches of candidates evaluated at their corners, and the most checked before giving up
-BATCHES = (8, 32, 128)
+BATCHES = (8, 64, 256)
+#: the Monte-Carlo's failing samples are adjusted by the fitter in this many groups of settings,
+#: least change first (a sample fixed by a small change is not tried at the others)
+ADJUSTMENT_GROUPS = 3
 MAX_CHECKED = 1024
 #: the search bounds' rows (limits of the catalogue search, not of a made part)
 BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diameter <= max",
@@ -177,13 +186,8 @@ def robust_checks(frame) -> list[str]:
 def holds(frame) -> np.ndarray:
     """Rows where every robust check holds (a check that does not apply holds; an error row
     does not)."""
-    from ..bulk import passed_column
-
-    ok = (frame["status"] != "error").to_numpy(dtype=bool).copy()
-    for c in robust_checks(frame):
-        p = frame[passed_column(c)]
-        ok = ok & (p.isna() | (p == True)).to_numpy(dtype=bool)  # noqa: E712 (nullable booleans)
-    return ok
+    error = (frame["status"] == "error").to_numpy(dtype=bool)
+    return ~error & np.all(check_margins(frame) >= PASS_TOL, axis=1)
 
 
 def nut_settings(req: Requirements):
@@ -208,8 +212,8 @@ def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
     its candidate, corner and nut indices (flat arrays), and the corners' sign table."""
     names = box.active()
     dims = names + (["torque_slope"] if box.torque > 0 else [])
-    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=len(dims)))).reshape(-1,
-                                                                                     len(dims))
+    signs = np.array(list(itertools.product((-1.0, 1.0), repeat=len(dims))),
+                     dtype=float).reshape(2 ** len(dims), len(dims))  # one, empty, without any
     nut, valve = nut_settings(req)
     n = len(cols["pendulum_mass"])
     cand, corner, k = (a.ravel() for a in np.meshgrid(np.arange(n), np.arange(len(signs)),
@@ -240,15 +244,40 @@ def _design_columns(cat, rows, cols, l0, km, f) -> dict:
     return out
 
 
-def robust_search(spec: Spec, req: Requirements):
-    """The least-objective candidate that holds at every corner of its tolerance box:
-    ``(Candidate, stats)``; raises :class:`InfeasibleError` when none does."""
-    if spec.governor.spring is None:
-        raise InfeasibleError(f"{spec.path}: requirements.robust_*: a robust design is for "
-                              "spring governors (a dead-weight type's masses alone: not yet)")
+def supported(spec: Spec, req: Requirements) -> None:
+    """Raise a one-line :class:`InfeasibleError` for a robust design the search cannot make:
+    a dynamic objective, or a tolerance the governor does not have."""
+    gov = spec.governor
     if req.objective not in ("moving_mass", "spring_mass"):
-        raise InfeasibleError(f"{spec.path}: requirements.objective: a robust design (robust_* "
-                              f"keys) minimises the moving or spring mass, not {req.objective}")
+        what = req.objective.replace("_", " ")
+        raise InfeasibleError(
+            f"{spec.path}: requirements.objective: a robust design (robust_* keys) minimises "
+            f"the moving or spring mass, not the {what} (it moves with the dash-pot setting "
+            "the box varies): minimise a mass and bound the "
+            f"{what} by requirements.max_{req.objective}")
+    if gov.spring is None:
+        for key, on in (("robust_spring_grade", req.robust_spring_grade is not None),
+                        ("adjusting_nut", req.adjusting_nut > 0)):
+            if on:
+                raise InfeasibleError(
+                    f"{spec.path}: requirements.{key}: a {gov.type_name} governor has no spring "
+                    "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+    elif gov.spring == "leaf" and req.robust_spring_grade is not None:
+        raise InfeasibleError(
+            f"{spec.path}: requirements.robust_spring_grade: EN 15800 tolerances are for "
+            "helical springs, not a leaf spring: tolerance the masses and the dash-pot instead")
+    if (req.dashpot_valve > 0 or req.robust_dashpot > 0) and (
+            spec.engine is None or not spec.load_changes):
+        key = "dashpot_valve" if req.dashpot_valve > 0 else "robust_dashpot"
+        raise InfeasibleError(f"{spec.path}: requirements.{key}: no dash-pot is designed "
+                              "without [engine] and [[load_change]]: drop the key or add them")
+
+
+def spring_batches(spec: Spec, req: Requirements):
+    """A spring governor's candidates feasible at nominal values, in objective order, in
+    batches (:data:`BATCHES`): ``(design columns, candidates)``, the statics screen and spring
+    checks of the nominal search (:func:`govopt.optimize.design.spring_screen`) with the dash-pot
+    in its window (:func:`govopt.optimize.design.dashpot_window`)."""
     dz.check_grids(spec, req)
     grid, km, lo, hi, parts = dz.statics_window(spec, req)
     if not np.any(lo <= hi):
@@ -258,10 +287,8 @@ def robust_search(spec: Spec, req: Requirements):
     values = dz.objective_values(req, km.m[rows, 0], cat.mass[cols],
                                  central=km.central[rows, 0])
     order = np.argsort(values, kind="stable")
-    stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0}
-    failing: dict[str, int] = {}
     start, b = 0, 0
-    while start < order.size and stats["nominal_feasible_checked"] < MAX_CHECKED:
+    while start < order.size:
         size = BATCHES[min(b, len(BATCHES) - 1)]
         first, sel = start, order[start:start + size]
         start, b = start + size, b + 1
@@ -270,16 +297,60 @@ def robust_search(spec: Spec, req: Requirements):
         win = dz.dashpot_window(spec, req, km, grid, rows[sel], cat.kappa[cols[sel]],
                                 fatigue=fat)
         good = np.nonzero(win["feasible"])[0]
-        if good.size == 0:
-            continue
         s = sel[good]
-        dcols = _design_columns(cat, rows[s], cols[s], l0[s], km, win["f"][good])
+        cands = [dz.Candidate(float(km.m[rows[i], 0]),
+                              {k: float(v[cols[i]]) for k, v in cat.fields.items()},
+                              float(cat.kappa[cols[i]]), float(l0[i]), float(win["f"][g]),
+                              float(values[i]), float(win["settling"][g]),
+                              float(win["f_lo"][g]), float(win["f_hi"][g]),
+                              float(km.central[rows[i], 0])) for i, g in zip(s, good, strict=True)]
+        visited = [int(first + g + 1) for g in good]
+        yield _design_columns(cat, rows[s], cols[s], l0[s], km, win["f"][good]), cands, visited
+
+
+def dead_weight_batches(spec: Spec, req: Requirements):
+    """A dead-weight governor's (ball, central) weight pairs feasible at nominal values, least
+    moving mass first, in batches, as :func:`spring_batches` gives them
+    (:func:`govopt.optimize.design.dead_weight_candidates`, the dash-pot in its window)."""
+    grid, km, rows, m, c, _ = dz.dead_weight_candidates(spec, req)
+    start, b = 0, 0
+    while start < rows.size:
+        size = BATCHES[min(b, len(BATCHES) - 1)]
+        first, sel = start, rows[start:start + size]
+        start, b = start + size, b + 1
+        win = dz.dashpot_window(spec, req, km, grid, sel, np.zeros(sel.size))
+        good = np.nonzero(win["feasible"])[0]
+        s = sel[good]
+        cands = [dz.Candidate(float(m[i]), {}, 0.0, 0.0, float(win["f"][g]), float(m[i] + c[i]),
+                              float(win["settling"][g]), float(win["f_lo"][g]),
+                              float(win["f_hi"][g]), float(c[i]))
+                 for i, g in zip(s, good, strict=True)]
+        visited = [int(first + g + 1) for g in good]
+        yield ({"pendulum_mass": m[s], "central_mass": np.where(c[s] > 0, c[s], np.nan),
+                "free_half_length": np.full(s.size, np.nan), "dashpot": win["f"][good]},
+               cands, visited)
+
+
+def robust_search(spec: Spec, req: Requirements):
+    """The least-objective candidate that holds every check over its tolerance box (corners
+    first, then the whole box, :func:`worst_case`): ``(Candidate, stats, worst case)``; raises
+    :class:`InfeasibleError` when none does."""
+    stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0,
+             "inner_maximisations": 0, "rejected_inside_the_box": 0}
+    batches = spring_batches if spec.governor.spring is not None else dead_weight_batches
+    failing: dict[tuple[str, str], int] = {}
+    for dcols, cands, visited in batches(spec, req):
+        if stats["nominal_feasible_checked"] >= MAX_CHECKED:
+            break
+        if not cands:
+            continue
+        n = len(cands)
         if spec.engine is None or not spec.load_changes:
-            dcols["dashpot"] = np.full(s.size, np.nan)
+            dcols["dashpot"] = np.full(n, np.nan)
         box = candidate_box(spec, req, dcols)
         finite = np.all([np.isfinite(v) for v in box.fields.values()], axis=0) \
-            if box.fields else np.ones(s.size, bool)
-        stats["nominal_feasible_checked"] += int(s.size)
+            if box.fields else np.ones(n, bool)
+        stats["nominal_feasible_checked"] += n
         if not finite.any():  # outside the tolerance tables: not certifiable
             continue
         frame, *_, signs, _ = corners(spec, req, {k: v[finite] for k, v in dcols.items()},
@@ -289,43 +360,40 @@ def robust_search(spec: Spec, req: Requirements):
         n_nut = nut_settings(req)[0].size
         ok_f, _ = corner_verdict(frame, int(finite.sum()), len(signs), n_nut)
         for name, count in failures(frame, int(finite.sum()), len(signs), n_nut).items():
-            failing[name] = failing.get(name, 0) + count
-        ok = np.zeros(s.size, bool)
+            failing[(name, "at a corner")] = failing.get((name, "at a corner"), 0) + count
+        ok = np.zeros(n, bool)
         ok[finite] = ok_f
-        if ok.any():
-            j = int(np.argmax(ok))  # the first in objective order
-            i, g = s[j], good[j]
-            stats["candidates_visited"] = int(first + g + 1)
-            cand = dz.Candidate(float(km.m[rows[i], 0]),
-                                {k: float(v[cols[i]]) for k, v in cat.fields.items()},
-                                float(cat.kappa[cols[i]]), float(l0[i]), float(win["f"][g]),
-                                float(values[i]), float(win["settling"][g]),
-                                float(win["f_lo"][g]), float(win["f_hi"][g]),
-                                float(km.central[rows[i], 0]))
-            return cand, stats
+        for j in np.nonzero(ok)[0]:  # in objective order: the whole box, not only its corners
+            wc = worst_case(spec, req, {k: v[j:j + 1] for k, v in dcols.items()},
+                            Box({k: v[j:j + 1] for k, v in box.fields.items()}, box.torque),
+                            stop_on_failure=True)
+            stats["inner_maximisations"] += int(bool(wc["not_monotone"]))
+            if not wc["holds"]:
+                stats["rejected_inside_the_box"] += 1
+                for name in failures(wc["frame"], len(wc["frame"]), 1, 1):
+                    key = (name, "inside the box")
+                    failing[key] = failing.get(key, 0) + 1
+                continue
+            stats["candidates_visited"] = visited[j]
+            return cands[j], stats, wc
     worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
-    which = "; ".join(f"'{k}' fails at a corner for {v}" for k, v in worst) or \
-        "none is within the EN 15800 / EN 10270 tables"
+    which = "; ".join(f"'{k}' fails {where} for {v}" for (k, where), v in worst) or (
+        "at some corner no setting of the fitter's makes every check hold at once"
+        if stats["corner_evaluations"] else "none is within the EN 15800 / EN 10270 tables")
     raise InfeasibleError(
         f"{spec.path}: infeasible: requirements.robust_*: no candidate holds every check over "
         f"its tolerance box ({stats['nominal_feasible_checked']} candidates feasible at nominal "
         f"values checked best first, at most {MAX_CHECKED}: {which}); narrow the tolerances, "
-        f"add requirements.adjusting_nut, or widen the bounds")
+        + ("add requirements.adjusting_nut, " if spec.governor.spring is not None else "")
+        + "or widen the bounds (or the speed range)")
 
 
 def failures(frame, n: int, n_corners: int, n_nut: int) -> dict:
     """Per robust check, on how many of ``n`` candidates it fails at some corner whatever the
     nut's setting (for the diagnosis)."""
-    from ..bulk import passed_column
-
-    out = {}
-    for c in robust_checks(frame):
-        p = frame[passed_column(c)]
-        bad = (~(p.isna() | (p == True))).to_numpy(dtype=bool)  # noqa: E712
-        count = int(bad.reshape(n, n_corners, n_nut).all(axis=2).any(axis=1).sum())
-        if count:
-            out[c] = count
-    return out
+    bad = check_margins(frame) < PASS_TOL
+    count = bad.reshape(n, n_corners, n_nut, -1).all(axis=2).any(axis=1).sum(axis=0)
+    return {c: int(k) for c, k in zip(robust_checks(frame), count, strict=True) if k}
 
 
 def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
@@ -348,16 +416,18 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     frame = _evaluate(spec, req, rows, torque)
     ok = holds(frame)
     adjusted = 0
-    if (req.adjusting_nut > 0 or req.dashpot_valve > 0) and not ok.all():
-        bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones
-        nut, valve = (x[1:] for x in nut_settings(req))
-        rep = {k: np.repeat(v[bad], nut.size) for k, v in rows.items()}
-        rep["free_half_length"] = rep["free_half_length"] + np.tile(nut, bad.size)
-        rep["dashpot"] = rep["dashpot"] * np.tile(valve, bad.size)
-        fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], nut.size))) \
-            .reshape(bad.size, nut.size).any(axis=1)
+    nut, valve = (x[1:] for x in nut_settings(req))
+    for part in [p for p in np.array_split(np.arange(nut.size), ADJUSTMENT_GROUPS) if p.size]:
+        bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones, least change first
+        if bad.size == 0:
+            break
+        rep = {k: np.repeat(v[bad], part.size) for k, v in rows.items()}
+        rep["free_half_length"] = rep["free_half_length"] + np.tile(nut[part], bad.size)
+        rep["dashpot"] = rep["dashpot"] * np.tile(valve[part], bad.size)
+        fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], part.size))) \
+            .reshape(bad.size, part.size).any(axis=1)
         ok[bad] = fixed
-        adjusted = int(fixed.sum())
+        adjusted += int(fixed.sum())
     k = int(ok.sum())
     lo, hi = wilson(k, n)
     # the checks that fail in the sample before any adjustment (a failure inside a box whose
@@ -375,14 +445,15 @@ def robust_design(spec: Spec):
     each check beside its nominal value, the adjusting nut's range and nominal setting, the
     Monte-Carlo verification and the cost against the nominal optimum."""
     req = dz.requirements(spec)
+    supported(spec, req)
     nominal_req = nominal_requirements(req)
     t0 = time.perf_counter()
     nominal = dz.design(replace(spec, requirements=nominal_req))
     t_nominal = time.perf_counter() - t0
     t0 = time.perf_counter()
-    cand, stats = robust_search(spec, req)
+    cand, stats, wc = robust_search(spec, req)
     res = dz.result_of(spec, req, cand, stats, None)
-    record = robust_record(spec, req, cand, res.checks)
+    record = robust_record(spec, req, cand, res.checks, wc)
     record["monte_carlo"] = monte_carlo(spec, req, design_of(spec, cand))
     t_robust = time.perf_counter() - t0
     unit = res.optimisation["objective"]["unit"]
@@ -403,84 +474,293 @@ def design_of(spec: Spec, cand) -> Design:
                   dashpot=None if math.isnan(cand.f) else cand.f)
 
 
-def robust_record(spec: Spec, req: Requirements, cand, checks=()) -> dict:
-    """The box of the chosen design, the worst case of each check at its corners beside the
-    nominal value (SI; unit, limit and sense from the evaluated ``checks``), and the adjusting
-    nut's range."""
-    from ..bulk import design_arrays, margin_column, passed_column, value_column
+def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> dict:
+    """The box of the chosen design, the worst case of each check over it (:func:`worst_case`,
+    ``wc`` if already found) beside the nominal value (SI; unit, limit and sense from the
+    evaluated ``checks``), where it lies and how it was found, and the fitter's settings: the
+    range the box needs and the setting for nominal parts."""
+    from ..bulk import design_arrays
 
     d = design_of(spec, cand)
     cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}
     box = candidate_box(spec, req, cols)
-    frame, _, _, _, signs, dims = corners(spec, req, cols, box)
+    if wc is None:
+        wc = worst_case(spec, req, cols, box)
+    at, dims, pts = wc["frame"], wc["dims"], wc["points"]
     nut, valve = nut_settings(req)
-    ok, first = corner_verdict(frame, 1, len(signs), nut.size)
-    nominal = _evaluate(spec, req, cols, np.zeros(1))
-    # the worst case: over the corners, each at the setting the fitter uses there
-    use = np.array([c * nut.size + max(int(first[0, c]), 0) for c in range(len(signs))])
-    at = frame.iloc[use].reset_index(drop=True)
+    nominal = at.iloc[:1]  # nominal parts, at the fitter's setting for them
     evaluated = {c.name: c for c in checks}
     checks = []
-    for name in robust_checks(frame):
-        m = at[margin_column(name)].to_numpy(dtype=float)
-        if not np.isfinite(m).any():
+    for j, name in enumerate(robust_checks(at)):
+        m = wc["margins"][:, j]
+        if not np.any(m < np.inf):  # applies nowhere
             continue
-        w = int(np.nanargmin(m))
         c = evaluated.get(name)
+        w = worst_row(m, at[value_column(name)].to_numpy(dtype=float), wc["found_by"],
+                      c.sense if c else "")
+        passed = at[passed_column(name)]
         checks.append({"check": name, "unit": c.unit if c else "",
                        "sense": c.sense if c else "", "limit": c.limit if c else math.nan,
                        "nominal": float(nominal[value_column(name)].iloc[0]),
                        "worst_case": float(at[value_column(name)].iloc[w]),
-                       "worst_margin": float(m[w]),
-                       "worst_corner": {dims[j]: ("+" if signs[w, j] > 0 else "-")
-                                        for j in range(len(dims))},
-                       "holds": bool((at[passed_column(name)].isna()
-                                      | (at[passed_column(name)] == True)).all())})  # noqa: E712
-    used = np.maximum(first[0], 0)
+                       "worst_margin": float(at[margin_column(name)].iloc[w]),
+                       # in half-widths of each tolerance: -1 and +1 are the box's faces
+                       "worst_at": {dims[j]: float(pts[w, j]) for j in range(len(dims))},
+                       "found_by": wc["found_by"][w],
+                       "not_monotone_in": wc["not_monotone"].get(name, []),
+                       "holds": bool((passed.isna() | (passed == True)).all())})  # noqa: E712
+    used = wc["setting"]
     band = speed_band(spec, at)
-    nominal_ok = bool(holds(nominal)[0])  # nominal parts at the nominal setting
+    corner = np.array([f == "corner" for f in wc["found_by"]])
     damping = spec.governor.key_unit("damping")
     halves = {f"{k}_m" if k in ("wire_diameter", "coil_radius", "free_half_length")
               else f"{spec.governor.mass_key}_mass_kg" if k == "pendulum_mass"
               else f"{k}_kg" if k.endswith("mass") else f"{k}_{damping}": float(v[0])
               for k, v in box.fields.items() if v[0] > 0}
+    s0 = int(wc["setting"][0])
     return {
         "tolerances": {"spring_grade": req.robust_spring_grade,
                        "dashpot_fraction": req.robust_dashpot,
                        "masses_fraction": req.robust_masses,
                        "torque_slope_fraction": req.robust_torque_slope,
                        "half_widths": halves, "notes": box_notes(spec, req)},
-        "corners": len(signs), "holds_at_every_corner": bool(ok[0]),
+        "corners": 2 ** len(dims), "points_evaluated": len(at),
+        "holds_at_every_corner": bool(np.all(wc["margins"][corner] >= PASS_TOL)),
+        "holds_over_the_box": bool(wc["holds"]),
         "speed_band": band,
         "checks": checks,
         "adjusting_nut": None if req.adjusting_nut <= 0 else {
             "range_m": [-req.adjusting_nut, req.adjusting_nut],
             "needed_range_m": [float(nut[used].min()), float(nut[used].max())],
-            "nominal_setting_m": 0.0 if nominal_ok else None},
+            "nominal_setting_m": float(nut[s0]),
+            f"{spec.governor.free_length_key}_at_nominal_setting_m":
+                float(cols["free_half_length"][0] + nut[s0])},
         "dashpot_valve": None if req.dashpot_valve <= 0 else {
             f"range_{damping}": [cand.f * (1 - req.dashpot_valve),
                                  cand.f * (1 + req.dashpot_valve)],
             f"needed_range_{damping}": [float(cand.f * valve[used].min()),
                                         float(cand.f * valve[used].max())],
-            f"nominal_setting_{damping}": cand.f if nominal_ok else None},
+            f"nominal_setting_{damping}": float(cand.f * valve[s0])},
     }
+
+
+def worst_row(margin, value, found_by, sense: str) -> int:
+    """The row of the least margin; among rows tied with it (to 1e-12: a margin that is a ratio
+    of forces is the same at every coil diameter) a corner first, then the worst value in the
+    check's sense."""
+    m = np.asarray(margin, dtype=float)
+    tied = np.nonzero(m <= m.min() + 1e-12 * max(1.0, abs(float(m.min()))))[0] \
+        if np.isfinite(m.min()) else np.array([int(np.argmin(m))])
+    sign = -1.0 if sense == "<=" else 1.0
+    key = [(found_by[i] != "corner", sign * np.nan_to_num(value[i]), i) for i in tied]
+    return int(min(key)[2])
 
 
 def speed_band(spec: Spec, frame) -> dict:
     """The equilibrium speed over the configurations (Hamabe eq. 12 by virtual work,
-    :func:`govopt.analysis.statics.omega_squared`) at nominal values and its least and largest
-    over the designs of ``frame`` (the box's corners, each at the fitter's setting): the speed
-    band the tolerances give, rad/s, against the configuration (the type's unit)."""
+    :func:`govopt.analysis.statics.omega_squared`): its least and largest over the designs of
+    ``frame`` (the points of the box evaluated, each at the fitter's setting): the speed band
+    the tolerances give, rad/s, against the configuration (the type's unit)."""
     from ..analysis import statics
 
     x = statics.configurations(spec)
     gov = spec.governor
-    col = {k: frame[c].to_numpy(dtype=float)[:, None] for k, c in (
-        ("m", f"{gov.mass_key}_mass_kg"), ("kappa", "stiffness_N_per_m"),
-        ("l0", f"{gov.free_length_key}_m"), ("central", "central_mass_kg"))}
+    keys = (("m", f"{gov.mass_key}_mass_kg"), ("kappa", "stiffness_N_per_m"),
+            ("l0", f"{gov.free_length_key}_m"), ("central", "central_mass_kg"))
+    # a dead-weight governor's frame has no spring columns: no spring
+    col = {k: (frame[c].to_numpy(dtype=float) if c in frame else np.zeros(len(frame)))[:, None]
+           for k, c in keys}
     with np.errstate(invalid="ignore"):
         w = np.sqrt(statics.omega_squared(spec, x[None, :], col["m"], col["kappa"], col["l0"],
                                           np.nan_to_num(col["central"])))
     unit = "rad" if spec.governor.coordinate == "angle" else "m"
     return {f"configuration_{unit}": x.tolist(), "lowest_rad_s": np.nanmin(w, axis=0).tolist(),
             "highest_rad_s": np.nanmax(w, axis=0).tolist()}
+
+
+# ---------------------------------------------------------------------------------------------
+# The worst case over the box: corners where a check is monotone, an inner maximisation where not
+# ---------------------------------------------------------------------------------------------
+
+#: the points probed along each edge of the box, in half-widths (the ends are its corners)
+EDGE_POINTS = (-1.0, -0.5, 0.0, 0.5, 1.0)
+#: a check's margin that turns back along an edge by more than this is not monotone there
+#: (below it: the evaluator's rounding)
+MONOTONE_TOL = 1e-9
+#: the inner maximisation (:func:`inner_minimum`): its step of the finite-difference gradient
+#: (half-widths) and its iterations
+INNER_STEP = 1e-4
+INNER_ITERATIONS = 12
+
+
+def dimensions(box: Box) -> list[str]:
+    """The box's toleranced quantities (design columns, then ``torque_slope``)."""
+    return box.active() + (["torque_slope"] if box.torque > 0 else [])
+
+
+def at_points(spec: Spec, req: Requirements, cols: dict, box: Box, points):
+    """One design (columns of length 1) made at ``points`` of its box (P x dims, each in
+    half-widths, -1 .. 1) and set by the fitter: at each point the first setting of
+    :func:`nut_settings` (least change first) at which every robust check holds, else the one
+    with the largest least margin (the point fails whatever the fitter does). Returns the
+    evaluated frame (P rows, each at its setting), its :func:`check_margins` and the settings'
+    indices."""
+    points = np.atleast_2d(np.asarray(points, dtype=float))
+    names = box.active()
+    nut, valve = nut_settings(req)
+    p, s = (a.ravel() for a in np.meshgrid(np.arange(len(points)), np.arange(nut.size),
+                                           indexing="ij"))
+    rows = {f: np.repeat(v[:1], p.size) for f, v in cols.items()}
+    for j, name in enumerate(names):
+        rows[name] = rows[name] + points[p, j] * box.fields[name][0]
+    rows["free_half_length"] = rows["free_half_length"] + nut[s]
+    rows["dashpot"] = rows["dashpot"] * valve[s]
+    torque = points[p, -1] * box.torque if box.torque > 0 else np.zeros(p.size)
+    frame = _evaluate(spec, req, rows, torque)
+    margins = check_margins(frame)
+    if nut.size == 1:
+        return frame, margins, np.zeros(len(points), int)
+    least = margins.min(axis=1, initial=np.inf).reshape(len(points), nut.size)
+    ok = least >= PASS_TOL
+    use = np.where(ok.any(axis=1), np.argmax(ok, axis=1), np.argmax(least, axis=1))
+    pick = np.arange(len(points)) * nut.size + use
+    return frame.iloc[pick].reset_index(drop=True), margins[pick], use
+
+
+def check_margins(frame) -> np.ndarray:
+    """The robust checks' relative margins (rows x :func:`robust_checks`), for the worst case:
+    -inf on an error row and where a check fails by its own verdict at a margin >= 0 (so a
+    row holds exactly where every entry is >= :data:`PASS_TOL`), +inf where a check does not
+    apply."""
+    names = robust_checks(frame)
+    out = np.empty((len(frame), len(names)))
+    error = (frame["status"] == "error").to_numpy(dtype=bool)
+    for j, c in enumerate(names):
+        m = frame[margin_column(c)].to_numpy(dtype=float)
+        p = frame[passed_column(c)].to_numpy(dtype=float, na_value=np.nan)  # 1, 0, NaN: n/a
+        m = np.where((p == 0) & ~(m < PASS_TOL), -np.inf,
+                     np.where(p == 1, np.maximum(m, PASS_TOL), m))  # its verdict rules
+        m = np.where(np.isnan(p), np.inf, m)
+        out[:, j] = np.where(error, -np.inf, m)
+    return out
+
+
+def edges(k: int) -> tuple[np.ndarray, np.ndarray]:
+    """Every edge of a k-dimensional box of half-widths, probed at :data:`EDGE_POINTS`:
+    ``(points, dim)``, points (edges x len(EDGE_POINTS) x k) and the dimension each edge runs
+    along."""
+    out, dim = [], []
+    t = np.asarray(EDGE_POINTS)
+    for j in range(k):
+        for rest in itertools.product((-1.0, 1.0), repeat=k - 1):
+            p = np.repeat(np.insert(np.array(rest), j, 0.0)[None, :], t.size, axis=0)
+            p[:, j] = t
+            out.append(p)
+            dim.append(j)
+    return np.array(out).reshape(-1, t.size, k), np.array(dim, dtype=int)
+
+
+def monotone(values, tol: float = MONOTONE_TOL) -> np.ndarray:
+    """Whether each row of ``values`` (along an edge) is monotone, either way, within ``tol``;
+    a row with a NaN (the check does not apply there) counts as monotone.
+
+    >>> monotone(np.array([[0, 1, 2.0], [2, 1, 0.0], [1, 0, 1.0], [0, 0, 0.0]])).tolist()
+    [True, True, False, True]
+    """
+    d = np.diff(np.asarray(values, dtype=float), axis=1)
+    with np.errstate(invalid="ignore"):
+        up, down = np.all(~(d < -tol), axis=1), np.all(~(d > tol), axis=1)
+    return up | down
+
+
+class Failed(Exception):
+    """Raised by a search's function to stop it at the first failing point."""
+
+
+def inner_minimum(fun, start, step: float = INNER_STEP, iterations: int = INNER_ITERATIONS):
+    """A least of ``fun`` over the box ``[-1, 1]^q`` near ``start`` by a bounded quasi-Newton
+    search (L-BFGS-B, scipy.optimize.minimize); ``fun(points)`` evaluates P x q points at once
+    and returns their values (the forward-difference gradient is one call: the point and its q
+    neighbours, stepped inwards at a bound; +-inf, a check that does not apply or an error, is
+    clipped to +-1e3). Returns the point found and its value."""
+    from scipy.optimize import minimize
+
+    def value_and_gradient(t):
+        h = np.where(t + step <= 1.0, step, -step)
+        v = np.asarray(fun(np.vstack([t, t + np.diag(h)])), dtype=float)
+        v = np.clip(np.nan_to_num(v, posinf=1e3, neginf=-1e3), -1e3, 1e3)
+        return float(v[0]), (v[1:] - v[0]) / h
+
+    r = minimize(value_and_gradient, np.clip(np.asarray(start, dtype=float), -1.0, 1.0),
+                 jac=True, method="L-BFGS-B", bounds=[(-1.0, 1.0)] * len(start),
+                 options={"maxiter": iterations})
+    return r.x, float(r.fun)
+
+
+def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
+               stop_on_failure: bool = False) -> dict:
+    """The worst case of one design (columns of length 1) over its box, after the fitter's
+    adjustment.
+
+    The box is probed along every edge (:func:`edges`, the corners included). A check whose
+    margin is monotone along every edge in every tolerance has its worst case at a corner. A
+    check that is not monotone in some tolerances is minimised over those (an inner
+    maximisation of its violation, :func:`inner_minimum`), from its worst probed point, the
+    tolerances it is monotone in held at that point's faces. ``stop_on_failure``: return at the
+    first point where a check fails (a search's candidate is then rejected).
+
+    Returns ``dims``; every evaluated ``points`` (half-widths; the first, 0, nominal parts) with
+    its ``frame`` row (at the fitter's setting), ``margins`` (:func:`check_margins`),
+    ``setting`` index and ``found_by`` ("nominal", "corner", "edge", "inner maximisation");
+    per check the tolerances it is not monotone in (``not_monotone``); and ``holds``: every
+    robust check holds at every point."""
+    import pandas as pd
+
+    dims = dimensions(box)
+    k = len(dims)
+    grid, along = edges(k) if k else (np.zeros((0, len(EDGE_POINTS), 0)), np.zeros(0, int))
+    flat = np.vstack([np.zeros((1, k)), grid.reshape(grid.shape[0] * grid.shape[1], k)])
+    # (nominal parts first)
+    frame, margins, setting = at_points(spec, req, cols, box, flat)
+    corner = np.all(np.abs(flat[1:]) == 1.0, axis=1)
+    seen = {"points": [flat], "frame": [frame], "margins": [margins], "setting": [setting],
+            "found_by": ["nominal"] + ["corner" if c else "edge" for c in corner]}
+    flat, margins = flat[1:], margins[1:]  # the edges
+
+    def result(ok: bool) -> dict:
+        return {"dims": dims, "points": np.vstack(seen["points"]),
+                "frame": pd.concat(seen["frame"], ignore_index=True),
+                "margins": np.vstack(seen["margins"]),
+                "setting": np.concatenate(seen["setting"]), "found_by": seen["found_by"],
+                "not_monotone": not_monotone, "holds": ok}
+
+    not_monotone: dict[str, list[str]] = {}
+    ok = bool(np.all(seen["margins"][0] >= PASS_TOL))  # nominal parts and the edges
+    if k == 0 or (stop_on_failure and not ok):
+        return result(ok)
+    names = robust_checks(frame)
+    for c, name in enumerate(names):
+        bad = ~monotone(np.where(np.isfinite(margins[:, c]), margins[:, c],
+                                 np.nan).reshape(grid.shape[:2]))
+        if not bad.any():
+            continue
+        free = sorted(set(along[bad].tolist()))
+        not_monotone[name] = [dims[j] for j in free]
+        base = flat[int(np.argmin(margins[:, c]))].copy()
+
+        def fun(sub, c=c, base=base, free=free):
+            pts = np.repeat(base[None, :], len(sub), axis=0)
+            pts[:, free] = sub
+            f, m, s = at_points(spec, req, cols, box, pts)
+            for key, v in (("points", pts), ("frame", f), ("margins", m), ("setting", s)):
+                seen[key].append(v)
+            seen["found_by"] += ["inner maximisation"] * len(pts)
+            if stop_on_failure and np.any(m < PASS_TOL):
+                raise Failed
+            return m[:, c]
+
+        try:
+            inner_minimum(fun, base[free])
+        except Failed:
+            return result(False)
+    return result(bool(np.all(np.vstack(seen["margins"]) >= PASS_TOL)))

@@ -166,15 +166,16 @@ def characteristic(res, ax) -> None:
 
 def speed_band(res, ax) -> None:
     """A robust design's speed band under its tolerances: the equilibrium speed at
-    nominal values, and the least and largest over the tolerance box's corners (each at the
-    fitter's setting), against the configuration, with the required band."""
+    nominal values, and the least and largest over the points of the tolerance box evaluated
+    (each at the fitter's setting), against the configuration, with the required band; the
+    title gives what robustness cost in the objective."""
     band = res.optimisation["robust"]["speed_band"]
     st, spec = res.statics, res.spec
     xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
     x, _ = _shown(res, xs)
     lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
     ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
-                    label="over the tolerance box (corners)")
+                    label="over the tolerance box (after the fitter's setting)")
     xn, _ = _shown(res, st.alpha)
     ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
     if spec.speed is not None:
@@ -185,7 +186,10 @@ def speed_band(res, ax) -> None:
     ax.set_xlabel(_config_label(res))
     ax.set_ylabel("speed (rpm)")
     _rad_s_axis(ax)
-    _title(res, ax, "speed band under the tolerances")
+    cost = res.optimisation["robust"].get("cost") or {}
+    more = cost.get("increase_percent")
+    _title(res, ax, "speed band under the tolerances" + (
+        "" if more is None else f" (robustness cost {more:+.3g} %)"))
     ax.legend(loc="upper left")
 
 

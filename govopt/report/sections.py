@@ -477,7 +477,7 @@ def optimisation(res) -> list[Table]:
 
 def robustness(res, rob) -> list[Table]:
     """A robust design's record (:mod:`govopt.optimize.robust`): the tolerance box,
-    the worst case of each check over its corners beside the nominal value, the adjusting nut,
+    the worst case of each check over it beside the nominal value, the adjusting nut,
     the Monte-Carlo verification and what robustness cost."""
     if not isinstance(rob, Mapping):
         return []
@@ -496,6 +496,11 @@ def robustness(res, rob) -> list[Table]:
         else:
             rows.append([label, "", "not adjusted by the fitter"])
     rows.append(["corners of the box evaluated", "", cell(rob.get("corners"))])
+    if rob.get("points_evaluated") is not None:  # corners, edges and inner maximisations
+        rows.append(["points of the box evaluated", "", cell(rob.get("points_evaluated"))])
+    bent = [f"{c['check']} ({', '.join(c['not_monotone_in'])})"
+            for c in rob.get("checks") or [] if c.get("not_monotone_in")]
+    rows.append(["checks not monotone in a tolerance", "", "; ".join(bent) or "none"])
     band = rob.get("speed_band") or {}
     if band.get("lowest_rad_s"):
         rpm = 30.0 / math.pi
@@ -524,12 +529,17 @@ def robustness(res, rob) -> list[Table]:
             nominal, u = shown(c.get("nominal"), c.get("unit", ""))
             worst, _ = shown(c.get("worst_case"), c.get("unit", ""))
             limit, _ = shown(c.get("limit"), c.get("unit", ""))
-            corner = " ".join(f"{k}{v}" for k, v in (c.get("worst_corner") or {}).items())
+            # where, in half-widths of each tolerance: a face as its sign, inside as a number
+            at = " ".join(f"{k}{'+' if v == 1 else '-' if v == -1 else f'{v:+.2g}'}"
+                          for k, v in (c.get("worst_at") or {}).items())
             body.append([c.get("check"), cell(nominal), cell(worst), c.get("sense", ""),
                          cell(limit), u,
-                         cell(100.0 * c.get("worst_margin", float("nan"))), corner,
-                         "PASS" if c.get("holds") else "FAIL"])
-        out.append(Table("Worst case over the tolerance box (corners; after adjustment)",
+                         cell(100.0 * c.get("worst_margin", float("nan"))), at,
+                         c.get("found_by", ""), "PASS" if c.get("holds") else "FAIL"])
+        out.append(Table("Worst case over the tolerance box (after adjustment)",
                          ["check", "nominal", "worst case", "sense", "limit", "unit",
-                          "worst margin (%)", "worst corner", "result"], body))
+                          "worst margin (%)", "worst at", "found by", "result"], body,
+                         ["worst at: in half-widths of each tolerance (+, -: a face of the box); "
+                          "found by: a corner or an edge of the box, or the inner maximisation "
+                          "of a check not monotone in a tolerance"]))
     return out
