@@ -124,7 +124,7 @@ def test_dead_weight_robust_design_holds_at_its_mass_corners(tmp_path):
     the nominal optimum does not (its band is at the spec's edge), so robustness costs."""
     path = _robust_copy(tmp_path, "govopt/specs/porter-design.toml", "robust_masses = 0.005\n")
     spec = govopt.load_spec(path)
-    res = dz.design(spec)
+    res = govopt.design(spec)
     rec = res.optimisation["robust"]
     assert rec["holds_over_the_box"] and rec["monte_carlo"]["probability"] == 1.0
     o = res.optimisation["design"]

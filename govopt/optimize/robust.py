@@ -262,7 +262,7 @@ def supported(spec: Spec, req: Requirements) -> None:
                 raise InfeasibleError(
                     f"{spec.path}: requirements.{key}: a {gov.type_name} governor has no spring "
                     "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
-    elif gov.spring == "leaf" and req.robust_spring_grade is not None:
+    elif not gov.spring_kind.helical and req.robust_spring_grade is not None:
         raise InfeasibleError(
             f"{spec.path}: requirements.robust_spring_grade: EN 15800 tolerances are for "
             "helical springs, not a leaf spring: tolerance the masses and the dash-pot instead")
