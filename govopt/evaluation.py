@@ -38,6 +38,8 @@ def evaluate(spec: Spec, design: Design | None = None) -> Result:
     envelope, surge, bounds) when the spec has ``[requirements]`` or ``[bounds]``.
     """
     design = design or spec.design
+    if design is not spec.design:  # every analysis reads the design evaluated, never the spec's
+        spec = spec.with_design(design)
     try:
         return _evaluate(spec, design)
     except OverflowError:  # Python floats raise where numpy gives inf
@@ -151,7 +153,7 @@ def possible(spec: Spec, sd: statics.SpringDesign) -> None:
     at the mean speed even stretched from zero length."""
     gov = spec.governor
     name = gov.free_length_key.replace("_", " ")
-    _finite(spec, {f"{gov.mass_key} mass": sd.m, "inertia": sd.inertia,
+    _finite(spec, {f"{gov.mass_name} mass": sd.m, "inertia": sd.inertia,
                    "spring stiffness": sd.kappa, name: sd.l0})
     if gov.spring is not None and gov.free_length_positive and sd.l0 <= 0:
         l_inf = float(statics.free_half_length(spec, sd.m, np.inf, sd.central))
@@ -237,7 +239,8 @@ def requirement_rows(spec: Spec, req) -> list[tuple]:
     coil radius, active turns), ``m`` (flying mass), ``l0`` (the type's free length), ``C``
     (spring index), ``body`` (close-wound body length ``(n + 1) d``), ``surge`` (Hz). Read by
     :func:`requirement_checks` (N = 1) and by the bulk evaluation (:mod:`govopt.bulk`)."""
-    factor = spec.governor.spring_length_factor
+    gov = spec.governor
+    factor = gov.spring_length_factor
 
     def const(v):
         return lambda ev: v
@@ -250,7 +253,7 @@ def requirement_rows(spec: Spec, req) -> list[tuple]:
         ("body length within free length", "<=", "m", lambda ev: ev["body"],
          lambda ev: factor * ev["l0"], "close-wound body (n + 1) d within 2 l0"),
     ]
-    for name, key, bounds, unit in (("pendulum mass", "m", req.pendulum_mass, "kg"),
+    for name, key, bounds, unit in ((f"{gov.mass_name} mass", "m", req.pendulum_mass, "kg"),
                                     ("wire diameter", "d", req.wire_diameter, "m"),
                                     ("coil radius", "r", req.coil_radius, "m"),
                                     ("active turns", "n", req.active_turns, "")):
