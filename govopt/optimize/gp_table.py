@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from govopt.model import spring
+from govopt.requirements import GP_BOUNDS
 
 #: Stand-ins for "no limit" (the GP needs a positive number for every parameter).
 _BIG = 1e6
@@ -80,10 +81,6 @@ def _stress_g(d, r, n, t, P, correction):
     return 16.0 / np.pi * F * (r * d**-3 + 0.75 * t * r * d**-3 + 0.3075 * d**-2)
 
 
-def _surge_g(d, r, n, P):
-    return d / (8.0 * np.pi) * r**-2 / n * P["G"] ** 0.5 * (2.0 * P["density"]) ** -0.5
-
-
 def _stiffness_g(d, r, n, P):
     return P["G"] * d**4 / (64.0 * r**3 * n)
 
@@ -106,27 +103,12 @@ def _specs(correction: str, stiffness: str, allowable_exponent: float = 0.0) -> 
     stress_src = hamabe + {"wahl": "; Wahl 1944 eq. 2-12",
                            "bergstrasser": "; Bergstraesser, EN 13906-1, Shigley eq. (10-5)"
                            }.get(correction, "")
-    out += [
-        _Spec("allowable stress", "k_s", "upper",
-              lambda d, r, n, t, P: _stress_g(d, r, n, t, P, correction) * d**m
-              if m else _stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
-              stress_src),
-        _Spec("minimum wire diameter", "d_min", "lower", lambda d, r, n, t, P: d),
-        _Spec("maximum wire diameter", "d_max", "upper", lambda d, r, n, t, P: d),
-        _Spec("minimum coil radius", "r_min", "lower", lambda d, r, n, t, P: r),
-        _Spec("maximum coil radius", "r_max", "upper", lambda d, r, n, t, P: r),
-        _Spec("minimum active turns", "n_min", "lower", lambda d, r, n, t, P: n),
-        _Spec("maximum active turns", "n_max", "upper", lambda d, r, n, t, P: n),
-        _Spec("minimum spring index", "C_min", "lower", lambda d, r, n, t, P: 2.0 * r / d,
-              source="Wahl 1944 ch. 2"),
-        _Spec("maximum spring index", "C_max", "upper", lambda d, r, n, t, P: 2.0 * r / d,
-              source="Wahl 1944 ch. 2"),
-        _Spec("outer diameter", "D_out_max", "upper", lambda d, r, n, t, P: 2.0 * r + d),
-        _Spec("body length", "L_body_max", "upper", lambda d, r, n, t, P: (n + 1.0) * d),
-        _Spec("surge frequency", "f_surge_min", "lower",
-              lambda d, r, n, t, P: _surge_g(d, r, n, P), (("G", 0.5), ("density", -0.5)),
-              "Wahl 1944 ch. 25"),
-    ]
+    out.append(_Spec("allowable stress", "k_s", "upper",
+                     lambda d, r, n, t, P: _stress_g(d, r, n, t, P, correction) * d**m
+                     if m else _stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
+                     stress_src))
+    # the bounds and the spring's requirements: their rows' GP forms (govopt.requirements)
+    out += [_Spec(f.name, f.limit, f.sense, f.g, f.g_exps, f.source) for f in GP_BOUNDS.values()]
     return out
 
 
