@@ -48,3 +48,50 @@ def test_mass_bound_checks_name_the_types_mass(name, word):
     assert f"{word} mass >= min" in names and f"{word} mass <= max" in names
     if word != "pendulum":
         assert not any("pendulum" in n for n in names)
+
+
+def test_gp_forms_are_the_rows():
+    """Each requirement row with a GP form: the form's g at a design is the row's value there,
+    with the same sense, and its limit is the GP parameter the design search fills from the
+    row's limit (one declaration for the evaluator, the screen and the GP)."""
+    from govopt.optimize import gp_table
+    from govopt.requirements import SpringFigures, requirement_rows
+
+    spec = govopt.load_spec(SPECS / "hamabe-design.toml")
+    req, mat = spec.requirements, spec.material
+    d, r, n, l0 = 0.004, 0.02, 9.0, 0.05
+    ev = SpringFigures(d, r, n, l0, mat, m=1.0)
+    P = {"G": mat.shear_modulus, "density": mat.density}
+    rows = [row for row in requirement_rows(spec, req) if row.gp is not None]
+    assert {row.gp.limit for row in rows} >= {"d_min", "d_max", "r_min", "r_max", "n_min",
+                                             "n_max", "C_min", "C_max", "L_body_max"}
+    for row in rows:
+        g = row.gp.g(d, r, n, None, P)
+        assert g == pytest.approx(float(row.value(ev)), rel=1e-14), row.name
+        assert row.gp.sense == {"<=": "upper", ">=": "lower"}[row.sense]
+    values = gp_table.complete_values(dict(kappa_min=1e3, kappa_max=2e3, F_max=100.0, k_s=5e8,
+                                           G=mat.shear_modulus, density=mat.density,
+                                           **{row.gp.limit: row.limit(ev) for row in rows}),
+                                      "band")
+    for row in rows:
+        assert values[row.gp.limit] == pytest.approx(float(row.limit(ev)), rel=1e-15)
+
+
+def test_screen_reads_the_rows():
+    """The design screen's spring test (optimize.design.spring_checks) holds exactly where the
+    spring rows hold: narrowing requirements.spring_index moves both the same way."""
+    import numpy as np
+
+    from govopt.optimize.design import spring_checks
+    from govopt.requirements import SpringFigures, holds, requirement_rows
+
+    spec = govopt.load_spec(SPECS / "hamabe-design.toml")
+    req = replace(spec.requirements, spring_index=(6.0, 8.0))
+    d = np.full(5, 0.004)
+    r = d * np.array([2.0, 3.0, 3.5, 4.0, 5.0])  # C = 4, 6, 7, 8, 10
+    n, l0 = np.full(5, 8.0), np.full(5, 1.0)
+    ok = spring_checks(spec, req, d, r, n, np.full(5, 1.0), l0)
+    rows = [row for row in requirement_rows(spec, req) if row.group == "spring"]
+    in_rows = holds(rows, SpringFigures(d, r, n, l0, spec.material))
+    assert in_rows.tolist() == [False, True, True, True, False]
+    assert not (ok & ~in_rows).any()  # the screen admits nothing the rows reject
