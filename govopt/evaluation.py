@@ -13,12 +13,13 @@ from .errors import DesignError
 from .model import spring
 from .requirements import (
     CheckTable,
+    friction_rows,
     load_change_rows,
     requirement_rows,
     statics_rows,
     vibration_rows,
 )
-from .result import Check, Result
+from .result import Result
 from .spec import Design, Spec
 from .units import SI_UNITS
 
@@ -116,19 +117,16 @@ def _evaluate(spec: Spec, design: Design) -> Result:
 
         runs = [friction.friction_load_change(spec, sd, lc) for lc in spec.load_changes]
         dynamics["friction"] = [r.to_dict() for r in runs]
+        table = CheckTable(1)
         for lc, r in zip(spec.load_changes, runs, strict=True):
             xi0 = lc.alpha_from - lc.alpha_to
-            if r.outcome == "stuck":  # the governor does not follow the load change at all
-                checks.append(Check(f"friction: the governor follows the load change: {lc.name}",
-                                    abs(r.final_state[0]), 0.0, "<=", unit,
-                                    "Hamabe eqs. (42)-(46): stuck while |C eta - I k^2 xi| <= M0",
-                                    scale=abs(xi0)))
-                continue
             first = r.first_stroke_end
-            past = 0.0 if first is None else max(0.0, -float(np.sign(xi0)) * first)
-            checks.append(Check(f"friction: no over-regulation after the first stroke: {lc.name}",
-                                past, 0.0, "<=", unit,
-                                "Hamabe eqs. (42)-(46)", scale=abs(xi0) or 1.0))
+            stuck = r.outcome == "stuck"  # the governor does not follow the load change at all
+            table.add_row(friction_rows(spec, lc.name)["stuck" if stuck else "moves"], {
+                "xi0": xi0, "rest": abs(r.final_state[0]),
+                "past": 0.0 if stuck or first is None
+                else max(0.0, -float(np.sign(xi0)) * first)})
+        checks += table.checks()
     if req is not None and helical:
         table = CheckTable(1)
         table.add_rows(requirement_rows(spec, req), {

@@ -239,6 +239,23 @@ def load_change_rows(spec, name: str) -> list[Row]:
     return rows
 
 
+def friction_rows(spec, name: str) -> dict[str, Row]:
+    """Hamabe's friction transient of load change ``name`` (eqs. 42-46; group ``"dynamics"``),
+    by outcome: ``"stuck"`` (the governor does not follow the load change: ``ev["rest"]``, the
+    offset it rests at) and ``"moves"`` (``ev["past"]``, how far the first stroke ends past the
+    new equilibrium); ``ev["xi0"]`` the initial offset (the coordinate's unit)."""
+    unit = SI_UNITS[spec.governor.coordinate]
+    return {
+        "stuck": Row(f"friction: the governor follows the load change: {name}", "<=", unit,
+                     lambda ev: ev["rest"], _const(0.0),
+                     "Hamabe eqs. (42)-(46): stuck while |C eta - I k^2 xi| <= M0",
+                     group="dynamics", scale=lambda ev: abs(ev["xi0"])),
+        "moves": Row(f"friction: no over-regulation after the first stroke: {name}", "<=", unit,
+                     lambda ev: ev["past"], _const(0.0), "Hamabe eqs. (42)-(46)",
+                     group="dynamics", scale=lambda ev: abs(ev["xi0"]) or 1.0),
+    }
+
+
 def vibration_rows(spec) -> list[Row]:
     """The forced vibration's requirement (Hamabe Part II); ``ev``: ``p2p`` (peak to peak, the
     coordinate's unit)."""
@@ -333,5 +350,6 @@ class CheckTable:
         return ok
 
 
-__all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "GPForm", "Row", "SpringFigures", "holds",
-           "load_change_rows", "requirement_rows", "statics_rows", "vibration_rows"]
+__all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "GPForm", "Row", "SpringFigures",
+           "friction_rows", "holds", "load_change_rows", "requirement_rows", "statics_rows",
+           "vibration_rows"]
