@@ -1,7 +1,9 @@
 """Evaluate a given design: statics, spring, restoring stiffness, and the checks (Hamabe I-III).
 
 Only what the spec asks for is modelled: dynamics run when the spec has engine data, friction
-only when the design has a friction moment.
+only when the design has a friction moment. Every check is a row of :mod:`govopt.requirements`
+evaluated by its :class:`~govopt.requirements.CheckTable` with one design (the bulk evaluation
+fills the same table for many), except the spring's own (:meth:`Governor.spring_checks`).
 """
 
 from __future__ import annotations
