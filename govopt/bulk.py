@@ -33,6 +33,7 @@ from .requirements import (
     load_change_rows,
     requirement_rows,
     statics_rows,
+    stress_row,
     vibration_rows,
 )
 from .result import Result
@@ -453,8 +454,8 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
     req = spec.requirements
     w0sq = np.full(n, omega_mean**2) if spec.speed is not None else wn**2
     if gov.spring is not None and mat is not None:
-        checks.add("shear stress", stress.max(axis=1), mat.allowable_shear_stress, "<=",
-                   where=np.isfinite(cols["wire_diameter"]))
+        checks.add_row(stress_row(mat), {"stress": stress.max(axis=1)},
+                       where=np.isfinite(cols["wire_diameter"]))
         if helical.any():  # Governor.spring_checks' geometric rows: no grade needed
             from .analysis import spring_engineering
 

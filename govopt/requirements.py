@@ -186,6 +186,19 @@ def requirement_rows(spec, req) -> list[Row]:
     return rows
 
 
+#: the helical spring's static stress against the spec's allowable (no wire grade)
+STRESS_SOURCE = "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"
+
+
+def stress_row(material) -> Row:
+    """The largest shear stress of a helical spring (``ev["stress"]``, Pa) within the spec's
+    allowable ``material.allowable_shear_stress`` (group ``"spring"``; without a wire grade;
+    :meth:`govopt.governors.base.Governor.spring_checks` gives the same check with its
+    source)."""
+    return Row("shear stress", "<=", "Pa", lambda ev: ev["stress"],
+               _const(material.allowable_shear_stress), STRESS_SOURCE, group="spring")
+
+
 class SpringFigures(dict):
     """The ``ev`` of :func:`requirement_rows` for helical springs (floats or arrays), each
     figure computed when a row first reads it: ``C = 2 r / d``, ``body = (n + 1) d`` and the
@@ -352,4 +365,4 @@ class CheckTable:
 
 __all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "GPForm", "Row", "SpringFigures",
            "friction_rows", "holds", "load_change_rows", "requirement_rows", "statics_rows",
-           "vibration_rows"]
+           "stress_row", "vibration_rows"]

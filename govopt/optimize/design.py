@@ -36,7 +36,7 @@ from ..analysis import transient as tr
 from ..errors import DesignError, InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS, design_size_error
 from ..model import spring
-from ..requirements import SpringFigures, holds, requirement_rows
+from ..requirements import SpringFigures, holds, requirement_rows, stress_row
 from ..spec import Design, Requirements, Spec, Speed
 from ..units import G_STANDARD, SI_UNITS
 from .kappa import Affine, KappaModel
@@ -378,8 +378,8 @@ def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=(
     from ..analysis import spring_engineering as se
 
     if mat.grade is None:  # the stress against the spec's allowable; coil clash and buckling
-        ok = ok & (spring.shear_stress(F_max, d, r, mat.stress_correction)
-                   <= mat.allowable_shear_stress)
+        ok = ok & holds([stress_row(mat)],
+                        {"stress": spring.shear_stress(F_max, d, r, mat.stress_correction)})
         return ok & se.geometry_screen(spec, d, r, n,
                                        spring.stiffness(d, r, n, mat.shear_modulus), l0)
     return ok & se.screen(spec, d, r, n, spring.stiffness(d, r, n, mat.shear_modulus), l0,
