@@ -32,6 +32,7 @@ from .requirements import (
     CheckTable,
     load_change_rows,
     requirement_rows,
+    statics_figures,
     statics_rows,
     stress_row,
     vibration_rows,
@@ -471,10 +472,8 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
             band = tuple(np.sqrt(np.maximum(_flat(w2, n), 0.0)) for w2 in
                          statics.band_speeds_squared(spec, m, kappa, l0, central,
                                                      (fr[:, :1], fr[:, 1:])))
-    ev = {"irregularity": out["irregularity"], "band_low": band[0], "band_high": band[1],
-          "rise": rise, "w0sq": w0sq, "F_min": F.min(axis=1), "F_top": np.abs(F).max(axis=1),
-          "k2_min": k2.min(axis=1), "k2_max": k2.max(axis=1)}
-    checks.add_rows(statics_rows(spec), ev)
+    checks.add_rows(statics_rows(spec), statics_figures(out["irregularity"], *band, rise, w0sq,
+                                                        F, k2))
     dashpot = cols["dashpot"]
     has_dashpot = np.isfinite(dashpot)
     if dynamics and spec.engine is not None and spec.load_changes:

@@ -18,6 +18,7 @@ from .requirements import (
     friction_rows,
     load_change_rows,
     requirement_rows,
+    statics_figures,
     statics_rows,
     vibration_rows,
 )
@@ -87,12 +88,9 @@ def _evaluate(spec: Spec, design: Design) -> Result:
         fr = gov.friction(np.array([gov.x_inner, gov.x_outer]), design)
         band = tuple(float(np.sqrt(max(float(w2), 0.0))) for w2 in statics.band_speeds_squared(
             spec, sd.m, sd.kappa, sd.l0, sd.central, fr))
-    ev = {"irregularity": char.irregularity, "band_low": band[0], "band_high": band[1],
-          "rise": rise, "w0sq": w0sq, "F_min": float(np.min(char.spring_force)),
-          "F_top": float(np.max(np.abs(char.spring_force))), "k2_min": float(np.min(k2)),
-          "k2_max": float(np.max(k2))}
     table = CheckTable(1)
-    table.add_rows(statics_rows(spec), ev)
+    table.add_rows(statics_rows(spec), statics_figures(char.irregularity, *band, rise, w0sq,
+                                                       char.spring_force, k2))
     props = spring_properties(spec, sd) if helical else {}
     dynamics = {}
     if wanted("load_change") and spec.engine is not None and spec.load_changes and \

@@ -145,6 +145,16 @@ def statics_rows(spec) -> list[Row]:
     return rows
 
 
+def statics_figures(irregularity, band_low, band_high, rise, w0sq, spring_force, k2) -> dict:
+    """The ``ev`` of :func:`statics_rows` from the figures of one design (1-D arrays over the
+    configurations) or many (2-D, a row per design): the spring force's least value and
+    largest magnitude and ``k^2``'s extremes over the configurations (last axis)."""
+    return {"irregularity": irregularity, "band_low": band_low, "band_high": band_high,
+            "rise": rise, "w0sq": w0sq, "F_min": np.min(spring_force, axis=-1),
+            "F_top": np.max(np.abs(spring_force), axis=-1), "k2_min": np.min(k2, axis=-1),
+            "k2_max": np.max(k2, axis=-1)}
+
+
 #: where the spring index limits come from (the requirements; the standard's scope for reference)
 INDEX_SOURCE = ("requirements.spring_index (EN 13906-1 scope, cold coiled: 4 <= w <= 20; "
                 "Shigley prefers 4 <= C <= 12)")
@@ -365,4 +375,4 @@ class CheckTable:
 
 __all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "GPForm", "Row", "SpringFigures",
            "friction_rows", "holds", "load_change_rows", "requirement_rows", "statics_rows",
-           "stress_row", "vibration_rows"]
+           "statics_figures", "stress_row", "vibration_rows"]
