@@ -3,7 +3,10 @@ bound decides it, without a solver.
 
 The rows of the least-mass helical spring's geometric programme (:mod:`govopt.optimize.spring_gp`,
 whose docstring gives each row's source) are functions of ``d, r, n, t`` and the parameter values
-``P``: cvxpy builds the GP from them, and :func:`energy_optimum` evaluates them in numpy. They
+``P``: cvxpy builds the GP from them, and :func:`energy_optimum` evaluates them in numpy. The
+stiffness and stress rows are the GP's own; the bounds and the spring's requirements (index,
+outer diameter, body length, surge) are the GP forms of their requirement rows
+(:data:`govopt.requirements.GP_BOUNDS`), which the evaluator checks too. They
 live apart from :mod:`~govopt.optimize.spring_gp` so that a design whose continuous bound
 :func:`energy_optimum` certifies never imports cvxpy (issue 14, target 2).
 """
