@@ -95,3 +95,20 @@ def test_screen_reads_the_rows():
     in_rows = holds(rows, SpringFigures(d, r, n, l0, spec.material))
     assert in_rows.tolist() == [False, True, True, True, False]
     assert not (ok & ~in_rows).any()  # the screen admits nothing the rows reject
+
+
+def test_diagnosis_names_the_types_weight_key(tmp_path):
+    """A Hartnell spec whose ball weights are too light: the diagnosis's move names the spec
+    key to widen (bounds.ball_weight), not the shaft governor's pendulum."""
+    from govopt.errors import InfeasibleError
+    from govopt.optimize.design import design
+
+    text = (SPECS / "hartnell-design.toml").read_text()
+    assert 'ball_weight = ["1 kgf", "6 kgf"]' in text
+    path = tmp_path / "light.toml"
+    path.write_text(text.replace('ball_weight = ["1 kgf", "6 kgf"]',
+                                 'ball_weight = ["0.2 kgf", "0.3 kgf"]'))
+    with pytest.raises(InfeasibleError) as info:
+        design(govopt.load_spec(path))
+    assert "bounds.ball_weight widened" in str(info.value)
+    assert "pendulum" not in str(info.value)

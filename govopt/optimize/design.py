@@ -1016,7 +1016,7 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
             head = (f"{spec.path}: infeasible: the requirement '{lo_name}' needs a stiffer "
                     f"spring than '{hi_name}' allows at every {weight} in the bounds")
         cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin),
-                 ("pendulum weight bounds", with_mass, "widen x", None)]
+                 (f"bounds.{spec.governor.mass_key}_weight", with_mass, "widen x", None)]
     elif stage == "spring" and stats["statics_feasible"] == 0:
         head = (f"{spec.path}: infeasible: no catalogue spring's stiffness falls in the window "
                 "the statics allow (the speed band, k^2 margins, free length) at any "
