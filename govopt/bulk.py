@@ -27,6 +27,15 @@ import pandas as pd
 from .analysis import loadchange, statics
 from .analysis import transient as tr
 from .governors import Governor
+from .requirements import (
+    CheckTable,
+    load_change_rows,
+    requirement_rows,
+    statics_figures,
+    statics_rows,
+    stress_row,
+    vibration_rows,
+)
 from .result import Result
 from .spec import Design, Spec
 from .springs import helical as hx
@@ -36,9 +45,6 @@ DESIGN_FIELDS = tuple(f.name for f in fields(Design))
 
 #: designs evaluated at once (bounds the memory: ~ CHUNK x configurations x 30 arrays)
 CHUNK = 4096
-
-#: a check that holds within this relative margin counts as satisfied (``Check.passed``)
-PASS_TOL = -1e-9
 
 STATUS_PASS, STATUS_FAIL, STATUS_ERROR = "pass", "fail", "error"
 
@@ -190,64 +196,30 @@ def _design_of(cols: dict, i: int) -> Design:
 # Vectorised checks
 # ---------------------------------------------------------------------------------------------
 
-class _Checks:
-    """Checks of many designs, in :func:`govopt.evaluate`'s order: arrays of values, margins
-    and verdicts (``applies`` False where a check does not apply to a design: NaN, NA)."""
+def _check_columns(table: CheckTable) -> dict:
+    """``value: ``, ``margin: `` and ``passed: `` columns (nullable booleans) of each check."""
+    out = {}
+    for name in table.names:
+        v, _, m, _, p, applies = table.cols[name]
+        out[value_column(name)] = v
+        out[margin_column(name)] = m
+        out[passed_column(name)] = pd.arrays.BooleanArray(p, ~applies)
+    return out
 
-    def __init__(self, n: int):
-        self.n = n
-        self.cols: dict[str, tuple] = {}
-        self.names: list[str] = []
 
-    def add(self, name, value, limit, sense, scale=None, verdict=None, where=None):
-        """``Check.margin`` vectorised: ``(limit - value)/s`` for ``<=``, ``(value - limit)/s``
-        for ``>=``, ``s = scale or (|limit| if limit != 0 else 1)``; ``Check.passed``; ``where``:
-        the designs it applies to."""
-        n = self.n
-        value = np.broadcast_to(np.asarray(value, dtype=float), (n,))
-        limit = np.broadcast_to(np.asarray(limit, dtype=float), (n,))
-        fallback = np.where(limit != 0, np.abs(limit), 1.0)
-        if scale is None:
-            s = fallback
-        else:
-            scale = np.broadcast_to(np.asarray(scale, dtype=float), (n,))
-            s = np.where(scale != 0, scale, fallback)
-        diff = limit - value if sense == "<=" else value - limit
-        with np.errstate(invalid="ignore", divide="ignore"):
-            margin = diff / s
-        passed = margin >= PASS_TOL if verdict is None else np.asarray(verdict, dtype=bool)
-        on = np.ones(n, bool) if where is None else np.broadcast_to(where, (n,))
-        if name not in self.cols:
-            self.names.append(name)
-            self.cols[name] = (np.full(n, np.nan), np.full(n, np.nan), np.zeros(n, bool),
-                               np.zeros(n, bool))
-        v, m, p, applies = self.cols[name]
-        v[on], m[on] = value[on], margin[on]
-        p[on] = np.broadcast_to(passed, (n,))[on]
-        applies |= on
-
-    def columns(self) -> dict:
-        """``value: ``, ``margin: `` and ``passed: `` columns (nullable booleans) of each check."""
-        out = {}
-        for name in self.names:
-            v, m, p, applies = self.cols[name]
-            out[value_column(name)] = v
-            out[margin_column(name)] = m
-            out[passed_column(name)] = pd.arrays.BooleanArray(p, ~applies)
-        return out
-
-    def status(self):
-        """``(status, message)`` arrays: "fail" and "fails: <names>" where a check failed."""
-        bits = np.zeros(self.n, dtype=object if len(self.names) > 62 else np.int64)
-        for j, name in enumerate(self.names):
-            _, _, p, applies = self.cols[name]
-            bits = bits + np.where(applies & ~p, 1 << j, 0)
-        patterns, inverse = np.unique(bits, return_inverse=True)
-        texts = np.array([", ".join(nm for j, nm in enumerate(self.names) if int(b) >> j & 1)
-                          for b in patterns], dtype=object)
-        failed = bits != 0
-        message = np.where(failed, "fails: " + texts[inverse.reshape(-1)], "")
-        return np.where(failed, STATUS_FAIL, STATUS_PASS), message
+def _status(table: CheckTable):
+    """``(status, message)`` arrays: "fail" and "fails: <names>" where a check failed."""
+    names = table.names
+    bits = np.zeros(table.n, dtype=object if len(names) > 62 else np.int64)
+    for j, name in enumerate(names):
+        *_, p, applies = table.cols[name]
+        bits = bits + np.where(applies & ~p, 1 << j, 0)
+    patterns, inverse = np.unique(bits, return_inverse=True)
+    texts = np.array([", ".join(nm for j, nm in enumerate(names) if int(b) >> j & 1)
+                      for b in patterns], dtype=object)
+    failed = bits != 0
+    message = np.where(failed, "fails: " + texts[inverse.reshape(-1)], "")
+    return np.where(failed, STATUS_FAIL, STATUS_PASS), message
 
 
 def _overridden(gov: Governor, method: str) -> bool:
@@ -479,12 +451,12 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
                 "k2_normal_rad2_s2": k2[:, i_n]})
 
     # -- checks, in evaluate's order --
-    checks = _Checks(n)
+    checks = CheckTable(n)
     req = spec.requirements
     w0sq = np.full(n, omega_mean**2) if spec.speed is not None else wn**2
     if gov.spring is not None and mat is not None:
-        checks.add("shear stress", stress.max(axis=1), mat.allowable_shear_stress, "<=",
-                   where=np.isfinite(cols["wire_diameter"]))
+        checks.add_row(stress_row(mat), {"stress": stress.max(axis=1)},
+                       where=np.isfinite(cols["wire_diameter"]))
         if helical.any():  # Governor.spring_checks' geometric rows: no grade needed
             from .analysis import spring_engineering
 
@@ -500,17 +472,11 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
             band = tuple(np.sqrt(np.maximum(_flat(w2, n), 0.0)) for w2 in
                          statics.band_speeds_squared(spec, m, kappa, l0, central,
                                                      (fr[:, :1], fr[:, 1:])))
-    ev = {"irregularity": out["irregularity"], "band_low": band[0], "band_high": band[1],
-          "rise": rise, "w0sq": w0sq, "F_min": F.min(axis=1), "F_top": np.abs(F).max(axis=1),
-          "k2_min": k2.min(axis=1), "k2_max": k2.max(axis=1)}
-    from .evaluation import statics_rows
-
-    for name, sense, _unit, value, limit, scale, _source in statics_rows(spec):
-        checks.add(name, value(ev), limit(ev), sense, scale=scale(ev))
+    checks.add_rows(statics_rows(spec), statics_figures(out["irregularity"], *band, rise, w0sq,
+                                                        F, k2))
     dashpot = cols["dashpot"]
     has_dashpot = np.isfinite(dashpot)
     if dynamics and spec.engine is not None and spec.load_changes:
-        hm = req.hurwitz_margin if req else 0.0
         settle = np.full(n, -np.inf)
         run = ok & has_dashpot
         for lc in spec.load_changes:
@@ -522,12 +488,10 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
             out[f"over_regulation: {lc.name}"] = np.where(on, over, np.nan)
             out[f"settling_time_s: {lc.name}"] = np.where(on, st_time, np.nan)
             settle = np.where(on, np.maximum(settle, st_time), settle)
-            checks.add(f"Hurwitz margin eq. (32): {lc.name}", hur, hm, ">=", scale=1.0, where=on)
-            checks.add(f"no over-regulation: {lc.name}", over, 0.0, "<=", scale=np.abs(xi0),
-                       verdict=~overs, where=on)
-            if req is not None and req.max_settling_time is not None:
-                checks.add(f"settling time: {lc.name}", st_time, req.max_settling_time, "<=",
-                           where=on)
+            checks.add_rows(load_change_rows(spec, lc.name), {
+                "hurwitz": {lc.name: hur}, "over": {lc.name: over},
+                "over_regulates": {lc.name: overs}, "xi0": {lc.name: xi0},
+                "settling": {lc.name: st_time}}, where=on)
         out["settling_time_s"] = np.where(settle > -np.inf, settle, np.nan)
     if vibration and _overridden(gov, "vibration"):
         want = ok & (has_dashpot | (spec.engine is not None))
@@ -540,22 +504,23 @@ def _vectorised(spec: Spec, cols: dict, dynamics: bool, vibration: bool, classic
                 p2p[i] = vib.to_dict()["peak_to_peak_rad"]
         if want.any():
             out["vibration_p2p_rad"] = p2p
-            if req is not None and req.max_vibration is not None:
-                checks.add("vibration peak-to-peak", p2p, req.max_vibration, "<=",
-                           where=~np.isnan(p2p))
-    if req is not None:
-        _requirement_checks(spec, req, cols, l0[:, 0], out, checks, helical)
+            checks.add_rows(vibration_rows(spec), {"p2p": p2p}, where=~np.isnan(p2p))
+    if req is not None and helical.any():
+        checks.add_rows(requirement_rows(spec, req), {
+            "d": cols["wire_diameter"], "r": cols["coil_radius"], "n": cols["active_turns"],
+            "m": cols["pendulum_mass"], "l0": l0[:, 0], "C": out["spring_index"],
+            "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}, where=helical)
     if classic:
         out.update(_classic(spec, cols, t, sd, w2c, x, omega, ok))
 
     # -- assemble --
-    out.update(checks.columns())
+    out.update(_check_columns(checks))
     frame = pd.DataFrame(out)
     obj = _objective_name(spec)
     frame["objective"] = obj
     key = OBJECTIVE_COLUMN[obj]
     frame["objective_value"] = frame[key] if key in frame else np.nan
-    frame["status"], frame["message"] = checks.status()
+    frame["status"], frame["message"] = _status(checks)
     return frame, impossible
 
 
@@ -608,19 +573,6 @@ def _load_change_many(spec, lc, m, kappa, l0, central, I_given, dashpot, run):
 def _flat(v, n: int) -> np.ndarray:
     """A per-design quantity of shape ``(N, 1)`` (or broadcasting to it) as ``(N,)``."""
     return np.broadcast_to(np.asarray(v, dtype=float), (n, 1))[:, 0]
-
-
-def _requirement_checks(spec, req, cols, l0, out, checks, helical):
-    """:func:`govopt.evaluation.requirement_rows` over the chunk's designs (helical springs)."""
-    from .evaluation import requirement_rows
-
-    if not helical.any():
-        return
-    ev = {"d": cols["wire_diameter"], "r": cols["coil_radius"], "n": cols["active_turns"],
-          "m": cols["pendulum_mass"], "l0": l0, "C": out["spring_index"],
-          "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}
-    for name, sense, _unit, value, limit, _source in requirement_rows(spec, req):
-        checks.add(name, value(ev), limit(ev), sense, where=helical)
 
 
 def _friction_at(gov: Governor, cols: dict, x) -> np.ndarray:

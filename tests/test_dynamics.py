@@ -6,6 +6,7 @@ import json
 import numpy as np
 import pytest
 from clirun import invoke
+from transient_one import analyse_one
 
 import govopt
 from govopt.analysis import transient as tr
@@ -60,7 +61,7 @@ def test_d_prime_paper_slip():
     eta0 = (c["a0"] * x["xi_ddot_rad_s2"] + 3 * c["a2"] * x["xi_rad"]) * R / c["a3"]
     a2_slip = c["a0"] * 233.0 / 3
     ic = tr.hamabe_initial_conditions(c["a0"], a2_slip, c["a3"], R, x["xi_rad"], eta0)
-    res = tr.analyse(c["a0"], c["a1"], a2_slip, c["a3"], *ic)
+    res = analyse_one(c["a0"], c["a1"], a2_slip, c["a3"], *ic)
     roots = sorted(np.asarray(res.roots), key=lambda z: z.real)
     assert roots[0].real == pytest.approx(-46.28, rel=0.01)
     assert abs(roots[1].real) == pytest.approx(2.36, rel=0.03)

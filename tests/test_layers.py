@@ -28,7 +28,7 @@ LAYERS = (
     ("analysis", ("govopt.analysis", "govopt.fidelity")),
     ("governor types", ("govopt.governors",)),
     ("parser", ("govopt.spec",)),
-    ("evaluator", ("govopt.result", "govopt.evaluation", "govopt.bulk")),
+    ("evaluator", ("govopt.result", "govopt.requirements", "govopt.evaluation", "govopt.bulk")),
     ("optimize", ("govopt.optimize",)),
     ("study", ("govopt.study",)),
     ("report", ("govopt.report",)),

@@ -18,6 +18,7 @@ import numpy as np
 import openpyxl
 import pytest
 from mproots import polyroots
+from transient_one import analyse_one
 
 import govopt
 from govopt.analysis import loadchange, statics
@@ -137,13 +138,13 @@ def test_window_ends_against_mpmath(case, windows):
 def test_late_crossing_missed_by_a_horizon():
     """Case a, f = 0.66 N m s (inside the old, horizon-limited window 0.642 .. 12.74): the
     lightly damped pair decays slower than the real root, so the pendulum passes its new
-    equilibrium long after the old horizon, by a tiny amount.  analyse and analyse_many both
-    say so; the first zero and the largest far-side excursion match the 50-digit reference."""
+    equilibrium long after the old horizon, by a tiny amount.  analyse_many (one design and a batch)
+    says so; the first zero and the largest far-side excursion match the 50-digit reference."""
     spec = paper_spec("a")
     (a0, a2, a3), x = problem(spec)
     f = 0.66
     coeffs = (a0, f / 3, a2, a3)
-    res = tr.analyse(*coeffs, *x)
+    res = analyse_one(*coeffs, *x)
     s = tr.analyse_many(*coeffs, *x)
     assert res.stable and res.kind == "complex"
     assert tr.over_regulates(res.over_regulation_scaled, x[0])
@@ -168,7 +169,7 @@ def test_late_crossing_missed_by_a_horizon():
         n = int(40 * t1 * q / (2 * math.pi))
         assert all(xi(t1 * (1 - 1e-9) * i / n) < 0 for i in range(n + 1))
         # the largest far-side excursion is an extremum of the exact response
-        te = max((v, te) for te, v in res.extrema)[1]
+        te = res.over_regulation_time
         assert abs(xi(te, 1)) <= 1e-9 * abs(xi(te)) * q
         assert float(xi(te)) == pytest.approx(res.over_regulation, rel=1e-9)
 
@@ -214,7 +215,7 @@ def test_three_real_roots_late_sign_change():
     eps = 1e-6
     coeffs = _from_roots([-1.0, -1.2, -10.0])
     x = (1.0 - eps, -1.2 + eps, 1.44 - eps)
-    for res in (tr.analyse(*coeffs, *x), tr.analyse_many(*coeffs, *x)):
+    for res in (analyse_one(*coeffs, *x), tr.analyse_many(*coeffs, *x)):
         assert tr.over_regulates(res.over_regulation_scaled, x[0])
         assert float(res.over_regulation_scaled) == pytest.approx(eps, rel=1e-6)
         assert float(res.first_arrival_time) == pytest.approx(math.log(1 / eps) / 0.2, rel=1e-6)
@@ -230,7 +231,7 @@ def test_three_real_roots_late_sign_change():
             assert vals[0] > 0 > vals[1]
     # no crossing when the slow mode is on the start side
     y = (1.0 + eps, -1.2 - eps, 1.44 + eps)
-    res = tr.analyse(*coeffs, *y)
+    res = analyse_one(*coeffs, *y)
     assert res.over_regulation == 0.0 and not tr.over_regulates(res.over_regulation_scaled, 1.0)
 
 
@@ -241,11 +242,11 @@ def test_pair_coefficient_zero_to_the_tolerance():
     coeffs = _from_roots([-3.0, complex(-0.5, 4.0), complex(-0.5, -4.0)])
     r = float(tr.cubic_roots(*coeffs)[0].real)
     assert r == pytest.approx(-3.0, rel=1e-14)
-    res = tr.analyse(*coeffs, 1.0, r, r * r)
+    res = analyse_one(*coeffs, 1.0, r, r * r)
     assert not tr.over_regulates(res.over_regulation_scaled, 1.0)
     # what is left of the pair is rounding: far-side excursions of that size only
     assert res.over_regulation_scaled < 1e-15 and res.over_regulation < 1e-15
-    kicked = tr.analyse(*coeffs, 1.0, r, r * r * (1 + 1e-6))
+    kicked = analyse_one(*coeffs, 1.0, r, r * r * (1 + 1e-6))
     assert tr.over_regulates(kicked.over_regulation_scaled, 1.0)
     assert kicked.first_arrival_time < math.inf
     crosses, _, late = mp_far_side(coeffs, (1.0, r, r * r * (1 + 1e-6)))
@@ -254,9 +255,9 @@ def test_pair_coefficient_zero_to_the_tolerance():
 
 def test_decisions_against_mpmath_on_random_designs():
     """Random stable Hamabe-like designs (as in benchmarks/bench_transient.py, seed 0): the
-    decision of analyse_many, analyse and the 50-digit reference agree on every design; the 26
-    of the first 4000 that the horizon-limited analysis called free of over-regulation are
-    among them (indices 106, 241, 259 ...)."""
+    decision of analyse_many (a batch and one design at a time) and the 50-digit reference
+    agree on every design; the 26 of the first 4000 that the horizon-limited analysis called
+    free of over-regulation are among them (indices 106, 241, 259 ...)."""
     rng = np.random.default_rng(0)
     n = 4000
     a0 = rng.uniform(0.5, 2.0, n)
@@ -272,7 +273,7 @@ def test_decisions_against_mpmath_on_random_designs():
     assert dec[:8].all()
     for k, i in enumerate(pick):
         coeffs, x = (a0[i], a1[i], a2[i], a3[i]), (xi0[i], 0.0, xdd[i])
-        r = tr.analyse(*coeffs, *x)
+        r = analyse_one(*coeffs, *x)
         assert tr.over_regulates(r.over_regulation_scaled, x[0]) == dec[k]
         assert float(s.over_regulation_scaled[k]) == pytest.approx(r.over_regulation_scaled,
                                                                    rel=1e-9, abs=1e-300)

@@ -16,11 +16,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from scipy.linalg import expm
 from scipy.optimize import brentq
+from transient_one import analyse_one
 
 from govopt.analysis import transient as tr_mod
 from govopt.analysis.transient import (
-    TransientResult,
-    analyse,
     analyse_many,
     classify,
     cubic_roots,
@@ -185,9 +184,9 @@ def test_example3_case_a_initial_conditions_and_paper_curve():
     ours = transient(a0, a1, a2, a3, *x0, t)
     paper = 0.0318 * np.exp(-29.1 * t) - 0.0814 * np.exp(-1.7 * t) - 0.0784 * np.exp(-10 * t)
     assert np.max(np.abs(ours - paper)) < 0.004
-    res = analyse(a0, a1, a2, a3, *map(float, x0))
+    res = analyse_one(a0, a1, a2, a3, *map(float, x0))
     assert res.over_regulation == 0.0 and res.first_arrival_time == math.inf
-    res15 = analyse(a0, 15.0, a2, a3, *map(float, x0))
+    res15 = analyse_one(a0, 15.0, a2, a3, *map(float, x0))
     assert res15.over_regulation == 0.0 and res15.kind == "complex"
 
 
@@ -346,7 +345,7 @@ def test_mpmath_reference_is_trustworthy_when_stiff():
 def test_unstable_cases_finite_and_reported():
     for name in ("k2_tiny", "k2_negative", "hurwitz_minus", "hurwitz_boundary"):
         coeffs, x0, *_ = HARD[name]
-        res = analyse(*coeffs, *x0)
+        res = analyse_one(*coeffs, *x0)
         assert res.stable is False and res.settling_time == math.inf
         assert all(np.isfinite(res.roots))
         assert np.isfinite(res.hurwitz_margin) and res.hurwitz_margin <= 0
@@ -355,7 +354,7 @@ def test_unstable_cases_finite_and_reported():
         s = analyse_many(*coeffs, *x0)
         assert not s.stable and s.settling_time == math.inf and np.isfinite(s.over_regulation)
     # k^2 < 0 with a real root in the right half plane (a3 < 0): also finite
-    res = analyse(1.0, 2.0, -1.0, -1.0, 0.1, 0.0, 0.0)
+    res = analyse_one(1.0, 2.0, -1.0, -1.0, 0.1, 0.0, 0.0)
     assert res.stable is False and np.isfinite(res.over_regulation)
 
 
@@ -477,7 +476,7 @@ def test_property_ode_initial_conditions_and_reference(design):
 
 
 # ---------------------------------------------------------------------------------------------
-# analyse(): exact events
+# exact events of one design
 # ---------------------------------------------------------------------------------------------
 
 
@@ -518,38 +517,33 @@ HEAVY = _design_from_roots([-1.0, -10.0, -100.0])
 
 def test_analyse_lightly_damped_against_reference():
     x0 = (-0.1, 0.0, 0.0)
-    res = analyse(*LIGHT, *x0)
-    assert isinstance(res, TransientResult) and res.stable and res.kind == "complex"
+    res = analyse_one(*LIGHT, *x0)
+    assert res.stable and res.kind == "complex"
     ref = _reference_events(LIGHT, x0, horizon=res.horizon, band=0.02)
     assert res.over_regulation > 0.01
     assert res.first_arrival_time == pytest.approx(ref["first"], rel=1e-10)
     assert res.over_regulation == pytest.approx(ref["over"], rel=1e-10)
     assert res.settling_time == pytest.approx(ref["settle"], rel=1e-10)
-    # the extrema listed are those of the analysed window (the grid stops once only the slow
-    # pair is left; settling is extrapolated from there)
-    ext_t = [te for te, _ in res.extrema]
-    assert 10 <= len(ext_t) <= len(ref["ext"])
-    assert np.allclose(ext_t, ref["ext"][: len(ext_t)], rtol=1e-10)
-    for te, v in res.extrema[:5]:
-        assert v == pytest.approx(ref_xi(LIGHT, x0)[0](te), abs=1e-14)
     # dense sampling only as a sanity bound: the exact maximum is at least the sampled one
     assert ref["dense_over"] <= res.over_regulation <= ref["dense_over"] * (1 + 1e-5)
-    # over-regulation = largest opposite-side excursion: here the first positive peak
-    first_pos = [v for _, v in res.extrema if v > 0][0]
-    assert res.over_regulation == pytest.approx(first_pos, rel=1e-12)
+    # over-regulation = largest opposite-side excursion: here the first positive peak, at an
+    # exact zero of xi'
+    f = ref_xi(LIGHT, x0)[0]
+    first_pos = next(te for te in ref["ext"] if f(te) > 0)
+    assert res.over_regulation_time == pytest.approx(first_pos, rel=1e-10)
+    assert res.over_regulation == pytest.approx(f(first_pos), rel=1e-12)
 
 
 def test_analyse_overdamped_no_over_regulation():
     x0 = (-0.1, 0.0, 0.0)
-    res = analyse(*HEAVY, *x0)
+    res = analyse_one(*HEAVY, *x0)
     assert res.kind == "real" and res.stable
     assert res.over_regulation == 0.0 and res.first_arrival_time == math.inf
-    assert res.extrema == ()
     ref = _reference_events(HEAVY, x0, horizon=10.0, band=0.02)
     assert ref["first"] == math.inf and ref["dense_over"] == 0.0
     assert res.settling_time == pytest.approx(ref["settle"], rel=1e-10)
     # same design kicked hard towards the new equilibrium: it now over-regulates
-    kicked = analyse(*HEAVY, -0.1, 0.0, 500.0)
+    kicked = analyse_one(*HEAVY, -0.1, 0.0, 500.0)
     refk = _reference_events(HEAVY, (-0.1, 0.0, 500.0), horizon=10.0, band=0.02)
     assert kicked.over_regulation == pytest.approx(refk["over"], rel=1e-10)
     assert kicked.first_arrival_time == pytest.approx(refk["first"], rel=1e-10)
@@ -559,18 +553,18 @@ def test_analyse_overdamped_no_over_regulation():
 def test_analyse_repeated_roots_and_stiff():
     # triple root: response e^-t (1 + t + t^2/2) x0 for xi'(0) = -xi0... check vs reference
     x0 = (1.0, 0.3, -2.0)
-    res = analyse(1.0, 1.0, 1.0, 1.0, *x0)
+    res = analyse_one(1.0, 1.0, 1.0, 1.0, *x0)
     ref = _reference_events((1.0, 1.0, 1.0, 1.0), x0, horizon=30.0, band=0.02)
     assert res.kind == "repeated"
     assert res.first_arrival_time == pytest.approx(ref["first"], rel=1e-9)
     assert res.over_regulation == pytest.approx(ref["over"], rel=1e-9)
     assert res.settling_time == pytest.approx(ref["settle"], rel=1e-9)
     # stiff design: finite, ordered events, no exception
-    st_ = analyse(*HARD["stiff"][0], 1.0, 0.0, 0.0)
+    st_ = analyse_one(*HARD["stiff"][0], 1.0, 0.0, 0.0)
     assert st_.stable and np.isfinite(st_.settling_time) and st_.settling_time > 1e5
 
 
-def test_analyse_many_matches_analyse():
+def test_batch_matches_one_design_at_a_time():
     rng = np.random.default_rng(7)
     n = 24
     a0 = rng.uniform(0.5, 2, n)
@@ -584,7 +578,7 @@ def test_analyse_many_matches_analyse():
     assert np.array_equal(s.over_regulation, over_regulation_many(a0, a1, a2, a3, xi0, 0.0, xdd))
     assert np.any(s.over_regulation > 0) and np.any(s.over_regulation == 0)
     for i in range(n):
-        r = analyse(a0[i], a1[i], a2[i], a3[i], xi0, 0.0, xdd[i])
+        r = analyse_one(a0[i], a1[i], a2[i], a3[i], xi0, 0.0, xdd[i])
         assert s.kind[i] == r.kind and s.stable[i] == r.stable
         assert s.over_regulation[i] == pytest.approx(r.over_regulation, rel=1e-9, abs=1e-15)
         assert s.first_arrival_time[i] == pytest.approx(r.first_arrival_time, rel=1e-9)
@@ -600,9 +594,9 @@ def test_hamabe_coefficients_case_a():
 
 
 @pytest.mark.parametrize("name", list(HARD))
-def test_analyse_many_matches_analyse_on_hard_cases(name):
+def test_batch_matches_one_design_on_hard_cases(name):
     coeffs, x0, *_ = HARD[name]
-    r = analyse(*coeffs, *x0)
+    r = analyse_one(*coeffs, *x0)
     s = analyse_many(*coeffs, *x0)
     for field in ("over_regulation", "first_arrival_time", "settling_time"):
         a, b = float(getattr(s, field)), getattr(r, field)
@@ -617,7 +611,7 @@ def test_extrapolated_settling_against_mpmath(name, rel):
     # grid stops there and settling (1e6 .. 1e13 s) is extrapolated extremum by extremum.
     # Check it at 50 digits: |xi(T)| = band |xi0|, larger just before, smaller for 2 periods on.
     coeffs, x0, *_ = HARD[name]
-    res = analyse(*coeffs, *x0)
+    res = analyse_one(*coeffs, *x0)
     T = res.settling_time
     assert res.stable and np.isfinite(T) and not res.truncated
     s = analyse_many(*coeffs, *x0)
@@ -625,7 +619,7 @@ def test_extrapolated_settling_against_mpmath(name, rel):
     # lobe is the last one above it hangs on rounding: agreement to 1e-9 relative, not 1e-12
     assert float(s.settling_time) == pytest.approx(T, rel=1e-9)
     q = max(abs(r.imag) for r in res.roots)
-    b = res.band * abs(x0[0])
+    b = 0.02 * abs(x0[0])  # the default band
     half = math.pi / q
     assert abs(mp_states(coeffs, x0, [T])[0, 0]) == pytest.approx(b, rel=rel)
     if name == "hurwitz_plus":
@@ -664,11 +658,10 @@ def test_overflow_gives_signed_inf_never_nan():
     assert got[1][1] == math.inf and got[0][2] == -math.inf and got[0][3] == math.inf
     assert np.isinf(got[0][4])
     assert np.array_equal(transient(*GROWING, t), got[0])
-    # the scalar path (analyse's root finding) too: events of the growing design, no nan
-    res = analyse(*GROWING, horizon=60.0)
+    # events of the growing design: finite, no nan
+    res = analyse_one(*GROWING, horizon=60.0)
     assert not res.stable and np.isfinite(res.first_arrival_time)
-    assert all(not math.isnan(v) for _, v in res.extrema)
-    assert not np.isnan(analyse_many(*GROWING, horizon=60.0).over_regulation)
+    assert not math.isnan(res.over_regulation) and not math.isnan(res.over_regulation_time)
     # a stable design far in its tail underflows to 0, never nan
     assert transient(1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, [1e6, 1e300]).tolist() == [0.0, 0.0]
 
@@ -688,14 +681,12 @@ def test_non_finite_inputs_are_named(k, name, bad):
         for a in (one, many):
             with pytest.raises(ValueError, match=f"^{name} is not finite"):
                 call(a)
-    with pytest.raises(ValueError, match=f"^{name} is not finite"):
-        analyse(*one)
     with pytest.raises(ValueError, match=r"at index \(1,\)"):
         transient(*many, [1.0])
 
 
 def test_a0_zero_is_refused():
-    for call in (lambda *a: transient(*a, [1.0]), analyse, analyse_many):
+    for call in (lambda *a: transient(*a, [1.0]), analyse_many):
         with pytest.raises(ValueError, match="^a0 must be non-zero"):
             call(0.0, 24.0, 211.2, 840.0, -0.128, 0.0, 18.7)
     with pytest.raises(ValueError, match=r"^a0 must be non-zero \(at index \(2,\)\)"):
@@ -781,7 +772,8 @@ def _boundary_designs(count=10):
 
 
 def test_modal_grid_changes_no_figure(monkeypatch):
-    """The grid only brackets: analyse_many and analyse give the same figures with the modal grid
+    """The grid only brackets: analyse_many (in batches and one design at a time) gives the same
+    figures with the modal grid
     as with the Newton form everywhere (the code before issue 14's target 4): on the hard cases,
     1000 random designs and 20 straddling the over-regulation boundary (no decision flips).
     Observed bit-identical (also on 4000 random and 1000 boundary designs, offline); 1e-12
@@ -794,7 +786,7 @@ def test_modal_grid_changes_no_figure(monkeypatch):
         designs["boundary"] = _boundary_designs()
         for k, A in designs.items():
             newton[k] = analyse_many(*A)
-        scalar = [analyse(*h) for h in hard]
+        scalar = [analyse_one(*h) for h in hard]
     fields = ("over_regulation", "first_arrival_time", "settling_time", "horizon",
               "over_regulation_scaled", "hurwitz_margin")
     for k, A in designs.items():
@@ -808,7 +800,7 @@ def test_modal_grid_changes_no_figure(monkeypatch):
     dec = over_regulates(newton["boundary"].over_regulation_scaled, designs["boundary"][4])
     assert dec[:dec.size // 2].all() and not dec[dec.size // 2:].any()
     for h, r in zip(hard, scalar, strict=True):
-        s = analyse(*h)
+        s = analyse_one(*h)
         for f in ("over_regulation", "first_arrival_time", "settling_time",
                   "over_regulation_scaled"):
             np.testing.assert_allclose(getattr(s, f), getattr(r, f), rtol=1e-12, atol=0)

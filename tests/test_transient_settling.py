@@ -1,9 +1,10 @@
 """Settling time past the event grid's limit (MAX_TRANSIENT_POINTS): stiff spreads of 1e5-1e8
 between the modes' decay rates with a lightly damped pair (a pendulum's 0.3 s swing under a huge
-flywheel's 1e5 s decay).  analyse and analyse_many must agree, and both must match a 50-digit
-reference: the modal solution evaluated with mpmath (independent of the module's Newton form).
+flywheel's 1e5 s decay).  analyse_many, in a batch and one design at a time, must agree and
+match a 50-digit reference: the modal solution evaluated with mpmath (independent of the
+module's Newton form).
 
-Settling is the smallest T with |xi(t)| <= band |xi0| for all t >= T (TransientResult), i.e. the
+Settling is the smallest T with |xi(t)| <= band |xi0| for all t >= T (TransientSummary), i.e. the
 last time |xi| leaves the band.
 """
 
@@ -14,8 +15,9 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from transient_one import analyse_one
 
-from govopt.analysis.transient import analyse, analyse_many, cubic_roots
+from govopt.analysis.transient import analyse_many, cubic_roots
 
 
 def _polyroots(coeffs):
@@ -137,7 +139,7 @@ def _decay_rate_error(coeffs):
 def test_settling_past_the_grid_against_mpmath(name):
     coeffs, x0 = CASES[name]
     ref = mp_settling(coeffs, x0)
-    r = analyse(*coeffs, *x0)
+    r = analyse_one(*coeffs, *x0)
     s = analyse_many(*coeffs, *x0)
     assert r.stable and not r.truncated and not bool(s.truncated)
     # one algorithm: the two paths agree to rounding (observed bit-identical)
@@ -164,7 +166,7 @@ def test_huge_flywheel_figures_before_and_after():
     (ln(0.127 / (2.56e-3 - ~0.83e-3)) / 1.26e-5 = 3.4e5 s)."""
     for name, ref in (("flywheel_f8e-7", 339082.3065), ("flywheel_f2.41e-6", 309233.5545)):
         coeffs, x0 = CASES[name]
-        assert analyse(*coeffs, *x0).settling_time == pytest.approx(ref, rel=1e-9)
+        assert analyse_one(*coeffs, *x0).settling_time == pytest.approx(ref, rel=1e-9)
         assert float(analyse_many(*coeffs, *x0).settling_time) == pytest.approx(ref, rel=1e-9)
 
 
@@ -175,12 +177,12 @@ def test_batched_with_other_designs_and_unresolved_reason():
                                                               0.0, 18.7)]
     s = analyse_many(*np.array(rows).T)
     for i, row in enumerate(rows):
-        assert s.settling_time[i] == pytest.approx(analyse(*row).settling_time, rel=1e-12)
+        assert s.settling_time[i] == pytest.approx(analyse_one(*row).settling_time, rel=1e-12)
     assert not s.truncated.any()
     # a figure that cannot be resolved (here: a 40-point limit, below two periods' search
     # window) is inf *with* truncated set, in both paths -- 'not decided', not 'never'
     coeffs, x0 = CASES["flywheel_f2.41e-6"]
-    r = analyse(*coeffs, *x0, max_points=40)
+    r = analyse_one(*coeffs, *x0, max_points=40)
     m = analyse_many(*coeffs, *x0, max_points=40)
     assert r.settling_time == math.inf and r.truncated and r.stable
     assert float(m.settling_time) == math.inf and bool(m.truncated) and bool(m.stable)

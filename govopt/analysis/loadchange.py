@@ -168,7 +168,7 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
     coefficients (:func:`coefficient_keys`)."""
     a, x, k2 = coefficients(spec, sd, lc, f)
     u = coordinate_unit(spec.governor)
-    res = tr.analyse(*a, *x, band=spec.analysis.settling_band)
+    res = tr.analyse_many(*a, *x, band=spec.analysis.settling_band)  # one design: scalars
     roots = np.asarray(res.roots, dtype=complex)
     slowest = float(np.min(np.abs(roots.real)))
     horizon = res.settling_time if np.isfinite(res.settling_time) else (
@@ -186,7 +186,7 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
         "initial_state": {f"xi_{u}": x[0], f"xi_dot_{u}_s": x[1], f"xi_ddot_{u}_s2": x[2]},
         "k2_rad2_s2": k2,
         "roots_per_s": [[float(r.real), float(r.imag)] for r in roots],
-        "kind": res.kind,
+        "kind": str(res.kind),
         "hurwitz_margin": float(res.hurwitz_margin),
         "vyshnegradsky": vyshnegradsky.point(*a),
         "stable": bool(res.stable),
@@ -199,7 +199,7 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
         "first_arrival_time_s": float(res.first_arrival_time),
         "settling_time_s": float(res.settling_time),
         # inf with this set: a stable response whose settling the solver could not place
-        # (transient.TransientResult.truncated), not one that never settles
+        # (transient.TransientSummary.truncated), not one that never settles
         "settling_not_decided": bool(res.truncated),
         "settling_band": spec.analysis.settling_band,
         "response": {"t_s": t.tolist(), f"xi_{u}": np.asarray(xi).tolist()},

@@ -35,8 +35,8 @@ they too start from the exact initial state rather than from the fast-mode-domin
 with the larger real part first).
 
 Event analysis (over-regulation, first arrival, settling) is exact root finding on the analytic
-response: :func:`analyse` (one design, ``brentq``) and :func:`analyse_many` (vectorised
-bracketed Newton over many designs).  Both bracket the events on a grid evaluated by
+response: :func:`analyse_many` (vectorised bracketed Newton over one or many designs) brackets
+the events on a grid evaluated by
 :func:`_grid_values` (the plain modal sum where the roots are well separated and every mode
 decays: bracketing only, every reported figure is located on the Newton form).
 Over-regulation is decided for all ``t >= 0``, not within
@@ -52,19 +52,15 @@ largest real part and returned as ``+-inf`` with their true sign, never nan.
 
 from __future__ import annotations
 
-import cmath
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..limits import MAX_TRANSIENT_POINTS
-from .roots import brentq  # scipy's brentq without importing scipy
 
 __all__ = [
-    "TransientResult",
     "TransientSummary",
-    "analyse",
     "analyse_many",
     "classify",
     "cubic_roots",
@@ -566,71 +562,6 @@ class _Response:
         return out
 
 
-class _ScalarResponse:
-    """The same Newton form for one design at one time, in Python complex arithmetic.
-
-    Used by the scalar root finders of :func:`analyse` (a numpy call per point costs ~20x
-    more).  Formulas and branch thresholds are those of :func:`_eval_block`; the tests check
-    the two paths against each other (analyse vs analyse_many) and against references.
-    """
-
-    def __init__(self, nodes, K):
-        self.l = [complex(v) for v in nodes]
-        self.K = [[complex(v) for v in row] for row in K]
-
-    @staticmethod
-    def _tdd1(la, lb, t, ea, eb):
-        if abs((lb - la) * t) < 1.0:
-            h = 0.5 * (lb - la) * t
-            sh = 1.0 + h * h / 6.0 * (1.0 + h * h / 20.0 * (1.0 + h * h / 42.0)) \
-                if abs(h) < 1e-3 else cmath.sinh(h) / h
-            return t * cmath.exp(la * t + h) * sh
-        return (eb - ea) / (lb - la)
-
-    def _value(self, t, j, l1, l2, l3):
-        e1, e2, e3 = cmath.exp(l1 * t), cmath.exp(l2 * t), cmath.exp(l3 * t)
-        f1 = self._tdd1(l1, l2, t, e1, e2)
-        g23 = self._tdd1(l2, l3, t, e2, e3)
-        if abs((l3 - l1) * t) < 1.0:
-            z1, z2, z3 = l1 * t, l2 * t, l3 * t
-            c = (z1 + z2 + z3) / 3.0
-            h1, h2, h3 = z1 - c, z2 - c, z3 - c
-            e2_, e3_ = h1 * h2 + h1 * h3 + h2 * h3, h1 * h2 * h3
-            hm3, hm2, hm1, total, fact = 0j, 0j, 1 + 0j, 0.5 + 0j, 2.0
-            for m in range(1, _SERIES_TERMS):
-                hm = -e2_ * hm2 + e3_ * hm3
-                fact *= m + 2
-                total += hm / fact
-                hm3, hm2, hm1 = hm2, hm1, hm
-            f2 = t * t * cmath.exp(c) * total
-        else:
-            f2 = (g23 - f1) / (l3 - l1)
-        k = self.K[j]
-        val = k[0] * e1 + k[1] * f1 + k[2] * f2
-        if j:
-            val += k[3] * e2 + k[4] * g23 + k[5] * e3
-        return val.real
-
-    def __call__(self, t, j=0):
-        l1, l2, l3 = self.l
-        try:
-            with np.errstate(all="ignore"):
-                v = self._value(t, j, l1, l2, l3)
-            if math.isfinite(v):
-                return v
-        except (OverflowError, ZeroDivisionError):
-            pass
-        # overflow: scale by the largest real part (see _Response.__call__), keep the sign
-        rho = max(l1.real, l2.real, l3.real)
-        v = self._value(t, j, l1 - rho, l2 - rho, l3 - rho)
-        if v == 0.0:
-            return 0.0
-        try:
-            return math.copysign(math.exp(math.log(abs(v)) + rho * t), v)
-        except OverflowError:
-            return math.copysign(math.inf, v)
-
-
 def transient_derivatives(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t, order=2):
     """Response of eq. (28) and its derivatives: a tuple ``(xi, xi', ..., xi^(order))``.
 
@@ -690,14 +621,14 @@ def over_regulates(over_regulation_scaled, xi0):
 
     Hamabe, Disturbing Actions of a Shaft Governor, Part III: over-regulation is the pendulum
     passing its new equilibrium, ``xi(t)`` changing sign.  ``over_regulation_scaled`` (rad) is
-    :attr:`TransientResult.over_regulation_scaled` (or the array of
+    :attr:`TransientSummary.over_regulation_scaled` (or the array of
     :attr:`TransientSummary`): ``-s0 xi(t) exp(-rho t)`` (``s0`` the side the response starts
     on, ``rho`` the largest real part of the roots) at the largest far-side excursion, or its
     upper limit as ``t -> inf`` if larger (with three real roots: its exact supremum over
     ``t >= 0``); positive exactly when ``xi`` crosses zero (:class:`_Tail`).  Scaling by the
     slowest mode keeps a crossing late in the tail visible: its plain amount is exponentially
     small (it may even underflow), which is why the decision is not made on
-    :attr:`~TransientResult.over_regulation` itself.  True
+    :attr:`~TransientSummary.over_regulation` itself.  True
     where ``over_regulation_scaled > OVER_TOL |xi0|``, and where it is nan (not decided, e.g.
     a grid truncated before the dominance time): conservative.  ``xi0`` in rad.
 
@@ -947,49 +878,6 @@ class _Tail:
         return np.where(short & ~over_regulates(out, self.xi0[rows]), np.nan, out)
 
 
-# --------------------------------------------------------------------------------------------
-# Analysis of one design: exact events by root finding on the analytic response
-# --------------------------------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class TransientResult:
-    """Load-change response of one design (Hamabe, Disturbing Actions of a Shaft Governor, III).
-
-    ``over_regulation`` is the largest excursion of ``xi`` past 0 on the side opposite to
-    ``xi0`` over all ``t >= 0`` (same units as ``xi``; 0.0 if it never crosses) -- the pendulum
-    passing its new equilibrium.  It may be exponentially small (a crossing late in the tail;
-    it underflows to 0 past ~1e-300): decide with :func:`over_regulates` on
-    ``over_regulation_scaled``, the same excursion measured against the slowest mode's decay
-    (see :class:`_Tail`), nan where undecided (conservatively: over-regulates).
-    ``first_arrival_time`` is the first ``t > 0`` with ``xi = 0`` (inf if none).
-    ``settling_time`` is the smallest ``T`` with ``|xi(t)| <= band * |xi0|`` for all ``t >= T``
-    (``|xi0|`` replaced by ``max |xi|`` if ``xi0 = 0``); inf for an unstable design, or when a
-    stable design has not settled within ``horizon`` (``|xi| <= band |xi0| / 4`` over its last
-    quarter; then ``truncated`` is True: *not decided*, not 'never').  Where the event grid is
-    cut at ``max_points`` before the response settles (a lightly damped pendulum under a huge
-    flywheel) settling is found past it from the modes' envelope (:func:`_envelope_settling`)
-    and may exceed ``horizon``.  ``extrema`` lists
-    ``(t, xi(t))`` at each zero of ``xi'`` in ``(0, horizon]``; the horizon reaches every zero
-    of ``xi`` and the largest far-side excursion (:class:`_Tail`).  For unstable designs
-    ``over_regulation`` and the other events are those within ``horizon`` (the decision still
-    covers all t).
-    """
-
-    roots: tuple[complex, complex, complex]
-    kind: str
-    stable: bool
-    hurwitz_margin: float
-    over_regulation: float
-    first_arrival_time: float
-    settling_time: float
-    extrema: tuple[tuple[float, float], ...]
-    horizon: float
-    band: float
-    truncated: bool = False
-    over_regulation_scaled: float = math.nan
-
-
 def _time_scales(roots):
     """(lam_max, lam_min, decay, omega) per row of roots (..., 3): finite, positive scales."""
     mag = np.abs(roots)
@@ -1014,27 +902,6 @@ def _default_horizon(roots, band, stable):
     return np.where(np.isfinite(h) & (h > 0), h, 40.0 * 2.0 * np.pi / lam_min)
 
 
-def _grid(roots, horizon, max_points):
-    """Event-search grid on [0, horizon] for one design: log-spaced from the fastest time scale
-    plus uniform at _PER_PERIOD points per period; returns (t, truncated)."""
-    lam_max, _, _, omega = (float(v[0]) for v in _time_scales(roots[None, :]))
-    t0 = min(1e-3 / lam_max, 1e-3 * horizon)
-    decades = max(math.log10(horizon / t0), 1.0)
-    parts = [np.array([0.0]), np.geomspace(t0, horizon, int(48 * decades) + 16)]
-    truncated = False
-    if omega > 0:
-        dt = 2.0 * np.pi / omega / _PER_PERIOD
-        n_u = int(math.ceil(horizon / dt))
-        end = horizon
-        if n_u > max_points:
-            n_u, truncated, end = max_points, True, max_points * dt
-        parts.append(np.linspace(0.0, end, n_u + 1))
-    t = np.unique(np.concatenate(parts))
-    if truncated:
-        t = t[t <= end]
-    return t, truncated
-
-
 def _tail_ok(t, xi, b):
     """Whether a stable response is well inside the band over the last quarter of its grid
     (rows of t, xi; b per row): then the horizon is long enough for settling."""
@@ -1042,200 +909,34 @@ def _tail_ok(t, xi, b):
     return np.max(np.where(tail, np.abs(xi), 0.0), axis=-1) <= 0.25 * b
 
 
-def _brackets(y):
-    """Indices i with a root in [y[i], y[i+1]]: a sign change, or an isolated exact zero at
-    i+1 between values of opposite sign (runs of exact zeros, i.e. underflow, are not roots)."""
-    s = np.sign(y)
-    change = s[:-1] * s[1:] < 0
-    change[:-1] |= (s[1:-1] == 0) & (s[:-2] * s[2:] < 0)
-    return np.nonzero(change)[0]
-
-
-def _initial_side(d):
-    """Sign of the first non-zero initial derivative (the side the response starts on)."""
-    for v in d:
-        if v != 0 and np.isfinite(v):
-            return float(np.sign(v))
-    return 0.0
-
-
-def analyse(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
-            max_points=MAX_TRANSIENT_POINTS):
-    """Analyse the load-change response of one design; returns a :class:`TransientResult`.
-
-    Hamabe, Disturbing Actions of a Shaft Governor, Part III: roots of (29), stability (32),
-    kind (37), and the over-regulation he asks to avoid ("reach the new configuration as soon
-    as possible, but without over-regulation").  Events are located exactly, not read off a
-    grid: the zeros of ``xi'`` (the extrema) are bracketed on a grid whose spacing follows the
-    roots' time scales (log-spaced from 1e-3 of the fastest time constant, plus 24 points per
-    period of the fastest oscillation) and solved with ``scipy.optimize.brentq`` on the analytic
-    ``xi'``; ``xi`` is monotone between consecutive extrema, so each zero of ``xi`` and each
-    crossing of ``|xi| = band |xi0|`` is bracketed by two turning points and solved with
-    ``brentq`` on the analytic ``xi``.  ``horizon`` defaults to ``(ln(1/band) + 12)/decay`` for a
-    stable design (decay = slowest rate), extended to the window the dominant modes call for
-    (over-regulation for all ``t >= 0``: :class:`_Tail`), doubled until
-    ``|xi| <= band |xi0| / 4`` over its last quarter, and to a few slow periods (at most e^20
-    growth) for an unstable one; grids are capped at ``max_points`` uniform points (past a
-    cut, settling comes from the modes' envelope: :func:`_envelope_settling`).  An
-    unstable design gives ``stable=False``, ``settling_time=inf`` and events within the horizon
-    (+-inf where they overflow), never an exception or nan.
-    """
-    if not all(np.ndim(v) == 0 for v in (a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0)):
-        raise ValueError("analyse() takes one design (scalars); use analyse_many() for arrays")
-    if not band > 0:
-        raise ValueError("band must be positive")
-    resp, _ = _Response.build(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, order=1)
-    roots = resp.roots[0]
-    if not np.isfinite(roots).all():
-        raise ValueError("invalid coefficients (a0 must be non-zero and all finite)")
-    stable = bool(is_stable(a0, a1, a2, a3))
-    margin = float(hurwitz_margin(a0, a1, a2, a3))
-    kind = str(_classify_roots(roots, 1e-6))
-    d = resp.d[0]
-    s0 = _initial_side(d)
-
-    point = _ScalarResponse(resp.nodes[0], resp.C[0])
-
-    def f(t, j=0, shift=0.0):
-        return point(t, j) - shift
-
-    H = float(_default_horizon(roots[None, :], band, np.array([stable]))[0]) if horizon is None \
-        else float(horizon)
-    if not H > 0:
-        raise ValueError("horizon must be positive")
-    # over-regulation for all t >= 0: the window the dominant modes call for (see _Tail)
-    late = _Tail(resp, np.array([s0]))
-    if horizon is None:
-        H = max(H, float(late.need[0]))
-    # a slowest damped pair left alone after a window: stop the grid there, extrapolate settling
-    g_end, _, extrap = _modal_windows(roots[None, :], d[None, :3], np.array([stable]),
-                                      np.array([H]), _PER_PERIOD)
-    extrap = bool(extrap[0])
-    tol = dict(xtol=1e-300, rtol=4 * _EPS, maxiter=200)
-
-    def root(j, shift, lo, hi):
-        flo, fhi = f(lo, j, shift), f(hi, j, shift)
-        if fhi == 0.0:
-            return float(hi)
-        if not flo * fhi < 0:  # a sign change of rounding noise only (e.g. xi' == 0 exactly)
-            return None
-        return brentq(f, lo, hi, args=(j, shift), **tol)
-
-    for _ in range(8):  # longer windows until no later far-side excursion can be larger
-        scale = abs(float(xi0))
-        for attempt in range(8):
-            t, truncated = _grid(roots, float(g_end[0]) if extrap else H, max_points)
-            y = _grid_values(resp, t[None, :])[0]
-            xi, xid = y[0], y[1]
-            if scale == 0.0:  # grid values only bracket: the peak's Newton-form value
-                scale = abs(f(float(t[np.argmax(np.abs(xi))])))
-            b = band * scale
-            if (not stable or horizon is not None or truncated or extrap or _tail_ok(t, xi, b)
-                    or attempt == 7):
-                break
-            H *= 2.0
-        # extrema: zeros of xi' for t > 0 (t = 0 itself is a turning point when xi'(0) = 0)
-        ip = int(np.nonzero(t > 0)[0][0])
-        ext_t = [root(1, 0.0, t[i], t[i + 1]) for i in _brackets(xid[ip:]) + ip]
-        ext = tuple((float(te), f(te)) for te in ext_t if te is not None and te > 0)
-        x_end = f(float(t[-1]))
-        # over-regulation: largest excursion on the side opposite to the start
-        far = [(-s0 * v, te) for te, v in ext + ((float(t[-1]), x_end),)
-               if np.isfinite(v)] if s0 != 0.0 else []
-        over, t_over = max([(0.0, 0.0)] + far)
-        w = float(late.wanted(np.array([0]), np.array([over]))[0])
-        if horizon is not None or extrap or truncated or not w > H * (1.0 + 1e-9):
-            break
-        H = w
-    over_scaled = float(late.scaled(np.array([0]), np.array([over]), np.array([t_over]),
-                                    np.array([H if extrap else float(t[-1])]))[0])
-    if xi0 == 0:  # band relative to the exact peak |xi| instead of |xi0|
-        scale = max([scale] + [abs(v) for _, v in ext])
-        b = band * scale
-    # between consecutive turning points xi is monotone: every event is bracketed exactly
-    P = [0.0] + [te for te, _ in ext] + [float(t[-1])]
-    X = [float(xi0)] + [v for _, v in ext] + [x_end]
-    zeros = []
-    for i in range(len(P) - 1):
-        if X[i + 1] == 0.0 and 0 < i + 1 < len(P) - 1:  # touches 0 at an extremum
-            zeros.append(P[i + 1])
-        elif X[i] * X[i + 1] < 0:
-            z = root(0, 0.0, P[i], P[i + 1])
-            if z is not None:
-                zeros.append(z)
-        if zeros:
-            break
-    first_arrival = zeros[0] if zeros else math.inf
-    # settling: last time |xi| = band * scale (inf if not settled within the analysed horizon)
-    settled = _tail_ok(t, xi, b)
-    cut, truncated = truncated, bool(stable and not extrap and not settled)
-    if stable and cut and not settled:  # grid cut at max_points: the modes' envelope decides
-        resp2 = _Response.build(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, order=2)[0]
-        settling = float(_envelope_settling(resp2, np.array([b]), _PER_PERIOD, max_points)[0])
-        truncated = math.isnan(settling)
-        settling = math.inf if truncated else settling
-    elif extrap and ext and abs(ext[-1][1]) > b:
-        # only the slowest pair is left: extrema every pi/q, heights x exp(-sigma pi/q)
-        te, xe = ext[-1]
-        lam = roots[np.argmax(roots.real)]
-        half = math.pi / abs(lam.imag)
-        k = math.floor(math.log(abs(xe) / b) / (-lam.real * half))
-        steps = 0
-        while k > 0 and abs(f(te + k * half)) <= b and steps < 100_000:
-            k, steps = k - 1, steps + 1
-        if steps == 100_000 and abs(f(te + k * half)) <= b:
-            # still inside the band 1e5 half periods back (~1 s; k can run to millions: a slow,
-            # lightly damped pair, e.g. a huge flywheel; a step at a time took minutes): the
-            # heights fall geometrically, so bisect between te (outside) and here (inside)
-            lo, hi = 0, k
-            while hi - lo > 1:
-                mid = (lo + hi) // 2
-                lo, hi = (mid, hi) if abs(f(te + mid * half)) > b else (lo, mid)
-            k = lo
-        tk = te + k * half
-        settling = root(0, math.copysign(b, f(tk)), tk, tk + half)
-        if settling is None:  # |xi| = b to rounding at the extremum itself
-            settling = tk
-    elif not stable or truncated or not np.isfinite(X).all():
-        settling = math.inf
-    else:
-        above = [i for i, v in enumerate(X) if abs(v) > b]
-        if not above:
-            settling = 0.0
-        elif above[-1] == len(P) - 1:
-            settling, truncated = math.inf, True
-        else:
-            k = above[-1]
-            settling = root(0, math.copysign(b, X[k]), P[k], P[k + 1])
-            if settling is None:  # |xi| = b to rounding at the turning point itself
-                settling = P[k]
-    return TransientResult(
-        roots=tuple(complex(r) for r in roots),
-        kind=kind,
-        stable=stable,
-        hurwitz_margin=margin,
-        over_regulation=float(over),
-        first_arrival_time=float(first_arrival),
-        settling_time=float(settling),
-        extrema=ext,
-        horizon=float(H if extrap else t[-1]),
-        band=float(band),
-        truncated=bool(truncated),
-        over_regulation_scaled=over_scaled,
-    )
-
-
 # --------------------------------------------------------------------------------------------
-# Many designs at once
+# The analysis of one design or many at once
 # --------------------------------------------------------------------------------------------
 
 
 @dataclass(frozen=True)
 class TransientSummary:
-    """Vectorised load-change summary over many designs (arrays of the broadcast shape).
+    """Load-change response of designs (Hamabe, Disturbing Actions of a Shaft Governor, III):
+    arrays of the broadcast shape of :func:`analyse_many`'s inputs (``roots`` has a trailing
+    axis of 3; one design: 0-d arrays).
 
-    Same meanings as :class:`TransientResult` (``roots`` has a trailing axis of 3);
-    ``truncated`` is True where a stable design's settling was not decided (inf).
+    ``over_regulation`` is the largest excursion of ``xi`` past 0 on the side opposite to
+    ``xi0`` over all ``t >= 0`` (same units as ``xi``; 0.0 if it never crosses) -- the pendulum
+    passing its new equilibrium.  It may be exponentially small (a crossing late in the tail;
+    it underflows to 0 past ~1e-300): decide with :func:`over_regulates` on
+    ``over_regulation_scaled``, the same excursion measured against the slowest mode's decay
+    (see :class:`_Tail`), nan where undecided (conservatively: over-regulates).
+    ``first_arrival_time`` is the first ``t > 0`` with ``xi = 0`` (inf if none).
+    ``settling_time`` is the smallest ``T`` with ``|xi(t)| <= band * |xi0|`` for all ``t >= T``
+    (``|xi0|`` replaced by ``max |xi|`` if ``xi0 = 0``); inf for an unstable design, or when a
+    stable design has not settled within ``horizon`` (``|xi| <= band |xi0| / 4`` over its last
+    quarter; then ``truncated`` is True: *not decided*, not 'never').  Where the event grid is
+    cut at ``max_points`` before the response settles (a lightly damped pendulum under a huge
+    flywheel) settling is found past it from the modes' envelope (:func:`_envelope_settling`)
+    and may exceed ``horizon``.  The horizon reaches every zero of ``xi`` and the largest far-side
+    excursion (:class:`_Tail`).  For unstable designs
+    ``over_regulation`` and the other events are those within ``horizon`` (the decision still
+    covers all t).
     """
 
     roots: np.ndarray
@@ -1248,6 +949,8 @@ class TransientSummary:
     horizon: np.ndarray
     over_regulation_scaled: np.ndarray | None = None
     truncated: np.ndarray | None = None
+    #: the time of the largest far-side excursion (an exact zero of ``xi'``; 0 if none)
+    over_regulation_time: np.ndarray | None = None
 
 
 def _refine(resp, j, target, lo, hi, iters=100):
@@ -1559,7 +1262,8 @@ def _modal_windows(roots, d, ok, H, per_period):
 
 def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None,
                  n_log=160, per_period=_PER_PERIOD, max_points=MAX_TRANSIENT_POINTS):
-    """Vectorised :func:`analyse` for many designs (the optimiser's entry point).
+    """The load-change response of one design or many at once (the one transient analysis:
+    :func:`govopt.evaluate` calls it with one design, the design search with many).
 
     Hamabe, Disturbing Actions of a Shaft Governor, Part III, eqs. (28), (32), (37).  Each design
     gets its own grid: ``n_log`` log-spaced times from 1e-3 of its fastest time constant to its
@@ -1570,15 +1274,15 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
     extremum -- see :func:`_modal_windows`).  Designs are processed in batches of equal grid
     width.  The first zero of ``xi``, the largest opposite-side excursion (at a zero of
     ``xi'``) and the last band crossing are bracketed and refined by a vectorised bracketed
-    Newton iteration on the analytic response, so they agree with :func:`analyse` to rounding.
+    Newton iteration on the analytic response (exact to rounding).
     Over-regulation is decided for all ``t >= 0`` (:class:`_Tail`, :func:`over_regulates`): the
-    default horizon is that of :func:`analyse`, extended to the window the dominant modes call
-    for (the dominance time, and until no later far-side excursion can be larger than the one
-    found), and doubled for the designs whose tail is not yet well inside the band; a stable
-    design not settled within it is reported inf (``truncated``).  Where the uniform grid is cut
-    at ``max_points`` before settling, settling comes from the modes' envelope
-    (:func:`_envelope_settling`, the same as :func:`analyse`).  Returns a
-    :class:`TransientSummary`; raises
+    default horizon is ``(ln(1/band) + 12)/decay`` (decay = slowest rate) for a stable design
+    and a few slow periods (at most e^20 growth) for an unstable one, extended to the window the
+    dominant modes call for (the dominance time, and until no later far-side excursion can be
+    larger than the one found), and doubled for the designs whose tail is not yet well inside
+    the band; a stable design not settled within it is reported inf (``truncated``).  Where the
+    uniform grid is cut at ``max_points`` before settling, settling comes from the modes'
+    envelope (:func:`_envelope_settling`).  Returns a :class:`TransientSummary`; raises
     ValueError for non-finite inputs or ``a0 = 0`` (nan events only where the roots themselves
     overflow).
     """
@@ -1685,7 +1389,7 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
         roots=rs(roots), kind=rs(kind), stable=rs(stable), hurwitz_margin=rs(margin),
         over_regulation=rs(over), first_arrival_time=rs(arrival), settling_time=rs(settling),
         horizon=rs(H), over_regulation_scaled=rs(scaled),
-        truncated=rs(unresolved | (stable & np.isinf(settling))),
+        truncated=rs(unresolved | (stable & np.isinf(settling))), over_regulation_time=rs(t_over),
     )
 
 

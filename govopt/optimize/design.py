@@ -35,6 +35,7 @@ from ..analysis import loadchange, statics
 from ..analysis import transient as tr
 from ..errors import DesignError, InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS, design_size_error
+from ..requirements import SpringFigures, holds, requirement_rows, stress_row
 from ..spec import Design, Requirements, Spec, Speed
 from ..springs import helical as hx
 from ..units import G_STANDARD, SI_UNITS
@@ -364,30 +365,25 @@ def catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
 
 
 def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=()):
-    """Spring constraints that do not depend on the governor's statics (arrays); with a wire
-    grade the spring engineering table (diameter-dependent allowables, the spring kind's own
-    checks, surge clear of the forcing's ``harmonics`` in Hz) instead of the one stress; without
-    one, the compression spring's geometric rows too (coil clash, buckling, free pitch:
+    """Spring constraints that do not depend on the governor's statics (arrays): the spring's
+    requirement rows (:func:`govopt.requirements.requirement_rows`, group ``"spring"``: index,
+    body length, outer diameter, surge); with a wire grade the spring engineering table
+    (diameter-dependent allowables, the spring kind's own checks, surge clear of the forcing's
+    ``harmonics`` in Hz) instead of the one stress; without one, the compression spring's
+    geometric rows too (coil clash, buckling, free pitch:
     :func:`govopt.analysis.spring_engineering.geometry_rows`)."""
     mat = spec.material
-    C = hx.spring_index_r(d, r)
-    ok = (C >= req.spring_index[0]) & (C <= req.spring_index[1])
+    ok = holds([row for row in requirement_rows(spec, req) if row.group == "spring"],
+               SpringFigures(d, r, n, l0, mat))
     from ..analysis import spring_engineering as se
 
     if mat.grade is None:  # the stress against the spec's allowable; coil clash and buckling
-        ok &= hx.shear_stress_r(F_max, d, r, mat.stress_correction) \
-            <= mat.allowable_shear_stress
-        ok &= se.geometry_screen(spec, d, r, n, hx.stiffness_r(d, r, n, mat.shear_modulus), l0)
-    else:
-        ok &= se.screen(spec, d, r, n, hx.stiffness_r(d, r, n, mat.shear_modulus), l0,
-                        harmonics)
-    ok &= (n + 1.0) * d <= spec.governor.spring_length_factor * l0
-    if req.max_outer_diameter is not None:
-        ok &= 2.0 * r + d <= req.max_outer_diameter
-    if req.min_surge_frequency is not None:
-        ok &= hx.surge_frequency_r(d, r, n, mat.shear_modulus, mat.density) \
-            >= req.min_surge_frequency
-    return ok
+        ok = ok & holds([stress_row(mat)],
+                        {"stress": hx.shear_stress_r(F_max, d, r, mat.stress_correction)})
+        return ok & se.geometry_screen(spec, d, r, n,
+                                       hx.stiffness_r(d, r, n, mat.shear_modulus), l0)
+    return ok & se.screen(spec, d, r, n, hx.stiffness_r(d, r, n, mat.shear_modulus), l0,
+                          harmonics)
 
 
 def objective_values(req: Requirements, m, spring_mass, window=None, central=0.0):
@@ -635,15 +631,14 @@ def gp_values(spec: Spec, req: Requirements, km: KappaModel, i: int, k_lo: float
     bounds and limits, and the body length within the band's largest free length; the allowable
     ``k_s`` is the caller's (a grade's rule or the spec's)."""
     mat = spec.material
-    return dict(kappa_min=k_lo, kappa_max=k_hi, F_max=float(km.force.y[i, -1]),
-                force_per_stiffness=per if per > 0 else None, G=mat.shear_modulus,
-                density=mat.density, d_min=req.wire_diameter[0], d_max=req.wire_diameter[1],
-                r_min=req.coil_radius[0], r_max=req.coil_radius[1], n_min=req.active_turns[0],
-                n_max=req.active_turns[1], C_min=req.spring_index[0], C_max=req.spring_index[1],
-                D_out_max=req.max_outer_diameter,
-                L_body_max=spec.governor.spring_length_factor
-                * float(km.l0.x[i, 0] + km.l0.y[i, 0] / k_hi),
-                f_surge_min=req.min_surge_frequency)
+    values = dict(kappa_min=k_lo, kappa_max=k_hi, F_max=float(km.force.y[i, -1]),
+                  force_per_stiffness=per if per > 0 else None, G=mat.shear_modulus,
+                  density=mat.density)
+    # the requirement rows' GP limits; the body length at the band's largest free length
+    ev = {"l0": float(km.l0.x[i, 0] + km.l0.y[i, 0] / k_hi)}
+    values.update({row.gp.limit: row.limit(ev) for row in requirement_rows(spec, req)
+                   if row.gp is not None})
+    return values
 
 
 def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
@@ -1039,7 +1034,7 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
             head = (f"{spec.path}: infeasible: the requirement '{lo_name}' needs a stiffer "
                     f"spring than '{hi_name}' allows at every {weight} in the bounds")
         cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin),
-                 ("pendulum weight bounds", with_mass, "widen x", None)]
+                 (f"bounds.{spec.governor.mass_key}_weight", with_mass, "widen x", None)]
     elif stage == "spring" and stats["statics_feasible"] == 0:
         head = (f"{spec.path}: infeasible: no catalogue spring's stiffness falls in the window "
                 "the statics allow (the speed band, k^2 margins, free length) at any "

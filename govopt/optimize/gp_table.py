@@ -3,7 +3,10 @@ bound decides it, without a solver.
 
 The rows of the least-mass helical spring's geometric programme (:mod:`govopt.optimize.spring_gp`,
 whose docstring gives each row's source) are functions of ``d, r, n, t`` and the parameter values
-``P``: cvxpy builds the GP from them, and :func:`energy_optimum` evaluates them in numpy. They
+``P``: cvxpy builds the GP from them, and :func:`energy_optimum` evaluates them in numpy. The
+stiffness and stress rows are the GP's own; the bounds and the spring's requirements (index,
+outer diameter, body length, surge) are the GP forms of their requirement rows
+(:data:`govopt.requirements.GP_BOUNDS`), which the evaluator checks too. They
 live apart from :mod:`~govopt.optimize.spring_gp` so that a design whose continuous bound
 :func:`energy_optimum` certifies never imports cvxpy (docs/decisions.md, imports
 on demand).
@@ -18,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from govopt.requirements import GP_BOUNDS
 from govopt.springs import helical as hx
 
 #: Stand-ins for "no limit" (the GP needs a positive number for every parameter).
@@ -81,10 +85,6 @@ def stress_g(d, r, n, t, P, correction):
     return 16.0 / np.pi * F * (r * d**-3 + 0.75 * t * r * d**-3 + 0.3075 * d**-2)
 
 
-def _surge_g(d, r, n, P):
-    return d / (8.0 * np.pi) * r**-2 / n * P["G"] ** 0.5 * (2.0 * P["density"]) ** -0.5
-
-
 def _stiffness_g(d, r, n, P):
     return P["G"] * d**4 / (64.0 * r**3 * n)
 
@@ -108,27 +108,13 @@ def gp_constraints(correction: str, stiffness: str,
     stress_src = hamabe + {"wahl": "; Wahl 1944 eq. 2-12",
                            "bergstrasser": "; Bergstraesser, EN 13906-1, Shigley eq. (10-5)"
                            }.get(correction, "")
-    out += [
-        GPConstraint("allowable stress", "k_s", "upper",
-              lambda d, r, n, t, P: stress_g(d, r, n, t, P, correction) * d**m
-              if m else stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
-              stress_src),
-        GPConstraint("minimum wire diameter", "d_min", "lower", lambda d, r, n, t, P: d),
-        GPConstraint("maximum wire diameter", "d_max", "upper", lambda d, r, n, t, P: d),
-        GPConstraint("minimum coil radius", "r_min", "lower", lambda d, r, n, t, P: r),
-        GPConstraint("maximum coil radius", "r_max", "upper", lambda d, r, n, t, P: r),
-        GPConstraint("minimum active turns", "n_min", "lower", lambda d, r, n, t, P: n),
-        GPConstraint("maximum active turns", "n_max", "upper", lambda d, r, n, t, P: n),
-        GPConstraint("minimum spring index", "C_min", "lower", lambda d, r, n, t, P: 2.0 * r / d,
-              source="Wahl 1944 ch. 2"),
-        GPConstraint("maximum spring index", "C_max", "upper", lambda d, r, n, t, P: 2.0 * r / d,
-              source="Wahl 1944 ch. 2"),
-        GPConstraint("outer diameter", "D_out_max", "upper", lambda d, r, n, t, P: 2.0 * r + d),
-        GPConstraint("body length", "L_body_max", "upper", lambda d, r, n, t, P: (n + 1.0) * d),
-        GPConstraint("surge frequency", "f_surge_min", "lower",
-              lambda d, r, n, t, P: _surge_g(d, r, n, P), (("G", 0.5), ("density", -0.5)),
-              "Wahl 1944 ch. 25"),
-    ]
+    out.append(GPConstraint("allowable stress", "k_s", "upper",
+                            lambda d, r, n, t, P: stress_g(d, r, n, t, P, correction) * d**m
+                            if m else stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
+                            stress_src))
+    # the bounds and the spring's requirements: their rows' GP forms (govopt.requirements)
+    out += [GPConstraint(f.name, f.limit, f.sense, f.g, f.g_exps, f.source)
+            for f in GP_BOUNDS.values()]
     return out
 
 

@@ -1,0 +1,378 @@
+"""Every governor requirement declared once, as a row, and the one evaluator of rows over arrays.
+
+A :class:`Row` (the shape of :class:`govopt.springs.checks.Row`, extended) is ``value(ev) sense
+limit(ev)`` with ``ev`` a mapping of SI figures, each a float or an array over N designs; its
+group (``"statics"``, ``"spring"``, ``"bounds"``, ``"dynamics"``), its unit, its source, the
+scale of its margin where the limit is zero, a verdict where the margin alone cannot decide it,
+and where one exists its form in the spring's geometric programme (:class:`GPForm`).
+
+The same rows are read by :func:`govopt.evaluate` (N = 1), the bulk evaluation
+(:mod:`govopt.bulk`), the design search's catalogue screen
+(:func:`govopt.optimize.design.spring_checks`) and the spring GP's constraint table
+(:mod:`govopt.optimize.gp_table`); :class:`CheckTable` turns rows into values, margins and
+verdicts over N designs, and into :class:`govopt.result.Check` objects for one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .analysis import statics
+from .springs import helical as hx
+from .springs.checks import Row as SpringRow
+from .units import SI_UNITS
+from .verdict import Check
+
+#: a check that holds within this relative margin counts as satisfied (``Check.passed``)
+PASS_TOL = -1e-9
+
+
+@dataclass(frozen=True)
+class GPForm:
+    """A row in the spring GP (:mod:`govopt.optimize.gp_table`): ``g(d, r, n, t, P) sense
+    P[limit]`` with ``sense`` "upper" (``<=``), "lower" (``>=``) or "equal"; ``g_exps`` the
+    exponents of the parameters in ``g`` (a monomial in them), for the duals' sensitivities;
+    ``name``: the constraint's name in the GP's solution."""
+
+    name: str
+    limit: str
+    sense: str
+    g: Callable[..., Any]
+    g_exps: tuple[tuple[str, float], ...] = ()
+    source: str = ""
+
+
+@dataclass(frozen=True)
+class Row(SpringRow):
+    """One requirement: ``value(ev) sense limit(ev)`` over arrays (see the module's text).
+
+    ``scale(ev)``: the margin's scale where the limit is zero (None: ``|limit|``);
+    ``verdict(ev)``: pass/fail decided elsewhere (None: from the margin); ``gp``: the row's GP
+    form, where one exists."""
+
+    group: str = ""
+    scale: Callable | None = None
+    verdict: Callable | None = None
+    gp: GPForm | None = None
+
+
+def _const(v):
+    return lambda ev: v
+
+
+# ---------------------------------------------------------------------------------------------
+# The spring GP's forms of the requirements (Hamabe Example 1; Wahl 1944)
+# ---------------------------------------------------------------------------------------------
+
+def surge_g(d, r, n, P):
+    """Surge frequency ``d / (8 pi r^2 n) sqrt(G / (2 rho))`` (Hz; Wahl 1944 ch. 25, both ends
+    fixed) as a monomial in ``d, r, n`` and the parameters ``G`` (Pa), ``density`` (kg/m^3)."""
+    return d / (8.0 * np.pi) * r**-2 / n * P["G"] ** 0.5 * (2.0 * P["density"]) ** -0.5
+
+
+def _index_g(d, r, n, t, P):
+    return 2.0 * r / d
+
+
+GP_BOUNDS = {
+    "d_min": GPForm("minimum wire diameter", "d_min", "lower", lambda d, r, n, t, P: d),
+    "d_max": GPForm("maximum wire diameter", "d_max", "upper", lambda d, r, n, t, P: d),
+    "r_min": GPForm("minimum coil radius", "r_min", "lower", lambda d, r, n, t, P: r),
+    "r_max": GPForm("maximum coil radius", "r_max", "upper", lambda d, r, n, t, P: r),
+    "n_min": GPForm("minimum active turns", "n_min", "lower", lambda d, r, n, t, P: n),
+    "n_max": GPForm("maximum active turns", "n_max", "upper", lambda d, r, n, t, P: n),
+    "C_min": GPForm("minimum spring index", "C_min", "lower", _index_g,
+                    source="Wahl 1944 ch. 2"),
+    "C_max": GPForm("maximum spring index", "C_max", "upper", _index_g,
+                    source="Wahl 1944 ch. 2"),
+    "D_out_max": GPForm("outer diameter", "D_out_max", "upper",
+                        lambda d, r, n, t, P: 2.0 * r + d),
+    "L_body_max": GPForm("body length", "L_body_max", "upper",
+                         lambda d, r, n, t, P: (n + 1.0) * d),
+    "f_surge_min": GPForm("surge frequency", "f_surge_min", "lower",
+                          lambda d, r, n, t, P: surge_g(d, r, n, P),
+                          (("G", 0.5), ("density", -0.5)), "Wahl 1944 ch. 25"),
+}
+"""The GP forms of the spring's requirements and search bounds, by the GP parameter that is
+their limit (:mod:`govopt.optimize.gp_table` appends them to its stiffness and stress rows)."""
+
+
+# ---------------------------------------------------------------------------------------------
+# The governor's rows
+# ---------------------------------------------------------------------------------------------
+
+def statics_rows(spec) -> list[Row]:
+    """The statics requirements (group ``"statics"``); ``ev``: ``irregularity``; ``band_low``,
+    ``band_high`` (the operating band's ends with friction, :func:`statics.band_speeds_squared`);
+    ``rise`` (the least slope of the characteristic, :func:`statics.rising_slopes`); ``w0sq``
+    (the reference ``omega0^2``); ``F_min``, ``F_top`` (the least and the largest absolute
+    spring force); ``k2_min``, ``k2_max``."""
+    gov, sp, req = spec.governor, spec.speed, spec.requirements
+    margin = req.k2_margin if req else 0.0
+    unit = SI_UNITS[gov.coordinate]
+    rows = []
+    if sp is not None:
+        rows.append(Row("irregularity", "<=", "", lambda ev: ev["irregularity"],
+                        _const(sp.irregularity),
+                        "Hamabe Part I: (omega_a - omega_i) / omega0, omega0 the spec's mean "
+                        "speed", group="statics"))
+        if sp.band:
+            rows += [Row(statics.BAND_INNER, ">=", "rad/s", lambda ev: ev["band_low"],
+                         _const(sp.omega_inner), statics.BAND_SOURCE, group="statics"),
+                     Row(statics.BAND_OUTER, "<=", "rad/s", lambda ev: ev["band_high"],
+                         _const(sp.omega_outer), statics.BAND_SOURCE, group="statics")]
+    rows.append(Row("characteristic rises (stable)", ">=", f"rad/s/{unit}", lambda ev: ev["rise"],
+                    _const(0.0),
+                    "d omega/dx > 0 over the range: the equilibrium (eq. 12) differentiated; "
+                    "Hamabe Part III, stable by the characteristic curve; margin on omega0 / "
+                    "(x_outer - x_inner) (statics.stability)", group="statics",
+                    scale=lambda ev: statics.slope_scale(spec, np.sqrt(ev["w0sq"]))))
+    if gov.spring is not None:
+        rows.append(Row(gov.spring_loaded_check, ">=", "N", lambda ev: ev["F_min"], _const(0.0),
+                        "the spring stays loaded over the range (Hamabe eq. 2: F = 2 kappa "
+                        "(l - l0) > 0)", group="statics", scale=lambda ev: ev["F_top"]))
+    rows.append(Row("k^2 > 0 (stability)", ">=", "rad^2/s^2", lambda ev: ev["k2_min"],
+                    lambda ev: margin * ev["w0sq"], "Hamabe Part II, case 3", group="statics",
+                    scale=lambda ev: ev["w0sq"]))
+    if gov.resonance_ceiling:
+        rows.append(Row("k^2 < omega0^2 (no resonance)", "<=", "rad^2/s^2",
+                        lambda ev: ev["k2_max"], lambda ev: (1.0 - margin) * ev["w0sq"],
+                        "Hamabe Part II, case 2", group="statics"))
+    return rows
+
+
+def statics_figures(irregularity, band_low, band_high, rise, w0sq, spring_force, k2) -> dict:
+    """The ``ev`` of :func:`statics_rows` from the figures of one design (1-D arrays over the
+    configurations) or many (2-D, a row per design): the spring force's least value and
+    largest magnitude and ``k^2``'s extremes over the configurations (last axis)."""
+    return {"irregularity": irregularity, "band_low": band_low, "band_high": band_high,
+            "rise": rise, "w0sq": w0sq, "F_min": np.min(spring_force, axis=-1),
+            "F_top": np.max(np.abs(spring_force), axis=-1), "k2_min": np.min(k2, axis=-1),
+            "k2_max": np.max(k2, axis=-1)}
+
+
+#: where the spring index limits come from (the requirements; the standard's scope for reference)
+INDEX_SOURCE = ("requirements.spring_index (EN 13906-1 scope, cold coiled: 4 <= w <= 20; "
+                "Shigley prefers 4 <= C <= 12)")
+
+
+def requirement_rows(spec, req) -> list[Row]:
+    """The design requirements (group ``"spring"``) and search bounds (group ``"bounds"``) of
+    `govopt design`; ``ev``: ``d``, ``r``, ``n`` (wire diameter, coil radius, active turns),
+    ``m`` (flying mass), ``l0`` (the type's free length), ``C`` (spring index), ``body``
+    (close-wound body length ``(n + 1) d``), ``surge`` (Hz)."""
+    gov = spec.governor
+    factor = gov.spring_length_factor
+    rows = [
+        Row("spring index >= min", ">=", "", lambda ev: ev["C"], _const(req.spring_index[0]),
+            INDEX_SOURCE, group="spring", gp=GP_BOUNDS["C_min"]),
+        Row("spring index <= max", "<=", "", lambda ev: ev["C"], _const(req.spring_index[1]),
+            INDEX_SOURCE, group="spring", gp=GP_BOUNDS["C_max"]),
+        Row("body length within free length", "<=", "m", lambda ev: ev["body"],
+            lambda ev: factor * ev["l0"], "close-wound body (n + 1) d within 2 l0",
+            group="spring", gp=GP_BOUNDS["L_body_max"]),
+    ]
+    for name, key, bounds, unit, gp in ((f"{gov.mass_name} mass", "m", req.pendulum_mass, "kg",
+                                         None),
+                                        ("wire diameter", "d", req.wire_diameter, "m", "d"),
+                                        ("coil radius", "r", req.coil_radius, "m", "r"),
+                                        ("active turns", "n", req.active_turns, "", "n")):
+        rows += [Row(f"{name} >= min", ">=", unit, lambda ev, k=key: ev[k], _const(bounds[0]), "",
+                     group="bounds", gp=gp and GP_BOUNDS[f"{gp}_min"]),
+                 Row(f"{name} <= max", "<=", unit, lambda ev, k=key: ev[k], _const(bounds[1]), "",
+                     group="bounds", gp=gp and GP_BOUNDS[f"{gp}_max"])]
+    if req.max_outer_diameter is not None:
+        rows.append(Row("outer diameter", "<=", "m", lambda ev: 2.0 * ev["r"] + ev["d"],
+                        _const(req.max_outer_diameter), "", group="spring",
+                        gp=GP_BOUNDS["D_out_max"]))
+    if req.min_surge_frequency is not None:
+        rows.append(Row("surge frequency", ">=", "Hz", lambda ev: ev["surge"],
+                        _const(req.min_surge_frequency), "Wahl 1944 ch. 25", group="spring",
+                        gp=GP_BOUNDS["f_surge_min"]))
+    return rows
+
+
+#: the helical spring's static stress against the spec's allowable (no wire grade)
+STRESS_SOURCE = "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"
+
+
+def stress_row(material) -> Row:
+    """The largest shear stress of a helical spring (``ev["stress"]``, Pa) within the spec's
+    allowable ``material.allowable_shear_stress`` (group ``"spring"``; without a wire grade;
+    :meth:`govopt.governors.base.Governor.spring_checks` gives the same check with its
+    source)."""
+    return Row("shear stress", "<=", "Pa", lambda ev: ev["stress"],
+               _const(material.allowable_shear_stress), STRESS_SOURCE, group="spring")
+
+
+class SpringFigures(dict):
+    """The ``ev`` of :func:`requirement_rows` for helical springs (floats or arrays), each
+    figure computed when a row first reads it: ``C = 2 r / d``, ``body = (n + 1) d`` and the
+    surge frequency (:func:`govopt.springs.helical.surge_frequency_r`, Hz) of the ``material``."""
+
+    def __init__(self, d, r, n, l0, material, m=None):
+        super().__init__(d=d, r=r, n=n, l0=l0, m=m)
+        self.material = material
+
+    def __missing__(self, key):
+        d, r, n = self["d"], self["r"], self["n"]
+        if key == "C":
+            value = hx.spring_index_r(d, r)
+        elif key == "body":
+            value = (n + 1.0) * d
+        elif key == "surge":
+            value = hx.surge_frequency_r(d, r, n, self.material.shear_modulus,
+                                           self.material.density)
+        else:
+            raise KeyError(key)
+        self[key] = value
+        return value
+
+
+def holds(rows, ev) -> np.ndarray:
+    """True where every row holds on ``ev`` (NaN fails), without margins: the screens' test."""
+    ok = True
+    for row in rows:
+        value, limit = row.value(ev), row.limit(ev)
+        ok = ok & (value <= limit if row.sense == "<=" else value >= limit)
+    return np.asarray(ok)
+
+
+def load_change_rows(spec, name: str) -> list[Row]:
+    """The load change ``name``'s requirements (Hamabe Part III; group ``"dynamics"``);
+    ``ev``: ``hurwitz``, ``over`` (over-regulation, the coordinate's unit), ``over_regulates``,
+    ``xi0`` (the initial offset), ``settling`` (s), each a mapping by load-change name."""
+    req = spec.requirements
+    unit = SI_UNITS[spec.governor.coordinate]
+    rows = [Row(f"Hurwitz margin eq. (32): {name}", ">=", "", lambda ev: ev["hurwitz"][name],
+                _const(req.hurwitz_margin if req else 0.0),
+                "Hamabe eq. (32): 9 a1 a2 / (a0 a3) - 1", group="dynamics",
+                scale=_const(1.0)),
+            Row(f"no over-regulation: {name}", "<=", unit, lambda ev: ev["over"][name],
+                _const(0.0), "Hamabe Part III; all t >= 0 (transient.over_regulates)",
+                group="dynamics", scale=lambda ev: np.abs(ev["xi0"][name]),
+                verdict=lambda ev: ~np.asarray(ev["over_regulates"][name], dtype=bool))]
+    if req is not None and req.max_settling_time is not None:
+        rows.append(Row(f"settling time: {name}", "<=", "s", lambda ev: ev["settling"][name],
+                        _const(req.max_settling_time), "Hamabe Part III", group="dynamics"))
+    return rows
+
+
+def friction_rows(spec, name: str) -> dict[str, Row]:
+    """Hamabe's friction transient of load change ``name`` (eqs. 42-46; group ``"dynamics"``),
+    by outcome: ``"stuck"`` (the governor does not follow the load change: ``ev["rest"]``, the
+    offset it rests at) and ``"moves"`` (``ev["past"]``, how far the first stroke ends past the
+    new equilibrium); ``ev["xi0"]`` the initial offset (the coordinate's unit)."""
+    unit = SI_UNITS[spec.governor.coordinate]
+    return {
+        "stuck": Row(f"friction: the governor follows the load change: {name}", "<=", unit,
+                     lambda ev: ev["rest"], _const(0.0),
+                     "Hamabe eqs. (42)-(46): stuck while |C eta - I k^2 xi| <= M0",
+                     group="dynamics", scale=lambda ev: abs(ev["xi0"])),
+        "moves": Row(f"friction: no over-regulation after the first stroke: {name}", "<=", unit,
+                     lambda ev: ev["past"], _const(0.0), "Hamabe eqs. (42)-(46)",
+                     group="dynamics", scale=lambda ev: abs(ev["xi0"]) or 1.0),
+    }
+
+
+def vibration_rows(spec) -> list[Row]:
+    """The forced vibration's requirement (Hamabe Part II); ``ev``: ``p2p`` (peak to peak, the
+    coordinate's unit)."""
+    req = spec.requirements
+    if req is None or req.max_vibration is None:
+        return []
+    return [Row("vibration peak-to-peak", "<=", SI_UNITS[spec.governor.coordinate],
+                lambda ev: ev["p2p"], _const(req.max_vibration),
+                "Hamabe Part II, eqs. (18)-(22)", group="dynamics")]
+
+
+# ---------------------------------------------------------------------------------------------
+# The evaluator of rows
+# ---------------------------------------------------------------------------------------------
+
+class CheckTable:
+    """Rows evaluated over N designs, in the order added: arrays of values, limits, margins and
+    verdicts (``applies`` False where a row does not apply to a design). ``checks(i)`` gives
+    design ``i``'s :class:`~govopt.result.Check` objects; the bulk evaluation reads the
+    arrays."""
+
+    def __init__(self, n: int):
+        self.n = n
+        self.cols: dict[str, tuple] = {}
+        self.meta: dict[str, tuple] = {}
+        self.names: list[str] = []
+
+    def add_row(self, row: Row, ev, where=None) -> None:
+        """Evaluate ``row`` on ``ev`` for the designs ``where`` (all if None)."""
+        self.add(row.name, row.value(ev), row.limit(ev), row.sense,
+                 scale=None if row.scale is None else row.scale(ev),
+                 verdict=None if row.verdict is None else row.verdict(ev), where=where,
+                 unit=row.unit, source=row.source)
+
+    def add_rows(self, rows, ev, where=None) -> None:
+        for row in rows:
+            self.add_row(row, ev, where)
+
+    def add(self, name, value, limit, sense, scale=None, verdict=None, where=None, unit="",
+            source=""):
+        """``Check.margin`` vectorised: ``(limit - value)/s`` for ``<=``, ``(value - limit)/s``
+        for ``>=``, ``s = scale or (|limit| if limit != 0 else 1)``; ``Check.passed``."""
+        n = self.n
+        value = np.broadcast_to(np.asarray(value, dtype=float), (n,))
+        limit = np.broadcast_to(np.asarray(limit, dtype=float), (n,))
+        fallback = np.where(limit != 0, np.abs(limit), 1.0)
+        if scale is None:
+            s = fallback
+            sc = np.full(n, np.nan)
+        else:
+            sc = np.broadcast_to(np.asarray(scale, dtype=float), (n,))
+            s = np.where(sc != 0, sc, fallback)
+        diff = limit - value if sense == "<=" else value - limit
+        with np.errstate(invalid="ignore", divide="ignore"):
+            margin = diff / s
+        given = verdict is not None
+        passed = margin >= PASS_TOL if not given else np.broadcast_to(
+            np.asarray(verdict, dtype=bool), (n,))
+        on = np.ones(n, bool) if where is None else np.broadcast_to(where, (n,))
+        if name not in self.cols:
+            self.names.append(name)
+            self.cols[name] = tuple(np.full(n, np.nan) for _ in range(4)) + (
+                np.zeros(n, bool), np.zeros(n, bool))
+            self.meta[name] = (sense, unit, source, given)
+        v, lim, m, scl, p, applies = self.cols[name]
+        v[on], lim[on], m[on], scl[on] = value[on], limit[on], margin[on], sc[on]
+        p[on] = passed[on]
+        applies |= on
+
+    def checks(self, i: int = 0, source_of=None) -> list[Check]:
+        """Design ``i``'s checks (the rows that apply to it), in order; ``source_of(text)``
+        resolves a callable source."""
+        out = []
+        for name in self.names:
+            v, lim, _, scl, p, applies = self.cols[name]
+            if not applies[i]:
+                continue
+            sense, unit, source, given = self.meta[name]
+            if callable(source):
+                source = source_of(source) if source_of else source()
+            out.append(Check(name, float(v[i]), float(lim[i]), sense, unit, source,
+                             scale=None if np.isnan(scl[i]) else float(scl[i]),
+                             verdict=bool(p[i]) if given else None))
+        return out
+
+    def feasible(self) -> np.ndarray:
+        """True where every row that applies holds (NaN fails)."""
+        ok = np.ones(self.n, bool)
+        for name in self.names:
+            *_, p, applies = self.cols[name]
+            ok &= p | ~applies
+        return ok
+
+
+__all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "GPForm", "Row", "SpringFigures",
+           "friction_rows", "holds", "load_change_rows", "requirement_rows", "statics_rows",
+           "statics_figures", "stress_row", "vibration_rows"]
