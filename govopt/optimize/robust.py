@@ -50,8 +50,9 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..bulk import PASS_TOL, margin_column, passed_column, value_column
+from ..bulk import margin_column, passed_column, value_column
 from ..errors import InfeasibleError
+from ..requirements import PASS_TOL
 from ..spec import Design, Requirements, Spec
 from ..stats import wilson
 from . import design as dz
