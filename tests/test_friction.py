@@ -389,3 +389,24 @@ def test_shaft_friction_keys_are_angular():
             "xi_dot0_rad_per_s", "first_stroke_end_rad"} <= set(d)
     assert {"xi_start_rad", "net_start_N_m", "amplitude_rad"} <= set(d["phases"][0])
     assert d["M0_N_m"] == M0_PAPER
+
+
+def test_stroke_whose_acceleration_vanishes_at_a_step_end_does_not_crash():
+    """A traction coil governor's stroke (found by a robust design, fly weights +2 %) in which
+    xi'' is ~0 at a step's end: the stepped state and expm(M t) z0 disagreed in its sign, and
+    Brent's method was handed a bracket without a sign change (ValueError, a traceback from
+    `govopt design`). xi' stays >= 0 on the whole stroke (the modal solution on 200 001 points,
+    independent of the stepping), so the stroke runs to its time limit."""
+    M = np.array([[0.0, 1.0, 0.0, 0.0],
+                  [-857.5684540538409, -26.051839964503284, 2.106507763594993,
+                   -1.452480527432],
+                  [-661.4173228346457, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0, 0.0]])
+    z0 = np.array([-0.0025399999999999937, 0.0, -0.34452441068918144, 1.0])
+    t_max = 17.18529679873766
+    w, V = np.linalg.eig(M)
+    c = np.linalg.solve(V, z0)
+    t = np.linspace(0.0, t_max, 200_001)
+    v = np.real((V[1] * c)[None, :] * np.exp(np.outer(t, w))).sum(axis=1)
+    assert v[1:].min() > 0.0
+    tau, z = friction._slide(M, z0, 1, t_max, 0.0035006966454461503)
+    assert tau is None and z[1] > -1e-12 * np.abs(v).max()

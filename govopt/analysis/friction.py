@@ -443,11 +443,15 @@ def _slide(M, z0, s, t_max, h):
                     return 0.0, z0.copy()
             tr = brentq(v, lo, t1, xtol=_XTOL, rtol=_RTOL)
             return tr, at(tr)
-        if started and s * (M[1] @ z) < 0.0 < s * (M[1] @ z1):
-            # s xi' has a local minimum inside (t, t1): does it dip through zero?
+        if started and s * (M[1] @ z) < 0.0 < s * (M[1] @ z1) \
+                and s * acc(t) < 0.0 < s * acc(t1):
+            # s xi' has a local minimum inside (t, t1): does it dip through zero? (The bracket
+            # is taken on acc itself: the stepped state E^k z0 and expm(M t) z0 differ by
+            # rounding, and where xi'' is ~0 at a step's end the two can disagree in sign;
+            # the minimum is then at that end, where s xi' > 0 was just seen.)
             tm = brentq(acc, t, t1, xtol=_XTOL, rtol=_RTOL)
             if s * v(tm) <= 0.0:
-                tr = brentq(v, t, tm, xtol=_XTOL, rtol=_RTOL)
+                tr = brentq(v, t, tm, xtol=_XTOL, rtol=_RTOL) if s * v(t) > 0.0 else t
                 return tr, at(tr)
         started = True
         t, z = t1, z1
