@@ -27,7 +27,7 @@ import math
 import os
 import re
 import sqlite3
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 from pathlib import Path
@@ -99,6 +99,79 @@ def _quantity(text: str, where: str):
                          f"({type(exc).__name__})") from None
 
 
+def _range_at(start: float, stop: float, unit: str, integer: bool, u) -> tuple:
+    """The values of a range ``start``-``stop`` at fractions ``u`` in [0, 1] (as written in
+    TOML: whole numbers rounded, numbers, or ``"%.15g unit"``)."""
+    v = start + np.asarray(u, dtype=float) * (stop - start)
+    if integer:
+        return tuple(int(round(x)) for x in v)
+    if not unit:
+        return tuple(float(x) for x in v)
+    return tuple(f"{float(x):.15g} {unit}" for x in v)
+
+
+class RangeValues(Sequence):
+    """The ``num`` values of a range sweep ``START:STOP:NUM``, made as they are taken (a block
+    at a time): a million-point sweep holds its fractions (8 bytes a point), never its million
+    written values. Equal, value by value, to the tuple ``Sweep.at(np.linspace(0, 1, num))``."""
+
+    def __init__(self, start: float, stop: float, num: int, unit: str = "",
+                 integer: bool = False):
+        self.start, self.stop, self.num, self.unit, self.integer = (start, stop, int(num), unit,
+                                                                    integer)
+        self._u = None
+
+    def _fractions(self) -> np.ndarray:
+        if self._u is None:
+            self._u = np.linspace(0.0, 1.0, self.num)
+        return self._u
+
+    def take(self, idx) -> tuple:
+        """The values at the positions ``idx`` (an array of indices)."""
+        return _range_at(self.start, self.stop, self.unit, self.integer,
+                         self._fractions()[np.asarray(idx, dtype=np.intp)])
+
+    def __len__(self) -> int:
+        return self.num
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return self.take(np.arange(self.num)[i])
+        if not -self.num <= i < self.num:
+            raise IndexError(i)
+        return self.take([i % self.num])[0]
+
+    def __iter__(self):
+        for b in range(0, self.num, Study.BLOCK):
+            yield from self.take(np.arange(b, min(b + Study.BLOCK, self.num)))
+
+    def _params(self) -> tuple:
+        return self.start, self.stop, self.num, self.unit, self.integer
+
+    def __eq__(self, other) -> bool:
+        if isinstance(other, RangeValues):
+            return self._params() == other._params()
+        if isinstance(other, Sequence) and not isinstance(other, str):
+            return len(other) == self.num and all(
+                a == b for a, b in zip(self, other, strict=True))
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self._params())
+
+    def __repr__(self) -> str:
+        return f"RangeValues({self.start!r}, {self.stop!r}, {self.num}, {self.unit!r})"
+
+
+#: a range sweep of more values than this keeps them as :class:`RangeValues` (made as taken)
+LAZY_VALUES = 10_000
+
+
+def _take(values: Sequence, idx: np.ndarray) -> Sequence:
+    """``values`` at the positions ``idx``: a range's made for them only."""
+    return values.take(idx) if isinstance(values, RangeValues) else [values[i] for i in idx]
+
+
 @dataclass(frozen=True)
 class Sweep:
     """One swept key: ``values`` (as written in TOML) and, for a range, ``start``/``stop``
@@ -161,6 +234,8 @@ class Sweep:
                                      "of the same dimension") from None
                 unit, integer = f"{qa.units:~}", False
             sw = cls(key, (), start, stop, unit, integer)
+            if num is not None and num > LAZY_VALUES:
+                return sw.with_range(num)
             return replace(sw, values=sw.at(np.linspace(0.0, 1.0, num)) if num else ())
         items = [p.strip() for p in text.split(",")]
         if any(not p for p in items):
@@ -176,12 +251,12 @@ class Sweep:
 
     def at(self, u) -> tuple:
         """Values at fractions ``u`` in [0, 1] of the range (rounded for integers)."""
-        v = self.start + np.asarray(u, dtype=float) * (self.stop - self.start)
-        if self.integer:
-            return tuple(int(round(x)) for x in v)
-        if not self.unit:
-            return tuple(float(x) for x in v)
-        return tuple(f"{float(x):.15g} {self.unit}" for x in v)
+        return _range_at(self.start, self.stop, self.unit, self.integer, u)
+
+    def with_range(self, num: int) -> Sweep:
+        """This range sweep with its ``num`` values made as they are taken."""
+        return replace(self, values=RangeValues(self.start, self.stop, num, self.unit,
+                                                self.integer))
 
     def sample(self, u) -> tuple:
         """Values at uniform fractions ``u`` (a sampler's column): within the range, or
@@ -337,13 +412,18 @@ class Study:
         return {"name": self.name, "spec_path": self.path, "spec": self.data,
                 "mode": self.mode, "combine": self.combine, "samples": self.samples,
                 "seed": self.seed, "skip": list(self.skip),
-                "sweeps": [s.__dict__ | {"values": list(s.values)} for s in self.sweeps],
+                "sweeps": [s.__dict__ | ({"values": [], "num": len(s.values)}
+                                         if isinstance(s.values, RangeValues)
+                                         else {"values": list(s.values)})
+                           for s in self.sweeps],
                 "tolerances": [t.__dict__ for t in self.tolerances],
                 "pareto": list(self.pareto), "keys": list(self.keys)}
 
     @classmethod
     def from_definition(cls, d: dict) -> Study:
-        sweeps = tuple(Sweep(**{**s, "values": tuple(s["values"])}) for s in d["sweeps"])
+        sweeps = tuple(Sweep(**{**s, "values": tuple(s["values"])}) if "num" not in s else
+                       Sweep(**{k: v for k, v in s.items() if k != "num"}).with_range(s["num"])
+                       for s in d["sweeps"])
         return cls(d["spec_path"], d["spec"], sweeps, d["combine"], d["samples"], d["seed"],
                    d["mode"], tuple(d["skip"]), tuple(Tolerance(**t) for t in d["tolerances"]),
                    tuple(d["pareto"]), d["name"])
@@ -381,11 +461,17 @@ class Study:
             if self.combine == "zip" and len({len(s.values) for s in self.sweeps}) != 1:
                 raise StudyError("--zip needs every sweep to have the same number of values, got "
                                  + ", ".join(f"{s.key}: {len(s.values)}" for s in self.sweeps))
+            # a block of positions at a time (itertools.product would hold every value)
             columns = [s.values for s in self.sweeps]
-            rows = (itertools.product(*columns) if self.combine == "grid"
-                    else zip(*columns, strict=True))
-            for vals in rows:
-                yield dict(zip(self.keys, vals, strict=True))
+            sizes = [len(c) for c in columns]
+            n = math.prod(sizes) if self.combine == "grid" else sizes[0]
+            for b in range(0, n, self.BLOCK):
+                flat = np.arange(b, min(b + self.BLOCK, n))
+                where = (np.unravel_index(flat, sizes) if self.combine == "grid"
+                         else [flat] * len(columns))  # the last key fastest, as a product
+                cols = [_take(c, i) for c, i in zip(columns, where, strict=True)]
+                for vals in zip(*cols, strict=True):
+                    yield dict(zip(self.keys, vals, strict=True))
             return
         u = self._unit_samples(len(self.sweeps))
         for b in range(0, len(u), self.BLOCK):
@@ -398,8 +484,10 @@ class Study:
         value), from the sweeps' values, or the samples block by block."""
         if not self.tolerances and self.combine in ("grid", "zip"):
             out = {}
-            for s in self.sweeps:  # a key's values in the study are its sweep's
-                nums = _numbers(list(s.values)) if s.key.startswith("design.") else None
+            for s in self.sweeps:  # a key's values in the study are its sweep's (a range's
+                values = (s.values[0], s.values[-1]) if isinstance(  # are its ends')
+                    s.values, RangeValues) else list(s.values)
+                nums = _numbers(values) if s.key.startswith("design.") else None
                 if nums is not None:
                     out[s.key] = (float(nums[0].min()), float(nums[0].max()), nums[1])
             return out
@@ -579,8 +667,28 @@ def spec_digest(data: dict) -> str:
 
 
 def study_digest(definition: dict) -> str:
-    """The key of a study's definition (:meth:`Study.definition`, as JSON reads it back)."""
-    return spec_digest(json.loads(json.dumps(definition, default=str)))
+    """The key of a study's definition (:meth:`Study.definition`, as JSON reads it back): the
+    SHA-256 of its canonical JSON with every range's values written out (as govopt before
+    :class:`RangeValues` stored them: the same study, the same key), hashed a block at a time."""
+    d = json.loads(json.dumps(definition, default=str))
+    ranges = []
+    for s in d.get("sweeps", []):
+        if isinstance(s, dict) and "num" in s:
+            ranges.append(RangeValues(s["start"], s["stop"], s.pop("num"), s["unit"],
+                                      s["integer"]))
+            s["values"] = f"\0range{len(ranges) - 1}"
+    h = hashlib.sha256()
+    parts = re.split(r'"\\u0000range\d+"', _canonical(d))
+    for text, values in itertools.zip_longest(parts, ranges):
+        h.update(text.encode())
+        if values is not None:
+            h.update(b"[")
+            for b in range(0, len(values), Study.BLOCK):
+                block = values.take(np.arange(b, min(b + Study.BLOCK, len(values))))
+                h.update(((b"," if b else b"") + json.dumps(
+                    list(block), separators=(",", ":"))[1:-1].encode()))
+            h.update(b"]")
+    return h.hexdigest()
 
 
 def _input_columns(spec: Spec, point: dict) -> dict:
