@@ -685,8 +685,8 @@ def study_digest(definition: dict) -> str:
             h.update(b"[")
             for b in range(0, len(values), Study.BLOCK):
                 block = values.take(np.arange(b, min(b + Study.BLOCK, len(values))))
-                h.update(((b"," if b else b"") + json.dumps(
-                    list(block), separators=(",", ":"))[1:-1].encode()))
+                h.update((b"," if b else b"") + json.dumps(
+                    list(block), separators=(",", ":"))[1:-1].encode())
             h.update(b"]")
     return h.hexdigest()
 
@@ -1365,21 +1365,20 @@ class Store:
             self.conn.executemany("INSERT OR IGNORE INTO points VALUES (?, ?, ?, ?, ?, ?, ?)",
                                   records)
 
-    def table(self, columns: Iterable[str] | None = None, *, batch: int = 20_000
-              ) -> pd.DataFrame:
-        """Every row, in the study's order (``point`` is its index), with ``pareto`` marked
-        where the study names objectives; ``columns``: only those (and what the Pareto front
-        needs), read ``batch`` rows at a time, so that a summary of a million points holds a few
-        columns, never every row's values (repeated texts such as the status held once)."""
-        layouts = {k: json.loads(v) for k, v in self.conn.execute("SELECT * FROM layouts")}
+    def _layouts(self) -> dict:
+        return {k: json.loads(v) for k, v in self.conn.execute("SELECT * FROM layouts")}
+
+    def batches(self, columns: Iterable[str] | None = None, *, batch: int = 20_000):
+        """The rows in the study's order, ``batch`` at a time: frames with ``point`` (the
+        index) and every column of the study (of all layouts, in :meth:`columns`' order;
+        ``columns``: only those), without the Pareto mark (:meth:`pareto`). A study of a million
+        points is read a batch at a time, never held (repeated texts such as the status held
+        once)."""
+        layouts = self._layouts()
         study = self.meta("study") or {}
-        want = None
-        if columns is not None:
-            want = {"point", *columns}
-            if study.get("pareto"):
-                want |= {"status", *(objective_column(n)[0] for n in study["pareto"])}
+        want = None if columns is None else {"point", *columns}
+        order = ["point"] + [c for c in self.columns(layouts) if want is None or c in want]
         texts_seen: dict = {}
-        parts, used = [], set()
         cursor = self.conn.execute("SELECT idx, layout, numbers, texts FROM points ORDER BY idx")
         while rows := cursor.fetchmany(batch):
             groups: dict[str, tuple[list, list, list]] = {}
@@ -1388,9 +1387,10 @@ class Store:
                 g[0].append(idx)
                 g[1].append(nums)
                 g[2].append(texts)
+            parts = []
             for lid, (i, n, t) in groups.items():
-                used.add(lid)
-                part = decode(layouts[lid], n, t).set_axis(i)
+                part = decode(layouts[lid], n, t)
+                part.insert(0, "point", i)
                 if want is not None:
                     # a copy: a column of the decoded batch is a view holding all its values
                     part = part[[c for c in part.columns if c in want]].copy()
@@ -1399,14 +1399,49 @@ class Store:
                             part[c] = [texts_seen.setdefault(v, v) if isinstance(v, str) else v
                                        for v in part[c]]
                 parts.append(part)
+            frame = pd.concat(parts, ignore_index=True) if len(parts) > 1 else parts[0]
+            if len(parts) > 1 or list(frame.columns) != order:
+                frame = frame.reindex(columns=order)
+            if len(parts) > 1:
+                frame = frame.sort_values("point", ignore_index=True)
+            yield frame
+
+    def objectives(self) -> list[str]:
+        """The columns the study's Pareto front reads (none without a front)."""
+        study = self.meta("study") or {}
+        return ["status", *(objective_column(n)[0] for n in study.get("pareto", ()))] \
+            if study.get("pareto") else []
+
+    def pareto(self, *, batch: int = 20_000) -> np.ndarray:
+        """The points (indices) on the study's Pareto front, in order, found a batch at a time:
+        the front of the rows so far and the next batch is the front of both (a row dominated
+        by one of the first is dominated by one on their front)."""
+        study = self.meta("study") or {}
+        objectives = study.get("pareto") or []
+        if not objectives:
+            return np.zeros(0, dtype=int)
+        front = None
+        try:
+            for part in self.batches(self.objectives(), batch=batch):
+                both = part if front is None else pd.concat([front, part], ignore_index=True)
+                front = both.loc[pareto_front(both, objectives)].reset_index(drop=True)
+        except StudyError as exc:  # an objective that is no column: name the spec
+            raise StudyError(f"{study.get('spec_path', '?')}: study.{exc}") from None
+        return np.zeros(0, dtype=int) if front is None else front["point"].to_numpy(dtype=int)
+
+    def table(self, columns: Iterable[str] | None = None, *, batch: int = 20_000
+              ) -> pd.DataFrame:
+        """Every row, in the study's order (``point`` is its index), with ``pareto`` marked
+        where the study names objectives; ``columns``: only those (and what the Pareto front
+        needs), read ``batch`` rows at a time (:meth:`batches`). For a whole table; a large
+        study is read by :meth:`batches`."""
+        study = self.meta("study") or {}
+        if columns is not None:
+            columns = [*columns, *self.objectives()]
+        parts = list(self.batches(columns, batch=batch))
         if not parts:
             return pd.DataFrame()
-        order = list(dict.fromkeys(c for lid in sorted(used, key=lambda k: -len(layouts[k]))
-                                   for c, _ in layouts[lid]))
-        frame = pd.concat(parts) if len(parts) > 1 else parts[0]
-        if len(used) > 1:
-            frame = frame.reindex(columns=[c for c in order if c in frame.columns])
-        frame = frame.sort_index().rename_axis("point").reset_index()
+        frame = pd.concat(parts, ignore_index=True) if len(parts) > 1 else parts[0]
         if study.get("pareto"):
             try:
                 frame["pareto"] = pareto_front(frame, study["pareto"])
@@ -1414,10 +1449,11 @@ class Store:
                 raise StudyError(f"{study.get('spec_path', '?')}: study.{exc}") from None
         return frame
 
-    def columns(self) -> list[str]:
-        """Every column of the study's rows (of all layouts), in order."""
-        return list(dict.fromkeys(c for (v,) in self.conn.execute("SELECT columns FROM layouts")
-                                  for c, _ in json.loads(v)))
+    def columns(self, layouts: dict | None = None) -> list[str]:
+        """Every column of the study's rows (of all layouts, the longest's first), in order."""
+        layouts = self._layouts() if layouts is None else layouts
+        return list(dict.fromkeys(c for lid in sorted(layouts, key=lambda k: -len(layouts[k]))
+                                  for c, _ in layouts[lid]))
 
     def row(self, point: int) -> dict:
         """The row of point ``point`` (an index)."""
@@ -1730,33 +1766,50 @@ def wilson(k: int, n: int, z: float = Z95) -> tuple[float, float]:
     return lo, hi
 
 
-def tolerance_summary(frame: pd.DataFrame) -> dict:
+#: the columns whose spread a tolerance study reports
+SPREAD = ("omega_inner_rad_s", "omega_outer_rad_s", "irregularity", "k2_normal_rad2_s2")
+
+
+def tolerance_summary(frames) -> dict:
     """Per requirement, the probability it holds over the samples with its 95 % Wilson
     interval (a sample that cannot be evaluated counts as not holding), and the spread of the
-    speed range (mean, standard deviation, 2.5 and 97.5 percentiles)."""
+    speed range (mean, standard deviation, 2.5 and 97.5 percentiles). ``frames``: the study's
+    table, or its batches (:meth:`Store.batches`: counted a batch at a time, the spread's
+    columns kept as numbers only)."""
     from .bulk import check_names, passed_column
 
-    n = len(frame)
+    if isinstance(frames, pd.DataFrame):
+        frames = [frames]
+    n = errors = all_k = 0
+    holds: dict[str, int] = {}
+    values: dict[str, list] = {}
+    for frame in frames:
+        n += len(frame)
+        for name in check_names(frame.columns):
+            p = frame[passed_column(name)]
+            holds[name] = holds.get(name, 0) + int((p == True).sum())  # noqa: E712 (nullable)
+        ok = frame["status"] != "error"
+        errors += int((~ok).sum())
+        all_k += int((frame["status"] == "pass").sum())
+        for col in SPREAD:
+            if col in frame:
+                values.setdefault(col, []).append(pd.to_numeric(
+                    frame.loc[ok, col], errors="coerce").dropna().to_numpy(dtype=float))
     checks = {}
-    for name in check_names(frame.columns):
-        p = frame[passed_column(name)]
-        k = int((p == True).sum())  # noqa: E712 (nullable booleans)
+    for name, k in holds.items():
         lo, hi = wilson(k, n)
         checks[name] = {"probability": k / n if n else math.nan, "ci95": [lo, hi], "holds": k,
                         "samples": n}
-    ok = frame["status"] != "error"
-    all_k = int((frame["status"] == "pass").sum())
     lo, hi = wilson(all_k, n)
     spread = {}
-    for col in ("omega_inner_rad_s", "omega_outer_rad_s", "irregularity", "k2_normal_rad2_s2"):
-        if col in frame:
-            v = pd.to_numeric(frame.loc[ok, col], errors="coerce").dropna().to_numpy()
-            if v.size:
-                spread[col] = {"mean": float(v.mean()), "std": float(v.std(ddof=1))
-                               if v.size > 1 else 0.0,
-                               "p2.5": float(np.percentile(v, 2.5)),
-                               "p97.5": float(np.percentile(v, 97.5))}
-    return {"samples": n, "errors": int((~ok).sum()),
+    for col, parts in values.items():
+        v = np.concatenate(parts)
+        if v.size:
+            spread[col] = {"mean": float(v.mean()), "std": float(v.std(ddof=1))
+                           if v.size > 1 else 0.0,
+                           "p2.5": float(np.percentile(v, 2.5)),
+                           "p97.5": float(np.percentile(v, 97.5))}
+    return {"samples": n, "errors": errors,
             "all_requirements": {"probability": all_k / n if n else math.nan, "ci95": [lo, hi]},
             "checks": checks, "spread": spread}
 
@@ -1776,43 +1829,65 @@ def _drawn(value) -> str:
 
 def summary_text(store: Store) -> str:
     """What `govopt study show` prints: the study, its progress, status counts, the best
-    feasible point, the Pareto front and, for a tolerance study, the probabilities."""
+    feasible point, the Pareto front and, for a tolerance study, the probabilities. The rows
+    are read a batch at a time (:meth:`Store.batches`), only the columns shown: a summary of a
+    million points holds one batch, the front and the tolerance study's spread."""
     from .bulk import check_names, passed_column
 
     study = store.meta("study") or {}
     total = store.meta("total") or 0
-    needed = ["status", "objective", "objective_value"]
-    if study.get("tolerances"):  # what tolerance_summary reads
-        checks = check_names(store.columns())
-        needed += [passed_column(c) for c in checks] + [f"margin: {c}" for c in checks] + [
-            "omega_inner_rad_s", "omega_outer_rad_s", "irregularity", "k2_normal_rad2_s2"]
-    frame = store.table(needed)
+    counts = store.conn.execute(  # most first; equals in the order they first occur
+        "SELECT status, COUNT(*) FROM points GROUP BY status ORDER BY COUNT(*) DESC, "
+        "MIN(idx)").fetchall()
+    n = sum(k for _, k in counts)
     lines = [f"study {study.get('name', '?')!r}: {study.get('mode')} mode on "
              f"{study.get('spec_path')}, {', '.join(study.get('keys', []))} "
              f"({study.get('combine')}); govopt {store.meta('govopt_version')}",
-             f"points: {len(frame)} of {total} done"]
-    if frame.empty:
+             f"points: {n} of {total} done"]
+    if not n:
         return "\n".join(lines)
-    counts = frame["status"].value_counts()
-    lines.append("status: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
-    ok = feasible(frame) & pd.to_numeric(frame["objective_value"], errors="coerce").notna()
-    if ok.any():
-        best = frame.loc[ok].sort_values("objective_value").iloc[0]
-        written = store.row(int(best["point"]))
+    lines.append("status: " + ", ".join(f"{k} {v}" for k, v in counts))
+    needed = ["status", "objective", "objective_value"]
+    tolerances = bool(study.get("tolerances"))
+    if tolerances:  # what tolerance_summary reads
+        checks = check_names(store.columns())
+        needed += [passed_column(c) for c in checks] + [f"margin: {c}" for c in checks] + list(
+            SPREAD)
+    best = None  # (value, point, objective name): the first of the least
+
+    def scan():
+        nonlocal best
+        for part in store.batches(needed):
+            v = pd.to_numeric(part["objective_value"], errors="coerce")
+            ok = feasible(part) & v.notna().to_numpy()
+            if ok.any():
+                i = int(np.argmin(np.where(ok, v.to_numpy(dtype=float), np.inf)))
+                if best is None or v.iloc[i] < best[0]:
+                    best = (float(v.iloc[i]), int(part["point"].iloc[i]),
+                            part["objective"].iloc[i])
+            yield part
+
+    if tolerances:
+        summary = tolerance_summary(scan())
+    else:
+        for _ in scan():
+            pass
+    if best is not None:
+        written = store.row(best[1])
         inputs = ", ".join(f"{k} = {_drawn(written[k])}" for k in study.get("keys", [])
                            if k in written)
-        lines.append(f"best feasible {best.get('objective', 'objective')}: "
-                     f"{best['objective_value']:.6g} at point {int(best['point'])} ({inputs})")
-    if "pareto" in frame:
-        lines.append(f"Pareto front ({', '.join(study['pareto'])}): "
-                     f"{int(frame['pareto'].sum())} points: "
-                     + ", ".join(str(int(i)) for i in frame.loc[frame["pareto"], "point"][:20]))
+        name = best[2] if isinstance(best[2], str) else "objective"
+        lines.append(f"best feasible {name}: {best[0]:.6g} at point {best[1]} ({inputs})")
+    if study.get("pareto"):
+        front = store.pareto()
+        lines.append(f"Pareto front ({', '.join(study['pareto'])}): {len(front)} points: "
+                     + ", ".join(str(int(i)) for i in front[:20]))
     error = store.conn.execute("SELECT message FROM points WHERE status = 'error' ORDER BY idx "
                                "LIMIT 1").fetchone()
     if error is not None:
         lines.append(f"first error: {error[0]}")
-    if study.get("tolerances"):
-        s = tolerance_summary(frame)
+    if tolerances:
+        s = summary
         a = s["all_requirements"]
         lines.append(f"tolerance study, {s['samples']} samples: all requirements hold with "
                      f"probability {a['probability']:.4f} (95 % CI {a['ci95'][0]:.4f}-"
