@@ -1904,35 +1904,132 @@ def summary_text(store: Store) -> str:
     return "\n".join(lines)
 
 
-def export(store: Store, path: str | Path, *, overwrite: bool = False) -> Path:
+class _MixedColumn(Exception):
+    """A column of numbers in an export's first batch holds texts further on (its name)."""
+
+
+def _text_or_none(v):
+    """A cell of a typed export's text column: the value as text, or None where missing."""
+    if v is None or v is pd.NA or (isinstance(v, float) and math.isnan(v)):
+        return None
+    return v if isinstance(v, str) else str(v)
+
+
+def export(store: Store, path: str | Path, *, overwrite: bool = False,
+           batch: int = 20_000) -> Path:
     """Write the study's table as CSV, Parquet or xlsx (by the file's extension), atomically
     (:func:`govopt.report.files.atomic_write`: never a partial file; an existing file replaced
-    only with ``overwrite``)."""
+    only with ``overwrite``), ``batch`` rows at a time (:meth:`Store.batches`: a million-point
+    study is never held; the Pareto front is found first, :meth:`Store.pareto`). In Parquet and
+    xlsx the columns of written inputs and texts are text (inputs written as numbers or
+    strings)."""
     from .report.files import atomic_write
 
     path = Path(path)
     kind = path.suffix.lower()
     if kind not in (".csv", ".parquet", ".xlsx"):
         raise StudyError(f"{path}: expected a .csv, .parquet or .xlsx file")
-    frame = store.table()
-    if kind == ".csv":
-        return atomic_write(path, lambda tmp: frame.to_csv(tmp, index=False),
-                            overwrite=overwrite, what="study table")
-    # mixed object columns (inputs written as numbers or strings) as text for typed formats
-    typed = frame.copy()
-    for c in typed.columns:
-        if typed[c].dtype == object:
-            kinds = {type(v) for v in typed[c] if v is not None and v is not pd.NA
-                     and not (isinstance(v, float) and math.isnan(v))}
-            if len(kinds) > 1 or (kinds and not kinds <= {str}):
-                typed[c] = typed[c].map(lambda v: None if v is None or v is pd.NA
-                                        or (isinstance(v, float) and math.isnan(v)) else str(v))
-    if kind == ".parquet":
-        return atomic_write(path, lambda tmp: typed.to_parquet(tmp, index=False),
-                            overwrite=overwrite, what="study table")
-    return atomic_write(path, lambda tmp: typed.to_excel(tmp, index=False, engine="openpyxl",
-                                                         sheet_name="study"),
-                        overwrite=overwrite, what="study table")
+    study = store.meta("study") or {}
+    front = store.pareto(batch=batch) if study.get("pareto") else None
+    kinds = {c: k for layout in store._layouts().values() for c, k in layout}
+    columns = ["point", *store.columns(), *(["pareto"] if front is not None else [])]
+
+    def frames(text: set | None = None):
+        """The table's batches; with ``text`` (typed formats) the columns of texts as text
+        (those of texts or mixed values in the first batch, and those in ``text``), booleans
+        nullable."""
+        first = True
+        for part in store.batches(batch=batch):
+            if front is not None:
+                part["pareto"] = part["point"].isin(front).to_numpy()
+            if text is not None:
+                for c in part.columns:
+                    if kinds.get(c) == "b":
+                        part[c] = part[c].astype("boolean")
+                        continue
+                    if kinds.get(c) != "o":
+                        continue
+                    if first and part[c].dtype == object:
+                        text.add(c)
+                    elif c not in text and part[c].dtype == object:  # numbers, then texts
+                        raise _MixedColumn(c)
+                    if c in text:
+                        part[c] = [_text_or_none(v) for v in part[c]]
+            first = False
+            yield part
+
+    def csv(tmp):
+        with open(tmp, "w", newline="", encoding="utf-8") as f:
+            first = True
+            for part in frames():
+                part.to_csv(f, header=first, index=False)
+                first = False
+            if first:
+                pd.DataFrame(columns=columns).to_csv(f, index=False)
+
+    def typed(write_batches):
+        """``write_batches(frames)`` again with a column of numbers that turns out to hold
+        texts further on written as text throughout (a file's column has one type)."""
+        text: set[str] = set()
+        while True:
+            try:
+                return write_batches(frames(text))
+            except _MixedColumn as exc:
+                text.add(exc.args[0])
+
+    def parquet(tmp):
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        def write_batches(parts):
+            writer = None
+            try:
+                for part in parts:
+                    table = pa.Table.from_pandas(part, preserve_index=False)
+                    if writer is None:
+                        writer = pq.ParquetWriter(tmp, table.schema)
+                    elif not table.schema.equals(writer.schema, check_metadata=False):
+                        try:
+                            table = table.cast(writer.schema)
+                        except (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError):
+                            bad = next(f.name for f in writer.schema
+                                       if table.schema.field(f.name).type != f.type)
+                            raise _MixedColumn(bad) from None
+                    writer.write_table(table.replace_schema_metadata(writer.schema.metadata))
+                if writer is None:
+                    pq.write_table(pa.Table.from_pandas(pd.DataFrame(columns=columns),
+                                                        preserve_index=False), tmp)
+            finally:
+                if writer is not None:
+                    writer.close()
+
+        typed(write_batches)
+
+    def xlsx(tmp):
+        from openpyxl import Workbook
+        from openpyxl.cell import WriteOnlyCell
+        from openpyxl.styles import Font
+
+        def write_batches(parts):
+            book = Workbook(write_only=True)
+            sheet = book.create_sheet("study")
+            header = []
+            for c in columns:
+                cell = WriteOnlyCell(sheet, value=c)
+                cell.font = Font(bold=True)
+                header.append(cell)
+            sheet.append(header)
+            for part in parts:
+                for row in part.astype(object).itertuples(index=False, name=None):
+                    sheet.append([None if v is None or v is pd.NA or (
+                        isinstance(v, float) and math.isnan(v)) else
+                        v.item() if isinstance(v, np.generic) else v for v in row])
+            book.save(tmp)
+
+        typed(write_batches)
+
+    write = {".csv": csv, ".parquet": parquet, ".xlsx": xlsx}[kind]
+    return atomic_write(path, write, overwrite=overwrite, what="study table")
 
 
 def remove_database(path: Path) -> None:
