@@ -2019,11 +2019,16 @@ def export(store: Store, path: str | Path, *, overwrite: bool = False,
                 cell.font = Font(bold=True)
                 header.append(cell)
             sheet.append(header)
-            for part in parts:
-                for row in part.astype(object).itertuples(index=False, name=None):
-                    sheet.append([None if v is None or v is pd.NA or (
-                        isinstance(v, float) and math.isnan(v)) else
-                        v.item() if isinstance(v, np.generic) else v for v in row])
+            try:
+                for part in parts:
+                    for row in part.astype(object).itertuples(index=False, name=None):
+                        sheet.append([None if v is None or v is pd.NA or (
+                            isinstance(v, float) and math.isnan(v)) else
+                            v.item() if isinstance(v, np.generic) else v for v in row])
+            except BaseException:  # the sheet's temporary file closed, then written again
+                with contextlib.suppress(Exception):
+                    sheet.close()
+                raise
             book.save(tmp)
 
         typed(write_batches)

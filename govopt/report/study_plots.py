@@ -162,7 +162,7 @@ def _sweep_figure(frame: pd.DataFrame, key: str, keys: list[str], combine: str,
 
     axes[0].set_ylabel(_OBJECTIVE_COLUMN.get(obj, obj))
     note = ("; labels: point numbers" if few else "") + (
-        f"; every {every}th point drawn" if every > 1 else "")
+        f"; one point in {every} drawn" if every > 1 else "")
     axes[0].set_title(f"objective and binding constraints (hollow: fails a check{note})",
                       fontsize=9)
     for ax, name in zip(axes[1:], cons, strict=True):
@@ -215,7 +215,7 @@ def _pareto_figure(frame: pd.DataFrame, objectives: list[str], every: int = 1):
     fig.suptitle(f"Pareto front of {', '.join(objectives)}\n{int(front.sum())} of "
                  f"{feasible_n} feasible points on it"
                  + (" (labels: point numbers)" if front.sum() <= MAX_LABELS else "")
-                 + (f"; off it every {every}th point drawn" if every > 1 else ""), fontsize=9)
+                 + (f"; off it one point in {every} drawn" if every > 1 else ""), fontsize=9)
     return fig
 
 
