@@ -1215,6 +1215,17 @@ def check_database(path: str | Path, *, inputs: Iterable = ()) -> Path:
     return path
 
 
+def _front(front: pd.DataFrame | None, part: pd.DataFrame, study: dict) -> pd.DataFrame:
+    """The rows on the Pareto front of ``study``'s objectives among the rows of ``front`` (the
+    front so far) and the batch ``part``: a row dominated by one of the first is dominated by
+    one on their front."""
+    both = part if front is None else pd.concat([front, part], ignore_index=True)
+    try:
+        return both.loc[pareto_front(both, study["pareto"])].reset_index(drop=True)
+    except StudyError as exc:  # an objective that is no column: name the spec
+        raise StudyError(f"{study.get('spec_path', '?')}: study.{exc}") from None
+
+
 class Store:
     """A study's SQLite database: ``meta`` (the study's definition, govopt's version),
     ``layouts`` (column lists) and ``points`` (one row per point: hash, index, status, message,
@@ -1421,12 +1432,8 @@ class Store:
         if not objectives:
             return np.zeros(0, dtype=int)
         front = None
-        try:
-            for part in self.batches(self.objectives(), batch=batch):
-                both = part if front is None else pd.concat([front, part], ignore_index=True)
-                front = both.loc[pareto_front(both, objectives)].reset_index(drop=True)
-        except StudyError as exc:  # an objective that is no column: name the spec
-            raise StudyError(f"{study.get('spec_path', '?')}: study.{exc}") from None
+        for part in self.batches(self.objectives(), batch=batch):
+            front = _front(front, part, study)
         return np.zeros(0, dtype=int) if front is None else front["point"].to_numpy(dtype=int)
 
     def table(self, columns: Iterable[str] | None = None, *, batch: int = 20_000
@@ -1836,28 +1843,23 @@ def summary_text(store: Store) -> str:
 
     study = store.meta("study") or {}
     total = store.meta("total") or 0
-    counts = store.conn.execute(  # most first; equals in the order they first occur
-        "SELECT status, COUNT(*) FROM points GROUP BY status ORDER BY COUNT(*) DESC, "
-        "MIN(idx)").fetchall()
-    n = sum(k for _, k in counts)
-    lines = [f"study {study.get('name', '?')!r}: {study.get('mode')} mode on "
-             f"{study.get('spec_path')}, {', '.join(study.get('keys', []))} "
-             f"({study.get('combine')}); govopt {store.meta('govopt_version')}",
-             f"points: {n} of {total} done"]
-    if not n:
-        return "\n".join(lines)
-    lines.append("status: " + ", ".join(f"{k} {v}" for k, v in counts))
-    needed = ["status", "objective", "objective_value"]
+    needed = ["status", "objective", "objective_value", *store.objectives()]
     tolerances = bool(study.get("tolerances"))
     if tolerances:  # what tolerance_summary reads
         checks = check_names(store.columns())
         needed += [passed_column(c) for c in checks] + [f"margin: {c}" for c in checks] + list(
             SPREAD)
     best = None  # (value, point, objective name): the first of the least
+    counts: dict[str, int] = {}  # most first; equals in the order they first occur
+    front = None
 
     def scan():
-        nonlocal best
+        nonlocal best, front
         for part in store.batches(needed):
+            for k, v in part["status"].value_counts(sort=False).items():
+                counts[k] = counts.get(k, 0) + int(v)
+            if study.get("pareto"):
+                front = _front(front, part, study)
             v = pd.to_numeric(part["objective_value"], errors="coerce")
             ok = feasible(part) & v.notna().to_numpy()
             if ok.any():
@@ -1872,6 +1874,15 @@ def summary_text(store: Store) -> str:
     else:
         for _ in scan():
             pass
+    n = sum(counts.values())
+    lines = [f"study {study.get('name', '?')!r}: {study.get('mode')} mode on "
+             f"{study.get('spec_path')}, {', '.join(study.get('keys', []))} "
+             f"({study.get('combine')}); govopt {store.meta('govopt_version')}",
+             f"points: {n} of {total} done"]
+    if not n:
+        return "\n".join(lines)
+    lines.append("status: " + ", ".join(f"{k} {v}" for k, v in sorted(
+        counts.items(), key=lambda kv: -kv[1])))
     if best is not None:
         written = store.row(best[1])
         inputs = ", ".join(f"{k} = {_drawn(written[k])}" for k in study.get("keys", [])
@@ -1879,7 +1890,7 @@ def summary_text(store: Store) -> str:
         name = best[2] if isinstance(best[2], str) else "objective"
         lines.append(f"best feasible {name}: {best[0]:.6g} at point {best[1]} ({inputs})")
     if study.get("pareto"):
-        front = store.pareto()
+        front = np.zeros(0, dtype=int) if front is None else front["point"].to_numpy(dtype=int)
         lines.append(f"Pareto front ({', '.join(study['pareto'])}): {len(front)} points: "
                      + ", ".join(str(int(i)) for i in front[:20]))
     error = store.conn.execute("SELECT message FROM points WHERE status = 'error' ORDER BY idx "
