@@ -1241,6 +1241,9 @@ class Store:
     def __init__(self, path: str | Path, *, create: bool = True):
         self.path = Path(path)
         self.digest: str | None = None
+        #: meta values read, when opened read-only (nothing changes them then): an old
+        #: database's study holds a million-point sweep's values, parsed once
+        self._read: dict | None = None if create else {}
         if not create and not self.path.is_file():
             raise StudyError(f"{self.path}: no such study database" if not self.path.exists()
                              else f"{self.path}: not a study database (not a regular file)")
@@ -1302,8 +1305,13 @@ class Store:
         self.conn.execute("COMMIT")
 
     def meta(self, key: str):
+        if self._read is not None and key in self._read:
+            return self._read[key]
         row = self.conn.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
-        return None if row is None else json.loads(row[0])
+        value = None if row is None else json.loads(row[0])
+        if self._read is not None:
+            self._read[key] = value
+        return value
 
     def _set_meta(self, values: dict) -> None:
         self.conn.executemany("INSERT OR REPLACE INTO meta VALUES (?, ?)",
