@@ -666,14 +666,26 @@ def spec_digest(data: dict) -> str:
     return hashlib.sha256(_canonical(data).encode()).hexdigest()
 
 
+def _range_fields(s: dict) -> bool:
+    """Whether a stored sweep is a range of :class:`RangeValues` (its ends and count, within
+    govopt's limit; anything else, as a damaged database's, is hashed as it is)."""
+    num = s.get("num")
+    return (isinstance(num, int) and not isinstance(num, bool)
+            and 1 <= num <= limits.MAX_STUDY_POINTS
+            and all(isinstance(s.get(k), int | float) and not isinstance(s.get(k), bool)
+                    for k in ("start", "stop"))
+            and isinstance(s.get("unit"), str) and isinstance(s.get("integer"), bool))
+
+
 def study_digest(definition: dict) -> str:
     """The key of a study's definition (:meth:`Study.definition`, as JSON reads it back): the
     SHA-256 of its canonical JSON with every range's values written out (as govopt before
     :class:`RangeValues` stored them: the same study, the same key), hashed a block at a time."""
     d = json.loads(json.dumps(definition, default=str))
     ranges = []
-    for s in d.get("sweeps", []):
-        if isinstance(s, dict) and "num" in s:
+    for s in d.get("sweeps", []) if isinstance(d, dict) and isinstance(
+            d.get("sweeps"), list) else []:
+        if isinstance(s, dict) and _range_fields(s):
             ranges.append(RangeValues(s["start"], s["stop"], s.pop("num"), s["unit"],
                                       s["integer"]))
             s["values"] = f"\0range{len(ranges) - 1}"
