@@ -160,3 +160,17 @@ def test_summary_is_the_whole_tables(grid_db):
     ok = table["status"].isin(["pass", "optimal"]) & table["objective_value"].notna()
     best = table.loc[ok].sort_values("objective_value", kind="stable").iloc[0]
     assert f"{best['objective_value']:.6g} at point {int(best['point'])} " in text
+
+
+def test_plots_of_a_study_whose_every_point_is_an_error(tmp_path):
+    """No row has an objective or a check: the plots are drawn (empty), not a KeyError."""
+    from govopt.report.study_plots import plot_study
+
+    study = load_study(SPECS / "hamabe-a.toml", sweeps=["design.pendulum_weight=-1,-2 kgf"],
+                       pareto=["moving_mass", "settling_time"])
+    run_study(study, tmp_path / "e.db")
+    with Store(tmp_path / "e.db", create=False) as store:
+        assert set(store.table()["status"]) == {"error"}
+        files = {p.name for p in plot_study(store, tmp_path / "p")}
+    assert files == {"sweep-design.pendulum_weight.png", "sweep-design.pendulum_weight.svg",
+                     "pareto.png", "pareto.svg"}

@@ -338,8 +338,9 @@ MAX_POINTS = 20_000
 
 
 def _sample(store, columns: list[str], every: int, *, keep=None) -> pd.DataFrame:
-    """Every ``every``-th row of the study (and the points ``keep``), only ``columns``, read
-    a batch at a time."""
+    """Every ``every``-th row of the study (and the points ``keep``), only ``columns`` (a
+    column no row has, as in a study whose every point was an error, empty), read a batch at a
+    time."""
     parts, seen = [], 0
     for part in store.batches(columns):
         take = (np.arange(seen, seen + len(part)) % every) == 0
@@ -347,7 +348,8 @@ def _sample(store, columns: list[str], every: int, *, keep=None) -> pd.DataFrame
             take |= part["point"].isin(keep).to_numpy()
         seen += len(part)
         parts.append(part.loc[take])
-    return pd.concat(parts, ignore_index=True) if parts else pd.DataFrame()
+    frame = pd.concat(parts, ignore_index=True) if parts else pd.DataFrame()
+    return frame.reindex(columns=list(dict.fromkeys(["point", *columns])))
 
 
 def plot_study(store, folder: str | Path, *, overwrite: bool = False,
