@@ -10,9 +10,14 @@
   ``evaluate_many`` alone on the same points: the study's and the database's overhead per row,
   and the database's alone (``Store.add`` of the rows, JSON included);
 * a design-mode study (the spring-loaded governor of ``spring_loaded-design`` over ``--designs``
-  upper speeds) with 1 and 2 worker processes.
+  upper speeds) with 1 and 2 worker processes;
+* the peak memory (maximum resident set size, ``os.wait4``) of each command of a
+  ``--memory-points`` study (10^6 by default, the documented limit; 0 skips it), each in a
+  process of its own: ``study run`` (with its summary), ``study show``, ``study export`` to CSV
+  and to Parquet, ``study export --plot``; with the run's points per second (wall and CPU).
 
 Run:  python benchmarks/bench_study.py [--points 100000] [--baseline 200] [--designs 24]
+      [--memory-points 1000000]
 :func:`run` returns the numbers as a dict. Never used as timed assertions in the tests.
 The bulk rates are CPU time (``time.process_time``, medians of ``--repeats``): the machine is
 shared, and wall time measures the neighbours.
@@ -170,9 +175,52 @@ def design_bench(designs: int = 24) -> dict:
     return out
 
 
-def run(points: int = 100_000, baseline: int = 200, designs: int = 24, repeats: int = 3) -> dict:
-    return {"bulk": bulk_bench(points, baseline, repeats), "study": study_bench(points),
-            "design": design_bench(designs)}
+def _peak(args: list[str], cwd: str) -> dict:
+    """Run ``python -m govopt.cli ARGS`` in a process of its own: its peak resident memory
+    (MB), wall and CPU seconds, exit status."""
+    import os
+    import subprocess
+    import sys
+
+    env = {**os.environ, "PYTHONPATH": str(SPECS.parent.parent)}
+    t0 = time.perf_counter()
+    proc = subprocess.Popen([sys.executable, "-m", "govopt.cli", *args], cwd=cwd, env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(proc.pid, 0)
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    return {"peak_rss_MB": usage.ru_maxrss / 1024.0, "wall_s": time.perf_counter() - t0,
+            "cpu_s": usage.ru_utime + usage.ru_stime, "exit": proc.returncode}
+
+
+def memory_bench(points: int = 1_000_000) -> dict:
+    """Peak memory of a ``points``-point evaluate-mode study (case a's pendulum weight swept,
+    statics and k^2) through the command line: run, show, export (CSV, Parquet), plots."""
+    spec = str(SPECS / "hamabe-a.toml")
+    out: dict = {"points": points}
+    with tempfile.TemporaryDirectory() as tmp:
+        out["study_run"] = _peak(["study", "run", spec, "--sweep",
+                                  f"design.pendulum_weight=10 kgf:14 kgf:{points}",
+                                  "--skip", "dynamics,vibration,classic", "--db", "s.db"], tmp)
+        run = out["study_run"]
+        run["points_per_s_wall"] = points / run["wall_s"]
+        run["points_per_s_cpu"] = points / run["cpu_s"]
+        out["study_show"] = _peak(["study", "show", "s.db"], tmp)
+        out["export_csv"] = _peak(["study", "export", "s.db", "--out", "t.csv"], tmp)
+        out["export_parquet"] = _peak(["study", "export", "s.db", "--out", "t.parquet"], tmp)
+        out["export_plot"] = _peak(["study", "export", "s.db", "--out", "u.csv", "--plot", "p"],
+                                   tmp)
+    out["largest_peak_rss_MB"] = max(v["peak_rss_MB"] for v in out.values()
+                                     if isinstance(v, dict))
+    return out
+
+
+def run(points: int = 100_000, baseline: int = 200, designs: int = 24, repeats: int = 3,
+        memory_points: int = 1_000_000) -> dict:
+    out = {"bulk": bulk_bench(points, baseline, repeats), "study": study_bench(points),
+           "design": design_bench(designs)}
+    if memory_points:
+        out["memory"] = memory_bench(memory_points)
+    return out
 
 
 if __name__ == "__main__":
@@ -181,5 +229,7 @@ if __name__ == "__main__":
     ap.add_argument("--baseline", type=int, default=200)
     ap.add_argument("--designs", type=int, default=24)
     ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--memory-points", type=int, default=1_000_000)
     args = ap.parse_args()
-    print(json.dumps(run(args.points, args.baseline, args.designs, args.repeats), indent=2))
+    print(json.dumps(run(args.points, args.baseline, args.designs, args.repeats,
+                         args.memory_points), indent=2))

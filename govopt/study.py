@@ -27,7 +27,7 @@ import math
 import os
 import re
 import sqlite3
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
 from pathlib import Path
@@ -97,6 +97,79 @@ def _quantity(text: str, where: str):
                          f"({type(exc).__name__})") from None
 
 
+def _range_at(start: float, stop: float, unit: str, integer: bool, u) -> tuple:
+    """The values of a range ``start``-``stop`` at fractions ``u`` in [0, 1] (as written in
+    TOML: whole numbers rounded, numbers, or ``"%.15g unit"``)."""
+    v = start + np.asarray(u, dtype=float) * (stop - start)
+    if integer:
+        return tuple(int(round(x)) for x in v)
+    if not unit:
+        return tuple(float(x) for x in v)
+    return tuple(f"{float(x):.15g} {unit}" for x in v)
+
+
+class RangeValues(Sequence):
+    """The ``num`` values of a range sweep ``START:STOP:NUM``, made as they are taken (a block
+    at a time): a million-point sweep holds its fractions (8 bytes a point), never its million
+    written values. Equal, value by value, to the tuple ``Sweep.at(np.linspace(0, 1, num))``."""
+
+    def __init__(self, start: float, stop: float, num: int, unit: str = "",
+                 integer: bool = False):
+        self.start, self.stop, self.num, self.unit, self.integer = (start, stop, int(num), unit,
+                                                                    integer)
+        self._u = None
+
+    def _fractions(self) -> np.ndarray:
+        if self._u is None:
+            self._u = np.linspace(0.0, 1.0, self.num)
+        return self._u
+
+    def take(self, idx) -> tuple:
+        """The values at the positions ``idx`` (an array of indices)."""
+        return _range_at(self.start, self.stop, self.unit, self.integer,
+                         self._fractions()[np.asarray(idx, dtype=np.intp)])
+
+    def __len__(self) -> int:
+        return self.num
+
+    def __getitem__(self, i):
+        if isinstance(i, slice):
+            return self.take(np.arange(self.num)[i])
+        if not -self.num <= i < self.num:
+            raise IndexError(i)
+        return self.take([i % self.num])[0]
+
+    def __iter__(self):
+        for b in range(0, self.num, Study.BLOCK):
+            yield from self.take(np.arange(b, min(b + Study.BLOCK, self.num)))
+
+    def _params(self) -> tuple:
+        return self.start, self.stop, self.num, self.unit, self.integer
+
+    def __eq__(self, other) -> bool:
+        if isinstance(other, RangeValues):
+            return self._params() == other._params()
+        if isinstance(other, Sequence) and not isinstance(other, str):
+            return len(other) == self.num and all(
+                a == b for a, b in zip(self, other, strict=True))
+        return NotImplemented
+
+    def __hash__(self) -> int:
+        return hash(self._params())
+
+    def __repr__(self) -> str:
+        return f"RangeValues({self.start!r}, {self.stop!r}, {self.num}, {self.unit!r})"
+
+
+#: a range sweep of more values than this keeps them as :class:`RangeValues` (made as taken)
+LAZY_VALUES = 10_000
+
+
+def _take(values: Sequence, idx: np.ndarray) -> Sequence:
+    """``values`` at the positions ``idx``: a range's made for them only."""
+    return values.take(idx) if isinstance(values, RangeValues) else [values[i] for i in idx]
+
+
 @dataclass(frozen=True)
 class Sweep:
     """One swept key: ``values`` (as written in TOML) and, for a range, ``start``/``stop``
@@ -159,6 +232,8 @@ class Sweep:
                                      "of the same dimension") from None
                 unit, integer = f"{qa.units:~}", False
             sw = cls(key, (), start, stop, unit, integer)
+            if num is not None and num > LAZY_VALUES:
+                return sw.with_range(num)
             return replace(sw, values=sw.at(np.linspace(0.0, 1.0, num)) if num else ())
         items = [p.strip() for p in text.split(",")]
         if any(not p for p in items):
@@ -174,12 +249,12 @@ class Sweep:
 
     def at(self, u) -> tuple:
         """Values at fractions ``u`` in [0, 1] of the range (rounded for integers)."""
-        v = self.start + np.asarray(u, dtype=float) * (self.stop - self.start)
-        if self.integer:
-            return tuple(int(round(x)) for x in v)
-        if not self.unit:
-            return tuple(float(x) for x in v)
-        return tuple(f"{float(x):.15g} {self.unit}" for x in v)
+        return _range_at(self.start, self.stop, self.unit, self.integer, u)
+
+    def with_range(self, num: int) -> Sweep:
+        """This range sweep with its ``num`` values made as they are taken."""
+        return replace(self, values=RangeValues(self.start, self.stop, num, self.unit,
+                                                self.integer))
 
     def sample(self, u) -> tuple:
         """Values at uniform fractions ``u`` (a sampler's column): within the range, or
@@ -335,13 +410,18 @@ class Study:
         return {"name": self.name, "spec_path": self.path, "spec": self.data,
                 "mode": self.mode, "combine": self.combine, "samples": self.samples,
                 "seed": self.seed, "skip": list(self.skip),
-                "sweeps": [s.__dict__ | {"values": list(s.values)} for s in self.sweeps],
+                "sweeps": [s.__dict__ | ({"values": [], "num": len(s.values)}
+                                         if isinstance(s.values, RangeValues)
+                                         else {"values": list(s.values)})
+                           for s in self.sweeps],
                 "tolerances": [t.__dict__ for t in self.tolerances],
                 "pareto": list(self.pareto), "keys": list(self.keys)}
 
     @classmethod
     def from_definition(cls, d: dict) -> Study:
-        sweeps = tuple(Sweep(**{**s, "values": tuple(s["values"])}) for s in d["sweeps"])
+        sweeps = tuple(Sweep(**{**s, "values": tuple(s["values"])}) if "num" not in s else
+                       Sweep(**{k: v for k, v in s.items() if k != "num"}).with_range(s["num"])
+                       for s in d["sweeps"])
         return cls(d["spec_path"], d["spec"], sweeps, d["combine"], d["samples"], d["seed"],
                    d["mode"], tuple(d["skip"]), tuple(Tolerance(**t) for t in d["tolerances"]),
                    tuple(d["pareto"]), d["name"])
@@ -379,11 +459,17 @@ class Study:
             if self.combine == "zip" and len({len(s.values) for s in self.sweeps}) != 1:
                 raise StudyError("--zip needs every sweep to have the same number of values, got "
                                  + ", ".join(f"{s.key}: {len(s.values)}" for s in self.sweeps))
+            # a block of positions at a time (itertools.product would hold every value)
             columns = [s.values for s in self.sweeps]
-            rows = (itertools.product(*columns) if self.combine == "grid"
-                    else zip(*columns, strict=True))
-            for vals in rows:
-                yield dict(zip(self.keys, vals, strict=True))
+            sizes = [len(c) for c in columns]
+            n = math.prod(sizes) if self.combine == "grid" else sizes[0]
+            for b in range(0, n, self.BLOCK):
+                flat = np.arange(b, min(b + self.BLOCK, n))
+                where = (np.unravel_index(flat, sizes) if self.combine == "grid"
+                         else [flat] * len(columns))  # the last key fastest, as a product
+                cols = [_take(c, i) for c, i in zip(columns, where, strict=True)]
+                for vals in zip(*cols, strict=True):
+                    yield dict(zip(self.keys, vals, strict=True))
             return
         u = self._unit_samples(len(self.sweeps))
         for b in range(0, len(u), self.BLOCK):
@@ -396,8 +482,10 @@ class Study:
         value), from the sweeps' values, or the samples block by block."""
         if not self.tolerances and self.combine in ("grid", "zip"):
             out = {}
-            for s in self.sweeps:  # a key's values in the study are its sweep's
-                nums = _numbers(list(s.values)) if s.key.startswith("design.") else None
+            for s in self.sweeps:  # a key's values in the study are its sweep's (a range's
+                values = (s.values[0], s.values[-1]) if isinstance(  # are its ends')
+                    s.values, RangeValues) else list(s.values)
+                nums = _numbers(values) if s.key.startswith("design.") else None
                 if nums is not None:
                     out[s.key] = (float(nums[0].min()), float(nums[0].max()), nums[1])
             return out
@@ -572,9 +660,41 @@ def spec_digest(data: dict) -> str:
     return hashlib.sha256(_canonical(data).encode()).hexdigest()
 
 
+def _range_fields(s: dict) -> bool:
+    """Whether a stored sweep is a range of :class:`RangeValues` (its ends and count, within
+    govopt's limit; anything else, as a damaged database's, is hashed as it is)."""
+    num = s.get("num")
+    return (isinstance(num, int) and not isinstance(num, bool)
+            and 1 <= num <= limits.MAX_STUDY_POINTS
+            and all(isinstance(s.get(k), int | float) and not isinstance(s.get(k), bool)
+                    for k in ("start", "stop"))
+            and isinstance(s.get("unit"), str) and isinstance(s.get("integer"), bool))
+
+
 def study_digest(definition: dict) -> str:
-    """The key of a study's definition (:meth:`Study.definition`, as JSON reads it back)."""
-    return spec_digest(json.loads(json.dumps(definition, default=str)))
+    """The key of a study's definition (:meth:`Study.definition`, as JSON reads it back): the
+    SHA-256 of its canonical JSON with every range's values written out (as govopt before
+    :class:`RangeValues` stored them: the same study, the same key), hashed a block at a time."""
+    d = json.loads(json.dumps(definition, default=str))
+    ranges = []
+    for s in d.get("sweeps", []) if isinstance(d, dict) and isinstance(
+            d.get("sweeps"), list) else []:
+        if isinstance(s, dict) and _range_fields(s):
+            ranges.append(RangeValues(s["start"], s["stop"], s.pop("num"), s["unit"],
+                                      s["integer"]))
+            s["values"] = f"\0range{len(ranges) - 1}"
+    h = hashlib.sha256()
+    parts = re.split(r'"\\u0000range\d+"', _canonical(d))
+    for text, values in itertools.zip_longest(parts, ranges):
+        h.update(text.encode())
+        if values is not None:
+            h.update(b"[")
+            for b in range(0, len(values), Study.BLOCK):
+                block = values.take(np.arange(b, min(b + Study.BLOCK, len(values))))
+                h.update((b"," if b else b"") + json.dumps(
+                    list(block), separators=(",", ":"))[1:-1].encode())
+            h.update(b"]")
+    return h.hexdigest()
 
 
 def _input_columns(spec: Spec, point: dict) -> dict:
@@ -1101,6 +1221,17 @@ def check_database(path: str | Path, *, inputs: Iterable = ()) -> Path:
     return path
 
 
+def _front(front: pd.DataFrame | None, part: pd.DataFrame, study: dict) -> pd.DataFrame:
+    """The rows on the Pareto front of ``study``'s objectives among the rows of ``front`` (the
+    front so far) and the batch ``part``: a row dominated by one of the first is dominated by
+    one on their front."""
+    both = part if front is None else pd.concat([front, part], ignore_index=True)
+    try:
+        return both.loc[pareto_front(both, study["pareto"])].reset_index(drop=True)
+    except StudyError as exc:  # an objective that is no column: name the spec
+        raise StudyError(f"{study.get('spec_path', '?')}: study.{exc}") from None
+
+
 class Store:
     """A study's SQLite database: ``meta`` (the study's definition, govopt's version),
     ``layouts`` (column lists) and ``points`` (one row per point: hash, index, status, message,
@@ -1116,6 +1247,9 @@ class Store:
     def __init__(self, path: str | Path, *, create: bool = True):
         self.path = Path(path)
         self.digest: str | None = None
+        #: meta values read, when opened read-only (nothing changes them then): an old
+        #: database's study holds a million-point sweep's values, parsed once
+        self._read: dict | None = None if create else {}
         if not create and not self.path.is_file():
             raise StudyError(f"{self.path}: no such study database" if not self.path.exists()
                              else f"{self.path}: not a study database (not a regular file)")
@@ -1177,8 +1311,13 @@ class Store:
         self.conn.execute("COMMIT")
 
     def meta(self, key: str):
+        if self._read is not None and key in self._read:
+            return self._read[key]
         row = self.conn.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
-        return None if row is None else json.loads(row[0])
+        value = None if row is None else json.loads(row[0])
+        if self._read is not None:
+            self._read[key] = value
+        return value
 
     def _set_meta(self, values: dict) -> None:
         self.conn.executemany("INSERT OR REPLACE INTO meta VALUES (?, ?)",
@@ -1251,21 +1390,20 @@ class Store:
             self.conn.executemany("INSERT OR IGNORE INTO points VALUES (?, ?, ?, ?, ?, ?, ?)",
                                   records)
 
-    def table(self, columns: Iterable[str] | None = None, *, batch: int = 20_000
-              ) -> pd.DataFrame:
-        """Every row, in the study's order (``point`` is its index), with ``pareto`` marked
-        where the study names objectives; ``columns``: only those (and what the Pareto front
-        needs), read ``batch`` rows at a time, so that a summary of a million points holds a few
-        columns, never every row's values (repeated texts such as the status held once)."""
-        layouts = {k: json.loads(v) for k, v in self.conn.execute("SELECT * FROM layouts")}
+    def _layouts(self) -> dict:
+        return {k: json.loads(v) for k, v in self.conn.execute("SELECT * FROM layouts")}
+
+    def batches(self, columns: Iterable[str] | None = None, *, batch: int = 20_000):
+        """The rows in the study's order, ``batch`` at a time: frames with ``point`` (the
+        index) and every column of the study (of all layouts, in :meth:`columns`' order;
+        ``columns``: only those), without the Pareto mark (:meth:`pareto`). A study of a million
+        points is read a batch at a time, never held (repeated texts such as the status held
+        once)."""
+        layouts = self._layouts()
         study = self.meta("study") or {}
-        want = None
-        if columns is not None:
-            want = {"point", *columns}
-            if study.get("pareto"):
-                want |= {"status", *(objective_column(n)[0] for n in study["pareto"])}
+        want = None if columns is None else {"point", *columns}
+        order = ["point"] + [c for c in self.columns(layouts) if want is None or c in want]
         texts_seen: dict = {}
-        parts, used = [], set()
         cursor = self.conn.execute("SELECT idx, layout, numbers, texts FROM points ORDER BY idx")
         while rows := cursor.fetchmany(batch):
             groups: dict[str, tuple[list, list, list]] = {}
@@ -1274,9 +1412,10 @@ class Store:
                 g[0].append(idx)
                 g[1].append(nums)
                 g[2].append(texts)
+            parts = []
             for lid, (i, n, t) in groups.items():
-                used.add(lid)
-                part = decode(layouts[lid], n, t).set_axis(i)
+                part = decode(layouts[lid], n, t)
+                part.insert(0, "point", i)
                 if want is not None:
                     # a copy: a column of the decoded batch is a view holding all its values
                     part = part[[c for c in part.columns if c in want]].copy()
@@ -1285,14 +1424,45 @@ class Store:
                             part[c] = [texts_seen.setdefault(v, v) if isinstance(v, str) else v
                                        for v in part[c]]
                 parts.append(part)
+            frame = pd.concat(parts, ignore_index=True) if len(parts) > 1 else parts[0]
+            if len(parts) > 1 or list(frame.columns) != order:
+                frame = frame.reindex(columns=order)
+            if len(parts) > 1:
+                frame = frame.sort_values("point", ignore_index=True)
+            yield frame
+
+    def objectives(self) -> list[str]:
+        """The columns the study's Pareto front reads (none without a front)."""
+        study = self.meta("study") or {}
+        return ["status", *(objective_column(n)[0] for n in study.get("pareto", ()))] \
+            if study.get("pareto") else []
+
+    def pareto(self, *, batch: int = 20_000) -> np.ndarray:
+        """The points (indices) on the study's Pareto front, in order, found a batch at a time:
+        the front of the rows so far and the next batch is the front of both (a row dominated
+        by one of the first is dominated by one on their front)."""
+        study = self.meta("study") or {}
+        objectives = study.get("pareto") or []
+        if not objectives:
+            return np.zeros(0, dtype=int)
+        front = None
+        for part in self.batches(self.objectives(), batch=batch):
+            front = _front(front, part, study)
+        return np.zeros(0, dtype=int) if front is None else front["point"].to_numpy(dtype=int)
+
+    def table(self, columns: Iterable[str] | None = None, *, batch: int = 20_000
+              ) -> pd.DataFrame:
+        """Every row, in the study's order (``point`` is its index), with ``pareto`` marked
+        where the study names objectives; ``columns``: only those (and what the Pareto front
+        needs), read ``batch`` rows at a time (:meth:`batches`). For a whole table; a large
+        study is read by :meth:`batches`."""
+        study = self.meta("study") or {}
+        if columns is not None:
+            columns = [*columns, *self.objectives()]
+        parts = list(self.batches(columns, batch=batch))
         if not parts:
             return pd.DataFrame()
-        order = list(dict.fromkeys(c for lid in sorted(used, key=lambda k: -len(layouts[k]))
-                                   for c, _ in layouts[lid]))
-        frame = pd.concat(parts) if len(parts) > 1 else parts[0]
-        if len(used) > 1:
-            frame = frame.reindex(columns=[c for c in order if c in frame.columns])
-        frame = frame.sort_index().rename_axis("point").reset_index()
+        frame = pd.concat(parts, ignore_index=True) if len(parts) > 1 else parts[0]
         if study.get("pareto"):
             try:
                 frame["pareto"] = pareto_front(frame, study["pareto"])
@@ -1300,10 +1470,11 @@ class Store:
                 raise StudyError(f"{study.get('spec_path', '?')}: study.{exc}") from None
         return frame
 
-    def columns(self) -> list[str]:
-        """Every column of the study's rows (of all layouts), in order."""
-        return list(dict.fromkeys(c for (v,) in self.conn.execute("SELECT columns FROM layouts")
-                                  for c, _ in json.loads(v)))
+    def columns(self, layouts: dict | None = None) -> list[str]:
+        """Every column of the study's rows (of all layouts, the longest's first), in order."""
+        layouts = self._layouts() if layouts is None else layouts
+        return list(dict.fromkeys(c for lid in sorted(layouts, key=lambda k: -len(layouts[k]))
+                                  for c, _ in layouts[lid]))
 
     def row(self, point: int) -> dict:
         """The row of point ``point`` (an index)."""
@@ -1597,33 +1768,50 @@ def pareto_front(frame: pd.DataFrame, objectives) -> np.ndarray:
     return out
 
 
-def tolerance_summary(frame: pd.DataFrame) -> dict:
+#: the columns whose spread a tolerance study reports
+SPREAD = ("omega_inner_rad_s", "omega_outer_rad_s", "irregularity", "k2_normal_rad2_s2")
+
+
+def tolerance_summary(frames) -> dict:
     """Per requirement, the probability it holds over the samples with its 95 % Wilson
     interval (a sample that cannot be evaluated counts as not holding), and the spread of the
-    speed range (mean, standard deviation, 2.5 and 97.5 percentiles)."""
+    speed range (mean, standard deviation, 2.5 and 97.5 percentiles). ``frames``: the study's
+    table, or its batches (:meth:`Store.batches`: counted a batch at a time, the spread's
+    columns kept as numbers only)."""
     from .bulk import check_names, passed_column
 
-    n = len(frame)
+    if isinstance(frames, pd.DataFrame):
+        frames = [frames]
+    n = errors = all_k = 0
+    holds: dict[str, int] = {}
+    values: dict[str, list] = {}
+    for frame in frames:
+        n += len(frame)
+        for name in check_names(frame.columns):
+            p = frame[passed_column(name)]
+            holds[name] = holds.get(name, 0) + int((p == True).sum())  # noqa: E712 (nullable)
+        ok = frame["status"] != "error"
+        errors += int((~ok).sum())
+        all_k += int((frame["status"] == "pass").sum())
+        for col in SPREAD:
+            if col in frame:
+                values.setdefault(col, []).append(pd.to_numeric(
+                    frame.loc[ok, col], errors="coerce").dropna().to_numpy(dtype=float))
     checks = {}
-    for name in check_names(frame.columns):
-        p = frame[passed_column(name)]
-        k = int((p == True).sum())  # noqa: E712 (nullable booleans)
+    for name, k in holds.items():
         lo, hi = wilson(k, n)
         checks[name] = {"probability": k / n if n else math.nan, "ci95": [lo, hi], "holds": k,
                         "samples": n}
-    ok = frame["status"] != "error"
-    all_k = int((frame["status"] == "pass").sum())
     lo, hi = wilson(all_k, n)
     spread = {}
-    for col in ("omega_inner_rad_s", "omega_outer_rad_s", "irregularity", "k2_normal_rad2_s2"):
-        if col in frame:
-            v = pd.to_numeric(frame.loc[ok, col], errors="coerce").dropna().to_numpy()
-            if v.size:
-                spread[col] = {"mean": float(v.mean()), "std": float(v.std(ddof=1))
-                               if v.size > 1 else 0.0,
-                               "p2.5": float(np.percentile(v, 2.5)),
-                               "p97.5": float(np.percentile(v, 97.5))}
-    return {"samples": n, "errors": int((~ok).sum()),
+    for col, parts in values.items():
+        v = np.concatenate(parts)
+        if v.size:
+            spread[col] = {"mean": float(v.mean()), "std": float(v.std(ddof=1))
+                           if v.size > 1 else 0.0,
+                           "p2.5": float(np.percentile(v, 2.5)),
+                           "p97.5": float(np.percentile(v, 97.5))}
+    return {"samples": n, "errors": errors,
             "all_requirements": {"probability": all_k / n if n else math.nan, "ci95": [lo, hi]},
             "checks": checks, "spread": spread}
 
@@ -1643,43 +1831,69 @@ def _drawn(value) -> str:
 
 def summary_text(store: Store) -> str:
     """What `govopt study show` prints: the study, its progress, status counts, the best
-    feasible point, the Pareto front and, for a tolerance study, the probabilities."""
+    feasible point, the Pareto front and, for a tolerance study, the probabilities. The rows
+    are read a batch at a time (:meth:`Store.batches`), only the columns shown: a summary of a
+    million points holds one batch, the front and the tolerance study's spread."""
     from .bulk import check_names, passed_column
 
     study = store.meta("study") or {}
     total = store.meta("total") or 0
-    needed = ["status", "objective", "objective_value"]
-    if study.get("tolerances"):  # what tolerance_summary reads
+    needed = ["status", "objective", "objective_value", *store.objectives()]
+    tolerances = bool(study.get("tolerances"))
+    if tolerances:  # what tolerance_summary reads
         checks = check_names(store.columns())
-        needed += [passed_column(c) for c in checks] + [f"margin: {c}" for c in checks] + [
-            "omega_inner_rad_s", "omega_outer_rad_s", "irregularity", "k2_normal_rad2_s2"]
-    frame = store.table(needed)
+        needed += [passed_column(c) for c in checks] + [f"margin: {c}" for c in checks] + list(
+            SPREAD)
+    best = None  # (value, point, objective name): the first of the least
+    counts: dict[str, int] = {}  # most first; equals in the order they first occur
+    front = None
+
+    def scan():
+        nonlocal best, front
+        for part in store.batches(needed):
+            for k, v in part["status"].value_counts(sort=False).items():
+                counts[k] = counts.get(k, 0) + int(v)
+            if study.get("pareto"):
+                front = _front(front, part, study)
+            v = pd.to_numeric(part["objective_value"], errors="coerce")
+            ok = feasible(part) & v.notna().to_numpy()
+            if ok.any():
+                i = int(np.argmin(np.where(ok, v.to_numpy(dtype=float), np.inf)))
+                if best is None or v.iloc[i] < best[0]:
+                    best = (float(v.iloc[i]), int(part["point"].iloc[i]),
+                            part["objective"].iloc[i])
+            yield part
+
+    if tolerances:
+        summary = tolerance_summary(scan())
+    else:
+        for _ in scan():
+            pass
+    n = sum(counts.values())
     lines = [f"study {study.get('name', '?')!r}: {study.get('mode')} mode on "
              f"{study.get('spec_path')}, {', '.join(study.get('keys', []))} "
              f"({study.get('combine')}); govopt {store.meta('govopt_version')}",
-             f"points: {len(frame)} of {total} done"]
-    if frame.empty:
+             f"points: {n} of {total} done"]
+    if not n:
         return "\n".join(lines)
-    counts = frame["status"].value_counts()
-    lines.append("status: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
-    ok = feasible(frame) & pd.to_numeric(frame["objective_value"], errors="coerce").notna()
-    if ok.any():
-        best = frame.loc[ok].sort_values("objective_value").iloc[0]
-        written = store.row(int(best["point"]))
+    lines.append("status: " + ", ".join(f"{k} {v}" for k, v in sorted(
+        counts.items(), key=lambda kv: -kv[1])))
+    if best is not None:
+        written = store.row(best[1])
         inputs = ", ".join(f"{k} = {_drawn(written[k])}" for k in study.get("keys", [])
                            if k in written)
-        lines.append(f"best feasible {best.get('objective', 'objective')}: "
-                     f"{best['objective_value']:.6g} at point {int(best['point'])} ({inputs})")
-    if "pareto" in frame:
-        lines.append(f"Pareto front ({', '.join(study['pareto'])}): "
-                     f"{int(frame['pareto'].sum())} points: "
-                     + ", ".join(str(int(i)) for i in frame.loc[frame["pareto"], "point"][:20]))
+        name = best[2] if isinstance(best[2], str) else "objective"
+        lines.append(f"best feasible {name}: {best[0]:.6g} at point {best[1]} ({inputs})")
+    if study.get("pareto"):
+        front = np.zeros(0, dtype=int) if front is None else front["point"].to_numpy(dtype=int)
+        lines.append(f"Pareto front ({', '.join(study['pareto'])}): {len(front)} points: "
+                     + ", ".join(str(int(i)) for i in front[:20]))
     error = store.conn.execute("SELECT message FROM points WHERE status = 'error' ORDER BY idx "
                                "LIMIT 1").fetchone()
     if error is not None:
         lines.append(f"first error: {error[0]}")
-    if study.get("tolerances"):
-        s = tolerance_summary(frame)
+    if tolerances:
+        s = summary
         a = s["all_requirements"]
         lines.append(f"tolerance study, {s['samples']} samples: all requirements hold with "
                      f"probability {a['probability']:.4f} (95 % CI {a['ci95'][0]:.4f}-"
@@ -1696,35 +1910,137 @@ def summary_text(store: Store) -> str:
     return "\n".join(lines)
 
 
-def export(store: Store, path: str | Path, *, overwrite: bool = False) -> Path:
+class _MixedColumn(Exception):
+    """A column of numbers in an export's first batch holds texts further on (its name)."""
+
+
+def _text_or_none(v):
+    """A cell of a typed export's text column: the value as text, or None where missing."""
+    if v is None or v is pd.NA or (isinstance(v, float) and math.isnan(v)):
+        return None
+    return v if isinstance(v, str) else str(v)
+
+
+def export(store: Store, path: str | Path, *, overwrite: bool = False,
+           batch: int = 20_000) -> Path:
     """Write the study's table as CSV, Parquet or xlsx (by the file's extension), atomically
     (:func:`govopt.report.files.atomic_write`: never a partial file; an existing file replaced
-    only with ``overwrite``)."""
+    only with ``overwrite``), ``batch`` rows at a time (:meth:`Store.batches`: a million-point
+    study is never held; the Pareto front is found first, :meth:`Store.pareto`). In Parquet and
+    xlsx the columns of written inputs and texts are text (inputs written as numbers or
+    strings)."""
     from .report.files import atomic_write
 
     path = Path(path)
     kind = path.suffix.lower()
     if kind not in (".csv", ".parquet", ".xlsx"):
         raise StudyError(f"{path}: expected a .csv, .parquet or .xlsx file")
-    frame = store.table()
-    if kind == ".csv":
-        return atomic_write(path, lambda tmp: frame.to_csv(tmp, index=False),
-                            overwrite=overwrite, what="study table")
-    # mixed object columns (inputs written as numbers or strings) as text for typed formats
-    typed = frame.copy()
-    for c in typed.columns:
-        if typed[c].dtype == object:
-            kinds = {type(v) for v in typed[c] if v is not None and v is not pd.NA
-                     and not (isinstance(v, float) and math.isnan(v))}
-            if len(kinds) > 1 or (kinds and not kinds <= {str}):
-                typed[c] = typed[c].map(lambda v: None if v is None or v is pd.NA
-                                        or (isinstance(v, float) and math.isnan(v)) else str(v))
-    if kind == ".parquet":
-        return atomic_write(path, lambda tmp: typed.to_parquet(tmp, index=False),
-                            overwrite=overwrite, what="study table")
-    return atomic_write(path, lambda tmp: typed.to_excel(tmp, index=False, engine="openpyxl",
-                                                         sheet_name="study"),
-                        overwrite=overwrite, what="study table")
+    study = store.meta("study") or {}
+    front = store.pareto(batch=batch) if study.get("pareto") else None
+    kinds = {c: k for layout in store._layouts().values() for c, k in layout}
+    columns = ["point", *store.columns(), *(["pareto"] if front is not None else [])]
+
+    def frames(text: set | None = None):
+        """The table's batches; with ``text`` (typed formats) the columns of texts as text
+        (those of texts or mixed values in the first batch, and those in ``text``), booleans
+        nullable."""
+        first = True
+        for part in store.batches(batch=batch):
+            if front is not None:
+                part["pareto"] = part["point"].isin(front).to_numpy()
+            if text is not None:
+                for c in part.columns:
+                    if kinds.get(c) == "b":
+                        part[c] = part[c].astype("boolean")
+                        continue
+                    if kinds.get(c) != "o":
+                        continue
+                    if first and part[c].dtype == object:
+                        text.add(c)
+                    elif c not in text and part[c].dtype == object:  # numbers, then texts
+                        raise _MixedColumn(c)
+                    if c in text:
+                        part[c] = [_text_or_none(v) for v in part[c]]
+            first = False
+            yield part
+
+    def csv(tmp):
+        with open(tmp, "w", newline="", encoding="utf-8") as f:
+            first = True
+            for part in frames():
+                part.to_csv(f, header=first, index=False)
+                first = False
+            if first:
+                pd.DataFrame(columns=columns).to_csv(f, index=False)
+
+    def typed(write_batches):
+        """``write_batches(frames)`` again with a column of numbers that turns out to hold
+        texts further on written as text throughout (a file's column has one type)."""
+        text: set[str] = set()
+        while True:
+            try:
+                return write_batches(frames(text))
+            except _MixedColumn as exc:
+                text.add(exc.args[0])
+
+    def parquet(tmp):
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+
+        def write_batches(parts):
+            writer = None
+            try:
+                for part in parts:
+                    table = pa.Table.from_pandas(part, preserve_index=False)
+                    if writer is None:
+                        writer = pq.ParquetWriter(tmp, table.schema)
+                    elif not table.schema.equals(writer.schema, check_metadata=False):
+                        try:
+                            table = table.cast(writer.schema)
+                        except (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError):
+                            bad = next(f.name for f in writer.schema
+                                       if table.schema.field(f.name).type != f.type)
+                            raise _MixedColumn(bad) from None
+                    writer.write_table(table.replace_schema_metadata(writer.schema.metadata))
+                if writer is None:
+                    pq.write_table(pa.Table.from_pandas(pd.DataFrame(columns=columns),
+                                                        preserve_index=False), tmp)
+            finally:
+                if writer is not None:
+                    writer.close()
+
+        typed(write_batches)
+
+    def xlsx(tmp):
+        from openpyxl import Workbook
+        from openpyxl.cell import WriteOnlyCell
+        from openpyxl.styles import Font
+
+        def write_batches(parts):
+            book = Workbook(write_only=True)
+            sheet = book.create_sheet("study")
+            header = []
+            for c in columns:
+                cell = WriteOnlyCell(sheet, value=c)
+                cell.font = Font(bold=True)
+                header.append(cell)
+            sheet.append(header)
+            try:
+                for part in parts:
+                    for row in part.astype(object).itertuples(index=False, name=None):
+                        sheet.append([None if v is None or v is pd.NA or (
+                            isinstance(v, float) and math.isnan(v)) else
+                            v.item() if isinstance(v, np.generic) else v for v in row])
+            except BaseException:  # the sheet's temporary file closed, then written again
+                with contextlib.suppress(Exception):
+                    sheet.close()
+                raise
+            book.save(tmp)
+
+        typed(write_batches)
+
+    write = {".csv": csv, ".parquet": parquet, ".xlsx": xlsx}[kind]
+    return atomic_write(path, write, overwrite=overwrite, what="study table")
 
 
 def remove_database(path: Path) -> None:

@@ -85,14 +85,26 @@ def _axis(frame: pd.DataFrame, key: str):
     return np.array([pos[str(v)] for v in written], dtype=float), key, list(cats)
 
 
-def _constraints(frame: pd.DataFrame) -> list[str]:
-    """The checks to draw: those active (satisfied within ``ACTIVE_TOL``) or failed in some row,
-    closest to their limit first; if none, the three closest."""
+def _least_margins(frames) -> dict[str, float]:
+    """Each check's least margin over the rows of ``frames`` (a table's batches)."""
     from ..bulk import check_names, margin_column
 
-    names = check_names(frame.columns)
-    least = {n: np.nanmin(pd.to_numeric(frame[margin_column(n)], errors="coerce")
-                          .to_numpy(dtype=float), initial=np.inf) for n in names}
+    least: dict[str, float] = {}
+    for frame in frames:
+        for n in check_names(frame.columns):
+            m = np.nanmin(pd.to_numeric(frame[margin_column(n)], errors="coerce")
+                          .to_numpy(dtype=float), initial=np.inf)
+            least[n] = min(least.get(n, np.inf), float(m))
+    return least
+
+
+def _constraints(frame: pd.DataFrame | None, least: dict[str, float] | None = None
+                 ) -> list[str]:
+    """The checks to draw: those active (satisfied within ``ACTIVE_TOL``) or failed in some row,
+    closest to their limit first; if none, the three closest. ``least``: each check's least
+    margin over the whole study (:func:`_least_margins`), else over ``frame``'s rows."""
+    least = _least_margins([frame]) if least is None else least
+    names = list(least)
     binding = [n for n in names if least[n] < ACTIVE_TOL]
     chosen = binding or sorted(names, key=lambda n: least[n])[:3]
     return sorted(chosen, key=lambda n: least[n])[:MAX_CONSTRAINTS]
@@ -128,14 +140,17 @@ def _series(ax, frame, others, y, x, ticks, label_points=False):
     return lines and len(groups) <= 6
 
 
-def _sweep_figure(frame: pd.DataFrame, key: str, keys: list[str], combine: str):
+def _sweep_figure(frame: pd.DataFrame, key: str, keys: list[str], combine: str,
+                  cons: list[str] | None = None, every: int = 1):
+    """``cons``: the constraints to draw (:func:`_constraints` of ``frame``); ``every``: the
+    frame holds every ``every``-th point of the study (said in the title)."""
     from ..bulk import margin_column
 
     x, xlabel, ticks = _axis(frame, key)
     others = [k for k in keys if k != key and frame[k].astype(str).nunique() > 1] \
         if combine == "grid" else []
     few = not others and len(frame) <= 12
-    cons = _constraints(frame)
+    cons = _constraints(frame) if cons is None else cons
     fig, rows, _ = _figure(1 + len(cons))
     axes = fig.subplots(rows, 1, sharex=True, squeeze=False)[:, 0]
     obj = str(frame["objective"].dropna().iloc[0]) if frame["objective"].notna().any() \
@@ -146,7 +161,8 @@ def _sweep_figure(frame: pd.DataFrame, key: str, keys: list[str], combine: str):
     from ..bulk import OBJECTIVE_COLUMN
 
     axes[0].set_ylabel(OBJECTIVE_COLUMN.get(obj, obj))
-    note = "; labels: point numbers" if few else ""
+    note = ("; labels: point numbers" if few else "") + (
+        f"; one point in {every} drawn" if every > 1 else "")
     axes[0].set_title(f"objective and binding constraints (hollow: fails a check{note})",
                       fontsize=9)
     for ax, name in zip(axes[1:], cons, strict=True):
@@ -164,7 +180,11 @@ def _sweep_figure(frame: pd.DataFrame, key: str, keys: list[str], combine: str):
     return fig
 
 
-def _pareto_figure(frame: pd.DataFrame, objectives: list[str]):
+#: points on a Pareto front labelled with their numbers at most (more would overlap)
+MAX_LABELS = 30
+
+
+def _pareto_figure(frame: pd.DataFrame, objectives: list[str], every: int = 1):
     from ..study import feasible, objective_column
 
     cols = [objective_column(o) for o in objectives]
@@ -185,14 +205,17 @@ def _pareto_figure(frame: pd.DataFrame, objectives: list[str]):
         if len(cols) == 2 and f.size:
             ax.step(xi[f], xj[f], where="post", color="C3", lw=1.0)
         ax.plot(xi[f], xj[f], "o", color="C3", ms=6, label="Pareto front")
-        for k in f:
+        for k in f if f.size <= MAX_LABELS else ():
             ax.annotate(str(int(frame["point"].iloc[k])), (xi[k], xj[k]), fontsize=7,
                         xytext=(3, 3), textcoords="offset points")
         ax.set_xlabel(f"{ci} ({'maximise' if si == 'max' else 'minimise'})")
         ax.set_ylabel(f"{cj} ({'maximise' if sj == 'max' else 'minimise'})")
         ax.legend(loc="best")
+    feasible_n = int(ok.sum()) if every == 1 else int(frame.attrs["feasible"])
     fig.suptitle(f"Pareto front of {', '.join(objectives)}\n{int(front.sum())} of "
-                 f"{int(ok.sum())} feasible points on it (labels: point numbers)", fontsize=9)
+                 f"{feasible_n} feasible points on it"
+                 + (" (labels: point numbers)" if front.sum() <= MAX_LABELS else "")
+                 + (f"; off it one point in {every} drawn" if every > 1 else ""), fontsize=9)
     return fig
 
 
@@ -210,34 +233,77 @@ def check_limit(frame: pd.DataFrame, check: str) -> float | None:
     return float(np.median(limits)) if limits.size else None
 
 
-def _tolerance_figure(frame: pd.DataFrame):
+def _histograms(batches, columns: dict, bins: int = 40) -> dict:
+    """Histograms of the study's columns over the rows that ran, read a batch at a time
+    (``batches()`` twice: the range, then the counts): ``columns`` maps a name to ``(column,
+    split)``, ``split`` counting the negative values apart (a margin's failing samples). Returns
+    name -> ``(edges, counts, negative counts)``; the edges are ``numpy.histogram``'s over all
+    the values (``bins`` between the least and the largest)."""
+    lo = {n: np.inf for n in columns}
+    hi = {n: -np.inf for n in columns}
+
+    def values(part, col):
+        ok = (part["status"] != "error").to_numpy()
+        v = pd.to_numeric(part.loc[ok, col], errors="coerce").to_numpy(dtype=float)
+        return v[np.isfinite(v)]
+
+    for part in batches():
+        for n, (col, _) in columns.items():
+            v = values(part, col)
+            if v.size:
+                lo[n], hi[n] = min(lo[n], float(v.min())), max(hi[n], float(v.max()))
+    out = {}
+    for n in columns:
+        span = np.array([lo[n], hi[n]]) if np.isfinite(lo[n]) else np.zeros(0)
+        edges = np.histogram_bin_edges(span, bins=bins)
+        out[n] = (edges, np.zeros(bins), np.zeros(bins))
+    for part in batches():
+        for n, (col, split) in columns.items():
+            v = values(part, col)
+            edges, counts, negative = out[n]
+            if split:
+                counts += np.histogram(v[v >= 0], bins=edges)[0]
+                negative += np.histogram(v[v < 0], bins=edges)[0]
+            else:
+                counts += np.histogram(v, bins=edges)[0]
+    return out
+
+
+def _tolerance_figure(source):
+    """The tolerance study's histograms; ``source``: its table, or a callable returning its
+    batches (:meth:`govopt.study.Store.batches`: read a batch at a time, three times)."""
     from ..bulk import check_names, margin_column
     from ..study import tolerance_summary
 
-    s = tolerance_summary(frame)
+    batches = (lambda: [source]) if isinstance(source, pd.DataFrame) else source
+    s = tolerance_summary(batches())
     from matplotlib.ticker import MaxNLocator
 
     labels = {"omega_inner_rad_s": "innermost speed [rpm]", "omega_outer_rad_s":
               "outermost speed [rpm]", "irregularity": "irregularity",
               "k2_normal_rad2_s2": "k^2 at the normal configuration [1/s^2]"}
-    figs = [(c, RPM, "rpm") for c in ("omega_inner_rad_s", "omega_outer_rad_s") if c in frame]
-    figs += [(c, 1.0, "") for c in ("irregularity", "k2_normal_rad2_s2") if c in frame]
-    names = check_names(frame.columns)
+    first = next(iter(batches()))
+    figs = [(c, RPM, "rpm") for c in ("omega_inner_rad_s", "omega_outer_rad_s") if c in first]
+    figs += [(c, 1.0, "") for c in ("irregularity", "k2_normal_rad2_s2") if c in first]
+    names = check_names(first.columns)
+    ok_first = first["status"] != "error"
+    limit = check_limit(first.loc[ok_first], "irregularity") if any(
+        c == "irregularity" for c, _, _ in figs) else None
+    hists = _histograms(batches, {**{("value", c): (c, False) for c, _, _ in figs},
+                                  **{("margin", n): (margin_column(n), True) for n in names}})
     panels = len(figs) + len(names)
     cols = 3
     rows = math.ceil(panels / cols)
     fig, _, _ = _figure(rows, cols, height=2.2, width=10.0)
     axes = fig.subplots(rows, cols, squeeze=False).ravel()
-    ok = frame["status"] != "error"
     for k, (ax, (col, scale, _unit)) in enumerate(zip(axes, figs, strict=False)):
-        v = pd.to_numeric(frame.loc[ok, col], errors="coerce").dropna().to_numpy() * scale
-        ax.hist(v, bins=40, color="C0", alpha=0.8)
+        edges, counts, _ = hists["value", col]
+        ax.hist(edges[:-1] * scale, bins=edges * scale, weights=counts, color="C0", alpha=0.8)
         sp = s["spread"].get(col)
         if sp:
             for q in ("p2.5", "p97.5"):
                 ax.axvline(sp[q] * scale, color="k", ls="--", lw=0.8)
-        limit = check_limit(frame.loc[ok], col) if col == "irregularity" else None
-        if limit is not None:
+        if col == "irregularity" and limit is not None:
             ax.axvline(limit, color="C3", lw=1.2)
             ax.annotate(f"required <= {limit:.4g}", (limit, 1.0), xycoords=("data", "axes "
                         "fraction"), xytext=(-3, -3), textcoords="offset points", ha="right",
@@ -246,11 +312,11 @@ def _tolerance_figure(frame: pd.DataFrame):
         ax.set_title(labels[col] + (" (dashed: 95 % of samples)" if k == 0 else ""),
                      fontsize=8)
     for ax, name in zip(axes[len(figs):], names, strict=False):
-        m = pd.to_numeric(frame.loc[ok, margin_column(name)], errors="coerce").dropna().to_numpy()
-        bins = np.histogram_bin_edges(m, bins=40)
-        ax.hist(m[m >= 0], bins=bins, color="C2", alpha=0.8, label="pass")
-        if (m < 0).any():  # failing samples in red, beside the passing ones' green
-            ax.hist(m[m < 0], bins=bins, color="C3", alpha=0.8, label="fail")
+        edges, passing, failing = hists["margin", name]
+        ax.hist(edges[:-1], bins=edges, weights=passing, color="C2", alpha=0.8, label="pass")
+        if failing.any():  # failing samples in red, beside the passing ones' green
+            ax.hist(edges[:-1], bins=edges, weights=failing, color="C3", alpha=0.8,
+                    label="fail")
             ax.legend(loc="upper right", fontsize=7)
         ax.axvline(0.0, color="C3", lw=1.0)
         ax.xaxis.set_major_locator(MaxNLocator(5))
@@ -266,30 +332,74 @@ def _tolerance_figure(frame: pd.DataFrame):
     return fig
 
 
-def plot_study(store, folder: str | Path, *, overwrite: bool = False) -> list[Path]:
-    """Draw the study in ``store`` into ``folder`` (created if missing); returns the files."""
+#: rows drawn per plot at most: a larger study is drawn from every k-th point (the Pareto
+#: front always whole), its constraints chosen and its histograms counted over every row
+MAX_POINTS = 20_000
+
+
+def _sample(store, columns: list[str], every: int, *, keep=None) -> pd.DataFrame:
+    """Every ``every``-th row of the study (and the points ``keep``), only ``columns`` (a
+    column no row has, as in a study whose every point was an error, empty), read a batch at a
+    time."""
+    parts, seen = [], 0
+    for part in store.batches(columns):
+        take = (np.arange(seen, seen + len(part)) % every) == 0
+        if keep is not None and len(keep):
+            take |= part["point"].isin(keep).to_numpy()
+        seen += len(part)
+        parts.append(part.loc[take])
+    frame = pd.concat(parts, ignore_index=True) if parts else pd.DataFrame()
+    return frame.reindex(columns=list(dict.fromkeys(["point", *columns])))
+
+
+def plot_study(store, folder: str | Path, *, overwrite: bool = False,
+               max_points: int = MAX_POINTS) -> list[Path]:
+    """Draw the study in ``store`` into ``folder`` (created if missing); returns the files.
+    The database is read a batch at a time (:meth:`govopt.study.Store.batches`): the plots of
+    a study of more than ``max_points`` points draw every k-th of them (said on the plot),
+    its Pareto front whole; the constraints are chosen and the tolerance histograms counted
+    over every row."""
     import matplotlib
 
+    from ..bulk import check_names, margin_column, passed_column
+    from ..study import SPREAD, objective_column
+
     folder = check_plot_folder(folder)
-    folder.mkdir(exist_ok=True)
-    frame = store.table()
     study = store.meta("study") or {}
-    if frame.empty:
+    n = store.count()
+    if not n:
         raise GovoptError(f"{store.path}: the study has no rows to plot yet")
+    folder.mkdir(exist_ok=True)
+    every = max(1, math.ceil(n / max_points))
+    columns = store.columns()
+    checks = check_names(columns)
     out: list[Path] = []
     with matplotlib.rc_context(STYLE):
         if study.get("tolerances"):
-            out += _save(_tolerance_figure(frame), folder, "tolerance", overwrite)
+            needed = ["status", *SPREAD, *(passed_column(c) for c in checks),
+                      *(margin_column(c) for c in checks), *checks]
+            out += _save(_tolerance_figure(lambda: store.batches(needed)), folder, "tolerance",
+                         overwrite)
         else:
-            keys = [k for k in study.get("keys", []) if k in frame]
+            keys = [k for k in study.get("keys", []) if k in columns]
             combine = study.get("combine", "grid")
-            if combine == "zip" and len(keys) > 1:  # the keys move together: one plot
-                out += _save(_sweep_figure(frame, keys[0], keys, combine), folder,
-                             f"sweep-{_slug(keys[0])}", overwrite)
-            else:
-                for key in keys:
-                    out += _save(_sweep_figure(frame, key, keys, combine),
-                                 folder, f"sweep-{_slug(key)}", overwrite)
+            cons = _constraints(None, _least_margins(store.batches(
+                ["status", *(margin_column(c) for c in checks)])))
+            needed = ["status", "objective", "objective_value", *keys,
+                      *(c for c in columns if any(c.startswith(f"{k} [") for k in keys)),
+                      *(margin_column(c) for c in cons)]
+            frame = _sample(store, needed, every)
+            drawn = keys[:1] if combine == "zip" and len(keys) > 1 else keys  # in step: one
+            for key in drawn:
+                out += _save(_sweep_figure(frame, key, keys, combine, cons, every),
+                             folder, f"sweep-{_slug(key)}", overwrite)
         if study.get("pareto"):
-            out += _save(_pareto_figure(frame, study["pareto"]), folder, "pareto", overwrite)
+            front = store.pareto()
+            frame = _sample(store, ["status", *(objective_column(o)[0]
+                                                for o in study["pareto"])], every, keep=front)
+            frame["pareto"] = frame["point"].isin(front).to_numpy()
+            frame.attrs["feasible"] = store.conn.execute(
+                "SELECT COUNT(*) FROM points WHERE status IN ('pass', 'optimal')").fetchone()[0]
+            out += _save(_pareto_figure(frame, study["pareto"], every), folder, "pareto",
+                         overwrite)
     return out
