@@ -3,13 +3,13 @@ of :mod:`govopt.optimize.design`, or, where the requirements ask for a tolerance
 grade, mass or dash-pot spreads, an adjusting nut), the robust search of
 :mod:`govopt.optimize.robust`, which itself starts from the nominal optimum.
 
-Imports run one way: this module -> robust -> design.
+Imports run one way: this module -> robust -> design (robust, with the bulk evaluator and
+pandas, only for a robust spec).
 """
 
 from __future__ import annotations
 
 from . import design as dz
-from . import robust
 
 
 def design(spec):
@@ -21,5 +21,7 @@ def design(spec):
     """
     spec = dz.validated(spec)
     if spec.requirements.robust:
-        return robust.robust_design(spec)
+        from .robust import robust_design  # the bulk evaluator and pandas: only when asked
+
+        return robust_design(spec)
     return dz.design(spec)
