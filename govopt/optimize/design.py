@@ -328,7 +328,7 @@ def helical_catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
         mass=hx.wire_mass(d, r, n, mat.density),
         fields={"wire_diameter": d, "coil_radius": r, "active_turns": n},
         check=lambda cc, F, l0: spring_checks(spec, req, d[cc], r[cc], n[cc], F, l0,
-                                              harmonics),
+                                              harmonics, kappa[cc]),
         fatigue=fatigue)
 
 
@@ -364,26 +364,27 @@ def catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
     return CATALOGUES.get(spec.governor.spring, helical_catalogue)(spec, req)
 
 
-def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=()):
+def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=(), kappa=None):
     """Spring constraints that do not depend on the governor's statics (arrays): the spring's
     requirement rows (:func:`govopt.requirements.requirement_rows`, group ``"spring"``: index,
     body length, outer diameter, surge); with a wire grade the spring engineering table
     (diameter-dependent allowables, the spring kind's own checks, surge clear of the forcing's
     ``harmonics`` in Hz) instead of the one stress; without one, the compression spring's
     geometric rows too (coil clash, buckling, free pitch:
-    :func:`govopt.analysis.spring_engineering.geometry_rows`)."""
+    :func:`govopt.analysis.spring_engineering.geometry_rows`). ``kappa``: the springs'
+    stiffness where the caller has it (N/m)."""
     mat = spec.material
     ok = holds([row for row in requirement_rows(spec, req) if row.group == "spring"],
                SpringFigures(d, r, n, l0, mat))
     from ..analysis import spring_engineering as se
 
+    if kappa is None:
+        kappa = hx.stiffness_r(d, r, n, mat.shear_modulus)
     if mat.grade is None:  # the stress against the spec's allowable; coil clash and buckling
         ok = ok & holds([stress_row(mat)],
                         {"stress": hx.shear_stress_r(F_max, d, r, mat.stress_correction)})
-        return ok & se.geometry_screen(spec, d, r, n,
-                                       hx.stiffness_r(d, r, n, mat.shear_modulus), l0)
-    return ok & se.screen(spec, d, r, n, hx.stiffness_r(d, r, n, mat.shear_modulus), l0,
-                          harmonics)
+        return ok & se.geometry_screen(spec, d, r, n, kappa, l0)
+    return ok & se.screen(spec, d, r, n, kappa, l0, harmonics)
 
 
 def objective_values(req: Requirements, m, spring_mass, window=None, central=0.0):
