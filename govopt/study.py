@@ -1829,6 +1829,23 @@ def _drawn(value) -> str:
     return f"{float(match[1]):.4g}{match[2]}" if match else text
 
 
+def _speed_unit(data) -> tuple[str, float]:
+    """The unit the spec states its speeds in (``[speed] inner``, ``mean`` or ``outer``, e.g.
+    ``"240 rpm"``) and its value of 1 rad/s; rpm where the spec gives none that converts."""
+    from .units import UnitError, to_unit
+
+    speed = (data or {}).get("speed") if isinstance(data, dict) else None
+    for key in ("inner", "mean", "outer"):
+        text = speed.get(key) if isinstance(speed, dict) else None
+        if isinstance(text, str) and len(text.split(None, 1)) == 2:
+            unit = text.split(None, 1)[1].strip()
+            try:
+                return unit, float(to_unit(1.0, "angular_velocity", unit))
+            except (UnitError, ValueError, TypeError, AttributeError, KeyError):
+                break  # pint's errors for a unit that is not a speed are among these
+    return "rpm", 30.0 / math.pi
+
+
 def summary_text(store: Store) -> str:
     """What `govopt study show` prints: the study, its progress, status counts, the best
     feasible point, the Pareto front and, for a tolerance study, the probabilities. The rows
@@ -1901,8 +1918,9 @@ def summary_text(store: Store) -> str:
         for name, c in s["checks"].items():
             lines.append(f"  {name}: {c['probability']:.4f} ({c['ci95'][0]:.4f}-"
                          f"{c['ci95'][1]:.4f})")
-        for col, v in s["spread"].items():  # speeds in rpm, as the README and the plot
-            scale, name = ((30.0 / math.pi, col.replace("_rad_s", "_rpm"))
+        unit, per = _speed_unit(study.get("spec"))
+        for col, v in s["spread"].items():  # speeds in the spec's own unit
+            scale, name = ((per, col.replace("_rad_s", f"_{unit}"))
                            if col.endswith("_rad_s") else (1.0, col))
             lines.append(f"  {name}: mean {v['mean'] * scale:.6g}, std {v['std'] * scale:.3g}, "
                          f"95 % of samples in [{v['p2.5'] * scale:.6g}, "

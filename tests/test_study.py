@@ -491,6 +491,27 @@ def test_study_show_gives_speeds_in_rpm_and_inputs_as_drawn(tmp_path):
     want = pd.to_numeric(frame["omega_inner_rad_s"]).mean() * 30 / math.pi
     assert mean == pytest.approx(want, rel=1e-5)
     assert "rad_s" not in text.split("tolerance study", 1)[1].split("irregularity: mean")[0]
+
+
+def test_study_show_gives_speeds_in_the_specs_own_unit(tmp_path):
+    """A spec that states its speeds in rad/s gets its spread in rad/s (the spec's unit)."""
+    text = (SPECS / "hamabe-c.toml").read_text(encoding="utf-8")
+    spec = tmp_path / "rad.toml"
+    mean = load_spec(SPECS / "hamabe-c.toml").speed.omega_mean
+    speed = text[text.index("[speed]"):].split("\n\n", 1)[0]
+    new = "\n".join(f'mean = "{mean:.17g} rad/s"' if line.startswith("mean") else line
+                    for line in speed.splitlines())
+    assert new != speed
+    spec.write_text(text.replace(speed, new), encoding="utf-8")
+    study = load_study(spec, tolerances=["design.pendulum_weight=±1%"], samples=8)
+    run_study(study, tmp_path / "t.db")
+    with Store(tmp_path / "t.db") as store:
+        shown = summary_text(store)
+        frame = store.table()
+    line = next(x for x in shown.splitlines() if x.strip().startswith("omega_inner"))
+    assert line.strip().startswith("omega_inner_rad/s")
+    value = float(line.split("mean ")[1].split(",")[0])
+    assert value == pytest.approx(pd.to_numeric(frame["omega_inner_rad_s"]).mean(), rel=1e-5)
 # ---------------------------------------------------------------------------------------------
 # databases that must not lose anything (issue 21)
 
