@@ -170,7 +170,7 @@ class Result:
                 if g:
                     (lo, u), (hi, _) = shown(g["inner"], unit), shown(g["outer"], unit)
                     out.append(Figure(label, g["normal"], unit, "classic",
-                                      note=f"normal; {lo:.4g} .. {hi:.4g} {u or '-'} "
+                                      note=f"normal; {lo:.4g} .. {hi:.4g}{' ' + u if u else ''} "
                                            "innermost .. outermost"))
             if cm["friction_band"]:
                 out += [Figure("friction band", cm["friction_band"],
