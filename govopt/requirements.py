@@ -311,14 +311,14 @@ class CheckTable:
         self.add(row.name, row.value(ev), row.limit(ev), row.sense,
                  scale=None if row.scale is None else row.scale(ev),
                  verdict=None if row.verdict is None else row.verdict(ev), where=where,
-                 unit=row.unit, source=row.source)
+                 unit=row.unit, source=row.source, group=row.group)
 
     def add_rows(self, rows, ev, where=None) -> None:
         for row in rows:
             self.add_row(row, ev, where)
 
     def add(self, name, value, limit, sense, scale=None, verdict=None, where=None, unit="",
-            source=""):
+            source="", group=""):
         """``Check.margin`` vectorised: ``(limit - value)/s`` for ``<=``, ``(value - limit)/s``
         for ``>=``, ``s = scale or (|limit| if limit != 0 else 1)``; ``Check.passed``."""
         n = self.n
@@ -342,7 +342,7 @@ class CheckTable:
             self.names.append(name)
             self.cols[name] = tuple(np.full(n, np.nan) for _ in range(4)) + (
                 np.zeros(n, bool), np.zeros(n, bool))
-            self.meta[name] = (sense, unit, source, given)
+            self.meta[name] = (sense, unit, source, given, group)
         v, lim, m, scl, p, applies = self.cols[name]
         v[on], lim[on], m[on], scl[on] = value[on], limit[on], margin[on], sc[on]
         p[on] = passed[on]
@@ -356,12 +356,12 @@ class CheckTable:
             v, lim, _, scl, p, applies = self.cols[name]
             if not applies[i]:
                 continue
-            sense, unit, source, given = self.meta[name]
+            sense, unit, source, given, group = self.meta[name]
             if callable(source):
                 source = source_of(source) if source_of else source()
             out.append(Check(name, float(v[i]), float(lim[i]), sense, unit, source,
                              scale=None if np.isnan(scl[i]) else float(scl[i]),
-                             verdict=bool(p[i]) if given else None))
+                             verdict=bool(p[i]) if given else None, group=group))
         return out
 
     def feasible(self) -> np.ndarray:

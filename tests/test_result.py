@@ -111,9 +111,24 @@ def test_spring_checks_carry_their_group(graded, hamabe):
     spring = [c for c in graded.checks if c.group == "spring"]
     assert spring and all(c.source for c in spring)
     assert "body static shear stress" in {c.name for c in spring}
-    assert not [c for c in hamabe.checks if c.group == "spring"]  # no grade: no tables
+    # no grade: the spec's allowable and the geometry, not the grade's tables
+    plain = {c.name for c in hamabe.checks if c.group == "spring"}
+    assert "shear stress" in plain and "body static shear stress" not in plain
     js = graded.to_dict()["checks"]
     assert [c["group"] for c in js] == [c.group for c in graded.checks]
+
+
+@pytest.mark.parametrize("path", sorted((Path(govopt.__file__).parent / "specs").glob("*.toml")),
+                         ids=lambda p: p.stem)
+def test_every_check_has_its_requirement_group(path):
+    """Every check of every bundled spec with a design says which group of requirements it
+    belongs to (the rows of govopt/requirements.py, or the spring's own tables): the search's
+    bounds are told from requirements on a made part by the group, not by the name."""
+    spec = govopt.load_spec(path)
+    if spec.design is None:
+        pytest.skip("a design problem: no design to evaluate")
+    groups = {c.name: c.group for c in govopt.evaluate(spec).checks}
+    assert groups and set(groups.values()) <= {"statics", "dynamics", "spring", "bounds"}, groups
 
 
 def test_check_and_figure_fields():

@@ -261,7 +261,7 @@ class Governor(ABC):
         # whenever d, r, n are known
         return [Check("shear stress", float(np.max(char.stress)),
                       spec.material.allowable_shear_stress, "<=", "Pa",
-                      "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"),
+                      "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s", group="spring"),
                 *spring_engineering.geometry_checks(spec, sd)]
 
     def spring_report(self, spec, sd, char, vib=None):

@@ -226,8 +226,8 @@ class TractionLeafGovernor(FlyWeights):
         source = "a buildable leaf: its set (unloaded bow, outward +) within [governor] bounds"
         return [c for c in rows if np.isfinite(c.limit)] + [
             Check("leaf set >= min", sd.l0, self.set_min, ">=", "m", source,
-                  scale=None if self.set_min else self.leaf_length),
-            Check("leaf set <= max", sd.l0, self.set_max, "<=", "m", source)]
+                  scale=None if self.set_min else self.leaf_length, group="spring"),
+            Check("leaf set <= max", sd.l0, self.set_max, "<=", "m", source, group="spring")]
 
     def free_length_limits(self) -> dict:
         """The set's bounds as the design search's statics rows (the names of the checks of

@@ -295,4 +295,4 @@ def checks(**kw):
     [True, True, True]
     """
     return [Check(c.name, float(np.max(c.value(**kw))), float(c.limit(**kw)), c.sense, c.unit,
-                  c.source) for c in CONSTRAINTS]
+                  c.source, group="spring") for c in CONSTRAINTS]
