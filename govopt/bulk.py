@@ -589,7 +589,7 @@ def _friction_at(gov: Governor, cols: dict, x) -> np.ndarray:
 
 def _classic(spec, cols, t, sd, w2, x, omega, ok):
     """:func:`govopt.analysis.classic.classic_measures` (its scalar figures), vectorised."""
-    from .analysis.classic import EFFORT_CHANGE
+    from .analysis.classic import EFFORT_CHANGE, travel_between
 
     gov = spec.governor
     n = omega.shape[0]
@@ -602,15 +602,24 @@ def _classic(spec, cols, t, sd, w2, x, omega, ok):
         stability = statics.stability(statics.rising_slopes(spec, sd, x, omega),
                                       np.broadcast_to(statics.slope_scale(spec, w0), (n,)))
         wi, wa = omega[:, 0], omega[:, -1]
-        grow = (1.0 + EFFORT_CHANGE) ** 2 - 1.0
+        # the spec's speed change (a fraction at the normal configuration, or the range's own
+        # from the innermost configuration), as classic_measures
+        change = getattr(spec.analysis, "speed_change", EFFORT_CHANGE)
+        over_range = change == "range"
+        c = wa / wi - 1.0 if over_range else np.full(n, float(change))
+        grow = (1.0 + c[:, None]) ** 2 - 1.0
         lever = np.broadcast_to(t.lever, (n, x.size))
         effort = gov.flying_masses * grow * w2 * lever / (2.0 * gov.travel_slope(x))
         ic = int(np.argmin(np.abs(x - gov.x_normal)))
-        target = (1.0 + EFFORT_CHANGE) ** 2 * w2[:, ic]
-        travel = _travel_many(spec, sd, float(x[ic]), float(x[-1]), target, ok)
+        at = 0 if over_range else ic
+        if over_range:
+            travel = np.full(n, travel_between(spec, float(x[0]), float(x[-1])))
+        else:
+            target = (1.0 + c) ** 2 * w2[:, ic]
+            travel = _travel_many(spec, sd, float(x[ic]), float(x[-1]), target, ok)
         return {"range_rad_s": wa - wi, "sensitiveness": 2.0 * (wa - wi) / (wa + wi),
-                "stability": np.where(ok, stability, None), "effort": effort[:, ic],
-                "power": effort[:, ic] * travel, "friction_band": band[:, ic],
+                "stability": np.where(ok, stability, None), "effort": effort[:, at],
+                "power": effort[:, at] * travel, "friction_band": band[:, ic],
                 "insensitiveness": ((rise - fall) / omega).max(axis=1)}
 
 

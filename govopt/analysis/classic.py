@@ -75,7 +75,7 @@ def classic_measures(spec, sd: statics.SpringDesign, char: statics.Characteristi
     grow = (1.0 + c) ** 2 - 1.0
     slope = gov.travel_slope(x)
     effort = gov.flying_masses * grow * w2 * t.lever / (2.0 * slope)
-    travel = (_travel_between(spec, float(x[0]), float(x[-1])) if over_range else
+    travel = (travel_between(spec, float(x[0]), float(x[-1])) if over_range else
               _travel(spec, sd, float(x[i_n]), float(x[-1]), (1.0 + c) ** 2 * w2[i_n]))
     return {
         "range_rad_s": wa - wi,
@@ -111,7 +111,7 @@ def geometry(spec, x_normal) -> dict:
     return out
 
 
-def _travel_between(spec, x0: float, x1: float) -> float:
+def travel_between(spec, x0: float, x1: float) -> float:
     """Travel of the regulating member from ``x0`` to ``x1``: ``int s'(u) du`` (Gauss-Legendre,
     as :func:`_travel`)."""
     nodes, weights = np.polynomial.legendre.leggauss(8)
@@ -129,4 +129,4 @@ def _travel(spec, sd, x0: float, x_end: float, target: float) -> float:
 
     if not excess(x_end) > 0:
         return float("inf")
-    return _travel_between(spec, x0, brentq(excess, x0, x_end, xtol=1e-15, rtol=1e-15))
+    return travel_between(spec, x0, brentq(excess, x0, x_end, xtol=1e-15, rtol=1e-15))
