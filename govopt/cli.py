@@ -148,7 +148,8 @@ def _on_sigterm(signum, frame) -> None:
     """SIGTERM unwinds like an exception, so every ``finally`` runs (temporary files are
     removed); a second SIGTERM during that clean-up is ignored."""
     signal.signal(signal.SIGTERM, signal.SIG_IGN)
-    raise SystemExit(128 + signum)
+    State.terminated = 128 + signum  # where a library's bare except turns the exit into an
+    raise SystemExit(128 + signum)  # error of its own (openpyxl's descriptors), it still wins
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -170,6 +171,8 @@ def main(argv: list[str] | None = None) -> None:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         sys.exit(1)
     except Exception as exc:  # outside a command (the commands are guarded)
+        if State.terminated:
+            sys.exit(State.terminated)
         if State.debug or "--debug" in argv:
             raise
         internal(exc)

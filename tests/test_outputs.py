@@ -520,3 +520,32 @@ def test_bench_checks_its_outputs_before_the_benchmark(tmp_path):
         line = _one_error_line(_run(["bench", "--quick", "--no-targets", "--out", out]))
         assert expected in line and time.perf_counter() - t0 < 5, line
     assert (tmp_path / "f").read_text() == (done / "speed-vs-error.csv").read_text() == "keep"
+
+
+def test_sigterm_inside_a_bare_except_still_exits_as_sigterm(monkeypatch):
+    """SIGTERM raises SystemExit from wherever the process is; inside openpyxl's descriptors
+    (``_convert``: a bare ``except:`` around ``float(value)``) it came out as "TypeError:
+    expected <class 'float'>", an internal error (exit 3) instead of the signal's 143. The
+    handler records the signal, and a command interrupted by it exits by it."""
+    from openpyxl.descriptors.base import _convert
+
+    from govopt import cli
+    from govopt.commands.common import State, guarded
+
+    monkeypatch.setattr(State, "terminated", 0)
+
+    class Interrupted:
+        def __float__(self):  # the signal arriving during float(): the handler runs here
+            cli._on_sigterm(signal.SIGTERM, None)
+
+    @guarded
+    def command():
+        _convert(float, Interrupted())
+
+    previous = signal.getsignal(signal.SIGTERM)
+    try:
+        with pytest.raises(SystemExit) as exc:
+            command()
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+    assert exc.value.code == 128 + signal.SIGTERM

@@ -35,9 +35,11 @@ JSON_HELP = "Print a JSON object in SI units."
 
 
 class State:
-    """The run's settings from the root's options (``--debug`` / GOVOPT_DEBUG)."""
+    """The run's settings from the root's options (``--debug`` / GOVOPT_DEBUG), and the signal
+    that ended it (``terminated``: a SIGTERM's exit code, 0 while none came)."""
 
     debug = False
+    terminated = 0
 
 
 def echo(text: str, err: bool = False) -> None:
@@ -91,6 +93,8 @@ def guarded(command):
             except GovoptError as exc:
                 fail(str(exc))
             except Exception as exc:
+                if State.terminated:  # the SIGTERM's exit, turned into another error by a
+                    raise SystemExit(State.terminated) from None  # library's bare except
                 if debug:
                     raise
                 internal(exc)
