@@ -1832,17 +1832,16 @@ def _drawn(value) -> str:
 def _speed_unit(data) -> tuple[str, float]:
     """The unit the spec states its speeds in (``[speed] inner``, ``mean`` or ``outer``, e.g.
     ``"240 rpm"``) and its value of 1 rad/s; rpm where the spec gives none that converts."""
-    from .units import UnitError, to_unit
+    from .units import to_unit
 
-    speed = (data or {}).get("speed") if isinstance(data, dict) else None
-    for key in ("inner", "mean", "outer"):
-        text = speed.get(key) if isinstance(speed, dict) else None
-        if isinstance(text, str) and len(text.split(None, 1)) == 2:
-            unit = text.split(None, 1)[1].strip()
-            try:
-                return unit, float(to_unit(1.0, "angular_velocity", unit))
-            except (UnitError, ValueError, TypeError, AttributeError, KeyError):
-                break  # pint's errors for a unit that is not a speed are among these
+    speed = data.get("speed") if isinstance(data, dict) else None
+    texts = [speed.get(k) for k in ("inner", "mean", "outer")] if isinstance(speed, dict) else []
+    parts = next((t.split(None, 1) for t in texts if isinstance(t, str)), [])
+    if len(parts) == 2:
+        try:
+            return parts[1].strip(), float(to_unit(1.0, "angular_velocity", parts[1].strip()))
+        except (ValueError, TypeError, AttributeError):  # pint's errors: not a speed unit
+            pass
     return "rpm", 30.0 / math.pi
 
 

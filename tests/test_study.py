@@ -476,20 +476,25 @@ def test_tolerance_plot_marks_the_limit_and_failing_samples(tmp_path):
     assert "fill: #d62728" in svg  # their bars red (C3), beside the passing ones' green
 
 
+def _inner_speed_spread(spec, folder, samples):
+    """`govopt study show`'s text of a +-1 % pendulum tolerance study of ``spec``, its line of
+    the inner speed's spread, that line's mean and the mean of the stored column (rad/s)."""
+    run_study(load_study(spec, tolerances=["design.pendulum_weight=±1%"], samples=samples),
+              folder / "t.db")
+    with Store(folder / "t.db") as store:
+        text = summary_text(store)
+        frame = store.table()
+    line = next(x for x in text.splitlines() if x.strip().startswith("omega_inner")).strip()
+    return (text, line, float(line.split("mean ")[1].split(",")[0]),
+            pd.to_numeric(frame["omega_inner_rad_s"]).mean())
+
+
 def test_study_show_gives_speeds_in_rpm_and_inputs_as_drawn(tmp_path):
     """`govopt study show`: the tolerance spread of the speeds in rpm (the spec's and the
     plot's unit), not rad/s; the best point's inputs to 4 significant digits."""
-    study = load_study(SPECS / "hamabe-c.toml", tolerances=["design.pendulum_weight=±1%"],
-                       samples=20)
-    run_study(study, tmp_path / "t.db")
-    with Store(tmp_path / "t.db") as store:
-        text = summary_text(store)
-        frame = store.table()
-    line = next(x for x in text.splitlines() if x.strip().startswith("omega_inner"))
-    assert line.strip().startswith("omega_inner_rpm")
-    mean = float(line.split("mean ")[1].split(",")[0])
-    want = pd.to_numeric(frame["omega_inner_rad_s"]).mean() * 30 / math.pi
-    assert mean == pytest.approx(want, rel=1e-5)
+    text, line, mean, stored = _inner_speed_spread(SPECS / "hamabe-c.toml", tmp_path, 20)
+    assert line.startswith("omega_inner_rpm")
+    assert mean == pytest.approx(stored * 30 / math.pi, rel=1e-5)
     assert "rad_s" not in text.split("tolerance study", 1)[1].split("irregularity: mean")[0]
 
 
@@ -503,15 +508,11 @@ def test_study_show_gives_speeds_in_the_specs_own_unit(tmp_path):
                     for line in speed.splitlines())
     assert new != speed
     spec.write_text(text.replace(speed, new), encoding="utf-8")
-    study = load_study(spec, tolerances=["design.pendulum_weight=±1%"], samples=8)
-    run_study(study, tmp_path / "t.db")
-    with Store(tmp_path / "t.db") as store:
-        shown = summary_text(store)
-        frame = store.table()
-    line = next(x for x in shown.splitlines() if x.strip().startswith("omega_inner"))
-    assert line.strip().startswith("omega_inner_rad/s")
-    value = float(line.split("mean ")[1].split(",")[0])
-    assert value == pytest.approx(pd.to_numeric(frame["omega_inner_rad_s"]).mean(), rel=1e-5)
+    _, line, value, stored = _inner_speed_spread(spec, tmp_path, 8)
+    assert line.startswith("omega_inner_rad/s")
+    assert value == pytest.approx(stored, rel=1e-5)
+
+
 # ---------------------------------------------------------------------------------------------
 # databases that must not lose anything (issue 21)
 
