@@ -589,7 +589,7 @@ def _friction_at(gov: Governor, cols: dict, x) -> np.ndarray:
 
 def _classic(spec, cols, t, sd, w2, x, omega, ok):
     """:func:`govopt.analysis.classic.classic_measures` (its scalar figures), vectorised."""
-    from .analysis.classic import EFFORT_CHANGE, travel_between
+    from .analysis.classic import speed_change, travel_between
 
     gov = spec.governor
     n = omega.shape[0]
@@ -602,11 +602,7 @@ def _classic(spec, cols, t, sd, w2, x, omega, ok):
         stability = statics.stability(statics.rising_slopes(spec, sd, x, omega),
                                       np.broadcast_to(statics.slope_scale(spec, w0), (n,)))
         wi, wa = omega[:, 0], omega[:, -1]
-        # the spec's speed change (a fraction at the normal configuration, or the range's own
-        # from the innermost configuration), as classic_measures
-        change = getattr(spec.analysis, "speed_change", EFFORT_CHANGE)
-        over_range = change == "range"
-        c = wa / wi - 1.0 if over_range else np.full(n, float(change))
+        c, over_range = speed_change(spec, wi, wa)
         grow = (1.0 + c[:, None]) ** 2 - 1.0
         lever = np.broadcast_to(t.lever, (n, x.size))
         effort = gov.flying_masses * grow * w2 * lever / (2.0 * gov.travel_slope(x))

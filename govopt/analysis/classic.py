@@ -48,6 +48,16 @@ from . import statics
 EFFORT_CHANGE = 0.01
 
 
+def speed_change(spec, wi, wa):
+    """The speed change ``c`` of the effort and power and whether it is the range's own
+    (``[analysis] speed_change = "range"``: ``wa / wi - 1`` from the innermost configuration,
+    ``wi``, ``wa`` in rad/s, arrays broadcast) or a fraction at the normal configuration."""
+    change = getattr(spec.analysis, "speed_change", EFFORT_CHANGE)
+    if change == "range":
+        return np.asarray(wa) / np.asarray(wi) - 1.0, True
+    return np.full(np.shape(wi), float(change)), False
+
+
 def classic_measures(spec, sd: statics.SpringDesign, char: statics.Characteristic,
                      k2=None, design=None) -> dict:
     """The textbook's measures of one design over its range (SI; see the module docstring);
@@ -68,9 +78,8 @@ def classic_measures(spec, sd: statics.SpringDesign, char: statics.Characteristi
     w0 = spec.speed.omega_mean if spec.speed is not None else float(char.omega[i_n])
     stability = str(statics.stability(statics.rising_slopes(spec, sd, x, char.omega),
                                       statics.slope_scale(spec, w0)))
-    change = getattr(spec.analysis, "speed_change", EFFORT_CHANGE)
-    over_range = change == "range"
-    c = wa / wi - 1.0 if over_range else float(change)
+    c, over_range = speed_change(spec, wi, wa)
+    c = float(c)
     at = 0 if over_range else i_n  # the configuration the speed changes from
     grow = (1.0 + c) ** 2 - 1.0
     slope = gov.travel_slope(x)
