@@ -274,6 +274,16 @@ def supported(spec: Spec, req: Requirements) -> None:
                               "without [engine] and [[load_change]]: drop the key or add them")
 
 
+def _slices(order):
+    """``(first, order[first:first + size])`` in the batch sizes of :data:`BATCHES` (the last
+    size repeated)."""
+    start, b = 0, 0
+    while start < order.size:
+        size = BATCHES[min(b, len(BATCHES) - 1)]
+        yield start, order[start:start + size]
+        start, b = start + size, b + 1
+
+
 def spring_batches(spec: Spec, req: Requirements):
     """A spring governor's candidates feasible at nominal values, in objective order, in
     batches (:data:`BATCHES`): ``(design columns, candidates)``, the statics screen and spring
@@ -288,11 +298,7 @@ def spring_batches(spec: Spec, req: Requirements):
     values = dz.objective_values(req, km.m[rows, 0], cat.mass[cols],
                                  central=km.central[rows, 0])
     order = np.argsort(values, kind="stable")
-    start, b = 0, 0
-    while start < order.size:
-        size = BATCHES[min(b, len(BATCHES) - 1)]
-        first, sel = start, order[start:start + size]
-        start, b = start + size, b + 1
+    for first, sel in _slices(order):
         fat = None if cat.fatigue is None else (
             lambda swing, s=sel: cat.fatigue(cols[s], l0[s], swing))
         win = dz.dashpot_window(spec, req, km, grid, rows[sel], cat.kappa[cols[sel]],
@@ -314,11 +320,7 @@ def dead_weight_batches(spec: Spec, req: Requirements):
     moving mass first, in batches, as :func:`spring_batches` gives them
     (:func:`govopt.optimize.design.dead_weight_candidates`, the dash-pot in its window)."""
     grid, km, rows, m, c, _ = dz.dead_weight_candidates(spec, req)
-    start, b = 0, 0
-    while start < rows.size:
-        size = BATCHES[min(b, len(BATCHES) - 1)]
-        first, sel = start, rows[start:start + size]
-        start, b = start + size, b + 1
+    for first, sel in _slices(rows):
         win = dz.dashpot_window(spec, req, km, grid, sel, np.zeros(sel.size))
         good = np.nonzero(win["feasible"])[0]
         s = sel[good]

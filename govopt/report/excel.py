@@ -581,7 +581,7 @@ def _generic_design(s: _DesignSheet, res: Result) -> None:
             what, unit = meaning[key]
             s.input(f"{key.lower()}_{tag}", f"{what}, {tag} end", f"{key}_{sym}", value, unit,
                     "govopt.analysis.statics.terms (the seam)",
-                    _sig_format(value * SHOWN.get(unit, (unit, 1.0))[1]))
+                    _sig_format(sections.shown(value, unit)[0]))
     s.section("Derived quantities (blue, live formulas) next to govopt's values as written")
     s.formula(f"{mk}_mass", f"{mk} mass", "m", f"={mk}_weight/std_gravity", "kg", sd.m,
               "m = w / g_n")
@@ -646,9 +646,8 @@ def _build_characteristic(ws: Worksheet, res: Result) -> None:
         if unit == "rad/s/":
             cols.append((f"{name} (rad/s)", np.asarray(values, dtype=float), "rad/s"))
             continue
-        shown, factor = SHOWN.get(unit, (unit, 1.0))
-        cols.append((f"{name} ({_unit_label(shown)})", np.asarray(values, dtype=float) * factor,
-                     shown))
+        v, u = sections.shown(np.asarray(values, dtype=float), unit)
+        cols.append((f"{name} ({_unit_label(u)})", v, u))
     _header(ws, 1, [c[0] for c in cols])
     ws.freeze_panes = "B2"
     n = len(st.alpha)
