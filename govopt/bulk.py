@@ -625,6 +625,8 @@ def _travel_many(spec, sd, x0, x_end, target, ok):
     safeguarded Newton iteration on the characteristic, whose slope is exact on the seam
     (``d omega^2/dx = I k^2 / (jp - ci)`` with the dead loads' slope included), then the
     member's travel ``int s'(u) du`` from ``x0`` by 8-point Gauss-Legendre."""
+    from .analysis.classic import travel_between
+
     exact = spec.with_analysis(reaction_slope=True)
     n = target.shape[0]
 
@@ -650,10 +652,7 @@ def _travel_many(spec, sd, x0, x_end, target, ok):
         u = np.where(done, u, new)
         if done[go].all():
             break
-    nodes, weights = np.polynomial.legendre.leggauss(8)
-    q = 0.5 * (u - x0)[:, None] * nodes + 0.5 * (u + x0)[:, None]
-    s = np.broadcast_to(spec.governor.travel_slope(q), q.shape)
-    out[go] = (0.5 * (u - x0) * np.sum(weights * s, axis=1))[go]
+    out[go] = travel_between(spec, x0, u)[go]
     return out
 
 

@@ -42,17 +42,15 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..verdict import json_key
 from . import statics
-
-#: speed change for effort and power (Rattan: "a given percentage change of speed")
-EFFORT_CHANGE = 0.01
 
 
 def speed_change(spec, wi, wa):
     """The speed change ``c`` of the effort and power and whether it is the range's own
     (``[analysis] speed_change = "range"``: ``wa / wi - 1`` from the innermost configuration,
     ``wi``, ``wa`` in rad/s, arrays broadcast) or a fraction at the normal configuration."""
-    change = getattr(spec.analysis, "speed_change", EFFORT_CHANGE)
+    change = spec.analysis.speed_change  # Rattan: "a given percentage change of speed"
     if change == "range":
         return np.asarray(wa) / np.asarray(wi) - 1.0, True
     return np.full(np.shape(wi), float(change)), False
@@ -114,18 +112,21 @@ def geometry(spec, x_normal) -> dict:
     x = np.array([gov.x_inner, float(x_normal), gov.x_outer])
     out = {}
     for name, (values, unit) in gov.columns(x).items():
-        key = name.replace(" ", "_") + (f"_{unit}" if unit else "")
+        key = json_key(name, unit)
         values = np.broadcast_to(np.asarray(values, dtype=float), x.shape)
         out[key] = dict(zip(("inner", "normal", "outer"), map(float, values), strict=True))
     return out
 
 
-def travel_between(spec, x0: float, x1: float) -> float:
-    """Travel of the regulating member from ``x0`` to ``x1``: ``int s'(u) du`` (Gauss-Legendre,
-    as :func:`_travel`)."""
+def travel_between(spec, x0: float, x1):
+    """Travel of the regulating member from ``x0`` to ``x1`` (a number or an array of ends):
+    ``int s'(u) du`` (Gauss-Legendre, as :func:`_travel`)."""
+    x1 = np.asarray(x1, dtype=float)
     nodes, weights = np.polynomial.legendre.leggauss(8)
-    u = 0.5 * (x1 - x0) * nodes + 0.5 * (x1 + x0)
-    return float(0.5 * (x1 - x0) * np.sum(weights * spec.governor.travel_slope(u)))
+    u = 0.5 * (x1 - x0)[..., None] * nodes + 0.5 * (x1 + x0)[..., None]
+    s = np.broadcast_to(spec.governor.travel_slope(u), u.shape)
+    out = 0.5 * (x1 - x0) * np.sum(weights * s, axis=-1)
+    return float(out) if out.ndim == 0 else out
 
 
 def _travel(spec, sd, x0: float, x_end: float, target: float) -> float:
