@@ -110,14 +110,12 @@ def _evaluate(spec: Spec, design: Design) -> Result:
     if vib is not None:  # the type has a periodic forcing (the shaft's valve gear, Part II)
         dynamics["vibration"] = vib.to_dict()
         table.add_rows(vibration_rows(spec), {"p2p": dynamics["vibration"]["peak_to_peak_rad"]})
-    checks += table.checks()
     if wanted("friction") and spec.engine is not None and spec.load_changes and any(
             float(gov.friction(lc.alpha_to, design)) > 0 for lc in spec.load_changes):
         from .analysis import friction  # only when the design has friction (model what is asked)
 
         runs = [friction.friction_load_change(spec, sd, lc) for lc in spec.load_changes]
         dynamics["friction"] = [r.to_dict() for r in runs]
-        table = CheckTable(1)
         for lc, r in zip(spec.load_changes, runs, strict=True):
             xi0 = lc.alpha_from - lc.alpha_to
             first = r.first_stroke_end
@@ -126,13 +124,11 @@ def _evaluate(spec: Spec, design: Design) -> Result:
                 "xi0": xi0, "rest": abs(r.final_state[0]),
                 "past": 0.0 if stuck or first is None
                 else max(0.0, -float(np.sign(xi0)) * first)})
-        checks += table.checks()
     if req is not None and helical:
-        table = CheckTable(1)
         table.add_rows(requirement_rows(spec, req), {
             "d": sd.d, "r": sd.r, "n": sd.n, "m": sd.m, "l0": sd.l0, "C": props["spring_index"],
             "body": props["body_length_m"], "surge": props["surge_frequency_Hz"]})
-        checks += table.checks()
+    checks += table.checks()  # the rows in the order added (each name once)
     if plan is not None:
         dynamics["use_case"] = plan.to_dict()
     from .analysis.classic import classic_measures
