@@ -16,7 +16,7 @@ from ..errors import GovoptError
 from .files import atomic_write, check_output, output_folder
 from .plots import FORMATS, KINDS, STYLE, draw, kinds
 
-__all__ = ["check_plot_dir", "write_plots"]
+__all__ = ["check_plot_dir", "save_figure", "write_plots"]
 
 
 def _stem(res) -> str:
@@ -55,17 +55,27 @@ def write_plots(res, directory: str | Path, *, stem: str | None = None,
                 overwrite: bool | None = None, formats=FORMATS) -> list[Path]:
     """Write every plot of ``res`` as ``<directory>/<stem>-<kind>.<format>`` (stem: the spec
     file's name) through :func:`atomic_write` (``overwrite``: its policy); return the paths."""
-    import matplotlib as mpl
 
     stem = stem or _stem(res)
     written = []
     for name in kinds(res):
-        fig = draw(res, name).figure
-        for fmt in formats:
-            def save(tmp, fmt=fmt, fig=fig):
-                with mpl.rc_context(STYLE):  # the same file for the same result (no date)
-                    fig.savefig(tmp, format=fmt, metadata={"Date": None} if fmt == "svg" else {})
+        written += save_figure(draw(res, name).figure, Path(directory) / f"{stem}-{name}",
+                               overwrite, formats)
+    return written
 
-            path = Path(directory) / f"{stem}-{name}.{fmt}"
-            written.append(atomic_write(path, save, overwrite=overwrite, what="plot"))
+
+def save_figure(fig, base: Path, overwrite: bool | None = None, formats=FORMATS) -> list[Path]:
+    """``fig`` as ``<base>.<format>`` for each format, in the plots' style, each through
+    :func:`atomic_write` (``overwrite``: its policy); an SVG carries no date, so the same
+    figure gives the same file."""
+    import matplotlib as mpl
+
+    written = []
+    for fmt in formats:
+        def save(tmp, fmt=fmt):
+            with mpl.rc_context(STYLE):
+                fig.savefig(tmp, format=fmt, metadata={"Date": None} if fmt == "svg" else {})
+
+        written.append(atomic_write(Path(f"{base}.{fmt}"), save, overwrite=overwrite,
+                                    what="plot"))
     return written

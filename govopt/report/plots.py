@@ -114,7 +114,7 @@ def _title(res, ax, what: str) -> None:
     ax.set_title(f"{res.spec.name}: {what}")
 
 
-def _new_axes():
+def new_axes():
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
@@ -515,7 +515,7 @@ def draw(res, kind: str, ax=None):
     if kind not in available:
         raise ValueError(f"no {kind!r} plot for {res.spec.name}; it has: {', '.join(available)}")
     with mpl.rc_context(STYLE):
-        ax = _new_axes() if ax is None else ax
+        ax = new_axes() if ax is None else ax
         if kind.startswith("load-change-"):
             load_change(res, ax, int(kind.rsplit("-", 1)[1]) - 1)
         else:

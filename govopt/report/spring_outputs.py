@@ -148,28 +148,17 @@ def write_plots(outcome, folder, stem: str) -> list[Path]:
     import matplotlib as mpl
 
     from . import plots
-    from .files import atomic_write
+    from .plot_files import save_figure
 
     written = []
     for kind in plot_names(outcome):
         with mpl.rc_context(plots.STYLE):
-            from matplotlib.backends.backend_agg import FigureCanvasAgg
-            from matplotlib.figure import Figure
-
-            fig = Figure(figsize=plots.SIZE, dpi=plots.DPI, layout="constrained")
-            FigureCanvasAgg(fig)
-            ax = fig.add_subplot()
+            ax = plots.new_axes()
             if kind == "force-length":
                 force_length(outcome.sizing, outcome.values, ax, outcome.name)
             else:
                 plots.fatigue(_plot_input(outcome), ax)
-        for fmt in plots.FORMATS:
-            def save(tmp, fmt=fmt, fig=fig):
-                with mpl.rc_context(plots.STYLE):
-                    fig.savefig(tmp, format=fmt, metadata={"Date": None} if fmt == "svg" else {})
-
-            written.append(atomic_write(Path(folder) / f"{stem}-{kind}.{fmt}", save,
-                                        overwrite=True, what="plot"))
+        written += save_figure(ax.figure, Path(folder) / f"{stem}-{kind}", overwrite=True)
     return written
 
 

@@ -24,7 +24,6 @@ import pandas as pd
 
 from ..errors import GovoptError
 from ..verdict import ACTIVE_TOL
-from .files import atomic_write
 
 FORMATS = ("png", "svg")
 DPI = 150
@@ -53,13 +52,9 @@ def _figure(rows: int, cols: int = 1, height: float = 2.3, width: float = 7.0):
 
 
 def _save(fig, folder: Path, name: str, overwrite: bool) -> list[Path]:
-    out = []
-    for fmt in FORMATS:
-        path = folder / f"{name}.{fmt}"
-        atomic_write(path, lambda tmp, fmt=fmt: fig.savefig(tmp, format=fmt),
-                     overwrite=overwrite, what="plot")
-        out.append(path)
-    return out
+    from .plot_files import save_figure  # as every plot is written (an SVG without a date)
+
+    return save_figure(fig, folder / name, overwrite, FORMATS)
 
 
 def _slug(text: str) -> str:
