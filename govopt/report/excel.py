@@ -155,8 +155,8 @@ def build_workbook(result: Result) -> Workbook:
     for ws in wb.worksheets:
         ws.sheet_view.tabSelected = ws is sheets["Design"]
         _align_top(ws)
-        _fit_rows(ws)
-        _print_setup(ws)
+        fit_rows(ws)
+        print_setup(ws)
     from .. import __version__
 
     wb.properties.creator = f"govopt {__version__}"
@@ -1074,7 +1074,7 @@ def _align_top(ws: Worksheet) -> None:
                                     wrap_text=a.wrap_text, indent=a.indent)
 
 
-def _fit_rows(ws: Worksheet) -> None:
+def fit_rows(ws: Worksheet) -> None:
     """Row heights for wrapped text (headers, notes): openpyxl stores none and a reader that
     does not fit rows on opening would draw wrapped lines over the next row. Lines are
     estimated from the column's width (about 1.1 characters of text per width unit)."""
@@ -1099,7 +1099,7 @@ def _axis_range(x) -> tuple[float, float]:
     return math.floor(lo / step) * step, math.ceil(hi / step) * step
 
 
-def _print_setup(ws: Worksheet) -> None:
+def print_setup(ws: Worksheet) -> None:
     """Print every sheet readably: A4, fit to the page width (as many pages down as needed),
     landscape where the content is wider than a portrait page, the first row repeated on each
     page, a print area covering the cells and charts (not the charts' data placed to the
@@ -1127,7 +1127,7 @@ def _print_setup(ws: Worksheet) -> None:
 
 
 #: The printable width and height of an A4 page (px at 96 dpi) inside the margins of
-#: :func:`_print_setup` (0.5 in left and right, 0.6 in top and bottom), by orientation.
+#: :func:`print_setup` (0.5 in left and right, 0.6 in top and bottom), by orientation.
 _PAGE_PX = {"portrait": (21.0 / 2.54 * 96 - 96, 29.7 / 2.54 * 96 - 115.2),
             "landscape": (29.7 / 2.54 * 96 - 96, 21.0 / 2.54 * 96 - 115.2)}
 #: The share of a page's height :func:`_paginate` fills (room for the renderer's rounding).

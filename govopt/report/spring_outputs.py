@@ -191,8 +191,9 @@ def write_workbook(outcome, path) -> Path:
     its chart), written atomically."""
     from openpyxl import Workbook
     from openpyxl.chart import Reference, ScatterChart, Series
+    from openpyxl.styles import Alignment, Font
 
-    from .excel import engineering
+    from .excel import engineering, fit_rows, print_setup
     from .files import atomic_write
 
     sizing = outcome.sizing
@@ -232,16 +233,22 @@ def write_workbook(outcome, path) -> Path:
     checks = wb.create_sheet("Checks")
     checks.append(["check", "value", "sense", "limit", "unit", "margin", "result", "source"])
     for c in sizing.checks:
-        (value, unit, fmt), (limit, _, _) = (engineering(x, c.unit) for x in (c.value, c.limit))
+        (value, unit, fmt), (limit, _, fmt_lim) = (engineering(x, c.unit)
+                                                   for x in (c.value, c.limit))
         checks.append([c.name, value, c.sense, limit, unit, c.margin,
                        "PASS" if c.passed else "FAIL", c.source])
-        checks.cell(checks.max_row, 6).number_format = "0.00%"
+        r = checks.max_row
+        checks.cell(r, 2).number_format, checks.cell(r, 4).number_format = fmt, fmt_lim
+        checks.cell(r, 6).number_format = "0.00%"
     if not sizing.checks:
         checks.append(["no spring engineering checks: they need a wire grade (--material)"])
     fl = wb.create_sheet("Force-length")
     fl.append(["length L (mm)", "force F (N)"])
     for length, force in _force_length_points(outcome):
         fl.append([length * 1e3, force])
+        for cell in fl[fl.max_row]:
+            cell.number_format = "0.00"
+    fl.column_dimensions["A"].width = fl.column_dimensions["B"].width = 14
     chart = ScatterChart()
     chart.title, chart.x_axis.title, chart.y_axis.title = ("force against length",
                                                            "length L (mm)", "force F (N)")
@@ -249,9 +256,20 @@ def write_workbook(outcome, path) -> Path:
                                Reference(fl, min_col=1, min_row=2, max_row=fl.max_row),
                                title="spring"))
     fl.add_chart(chart, "D2")
+    wrap = Alignment(wrap_text=True, vertical="top")
     for w in (ws, checks):
         w.column_dimensions["A"].width = 44
-        w.column_dimensions["B"].width = 24
+        w.column_dimensions["B"].width = 24 if w is checks else 40
+        for row in w.iter_rows():
+            for cell in row:  # long texts wrap in their column, every label beside its value
+                cell.alignment = wrap if isinstance(cell.value, str) else Alignment(
+                    vertical="top")
+        for cell in w[1]:
+            cell.font = Font(bold=True)
+    checks.column_dimensions["H"].width = 50
+    for w in (ws, checks, fl):  # rows tall enough for their wrapped text; A4, fit to the
+        fit_rows(w)  # page's width, the header on every page
+        print_setup(w)
     return atomic_write(Path(path), wb.save, overwrite=True, what="workbook")
 
 
