@@ -22,12 +22,13 @@ The writer formats only; every number comes from the result or from govopt's own
 booleans, ``never`` for a time that never comes, ``not decided`` for a settling time
 the solver could not place, ``unbounded`` for an unstable excursion.
 
-Every sheet prints: A4, fit to the page width, landscape where wide, the first row repeated, a
-print area, the sheet's name and page in the footer. Every formula cell carries govopt's own
-value as its cached result (written into the saved file), so readers that do not recalculate
-(pandas, previewers) see the numbers; Excel and LibreOffice recalculate on opening. The file is
-written atomically: a temporary file in the target's directory, renamed over the target only
-when complete.
+Every sheet prints: A4, fit to the page width, landscape where wide, a print area, the sheet's
+name and page in the footer, page breaks that keep tables whole where they fit, and at the top of
+each page a table runs on to the table's own title and header (:func:`print_titles`). Every
+formula cell carries govopt's own value as its cached result (written into the saved file), so
+readers that do not recalculate (pandas, previewers) see the numbers; Excel and LibreOffice
+recalculate on opening. The file is written atomically: a temporary file in the target's
+directory, renamed over the target only when complete.
 """
 
 from __future__ import annotations
@@ -38,6 +39,7 @@ import os
 import re
 import zipfile
 from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -334,6 +336,7 @@ def _build_spec(ws: Worksheet, res: Result) -> None:
         value, unit = sections.shown(e.si, e.unit)  # as read, in the units people read
         _set(ws.cell(i, 3), value, _sig_format(value) or "General")
         _set(ws.cell(i, 4), _unit_label(unit) if e.unit else "")
+    _keep_table(ws, 1, len(spec.entries) + 1, header=1)
     row = len(spec.entries) + 3
     _set(ws.cell(row, 1), "spec file")
     _set(ws.cell(row, 2), str(spec.path))
@@ -487,7 +490,8 @@ def _build_design(wb: Workbook, ws: Worksheet, res: Result) -> None:
     s.text("The characteristic table, k^2 and dynamics on the other sheets are govopt values "
            "and do not follow edits here; re-run govopt for them.")
     for first, end in zip(s.titles, [*s.titles[1:], s.row + 1], strict=True):
-        _keep_table(ws, first, end - 2)  # printed: a section whole, or its ends kept
+        _keep_table(ws, first, end - 2, header=1)  # printed: a section whole, or its ends kept
+    _keep_table(ws, 1, s.row - 1, header=1)  # the sheet's one table, under the header row
     _widths(ws, _DESIGN_WIDTHS)
     for (c,) in ws.iter_rows(min_row=2, min_col=_NOTE, max_col=_NOTE):
         if isinstance(c.value, str) and len(c.value) > 60:
@@ -680,6 +684,7 @@ def _build_characteristic(ws: Worksheet, res: Result) -> None:
     chart.x_axis.scaling.min, chart.x_axis.scaling.max = _axis_range(xs)
     anchor = f"B{n + 3}"
     ws.add_chart(chart, anchor)  # below the table
+    _keep_table(ws, 1, n + 1, header=1)
     _keep(ws, max(2, n + 1 - 5), _extent(ws, anchor, 24.0, 11.0)[1])  # with the last rows
 
 
@@ -884,7 +889,7 @@ def _build_checks(ws: Worksheet, res: Result) -> None:
         _set(ws.cell(row, 10), c.source).alignment = _WRAP
         row += 1
     last = row - 1
-    _keep_table(ws, 1, last + 4)  # with the binding and failed lines under it
+    _keep_table(ws, 1, last + 4, header=1)  # with the binding and failed lines under it
     if res.checks:
         green = FormulaRule(formula=["$G2=\"PASS\""], fill=_PASS_FILL, font=_PASS_FONT)
         red = FormulaRule(formula=["$G2=\"FAIL\""], fill=_FAIL_FILL, font=_FAIL_FONT)
@@ -1008,8 +1013,10 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
             _set(ws.cell(row, 3), "" if value is None else unit)
         row += 1
     for first, end in zip(tops, [*tops[1:], row], strict=True):
-        _keep_table(ws, first, end - 1)
+        _keep_table(ws, first, end - 1, header=2)
+    _keep_table(ws, 1, row - 1, header=2)  # the sheet's list, under the header row
     row += 1
+    first_check = row
     graded = res.spec.material.grade is not None
     rows = [c for c in res.checks if graded and c.group == "spring"]
     _title(ws, row, "Spring engineering checks" + ("" if rows else ": none (they need a "
@@ -1029,6 +1036,8 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
                               (8, c.source, None)):
                 _set(ws.cell(row, col), v, f)
     _keep_table(ws, row - len(rows) - 1 - bool(rows), row)
+    # printed with the list's last rows: a page after the list would repeat the list's header
+    _keep(ws, tops[-1] if row - tops[-1] <= 30 else first_check - 4, row)
     _widths(ws, {1: 40, 2: 40, 3: 14, 4: 18, 5: 10, 6: 11, 7: 9, 8: 80})
 
 
@@ -1101,9 +1110,10 @@ def _axis_range(x) -> tuple[float, float]:
 
 def print_setup(ws: Worksheet) -> None:
     """Print every sheet readably: A4, fit to the page width (as many pages down as needed),
-    landscape where the content is wider than a portrait page, the first row repeated on each
-    page, a print area covering the cells and charts (not the charts' data placed to the
-    right), the sheet's name and page number in the footer."""
+    landscape where the content is wider than a portrait page, page breaks that keep tables
+    together (:func:`_paginate`), the header of a table that runs on repeated on each page
+    (:func:`print_titles`), a print area covering the cells and charts (not the charts' data
+    placed to the right), the sheet's name and page number in the footer."""
     cols = getattr(ws, "_govopt_print_cols", None) or ws.max_column
     rows = ws.max_row if cols == ws.max_column else max(
         (c.row for c in _written(ws) if c.column <= cols and c.value is not None),
@@ -1119,11 +1129,29 @@ def print_setup(ws: Worksheet) -> None:
     ws.page_margins = PageMargins(left=0.5, right=0.5, top=0.6, bottom=0.6, header=0.3,
                                   footer=0.3)
     ws.print_options.gridLines = False
-    ws.print_title_rows = "1:1"
     ws.print_area = f"A1:{get_column_letter(cols)}{rows}"
     ws.oddFooter.center.text = "&A, page &P of &N"
     page_w, page_h = _PAGE_PX[ws.page_setup.orientation]
     _paginate(ws, rows, page_h / min(1.0, page_w / max(_SPREADSHEET_WIDTH * width, 1)))
+    repeat = print_titles(ws)
+    if repeat is not None:
+        ws.print_title_rows = f"{repeat[0]}:{repeat[1]}"
+
+
+def print_titles(ws: Worksheet) -> tuple[int, int] | None:
+    """The rows to repeat at the top of each printed page (one range per sheet): the title and
+    header of the table that runs onto another page (the layout lets one table a sheet do so,
+    the last or the one whose end shares its page with what follows; a spreadsheet repeats
+    the rows only on the pages after the one they first appear on), else the sheet's title row
+    where row 1 is a title and not a table's header, else none (each page then starts with a
+    table's own title and header)."""
+    breaks = [b.id for b in ws.row_breaks.brk]
+    spanning = {t.repeat for t in tables(ws) if t.spans(breaks)}
+    if spanning:
+        return min(spanning)
+    if not any(1 in (t.title, t.header) for t in tables(ws)):
+        return (1, 1)
+    return None
 
 
 #: The printable width and height of an A4 page (px at 96 dpi) inside the margins of
@@ -1146,20 +1174,56 @@ def _keep(ws: Worksheet, first: int, last: int) -> None:
     ws._govopt_keep.append((first, last))
 
 
-def _keep_table(ws: Worksheet, title: int, last: int, rows: int = 3) -> None:
+def _keep_table(ws: Worksheet, title: int, last: int, rows: int = 3,
+                header: int | None = None) -> None:
     """A table from its title row to ``last``: whole on a page where it fits on one; else its
-    title and header never end a page and its last ``rows`` rows never start one alone."""
+    title and header never end a page and its last ``rows`` rows never start one alone.
+    ``header``: its column-header row (default the row under the title; the sheet's header row
+    for a section of a sheet-wide table, the title itself for a section with none). The table
+    is registered for :func:`print_setup`, which repeats the header of the table that runs
+    onto another page at the top of each page it continues on."""
+    header = title + 1 if header is None else header
+    if not hasattr(ws, "_govopt_tables"):
+        ws._govopt_tables = []
+    ws._govopt_tables.append(PrintedTable(title, header, last))
     if last - title <= 30:
         _keep(ws, title, last)
     else:
-        _keep(ws, title, title + 1 + rows)
+        _keep(ws, title, max(title, header) + 1 + rows)
         _keep(ws, last - rows, last)
+
+
+@dataclass(frozen=True)
+class PrintedTable:
+    """A table of a sheet as printed: its title row, its column-header row and its last row.
+    ``header < title`` for a section of a sheet-wide table whose header heads the sheet."""
+
+    title: int
+    header: int
+    last: int
+
+    @property
+    def repeat(self) -> tuple[int, int]:
+        """The rows printed above the table's rows on a page it continues on: its title and
+        header, or the sheet's rows down to the shared header (a section's)."""
+        return (self.title, self.header) if self.header >= self.title else (1, self.header)
+
+    def spans(self, breaks: Iterable[int]) -> bool:
+        """Whether a page break (after row ``b``) falls between its header and its last row."""
+        first = max(self.title, self.header)
+        return any(first <= b < self.last for b in breaks)
+
+
+def tables(ws: Worksheet) -> list[PrintedTable]:
+    """The tables of a sheet built by :func:`build_workbook`, as registered for printing."""
+    return list(getattr(ws, "_govopt_tables", []))
 
 
 def _paginate(ws: Worksheet, last: int, height: float) -> None:
     """Manual page breaks so that no kept block (:func:`_keep`) is split where it fits on a
     page: rows are laid out by their heights on pages ``height`` px tall (the page's height at
-    the print scale), the repeated first row on every page after the first."""
+    the print scale), the repeated rows on every page after the first (counted as the tallest
+    range :func:`print_titles` may choose: a table's title and header, or row 1)."""
     keep = sorted(getattr(ws, "_govopt_keep", []))
     if not keep:
         return
@@ -1168,7 +1232,8 @@ def _paginate(ws: Worksheet, last: int, height: float) -> None:
         return (ws.row_dimensions[r].height or _ROW_PT) * 96 / 72
 
     room = height * _PAGE_FILL
-    title = px(1)
+    title = max((sum(px(k) for k in range(a, b + 1)) for a, b in
+                 {t.repeat for t in tables(ws)} | {(1, 1)}), default=0.0)
     used, start = 0.0, 1
     r = 1
     while r <= last:
@@ -1304,10 +1369,11 @@ def _build_notes(ws: Worksheet, res: Result) -> None:
                   "that never reaches or never settles at its new equilibrium); 'not "
                   "decided' for a settling time beyond what the solver's time grid resolves; "
                   "'unbounded' for an unstable excursion; a blank cell is not defined."),
-        ("printing", "Each sheet prints to the page width (landscape where wide) with its "
-                     "first row repeated; page breaks keep a table with its title and header, "
-                     "its last rows, and a chart with its rows; response data beside the "
-                     "Dynamics charts are not printed."),
+        ("printing", "Each sheet prints to the page width (landscape where wide); page "
+                     "breaks keep a table with its title and header, its last rows, and a "
+                     "chart with its rows; a table that runs onto another page has its title "
+                     "and header repeated at the top of it; response data beside the Dynamics "
+                     "charts are not printed."),
     ]
     _title(ws, 1, f"govopt {res.kind}: {spec.name}")
     ws.freeze_panes = "A2"
@@ -1320,5 +1386,5 @@ def _build_notes(ws: Worksheet, res: Result) -> None:
         if value is not None:
             _set(ws.cell(i, 2), value, "General").alignment = _WRAP
     for first, end in zip(titles, [*titles[1:], len(rows) + 4], strict=True):
-        _keep_table(ws, first, end - 2)  # printed: a section whole where it fits
+        _keep_table(ws, first, end - 2, header=first)  # printed: a section whole where it fits
     _widths(ws, {1: 28, 2: 110})
