@@ -61,7 +61,8 @@ class Result:
         if mat is None or mat.allowable_shear_stress is not None:
             return None if mat is None else mat.allowable_shear_stress
         rep = self.spring_report
-        return None if rep is None else rep.material.get("allowable_static_stress_Pa")
+        allowable = None if rep is None else rep.material.get("allowable static stress")
+        return None if allowable is None else allowable.value
 
     @property
     def irregularity(self) -> float:

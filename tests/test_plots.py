@@ -235,17 +235,21 @@ def test_fatigue_diagram_reads_the_checks_safety_factor(tmp_path, rules):
     dia = fat["diagram"]
     assert dia["method"] == rules
     want = res.check("body fatigue safety factor").value
+    stresses = [f for f in (*fat.values(), *dia["locus"].values()) if hasattr(f, "unit")
+                and "stress" in f.name]
+    assert len(stresses) == 6 and {f.unit for f in stresses} == {"Pa"}  # units are fields
+    value = {k: f.value for k, f in (*fat.items(), *dia["locus"].items()) if hasattr(f, "unit")}
     if rules == "EN13906":
-        lo, hi = fat["corrected_stress_min_Pa"], fat["corrected_stress_max_Pa"]
-        top = np.interp(lo, dia["locus"]["lower_stress_Pa"], dia["locus"]["upper_stress_Pa"])
+        lo, hi = value["corrected stress min"], value["corrected stress max"]
+        top = np.interp(lo, value["lower stress"], value["upper stress"])
         got = (top - lo) / (hi - lo)
     else:
-        m = np.asarray(dia["locus"]["midrange_stress_Pa"])
-        a = np.asarray(dia["locus"]["amplitude_stress_Pa"])
-        r = fat["alternating_stress_Pa"] / fat["mean_stress_Pa"]
+        m = np.asarray(value["midrange stress"])
+        a = np.asarray(value["amplitude stress"])
+        r = value["alternating stress"] / value["mean stress"]
         # a - r m falls along the line: the meeting point by linear interpolation (exact)
         m_star = np.interp(0.0, (r * m - a), m)
-        got = r * m_star / fat["alternating_stress_Pa"]
+        got = r * m_star / value["alternating stress"]
     assert got == pytest.approx(want, rel=1e-9)
     ax = plots.draw(res, "fatigue")
     assert any(f"{want:.3g}" in t.get_text() for t in ax.get_legend().get_texts())
@@ -267,7 +271,8 @@ def test_fatigue_diagram_draws_the_hooks_at_their_checks_safety_factors(tmp_path
     governs = min(checks.values(), key=lambda c: c.margin)
     for point, check in checks.items():
         h = hooks[point]
-        x, y = h["midrange_Pa"] / h["ultimate_Pa"], h["amplitude_Pa"] / h["endurance_Pa"]
+        x = h["midrange"].value / h["ultimate"].value
+        y = h["amplitude"].value / h["endurance"].value
         assert check.value * (x + y) == pytest.approx(1.0, rel=1e-9)  # on the Goodman line
         mark = (round(check.value * x, 12), round(check.value * y, 12))
         assert mark in marks, (point, marks)

@@ -46,7 +46,7 @@ from ..springs import helical as hx
 from ..springs import materials as mt
 from ..springs import sheet as sh
 from ..springs import tolerances as tl
-from ..verdict import Check
+from ..verdict import Check, Figure
 from . import statics
 
 #: ``Governor.spring`` -> the library's spring kind.
@@ -235,15 +235,21 @@ class Spread:
         kappa = sd.kappa * (d / sd.d) ** 4 * (2.0 * sd.r / D) ** 3
         return kappa, sd.l0 + self.l0_tol * rng.uniform(-1.0, 1.0, size)
 
+    def figures(self) -> dict:
+        """The spread as a record of figures (:func:`govopt.springs.sheet.record_json`)."""
+        return {f.name: f for f in (
+            Figure("wire diameter tolerance", self.d_tol, "m"),
+            Figure("coil diameter tolerance", self.D_tol, "m"),
+            Figure("stiffness range", list(self.kappa), "N/m"),
+            Figure("free length tolerance", self.l0_tol, "m"),
+            Figure("omega inner range", list(self.omega_inner), "rad/s"),
+            Figure("omega outer range", list(self.omega_outer), "rad/s"),
+            Figure("rpm inner range", [w * 30.0 / math.pi for w in self.omega_inner]),
+            Figure("rpm outer range", [w * 30.0 / math.pi for w in self.omega_outer]))} | {
+            "notes": list(self.notes)}
+
     def to_dict(self) -> dict:
-        return {"wire_diameter_tolerance_m": self.d_tol, "coil_diameter_tolerance_m": self.D_tol,
-                "stiffness_range_N_per_m": list(self.kappa),
-                "free_length_tolerance_m": self.l0_tol,
-                "omega_inner_range_rad_s": list(self.omega_inner),
-                "omega_outer_range_rad_s": list(self.omega_outer),
-                "rpm_inner_range": [w * 30.0 / math.pi for w in self.omega_inner],
-                "rpm_outer_range": [w * 30.0 / math.pi for w in self.omega_outer],
-                "notes": list(self.notes)}
+        return sh.record_json(self.figures())
 
 
 def spread(spec, sd, sheet: sh.SpringSheet) -> Spread:
@@ -286,7 +292,10 @@ def spread(spec, sd, sheet: sh.SpringSheet) -> Spread:
 
 @dataclass
 class SpringReport:
-    """The spring maker's sheet and the engineering figures of one governor spring (SI)."""
+    """The spring maker's sheet and the engineering figures of one governor spring (SI):
+    ``material`` and ``loads`` are records (:func:`govopt.springs.sheet.record_json`) whose
+    numbers are :class:`~govopt.verdict.Figure` keyed by name (``loads["force min"]``,
+    ``loads["fatigue"]["corrected stress max"]``, each with its unit as a field)."""
 
     kind: str
     sheet: sh.SpringSheet
@@ -295,10 +304,15 @@ class SpringReport:
     spread: Spread
     notes: list[str] = field(default_factory=list)
 
-    def to_dict(self) -> dict:
-        return {"kind": self.kind, "sheet": self.sheet.to_dict(), "material": self.material,
-                "loads": self.loads, "tolerance_spread": self.spread.to_dict(),
+    def record(self) -> dict:
+        """The whole report as one record: what the Spring sheet lists, row by row
+        (:func:`govopt.springs.sheet.record_rows`), and the JSON writes (:meth:`to_dict`)."""
+        return {"kind": self.kind, "sheet": self.sheet.figures(), "material": self.material,
+                "loads": self.loads, "tolerance_spread": self.spread.figures(),
                 "notes": list(self.notes)}
+
+    def to_dict(self) -> dict:
+        return sh.record_json(self.record())
 
 
 def hook_cycles(mat, d, D, F_lo, F_hi, r2=None, r1=None,
@@ -317,13 +331,16 @@ def hook_cycles(mat, d, D, F_lo, F_hi, r2=None, r1=None,
     Ssa, Ssm = ft.ZIMMERLI[False]
     Sse = float(ft.endurance_intercept(Ssa, Ssm, Ssu, criterion))
     half, mid = abs(F_hi - F_lo) / 2.0, (F_hi + F_lo) / 2.0
-    return {"criterion": criterion, "source": ft.ZIMMERLI_SOURCE, "A": {
-        "stress": "bending", "midrange_Pa": float(hx.hook_bending_stress(mid, d, D, r1)),
-        "amplitude_Pa": float(hx.hook_bending_stress(half, d, D, r1)),
-        "endurance_Pa": Sse / ft.SHEAR_TO_NORMAL, "ultimate_Pa": Sut}, "B": {
-        "stress": "torsion", "midrange_Pa": float(hx.hook_torsion_stress(mid, d, D, r2)),
-        "amplitude_Pa": float(hx.hook_torsion_stress(half, d, D, r2)),
-        "endurance_Pa": Sse, "ultimate_Pa": Ssu}}
+    def point(stress: str, midrange, amplitude, endurance, ultimate) -> dict:
+        return {"stress": stress} | {f.name: f for f in (
+            Figure("midrange", float(midrange), "Pa"), Figure("amplitude", float(amplitude), "Pa"),
+            Figure("endurance", float(endurance), "Pa"), Figure("ultimate", float(ultimate), "Pa"))}
+
+    return {"criterion": criterion, "source": ft.ZIMMERLI_SOURCE,
+            "A": point("bending", hx.hook_bending_stress(mid, d, D, r1),
+                       hx.hook_bending_stress(half, d, D, r1), Sse / ft.SHEAR_TO_NORMAL, Sut),
+            "B": point("torsion", hx.hook_torsion_stress(mid, d, D, r2),
+                       hx.hook_torsion_stress(half, d, D, r2), Sse, Ssu)}
 
 
 def report(spec, sd, char, vib=None) -> SpringReport:
@@ -349,24 +366,28 @@ def report(spec, sd, char, vib=None) -> SpringReport:
                                    grade=m.tolerance_grade, surface=surface)
     notes = []
     material = {"grade": mat.grade, "standard": mat.standard,
-                "shear_modulus_Pa": float(mat.shear_modulus(d)),
-                "elastic_modulus_Pa": float(mat.elastic_modulus(d)), "density_kg_m3": mat.density,
+                "shear modulus": Figure("shear modulus", float(mat.shear_modulus(d)), "Pa"),
+                "elastic modulus": Figure("elastic modulus", float(mat.elastic_modulus(d)), "Pa"),
+                "density": Figure("density", mat.density, "kg/m^3", json="density_kg_m3"),
                 "moduli_source": mat.moduli_source, "surface": surface}
     if graded:
         place = "compression" if kind == "compression" else "extension"
         rule = mt.static_rule(mat, place, m.rules)
         material.update({
-            "tensile_strength_Pa": float(mat.tensile_strength(d)), "rm_source": mat.rm_source,
+            "tensile strength": Figure("tensile strength", float(mat.tensile_strength(d)), "Pa"),
+            "rm_source": mat.rm_source,
             "rules": m.rules, "static_correction": m.stress_correction,
             "fatigue_correction": hx.DEFAULT_CORRECTION[(m.rules, "fatigue")],
-            "allowable_static_stress_Pa": float(mt.allowable_static_stress(
-                mat, d, place, m.rules, m.allowable_shear_stress)),
+            "allowable static stress": Figure("allowable static stress", float(
+                mt.allowable_static_stress(mat, d, place, m.rules, m.allowable_shear_stress)),
+                "Pa"),
             "allowable_source": "material.allowable_shear_stress (given in the spec)"
             if m.allowable_shear_stress is not None else rule.source,
             "life_cycles": m.life_cycles})
-    loads = {"force_min_N": float(np.min(F)), "force_max_N": float(np.max(F)),
-             "surge_frequency_Hz": sheet.surge_frequency,
-             "excitation_harmonics_Hz": list(harmonics_hz(vib))}
+    loads = {f.name: f for f in (
+        Figure("force min", float(np.min(F)), "N"), Figure("force max", float(np.max(F)), "N"),
+        Figure("surge frequency", sheet.surge_frequency, "Hz"),
+        Figure("excitation harmonics", list(harmonics_hz(vib)), "Hz"))}
     if vib is None:
         loads["fatigue"] = None
         notes.append(NO_FORCING)
@@ -374,15 +395,12 @@ def report(spec, sd, char, vib=None) -> SpringReport:
         swing = float(vib.peak_to_peak_rad)
         unit = "rad" if spec.governor.coordinate == "angle" else "m"
         fat = {"forcing": "the valve gear's fluctuating reaction (Hamabe Part II, with the "
-                          "dash-pot)", f"peak_to_peak_{unit}": swing}
+                          "dash-pot)", "peak to peak": Figure("peak to peak", swing, unit)}
         if math.isfinite(swing):
             lo, hi = fatigue_forces(spec, sd, swing)
             K = hx.bergstrasser_factor(hx.spring_index(d, D))
-            tau = [float(K * hx.shear_stress(f, d, D)) for f in (lo, hi)]
-            fat.update({"force_min_N": lo, "force_max_N": hi,
-                        "corrected_stress_min_Pa": tau[0], "corrected_stress_max_Pa": tau[1],
-                        "mean_stress_Pa": 0.5 * (tau[0] + tau[1]),
-                        "alternating_stress_Pa": 0.5 * (tau[1] - tau[0])})
+            fat.update(ft.cycle_figures(lo, hi, *(float(K * hx.shear_stress(f, d, D))
+                                                  for f in (lo, hi))))
             if graded:  # the diagram the body's fatigue check reads (for the plot)
                 fat["diagram"] = ft.body_locus(mat, d, m.rules, m.surface == "shot peened",
                                                ck.DEFAULTS["criterion"])

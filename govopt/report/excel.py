@@ -56,6 +56,7 @@ from openpyxl.worksheet.pagebreak import Break
 from openpyxl.worksheet.worksheet import Worksheet
 
 from ..analysis import statics
+from ..springs.sheet import SECTION, record_rows
 from ..units import G_STANDARD
 from ..verdict import ACTIVE_TOL, SHOWN
 from . import sections
@@ -933,13 +934,6 @@ def _allowable_note(res: Result) -> str:
             "wire diameter (not live in d; see the Spring sheet)")
 
 
-#: unit suffixes of the result's keys (SI, as the JSON names them), longest first
-_KEY_UNITS = (("_N_per_m", "N/m"), ("_kg_m3", "kg/m^3"), ("_rad_s", "rad/s"), ("_Pa", "Pa"),
-              ("_Hz", "Hz"), ("_kg", "kg"), ("_rpm", "rpm"), ("_rad", "rad"), ("_N", "N"),
-              ("_m", "m"), ("_s", "s"))
-
-
-_SECTION = object()
 
 #: How the Spring sheet (the one a spring maker reads) shows an SI unit: (unit, factor, number
 #: format): millimetres, N/mm, MPa, rpm, degrees.
@@ -963,25 +957,18 @@ def engineering(value: Any, unit: str) -> tuple[Any, str, str]:
     return float(value) * factor, shown, fmt
 
 
-def _flat_rows(data: Mapping, depth: int = 0):
-    """``(label, value, unit)`` rows of a nested record whose keys carry their units (a section
-    title has the value ``_SECTION``): words for the keys, lists as one line of text."""
-    for key, value in data.items():
-        label, unit = key.replace("_", " "), ""
-        for suffix, u in _KEY_UNITS:
-            if key.endswith(suffix):
-                label, unit = key[: -len(suffix)].replace("_", " "), u
-                break
+def _record_rows(record: Mapping):
+    """``(label, value, SI unit)`` rows of a record (:func:`govopt.springs.sheet.record_rows`:
+    the units are the figures' fields), a section's title with the value ``SECTION``, indented
+    by depth; lists as one line of text in the unit the sheet shows."""
+    for depth, label, value, unit in record_rows(record):
         label = "  " * depth + label
-        if isinstance(value, Mapping):
-            yield label, _SECTION, ""
-            yield from _flat_rows(value, depth + 1)
-        elif isinstance(value, list | tuple):
+        if isinstance(value, list | tuple):
             shown = [engineering(v, unit) for v in value]
             yield label, ", ".join(f"{v:.6g}" if isinstance(v, float) else str(v)
                                    for v, _, _ in shown), engineering(0.0, unit)[1]
         else:
-            yield label, _scalar(value), unit
+            yield label, value if value is SECTION else _scalar(value), unit
 
 
 def _build_spring(ws: Worksheet, res: Result) -> None:
@@ -999,8 +986,8 @@ def _build_spring(ws: Worksheet, res: Result) -> None:
     _header(ws, 2, ["quantity", "value", "unit"])
     row = 3
     tops = []  # the top-level sections' title rows: printed whole where they fit on a page
-    for label, value, unit in _flat_rows(rep.to_dict()):
-        if value is _SECTION:
+    for label, value, unit in _record_rows(rep.record()):
+        if value is SECTION:
             _title(ws, row, label, font=_BOLD)
             _keep(ws, row, row + 3)
             if not label.startswith(" "):

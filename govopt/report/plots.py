@@ -40,6 +40,7 @@ import math
 import numpy as np
 
 from ..units import SI_UNITS
+from ..verdict import shown
 
 FORMATS = ("png", "svg")
 #: inches and dots per inch of a single plot: 1050 x 675 px, text readable at 100 % zoom
@@ -68,6 +69,15 @@ def kinds(res) -> list[str]:
         ("fatigue", "diagram" in (_fatigue_loads(res) or {})),
         ("speed-band", "speed_band" in ((res.optimisation or {}).get("robust") or {})),
     ) if present]
+
+
+def _mpa(figure):
+    """A stress figure's value in MPa (a number or a list of numbers), converted from its unit
+    (:func:`govopt.verdict.shown`; a figure in MPa as it is)."""
+    value, unit = shown(figure.value, figure.unit)
+    if unit != "MPa":
+        raise ValueError(f"{figure.name}: a stress in Pa or MPa expected, got {figure.unit!r}")
+    return value
 
 
 def _fatigue_loads(res) -> dict | None:
@@ -415,10 +425,10 @@ def fatigue(res, ax) -> None:
     amplitude against midrange (Zimmerli's point, the load line through the cycle). The legend
     lists the fatigue safety factors of the Result's checks (the body and any hooks)."""
     fat = _fatigue_loads(res)
-    dia, mpa = fat["diagram"], 1e-6
-    lo, hi = fat["corrected_stress_min_Pa"] * mpa, fat["corrected_stress_max_Pa"] * mpa
+    dia = fat["diagram"]
+    lo, hi = (_mpa(fat[k]) for k in ("corrected stress min", "corrected stress max"))
     if dia["method"] == "EN13906":
-        x, y = (np.asarray(dia["locus"][k]) * mpa for k in ("lower_stress_Pa", "upper_stress_Pa"))
+        x, y = (np.asarray(_mpa(dia["locus"][k])) for k in ("lower stress", "upper stress"))
         cycles = f"{dia['cycles']:.0e}".replace("e+0", "e").replace("e+", "e")
         ax.plot(x, y, color="tab:red", lw=2, label=f"admissible upper stress ({cycles} cycles)")
         ax.plot([0.0, x[-1]], [0.0, x[-1]], color="0.4", ls="--", lw=1,
@@ -434,12 +444,12 @@ def fatigue(res, ax) -> None:
         ax.set_ylabel("corrected upper stress $\\tau_{k2}$ (MPa)")
         what = "EN 13906-1 Goodman diagram"
     else:
-        x, y = (np.asarray(dia["locus"][k]) * mpa
-                for k in ("midrange_stress_Pa", "amplitude_stress_Pa"))
+        x, y = (np.asarray(_mpa(dia["locus"][k])) for k in ("midrange stress",
+                                                            "amplitude stress"))
         ax.plot(x, y, color="tab:red", lw=2, label=f"{dia['criterion'].capitalize()} line")
-        zm, za = (v * mpa for v in dia["zimmerli_Pa"])
+        zm, za = _mpa(dia["zimmerli"])
         ax.plot(zm, za, "s", color="tab:red", mec="k", label="Zimmerli's endurance point")
-        tm, ta = fat["mean_stress_Pa"] * mpa, fat["alternating_stress_Pa"] * mpa
+        tm, ta = (_mpa(fat[k]) for k in ("mean stress", "alternating stress"))
         ax.plot([0.0, x[-1]], [0.0, ta / tm * x[-1]], color="0.4", ls="--", lw=1,
                 label="load line")
         ax.plot(tm, ta, "o", color="tab:blue", mec="k",
@@ -478,7 +488,8 @@ def _hooks(hooks: dict, checks: dict, ax, governs) -> None:
     top = 0.0
     for point, offset in (("A", (5, -11)), ("B", (-12, 5))):
         h, check = hooks[point], checks.get(point)
-        xm, ya = h["midrange_Pa"] / h["ultimate_Pa"], h["amplitude_Pa"] / h["endurance_Pa"]
+        xm = h["midrange"].value / h["ultimate"].value  # ratios of stresses: any one unit
+        ya = h["amplitude"].value / h["endurance"].value
         colour = "tab:red" if check is not None and check is governs else "tab:blue"
         n = None if check is None else check.value
         reach = n if n is not None and np.isfinite(n) else 1.0

@@ -54,20 +54,19 @@ def maker_sheet(sizing, v: dict) -> sh.SpringSheet | None:
 
 
 def fatigue_cycle(sizing, v: dict) -> dict | None:
-    """The fatigue load cycle's corrected (Bergstraesser) stresses and the body's diagram, in
-    the form :func:`govopt.report.plots.fatigue` reads (None without a cycle or a grade)."""
+    """The fatigue load cycle's corrected (Bergstraesser) stresses and the body's diagram, a
+    record of figures (:func:`govopt.springs.fatigue.cycle_figures`) as a governor's spring
+    report holds it, which :func:`govopt.report.plots.fatigue` reads (None without a cycle or a
+    grade)."""
     mat = material(v)
     if mat is None or v.get("fatigue_min_force") is None:
         return None
     sol = sizing.solution
     d, D = sol.d, 2.0 * sol.r
     K = hx.bergstrasser_factor(hx.spring_index(d, D))
-    lo, hi = (float(K * hx.shear_stress(f, d, D))
-              for f in (v["fatigue_min_force"], v["fatigue_max_force"]))
-    return {"force_min_N": v["fatigue_min_force"], "force_max_N": v["fatigue_max_force"],
-            "corrected_stress_min_Pa": lo, "corrected_stress_max_Pa": hi,
-            "mean_stress_Pa": 0.5 * (lo + hi), "alternating_stress_Pa": 0.5 * (hi - lo),
-            "diagram": ft.body_locus(mat, d, v["rules"], v["peened"])}
+    forces = v["fatigue_min_force"], v["fatigue_max_force"]
+    return ft.cycle_figures(*forces, *(float(K * hx.shear_stress(f, d, D)) for f in forces)
+                            ) | {"diagram": ft.body_locus(mat, d, v["rules"], v["peened"])}
 
 
 def force_length(sizing, v: dict, ax, name: str) -> None:
@@ -220,16 +219,14 @@ def write_workbook(outcome, path) -> Path:
     sheet = maker_sheet(sizing, outcome.values)
     if sheet is not None:
         put("Specification for the spring maker (EN 15800 grade 2)", None, "section")
-        for key, value in sheet.to_dict().items():
-            for k, x in (value.items() if isinstance(value, dict) else [(key, value)]):
-                if isinstance(x, list | tuple):
-                    for note in x:
-                        put("note", note, "")
-                elif isinstance(x, str):
-                    put(k.replace("_", " "), x)
-                else:
-                    label, unit = _labelled(k)
-                    put(label, x, unit)
+        for _, label, x, unit in sh.record_rows(sheet.figures()):
+            if x is sh.SECTION:  # the tolerances: their rows follow, in line
+                continue
+            if isinstance(x, list | tuple):
+                for note in x:
+                    put("note", note, "")
+            else:
+                put(label, x, unit)
     checks = wb.create_sheet("Checks")
     checks.append(["check", "value", "sense", "limit", "unit", "margin", "result", "source"])
     for c in sizing.checks:
@@ -271,20 +268,6 @@ def write_workbook(outcome, path) -> Path:
         fit_rows(w)  # page's width, the header on every page
         print_setup(w)
     return atomic_write(Path(path), wb.save, overwrite=True, what="workbook")
-
-
-#: the unit suffixes of the maker's sheet's JSON keys (:meth:`SpringSheet.to_dict`)
-_SUFFIXES = (("_N_per_m", "N/m"), ("_Hz", "Hz"), ("_kg", "kg"), ("_Pa", "Pa"), ("_m", "m"),
-             ("_N", "N"))
-
-
-def _labelled(key: str) -> tuple[str, str]:
-    """A JSON key with its unit suffix as (label, SI unit): ``free_length_m`` -> ``("free
-    length", "m")``."""
-    for suffix, unit in _SUFFIXES:
-        if key.endswith(suffix):
-            return key[:-len(suffix)].replace("_", " "), unit
-    return key.replace("_", " "), ""
 
 
 def _force_length_points(outcome) -> list[tuple[float, float]]:

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..limits import printable
-from ..verdict import ACTIVE_TOL, Check
+from ..verdict import ACTIVE_TOL, Check, Figure
 from . import sections as sec
 
 if TYPE_CHECKING:  # the result imports this module (Result.summary): no import back
@@ -420,27 +420,30 @@ def format_spring(res: Result) -> list[str]:
     rep = res.spring_report
     if rep is None:
         return []
-    d = rep.to_dict()
-    loads, sp, gov = d["loads"], d["tolerance_spread"], res.spec.governor
+    loads, sp = rep.loads, rep.to_dict()["tolerance_spread"]
+    value = {k: f.value for k, f in loads.items() if isinstance(f, Figure)}  # in their units:
     out = ["", "Spring specification (to send to a spring maker)", rep.sheet.to_text(),
-           f"  static loads        F = {loads['force_min_N']:.5g} .. {loads['force_max_N']:.5g} "
-           f"N over the range"]
+           f"  static loads        F = {value['force min']:.5g} .. {value['force max']:.5g} "
+           f"N over the range"]  # forces in N, frequencies in Hz (the figures' units)
     fat = loads["fatigue"]
     if fat is None:
         out.append("  fatigue             no periodic forcing modelled: fatigue not checked")
     else:
-        swing, unit = gov.shown(fat[f"peak_to_peak_{gov.key_unit('x')}"])  # in x's SI unit
+        swing, unit = sec.shown(fat["peak to peak"].value, fat["peak to peak"].unit)
         out.append(f"  fatigue load cycle  swing {float(swing):.4g} {unit} peak-to-peak at the "
                    f"normal configuration ({fat['forcing']})")
-        if "force_min_N" in fat:
-            out.append(f"                      F = {fat['force_min_N']:.5g} .. "
-                       f"{fat['force_max_N']:.5g} N; corrected stress "
-                       f"{fat['corrected_stress_min_Pa'] / 1e6:.4g} .. "
-                       f"{fat['corrected_stress_max_Pa'] / 1e6:.4g} MPa (mean "
-                       f"{fat['mean_stress_Pa'] / 1e6:.4g}, alternating "
-                       f"{fat['alternating_stress_Pa'] / 1e6:.4g} MPa)")
-    harm = ", ".join(f"{f:.4g}" for f in loads["excitation_harmonics_Hz"])
-    out.append(f"  surge               {loads['surge_frequency_Hz']:.4g} Hz; excitation "
+        if "force min" in fat:
+            mpa = {k: sec.shown(fat[k].value, fat[k].unit)[0] for k in (
+                "corrected stress min", "corrected stress max", "mean stress",
+                "alternating stress")}
+            out.append(f"                      F = {fat['force min'].value:.5g} .. "
+                       f"{fat['force max'].value:.5g} N; corrected stress "
+                       f"{mpa['corrected stress min']:.4g} .. "
+                       f"{mpa['corrected stress max']:.4g} MPa (mean "
+                       f"{mpa['mean stress']:.4g}, alternating "
+                       f"{mpa['alternating stress']:.4g} MPa)")
+    harm = ", ".join(f"{f:.4g}" for f in value["excitation harmonics"])
+    out.append(f"  surge               {value['surge frequency']:.4g} Hz; excitation "
                f"harmonics present: {f'{harm} Hz' if harm else 'none modelled'}")
     rpm = [f"{a:.2f} .. {b:.2f}" for a, b in (sp["rpm_inner_range"], sp["rpm_outer_range"])]
     out.append(f"  tolerance spread    rate {sp['stiffness_range_N_per_m'][0]:.6g} .. "
@@ -449,7 +452,7 @@ def format_spring(res: Result) -> list[str]:
                f"{sp['coil_diameter_tolerance_m'] * 1e3:.3g} mm, free length +- "
                f"{sp['free_length_tolerance_m'] * 1e3:.3g} mm): speed at the inner end "
                f"{rpm[0]} rpm, at the outer end {rpm[1]} rpm")
-    out += [f"  note: {n}" for n in [*sp["notes"], *d["notes"]]]
+    out += [f"  note: {n}" for n in [*sp["notes"], *rep.notes]]
     graded = res.spec.material is not None and res.spec.material.grade is not None
     rows = [c for c in res.checks if graded and c.group == "spring"]
     if rows:  # their values, limits and margins are the Checks table's rows

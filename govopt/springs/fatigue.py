@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..verdict import Figure
 from .helical import shear_stress
 
 #: Zimmerli's data as tabulated by Shigley (§10-9): (S_sa, S_sm) in Pa for infinite life of
@@ -190,20 +191,21 @@ def body_locus(mat, d, method: str = "EN13906", peened: bool = False,
                criterion: str = "goodman", points: int = 41) -> dict:
     """The fatigue diagram the body's check reads (:mod:`govopt.springs.checks`: the grade's
     EN 13906-1 Goodman diagram under ``method="EN13906"`` where the grade has one, else
-    Zimmerli's data with ``criterion``), for wire ``d`` (m); JSON-ready, stresses in Pa:
+    Zimmerli's data with ``criterion``), for wire ``d`` (m); a record whose stresses are
+    :class:`~govopt.verdict.Figure` in Pa (:func:`govopt.springs.sheet.record_json` writes it):
 
     * EN 13906-1 Annex A: ``{"method": "EN13906", "cycles", "source", "locus":
-      {"lower_stress_Pa", "upper_stress_Pa"}}``, the admissible corrected upper stress against
+      {"lower stress", "upper stress"}}``, the admissible corrected upper stress against
       the corrected lower stress: ``tau_O`` at zero, linear to the cut-off ``tau_max`` at
       ``tau_U``, level until the diagonal ``upper = lower`` (:func:`en13906_stroke_limit`);
-    * Shigley §10-9: ``{"method": "Shigley", "criterion", "source", "zimmerli_Pa": [S_sm, S_sa],
-      "locus": {"midrange_stress_Pa", "amplitude_stress_Pa"}}``, the strength amplitude against
+    * Shigley §10-9: ``{"method": "Shigley", "criterion", "source", "zimmerli": [S_sm, S_sa],
+      "locus": {"midrange stress", "amplitude stress"}}``, the strength amplitude against
       the midrange from 0 to ``S_su = 0.67 S_ut`` (Shigley Table 6-7's lines through Zimmerli's
       point, :func:`endurance_intercept`).
 
     >>> from govopt.springs.materials import material
     >>> loc = body_locus(material("Shigley A228"), 2e-3, method="Shigley")
-    >>> m, a = (loc["locus"][k] for k in ("midrange_stress_Pa", "amplitude_stress_Pa"))
+    >>> m, a = (loc["locus"][k].value for k in ("midrange stress", "amplitude stress"))
     >>> round(float(np.interp(379e6, m, a)) / 1e6, 6)   # the Goodman line meets Zimmerli's point
     241.0
     """
@@ -212,7 +214,8 @@ def body_locus(mat, d, method: str = "EN13906", peened: bool = False,
         tO, tmax, tU = (float(f(d)) for f in (diagram.upper_at_zero, diagram.cutoff,
                                               diagram.knee))
         return {"method": "EN13906", "cycles": diagram.cycles, "source": diagram.source,
-                "locus": {"lower_stress_Pa": [0.0, tU, tmax], "upper_stress_Pa": [tO, tmax, tmax]}}
+                "locus": _figures(Figure("lower stress", [0.0, tU, tmax], "Pa"),
+                                  Figure("upper stress", [tO, tmax, tmax], "Pa"))}
     Ssa, Ssm = ZIMMERLI[bool(peened)]
     Ssu = float(torsional_ultimate(mat.tensile_strength(d)))
     Sse = float(endurance_intercept(Ssa, Ssm, Ssu, criterion))
@@ -224,5 +227,28 @@ def body_locus(mat, d, method: str = "EN13906", peened: bool = False,
     else:
         a = Sse + 0.0 * m
     return {"method": "Shigley", "criterion": criterion, "source": ZIMMERLI_SOURCE,
-            "zimmerli_Pa": [Ssm, Ssa],
-            "locus": {"midrange_stress_Pa": m.tolist(), "amplitude_stress_Pa": a.tolist()}}
+            "zimmerli": Figure("zimmerli", [Ssm, Ssa], "Pa"),
+            "locus": _figures(Figure("midrange stress", m.tolist(), "Pa"),
+                              Figure("amplitude stress", a.tolist(), "Pa"))}
+
+
+def _figures(*figures: Figure) -> dict[str, Figure]:
+    """A record of figures keyed by their names."""
+    return {f.name: f for f in figures}
+
+
+def cycle_figures(force_min: float, force_max: float, stress_min: float,
+                  stress_max: float) -> dict[str, Figure]:
+    """The figures of a spring body's fatigue load cycle between two forces (N) and their
+    corrected shear stresses (Pa): the forces, the stresses, the mean stress ``(min + max)/2``
+    and the alternating stress ``(max - min)/2`` (Shigley §10-9's midrange and amplitude;
+    EN 13906-1's lower and upper stress are the two ends).
+
+    >>> {k: f.value for k, f in cycle_figures(100.0, 300.0, 2e8, 6e8).items()}["mean stress"]
+    400000000.0
+    """
+    return _figures(Figure("force min", force_min, "N"), Figure("force max", force_max, "N"),
+                    Figure("corrected stress min", stress_min, "Pa"),
+                    Figure("corrected stress max", stress_max, "Pa"),
+                    Figure("mean stress", 0.5 * (stress_min + stress_max), "Pa"),
+                    Figure("alternating stress", 0.5 * (stress_max - stress_min), "Pa"))

@@ -8,13 +8,62 @@ as a dict (SI keys with units) or as text in the spring maker's units (mm, N, N/
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field, fields
+from typing import Any
 
 import numpy as np
 
+from ..verdict import Figure
 from . import helical as hx
 from . import tolerances as tol
 from .materials import Material
+
+
+class _Section:
+    def __repr__(self) -> str:
+        return "<SECTION>"
+
+
+#: The value of a section's title row among :func:`record_rows`.
+SECTION = _Section()
+
+
+def record_json(record: Mapping) -> dict:
+    """The JSON of a record: a nested dict whose values are :class:`~govopt.verdict.Figure`
+    (written under its :attr:`~govopt.verdict.Figure.key`, which names its unit), a record (a
+    section, under its key) or plain data (words, counts, lists: under its key, as it is).
+
+    >>> record_json({"rate": Figure("rate", 2e4, "N/m"), "grade": "SH", "x": {"n": 3}})
+    {'rate_N_per_m': 20000.0, 'grade': 'SH', 'x': {'n': 3}}
+    """
+    out = {}
+    for key, value in record.items():
+        if isinstance(value, Figure):
+            out[value.key] = value.value
+        elif isinstance(value, Mapping):
+            out[key] = record_json(value)
+        else:
+            out[key] = value
+    return out
+
+
+def record_rows(record: Mapping, depth: int = 0) -> Iterator[tuple[int, str, Any, str]]:
+    """``(depth, label, SI value, SI unit)`` rows of a record, depth first: a figure's name and
+    unit from its fields, a section's title (value :data:`SECTION`) and a plain entry's key in
+    words (no unit).
+
+    >>> list(record_rows({"rate": Figure("rate", 2e4, "N/m"), "loads": {"life_cycles": 7}}))[1:]
+    [(0, 'loads', <SECTION>, ''), (1, 'life cycles', 7, '')]
+    """
+    for key, value in record.items():
+        if isinstance(value, Figure):
+            yield depth, value.name, value.value, value.unit
+        elif isinstance(value, Mapping):
+            yield depth, key.replace("_", " "), SECTION, ""
+            yield from record_rows(value, depth + 1)
+        else:
+            yield depth, key.replace("_", " "), value, ""
 
 
 @dataclass(frozen=True)
@@ -44,20 +93,35 @@ class SpringSheet:
     tolerances: dict[str, float] = field(default_factory=dict)
     notes: tuple[str, ...] = ()
 
-    def to_dict(self) -> dict:
-        """SI values; key suffixes give the unit."""
-        out = asdict(self)
-        renamed = {"d": "wire_diameter_m", "D": "mean_coil_diameter_m", "n": "active_coils",
-                   "L0": "free_length_m", "R": "rate_N_per_m", "F1": "force_1_N",
-                   "L1": "length_1_m", "F2": "force_2_N", "L2": "length_2_m",
-                   "F0": "initial_tension_N", "mass": "mass_kg",
-                   "surge_frequency": "surge_frequency_Hz", "solid_length": "solid_length_m"}
-        out = {renamed.get(k, k): v for k, v in out.items()}
-        out["outside_diameter_m"] = self.D + self.d
-        out["inside_diameter_m"] = self.D - self.d
-        out["tolerances"] = {f"{k}_m" if k.startswith(("A_d", "A_D", "A_L0")) else f"{k}_N": v
-                             for k, v in self.tolerances.items()}
+    def figures(self) -> dict:
+        """The sheet as a record (:func:`record_json`, :func:`record_rows`): each number a
+        :class:`~govopt.verdict.Figure` with its SI unit as a field, the words as they are,
+        the tolerances a section of figures (``A_d`` ... of EN 15800, in m or N)."""
+        mm = ("m", "d", "D", "L0", "L1", "L2", "solid_length")
+        names = {"d": "wire diameter", "D": "mean coil diameter", "n": "active coils",
+                 "L0": "free length", "R": "rate", "F1": "force 1", "L1": "length 1",
+                 "F2": "force 2", "L2": "length 2", "F0": "initial tension", "mass": "mass",
+                 "surge_frequency": "surge frequency", "solid_length": "solid length"}
+        units = {"R": "N/m", "F1": "N", "F2": "N", "F0": "N", "mass": "kg",
+                 "surge_frequency": "Hz", "n": ""}
+        out: dict = {}
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if f.name == "tolerances":
+                value = {k: Figure(k.replace("_", " "), v, "m" if k.startswith(
+                    ("A_d", "A_D", "A_L0")) else "N", group="tolerance")
+                    for k, v in value.items()}
+            elif f.name in names:
+                value = Figure(names[f.name], value, units.get(f.name, "m" if f.name in mm
+                                                               else ""), symbol=f.name)
+            out[f.name] = value
+        out["outside diameter"] = Figure("outside diameter", self.D + self.d, "m")
+        out["inside diameter"] = Figure("inside diameter", self.D - self.d, "m")
         return out
+
+    def to_dict(self) -> dict:
+        """SI values, each key naming its unit (:meth:`figures` by :func:`record_json`)."""
+        return record_json(self.figures())
 
     def to_text(self) -> str:
         """The sheet in mm, N and N/mm."""
