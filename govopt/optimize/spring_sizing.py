@@ -361,14 +361,15 @@ def _stress_search(attempt, sizing, worst):
 
 def _monomial(mat, place, rules, k_s, lo, hi):
     """``(k, m)``: the rule's allowable as ``k d^-m``, tangent in log-log at the window's
-    geometric centre and shaved by 1e-6 (an explicit ``k_s``: m = 0). Once the wire settles at
+    geometric centre (:meth:`~govopt.springs.materials.Material.strength_exponent`: a step
+    table's trend) and shaved by 1e-6 (an explicit ``k_s``: m = 0). Once the wire settles at
     the centre, the GP's stress limit is the rule's at that wire."""
     if k_s is not None:
         return float(k_s), 0.0
-    dc, h = math.sqrt(lo * hi), 1e-4
-    a = mt.allowable_static_stress(mat, dc * np.exp([-h, 0.0, h]), place, rules)
-    m = -float(np.log(a[2] / a[0]) / (2.0 * h))
-    return float(a[1] * dc**m * (1.0 - 1e-6)), m
+    dc = math.sqrt(lo * hi)
+    m = mat.strength_exponent(dc)  # the rule is a fraction of R_m: R_m's exponent
+    a = float(mt.allowable_static_stress(mat, dc, place, rules))
+    return float(a * dc**m * (1.0 - 1e-6)), m
 
 
 def _checked(sol, kind, mat, F_min, F_max, fatigue, *, rules, k_s, correction, peened,
