@@ -59,7 +59,16 @@ def test_bad_spring_options_are_refused_in_one_line(extra, option):
     result = invoke([*SH, *extra])
     assert result.exit_code == 2
     lines = result.output.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith(f"error: {option}: expected")
+    assert len(lines) == 1 and lines[0].startswith(f"error: {option}: ")
+    assert lines[0].split(": ", 2)[2].startswith(("expected", "must be positive"))
+
+
+def test_spring_options_are_read_as_a_governor_spec_is():
+    """One reader (govopt.spec.Reader) for spring options, spring specs and governor specs: an
+    absurd count is refused as an input, not sent to the optimiser."""
+    result = invoke([*SH, "--turns-min", "1e308"])
+    assert result.exit_code == 2
+    assert result.output.strip() == "error: --turns-min: 1e+308 is too large a number"
 
 
 def test_grade_without_one_shear_modulus_names_the_option():
@@ -156,8 +165,8 @@ def test_fatigue_past_the_data_says_so_in_the_verdict():
      "allowable stress x"),
     (["--material", "EN10270-1 SH", "--fatigue-min-force", "100 N", "--fatigue-max-force",
       "1e9 N"], "maximum wire diameter x"),
-    (["--material", "EN10270-1 SH", "--turns-min", "1e308"], "minimum active turns x"),
-    (["--allowable-stress", "600 MPa", "--shear-modulus", "81.5 GPa", "--turns-min", "1e308"],
+    (["--material", "EN10270-1 SH", "--turns-min", "1e11"], "minimum active turns x"),
+    (["--allowable-stress", "600 MPa", "--shear-modulus", "81.5 GPa", "--turns-min", "1e11"],
      "minimum active turns x"),
 ])
 def test_infeasible_spring_names_the_limit_and_the_factor(extra, limit):

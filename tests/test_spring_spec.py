@@ -41,7 +41,7 @@ def test_spec_file_equals_the_options_and_options_override_it():
     ('[spring]\nforce = "500 m"\n', "spring.force: '500 m' is not a force"),
     ('[spring]\nforse = "500 N"\n', "spring.forse: unknown key (did you mean 'force'?"),
     ('[spring]\nforce = "500 N"\nturns_min = "3"\n',
-     "spring.turns_min: expected a positive number of turns, got '3'"),
+     "spring.turns_min: expected a finite number, got '3'"),
     ('[spring]\nforce = "500 N"\nkind = "torsion"\n', "spring.kind: expected one of"),
     ('name = "x"\n', "spring: missing (required: a [spring] table)"),
     ('[spring]\nforce = "500 N"\n', "spring.stiffness: required"),
