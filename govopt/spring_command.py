@@ -349,13 +349,16 @@ def _data(sizing, v: dict, name: str) -> dict:
            "duality_gap_log": sol.certificate.get("duality_gap_log"),
            "stored_energy_J": v["force"]**2 / (2.0 * sol.stiffness)}
     out["energy_per_mass_J_per_kg"] = out["stored_energy_J"] / sol.mass
+    out["free_length_m"] = sizing.free_length  # spring_sizing.lengths: one computation
+    if sizing.kind == "compression":
+        out["solid_length_m"] = sizing.solid_length
     if v.get("length_2") is not None:
-        out.update(installed_length_2_m=v["length_2"], stroke_m=v["stroke"],
-                   installed_length_1_m=v["length_2"] + v["stroke"],
-                   free_length_m=v["length_2"] + v["force"] / sol.stiffness)
+        # the stroke as given, else the spring's from F1 to F2 (L2 and a stiffness given)
+        H = v.get("stroke") or (v["force"] - (v.get("min_force") or 0.0)) / sol.stiffness
+        out.update(installed_length_2_m=v["length_2"], stroke_m=H,
+                   installed_length_1_m=v["length_2"] + H)
     if v.get("material") is not None:
         out.update({"material": v["material"], "kind": v["kind"],
-                    "free_length_m": sizing.free_length,
                     "initial_tension_N": sizing.initial_tension,
                     "checks": [c.to_dict() for c in sizing.checks], "notes": sizing.notes})
         life = body_life(sizing, v)
@@ -445,7 +448,7 @@ def _text(sizing, data: dict, v: dict) -> str:
         lines.append(f"free length {data['free_length_m'] * 1e3:.2f} mm, installed "
                      f"L1 = {data['installed_length_1_m'] * 1e3:.2f} mm at "
                      f"{v.get('min_force') or 0.0:.4g} N, L2 = {v['length_2'] * 1e3:.2f} mm at "
-                     f"{v['force']:.4g} N (stroke {v['stroke'] * 1e3:.2f} mm), stiffness "
+                     f"{v['force']:.4g} N (stroke {data['stroke_m'] * 1e3:.2f} mm), stiffness "
                      f"{sol.stiffness * 1e-3:.4f} N/mm")
     objective, bound = v["objective"], bound_text(sizing, v)
     if objective == "energy per mass":

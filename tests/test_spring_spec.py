@@ -232,6 +232,37 @@ def test_workbook_and_plots(tmp_path):
     assert bad.exit_code == 2 and not none.exists()
 
 
+@pytest.mark.parametrize("extra", [[], ["--kind", "extension"], ["--length-2", "80 mm"]])
+def test_force_length_plot_and_table_read_one_computation(extra):
+    """Without a wire grade too, the workbook's force-length table and the plot have the same
+    free and solid lengths: the sizing's (spring_sizing.lengths), also in the JSON."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from govopt import spring_command
+    from govopt.report import spring_outputs as so
+
+    args = dict(force="500 N", stiffness="10 N/mm", allowable_stress="600 MPa",
+                shear_modulus="81.5 GPa",
+                **{extra[i][2:].replace("-", "_"): extra[i + 1] for i in range(0, len(extra), 2)})
+    out = spring_command.run(**args)
+    sizing = out.sizing
+    table = so._force_length_points(out)
+    fig, ax = plt.subplots()
+    so.force_length(sizing, out.values, ax, "s")
+    line = ax.lines[0].get_xdata() / 1e3  # the spring's line, mm
+    plt.close(fig)
+    assert table[0][0] == pytest.approx(sizing.free_length, rel=1e-12) == line[0] \
+        == out.data["free_length_m"]
+    if sizing.kind == "compression":
+        assert table[-1][0] == sizing.solid_length == line[-1] == out.data["solid_length_m"]
+        assert sizing.solid_length < sizing.least_length < sizing.free_length
+    if "--length-2" in extra:
+        assert sizing.free_length == pytest.approx(0.080 + 500.0 / sizing.solution.stiffness)
+
+
 def test_long_installed_lengths_pass_their_solid_stress_and_pitch():
     """L2 120 mm, L1 150 mm: the force at solid length F + R (L2 - L_c) and the free pitch are
     not posynomials; the GP restricts them (F + R (L2 - lam), lam <= L_c; m <= L0/n) so the

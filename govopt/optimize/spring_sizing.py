@@ -75,6 +75,10 @@ class Sizing:
     cycles: float = 1e7
     #: why no spring was found (the relaxed GP's diagnosis), empty when one was
     diagnosis: str = ""
+    #: a compression spring's solid length ``L_c`` and least working length ``L_n = L_c +
+    #: S_a`` (m, EN 13906-1; nan for extension), set with the free length by :func:`lengths`
+    solid_length: float = math.nan
+    least_length: float = math.nan
 
     @property
     def gap(self) -> float:
@@ -160,7 +164,8 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                        **space, **bounds)
         why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
             gp, **rate, F_max=F_max, k_s=k_s, G=G, density=density, **bounds)
-        return Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why)
+        return lengths(Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why), F_max, ends,
+                       L2)
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
     if not isinstance(mat.G, float):
         raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire diameter "
@@ -224,13 +229,36 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         bound = _bound(loose.solution)
         if loose.solution.ok and loose.passed:  # the relaxation's design passes: optimal
             loose.lower_bound, loose.cycles = bound, cycles
-            return loose
+            return lengths(loose, F_max, ends, L2)
     sizing = _stress_search(attempt, sizing, worst)
     if sizing.solution.ok and kind == "compression":
         sizing = _buckling_search(attempt, sizing, stable)
     if sizing.solution.ok and L2 is not None:
         sizing = _installed_search(attempt, sizing, state, L2, ends)
     sizing.lower_bound, sizing.cycles = bound, cycles
+    return lengths(sizing, F_max, ends, L2)
+
+
+def lengths(sizing: Sizing, F_max: float, ends: str, L2: float | None = None) -> Sizing:
+    """The sized spring's lengths, computed once for every output (text, JSON, workbook and
+    force-length plot read them). A compression spring: its solid length ``L_c``
+    (:func:`govopt.springs.helical.solid_length`, EN 13906-1 by the end form), least working
+    length ``L_n = L_c + S_a`` (EN 13906-1, dynamic) and, where the checks did not set it (no
+    grade), its free length ``L2 + F_max / R`` or ``L_n + F_max / R`` as :func:`_kw`. An
+    extension spring: the free length of its ``n + end coils - 2`` body coils (EN 13906-2,
+    :func:`govopt.springs.helical.extension_free_length`). Lengths in m, ``F_max`` in N."""
+    sol = sizing.solution
+    if not sol.ok:
+        return sizing
+    d, D, n, n_t = sol.d, 2.0 * sol.r, sol.n, sol.n + sol.end_coils
+    if sizing.kind == "compression":
+        sizing.solid_length = float(hx.solid_length(d, n_t, ends))
+        sizing.least_length = float(hx.min_working_length(d, D, n, n_t, ends, dynamic=True))
+        if not math.isfinite(sizing.free_length):
+            sizing.free_length = (sizing.least_length if L2 is None else L2) \
+                + F_max / sol.stiffness
+    elif not math.isfinite(sizing.free_length):
+        sizing.free_length = float(hx.extension_free_length(d, D, n_t - 2.0))
     return sizing
 
 
@@ -387,7 +415,7 @@ def _checked(sol, kind, mat, F_min, F_max, fatigue, *, rules, k_s, correction, p
                   initial_tension=float(kw.get("F0", math.nan)))
 
 
-__all__ = ["KINDS", "Sizing", "diagnose", "end_coils", "size_spring"]
+__all__ = ["KINDS", "Sizing", "diagnose", "end_coils", "lengths", "size_spring"]
 
 
 def _ratio(check) -> float:

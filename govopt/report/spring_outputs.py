@@ -75,17 +75,10 @@ def force_length(sizing, v: dict, ax, name: str) -> None:
     length to its solid length ``L_c``, the working points (L1, F1) and (L2, F2), the least
     working length ``L_n = L_c + S_a`` (EN 13906-1); an extension spring's ``F = F0 + R (L -
     L0)`` from its free length (initial tension F0) to past L2. mm and N."""
-    sol = sizing.solution
-    d, D, n, R = sol.d, 2.0 * sol.r, sol.n, sol.stiffness
-    F1, F2 = v.get("min_force") or 0.0, v["force"]
+    R, F1, F2 = sizing.solution.stiffness, v.get("min_force") or 0.0, v["force"]
+    L0 = sizing.free_length  # the sizing's lengths (spring_sizing.lengths), as the workbook's
     if sizing.kind == "compression":
-        L0 = sizing.free_length
-        if not math.isfinite(L0):  # no grade: the installed length's, or the least
-            L0 = (v["length_2"] if v.get("length_2") is not None else float(
-                hx.min_working_length(d, D, n, n + sol.end_coils, v["ends"], dynamic=True))
-                ) + F2 / R
-        Lc = float(hx.solid_length(d, n + sol.end_coils, v["ends"]))
-        Ln = float(hx.min_working_length(d, D, n, n + sol.end_coils, v["ends"], dynamic=True))
+        Lc, Ln = sizing.solid_length, sizing.least_length
         L = np.array([L0, Lc])
         ax.plot(L * 1e3, R * (L0 - L), color="tab:blue", lw=2,
                 label=f"F = R (L0 - L), R = {R * 1e-3:.4g} N/mm")
@@ -95,8 +88,7 @@ def force_length(sizing, v: dict, ax, name: str) -> None:
         points = ((L0 - F1 / R, F1, "L1, F1"), (L0 - F2 / R, F2, "L2, F2"))
         ax.invert_xaxis()  # compressing: the length falls as the force rises
     else:
-        F0, L0 = _initial_tension(sizing), float(hx.extension_free_length(
-            d, D, sol.n + sol.end_coils - 2.0))
+        F0 = _initial_tension(sizing)
         L2 = L0 + (F2 - F0) / R
         L = np.array([L0, L0 + 1.1 * (L2 - L0)])
         ax.plot(L * 1e3, F0 + R * (L - L0), color="tab:blue", lw=2,
@@ -289,18 +281,14 @@ def _labelled(key: str) -> tuple[str, str]:
 
 def _force_length_points(outcome) -> list[tuple[float, float]]:
     """(length m, force N) at the free length and the working points, solid length last
-    (compression), as the force-length plot draws them."""
+    (compression), from the sizing's lengths as the force-length plot draws them."""
     sizing, v = outcome.sizing, outcome.values
-    sol = sizing.solution
-    R, F1, F2 = sol.stiffness, v.get("min_force") or 0.0, v["force"]
+    R, F1, F2 = sizing.solution.stiffness, v.get("min_force") or 0.0, v["force"]
+    L0 = sizing.free_length
     if sizing.kind == "compression":
-        L0 = outcome.data.get("free_length_m", math.nan)
-        if not math.isfinite(L0):
-            return [(F / R, F) for F in (0.0, F1, F2)]  # deflections: no free length known
-        Lc = float(hx.solid_length(sol.d, sol.n + sol.end_coils, v["ends"]))
+        Lc = sizing.solid_length
         return [(L0 - F / R, F) for F in (0.0, F1, F2)] + [(Lc, R * (L0 - Lc))]
     F0 = _initial_tension(sizing)
-    L0 = float(hx.extension_free_length(sol.d, 2.0 * sol.r, sol.n + sol.end_coils - 2.0))
     return [(L0, F0)] + [(L0 + (F - F0) / R, F) for F in (F1, F2)]
 
 
