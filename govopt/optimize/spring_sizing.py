@@ -222,14 +222,16 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                             if (c.unit == "Pa" and c.sense == "<=") or "fatigue" in c.name),
                            default=math.inf)
 
-    sizing, worst = attempt(1.0)
-    bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
-    if L2 is not None:  # there the design's GP restricts; its relaxation bounds
+    if L2 is not None:  # there the design's GP restricts; its relaxation bounds: first
         loose, _ = attempt(1.0, relax=True)
         bound = _bound(loose.solution)
         if loose.solution.ok and loose.passed:  # the relaxation's design passes: optimal
             loose.lower_bound, loose.cycles = bound, cycles
             return lengths(loose, F_max, ends, L2)
+        state["window"] = (lo, hi)  # the design's GP fitted afresh, as without the relaxation
+    sizing, worst = attempt(1.0)
+    if L2 is None:
+        bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
     sizing = _stress_search(attempt, sizing, worst)
     if sizing.solution.ok and kind == "compression":
         sizing = _buckling_search(attempt, sizing, stable)
