@@ -234,24 +234,21 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
     if (xlsx is not None or plots is not None) and problem:
         raise GovoptError(f"--xlsx, --plots: not for the literature problem {problem!r} "
                           "(its answer is the printed one)")
-    if xlsx is not None or plots is not None:
-        from .report.spring_outputs import check_outputs
-
-        check_outputs(xlsx, plots, stem, replace=replace,
-                      inputs=[] if spec is None else [spec])
     if problem == "sandgren-1990":
         return _sandgren(values, where, json_out)
-    for key, value in DEFAULTS.items():
-        values.setdefault(key, value)
-    out = _size(values, where, name, json_out)
-    if xlsx is not None:
-        from .report.spring_outputs import write_workbook
+    if xlsx is None and plots is None:
+        return _size({**DEFAULTS, **values}, where, name, json_out)
+    from .report import spring_outputs as so
+    from .report.files import overwrite_option
 
-        out.written.append(write_workbook(out, xlsx))
-    if plots is not None:
-        from .report.spring_outputs import write_plots
-
-        out.written += write_plots(out, plots, stem)
+    with overwrite_option("--replace"):  # this command's --force is the spring's force
+        so.check_outputs(xlsx, plots, stem, replace=replace,
+                         inputs=[] if spec is None else [spec])
+        out = _size({**DEFAULTS, **values}, where, name, json_out)
+        if xlsx is not None:
+            out.written.append(so.write_workbook(out, xlsx, replace=replace))
+        if plots is not None:
+            out.written += so.write_plots(out, plots, stem, replace=replace)
     return out
 
 

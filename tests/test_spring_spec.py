@@ -225,7 +225,14 @@ def test_workbook_and_plots(tmp_path):
     assert sorted(p.name for p in folder.iterdir()) == [
         f"spring-{k}.{x}" for k in ("fatigue", "force-length") for x in ("png", "svg")]
     again = invoke(["spring", *args, "--xlsx", str(book)])
-    assert again.exit_code == 2 and "already exists; use --replace" in again.output
+    assert again.exit_code == 2
+    assert again.output.strip() == f"error: {book}: workbook already exists; use --replace to " \
+        "replace it"  # this command's option (its --force is the spring's force)
+    plot = folder / "spring-force-length.svg"
+    mtime = plot.stat().st_mtime_ns
+    refused = invoke(["spring", *args, "--plots", str(folder)])
+    assert refused.exit_code == 2 and "use --replace" in refused.output
+    assert plot.stat().st_mtime_ns == mtime
     assert invoke(["spring", *args, "--xlsx", str(book), "--replace"]).exit_code == 0
     none = tmp_path / "none.xlsx"
     bad = invoke(["spring", *args, "--max-outer-diameter", "1 mm", "--xlsx", str(none)])
@@ -282,3 +289,22 @@ def test_long_installed_lengths_pass_their_solid_stress_and_pitch():
     assert out["lower_bound"] < out["mass_kg"] and math.isfinite(out["gap_to_bound"])
     text = invoke(["spring", *args]).output
     assert f"optimal within {100 * out['gap_to_bound']:.3g} % of a certified bound" in text
+
+
+def test_a_file_that_appears_during_the_run_is_not_replaced_without_replace(tmp_path):
+    """The workbook is written with the run's --replace, not always replacing: a file that
+    appeared after the check survives, and the message names this command's option."""
+    from govopt import spring_command
+    from govopt.errors import GovoptError
+    from govopt.report import spring_outputs as so
+    from govopt.report.files import overwrite_option
+
+    out = spring_command.run(force="500 N", stiffness="10 N/mm", allowable_stress="600 MPa",
+                             shear_modulus="81.5 GPa")
+    book = tmp_path / "s.xlsx"
+    book.write_text("someone else's")
+    with overwrite_option("--replace"), pytest.raises(GovoptError, match="use --replace"):
+        so.write_workbook(out, book, replace=False)
+    assert book.read_text() == "someone else's"
+    with pytest.raises(GovoptError, match="use --force"):  # every other command's option
+        so.write_workbook(out, book, replace=False)

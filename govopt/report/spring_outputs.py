@@ -17,7 +17,6 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..errors import GovoptError
 from ..springs import fatigue as ft
 from ..springs import helical as hx
 from ..springs import materials as mt
@@ -128,15 +127,14 @@ def check_outputs(xlsx, plots, stem: str, *, replace: bool, inputs=()) -> None:
     if plots is not None:
         folder = output_folder(Path(plots), "plots")
         paths += [(folder / f"{stem}-{k}.{fmt}", "plot") for k in PLOTS for fmt in ("png", "svg")]
-    for path, what in paths:
-        if path.exists() and not replace:
-            raise GovoptError(f"{path}: {what} already exists; use --replace to replace it")
-        check_output(path, overwrite=True, inputs=inputs, what=what,
+    for path, what in paths:  # in `govopt spring` (--replace: files.overwrite_option)
+        check_output(path, overwrite=replace, inputs=inputs, what=what,
                      others=[p for p, _ in paths if p != path])
 
 
-def write_plots(outcome, folder, stem: str) -> list[Path]:
-    """``<folder>/<stem>-<kind>.png|svg`` of every plot (:func:`plot_names`), atomically."""
+def write_plots(outcome, folder, stem: str, *, replace: bool = True) -> list[Path]:
+    """``<folder>/<stem>-<kind>.png|svg`` of every plot (:func:`plot_names`), atomically (an
+    existing file replaced only with ``replace``)."""
     import matplotlib as mpl
 
     from . import plots
@@ -150,7 +148,7 @@ def write_plots(outcome, folder, stem: str) -> list[Path]:
                 force_length(outcome.sizing, outcome.values, ax, outcome.name)
             else:
                 plots.fatigue(_plot_input(outcome), ax)
-        written += save_figure(ax.figure, Path(folder) / f"{stem}-{kind}", overwrite=True)
+        written += save_figure(ax.figure, Path(folder) / f"{stem}-{kind}", overwrite=replace)
     return written
 
 
@@ -177,10 +175,10 @@ def workbook_rows(outcome) -> list[tuple[str, object, str]]:
     return rows
 
 
-def write_workbook(outcome, path) -> Path:
+def write_workbook(outcome, path, *, replace: bool = True) -> Path:
     """The workbook: sheet "Spring" (the answer, then the spring maker's sheet in engineering
     units), "Checks" (value, limit, margin, verdict, source) and "Force-length" (a table and
-    its chart), written atomically."""
+    its chart), written atomically (an existing file replaced only with ``replace``)."""
     from openpyxl import Workbook
     from openpyxl.chart import Reference, ScatterChart, Series
     from openpyxl.styles import Alignment, Font
@@ -262,7 +260,7 @@ def write_workbook(outcome, path) -> Path:
     for w in (ws, checks, fl):  # rows tall enough for their wrapped text; A4, fit to the
         fit_rows(w)  # page's width, the header on every page
         print_setup(w)
-    return atomic_write(Path(path), wb.save, overwrite=True, what="workbook")
+    return atomic_write(Path(path), wb.save, overwrite=replace, what="workbook")
 
 
 #: the unit suffixes of the maker's sheet's JSON keys (:meth:`SpringSheet.to_dict`)
