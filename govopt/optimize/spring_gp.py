@@ -57,6 +57,7 @@ from typing import Any
 
 import numpy as np
 
+from govopt.requirements import GPForm
 from govopt.springs import helical as hx
 
 from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize
@@ -64,7 +65,6 @@ from ._cvxpy import installed_solvers
 from .gp_table import (
     DEFAULT_BOUNDS,
     MATERIAL_KEYS,
-    GPConstraint,
     complete_values,
     gp_constraints,
     stress_g,
@@ -549,7 +549,7 @@ class SpringGP:
             g = base
         return [16.0 / np.pi * F * g * d**m <= self.free_length_params["k_solid"]]
 
-    def _constraint(self, s: GPConstraint, slack=None):
+    def _constraint(self, s: GPForm, slack=None):
         g = s.g(self.d, self.r, self.n, self.t, self.params)
         c = self.params[s.limit]
         if s.sense == "upper":
