@@ -1,4 +1,5 @@
-"""``import cvxpy`` without two ``scipy`` modules it loads at start-up and govopt never uses.
+"""``import cvxpy`` without the ``scipy`` and ``numpy`` modules it loads at start-up and govopt
+never uses.
 
 cvxpy (1.4-1.9) imports, when it is imported (CPU on the reference machine):
 
@@ -17,13 +18,18 @@ for anything while it loads is imported the ordinary way instead. :func:`install
 asks cvxpy again the same way (its ``installed_solvers()`` probes every solver on each call).
 Nothing else changes: the same cvxpy, the same solvers.
 
-Two more things cvxpy loads and govopt's GP never uses (issue 22, the CPU of ``govopt
+More that cvxpy loads and govopt's GP never uses (issue 22, the CPU of ``govopt
 spring``), left out the same way:
 
 * ``scipy.special`` (about 0.04 s): cvxpy's atoms ``entr``, ``kl_div``, ``rel_entr``,
   ``log_sum_exp`` and ``von_neumann_entr`` import five of its functions to evaluate those atoms
   numerically. While cvxpy loads it is a placeholder whose five names import the real module
   when first called (a cvxpy asking it for another name is imported the ordinary way).
+* ``scipy.linalg`` and ``scipy.sparse.linalg`` (about 0.085 s): cvxpy's ``utilities.linalg``
+  and its matrix atoms bind them as modules for their PSD and eigenvalue functions, and the
+  CVXOPT interface imports ``eigsh``; a GP never calls them. While cvxpy loads they are
+  placeholders (``eigsh`` imports the real function when called); the module objects cvxpy
+  keeps give the real modules' names afterwards.
 * numpy's submodules ``testing`` (and with it ``unittest``), ``f2py``, ``ma``, ``ctypeslib``,
   ``polynomial``, ``char``, ``rec`` and ``strings`` (about 0.09 s): scipy 1.17's array-API
   layer, loaded with ``scipy.sparse``, copies every public name of numpy into its namespace
@@ -113,11 +119,15 @@ def _numpy_trimmed():
 
 @contextlib.contextmanager
 def _placeholders(stats: bool = True):
-    """``scipy.optimize`` and (``stats``) ``scipy.stats`` and ``scipy.special`` as
-    placeholders, those not loaded yet, while the block runs; yields the list of them."""
+    """``scipy.optimize`` and (``stats``: at cvxpy's import) ``scipy.stats``, ``scipy.special``,
+    ``scipy.linalg`` and ``scipy.sparse.linalg`` as placeholders, those not loaded yet, while
+    the block runs; yields the list of them."""
     stand_ins = [_stand_in("scipy.stats", entropy=_entropy),
                  _stand_in("scipy.special", **{n: _deferred("scipy.special", n)
-                                               for n in SPECIAL_NAMES})] if stats else []
+                                               for n in SPECIAL_NAMES}),
+                 _stand_in("scipy.linalg"),
+                 _stand_in("scipy.sparse.linalg", eigsh=_deferred("scipy.sparse.linalg",
+                                                                  "eigsh"))] if stats else []
     if importlib.util.find_spec("scipy.optimize") is not None:  # the SCIPY probe's true answer
         stand_ins.append(_stand_in("scipy.optimize"))
     stand_ins = [m for m in stand_ins if m.__name__ not in sys.modules]
@@ -140,8 +150,8 @@ def _remove(stand_ins: list[types.ModuleType]) -> None:
 
 def load():
     """The ``cvxpy`` module, imported without ``scipy.stats``, ``scipy.optimize``,
-    ``scipy.special`` and numpy's :data:`NUMPY_DEFERRED` submodules if they are not loaded yet
-    (module docstring)."""
+    ``scipy.special``, ``scipy.linalg``, ``scipy.sparse.linalg`` and numpy's
+    :data:`NUMPY_DEFERRED` submodules if they are not loaded yet (module docstring)."""
     if "cvxpy" in sys.modules:
         import cvxpy
 
