@@ -225,7 +225,9 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     if L2 is not None:  # there the design's GP restricts; its relaxation bounds: first
         loose, _ = attempt(1.0, relax=True)
         bound = _bound(loose.solution)
-        if loose.solution.ok and loose.passed:  # the relaxation's design passes: optimal
+        if not loose.solution.ok:  # nor can the restriction be met: the relaxation's diagnosis
+            return loose
+        if loose.passed:  # the relaxation's design passes: optimal
             loose.lower_bound, loose.cycles = bound, cycles
             return lengths(loose, F_max, ends, L2)
         state["window"] = (lo, hi)  # the design's GP fitted afresh, as without the relaxation
