@@ -250,3 +250,31 @@ def test_sandgren_mixed_discrete_spring_reproduces_the_best_known_optimum():
     assert 0 < g[7] < 1e-3
     g, _ = sl.sandgren_constraints(7.0, np.linspace(0.7, 2.9, 50), 0.263)
     assert np.abs(g[6]).max() < 1e-9
+
+
+@pytest.mark.parametrize(("extra", "limit", "key"), [
+    (["--stiffness", "20 N/mm", "--material", "EN10270-1 SH"], "free length",
+     "--max-free-length"),
+    (["--stiffness", "20 N/mm", "--allowable-stress", "600 MPa", "--shear-modulus", "81.5 GPa"],
+     "solid length", "--max-solid-length"),
+    (["--min-force", "200 N", "--length-1", "30 mm", "--material", "EN10270-1 SH"],
+     "working length", "--length-2"),
+])
+def test_infeasible_space_names_the_limit_and_the_factor_that_suffices(extra, limit, key):
+    """The space's limits (free, solid, installed length) are GP rows the diagnosis may move
+    too (before, it saw only the table's rows and said "feasible: no limit needs to move"):
+    it names the limit and the factor, and that factor (+1 %) makes a spring."""
+    import re
+
+    value = 10.0  # mm: too short for 500 N in every case
+    args = ["spring", "--force", "500 N", *extra]
+    result = invoke([*args, key, f"{value} mm"])
+    assert result.exit_code == 2 and "no spring meets these requirements: infeasible" in \
+        result.output, result.output
+    factor = max(float(x) for x in re.findall(rf"{limit} x([0-9.e+]+)", result.output))
+    assert factor > 1.0
+    if key == "--length-2":  # the stroke stays 20 mm: L1 moves with L2
+        extra = [x if x != "30 mm" else f"{value * factor * 1.01 + 20.0} mm" for x in extra]
+        args = ["spring", "--force", "500 N", *extra]
+    ok = invoke([*args, key, f"{value * factor * 1.01} mm", "--json"])
+    assert ok.exit_code in (0, 1), ok.output  # a spring (its checks reported)

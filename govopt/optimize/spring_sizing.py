@@ -163,7 +163,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         sol = gp.solve(certify=True, **rate, F_max=F_max, k_s=k_s, G=G, density=density,
                        **space, **bounds)
         why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
-            gp, **rate, F_max=F_max, k_s=k_s, G=G, density=density, **bounds)
+            gp, **rate, F_max=F_max, k_s=k_s, G=G, density=density, **space, **bounds)
         return lengths(Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why), F_max, ends,
                        L2)
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
@@ -204,8 +204,8 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                            density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             if not sol.ok:
                 text = diagnose(gp, **rate, F_max=F_max, k_s=k * factor, G=G,
-                                density=density, **{**bounds, "d_min": lo, "d_max": hi}
-                                ) if sol.status == "infeasible" else sol.status
+                                density=density, **{**bounds, "d_min": lo, "d_max": hi},
+                                **extra) if sol.status == "infeasible" else sol.status
                 if factor < 1.0:
                     text += (f" (with the allowable lowered to {factor:.3g} of the rule's for "
                              "the fatigue or hook rows)")
