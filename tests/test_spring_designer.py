@@ -278,3 +278,20 @@ def test_infeasible_space_names_the_limit_and_the_factor_that_suffices(extra, li
         args = ["spring", "--force", "500 N", *extra]
     ok = invoke([*args, key, f"{value * factor * 1.01} mm", "--json"])
     assert ok.exit_code in (0, 1), ok.output  # a spring (its checks reported)
+
+
+def test_step_table_grade_has_an_honest_bound():
+    """EN 10270-3's R_m is a step per diameter row: the GP's local tangent does not lie above
+    it (a thinner row is stronger than the tangent says), so its optimum is no bound. The
+    certified bound is the GP with the fit raised over every row's end: below the design and
+    below the best spring in the neighbouring rows, and the claim is 'within X %'."""
+    from govopt.optimize.spring_sizing import size_spring
+
+    kw = dict(grade="EN10270-3 1.4310", C_max=12.0, n_min=3.0)
+    s = size_spring(500.0, 1e4, **kw)
+    assert s.solution.ok and s.passed and not s.certified
+    assert 0.0 < s.gap < 0.1
+    for rows in (dict(d_max=3.0e-3), dict(d_min=3.5001e-3)):  # the stronger, the weaker row
+        other = size_spring(500.0, 1e4, **kw, **rows)
+        assert other.solution.mass >= s.lower_bound
+        assert other.solution.mass >= s.solution.mass  # this design is the best of the three

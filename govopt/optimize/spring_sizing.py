@@ -6,7 +6,9 @@ stiffness and largest force, certified global). With a grade (:mod:`govopt.sprin
 the allowable static stress is the standard's rule ``fraction R_m(d)`` (EN 13906-1/-2 or
 Shigley); the GP takes it as a monomial ``k d^-m``, the rule's tangent in log-log at the
 centre of a window of wire diameters about the solution,
-re-fitted until the wire settles at the window's centre (the tangent of the rule there). Then
+re-fitted until the wire settles at the window's centre (the tangent of the rule there). The
+certified lower bound is that GP's, or where the tangent does not lie above the rule over all
+the grade's wires (a step table's rows) the same GP with the fit raised until it does. Then
 the spring kind's own table
 (:mod:`govopt.springs.checks`) is evaluated on the GP's spring: a compression spring gets the
 least free length that keeps the coils clear at the largest force (EN 13906-1: ``L0 = L_c +
@@ -200,12 +202,12 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 extra.update(k_solid=k_c, s_over_D_max=stable)
             gp = cached_gp(objective, correction, mode, m, Q, slender is not None, m_c,
                             envelope)
-            sol = gp.solve(**rate, F_max=F_max, k_s=k * factor, G=G,
-                           density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
+            values = dict(**rate, F_max=F_max, k_s=k * factor, G=G, density=density,
+                          **{**bounds, "d_min": lo, "d_max": hi}, **extra)
+            sol = gp.solve(**values)
+            state["fit"] = (gp, values, k, m, m_c)
             if not sol.ok:
-                text = diagnose(gp, **rate, F_max=F_max, k_s=k * factor, G=G,
-                                density=density, **{**bounds, "d_min": lo, "d_max": hi},
-                                **extra) if sol.status == "infeasible" else sol.status
+                text = diagnose(gp, **values) if sol.status == "infeasible" else sol.status
                 if factor < 1.0:
                     text += (f" (with the allowable lowered to {factor:.3g} of the rule's for "
                              "the fatigue or hook rows)")
@@ -222,9 +224,27 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                             if (c.unit == "Pa" and c.sense == "<=") or "fatigue" in c.name),
                            default=math.inf)
 
+    def certified_bound(sizing) -> float:
+        """The bound of the GP just solved (at the rule's own allowable), made valid for every
+        wire: the monomial fit raised to lie above the rule over the grade's diameters
+        (:func:`_domination`), the GP solved again with it when it had to rise (a step table's
+        rows, an interpolated table's kinks); a concave rule's tangent already lies above."""
+        gp, values, k, m, m_c = state["fit"]
+        if not sizing.solution.ok:
+            return math.nan
+        raised = {"k_s": _domination(mat, place, rules, k_s, k, m, lo, hi)}
+        if m_c is not None:
+            raised["k_solid"] = _domination(mat, "solid", rules, None, values["k_solid"], m_c,
+                                            lo, hi)
+        if all(f <= 1.0 + 2e-6 for f in raised.values()):
+            return _bound(sizing.solution)
+        relaxed_sol = gp.solve(**{**values, **{key: values[key] * f
+                                               for key, f in raised.items()}})
+        return _bound(relaxed_sol)
+
     if L2 is not None:  # there the design's GP restricts; its relaxation bounds: first
         loose, _ = attempt(1.0, relax=True)
-        bound = _bound(loose.solution)
+        bound = certified_bound(loose)
         if not loose.solution.ok:  # nor can the restriction be met: the relaxation's diagnosis
             return loose
         if loose.passed:  # the relaxation's design passes: optimal
@@ -233,7 +253,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         state["window"] = (lo, hi)  # the design's GP fitted afresh, as without the relaxation
     sizing, worst = attempt(1.0)
     if L2 is None:
-        bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
+        bound = certified_bound(sizing)  # the GP is a relaxation of the rows: a lower bound
     sizing = _stress_search(attempt, sizing, worst)
     if sizing.solution.ok and kind == "compression":
         sizing = _buckling_search(attempt, sizing, stable)
@@ -389,6 +409,21 @@ def _stress_search(attempt, sizing, worst):
                         "the hooks' static stresses and the fatigue rows pass too (heuristic "
                         "outer search; the certified bound is the relaxation's)")
     return sizing
+
+
+def _domination(mat, place, rules, k_s, k, m, lo, hi) -> float:
+    """How far ``k d^-m`` must rise to lie on or above the rule's allowable at every wire in
+    ``[lo, hi]`` (m): the largest ``allowable d^m / k`` at 513 log-spaced wires and the
+    table's nodes (a step table's row ends, where a row's ``allowable d^m`` peaks), at least 1
+    (an explicit ``k_s``: 1)."""
+    if k_s is not None:
+        return 1.0
+    d = np.geomspace(lo, hi, 513)
+    nodes = mat.rm_nodes
+    d = np.union1d(d, nodes[(nodes > lo) & (nodes < hi)])
+    allow = mt.allowable_static_stress(mat, d, place, rules)
+    ok = np.isfinite(allow)
+    return max(1.0, float(np.max(allow[ok] * d[ok] ** m) / k)) if np.any(ok) else 1.0
 
 
 def _monomial(mat, place, rules, k_s, lo, hi):
