@@ -33,17 +33,26 @@ PASS_TOL = -1e-9
 
 @dataclass(frozen=True)
 class GPForm:
-    """A row in the spring GP (:mod:`govopt.optimize.gp_table`): ``g(d, r, n, t, P) sense
+    """A row in the spring GP (:mod:`govopt.optimize.gp_table`'s table is made of them, the
+    requirements' and the GP's own stiffness and stress rows): ``g(d, r, n, t, P) sense
     P[limit]`` with ``sense`` "upper" (``<=``), "lower" (``>=``) or "equal"; ``g_exps`` the
     exponents of the parameters in ``g`` (a monomial in them), for the duals' sensitivities;
     ``name``: the constraint's name in the GP's solution."""
 
     name: str
     limit: str
-    sense: str
+    sense: str  # "upper": g <= limit, "lower": g >= limit, "equal": g == limit
     g: Callable[..., Any]
     g_exps: tuple[tuple[str, float], ...] = ()
     source: str = ""
+
+    def log_exponents(self) -> dict[str, float]:
+        """Parameter exponents in cvxpy's ``log(args[0]) - log(args[1])`` for this row (the
+        duals' sensitivities)."""
+        sign = -1.0 if self.sense == "lower" else 1.0  # cvxpy stores g >= c as c <= g
+        out = {k: sign * e for k, e in self.g_exps}
+        out[self.limit] = out.get(self.limit, 0.0) - sign
+        return out
 
 
 @dataclass(frozen=True)

@@ -70,10 +70,13 @@ class Reader:
         return f"{self.path}.{name}" if self.path else name
 
     def fail(self, name: str, message: str):
+        """``FILE: KEY: message`` (without a file, e.g. options read as a table: ``KEY:
+        message``)."""
         value = self.table.get(name)
         if value is not None and len(repr(value)) > limits.SHOWN_CHARS:  # a 200 kB value
             message = message.replace(repr(value), limits.shorten(value))
-        raise SpecError(f"{self.file}: {self.key(name)}: {message}")
+        where = f"{self.file}: " if self.file else ""
+        raise SpecError(f"{where}{self.key(name)}: {message}")
 
     def has(self, name: str) -> bool:
         return name in self.table

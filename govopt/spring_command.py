@@ -118,39 +118,31 @@ class _Where:
         raise GovoptError(f"{self.file}: spring.{key}: required (or {option}){also}")
 
 
-def read_spring_spec(path: str | Path) -> tuple[dict, str | None, str]:
-    """A spring spec's ``[spring]`` table (raw TOML values), its ``problem`` and its name;
-    errors name the file and key (``FILE: spring.KEY: ...``)."""
-    from .spec import read_spec_data
+def _option_reader(options: dict, entries: list):
+    """The options given, read as a spec table: errors name the option (``--force: ...``)."""
+    from .spec import Reader
 
-    data = read_spec_data(path)
-    file = str(path)
-    for key in ("name", "description"):
-        if key in data and not isinstance(data[key], str):
-            raise GovoptError(f"{file}: {key}: expected a string, got {data[key]!r}")
-    unknown = sorted(set(data) - {"name", "description", "spring"})
-    if unknown:
-        raise GovoptError(f"{file}: {unknown[0]}: unknown key (a spring spec has name, "
-                          "description and [spring])")
-    table = data.get("spring")
-    if not isinstance(table, dict):
-        raise GovoptError(f"{file}: spring: missing (required: a [spring] table)"
-                          if table is None else f"{file}: spring: expected a table")
-    table = dict(table)
-    problem = table.pop("problem", None)
-    if problem is not None and problem not in PROBLEMS:
-        raise GovoptError(f"{file}: spring.problem: expected one of "
-                          f"{', '.join(map(repr, PROBLEMS))}, got {problem!r}")
-    allowed = SANDGREN_KEYS if problem else OPTIONS
-    for key in table:
-        if key not in allowed:
-            import difflib
+    class Options(Reader):
+        def key(self, name: str) -> str:
+            return "--" + name.replace("_", "-")
 
-            close = difflib.get_close_matches(key, list(allowed), n=1, cutoff=0.6)
-            hint = f"did you mean {close[0]!r}? " if close else ""
-            raise GovoptError(f"{file}: spring.{key}: unknown key ({hint}allowed here: "
-                              f"{', '.join(sorted(allowed))})")
-    return table, problem, data.get("name") or Path(file).stem
+    return Options("", options, "", entries)
+
+
+def _read(rd, key: str, problem: str | None):
+    """One value through :class:`govopt.spec.Reader` (units, types, ranges; errors ``FILE:
+    spring.KEY: ...`` or ``--key: ...``), in SI."""
+    if problem:  # the literature problem's data: positive quantities
+        return rd.quantity(key, SANDGREN_KEYS[key], required=False)
+    kind, detail = OPTIONS[key]
+    if kind == "quantity":  # the lower forces of a cycle may be zero
+        return rd.quantity(key, detail, required=False,
+                           nonnegative=key in ("min_force", "fatigue_min_force"))
+    if kind == "number":
+        return rd.number(key, required=False)
+    if kind == "flag":
+        return rd.boolean(key, None)
+    return rd.choice(key, _choices(key), None)
 
 
 def _choices(key: str):
@@ -159,42 +151,6 @@ def _choices(key: str):
     return {"material": materials.GRADES, "rules": materials.METHODS,
             "ends": tuple(helical.END_FORMS), "seating": tuple(helical.SEATING),
             "objective": tuple(OBJECTIVES)}.get(key) or OPTIONS[key][1]
-
-
-def _values(raw: dict, where: _Where) -> dict:
-    """The merged raw values checked and in SI: quantities parsed (positive; forces and
-    lengths of a cycle zero or more), numbers positive and finite, choices among theirs."""
-    from .units import UnitError, parse_quantity
-
-    out = {}
-    for key, value in raw.items():
-        kind, detail = OPTIONS[key]
-        if kind == "quantity":
-            try:
-                q = parse_quantity(value, detail)
-            except UnitError as exc:
-                where.fail(key, str(exc))
-            zero_ok = key in ("min_force", "fatigue_min_force")
-            if q < 0 or (q == 0 and not zero_ok):
-                where.fail(key, f"must be {'zero or more' if zero_ok else 'positive'}, "
-                                f"got {value!r}")
-            out[key] = q
-        elif kind == "number":
-            ok = isinstance(value, int | float) and not isinstance(value, bool)
-            if not (ok and math.isfinite(value) and value > 0.0):
-                where.fail(key, f"expected {detail}, got {value!r}")
-            out[key] = float(value)
-        elif kind == "flag":
-            if not isinstance(value, bool):
-                where.fail(key, f"expected true or false, got {value!r}")
-            out[key] = value
-        else:
-            allowed = _choices(key)
-            if value not in allowed:
-                where.fail(key, f"expected one of {', '.join(map(repr, allowed))}, "
-                                f"got {value!r}")
-            out[key] = value
-    return out
 
 
 def _lengths(v: dict, where: _Where) -> None:
@@ -229,18 +185,40 @@ def _lengths(v: dict, where: _Where) -> None:
 
 
 def merged(spec: str | Path | None, options: dict) -> tuple[dict, _Where, str | None, str]:
-    """The spec's values overridden by the options given (not None), checked, in SI; the
-    :class:`_Where` naming each value's origin, the literature problem and the name."""
-    table, problem, name = ({}, None, "spring") if spec is None else read_spring_spec(spec)
+    """The spec's values overridden by the options given (not None), read through the
+    governor spec's :class:`govopt.spec.Reader` (unknown keys with a did-you-mean, units,
+    types), in SI; the :class:`_Where` naming each value's origin, the literature problem and
+    the name."""
+    entries: list = []
     given = {k: v for k, v in options.items() if v is not None}
-    where = _Where(None if spec is None else str(spec), set(table) - set(given))
-    if problem:
-        for key in given:
-            if key not in SANDGREN_KEYS:
-                where.fail(key, f"not a value of the problem {problem!r} of {spec} (its "
-                                f"values: {', '.join(sorted(SANDGREN_KEYS))})")
-        return {**table, **given}, where, problem, name
-    return _values({**table, **given}, where), where, None, name
+    opts, sp, problem, name = _option_reader(given, entries), None, None, "spring"
+    if spec is not None:
+        from .spec import Reader, read_spec_data
+
+        top = Reader(str(spec), read_spec_data(spec), "", entries)
+        name = top.text("name") or Path(spec).stem
+        top.text("description")
+        if not top.has("spring"):
+            top.fail("spring", "missing (required: a [spring] table)")
+        sp = top.sub("spring")
+        top.finish()
+        problem = sp.choice("problem", PROBLEMS, None)
+        for key in SANDGREN_KEYS if problem else OPTIONS:
+            sp.raw(key, False)  # the keys allowed here
+        sp.finish()
+    allowed = SANDGREN_KEYS if problem else OPTIONS
+    from_file = set() if sp is None else {k for k in allowed if sp.has(k)} - set(given)
+    where = _Where(None if spec is None else str(spec), from_file)
+    for key in given:
+        if key not in allowed:
+            where.fail(key, f"not a value of the problem {problem!r} of {spec} (its "
+                            f"values: {', '.join(sorted(SANDGREN_KEYS))})")
+    values = {}
+    for key in allowed:
+        rd = opts if key in given else sp if key in from_file else None
+        if rd is not None:
+            values[key] = _read(rd, key, problem)
+    return values, where, problem, name
 
 
 def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
@@ -256,24 +234,21 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
     if (xlsx is not None or plots is not None) and problem:
         raise GovoptError(f"--xlsx, --plots: not for the literature problem {problem!r} "
                           "(its answer is the printed one)")
-    if xlsx is not None or plots is not None:
-        from .report.spring_outputs import check_outputs
-
-        check_outputs(xlsx, plots, stem, replace=replace,
-                      inputs=[] if spec is None else [spec])
     if problem == "sandgren-1990":
         return _sandgren(values, where, json_out)
-    for key, value in DEFAULTS.items():
-        values.setdefault(key, value)
-    out = _size(values, where, name, json_out)
-    if xlsx is not None:
-        from .report.spring_outputs import write_workbook
+    if xlsx is None and plots is None:
+        return _size({**DEFAULTS, **values}, where, name, json_out)
+    from .report import spring_outputs as so
+    from .report.files import overwrite_option
 
-        out.written.append(write_workbook(out, xlsx))
-    if plots is not None:
-        from .report.spring_outputs import write_plots
-
-        out.written += write_plots(out, plots, stem)
+    with overwrite_option("--replace"):  # this command's --force is the spring's force
+        so.check_outputs(xlsx, plots, stem, replace=replace,
+                         inputs=[] if spec is None else [spec])
+        out = _size({**DEFAULTS, **values}, where, name, json_out)
+        if xlsx is not None:
+            out.written.append(so.write_workbook(out, xlsx, replace=replace))
+        if plots is not None:
+            out.written += so.write_plots(out, plots, stem, replace=replace)
     return out
 
 
@@ -371,13 +346,16 @@ def _data(sizing, v: dict, name: str) -> dict:
            "duality_gap_log": sol.certificate.get("duality_gap_log"),
            "stored_energy_J": v["force"]**2 / (2.0 * sol.stiffness)}
     out["energy_per_mass_J_per_kg"] = out["stored_energy_J"] / sol.mass
+    out["free_length_m"] = sizing.free_length  # spring_sizing.lengths: one computation
+    if sizing.kind == "compression":
+        out["solid_length_m"] = sizing.solid_length
     if v.get("length_2") is not None:
-        out.update(installed_length_2_m=v["length_2"], stroke_m=v["stroke"],
-                   installed_length_1_m=v["length_2"] + v["stroke"],
-                   free_length_m=v["length_2"] + v["force"] / sol.stiffness)
+        # the stroke as given, else the spring's from F1 to F2 (L2 and a stiffness given)
+        H = v.get("stroke") or (v["force"] - (v.get("min_force") or 0.0)) / sol.stiffness
+        out.update(installed_length_2_m=v["length_2"], stroke_m=H,
+                   installed_length_1_m=v["length_2"] + H)
     if v.get("material") is not None:
         out.update({"material": v["material"], "kind": v["kind"],
-                    "free_length_m": sizing.free_length,
                     "initial_tension_N": sizing.initial_tension,
                     "checks": [c.to_dict() for c in sizing.checks], "notes": sizing.notes})
         life = body_life(sizing, v)
@@ -467,7 +445,7 @@ def _text(sizing, data: dict, v: dict) -> str:
         lines.append(f"free length {data['free_length_m'] * 1e3:.2f} mm, installed "
                      f"L1 = {data['installed_length_1_m'] * 1e3:.2f} mm at "
                      f"{v.get('min_force') or 0.0:.4g} N, L2 = {v['length_2'] * 1e3:.2f} mm at "
-                     f"{v['force']:.4g} N (stroke {v['stroke'] * 1e3:.2f} mm), stiffness "
+                     f"{v['force']:.4g} N (stroke {data['stroke_m'] * 1e3:.2f} mm), stiffness "
                      f"{sol.stiffness * 1e-3:.4f} N/mm")
     objective, bound = v["objective"], bound_text(sizing, v)
     if objective == "energy per mass":
@@ -502,10 +480,9 @@ def _text(sizing, data: dict, v: dict) -> str:
 
 
 def _sandgren(raw: dict, where: _Where, json_out: bool) -> Outcome:
-    """Sandgren's (1990) mixed-discrete spring with the spec's data (inch, lbf, psi inside,
-    as the problem is stated): the exact optimum by enumeration."""
+    """Sandgren's (1990) mixed-discrete spring with the spec's data (SI in ``raw``; inch, lbf,
+    psi inside, as the problem is stated): the exact optimum by enumeration."""
     from .optimize.spring_literature import SANDGREN, solve_sandgren
-    from .units import UnitError, parse_quantity
 
     inch, lbf = 0.0254, 4.4482216152605
     scale = {"length": inch, "force": lbf, "stress": lbf / inch**2}
@@ -514,15 +491,8 @@ def _sandgren(raw: dict, where: _Where, json_out: bool) -> Outcome:
              "max_outer_diameter": "D_max", "max_preload_deflection": "delta_pm",
              "min_working_deflection": "delta_w"}
     p = dict(SANDGREN)
-    for key, value in raw.items():
-        dim = SANDGREN_KEYS[key]
-        try:
-            q = parse_quantity(value, dim)
-        except UnitError as exc:
-            where.fail(key, str(exc))
-        if not q > 0.0:
-            where.fail(key, f"must be positive, got {value!r}")
-        p[names[key]] = q / scale[dim]
+    for key, q in raw.items():  # SI (read by merged) -> the problem's units
+        p[names[key]] = q / scale[SANDGREN_KEYS[key]]
     if not p["F_load"] < p["F_max"]:
         where.fail("min_force", "expected below the force")
     best = solve_sandgren(p)
@@ -545,4 +515,4 @@ def _sandgren(raw: dict, where: _Where, json_out: bool) -> Outcome:
     return Outcome(text, data)
 
 
-__all__ = ["DEFAULTS", "OBJECTIVES", "OPTIONS", "Outcome", "merged", "read_spring_spec", "run"]
+__all__ = ["DEFAULTS", "OBJECTIVES", "OPTIONS", "Outcome", "merged", "run"]

@@ -57,3 +57,40 @@ def test_a_kept_placeholder_gives_the_real_modules_names(tmp_path):
                      "      cvxpy.OPT.brentq(lambda x: x - 2, 0, 3))",
                      PYTHONPATH=fake_cvxpy(tmp_path, "import scipy.optimize as OPT\n"))
     assert out == "False 2.0"
+
+
+def test_scipy_special_and_numpys_test_modules_load_only_when_used():
+    """cvxpy loads without scipy.special, scipy.linalg, scipy.sparse.linalg and numpy's
+    testing/f2py/ma (issue 22, CPU of `govopt spring`); numpy's ``__all__`` and ``dir()`` are its
+    own afterwards, scipy's copy of numpy gives the deferred submodules on first use, and
+    cvxpy's code that uses those modules gets the real functions when it calls them."""
+    out = run_python(
+        "import sys, numpy\n"
+        "own = (list(numpy.__all__), sorted(dir(numpy)))\n"
+        "from govopt.optimize._cvxpy import cvxpy as cp\n"
+        "late = {'scipy.special', 'numpy.testing', 'numpy.f2py', 'numpy.ma', 'unittest',\n"
+        "        'scipy.linalg', 'scipy.sparse.linalg'}\n"
+        "print(sorted(late & set(sys.modules)), own == (numpy.__all__, sorted(dir(numpy))))\n"
+        "import scipy._lib.array_api_compat.numpy as copy\n"
+        "print(copy.testing is numpy.testing, copy.ma is numpy.ma)\n"
+        "import scipy.special as sp\n"
+        "x = numpy.array([0.5, 2.0])\n"
+        "print(numpy.array_equal(cp.entr(x).value, sp.entr(x)),\n"
+        "      numpy.array_equal(cp.kl_div(x, x[::-1]).value, sp.kl_div(x, x[::-1])),\n"
+        "      cp.log_sum_exp(x).value == sp.logsumexp(x))\n"
+        "import scipy.linalg, scipy.sparse, scipy.sparse.linalg\n"
+        "from cvxpy.utilities import linalg as L\n"
+        "from cvxpy.reductions.solvers.conic_solvers import cvxopt_conif as C\n"
+        "A = scipy.sparse.csc_array(numpy.diag([1.0, 2.0, 3.0]))\n"
+        "print(L.la.eigh is scipy.linalg.eigh, L.sparla.svds is scipy.sparse.linalg.svds,\n"
+        "      round(float(C.eigsh(A, k=1)[0][0]), 9))")
+    assert out.splitlines() == ["[] True", "True True", "True True True", "True True 3.0"]
+
+
+def test_cvxpy_using_more_of_scipy_special_as_it_loads_is_imported_as_usual(tmp_path):
+    out = run_python("import sys\n"
+                     "from govopt.optimize._cvxpy import cvxpy\n"
+                     "print(cvxpy.gamma(5.0), 'placeholder' in (sys.modules['scipy.special']"
+                     ".__doc__ or ''))",
+                     PYTHONPATH=fake_cvxpy(tmp_path, "from scipy.special import gamma\n"))
+    assert out == "24.0 False"

@@ -59,7 +59,16 @@ def test_bad_spring_options_are_refused_in_one_line(extra, option):
     result = invoke([*SH, *extra])
     assert result.exit_code == 2
     lines = result.output.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith(f"error: {option}: expected")
+    assert len(lines) == 1 and lines[0].startswith(f"error: {option}: ")
+    assert lines[0].split(": ", 2)[2].startswith(("expected", "must be positive"))
+
+
+def test_spring_options_are_read_as_a_governor_spec_is():
+    """One reader (govopt.spec.Reader) for spring options, spring specs and governor specs: an
+    absurd count is refused as an input, not sent to the optimiser."""
+    result = invoke([*SH, "--turns-min", "1e308"])
+    assert result.exit_code == 2
+    assert result.output.strip() == "error: --turns-min: 1e+308 is too large a number"
 
 
 def test_grade_without_one_shear_modulus_names_the_option():
@@ -156,8 +165,8 @@ def test_fatigue_past_the_data_says_so_in_the_verdict():
      "allowable stress x"),
     (["--material", "EN10270-1 SH", "--fatigue-min-force", "100 N", "--fatigue-max-force",
       "1e9 N"], "maximum wire diameter x"),
-    (["--material", "EN10270-1 SH", "--turns-min", "1e308"], "minimum active turns x"),
-    (["--allowable-stress", "600 MPa", "--shear-modulus", "81.5 GPa", "--turns-min", "1e308"],
+    (["--material", "EN10270-1 SH", "--turns-min", "1e11"], "minimum active turns x"),
+    (["--allowable-stress", "600 MPa", "--shear-modulus", "81.5 GPa", "--turns-min", "1e11"],
      "minimum active turns x"),
 ])
 def test_infeasible_spring_names_the_limit_and_the_factor(extra, limit):
@@ -241,3 +250,48 @@ def test_sandgren_mixed_discrete_spring_reproduces_the_best_known_optimum():
     assert 0 < g[7] < 1e-3
     g, _ = sl.sandgren_constraints(7.0, np.linspace(0.7, 2.9, 50), 0.263)
     assert np.abs(g[6]).max() < 1e-9
+
+
+@pytest.mark.parametrize(("extra", "limit", "key"), [
+    (["--stiffness", "20 N/mm", "--material", "EN10270-1 SH"], "free length",
+     "--max-free-length"),
+    (["--stiffness", "20 N/mm", "--allowable-stress", "600 MPa", "--shear-modulus", "81.5 GPa"],
+     "solid length", "--max-solid-length"),
+    (["--min-force", "200 N", "--length-1", "30 mm", "--material", "EN10270-1 SH"],
+     "working length", "--length-2"),
+])
+def test_infeasible_space_names_the_limit_and_the_factor_that_suffices(extra, limit, key):
+    """The space's limits (free, solid, installed length) are GP rows the diagnosis may move
+    too (before, it saw only the table's rows and said "feasible: no limit needs to move"):
+    it names the limit and the factor, and that factor (+1 %) makes a spring."""
+    import re
+
+    value = 10.0  # mm: too short for 500 N in every case
+    args = ["spring", "--force", "500 N", *extra]
+    result = invoke([*args, key, f"{value} mm"])
+    assert result.exit_code == 2 and "no spring meets these requirements: infeasible" in \
+        result.output, result.output
+    factor = max(float(x) for x in re.findall(rf"{limit} x([0-9.e+]+)", result.output))
+    assert factor > 1.0
+    if key == "--length-2":  # the stroke stays 20 mm: L1 moves with L2
+        extra = [x if x != "30 mm" else f"{value * factor * 1.01 + 20.0} mm" for x in extra]
+        args = ["spring", "--force", "500 N", *extra]
+    ok = invoke([*args, key, f"{value * factor * 1.01} mm", "--json"])
+    assert ok.exit_code in (0, 1), ok.output  # a spring (its checks reported)
+
+
+def test_step_table_grade_has_an_honest_bound():
+    """EN 10270-3's R_m is a step per diameter row: the GP's local tangent does not lie above
+    it (a thinner row is stronger than the tangent says), so its optimum is no bound. The
+    certified bound is the GP with the fit raised over every row's end: below the design and
+    below the best spring in the neighbouring rows, and the claim is 'within X %'."""
+    from govopt.optimize.spring_sizing import size_spring
+
+    kw = dict(grade="EN10270-3 1.4310", C_max=12.0, n_min=3.0)
+    s = size_spring(500.0, 1e4, **kw)
+    assert s.solution.ok and s.passed and not s.certified
+    assert 0.0 < s.gap < 0.1
+    for rows in (dict(d_max=3.0e-3), dict(d_min=3.5001e-3)):  # the stronger, the weaker row
+        other = size_spring(500.0, 1e4, **kw, **rows)
+        assert other.solution.mass >= s.lower_bound
+        assert other.solution.mass >= s.solution.mass  # this design is the best of the three

@@ -41,7 +41,7 @@ def test_spec_file_equals_the_options_and_options_override_it():
     ('[spring]\nforce = "500 m"\n', "spring.force: '500 m' is not a force"),
     ('[spring]\nforse = "500 N"\n', "spring.forse: unknown key (did you mean 'force'?"),
     ('[spring]\nforce = "500 N"\nturns_min = "3"\n',
-     "spring.turns_min: expected a positive number of turns, got '3'"),
+     "spring.turns_min: expected a finite number, got '3'"),
     ('[spring]\nforce = "500 N"\nkind = "torsion"\n', "spring.kind: expected one of"),
     ('name = "x"\n', "spring: missing (required: a [spring] table)"),
     ('[spring]\nforce = "500 N"\n', "spring.stiffness: required"),
@@ -225,11 +225,49 @@ def test_workbook_and_plots(tmp_path):
     assert sorted(p.name for p in folder.iterdir()) == [
         f"spring-{k}.{x}" for k in ("fatigue", "force-length") for x in ("png", "svg")]
     again = invoke(["spring", *args, "--xlsx", str(book)])
-    assert again.exit_code == 2 and "already exists; use --replace" in again.output
+    assert again.exit_code == 2
+    assert again.output.strip() == f"error: {book}: workbook already exists; use --replace to " \
+        "replace it"  # this command's option (its --force is the spring's force)
+    plot = folder / "spring-force-length.svg"
+    mtime = plot.stat().st_mtime_ns
+    refused = invoke(["spring", *args, "--plots", str(folder)])
+    assert refused.exit_code == 2 and "use --replace" in refused.output
+    assert plot.stat().st_mtime_ns == mtime
     assert invoke(["spring", *args, "--xlsx", str(book), "--replace"]).exit_code == 0
     none = tmp_path / "none.xlsx"
     bad = invoke(["spring", *args, "--max-outer-diameter", "1 mm", "--xlsx", str(none)])
     assert bad.exit_code == 2 and not none.exists()
+
+
+@pytest.mark.parametrize("extra", [[], ["--kind", "extension"], ["--length-2", "80 mm"]])
+def test_force_length_plot_and_table_read_one_computation(extra):
+    """Without a wire grade too, the workbook's force-length table and the plot have the same
+    free and solid lengths: the sizing's (spring_sizing.lengths), also in the JSON."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from govopt import spring_command
+    from govopt.report import spring_outputs as so
+
+    args = dict(force="500 N", stiffness="10 N/mm", allowable_stress="600 MPa",
+                shear_modulus="81.5 GPa",
+                **{extra[i][2:].replace("-", "_"): extra[i + 1] for i in range(0, len(extra), 2)})
+    out = spring_command.run(**args)
+    sizing = out.sizing
+    table = so._force_length_points(out)
+    fig, ax = plt.subplots()
+    so.force_length(sizing, out.values, ax, "s")
+    line = ax.lines[0].get_xdata() / 1e3  # the spring's line, mm
+    plt.close(fig)
+    assert table[0][0] == pytest.approx(sizing.free_length, rel=1e-12) == line[0] \
+        == out.data["free_length_m"]
+    if sizing.kind == "compression":
+        assert table[-1][0] == sizing.solid_length == line[-1] == out.data["solid_length_m"]
+        assert sizing.solid_length < sizing.least_length < sizing.free_length
+    if "--length-2" in extra:
+        assert sizing.free_length == pytest.approx(0.080 + 500.0 / sizing.solution.stiffness)
 
 
 def test_long_installed_lengths_pass_their_solid_stress_and_pitch():
@@ -251,3 +289,22 @@ def test_long_installed_lengths_pass_their_solid_stress_and_pitch():
     assert out["lower_bound"] < out["mass_kg"] and math.isfinite(out["gap_to_bound"])
     text = invoke(["spring", *args]).output
     assert f"optimal within {100 * out['gap_to_bound']:.3g} % of a certified bound" in text
+
+
+def test_a_file_that_appears_during_the_run_is_not_replaced_without_replace(tmp_path):
+    """The workbook is written with the run's --replace, not always replacing: a file that
+    appeared after the check survives, and the message names this command's option."""
+    from govopt import spring_command
+    from govopt.errors import GovoptError
+    from govopt.report import spring_outputs as so
+    from govopt.report.files import overwrite_option
+
+    out = spring_command.run(force="500 N", stiffness="10 N/mm", allowable_stress="600 MPa",
+                             shear_modulus="81.5 GPa")
+    book = tmp_path / "s.xlsx"
+    book.write_text("someone else's")
+    with overwrite_option("--replace"), pytest.raises(GovoptError, match="use --replace"):
+        so.write_workbook(out, book, replace=False)
+    assert book.read_text() == "someone else's"
+    with pytest.raises(GovoptError, match="use --force"):  # every other command's option
+        so.write_workbook(out, book, replace=False)

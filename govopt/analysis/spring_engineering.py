@@ -420,16 +420,16 @@ def allowable_monomial(spec, d_lo: float, d_hi: float) -> tuple[float, float]:
     in ``[d_lo, d_hi]``: the spec's explicit allowable (``m = 0``), else the grade's rule
     ``fraction R_m(d)`` fitted by least squares in ``lg R_m`` against ``lg d`` (R_m falls with
     ``d`` as a near power law: Shigley Table 10-4's ``A / d^m``), then raised until it lies above
-    the rule at 513 log-spaced wires and the table's nodes. A monomial keeps the spring GP a GP;
-    lying above makes it a relaxation (its optimum a lower bound)."""
+    the rule at 513 log-spaced wires and the table's nodes (a step table's row ends). A
+    monomial keeps the spring GP a GP; lying above makes it a relaxation (its optimum a lower
+    bound)."""
     m_, kind = spec.material, KINDS[spec.governor.spring]
     if m_.allowable_shear_stress is not None:
         return float(m_.allowable_shear_stress), 0.0
     mat = wire(m_)
     d = np.geomspace(d_lo, d_hi, 513)
-    if mat.rm["kind"] == "table":
-        nodes = np.asarray(mat.rm["d_mm"], dtype=float) * mt.MM
-        d = np.union1d(d, nodes[(nodes > d_lo) & (nodes < d_hi)])
+    nodes = mat.rm_nodes  # a table's nodes, a step table's row ends: where R_m d^m peaks
+    d = np.union1d(d, nodes[(nodes > d_lo) & (nodes < d_hi)])
     allow = mt.allowable_static_stress(mat, d, kind, m_.rules)
     ok = np.isfinite(allow) & (allow > 0)
     if not np.any(ok):

@@ -15,13 +15,12 @@ on demand).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
-from govopt.requirements import GP_BOUNDS
+from govopt.requirements import GP_BOUNDS, GPForm
 from govopt.springs import helical as hx
 
 #: Stand-ins for "no limit" (the GP needs a positive number for every parameter).
@@ -50,29 +49,6 @@ _UPPER_KEYS = {"d_max", "r_max", "n_max", "C_max", "D_out_max", "L_body_max"}
 MATERIAL_KEYS = ("F_max", "k_s", "G", "density")
 
 
-@dataclass(frozen=True)
-class GPConstraint:
-    """One named constraint ``g(x) <sense> limit``.
-
-    ``g_exps`` are the exponents of the parameters appearing in ``g`` itself (``g`` is a monomial
-    in the parameters), used to turn duals into parameter sensitivities.
-    """
-
-    name: str
-    limit: str
-    sense: str  # "upper": g <= limit, "lower": g >= limit, "equal": g == limit
-    g: Callable[..., Any]
-    g_exps: tuple[tuple[str, float], ...] = ()
-    source: str = ""
-
-    def log_exponents(self) -> dict[str, float]:
-        """Parameter exponents in cvxpy's ``log(args[0]) - log(args[1])`` for this constraint."""
-        sign = -1.0 if self.sense == "lower" else 1.0  # cvxpy stores g >= c as c <= g
-        out = {k: sign * e for k, e in self.g_exps}
-        out[self.limit] = out.get(self.limit, 0.0) - sign
-        return out
-
-
 def stress_g(d, r, n, t, P, correction):
     # F = F_max + force_per_stiffness * kappa(d, r, n): a posynomial (the second term is ~0
     # unless force_per_stiffness is given)
@@ -90,7 +66,7 @@ def _stiffness_g(d, r, n, P):
 
 
 def gp_constraints(correction: str, stiffness: str,
-                   allowable_exponent: float = 0.0) -> list[GPConstraint]:
+                   allowable_exponent: float = 0.0) -> list[GPForm]:
     """The constraint table; ``allowable_exponent`` ``m``: the allowable stress is
     ``k_s d^-m`` (a wire grade's ``R_m ~ A d^-m``, a monomial), so the stress limit reads
     ``tau d^m <= k_s``."""
@@ -98,23 +74,22 @@ def gp_constraints(correction: str, stiffness: str,
     hamabe = "Hamabe, Example 1"
     out = []
     if stiffness == "equality":
-        out.append(GPConstraint("stiffness", "kappa", "equal",
-                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
+        out.append(GPForm("stiffness", "kappa", "equal",
+                          lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
     else:
-        out.append(GPConstraint("minimum stiffness", "kappa_min", "lower",
-                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
-        out.append(GPConstraint("maximum stiffness", "kappa_max", "upper",
-                         lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
+        out.append(GPForm("minimum stiffness", "kappa_min", "lower",
+                          lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
+        out.append(GPForm("maximum stiffness", "kappa_max", "upper",
+                          lambda d, r, n, t, P: _stiffness_g(d, r, n, P), (("G", 1.0),), hamabe))
     stress_src = hamabe + {"wahl": "; Wahl 1944 eq. 2-12",
                            "bergstrasser": "; Bergstraesser, EN 13906-1, Shigley eq. (10-5)"
                            }.get(correction, "")
-    out.append(GPConstraint("allowable stress", "k_s", "upper",
-                            lambda d, r, n, t, P: stress_g(d, r, n, t, P, correction) * d**m
-                            if m else stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
-                            stress_src))
+    out.append(GPForm("allowable stress", "k_s", "upper",
+                      lambda d, r, n, t, P: stress_g(d, r, n, t, P, correction) * d**m
+                      if m else stress_g(d, r, n, t, P, correction), (("F_max", 1.0),),
+                      stress_src))
     # the bounds and the spring's requirements: their rows' GP forms (govopt.requirements)
-    out += [GPConstraint(f.name, f.limit, f.sense, f.g, f.g_exps, f.source)
-            for f in GP_BOUNDS.values()]
+    out += list(GP_BOUNDS.values())
     return out
 
 

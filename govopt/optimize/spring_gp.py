@@ -57,6 +57,7 @@ from typing import Any
 
 import numpy as np
 
+from govopt.requirements import GPForm
 from govopt.springs import helical as hx
 
 from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize
@@ -64,7 +65,6 @@ from ._cvxpy import installed_solvers
 from .gp_table import (
     DEFAULT_BOUNDS,
     MATERIAL_KEYS,
-    GPConstraint,
     complete_values,
     gp_constraints,
     stress_g,
@@ -549,7 +549,7 @@ class SpringGP:
             g = base
         return [16.0 / np.pi * F * g * d**m <= self.free_length_params["k_solid"]]
 
-    def _constraint(self, s: GPConstraint, slack=None):
+    def _constraint(self, s: GPForm, slack=None):
         g = s.g(self.d, self.r, self.n, self.t, self.params)
         c = self.params[s.limit]
         if s.sense == "upper":
@@ -606,13 +606,7 @@ class SpringGP:
         ``certify=True`` adds an independent KKT check (stationarity, complementary slackness,
         feasibility) evaluated from the cvxpy expressions at the returned point.
         """
-        extra = {k: values.pop(k, None) for k in FREE_LENGTH_KEYS}
-        extra = {k: _FREE_LENGTH_DEFAULTS.get(k, 1e9) if x is None else x
-                 for k, x in extra.items()}
-        for k, p in self.free_length_params.items():
-            p.value = float(extra[k])
-        v = self.values(**values)
-        self._assign(v)
+        v = self._assign_all(values)
         status, raw, elapsed = self._run(self.problem)
         sol = SpringSolution(status=status, objective_name=self.objective_name,
                              correction=self.correction, solver_status=self.problem.status,
@@ -629,6 +623,17 @@ class SpringGP:
                 and sol.certificate["kkt_complementarity"] <= 1e-6
                 and sol.certificate["kkt_primal_infeasibility"] <= 1e-6)
         return sol
+
+    def _assign_all(self, values: dict) -> dict[str, float]:
+        """Set the parameters: the :data:`FREE_LENGTH_KEYS` given (or far off, as their
+        defaults say) and the table's values (completed, checked); returns the latter."""
+        extra = {k: values.pop(k, None) for k in FREE_LENGTH_KEYS}
+        for k, p in self.free_length_params.items():
+            x = extra[k]
+            p.value = float(_FREE_LENGTH_DEFAULTS.get(k, 1e9) if x is None else x)
+        v = self.values(**values)
+        self._assign(v)
+        return v
 
     def _fill(self, sol: SpringSolution, v: Mapping[str, float]) -> None:
         sol.set_design(*(float(x.value) for x in (self.d, self.r, self.n)), v, self.correction)
@@ -723,9 +728,14 @@ class SpringGP:
 
     # -- infeasibility diagnosis ---------------------------------------------------------------
 
+    def _limit_names(self) -> list[str]:
+        """The limits the diagnosis may move: the table's rows, then the named constraints
+        beyond it (the space, the free and solid lengths, buckling's bounds)."""
+        return [s.name for s in self.specs] + list(self.named)
+
     def _relaxed_problem(self) -> dict[str, Any]:
         if self._relaxed is None:
-            m = len(self.specs)
+            m = len(self.specs) + len(self.named)
             s = cp.Variable(m, pos=True, name="slack")
             smax = cp.Parameter(m, pos=True, name="slack_max")
             cons_by_name: dict[str, list] = {}
@@ -735,6 +745,10 @@ class SpringGP:
                 c = c if isinstance(c, list) else [c]
                 cons_by_name[spec.name] = c
                 cons += c
+            for i, (name, c) in enumerate(self.named.items(), start=len(self.specs)):
+                lhs, rhs = c.args  # posynomial <= monomial: its right side scaled
+                cons_by_name[name] = [lhs <= rhs * s[i]]
+                cons += cons_by_name[name]
             cons += [s <= smax, s >= 1.0] + self._internal()
             prob = cp.Problem(cp.Minimize(cp.prod(s)), cons)
             if not prob.is_dgp(dpp=True):  # pragma: no cover
@@ -752,11 +766,10 @@ class SpringGP:
         Limits named in ``fixed`` may not move. Then, for each movable limit, solves again with
         only that one free (``single_fixes``).
         """
-        v = self.values(**values)
-        self._assign(v)
+        self._assign_all(dict(values))
         rel = self._relaxed_problem()
         fixed = set(fixed)
-        names = [s.name for s in self.specs]
+        names = self._limit_names()
         unknown = fixed - set(names)
         if unknown:
             raise ValueError(f"unknown constraint names {sorted(unknown)}; known: {names}")
@@ -793,11 +806,15 @@ class SpringGP:
         return diag
 
     def _limit_factors(self) -> dict[str, float]:
-        """``g / limit`` for every named constraint at the current variable values."""
+        """``g / limit`` for every named constraint at the current variable values (the
+        constraints beyond the table: left side over right side)."""
         out = {}
         for s in self.specs:
             g = s.g(self.d, self.r, self.n, self.t, self.params)
             out[s.name] = float(g.value) / float(self.params[s.limit].value)
+        for name, c in self.named.items():
+            lhs, rhs = c.args
+            out[name] = float(lhs.value) / float(rhs.value)
         return out
 
     # -- discrete catalogue --------------------------------------------------------------------

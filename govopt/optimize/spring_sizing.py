@@ -6,7 +6,9 @@ stiffness and largest force, certified global). With a grade (:mod:`govopt.sprin
 the allowable static stress is the standard's rule ``fraction R_m(d)`` (EN 13906-1/-2 or
 Shigley); the GP takes it as a monomial ``k d^-m``, the rule's tangent in log-log at the
 centre of a window of wire diameters about the solution,
-re-fitted until the wire settles at the window's centre (the tangent of the rule there). Then
+re-fitted until the wire settles at the window's centre (the tangent of the rule there). The
+certified lower bound is that GP's, or where the tangent does not lie above the rule over all
+the grade's wires (a step table's rows) the same GP with the fit raised until it does. Then
 the spring kind's own table
 (:mod:`govopt.springs.checks`) is evaluated on the GP's spring: a compression spring gets the
 least free length that keeps the coils clear at the largest force (EN 13906-1: ``L0 = L_c +
@@ -75,6 +77,10 @@ class Sizing:
     cycles: float = 1e7
     #: why no spring was found (the relaxed GP's diagnosis), empty when one was
     diagnosis: str = ""
+    #: a compression spring's solid length ``L_c`` and least working length ``L_n = L_c +
+    #: S_a`` (m, EN 13906-1; nan for extension), set with the free length by :func:`lengths`
+    solid_length: float = math.nan
+    least_length: float = math.nan
 
     @property
     def gap(self) -> float:
@@ -159,8 +165,9 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         sol = gp.solve(certify=True, **rate, F_max=F_max, k_s=k_s, G=G, density=density,
                        **space, **bounds)
         why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
-            gp, **rate, F_max=F_max, k_s=k_s, G=G, density=density, **bounds)
-        return Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why)
+            gp, **rate, F_max=F_max, k_s=k_s, G=G, density=density, **space, **bounds)
+        return lengths(Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why), F_max, ends,
+                       L2)
     mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
     if not isinstance(mat.G, float):
         raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire diameter "
@@ -195,12 +202,12 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 extra.update(k_solid=k_c, s_over_D_max=stable)
             gp = cached_gp(objective, correction, mode, m, Q, slender is not None, m_c,
                             envelope)
-            sol = gp.solve(**rate, F_max=F_max, k_s=k * factor, G=G,
-                           density=density, **{**bounds, "d_min": lo, "d_max": hi}, **extra)
+            values = dict(**rate, F_max=F_max, k_s=k * factor, G=G, density=density,
+                          **{**bounds, "d_min": lo, "d_max": hi}, **extra)
+            sol = gp.solve(**values)
+            state["fit"] = (gp, values, k, m, m_c)
             if not sol.ok:
-                text = diagnose(gp, **rate, F_max=F_max, k_s=k * factor, G=G,
-                                density=density, **{**bounds, "d_min": lo, "d_max": hi}
-                                ) if sol.status == "infeasible" else sol.status
+                text = diagnose(gp, **values) if sol.status == "infeasible" else sol.status
                 if factor < 1.0:
                     text += (f" (with the allowable lowered to {factor:.3g} of the rule's for "
                              "the fatigue or hook rows)")
@@ -217,20 +224,65 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                             if (c.unit == "Pa" and c.sense == "<=") or "fatigue" in c.name),
                            default=math.inf)
 
-    sizing, worst = attempt(1.0)
-    bound = _bound(sizing.solution)  # the GP is a relaxation of the rows: a lower bound
-    if L2 is not None:  # there the design's GP restricts; its relaxation bounds
+    def certified_bound(sizing) -> float:
+        """The bound of the GP just solved (at the rule's own allowable), made valid for every
+        wire: the monomial fit raised to lie above the rule over the grade's diameters
+        (:func:`_domination`), the GP solved again with it when it had to rise (a step table's
+        rows, an interpolated table's kinks); a concave rule's tangent already lies above."""
+        gp, values, k, m, m_c = state["fit"]
+        if not sizing.solution.ok:
+            return math.nan
+        raised = {"k_s": _domination(mat, place, rules, k_s, k, m, lo, hi)}
+        if m_c is not None:
+            raised["k_solid"] = _domination(mat, "solid", rules, None, values["k_solid"], m_c,
+                                            lo, hi)
+        if all(f <= 1.0 + 2e-6 for f in raised.values()):
+            return _bound(sizing.solution)
+        relaxed_sol = gp.solve(**{**values, **{key: values[key] * f
+                                               for key, f in raised.items()}})
+        return _bound(relaxed_sol)
+
+    if L2 is not None:  # there the design's GP restricts; its relaxation bounds: first
         loose, _ = attempt(1.0, relax=True)
-        bound = _bound(loose.solution)
-        if loose.solution.ok and loose.passed:  # the relaxation's design passes: optimal
-            loose.lower_bound, loose.cycles = bound, cycles
+        bound = certified_bound(loose)
+        if not loose.solution.ok:  # nor can the restriction be met: the relaxation's diagnosis
             return loose
+        if loose.passed:  # the relaxation's design passes: optimal
+            loose.lower_bound, loose.cycles = bound, cycles
+            return lengths(loose, F_max, ends, L2)
+        state["window"] = (lo, hi)  # the design's GP fitted afresh, as without the relaxation
+    sizing, worst = attempt(1.0)
+    if L2 is None:
+        bound = certified_bound(sizing)  # the GP is a relaxation of the rows: a lower bound
     sizing = _stress_search(attempt, sizing, worst)
     if sizing.solution.ok and kind == "compression":
         sizing = _buckling_search(attempt, sizing, stable)
     if sizing.solution.ok and L2 is not None:
         sizing = _installed_search(attempt, sizing, state, L2, ends)
     sizing.lower_bound, sizing.cycles = bound, cycles
+    return lengths(sizing, F_max, ends, L2)
+
+
+def lengths(sizing: Sizing, F_max: float, ends: str, L2: float | None = None) -> Sizing:
+    """The sized spring's lengths, computed once for every output (text, JSON, workbook and
+    force-length plot read them). A compression spring: its solid length ``L_c``
+    (:func:`govopt.springs.helical.solid_length`, EN 13906-1 by the end form), least working
+    length ``L_n = L_c + S_a`` (EN 13906-1, dynamic) and, where the checks did not set it (no
+    grade), its free length ``L2 + F_max / R`` or ``L_n + F_max / R`` as :func:`_kw`. An
+    extension spring: the free length of its ``n + end coils - 2`` body coils (EN 13906-2,
+    :func:`govopt.springs.helical.extension_free_length`). Lengths in m, ``F_max`` in N."""
+    sol = sizing.solution
+    if not sol.ok:
+        return sizing
+    d, D, n, n_t = sol.d, 2.0 * sol.r, sol.n, sol.n + sol.end_coils
+    if sizing.kind == "compression":
+        sizing.solid_length = float(hx.solid_length(d, n_t, ends))
+        sizing.least_length = float(hx.min_working_length(d, D, n, n_t, ends, dynamic=True))
+        if not math.isfinite(sizing.free_length):
+            sizing.free_length = (sizing.least_length if L2 is None else L2) \
+                + F_max / sol.stiffness
+    elif not math.isfinite(sizing.free_length):
+        sizing.free_length = float(hx.extension_free_length(d, D, n_t - 2.0))
     return sizing
 
 
@@ -359,16 +411,32 @@ def _stress_search(attempt, sizing, worst):
     return sizing
 
 
+def _domination(mat, place, rules, k_s, k, m, lo, hi) -> float:
+    """How far ``k d^-m`` must rise to lie on or above the rule's allowable at every wire in
+    ``[lo, hi]`` (m): the largest ``allowable d^m / k`` at 513 log-spaced wires and the
+    table's nodes (a step table's row ends, where a row's ``allowable d^m`` peaks), at least 1
+    (an explicit ``k_s``: 1)."""
+    if k_s is not None:
+        return 1.0
+    d = np.geomspace(lo, hi, 513)
+    nodes = mat.rm_nodes
+    d = np.union1d(d, nodes[(nodes > lo) & (nodes < hi)])
+    allow = mt.allowable_static_stress(mat, d, place, rules)
+    ok = np.isfinite(allow)
+    return max(1.0, float(np.max(allow[ok] * d[ok] ** m) / k)) if np.any(ok) else 1.0
+
+
 def _monomial(mat, place, rules, k_s, lo, hi):
     """``(k, m)``: the rule's allowable as ``k d^-m``, tangent in log-log at the window's
-    geometric centre and shaved by 1e-6 (an explicit ``k_s``: m = 0). Once the wire settles at
+    geometric centre (:meth:`~govopt.springs.materials.Material.strength_exponent`: a step
+    table's trend) and shaved by 1e-6 (an explicit ``k_s``: m = 0). Once the wire settles at
     the centre, the GP's stress limit is the rule's at that wire."""
     if k_s is not None:
         return float(k_s), 0.0
-    dc, h = math.sqrt(lo * hi), 1e-4
-    a = mt.allowable_static_stress(mat, dc * np.exp([-h, 0.0, h]), place, rules)
-    m = -float(np.log(a[2] / a[0]) / (2.0 * h))
-    return float(a[1] * dc**m * (1.0 - 1e-6)), m
+    dc = math.sqrt(lo * hi)
+    m = mat.strength_exponent(dc)  # the rule is a fraction of R_m: R_m's exponent
+    a = float(mt.allowable_static_stress(mat, dc, place, rules))
+    return float(a * dc**m * (1.0 - 1e-6)), m
 
 
 def _checked(sol, kind, mat, F_min, F_max, fatigue, *, rules, k_s, correction, peened,
@@ -386,7 +454,7 @@ def _checked(sol, kind, mat, F_min, F_max, fatigue, *, rules, k_s, correction, p
                   initial_tension=float(kw.get("F0", math.nan)))
 
 
-__all__ = ["KINDS", "Sizing", "diagnose", "end_coils", "size_spring"]
+__all__ = ["KINDS", "Sizing", "diagnose", "end_coils", "lengths", "size_spring"]
 
 
 def _ratio(check) -> float:

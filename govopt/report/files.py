@@ -6,7 +6,8 @@ into place, so the output is either absent, the previous file, or the complete n
 temporary file is removed on every exit path Python sees (exceptions, ``SystemExit`` from the
 CLI's SIGTERM handler, Ctrl-C); one left by a run killed with SIGKILL is removed by the next
 write into that folder (its process is gone) and otherwise never looked at. Only a regular file
-is ever replaced, and only with ``overwrite=True`` (the CLI's ``--force``); a new file gets mode
+is ever replaced, and only with ``overwrite=True`` (the CLI's ``--force``, ``govopt spring``'s
+``--replace``: :func:`overwrite_option`); a new file gets mode
 0666 minus the umask, a replaced file keeps its mode.
 """
 
@@ -32,6 +33,10 @@ _TMP_TAG = ".govopt-tmp-"
 _TMP_NAME = re.compile(r"\..*\.govopt-tmp-(\d+)-[0-9a-f]+")
 _CLOEXEC = getattr(os, "O_CLOEXEC", 0)
 _OVERWRITE = contextvars.ContextVar("govopt_overwrite", default=True)
+#: the running command's option that allows replacing (:func:`overwrite_option`), named in
+#: the "already exists" messages: ``--force``, but ``govopt spring`` spells it ``--replace``
+#: (its ``--force`` is the spring's force)
+_OPTION = contextvars.ContextVar("govopt_overwrite_option", default="--force")
 _KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISCHR, "a character device"),
           (stat.S_ISBLK, "a block device"), (stat.S_ISFIFO, "a FIFO"), (stat.S_ISSOCK, "a socket"))
 
@@ -142,7 +147,7 @@ def check_output(path: str | Path, *, overwrite: bool = False, inputs: Iterable 
             raise GovoptError(f"{path}: cannot write {what}: it is the same file as {role} "
                               f"({other})")
     if st is not None and not overwrite:
-        raise GovoptError(f"{path}: {what} already exists; use --force to replace it")
+        raise GovoptError(f"{path}: {what} already exists; use {_OPTION.get()} to replace it")
     tmp = None
     try:  # a probe, so that an unwritable folder fails now rather than after the run
         with _signals_held():
@@ -166,6 +171,17 @@ def overwrite_policy(allowed: bool):
         yield
     finally:
         _OVERWRITE.reset(token)
+
+
+@contextlib.contextmanager
+def overwrite_option(option: str):
+    """Within this block, messages of files that exist name ``option`` (the running command's
+    way to allow replacing them) instead of ``--force``."""
+    token = _OPTION.set(option)
+    try:
+        yield
+    finally:
+        _OPTION.reset(token)
 
 
 @contextlib.contextmanager
@@ -219,8 +235,8 @@ def _commit(tmp: Path, target: Path, overwrite: bool, shown: Path, what: str) ->
     if overwrite:
         os.replace(tmp, target)
         return
-    appeared = GovoptError(f"{shown}: {what} appeared while govopt was running; use --force "
-                           "to replace it")
+    appeared = GovoptError(f"{shown}: {what} appeared while govopt was running; use "
+                           f"{_OPTION.get()} to replace it")
     try:
         os.link(tmp, target)
     except FileExistsError:
@@ -260,7 +276,8 @@ def atomic_write(path: str | Path, write: Callable[[Path], object], *,
             st = os.stat(target)
             mode = stat.S_IMODE(st.st_mode) if stat.S_ISREG(st.st_mode) else None
             if not overwrite:
-                raise GovoptError(f"{shown}: {what} already exists; use --force to replace it")
+                raise GovoptError(f"{shown}: {what} already exists; use {_OPTION.get()} to "
+                                  "replace it")
         with _signals_held():
             tmp = _create_temp(directory, target.name, mode)
         write(tmp)

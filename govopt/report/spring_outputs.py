@@ -17,7 +17,6 @@ from types import SimpleNamespace
 
 import numpy as np
 
-from ..errors import GovoptError
 from ..springs import fatigue as ft
 from ..springs import helical as hx
 from ..springs import materials as mt
@@ -74,17 +73,10 @@ def force_length(sizing, v: dict, ax, name: str) -> None:
     length to its solid length ``L_c``, the working points (L1, F1) and (L2, F2), the least
     working length ``L_n = L_c + S_a`` (EN 13906-1); an extension spring's ``F = F0 + R (L -
     L0)`` from its free length (initial tension F0) to past L2. mm and N."""
-    sol = sizing.solution
-    d, D, n, R = sol.d, 2.0 * sol.r, sol.n, sol.stiffness
-    F1, F2 = v.get("min_force") or 0.0, v["force"]
+    R, F1, F2 = sizing.solution.stiffness, v.get("min_force") or 0.0, v["force"]
+    L0 = sizing.free_length  # the sizing's lengths (spring_sizing.lengths), as the workbook's
     if sizing.kind == "compression":
-        L0 = sizing.free_length
-        if not math.isfinite(L0):  # no grade: the installed length's, or the least
-            L0 = (v["length_2"] if v.get("length_2") is not None else float(
-                hx.min_working_length(d, D, n, n + sol.end_coils, v["ends"], dynamic=True))
-                ) + F2 / R
-        Lc = float(hx.solid_length(d, n + sol.end_coils, v["ends"]))
-        Ln = float(hx.min_working_length(d, D, n, n + sol.end_coils, v["ends"], dynamic=True))
+        Lc, Ln = sizing.solid_length, sizing.least_length
         L = np.array([L0, Lc])
         ax.plot(L * 1e3, R * (L0 - L), color="tab:blue", lw=2,
                 label=f"F = R (L0 - L), R = {R * 1e-3:.4g} N/mm")
@@ -94,8 +86,7 @@ def force_length(sizing, v: dict, ax, name: str) -> None:
         points = ((L0 - F1 / R, F1, "L1, F1"), (L0 - F2 / R, F2, "L2, F2"))
         ax.invert_xaxis()  # compressing: the length falls as the force rises
     else:
-        F0, L0 = _initial_tension(sizing), float(hx.extension_free_length(
-            d, D, sol.n + sol.end_coils - 2.0))
+        F0 = _initial_tension(sizing)
         L2 = L0 + (F2 - F0) / R
         L = np.array([L0, L0 + 1.1 * (L2 - L0)])
         ax.plot(L * 1e3, F0 + R * (L - L0), color="tab:blue", lw=2,
@@ -135,15 +126,14 @@ def check_outputs(xlsx, plots, stem: str, *, replace: bool, inputs=()) -> None:
     if plots is not None:
         folder = output_folder(Path(plots), "plots")
         paths += [(folder / f"{stem}-{k}.{fmt}", "plot") for k in PLOTS for fmt in ("png", "svg")]
-    for path, what in paths:
-        if path.exists() and not replace:
-            raise GovoptError(f"{path}: {what} already exists; use --replace to replace it")
-        check_output(path, overwrite=True, inputs=inputs, what=what,
+    for path, what in paths:  # in `govopt spring` (--replace: files.overwrite_option)
+        check_output(path, overwrite=replace, inputs=inputs, what=what,
                      others=[p for p, _ in paths if p != path])
 
 
-def write_plots(outcome, folder, stem: str) -> list[Path]:
-    """``<folder>/<stem>-<kind>.png|svg`` of every plot (:func:`plot_names`), atomically."""
+def write_plots(outcome, folder, stem: str, *, replace: bool = True) -> list[Path]:
+    """``<folder>/<stem>-<kind>.png|svg`` of every plot (:func:`plot_names`), atomically (an
+    existing file replaced only with ``replace``)."""
     import matplotlib as mpl
 
     from . import plots
@@ -157,7 +147,7 @@ def write_plots(outcome, folder, stem: str) -> list[Path]:
                 force_length(outcome.sizing, outcome.values, ax, outcome.name)
             else:
                 plots.fatigue(_plot_input(outcome), ax)
-        written += save_figure(ax.figure, Path(folder) / f"{stem}-{kind}", overwrite=True)
+        written += save_figure(ax.figure, Path(folder) / f"{stem}-{kind}", overwrite=replace)
     return written
 
 
@@ -184,10 +174,10 @@ def workbook_rows(outcome) -> list[tuple[str, object, str]]:
     return rows
 
 
-def write_workbook(outcome, path) -> Path:
+def write_workbook(outcome, path, *, replace: bool = True) -> Path:
     """The workbook: sheet "Spring" (the answer, then the spring maker's sheet in engineering
     units), "Checks" (value, limit, margin, verdict, source) and "Force-length" (a table and
-    its chart), written atomically."""
+    its chart), written atomically (an existing file replaced only with ``replace``)."""
     from openpyxl import Workbook
     from openpyxl.chart import Reference, ScatterChart, Series
     from openpyxl.styles import Alignment, Font
@@ -267,23 +257,19 @@ def write_workbook(outcome, path) -> Path:
     for w in (ws, checks, fl):  # rows tall enough for their wrapped text; A4, fit to the
         fit_rows(w)  # page's width, the header on every page
         print_setup(w)
-    return atomic_write(Path(path), wb.save, overwrite=True, what="workbook")
+    return atomic_write(Path(path), wb.save, overwrite=replace, what="workbook")
 
 
 def _force_length_points(outcome) -> list[tuple[float, float]]:
     """(length m, force N) at the free length and the working points, solid length last
-    (compression), as the force-length plot draws them."""
+    (compression), from the sizing's lengths as the force-length plot draws them."""
     sizing, v = outcome.sizing, outcome.values
-    sol = sizing.solution
-    R, F1, F2 = sol.stiffness, v.get("min_force") or 0.0, v["force"]
+    R, F1, F2 = sizing.solution.stiffness, v.get("min_force") or 0.0, v["force"]
+    L0 = sizing.free_length
     if sizing.kind == "compression":
-        L0 = outcome.data.get("free_length_m", math.nan)
-        if not math.isfinite(L0):
-            return [(F / R, F) for F in (0.0, F1, F2)]  # deflections: no free length known
-        Lc = float(hx.solid_length(sol.d, sol.n + sol.end_coils, v["ends"]))
+        Lc = sizing.solid_length
         return [(L0 - F / R, F) for F in (0.0, F1, F2)] + [(Lc, R * (L0 - Lc))]
     F0 = _initial_tension(sizing)
-    L0 = float(hx.extension_free_length(sol.d, 2.0 * sol.r, sol.n + sol.end_coils - 2.0))
     return [(L0, F0)] + [(L0 + (F - F0) / R, F) for F in (F1, F2)]
 
 

@@ -90,14 +90,23 @@ class Material:
     def tensile_strength(self, d):
         """Minimum tensile strength R_m (Pa) at wire diameter ``d`` (m); NaN outside the range.
 
-        Table grades interpolate the standard's table linearly in lg d; fitted grades evaluate
-        their published fit (the data file names which, and its source).
+        Table grades interpolate the standard's table linearly in lg d; step grades take the
+        minimum of the standard's row holding ``d`` (rows by inclusive upper diameter, robust to
+        the rounding of unit conversion: :func:`govopt.springs.tables.row_index`); fitted grades
+        evaluate their published fit (the data file names which, and its source).
+
+        >>> ss = material("EN10270-3 1.4310")  # EN 10270-3 NS: 0.80 < d <= 1.00 mm -> 1900
+        >>> [round(float(ss.tensile_strength(x)) / 1e6) for x in (1e-3, 0.001000001, 0.009)]
+        [1900, 1850, 1250]
         """
         d = np.asarray(d, dtype=float)
         rm, kind = self.rm, self.rm["kind"]
         dmm = d / MM
         if kind == "table":
             out = np.interp(np.log(dmm), np.log(rm["d_mm"]), rm["Pa"])
+        elif kind == "steps":
+            rows = np.asarray(rm["Pa"], dtype=float)
+            out = rows[np.minimum(row_index(rm["d_upper_mm"], dmm), len(rows) - 1)]
         elif kind == "power":
             out = np.full(np.shape(d), np.nan)
             for p in rm["pieces"]:  # later pieces win at a shared boundary (both agree there)
@@ -110,6 +119,31 @@ class Material:
         else:  # pragma: no cover - the loader rejects other kinds
             raise ValueError(kind)
         return np.where(self.in_range(d), out, np.nan)
+
+    @property
+    def rm_nodes(self):
+        """Wire diameters (m) of a table's nodes or a step table's rows' upper ends (where
+        ``R_m d^m`` is largest in a row, for ``m > 0``); empty for the fits."""
+        rm = self.rm
+        mm = {"table": rm.get("d_mm"), "steps": rm.get("d_upper_mm")}.get(rm["kind"]) or []
+        return np.asarray(mm, dtype=float) * MM
+
+    def strength_exponent(self, d) -> float:
+        """``-d ln R_m / d ln d`` at wire diameter ``d`` (m): the exponent ``m`` of the local
+        power law ``R_m ~ d^-m`` (Shigley Table 10-4's form). A step table's derivative is zero
+        or infinite, so there it is the slope in lg-lg between the neighbouring rows' centres
+        (geometric mean of each row's diameters), the table's trend."""
+        rm = self.rm
+        if rm["kind"] == "steps":
+            up = np.asarray(rm["d_upper_mm"], dtype=float) * MM
+            lower = np.concatenate([[self.d_min], up[:-1]])
+            centre = np.sqrt(np.maximum(lower, up[0] * 0.5) * up)
+            lg_c, lg_r = np.log(centre), np.log(np.asarray(rm["Pa"], dtype=float))
+            i = int(np.clip(np.searchsorted(lg_c, np.log(d)), 1, len(lg_c) - 1))
+            return float(-(lg_r[i] - lg_r[i - 1]) / (lg_c[i] - lg_c[i - 1]))
+        h = 1e-4
+        r = self.tensile_strength(d * np.exp([-h, h]))
+        return float(-np.log(r[1] / r[0]) / (2.0 * h))
 
     def shear_modulus(self, d):
         """Shear modulus G (Pa) at wire diameter ``d`` (m) (stepwise in d for some grades)."""
@@ -151,6 +185,11 @@ def _rm_spec(raw: dict) -> dict:
             rm["Pa"] = [x * MPA for x in rm.pop("MPa")]
         if np.any(np.diff(rm["d_mm"]) <= 0) or np.any(np.diff(rm["Pa"]) > 0):
             raise ValueError("R_m table must have rising d and non-rising R_m")
+    elif kind == "steps":
+        rm["Pa"] = [x * MPA for x in rm.pop("MPa")]
+        if (len(rm["Pa"]) != len(rm["d_upper_mm"]) or np.any(np.diff(rm["d_upper_mm"]) <= 0)
+                or np.any(np.diff(rm["Pa"]) > 0)):
+            raise ValueError("R_m rows must have rising upper diameters and non-rising R_m")
     elif kind not in ("power", "log10", "constant"):
         raise ValueError(f"unknown R_m kind {kind!r}")
     return rm
