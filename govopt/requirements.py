@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -294,16 +294,28 @@ def vibration_rows(spec) -> list[Row]:
 # The evaluator of rows
 # ---------------------------------------------------------------------------------------------
 
+class Column(NamedTuple):
+    """One row of a :class:`CheckTable` over its N designs: value, limit, margin, the margin's
+    scale (NaN: ``|limit|``), verdict, and whether the row applies to each design."""
+
+    value: np.ndarray
+    limit: np.ndarray
+    margin: np.ndarray
+    scale: np.ndarray
+    passed: np.ndarray
+    applies: np.ndarray
+
+
 class CheckTable:
     """Rows evaluated over N designs, in the order added: arrays of values, limits, margins and
     verdicts (``applies`` False where a row does not apply to a design). ``checks(i)`` gives
-    design ``i``'s :class:`~govopt.result.Check` objects; the bulk evaluation reads the
-    arrays."""
+    design ``i``'s :class:`~govopt.result.Check` objects; ``columns()`` the arrays (the bulk
+    evaluation's columns), ``failed()`` which rows fail for which design."""
 
     def __init__(self, n: int):
         self.n = n
-        self.cols: dict[str, tuple] = {}
-        self.meta: dict[str, tuple] = {}
+        self._cols: dict[str, Column] = {}
+        self._meta: dict[str, tuple] = {}
         self.names: list[str] = []
 
     def add_row(self, row: Row, ev, where=None) -> None:
@@ -338,25 +350,33 @@ class CheckTable:
         passed = margin >= PASS_TOL if not given else np.broadcast_to(
             np.asarray(verdict, dtype=bool), (n,))
         on = np.ones(n, bool) if where is None else np.broadcast_to(where, (n,))
-        if name not in self.cols:
+        if name not in self._cols:
             self.names.append(name)
-            self.cols[name] = tuple(np.full(n, np.nan) for _ in range(4)) + (
-                np.zeros(n, bool), np.zeros(n, bool))
-            self.meta[name] = (sense, unit, source, given, group)
-        v, lim, m, scl, p, applies = self.cols[name]
+            self._cols[name] = Column(*(np.full(n, np.nan) for _ in range(4)),
+                                      np.zeros(n, bool), np.zeros(n, bool))
+            self._meta[name] = (sense, unit, source, given, group)
+        v, lim, m, scl, p, applies = self._cols[name]
         v[on], lim[on], m[on], scl[on] = value[on], limit[on], margin[on], sc[on]
         p[on] = passed[on]
         applies |= on
+
+    def drop(self, designs) -> None:
+        """No row applies to the ``designs`` (a mask): designs that cannot be evaluated."""
+        for c in self._cols.values():
+            for a in c[:4]:
+                a[designs] = np.nan
+            c.passed[designs] = False
+            c.applies[designs] = False
 
     def checks(self, i: int = 0, source_of=None) -> list[Check]:
         """Design ``i``'s checks (the rows that apply to it), in order; ``source_of(text)``
         resolves a callable source."""
         out = []
         for name in self.names:
-            v, lim, _, scl, p, applies = self.cols[name]
+            v, lim, _, scl, p, applies = self._cols[name]
             if not applies[i]:
                 continue
-            sense, unit, source, given, group = self.meta[name]
+            sense, unit, source, given, group = self._meta[name]
             if callable(source):
                 source = source_of(source) if source_of else source()
             out.append(Check(name, float(v[i]), float(lim[i]), sense, unit, source,
@@ -364,15 +384,24 @@ class CheckTable:
                              verdict=bool(p[i]) if given else None, group=group))
         return out
 
+    def columns(self) -> dict[str, Column]:
+        """Every row's arrays (:class:`Column`), by name, in order."""
+        return {name: self._cols[name] for name in self.names}
+
+    def failed(self) -> np.ndarray:
+        """``(N, rows)`` booleans: True where a row applies to a design and fails (NaN fails);
+        the rows in :attr:`names` order."""
+        out = np.zeros((self.n, len(self.names)), bool)
+        for j, name in enumerate(self.names):
+            c = self._cols[name]
+            out[:, j] = c.applies & ~c.passed
+        return out
+
     def feasible(self) -> np.ndarray:
         """True where every row that applies holds (NaN fails)."""
-        ok = np.ones(self.n, bool)
-        for name in self.names:
-            *_, p, applies = self.cols[name]
-            ok &= p | ~applies
-        return ok
+        return ~self.failed().any(axis=1)
 
 
-__all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "GPForm", "Row", "SpringFigures",
+__all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "Column", "GPForm", "Row", "SpringFigures",
            "friction_rows", "holds", "load_change_rows", "requirement_rows", "statics_rows",
            "statics_figures", "stress_row", "vibration_rows"]

@@ -28,7 +28,8 @@ LAYERS = (
     ("analysis", ("govopt.analysis", "govopt.fidelity")),
     ("governor types", ("govopt.governors",)),
     ("parser", ("govopt.spec",)),
-    ("evaluator", ("govopt.result", "govopt.requirements", "govopt.evaluation", "govopt.bulk")),
+    ("evaluator", ("govopt.result", "govopt.requirements", "govopt.evaluator",
+                   "govopt.evaluation", "govopt.bulk")),
     ("optimize", ("govopt.optimize",)),
     ("study", ("govopt.study",)),
     ("report", ("govopt.report",)),
@@ -40,8 +41,8 @@ LAYERS = (
 SEAM = ("govopt.governors", "govopt.governors.base")
 
 PHYSICS = ("govopt.analysis", "govopt.springs", "govopt.governors")
-NOT_FOR_PHYSICS = ("govopt.spec", "govopt.evaluation", "govopt.bulk", "govopt.optimize",
-                   "govopt.report", "govopt.cli", "govopt.study")
+NOT_FOR_PHYSICS = ("govopt.spec", "govopt.evaluator", "govopt.evaluation", "govopt.bulk",
+                   "govopt.optimize", "govopt.report", "govopt.cli", "govopt.study")
 
 #: Imports that close a cycle: none (`Check` lives on the ground floor, govopt.verdict).
 KNOWN_CYCLE_EDGES: set = set()

@@ -475,6 +475,16 @@ def geometry_rows(spec, d, D, n, kappa, l0, F1=None, F2=None) -> dict:
     return {k: (v, lim, senses[k]) for k, (v, lim) in ck.evaluate(kind, ck.GEOMETRY, **kw).items()}
 
 
+def geometry_table(spec, d, D, n, kappa, l0, F1, F2) -> list:
+    """The rows of :func:`geometry_rows` with what a check shows of them, in order:
+    ``(row, value, limit, source)`` (:func:`govopt.springs.checks.rows_over`; the row's name,
+    sense and unit); none for a spring kind without geometric rows."""
+    kind = KINDS[spec.governor.spring]
+    if not any(r.name in ck.GEOMETRY for r in ck.TABLES[kind]):
+        return []
+    return ck.rows_over(kind, ck.GEOMETRY, **_kw(spec, d, D, n, kappa, l0, F1, F2))
+
+
 def geometry_screen(spec, d, r, n, kappa, l0):
     """True where every row of :func:`geometry_rows` holds (catalogue springs, arrays)."""
     ok = True
@@ -505,6 +515,6 @@ def screen_fatigue(spec, d, r, n, kappa, l0, swing):
 
 __all__ = ["KINDS", "NO_FORCING", "Spread", "SpringReport", "allowable_monomial", "checks",
            "evaluate_rows", "fatigue_forces", "fatigue_safety", "feasible", "geometry_checks",
-           "geometry_rows", "geometry_screen", "harmonics_hz",
+           "geometry_rows", "geometry_screen", "geometry_table", "harmonics_hz",
            "initial_tension", "report", "screen", "screen_fatigue",
            "screen_vibration", "spread", "static_range", "wire"]
