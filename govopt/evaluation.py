@@ -57,10 +57,9 @@ def _evaluate(spec: Spec, design: Design) -> Result:
     dynamics = dict(ev.dynamics)
     if design.dashpot is not None or spec.engine is not None:
         dynamics["k2_normal_rad2_s2"] = float(k2[i_n])
-    if ev.vib is not None:  # the type has a periodic forcing (the shaft's valve gear, Part II)
-        dynamics["vibration"] = ev.vib.to_dict()
-    if "friction" in dynamics:  # after the vibration, as the report has always listed them
-        dynamics["friction"] = dynamics.pop("friction")
+    for key in ("vibration", "friction"):  # the report's order: the forcing, then friction
+        if key in dynamics:
+            dynamics[key] = dynamics.pop(key)
     plan = use_case_plan(spec)
     if plan is not None:
         dynamics["use_case"] = plan.to_dict()

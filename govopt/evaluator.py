@@ -176,6 +176,16 @@ def spring_design_of(sd: statics.SpringDesign, i: int, given: bool) -> statics.S
     return statics.SpringDesign(**{**vals, "inertia_given": given})
 
 
+def _number(d: dict, key: str) -> float:
+    """A number of a JSON-ready dict (:func:`govopt.jsonable.jsonable`: an infinity is null
+    with a ``<key>_infinite`` flag)."""
+    v = d[key]
+    if v is not None:
+        return float(v)
+    flag = d.get(f"{key}_infinite")
+    return np.inf if flag == "+inf" else -np.inf if flag == "-inf" else np.nan
+
+
 def _pick(s: tr.TransientSummary, j: int) -> tr.TransientSummary:
     """Design ``j`` of a :class:`TransientSummary` of many."""
     return replace(s, **{f.name: np.asarray(getattr(s, f.name))[j] for f in fields(s)})
@@ -405,7 +415,9 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         out["settling_time_s"] = np.where(settle > -np.inf, settle, np.nan)
         if reports:
             dyn["load_changes"] = reports
-    p2p = np.array([np.nan if v is None else v.to_dict()["peak_to_peak_rad"] for v in vibs])
+    vib_dicts = [None if v is None else v.to_dict() for v in vibs] if vibration else []
+    p2p = np.array([np.nan if v is None else _number(v, "peak_to_peak_rad")
+                    for v in vib_dicts], dtype=float)
     if vibration and overridden(gov, "vibration"):
         if (~impossible & (has_dashpot | (spec.engine is not None))).any():
             out["vibration_p2p_rad"] = p2p
@@ -454,6 +466,8 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         ev.char = char_of(0)
         ev.k2 = np.array(k2[0])
         ev.vib = vibs[0]
+        if vib_dicts and vib_dicts[0] is not None:
+            dyn["vibration"] = vib_dicts[0]
         ev.dynamics = dyn
     return ev
 
