@@ -404,9 +404,8 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
             out[f"settling_time_s: {lc.name}"] = np.where(on, st_time, np.nan)
             settle = np.where(on, np.maximum(settle, st_time), settle)
             checks.add_rows(load_change_rows(spec, lc.name), {
-                "hurwitz": {lc.name: hur}, "over": {lc.name: over},
-                "over_regulates": {lc.name: overs}, "xi0": {lc.name: xi0},
-                "settling": {lc.name: st_time}}, where=on)
+                "hurwitz": hur, "over": over, "over_regulates": overs, "xi0": xi0,
+                "settling": st_time}, where=on)
             if report and on[0]:
                 a, xs, k2_0, s = detail
                 reports.append(loadchange.summary(spec, lc, tuple(float(v[0]) for v in a),

@@ -6,8 +6,8 @@ group (``"statics"``, ``"spring"``, ``"bounds"``, ``"dynamics"``), its unit, its
 scale of its margin where the limit is zero, a verdict where the margin alone cannot decide it,
 and where one exists its form in the spring's geometric programme (:class:`GPForm`).
 
-The same rows are read by :func:`govopt.evaluate` (N = 1), the bulk evaluation
-(:mod:`govopt.bulk`), the design search's catalogue screen
+The same rows are read by the one evaluator (:func:`govopt.evaluator.core`: N designs for
+the bulk evaluation, one for :func:`govopt.evaluate`), the design search's catalogue screen
 (:func:`govopt.optimize.design.spring_checks`) and the spring GP's constraint table
 (:mod:`govopt.optimize.gp_table`); :class:`CheckTable` turns rows into values, margins and
 verdicts over N designs, and into :class:`govopt.result.Check` objects for one.
@@ -202,9 +202,8 @@ STRESS_SOURCE = "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"
 
 def stress_row(material) -> Row:
     """The largest shear stress of a helical spring (``ev["stress"]``, Pa) within the spec's
-    allowable ``material.allowable_shear_stress`` (group ``"spring"``; without a wire grade;
-    :meth:`govopt.governors.base.Governor.spring_checks` gives the same check with its
-    source)."""
+    allowable ``material.allowable_shear_stress`` (group ``"spring"``; without a wire grade,
+    whose table has its own stress rows: :meth:`Governor.spring_checks`)."""
     return Row("shear stress", "<=", "Pa", lambda ev: ev["stress"],
                _const(material.allowable_shear_stress), STRESS_SOURCE, group="spring")
 
@@ -245,19 +244,19 @@ def holds(rows, ev) -> np.ndarray:
 def load_change_rows(spec, name: str) -> list[Row]:
     """The load change ``name``'s requirements (Hamabe Part III; group ``"dynamics"``);
     ``ev``: ``hurwitz``, ``over`` (over-regulation, the coordinate's unit), ``over_regulates``,
-    ``xi0`` (the initial offset), ``settling`` (s), each a mapping by load-change name."""
+    ``xi0`` (the initial offset), ``settling`` (s), each of the load change ``name``."""
     req = spec.requirements
     unit = SI_UNITS[spec.governor.coordinate]
-    rows = [Row(f"Hurwitz margin eq. (32): {name}", ">=", "", lambda ev: ev["hurwitz"][name],
+    rows = [Row(f"Hurwitz margin eq. (32): {name}", ">=", "", lambda ev: ev["hurwitz"],
                 _const(req.hurwitz_margin if req else 0.0),
                 "Hamabe eq. (32): 9 a1 a2 / (a0 a3) - 1", group="dynamics",
                 scale=_const(1.0)),
-            Row(f"no over-regulation: {name}", "<=", unit, lambda ev: ev["over"][name],
+            Row(f"no over-regulation: {name}", "<=", unit, lambda ev: ev["over"],
                 _const(0.0), "Hamabe Part III; all t >= 0 (transient.over_regulates)",
-                group="dynamics", scale=lambda ev: np.abs(ev["xi0"][name]),
-                verdict=lambda ev: ~np.asarray(ev["over_regulates"][name], dtype=bool))]
+                group="dynamics", scale=lambda ev: np.abs(ev["xi0"]),
+                verdict=lambda ev: ~np.asarray(ev["over_regulates"], dtype=bool))]
     if req is not None and req.max_settling_time is not None:
-        rows.append(Row(f"settling time: {name}", "<=", "s", lambda ev: ev["settling"][name],
+        rows.append(Row(f"settling time: {name}", "<=", "s", lambda ev: ev["settling"],
                         _const(req.max_settling_time), "Hamabe Part III", group="dynamics"))
     return rows
 

@@ -493,13 +493,6 @@ def geometry_screen(spec, d, r, n, kappa, l0):
     return np.asarray(ok)
 
 
-def geometry_checks(spec, sd) -> list:
-    """:func:`geometry_rows` of one design as :class:`govopt.verdict.Check` objects."""
-    F1, F2 = static_range(spec, sd.kappa, sd.l0)
-    kw = _kw(spec, sd.d, 2.0 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2)
-    return ck.checks(KINDS[spec.governor.spring], ck.GEOMETRY, **kw)
-
-
 def screen_fatigue(spec, d, r, n, kappa, l0, swing):
     """The least fatigue safety factor of springs ``d, r, n, kappa, l0`` (arrays of candidates)
     under peak-to-peak swings ``swing`` (candidates x dash-pots)."""
@@ -514,7 +507,7 @@ def screen_fatigue(spec, d, r, n, kappa, l0, swing):
 
 
 __all__ = ["KINDS", "NO_FORCING", "Spread", "SpringReport", "allowable_monomial", "checks",
-           "evaluate_rows", "fatigue_forces", "fatigue_safety", "feasible", "geometry_checks",
+           "evaluate_rows", "fatigue_forces", "fatigue_safety", "feasible",
            "geometry_rows", "geometry_screen", "geometry_table", "harmonics_hz",
            "initial_tension", "report", "screen", "screen_fatigue",
            "screen_vibration", "spread", "static_range", "wire"]
