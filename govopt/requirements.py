@@ -305,6 +305,12 @@ class Column(NamedTuple):
     applies: np.ndarray
 
 
+def _over(v, n: int, dtype=float) -> np.ndarray:
+    """``v`` as an array over ``n`` designs (broadcast where it is one number)."""
+    a = np.asarray(v, dtype=dtype)
+    return a if a.shape == (n,) else np.broadcast_to(a, (n,))
+
+
 class CheckTable:
     """Rows evaluated over N designs, in the order added: arrays of values, limits, margins and
     verdicts (``applies`` False where a row does not apply to a design). ``checks(i)`` gives
@@ -333,22 +339,20 @@ class CheckTable:
         """``Check.margin`` vectorised: ``(limit - value)/s`` for ``<=``, ``(value - limit)/s``
         for ``>=``, ``s = scale or (|limit| if limit != 0 else 1)``; ``Check.passed``."""
         n = self.n
-        value = np.broadcast_to(np.asarray(value, dtype=float), (n,))
-        limit = np.broadcast_to(np.asarray(limit, dtype=float), (n,))
+        value, limit = _over(value, n), _over(limit, n)
         fallback = np.where(limit != 0, np.abs(limit), 1.0)
         if scale is None:
             s = fallback
             sc = np.full(n, np.nan)
         else:
-            sc = np.broadcast_to(np.asarray(scale, dtype=float), (n,))
+            sc = _over(scale, n)
             s = np.where(sc != 0, sc, fallback)
         diff = limit - value if sense == "<=" else value - limit
         with np.errstate(invalid="ignore", divide="ignore"):
             margin = diff / s
         given = verdict is not None
-        passed = margin >= PASS_TOL if not given else np.broadcast_to(
-            np.asarray(verdict, dtype=bool), (n,))
-        on = np.ones(n, bool) if where is None else np.broadcast_to(where, (n,))
+        passed = margin >= PASS_TOL if not given else _over(verdict, n, bool)
+        on = slice(None) if where is None else np.broadcast_to(where, (n,))
         if name not in self._cols:
             self.names.append(name)
             self._cols[name] = Column(*(np.full(n, np.nan) for _ in range(4)),
@@ -357,7 +361,7 @@ class CheckTable:
         v, lim, m, scl, p, applies = self._cols[name]
         v[on], lim[on], m[on], scl[on] = value[on], limit[on], margin[on], sc[on]
         p[on] = passed[on]
-        applies |= on
+        applies[on] = True
 
     def drop(self, designs) -> None:
         """No row applies to the ``designs`` (a mask): designs that cannot be evaluated."""
