@@ -14,8 +14,7 @@ import math
 import numpy as np
 import pandas as pd
 
-from .evaluator import DESIGN_FIELDS, core, design_columns
-from .governors import Governor
+from .evaluator import DESIGN_FIELDS, core, dashpot_column, design_columns
 from .requirements import CheckTable
 from .result import Result
 from .spec import Design, Spec
@@ -49,10 +48,6 @@ def check_names(columns) -> list[str]:
     return [c[len("margin: "):] for c in columns if c.startswith("margin: ")]
 
 
-def _dashpot_column(gov: Governor) -> str:
-    return f"dashpot_{gov.key_unit('damping')}"
-
-
 def _objective_name(spec: Spec) -> str:
     return spec.requirements.objective if spec.requirements is not None else "moving_mass"
 
@@ -72,7 +67,7 @@ def result_row(res: Result) -> dict:
         row.update({"wire_diameter_m": float(sd.d), "coil_radius_m": float(sd.r),
                     "active_turns": float(sd.n), "stiffness_N_per_m": float(sd.kappa),
                     f"{gov.free_length_key}_m": float(sd.l0)})
-    row[_dashpot_column(gov)] = math.nan if ds.dashpot is None else float(ds.dashpot)
+    row[dashpot_column(gov)] = math.nan if ds.dashpot is None else float(ds.dashpot)
     row.update({"irregularity": st.irregularity, "omega_inner_rad_s": float(st.omega[0]),
                 "omega_outer_rad_s": float(st.omega[-1]),
                 "omega_normal_rad_s": float(st.omega[i_n])})
@@ -221,7 +216,7 @@ def _block(spec: Spec, cols: dict, dynamics: bool, vibration: bool,
     out = dict(ev.figures)
     if bad.any():  # an impossible design's row: its design, no figures, evaluate's message
         keep = {f"{gov.mass_key}_mass_kg", "central_mass_kg", "wire_diameter_m",
-                "coil_radius_m", "active_turns", _dashpot_column(gov)}
+                "coil_radius_m", "active_turns", dashpot_column(gov)}
         for k, v in out.items():
             if k not in keep:
                 v = np.array(v, dtype=object if np.asarray(v).dtype == object else float)

@@ -13,7 +13,7 @@ import numpy as np
 
 from .analysis import statics
 from .errors import DesignError
-from .evaluator import core, design_columns, finite, possible
+from .evaluator import core, design_columns, finite, overflow_message, possible
 from .result import Result
 from .spec import Design, Spec
 
@@ -36,9 +36,7 @@ def evaluate(spec: Spec, design: Design | None = None) -> Result:
     try:
         return _evaluate(spec, design)
     except OverflowError:  # Python floats raise where numpy gives inf
-        raise DesignError(f"{spec.path}: design: impossible design: a figure overflows the "
-                          "floating-point range; the design's inputs are far outside any "
-                          "physical range") from None
+        raise DesignError(overflow_message(spec)) from None
 
 
 def _evaluate(spec: Spec, design: Design) -> Result:

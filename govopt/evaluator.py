@@ -43,10 +43,6 @@ from .springs import helical as hx
 #: the fields of :class:`govopt.spec.Design`: the columns a frame of designs may have (SI)
 DESIGN_FIELDS = tuple(f.name for f in fields(Design))
 
-#: the classic measures' scalar figures (textbook ch. 3), as columns
-CLASSIC_FIGURES = ("range_rad_s", "sensitiveness", "stability", "effort", "power",
-                   "friction_band", "insensitiveness")
-
 
 # ---------------------------------------------------------------------------------------------
 # Diagnoses of impossible designs (the DesignError evaluate raises)
@@ -141,6 +137,11 @@ def design_of(cols: dict, i: int) -> Design:
     """Row ``i`` of a dict of design arrays as a :class:`Design`."""
     return Design(**{f: (None if np.isnan(cols[f][i]) else float(cols[f][i]))
                      for f in DESIGN_FIELDS})
+
+
+def dashpot_column(gov: Governor) -> str:
+    """The dash-pot's figure (SI, the type's damping unit: ``dashpot_N_m_s_per_rad`` ...)."""
+    return f"dashpot_{gov.key_unit('damping')}"
 
 
 def design_columns(designs) -> dict[str, np.ndarray]:
@@ -312,7 +313,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         out.update({"wire_diameter_m": cols["wire_diameter"],
                     "coil_radius_m": cols["coil_radius"], "active_turns": cols["active_turns"],
                     "stiffness_N_per_m": kappa[:, 0], f"{gov.free_length_key}_m": l0[:, 0]})
-    out[f"dashpot_{gov.key_unit('damping')}"] = cols["dashpot"]
+    out[dashpot_column(gov)] = cols["dashpot"]
     out.update({"irregularity": (wa - wi) / omega_mean, "omega_inner_rad_s": wi,
                 "omega_outer_rad_s": wa, "omega_normal_rad_s": wn})
     if gov.spring is not None:
@@ -340,15 +341,26 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
     own_checks = gov.spring is not None and (overridden(gov, "spring_checks") or (
         mat is not None and getattr(mat, "grade", None) is not None))
     # -- the type's forced vibration, design by design (also the spring's load cycle) --
+    said: dict[int, str] = {}  # a per-design part's own diagnosis, by design
+
+    def per_design(i: int, part):
+        """``part()`` for design ``i``; its DesignError (or an overflow) makes ``i``
+        impossible with that diagnosis (what evaluate raises for it)."""
+        try:
+            return part()
+        except DesignError as exc:
+            said[i] = str(exc)
+        except OverflowError:
+            said[i] = overflow_message(spec)
+        impossible[i] = True
+        return None
+
     vibs = [None] * n
     if (vibration or own_checks) and overridden(gov, "vibration"):
         for i in np.nonzero(~impossible & (has_dashpot | (spec.engine is not None)))[0]:
-            try:
-                vibs[i] = gov.vibration(spec, spring_design_of(sd, i, bool(
-                    np.isfinite(I_given[i, 0]))), float(k2[i, i_n]),
-                    float(dashpot[i]) if has_dashpot[i] else 0.0)
-            except (DesignError, OverflowError, ValueError, ZeroDivisionError):
-                impossible[i] = True
+            vibs[i] = per_design(i, lambda i=i: gov.vibration(
+                spec, spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0]))),
+                float(k2[i, i_n]), float(dashpot[i]) if has_dashpot[i] else 0.0))
 
     # -- checks, in this order: the spring's own, statics, load changes, vibration, friction,
     # the design requirements --
@@ -356,6 +368,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
     w0sq = np.full(n, omega_mean**2) if spec.speed is not None else wn**2
 
     def char_of(i: int) -> statics.Characteristic:
+        """Design ``i``'s characteristic (:func:`statics.characteristic`, from the arrays)."""
         return statics.Characteristic(
             alpha=x, omega=omega[i], M_z=M_z[i], M_f=M_f[i],
             M_r0=np.broadcast_to(t.cf + w2 * t.ci, (n, K))[i], spring_force=F[i],
@@ -364,7 +377,9 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
     if own_checks:  # the type's own spring (a leaf) or a graded wire: its own checks
         for i in np.nonzero(~impossible)[0]:
             sdi = spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0])))
-            for c in gov.spring_checks(spec, sdi, char_of(i), vibs[i]):
+            own = per_design(i, lambda i=i, sdi=sdi: gov.spring_checks(spec, sdi, char_of(i),
+                                                                       vibs[i]))
+            for c in own or []:
                 on = np.zeros(n, bool)
                 on[i] = True
                 checks.add(c.name, c.value, c.limit, c.sense, scale=c.scale, verdict=c.verdict,
@@ -432,7 +447,10 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
             design = design_of(cols, i)
             si = spec.with_design(design)
             sdi = spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0])))
-            runs_of[i] = [friction.friction_load_change(si, sdi, lc) for lc in spec.load_changes]
+            runs = per_design(i, lambda si=si, sdi=sdi: [
+                friction.friction_load_change(si, sdi, lc) for lc in spec.load_changes])
+            if runs is not None:
+                runs_of[i] = runs
         for j, lc in enumerate(spec.load_changes):
             xi0 = lc.alpha_from - lc.alpha_to
             rows = friction_rows(spec, lc.name)
@@ -458,7 +476,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         out.update(_classic(spec, cols, t, sd, w2c, x, omega, ~impossible))
     error = np.full(n, None, dtype=object)
     for i in np.nonzero(impossible)[0]:
-        error[i] = diagnose(spec, design_of(cols, i))
+        error[i] = said.get(int(i)) or diagnose(spec, design_of(cols, i))
     ev = Evaluation(n, spec, out, checks, error)
     if report and not impossible[0]:
         ev.spring = spring_design_of(sd, 0, bool(np.isfinite(I_given[0, 0])))
@@ -578,5 +596,5 @@ def _travel_many(spec, sd, x0, x_end, target, ok):
     return out
 
 
-__all__ = ["CLASSIC_FIGURES", "DESIGN_FIELDS", "Evaluation", "core", "design_columns",
-           "diagnose", "finite", "invalid", "possible"]
+__all__ = ["DESIGN_FIELDS", "Evaluation", "core", "dashpot_column", "design_columns", "diagnose",
+           "finite", "invalid", "possible"]

@@ -50,8 +50,9 @@ KNOWN_CYCLE_EDGES: set = set()
 #: Imports that go up a layer today, each with the work that removes it (no cycle runs through
 #: them).
 KNOWN_UPWARD = KNOWN_CYCLE_EDGES | {
-    # the helical spring's default checks and sheet on the governor seam (Governor.spring_checks,
-    # spring_report) until the spring's requirement rows are read by the one evaluator
+    # a graded wire's table and the spring maker's sheet on the governor seam
+    # (Governor.spring_checks, spring_report; the helical stress and geometry are rows of the one
+    # evaluator) until the spring is a plug of its own
     ("govopt.governors.base", "govopt.analysis.spring_engineering"),
     # Result.summary(), _repr_html_() and plot() render with the writers, imported when called
     # (conveniences for a notebook; no writer imports the result's module back)
