@@ -41,7 +41,6 @@ def evaluate(spec: Spec, design: Design | None = None) -> Result:
 
 def _evaluate(spec: Spec, design: Design) -> Result:
     from .analysis.classic import classic_measures
-    from .fidelity import plan as use_case_plan
 
     if design is None:
         statics.spring_design(spec, design)  # the parser's diagnosis: no design to evaluate
@@ -58,9 +57,8 @@ def _evaluate(spec: Spec, design: Design) -> Result:
     for key in ("vibration", "friction"):  # the report's order: the forcing, then friction
         if key in dynamics:
             dynamics[key] = dynamics.pop(key)
-    plan = use_case_plan(spec)
-    if plan is not None:
-        dynamics["use_case"] = plan.to_dict()
+    if ev.plan is not None:
+        dynamics["use_case"] = ev.plan.to_dict()
     return Result(spec=spec, design=design, spring=sd, statics=char,
                   spring_properties={k: float(ev.figures[f][0]) for k, f in SPRING_PROPERTIES}
                   if helical else {},

@@ -206,7 +206,7 @@ class Evaluation:
     ``report=True`` (one design, for :func:`govopt.evaluate`) also the report's content of
     design 0: ``spring`` (its :class:`SpringDesign`), ``char`` (its :class:`Characteristic`),
     ``k2`` over the configurations, ``vib`` (the forced vibration) and ``dynamics`` (the load
-    changes' and friction runs' dicts)."""
+    changes', the forcing's and the friction runs' dicts)."""
 
     n: int
     spec: Spec
@@ -218,6 +218,8 @@ class Evaluation:
     k2: np.ndarray | None = None
     vib: object = None
     dynamics: dict = field(default_factory=dict)
+    #: the spec's ``[analysis] use_case`` plan (:func:`govopt.fidelity.plan`), None without
+    plan: object = None
 
     @property
     def impossible(self) -> np.ndarray:
@@ -477,7 +479,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
     error = np.full(n, None, dtype=object)
     for i in np.nonzero(impossible)[0]:
         error[i] = said.get(int(i)) or diagnose(spec, design_of(cols, i))
-    ev = Evaluation(n, spec, out, checks, error)
+    ev = Evaluation(n, spec, out, checks, error, plan=plan)
     if report and not impossible[0]:
         ev.spring = spring_design_of(sd, 0, bool(np.isfinite(I_given[0, 0])))
         ev.char = char_of(0)
