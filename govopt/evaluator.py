@@ -443,9 +443,9 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         for lc in spec.load_changes:
             moves |= friction_at(gov, cols, np.array([lc.alpha_to]))[:, 0] > 0
         runs_of = {}
-        for i in np.nonzero(moves & ~impossible)[0]:
+        if (moves & ~impossible).any():
             from .analysis import friction  # only where a design has friction (model what is asked)
-
+        for i in np.nonzero(moves & ~impossible)[0]:
             design = design_of(cols, i)
             si = spec.with_design(design)
             sdi = spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0])))
