@@ -254,24 +254,9 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
     impossible |= np.isfinite(cols["wire_diameter"]) & (
         cols["wire_diameter"] >= 2.0 * cols["coil_radius"])
     with np.errstate(all="ignore"):
-        if gov.spring is None:
-            kappa, l0 = np.zeros_like(m), np.zeros_like(m)
-        else:
-            if overridden(gov, "spring_rate"):  # the type's own spring (a leaf): per design
-                rate = np.array([[gov.spring_rate(design_of(cols, i), mat)
-                                  if np.isnan(cols["spring_stiffness"][i]) else np.nan]
-                                 for i in range(n)], dtype=float).reshape(n, 1)
-            elif mat is not None and mat.shear_modulus is not None:
-                rate = hx.stiffness_r(d, r, nt, mat.shear_modulus)
-            else:
-                rate = np.full_like(m, np.nan)
-            kappa = np.where(np.isfinite(col["spring_stiffness"]), col["spring_stiffness"], rate)
-            l0 = col["free_half_length"]
-            if np.isnan(l0).any():
-                l0 = np.where(np.isnan(l0), statics.free_half_length(spec, m, kappa, central),
-                              l0)
-            if gov.free_length_positive:
-                impossible |= ~(l0[:, 0] > 0)
+        kappa, l0 = _spring(spec, cols, col, central)
+        if gov.spring is not None and gov.free_length_positive:
+            impossible |= ~(l0[:, 0] > 0)
         I_given = col["pendulum_inertia"]
         I_n = np.where(np.isnan(I_given), gov.inertia(np.asarray(gov.x_normal), m, central),
                        I_given)
@@ -343,6 +328,10 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
     own_checks = gov.spring is not None and (overridden(gov, "spring_checks") or (
         mat is not None and getattr(mat, "grade", None) is not None))
     # -- the type's forced vibration, design by design (also the spring's load cycle) --
+    def sd_of(i: int) -> statics.SpringDesign:
+        """Design ``i``'s :class:`SpringDesign` (scalars; as :func:`statics.spring_design`)."""
+        return spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0])))
+
     said: dict[int, str] = {}  # a per-design part's own diagnosis, by design
 
     def per_design(i: int, part):
@@ -361,8 +350,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
     if (vibration or own_checks) and overridden(gov, "vibration"):
         for i in np.nonzero(~impossible & (has_dashpot | (spec.engine is not None)))[0]:
             vibs[i] = per_design(i, lambda i=i: gov.vibration(
-                spec, spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0]))),
-                float(k2[i, i_n]), float(dashpot[i]) if has_dashpot[i] else 0.0))
+                spec, sd_of(i), float(k2[i, i_n]), float(dashpot[i]) if has_dashpot[i] else 0.0))
 
     # -- checks, in this order: the spring's own, statics, load changes, vibration, friction,
     # the design requirements --
@@ -378,9 +366,8 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
 
     if own_checks:  # the type's own spring (a leaf) or a graded wire: its own checks
         for i in np.nonzero(~impossible)[0]:
-            sdi = spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0])))
-            own = per_design(i, lambda i=i, sdi=sdi: gov.spring_checks(spec, sdi, char_of(i),
-                                                                       vibs[i]))
+            own = per_design(i, lambda i=i: gov.spring_checks(spec, sd_of(i), char_of(i),
+                                                              vibs[i]))
             for c in own or []:
                 on = np.zeros(n, bool)
                 on[i] = True
@@ -442,30 +429,18 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         moves = np.zeros(n, bool)
         for lc in spec.load_changes:
             moves |= friction_at(gov, cols, np.array([lc.alpha_to]))[:, 0] > 0
-        runs_of = {}
-        if (moves & ~impossible).any():
-            from .analysis import friction  # only where a design has friction (model what is asked)
+        runs_of = {}  # Hamabe's friction strokes (eqs. 42-46), design by design
         for i in np.nonzero(moves & ~impossible)[0]:
-            design = design_of(cols, i)
-            si = spec.with_design(design)
-            sdi = spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0])))
-            runs = per_design(i, lambda si=si, sdi=sdi: [
-                friction.friction_load_change(si, sdi, lc) for lc in spec.load_changes])
+            runs = per_design(i, lambda i=i: _friction_runs(spec, design_of(cols, i), sd_of(i)))
             if runs is not None:
                 runs_of[i] = runs
         for j, lc in enumerate(spec.load_changes):
-            xi0 = lc.alpha_from - lc.alpha_to
             rows = friction_rows(spec, lc.name)
             for i, runs in runs_of.items():
-                r_ = runs[j]
-                first = r_.first_stroke_end
-                stuck = r_.outcome == "stuck"  # the governor does not follow the load change
+                row, ev_ = _friction_figures(lc, runs[j])
                 on = np.zeros(n, bool)
                 on[i] = True
-                checks.add_row(rows["stuck" if stuck else "moves"], {
-                    "xi0": xi0, "rest": abs(r_.final_state[0]),
-                    "past": 0.0 if stuck or first is None
-                    else max(0.0, -float(np.sign(xi0)) * first)}, where=on)
+                checks.add_row(rows[row], ev_, where=on)
         if report and 0 in runs_of:
             dyn["friction"] = [r_.to_dict() for r_ in runs_of[0]]
     req = spec.requirements
@@ -481,7 +456,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         error[i] = said.get(int(i)) or diagnose(spec, design_of(cols, i))
     ev = Evaluation(n, spec, out, checks, error, plan=plan)
     if report and not impossible[0]:
-        ev.spring = spring_design_of(sd, 0, bool(np.isfinite(I_given[0, 0])))
+        ev.spring = sd_of(0)
         ev.char = char_of(0)
         ev.k2 = np.array(k2[0])
         ev.vib = vibs[0]
@@ -489,6 +464,53 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
             dyn["vibration"] = vib_dicts[0]
         ev.dynamics = dyn
     return ev
+
+
+def _spring(spec: Spec, cols: dict, col: dict, central) -> tuple[np.ndarray, np.ndarray]:
+    """The springs' rate ``kappa`` (N/m) and free length ``l0`` (the type's form, m), shape
+    ``(N, 1)``: a given stiffness, else the type's rate of the section (a helical spring's
+    ``G d^4 / (64 r^3 n)``, Wahl 1944, Hamabe Ex. 1, vectorised; a type's own spring, a leaf,
+    design by design); a given free length, else the one that holds the normal configuration at
+    the mean speed (:func:`statics.free_half_length`, Hamabe Ex. 1). Zeros without a spring."""
+    gov, mat, n = spec.governor, spec.material, len(cols["pendulum_mass"])
+    m = col["pendulum_mass"]
+    if gov.spring is None:
+        return np.zeros_like(m), np.zeros_like(m)
+    if overridden(gov, "spring_rate"):  # the type's own spring (a leaf): design by design
+        rate = np.array([gov.spring_rate(design_of(cols, i), mat)
+                         if np.isnan(cols["spring_stiffness"][i]) else np.nan
+                         for i in range(n)], dtype=float).reshape(n, 1)
+    elif mat is not None and mat.shear_modulus is not None:
+        rate = hx.stiffness_r(col["wire_diameter"], col["coil_radius"], col["active_turns"],
+                              mat.shear_modulus)
+    else:
+        rate = np.full_like(m, np.nan)
+    kappa = np.where(np.isfinite(col["spring_stiffness"]), col["spring_stiffness"], rate)
+    l0 = col["free_half_length"]
+    if np.isnan(l0).any():
+        l0 = np.where(np.isnan(l0), statics.free_half_length(spec, m, kappa, central), l0)
+    return kappa, l0
+
+
+def _friction_runs(spec: Spec, design: Design, sd: statics.SpringDesign) -> list:
+    """Hamabe's friction transient (eqs. 42-46) of every load change of one design."""
+    from .analysis import friction  # only where a design has friction (model what is asked)
+
+    spec = spec.with_design(design)  # its dash-pot and friction moment
+    return [friction.friction_load_change(spec, sd, lc) for lc in spec.load_changes]
+
+
+def _friction_figures(lc, run) -> tuple[str, dict]:
+    """Which friction row of :func:`govopt.requirements.friction_rows` a run of load change
+    ``lc`` is judged by, and its figures: "stuck" (the governor does not follow the load
+    change: the offset it rests at) or "moves" (how far its first stroke ends past the new
+    equilibrium)."""
+    xi0 = lc.alpha_from - lc.alpha_to
+    first = run.first_stroke_end
+    stuck = run.outcome == "stuck"
+    return ("stuck" if stuck else "moves"), {
+        "xi0": xi0, "rest": abs(run.final_state[0]),
+        "past": 0.0 if stuck or first is None else max(0.0, -float(np.sign(xi0)) * first)}
 
 
 def _load_change_many(spec, lc, m, kappa, l0, central, I_given, dashpot, run):
