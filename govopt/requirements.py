@@ -308,7 +308,9 @@ class Column(NamedTuple):
 def _over(v, n: int, dtype=float) -> np.ndarray:
     """``v`` as an array over ``n`` designs (broadcast where it is one number)."""
     a = np.asarray(v, dtype=dtype)
-    return a if a.shape == (n,) else np.broadcast_to(a, (n,))
+    if a.shape == (n,):
+        return a
+    return np.full(n, a, dtype) if a.ndim == 0 else np.broadcast_to(a, (n,))
 
 
 class CheckTable:
@@ -352,7 +354,7 @@ class CheckTable:
             margin = diff / s
         given = verdict is not None
         passed = margin >= PASS_TOL if not given else _over(verdict, n, bool)
-        on = slice(None) if where is None else np.broadcast_to(where, (n,))
+        on = slice(None) if where is None else _over(where, n, bool)
         if name not in self._cols:
             self.names.append(name)
             self._cols[name] = Column(*(np.full(n, np.nan) for _ in range(4)),
