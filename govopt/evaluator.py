@@ -200,9 +200,10 @@ def _pick(s: tr.TransientSummary, j: int) -> tr.TransientSummary:
 class Evaluation:
     """What :func:`core` gives for N designs (SI).
 
+    ``spec``: the spec evaluated (with its use case's settings, :func:`govopt.fidelity.plan`);
     ``figures``: the per-design figures (name -> array of N; the columns of a bulk row before
-    its checks); ``table``: every check; ``error``: the diagnosis of each impossible design
-    (None where possible; its figures and checks are then not meaningful). With
+    its checks); ``table``: every check; ``error``: the diagnosis of each impossible design,
+    None for the others (an impossible design's figures and checks mean nothing). With
     ``report=True`` (one design, for :func:`govopt.evaluate`) also the report's content of
     design 0: ``spring`` (its :class:`SpringDesign`), ``char`` (its :class:`Characteristic`),
     ``k2`` over the configurations, ``vib`` (the forced vibration) and ``dynamics`` (the load
