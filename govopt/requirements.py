@@ -6,8 +6,8 @@ group (``"statics"``, ``"spring"``, ``"bounds"``, ``"dynamics"``), its unit, its
 scale of its margin where the limit is zero, a verdict where the margin alone cannot decide it,
 and where one exists its form in the spring's geometric programme (:class:`GPForm`).
 
-The same rows are read by :func:`govopt.evaluate` (N = 1), the bulk evaluation
-(:mod:`govopt.bulk`), the design search's catalogue screen
+The same rows are read by the one evaluator (:func:`govopt.evaluator.core`: N designs for
+the bulk evaluation, one for :func:`govopt.evaluate`), the design search's catalogue screen
 (:func:`govopt.optimize.design.spring_checks`) and the spring GP's constraint table
 (:mod:`govopt.optimize.gp_table`); :class:`CheckTable` turns rows into values, margins and
 verdicts over N designs, and into :class:`govopt.result.Check` objects for one.
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -211,9 +211,8 @@ STRESS_SOURCE = "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"
 
 def stress_row(material) -> Row:
     """The largest shear stress of a helical spring (``ev["stress"]``, Pa) within the spec's
-    allowable ``material.allowable_shear_stress`` (group ``"spring"``; without a wire grade;
-    :meth:`govopt.governors.base.Governor.spring_checks` gives the same check with its
-    source)."""
+    allowable ``material.allowable_shear_stress`` (group ``"spring"``; without a wire grade,
+    whose table has its own stress rows: :meth:`Governor.spring_checks`)."""
     return Row("shear stress", "<=", "Pa", lambda ev: ev["stress"],
                _const(material.allowable_shear_stress), STRESS_SOURCE, group="spring")
 
@@ -254,19 +253,19 @@ def holds(rows, ev) -> np.ndarray:
 def load_change_rows(spec, name: str) -> list[Row]:
     """The load change ``name``'s requirements (Hamabe Part III; group ``"dynamics"``);
     ``ev``: ``hurwitz``, ``over`` (over-regulation, the coordinate's unit), ``over_regulates``,
-    ``xi0`` (the initial offset), ``settling`` (s), each a mapping by load-change name."""
+    ``xi0`` (the initial offset), ``settling`` (s), each of the load change ``name``."""
     req = spec.requirements
     unit = SI_UNITS[spec.governor.coordinate]
-    rows = [Row(f"Hurwitz margin eq. (32): {name}", ">=", "", lambda ev: ev["hurwitz"][name],
+    rows = [Row(f"Hurwitz margin eq. (32): {name}", ">=", "", lambda ev: ev["hurwitz"],
                 _const(req.hurwitz_margin if req else 0.0),
                 "Hamabe eq. (32): 9 a1 a2 / (a0 a3) - 1", group="dynamics",
                 scale=_const(1.0)),
-            Row(f"no over-regulation: {name}", "<=", unit, lambda ev: ev["over"][name],
+            Row(f"no over-regulation: {name}", "<=", unit, lambda ev: ev["over"],
                 _const(0.0), "Hamabe Part III; all t >= 0 (transient.over_regulates)",
-                group="dynamics", scale=lambda ev: np.abs(ev["xi0"][name]),
-                verdict=lambda ev: ~np.asarray(ev["over_regulates"][name], dtype=bool))]
+                group="dynamics", scale=lambda ev: np.abs(ev["xi0"]),
+                verdict=lambda ev: ~np.asarray(ev["over_regulates"], dtype=bool))]
     if req is not None and req.max_settling_time is not None:
-        rows.append(Row(f"settling time: {name}", "<=", "s", lambda ev: ev["settling"][name],
+        rows.append(Row(f"settling time: {name}", "<=", "s", lambda ev: ev["settling"],
                         _const(req.max_settling_time), "Hamabe Part III", group="dynamics"))
     return rows
 
@@ -303,16 +302,36 @@ def vibration_rows(spec) -> list[Row]:
 # The evaluator of rows
 # ---------------------------------------------------------------------------------------------
 
+class Column(NamedTuple):
+    """One row of a :class:`CheckTable` over its N designs: value, limit, margin, the margin's
+    scale (NaN: ``|limit|``), verdict, and whether the row applies to each design."""
+
+    value: np.ndarray
+    limit: np.ndarray
+    margin: np.ndarray
+    scale: np.ndarray
+    passed: np.ndarray
+    applies: np.ndarray
+
+
+def _over(v, n: int, dtype=float) -> np.ndarray:
+    """``v`` as an array over ``n`` designs (broadcast where it is one number)."""
+    a = np.asarray(v, dtype=dtype)
+    if a.shape == (n,):
+        return a
+    return np.full(n, a, dtype) if a.ndim == 0 else np.broadcast_to(a, (n,))
+
+
 class CheckTable:
     """Rows evaluated over N designs, in the order added: arrays of values, limits, margins and
     verdicts (``applies`` False where a row does not apply to a design). ``checks(i)`` gives
-    design ``i``'s :class:`~govopt.result.Check` objects; the bulk evaluation reads the
-    arrays."""
+    design ``i``'s :class:`~govopt.result.Check` objects; ``columns()`` the arrays (the bulk
+    evaluation's columns), ``failed()`` which rows fail for which design."""
 
     def __init__(self, n: int):
         self.n = n
-        self.cols: dict[str, tuple] = {}
-        self.meta: dict[str, tuple] = {}
+        self._cols: dict[str, Column] = {}
+        self._meta: dict[str, tuple] = {}
         self.names: list[str] = []
 
     def add_row(self, row: Row, ev, where=None) -> None:
@@ -331,41 +350,47 @@ class CheckTable:
         """``Check.margin`` vectorised: ``(limit - value)/s`` for ``<=``, ``(value - limit)/s``
         for ``>=``, ``s = scale or (|limit| if limit != 0 else 1)``; ``Check.passed``."""
         n = self.n
-        value = np.broadcast_to(np.asarray(value, dtype=float), (n,))
-        limit = np.broadcast_to(np.asarray(limit, dtype=float), (n,))
+        value, limit = _over(value, n), _over(limit, n)
         fallback = np.where(limit != 0, np.abs(limit), 1.0)
         if scale is None:
             s = fallback
             sc = np.full(n, np.nan)
         else:
-            sc = np.broadcast_to(np.asarray(scale, dtype=float), (n,))
+            sc = _over(scale, n)
             s = np.where(sc != 0, sc, fallback)
         diff = limit - value if sense == "<=" else value - limit
         with np.errstate(invalid="ignore", divide="ignore"):
             margin = diff / s
         given = verdict is not None
-        passed = margin >= PASS_TOL if not given else np.broadcast_to(
-            np.asarray(verdict, dtype=bool), (n,))
-        on = np.ones(n, bool) if where is None else np.broadcast_to(where, (n,))
-        if name not in self.cols:
+        passed = margin >= PASS_TOL if not given else _over(verdict, n, bool)
+        on = slice(None) if where is None else _over(where, n, bool)
+        if name not in self._cols:
             self.names.append(name)
-            self.cols[name] = tuple(np.full(n, np.nan) for _ in range(4)) + (
-                np.zeros(n, bool), np.zeros(n, bool))
-            self.meta[name] = (sense, unit, source, given, group)
-        v, lim, m, scl, p, applies = self.cols[name]
+            self._cols[name] = Column(*(np.full(n, np.nan) for _ in range(4)),
+                                      np.zeros(n, bool), np.zeros(n, bool))
+            self._meta[name] = (sense, unit, source, given, group)
+        v, lim, m, scl, p, applies = self._cols[name]
         v[on], lim[on], m[on], scl[on] = value[on], limit[on], margin[on], sc[on]
         p[on] = passed[on]
-        applies |= on
+        applies[on] = True
+
+    def drop(self, designs) -> None:
+        """No row applies to the ``designs`` (a mask): designs that cannot be evaluated."""
+        for c in self._cols.values():
+            for a in c[:4]:
+                a[designs] = np.nan
+            c.passed[designs] = False
+            c.applies[designs] = False
 
     def checks(self, i: int = 0, source_of=None) -> list[Check]:
         """Design ``i``'s checks (the rows that apply to it), in order; ``source_of(text)``
         resolves a callable source."""
         out = []
         for name in self.names:
-            v, lim, _, scl, p, applies = self.cols[name]
+            v, lim, _, scl, p, applies = self._cols[name]
             if not applies[i]:
                 continue
-            sense, unit, source, given, group = self.meta[name]
+            sense, unit, source, given, group = self._meta[name]
             if callable(source):
                 source = source_of(source) if source_of else source()
             out.append(Check(name, float(v[i]), float(lim[i]), sense, unit, source,
@@ -373,15 +398,24 @@ class CheckTable:
                              verdict=bool(p[i]) if given else None, group=group))
         return out
 
+    def columns(self) -> dict[str, Column]:
+        """Every row's arrays (:class:`Column`), by name, in order."""
+        return {name: self._cols[name] for name in self.names}
+
+    def failed(self) -> np.ndarray:
+        """``(N, rows)`` booleans: True where a row applies to a design and fails (NaN fails);
+        the rows in :attr:`names` order."""
+        out = np.zeros((self.n, len(self.names)), bool)
+        for j, name in enumerate(self.names):
+            c = self._cols[name]
+            out[:, j] = c.applies & ~c.passed
+        return out
+
     def feasible(self) -> np.ndarray:
         """True where every row that applies holds (NaN fails)."""
-        ok = np.ones(self.n, bool)
-        for name in self.names:
-            *_, p, applies = self.cols[name]
-            ok &= p | ~applies
-        return ok
+        return ~self.failed().any(axis=1)
 
 
-__all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "GPForm", "Row", "SpringFigures",
+__all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "Column", "GPForm", "Row", "SpringFigures",
            "friction_rows", "holds", "load_change_rows", "requirement_rows", "statics_rows",
            "statics_figures", "stress_row", "vibration_rows"]

@@ -192,3 +192,51 @@ def test_use_case_is_honoured(use_case):
         assert all(_same(v, row.get(k)) for k, v in ref.items()), use_case
         assert not [k for k, v in row.items() if k not in ref and not _same(v, None)]
     assert ("settling_time_s" in frame) == (use_case == "load_change")
+
+
+@pytest.mark.parametrize("name, borrow", [
+    ("hamabe-a.toml", None),  # friction moments: Hamabe's strokes (eqs. 42-46) in the core
+    ("hamabe-design-fatigue.toml", "hamabe-a.toml"),  # a wire grade's own table, with fatigue
+    ("traction-leaf-weights.toml", None),  # a leaf: its own rate, stress and table
+])
+def test_one_evaluator_no_fallback(name, borrow, monkeypatch):
+    """Every design goes through the one evaluator (govopt.evaluator.core): the designs that
+    used to be handed to govopt.evaluate one by one (friction in a spec with load changes, a
+    graded wire, a leaf spring, an impossible design) are rows of the core, equal to evaluate's
+    results, and evaluate is never called."""
+    from govopt import evaluation
+
+    spec = load_spec(SPECS / name)
+    if borrow:
+        spec = spec.with_design(load_spec(SPECS / borrow).design)
+    cols = _designs(spec, 5, seed=11)
+    if spec.governor.coordinate == "angle":
+        cols["friction_moment"] = np.array([0.0, 0.3, 2.0, np.nan, 0.3])
+    if spec.governor.spring == "leaf":
+        cols["leaf_thickness"][4] = 0.0  # no leaf: the dead loads push it out, an error row
+    else:
+        cols["pendulum_mass"][4] *= 40.0  # far too heavy for its spring: an error row
+    refs = []
+    for i in range(5):
+        design = Design(**{f: None if np.isnan(cols[f][i]) else float(cols[f][i])
+                           for f in DESIGN_FIELDS})
+        refs.append(_reference(spec, design))
+    assert refs[4]["status"] == "error"
+
+    def no_fallback(*args, **kwargs):
+        raise AssertionError("evaluate_many called govopt.evaluate")
+
+    monkeypatch.setattr(evaluation, "evaluate", no_fallback)
+    frame = evaluate_many(spec, cols)
+    for i, ref in enumerate(refs):
+        row = frame.iloc[i].to_dict()
+        assert row["status"] == ref["status"], (i, row["message"], ref["message"])
+        if ref["status"] == "error":
+            assert row["message"] == ref["message"]
+            continue
+        wrong = {k: (ref[k], row.get(k)) for k in ref if not _same(ref[k], row.get(k))}
+        assert not wrong, wrong
+        extra = [k for k, v in row.items() if k not in ref and not _same(v, None)]
+        assert not extra, extra
+    if spec.governor.coordinate == "angle":
+        assert any(k.startswith("passed: friction:") for k in frame.columns)

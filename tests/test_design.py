@@ -3,6 +3,7 @@
 import dataclasses
 import json
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -290,3 +291,28 @@ def test_huge_flywheel_design_agrees_with_evaluate(tmp_path, inertia):
     with pytest.raises(govopt.errors.InfeasibleError, match=r"max_settling_time 10 s .* the "
                        r"fastest admissible settling is \d\.\d+e\+0[4-7] s"):
         dz.design(govopt.load_spec(path))
+
+
+def test_a_design_the_evaluator_fails_is_diagnosed_not_returned(monkeypatch):
+    """The final verdict is the evaluator's: a chosen design it fails (forced here by a check
+    the search never saw) is no design, and the message is a diagnosis naming the requirement,
+    its value, limit and margin, and what to change - not a request to report a bug."""
+    from govopt import evaluation
+    from govopt.errors import DesignError
+    from govopt.verdict import Check
+
+    real = evaluation.evaluate
+
+    def failing(spec, design=None):
+        res = real(spec, design)
+        res.checks.append(Check("irregularity (tightened)", 0.05, 0.04, "<=", "", ""))
+        return res
+
+    monkeypatch.setattr(evaluation, "evaluate", failing)
+    spec = govopt.load_spec(Path(govopt.__file__).parent / "specs" / "porter-design.toml")
+    with pytest.raises(DesignError) as err:
+        govopt.design(spec)
+    text = str(err.value)
+    assert "irregularity (tightened): 0.05 , required <= 0.04 (margin -0.25)" in text
+    assert "edge of irregularity (tightened)" in text and "more margin" in text
+    assert "bug" not in text

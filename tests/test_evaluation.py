@@ -4,6 +4,7 @@ design, not the spec's ``[design]``; check names use the type's own word for its
 from dataclasses import replace
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import govopt
@@ -112,3 +113,29 @@ def test_diagnosis_names_the_types_weight_key(tmp_path):
         design(govopt.load_spec(path))
     assert "bounds.ball_weight widened" in str(info.value)
     assert "pendulum" not in str(info.value)
+
+
+@pytest.mark.parametrize("name", ["hamabe-a.toml", "hamabe-d.toml", "textbook-ex4-hartnell.toml",
+                                  "traction-leaf-weights.toml", "porter-engine.toml"])
+def test_evaluate_is_the_one_evaluator(name, monkeypatch):
+    """evaluate is govopt.evaluator.core with one design: its checks and report come from the
+    core's figures, with no scalar statics, k^2 or load-change computation beside it (the
+    former twin) - those entry points may fail and evaluate still gives its checks, the same
+    as evaluate_many's row."""
+    from govopt.analysis import loadchange, statics
+    from govopt.bulk import evaluate_many, value_column
+
+    spec = govopt.load_spec(SPECS / name)
+    row = evaluate_many(spec, [spec.design]).iloc[0]
+
+    def second(*args, **kwargs):
+        raise AssertionError("a second computation of the design's figures")
+
+    for module, fn in ((statics, "spring_design"), (statics, "characteristic"),
+                       (statics, "restoring_k2"), (loadchange, "analyse")):
+        monkeypatch.setattr(module, fn, second)
+    res = govopt.evaluate(spec)
+    assert res.checks
+    for c in res.checks:
+        assert row[value_column(c.name)] == c.value or (np.isnan(c.value) and np.isnan(
+            row[value_column(c.name)])), c.name

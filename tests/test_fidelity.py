@@ -44,7 +44,7 @@ def calls(monkeypatch):
 
         monkeypatch.setattr(module, name, wrapper)
 
-    counting(loadchange, "analyse", "load_change")
+    counting(loadchange, "summary", "load_change")  # evaluate's report of each load change
     counting(vibration, "vibration", "vibration")
     counting(friction, "friction_load_change", "friction")
     return counts

@@ -166,3 +166,25 @@ def test_a_falling_characteristic_is_unstable_on_every_path(tmp_path):
     assert res.statics.omega[-1] < res.statics.omega[0]
     assert res.classic["stability"] == "unstable"
     assert not res.check("characteristic rises (stable)").passed
+
+
+def test_check_table_columns_failed_and_drop():
+    """CheckTable's public arrays: a row's columns over N designs, which rows fail for which
+    design (a row that does not apply never fails; NaN fails), and designs dropped (no row
+    applies to them: an impossible design's)."""
+    import numpy as np
+
+    from govopt.requirements import CheckTable
+
+    t = CheckTable(3)
+    t.add("a", [1.0, 3.0, np.nan], 2.0, "<=")
+    t.add("b", [5.0, 5.0, 5.0], 4.0, ">=", where=np.array([False, True, True]))
+    cols = t.columns()
+    assert list(cols) == ["a", "b"]
+    assert cols["a"].margin[0] == pytest.approx(0.5) and cols["a"].margin[1] == pytest.approx(-0.5)
+    assert list(cols["b"].applies) == [False, True, True]
+    assert t.failed().tolist() == [[False, False], [True, False], [True, False]]
+    assert t.feasible().tolist() == [True, False, False]
+    t.drop(np.array([False, True, False]))
+    assert t.failed().tolist() == [[False, False], [False, False], [True, False]]
+    assert [c.name for c in t.checks(1)] == [] and [c.name for c in t.checks(2)] == ["a", "b"]

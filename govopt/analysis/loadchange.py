@@ -167,8 +167,15 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
     ``xi_u``, ``xi_dot_u_s``, ``xi_ddot_u_s2``, ``response`` ``xi_u``, and eq. (28)'s
     coefficients (:func:`coefficient_keys`)."""
     a, x, k2 = coefficients(spec, sd, lc, f)
-    u = coordinate_unit(spec.governor)
     res = tr.analyse_many(*a, *x, band=spec.analysis.settling_band)  # one design: scalars
+    return summary(spec, lc, a, x, k2, res, samples)
+
+
+def summary(spec: Spec, lc: LoadChange, a, x, k2: float, res, samples: int = 200) -> dict:
+    """The dict of :func:`analyse` from one design's coefficients ``a`` (eq. 28), initial state
+    ``x``, ``k^2`` and its :class:`~govopt.analysis.transient.TransientSummary` ``res``: the
+    numbers the evaluator computed (:mod:`govopt.evaluator`), with the response table."""
+    u = coordinate_unit(spec.governor)
     roots = np.asarray(res.roots, dtype=complex)
     slowest = float(np.min(np.abs(roots.real)))
     horizon = res.settling_time if np.isfinite(res.settling_time) else (

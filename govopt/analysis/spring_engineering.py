@@ -493,19 +493,22 @@ def geometry_rows(spec, d, D, n, kappa, l0, F1=None, F2=None) -> dict:
     return {k: (v, lim, senses[k]) for k, (v, lim) in ck.evaluate(kind, ck.GEOMETRY, **kw).items()}
 
 
+def geometry_table(spec, d, D, n, kappa, l0, F1, F2) -> list:
+    """The rows of :func:`geometry_rows` with what a check shows of them, in order:
+    ``(row, value, limit, source)`` (:func:`govopt.springs.checks.rows_over`; the row's name,
+    sense and unit); none for a spring kind without geometric rows."""
+    kind = KINDS[spec.governor.spring]
+    if not any(r.name in ck.GEOMETRY for r in ck.TABLES[kind]):
+        return []
+    return ck.rows_over(kind, ck.GEOMETRY, **_kw(spec, d, D, n, kappa, l0, F1, F2))
+
+
 def geometry_screen(spec, d, r, n, kappa, l0):
     """True where every row of :func:`geometry_rows` holds (catalogue springs, arrays)."""
     ok = True
     for value, limit, sense in geometry_rows(spec, d, 2.0 * r, n, kappa, l0).values():
         ok = ok & (value <= limit if sense == "<=" else value >= limit)
     return np.asarray(ok)
-
-
-def geometry_checks(spec, sd) -> list:
-    """:func:`geometry_rows` of one design as :class:`govopt.verdict.Check` objects."""
-    F1, F2 = static_range(spec, sd.kappa, sd.l0)
-    kw = _kw(spec, sd.d, 2.0 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2)
-    return ck.checks(KINDS[spec.governor.spring], ck.GEOMETRY, **kw)
 
 
 def screen_fatigue(spec, d, r, n, kappa, l0, swing):
@@ -522,7 +525,7 @@ def screen_fatigue(spec, d, r, n, kappa, l0, swing):
 
 
 __all__ = ["KINDS", "NO_FORCING", "Spread", "SpringReport", "allowable_monomial", "checks",
-           "evaluate_rows", "fatigue_forces", "fatigue_safety", "feasible", "geometry_checks",
-           "geometry_rows", "geometry_screen", "harmonics_hz",
+           "evaluate_rows", "fatigue_forces", "fatigue_safety", "feasible",
+           "geometry_rows", "geometry_screen", "geometry_table", "harmonics_hz",
            "initial_tension", "report", "screen", "screen_fatigue",
            "screen_vibration", "spread", "static_range", "wire"]

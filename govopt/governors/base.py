@@ -41,7 +41,6 @@ from typing import ClassVar
 import numpy as np
 
 from ..springs.kinds import KINDS, SpringKind
-from ..verdict import Check
 
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
 #: (govopt's rule: every key's unit in its name), by the coordinate's dimension: ``x`` itself
@@ -244,25 +243,19 @@ class Governor(ABC):
         return hx.shear_stress_r(F, sd.d, sd.r, material.stress_correction)
 
     def spring_checks(self, spec, sd, char, vib=None) -> list:
-        """The spring's own checks (:class:`govopt.verdict.Check`): a helical spring's largest
-        shear stress against the allowable (Hamabe Ex. 1); with a wire grade
-        (``material.grade``) the spring engineering table instead - static stresses against
-        the grade's allowables at ``d``, the spring kind's geometry, and fatigue and surge under
-        ``vib``, the type's forced vibration (:mod:`govopt.analysis.spring_engineering`).
-        Without a grade, the spring kind's geometric rows (coil clash, buckling, free pitch:
-        :func:`~govopt.analysis.spring_engineering.geometry_checks`) follow the stress."""
-        if spec.material is None or not np.isfinite(sd.d):
+        """The spring's own checks (:class:`govopt.verdict.Check`) beyond the evaluator's rows
+        (:mod:`govopt.evaluator`: a helical spring's shear stress against the allowable,
+        :func:`govopt.requirements.stress_row`, and its geometry, which needs no wire grade):
+        with a wire grade (``material.grade``) the spring engineering table instead - static
+        stresses against the grade's allowables at ``d``, the spring kind's geometry, and
+        fatigue and surge under ``vib``, the type's forced vibration
+        (:mod:`govopt.analysis.spring_engineering`); none without a grade. A type with another
+        spring (a leaf) gives its whole table here."""
+        if spec.material is None or spec.material.grade is None or not np.isfinite(sd.d):
             return []
         from ..analysis import spring_engineering
 
-        if spec.material.grade is not None:
-            return spring_engineering.checks(spec, sd, char, vib)
-        # the spring's geometry (coil clash, buckling, pitch) needs no wire grade: checked
-        # whenever d, r, n are known
-        return [Check("shear stress", float(np.max(char.stress)),
-                      spec.material.allowable_shear_stress, "<=", "Pa",
-                      "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s", group="spring"),
-                *spring_engineering.geometry_checks(spec, sd)]
+        return spring_engineering.checks(spec, sd, char, vib)
 
     def spring_report(self, spec, sd, char, vib=None):
         """The spring maker's sheet, the fatigue loads under ``vib`` and the manufacturing

@@ -775,13 +775,7 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
     res = evaluate(spec.with_design(chosen))
     failed = [c for c in res.checks if not c.passed]
     if failed:  # the closing check decides: a design that fails it is no design
-        spring = "".join(f", {k} = {v:.6g}" for k, v in cand.spring.items())
-        raise DesignError(
-            f"{spec.path}: the chosen design ({gov.mass_key} {cand.m:.6g} kg{spring}, dash-pot "
-            f"{cand.f:.6g} SI) fails its final verification by govopt evaluate: "
-            + "; ".join(f"{c.name}: {c.value:.6g} {c.unit}, required {c.sense} {c.limit:.6g}"
-                        for c in failed)
-            + " (the optimiser's model and the evaluator disagree: a bug, please report it)")
+        raise DesignError(unverified(spec, cand, failed))
     res.kind = "design"
     gap = None if bound is None else (cand.objective - bound["objective"]) / bound["objective"]
     damping = gov.key_unit("damping")
@@ -810,6 +804,25 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
                                        else bound["objective"]),
     }
     return res
+
+
+def unverified(spec: Spec, cand: Candidate, failed) -> str:
+    """The diagnosis of a chosen design that fails its final evaluation (``failed``: the
+    :class:`~govopt.verdict.Check` objects that fail). The verdict is the evaluator's
+    (:mod:`govopt.evaluator`); the search held the same requirement rows on its own model (the
+    statics affine in the spring rate at fixed masses, on the catalogue's grid), so a miss is a
+    design on the edge of a requirement, by the rounding between the two: name it, its value,
+    its limit and its margin, and what to change."""
+    gov = spec.governor
+    spring = "".join(f", {k} = {v:.6g}" for k, v in cand.spring.items())
+    names = ", ".join(c.name for c in failed)
+    return (f"{spec.path}: the chosen design ({gov.mass_key} {cand.m:.6g} kg{spring}, dash-pot "
+            f"{cand.f:.6g} SI) fails its final verification by govopt evaluate: "
+            + "; ".join(f"{c.name}: {c.value:.6g} {c.unit}, required {c.sense} {c.limit:.6g} "
+                        f"(margin {c.margin:.3g})" for c in failed)
+            + f". The search's screen passed it on its own model, so it lies on the edge of "
+            f"{names}: no design is returned; ask for a little more margin on {names} (or a "
+            "finer catalogue step) and search again")
 
 
 def dashpot_margins(cand: Candidate) -> dict:

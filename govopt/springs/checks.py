@@ -254,13 +254,19 @@ def _rows(kind, kw, only=None):
     return rows
 
 
+def rows_over(kind: str, only=None, **kw) -> list[tuple[Row, np.ndarray, np.ndarray, str]]:
+    """Every row of the ``kind`` table (or the rows named in ``only``) over arrays, in order:
+    ``(row, value, limit, source)`` (value and limit broadcast; the source's text)."""
+    kw = prepare(kind, **kw)
+    return [(r, *np.broadcast_arrays(np.asarray(r.value(kw), dtype=float),
+                                     np.asarray(r.limit(kw), dtype=float)),
+             r.source(kw) if callable(r.source) else r.source) for r in _rows(kind, kw, only)]
+
+
 def evaluate(kind: str, only=None, **kw) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """Every row of the ``kind`` table (or the rows named in ``only``) over arrays:
     ``{name: (value, limit)}`` (broadcast)."""
-    kw = prepare(kind, **kw)
-    return {r.name: tuple(np.broadcast_arrays(np.asarray(r.value(kw), dtype=float),
-                                              np.asarray(r.limit(kw), dtype=float)))
-            for r in _rows(kind, kw, only)}
+    return {r.name: (value, limit) for r, value, limit, _ in rows_over(kind, only, **kw)}
 
 
 def feasible(kind: str, only=None, **kw) -> np.ndarray:

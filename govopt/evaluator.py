@@ -1,0 +1,625 @@
+"""The one evaluator: every figure and check of N designs of a spec, over arrays.
+
+:func:`core` computes, for designs given as arrays (:func:`govopt.bulk.design_arrays`), the
+statics (Hamabe eqs. 1, 2, 11, 12), ``k^2`` (eqs. 18-20), the load-change model (eqs. 24-32,
+:func:`govopt.analysis.transient.analyse_many`) and the classic measures (textbook ch. 3) in a
+few numpy operations, and evaluates every requirement row of :mod:`govopt.requirements` on them
+in one :class:`~govopt.requirements.CheckTable`. The parts that have no vectorised form run
+inside it design by design, into the same table: a type's periodic forcing
+(:meth:`Governor.vibration`, Hamabe Part II), Hamabe's friction transient (eqs. 42-46, a
+sequence of strokes), and the spring's own checks where the type or a wire grade supplies them
+(:meth:`Governor.spring_checks`). A design no spring can realise gets the one-line diagnosis
+:func:`diagnose` (the ``DesignError`` :func:`govopt.evaluate` raises for it) instead of figures.
+
+:func:`govopt.evaluate` is this core with one design (plus the report's tables);
+:func:`govopt.bulk.evaluate_many` is it over chunks, as a pandas frame. There is no other
+computation of a check.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, fields, replace
+
+import numpy as np
+
+from .analysis import loadchange, statics
+from .analysis import transient as tr
+from .errors import DesignError
+from .governors import Governor
+from .requirements import (
+    CheckTable,
+    friction_rows,
+    load_change_rows,
+    requirement_rows,
+    statics_figures,
+    statics_rows,
+    stress_row,
+    vibration_rows,
+)
+from .spec import Design, Spec
+from .springs import helical as hx
+
+#: the fields of :class:`govopt.spec.Design`: the columns a frame of designs may have (SI)
+DESIGN_FIELDS = tuple(f.name for f in fields(Design))
+
+
+# ---------------------------------------------------------------------------------------------
+# Diagnoses of impossible designs (the DesignError evaluate raises)
+# ---------------------------------------------------------------------------------------------
+
+def possible(spec: Spec, sd: statics.SpringDesign) -> None:
+    """Reject a design no spring can realise, with a diagnosis (:class:`DesignError`): a
+    non-finite figure, or a spring's free length ``l0 <= 0`` (where the type's free length is a
+    length, :attr:`Governor.free_length_positive`). On the seam
+    ``l0 = (A_n - Q_n / kappa) / B_n`` (Hamabe, Example 1: ``l0 = l_n - F_n / (2 kappa)``) rises
+    with ``kappa`` towards ``l_inf = A_n / B_n``, so ``l0 > 0`` needs
+    ``kappa > kappa (1 - l0 / l_inf)``: the spring is too soft to hold the normal configuration
+    at the mean speed even stretched from zero length."""
+    gov = spec.governor
+    name = gov.free_length_key.replace("_", " ")
+    finite(spec, {f"{gov.mass_name} mass": sd.m, "inertia": sd.inertia,
+                  "spring stiffness": sd.kappa, name: sd.l0})
+    if gov.spring is not None and gov.free_length_positive and sd.l0 <= 0:
+        l_inf = float(statics.free_half_length(spec, sd.m, np.inf, sd.central))
+        need = (f"; it needs kappa > {sd.kappa * (1.0 - sd.l0 / l_inf):.6g} N/m (or a lighter "
+                "flying mass)" if l_inf > 0 else "")
+        raise DesignError(
+            f"{spec.path}: design: impossible design: the {name} l0 = {sd.l0:.6g} m is not "
+            f"positive: the spring (kappa = {sd.kappa:.6g} N/m) is too soft to hold the normal "
+            f"configuration at the mean speed even stretched from zero length{need}")
+
+
+def finite(spec: Spec, figures: dict) -> None:
+    """:class:`DesignError` naming the first figure that is infinite or not a number."""
+    for name, value in figures.items():
+        bad = ~np.isfinite(np.asarray(value, dtype=float))
+        if np.any(bad):
+            shown = np.asarray(value, dtype=float)[bad].flat[0]
+            raise DesignError(f"{spec.path}: design: impossible design: the {name} is {shown} "
+                              "(not finite); the design's inputs are outside any physical range")
+
+
+def overflow_message(spec: Spec) -> str:
+    return (f"{spec.path}: design: impossible design: a figure overflows the floating-point "
+            "range; the design's inputs are far outside any physical range")
+
+
+def invalid(spec: Spec, design: Design) -> str | None:
+    """What the spec parser would say of a design given as numbers (a mass that is not a
+    number, a wire thicker than its coil), or None."""
+    if design.pendulum_mass is None or not math.isfinite(design.pendulum_mass):
+        return (f"{spec.path}: design: the {spec.governor.mass_key} mass is missing or not a "
+                "finite number")
+    if design.wire_diameter is not None and design.coil_radius is not None and \
+            design.wire_diameter >= 2.0 * design.coil_radius:
+        return (f"{spec.path}: design.wire_diameter: expected a wire thinner than the coil "
+                "diameter 2 r")
+    return None
+
+
+def diagnose(spec: Spec, design: Design) -> str:
+    """The one-line diagnosis of a design :func:`core` finds impossible: the parser's word on
+    its numbers (:func:`invalid`), else the first of the statics' own (its spring, a free
+    length <= 0, no equilibrium speed, a figure that is not finite), else an overflow."""
+    bad = invalid(spec, design)
+    if bad:
+        return bad
+    spec = spec.with_design(design)
+    try:
+        sd = statics.spring_design(spec, design)
+        possible(spec, sd)
+        char = statics.characteristic(spec, sd)
+        k2 = statics.restoring_k2(spec, char.alpha, sd, char.omega**2)
+        finite(spec, {"equilibrium speed": char.omega, "spring force (generalised)": char.M_f,
+                      "centrifugal force (generalised)": char.M_z,
+                      "spring force": char.spring_force, "k^2": k2,
+                      **({"shear stress": char.stress} if spec.material is not None
+                         and np.isfinite(sd.d) else {})})
+    except DesignError as exc:
+        return str(exc)
+    except OverflowError:
+        pass
+    return overflow_message(spec)
+
+
+# ---------------------------------------------------------------------------------------------
+# Small helpers on arrays of designs
+# ---------------------------------------------------------------------------------------------
+
+def overridden(gov: Governor, method: str) -> bool:
+    """Whether the governor type supplies its own ``method`` (not the seam's default)."""
+    own = getattr(type(gov), method, None)
+    return own is not None and own is not getattr(Governor, method, None)
+
+
+def design_of(cols: dict, i: int) -> Design:
+    """Row ``i`` of a dict of design arrays as a :class:`Design`."""
+    return Design(**{f: (None if np.isnan(cols[f][i]) else float(cols[f][i]))
+                     for f in DESIGN_FIELDS})
+
+
+def dashpot_column(gov: Governor) -> str:
+    """The dash-pot's figure (SI, the type's damping unit: ``dashpot_N_m_s_per_rad`` ...)."""
+    return f"dashpot_{gov.key_unit('damping')}"
+
+
+def design_columns(designs) -> dict[str, np.ndarray]:
+    """A sequence of :class:`Design` as one float array per field (SI, NaN for "not given")."""
+    return {f: np.array([np.nan if getattr(d, f) is None else getattr(d, f) for d in designs],
+                        dtype=float) for f in DESIGN_FIELDS}
+
+
+def flat(v, n: int) -> np.ndarray:
+    """A per-design quantity of shape ``(N, 1)`` (or broadcasting to it) as ``(N,)``."""
+    return np.broadcast_to(np.asarray(v, dtype=float), (n, 1))[:, 0]
+
+
+def friction_at(gov: Governor, cols: dict, x) -> np.ndarray:
+    """The friction band :meth:`Governor.friction` of every design at configurations ``x``,
+    shape ``(N, K)`` (evaluated once per distinct friction moment)."""
+    fm = cols["friction_moment"]
+    band = np.zeros((fm.size, np.size(x)))
+    for value in np.unique(fm):
+        rows = (fm == value) | (np.isnan(fm) & np.isnan(value))
+        probe = Design(pendulum_mass=1.0, friction_moment=None if np.isnan(value) else value)
+        band[rows] = gov.friction(x, probe)
+    return band
+
+
+def spring_design_of(sd: statics.SpringDesign, i: int, given: bool) -> statics.SpringDesign:
+    """Design ``i`` of a vectorised :class:`SpringDesign` as scalars (``given``: the inertia is
+    the design's own, as :func:`statics.spring_design` marks it)."""
+    vals = {f.name: getattr(sd, f.name) for f in fields(sd)}
+    for k, v in vals.items():
+        if isinstance(v, np.ndarray):
+            vals[k] = float(np.broadcast_to(v, (v.shape[0], 1))[i, 0]) if v.ndim else float(v)
+    return statics.SpringDesign(**{**vals, "inertia_given": given})
+
+
+def _number(d: dict, key: str) -> float:
+    """A number of a JSON-ready dict (:func:`govopt.jsonable.jsonable`: an infinity is null
+    with a ``<key>_infinite`` flag)."""
+    v = d[key]
+    if v is not None:
+        return float(v)
+    flag = d.get(f"{key}_infinite")
+    return np.inf if flag == "+inf" else -np.inf if flag == "-inf" else np.nan
+
+
+def _pick(s: tr.TransientSummary, j: int) -> tr.TransientSummary:
+    """Design ``j`` of a :class:`TransientSummary` of many."""
+    return replace(s, **{f.name: np.asarray(getattr(s, f.name))[j] for f in fields(s)})
+
+
+# ---------------------------------------------------------------------------------------------
+# The core
+# ---------------------------------------------------------------------------------------------
+
+@dataclass
+class Evaluation:
+    """What :func:`core` gives for N designs (SI).
+
+    ``spec``: the spec evaluated (with its use case's settings, :func:`govopt.fidelity.plan`);
+    ``figures``: the per-design figures (name -> array of N; the columns of a bulk row before
+    its checks); ``table``: every check; ``error``: the diagnosis of each impossible design,
+    None for the others (an impossible design's figures and checks mean nothing). With
+    ``report=True`` (one design, for :func:`govopt.evaluate`) also the report's content of
+    design 0: ``spring`` (its :class:`SpringDesign`), ``char`` (its :class:`Characteristic`),
+    ``k2`` over the configurations, ``vib`` (the forced vibration) and ``dynamics`` (the load
+    changes', the forcing's and the friction runs' dicts)."""
+
+    n: int
+    spec: Spec
+    figures: dict
+    table: CheckTable
+    error: np.ndarray
+    spring: statics.SpringDesign | None = None
+    char: statics.Characteristic | None = None
+    k2: np.ndarray | None = None
+    vib: object = None
+    dynamics: dict = field(default_factory=dict)
+    #: the spec's ``[analysis] use_case`` plan (:func:`govopt.fidelity.plan`), None without
+    plan: object = None
+
+    @property
+    def impossible(self) -> np.ndarray:
+        return np.array([e is not None for e in self.error], dtype=bool)
+
+
+def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = True,
+         classic: bool = True, report: bool = False) -> Evaluation:
+    """Evaluate the designs ``cols`` (one float array per :data:`DESIGN_FIELDS`, NaN for "not
+    given") of ``spec``: see the module's text. ``dynamics``: the load-change transients and
+    friction runs (Hamabe Part III); ``vibration``: the type's periodic forcing (Part II);
+    ``classic``: range, sensitiveness, stability, effort and power (textbook ch. 3). A spec's
+    ``[analysis] use_case`` is honoured (:func:`govopt.fidelity.plan`: its settings, only its
+    analyses)."""
+    from .fidelity import plan as use_case_plan
+
+    plan = use_case_plan(spec)
+    friction_on = dynamics
+    if plan is not None:
+        spec = plan.apply(spec)
+        dynamics = dynamics and plan.runs("load_change")
+        vibration = vibration and plan.runs("vibration")
+        friction_on = friction_on and plan.runs("friction")
+    gov = spec.governor
+    n = len(cols["pendulum_mass"])
+    col = {k: v[:, None] for k, v in cols.items()}  # (N, 1) against configurations (K,)
+    m = col["pendulum_mass"]
+    central = np.where(np.isnan(col["central_mass"]), 0.0, col["central_mass"])
+    d, r, nt = col["wire_diameter"], col["coil_radius"], col["active_turns"]
+    mat = spec.material
+    impossible = ~np.isfinite(cols["pendulum_mass"])
+    impossible |= np.isfinite(cols["wire_diameter"]) & (
+        cols["wire_diameter"] >= 2.0 * cols["coil_radius"])
+    with np.errstate(all="ignore"):
+        kappa, l0 = _spring(spec, cols, col, central)
+        if gov.spring is not None and gov.free_length_positive:
+            impossible |= ~(l0[:, 0] > 0)
+        I_given = col["pendulum_inertia"]
+        I_n = np.where(np.isnan(I_given), gov.inertia(np.asarray(gov.x_normal), m, central),
+                       I_given)
+        impossible |= ~np.isfinite(kappa[:, 0]) | ~np.isfinite(l0[:, 0]) | ~np.isfinite(
+            flat(I_n, n))
+        x = statics.configurations(spec)
+        K = x.size
+        i_n = int(np.searchsorted(x, gov.x_normal))
+        t = statics.terms(spec, x, m, central)
+        w2 = np.broadcast_to(t.omega_squared(kappa, l0), (n, K))
+        impossible |= ~(w2 > 0).all(axis=1)
+        omega = np.sqrt(w2)
+        w2c = omega**2  # as the characteristic: k^2 at its omega^2
+        wi, wa, wn = omega[:, 0], omega[:, -1], omega[:, i_n]
+        I_x = np.where(np.isnan(I_given), gov.inertia(x, m, central), I_given)
+        stiff = t.stiffness(kappa, l0, w2c)
+        k2 = np.broadcast_to(stiff / I_x, (n, K))
+        A_F, B_F = gov.spring_force_coefficients(x)
+        F = np.broadcast_to(kappa * (A_F - B_F * l0), (n, K))
+        M_f = np.broadcast_to(kappa * (t.A - t.B * l0), (n, K))
+        M_z = np.broadcast_to(w2 * t.jp, (n, K))
+        helical = (mat is not None) & np.isfinite(cols["wire_diameter"])
+        sd = statics.SpringDesign(m, I_n, kappa, l0, d, r, nt, central, False,
+                                  col["leaf_width"], col["leaf_thickness"])
+        stress = np.full((n, K), np.nan)
+        if gov.spring is not None and mat is not None:
+            stress = np.broadcast_to(gov.spring_stress(x, F, sd, mat), (n, K))
+        finite_rows = [omega, M_f, M_z, F, k2]
+        impossible |= ~np.all([np.isfinite(v).all(axis=1) for v in finite_rows], axis=0)
+        impossible |= helical & ~np.isfinite(stress).all(axis=1)
+        if spec.analysis.reaction_slope:  # statics.characteristic_slope on the terms in hand
+            slope = stiff / (2.0 * omega * t.lever)
+        else:
+            slope = statics.characteristic_slope(spec, sd, x, omega)
+        slope = np.broadcast_to(slope, (n, K))
+        secant = np.diff(omega, axis=1) / np.diff(x)
+        rise = np.minimum(slope.min(axis=1), secant.min(axis=1, initial=np.inf))
+    omega_mean = spec.speed.omega_mean if spec.speed is not None else math.nan
+    out = {f"{gov.mass_key}_mass_kg": cols["pendulum_mass"], "central_mass_kg": central[:, 0]}
+    if gov.spring is not None:
+        out.update({"wire_diameter_m": cols["wire_diameter"],
+                    "coil_radius_m": cols["coil_radius"], "active_turns": cols["active_turns"],
+                    "stiffness_N_per_m": kappa[:, 0], f"{gov.free_length_key}_m": l0[:, 0]})
+    out[dashpot_column(gov)] = cols["dashpot"]
+    out.update({"irregularity": (wa - wi) / omega_mean, "omega_inner_rad_s": wi,
+                "omega_outer_rad_s": wa, "omega_normal_rad_s": wn})
+    if gov.spring is not None:
+        out.update({"min_spring_force_N": F.min(axis=1), "max_spring_force_N": F.max(axis=1),
+                    "max_stress_Pa": stress.max(axis=1)})
+    smass = np.zeros(n)
+    if mat is not None and mat.shear_modulus is not None:
+        dd, rr, nn = cols["wire_diameter"], cols["coil_radius"], cols["active_turns"]
+        with np.errstate(all="ignore"):
+            C = hx.spring_index_r(dd, rr)
+            props = {"spring_index": C, "wahl_factor": hx.wahl_factor(C),
+                     "surge_frequency_Hz": hx.surge_frequency_r(dd, rr, nn, mat.shear_modulus,
+                                                                  mat.density),
+                     "body_length_m": (nn + 1.0) * dd}
+            smass = hx.wire_mass(dd, rr, nn, mat.density)
+        for k, v in props.items():
+            out[k] = np.where(helical, v, np.nan)
+    out["spring_mass_kg"] = np.where(helical, smass, np.nan)
+    out["moving_mass_kg"] = cols["pendulum_mass"] + central[:, 0] + np.where(helical, smass, 0.0)
+    out.update({"k2_min_rad2_s2": k2.min(axis=1), "k2_max_rad2_s2": k2.max(axis=1),
+                "k2_normal_rad2_s2": k2[:, i_n]})
+
+    dashpot = cols["dashpot"]
+    has_dashpot = np.isfinite(dashpot)
+    own_checks = gov.spring is not None and (overridden(gov, "spring_checks") or (
+        mat is not None and getattr(mat, "grade", None) is not None))
+    # -- the type's forced vibration, design by design (also the spring's load cycle) --
+    def sd_of(i: int) -> statics.SpringDesign:
+        """Design ``i``'s :class:`SpringDesign` (scalars; as :func:`statics.spring_design`)."""
+        return spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0])))
+
+    said: dict[int, str] = {}  # a per-design part's own diagnosis, by design
+
+    def per_design(i: int, part):
+        """``part()`` for design ``i``; its DesignError (or an overflow) makes ``i``
+        impossible with that diagnosis (what evaluate raises for it)."""
+        try:
+            return part()
+        except DesignError as exc:
+            said[i] = str(exc)
+        except OverflowError:
+            said[i] = overflow_message(spec)
+        impossible[i] = True
+        return None
+
+    vibs = [None] * n
+    if (vibration or own_checks) and overridden(gov, "vibration"):
+        for i in np.nonzero(~impossible & (has_dashpot | (spec.engine is not None)))[0]:
+            vibs[i] = per_design(i, lambda i=i: gov.vibration(
+                spec, sd_of(i), float(k2[i, i_n]), float(dashpot[i]) if has_dashpot[i] else 0.0))
+
+    # -- checks, in this order: the spring's own, statics, load changes, vibration, friction,
+    # the design requirements --
+    checks = CheckTable(n)
+    w0sq = np.full(n, omega_mean**2) if spec.speed is not None else wn**2
+
+    def char_of(i: int) -> statics.Characteristic:
+        """Design ``i``'s characteristic (:func:`statics.characteristic`, from the arrays)."""
+        return statics.Characteristic(
+            alpha=x, omega=omega[i], M_z=M_z[i], M_f=M_f[i],
+            M_r0=np.broadcast_to(t.cf + w2 * t.ci, (n, K))[i], spring_force=F[i],
+            stress=stress[i], extra=gov.columns(x), omega_mean=omega_mean)
+
+    if own_checks:  # the type's own spring (a leaf) or a graded wire: its own checks
+        for i in np.nonzero(~impossible)[0]:
+            own = per_design(i, lambda i=i: gov.spring_checks(spec, sd_of(i), char_of(i),
+                                                              vibs[i]))
+            for c in own or []:
+                on = np.zeros(n, bool)
+                on[i] = True
+                checks.add(c.name, c.value, c.limit, c.sense, scale=c.scale, verdict=c.verdict,
+                           where=on, unit=c.unit, source=c.source, group=c.group)
+    elif gov.spring is not None and mat is not None and helical.any():
+        # a helical spring: its stress, and its geometry (coil clash, buckling, pitch), which
+        # needs no wire grade
+        from .analysis import spring_engineering
+
+        checks.add_row(stress_row(mat), {"stress": stress.max(axis=1)}, where=helical)
+        for row, value, limit, source in spring_engineering.geometry_table(
+                spec, cols["wire_diameter"], 2.0 * cols["coil_radius"],
+                cols["active_turns"], kappa[:, 0], l0[:, 0], F.min(axis=1), F.max(axis=1)):
+            checks.add(row.name, value, limit, row.sense, where=helical, unit=row.unit,
+                       source=source, group="spring")
+    band = (None, None)
+    if spec.speed is not None and spec.speed.band:  # the whole operating band, with friction
+        fr = friction_at(gov, cols, np.array([gov.x_inner, gov.x_outer]))
+        with np.errstate(all="ignore"):
+            band = tuple(np.sqrt(np.maximum(flat(b2, n), 0.0)) for b2 in
+                         statics.band_speeds_squared(spec, m, kappa, l0, central,
+                                                     (fr[:, :1], fr[:, 1:])))
+    checks.add_rows(statics_rows(spec), statics_figures(out["irregularity"], *band, rise, w0sq,
+                                                        F, k2))
+    dyn: dict = {}
+    if dynamics and spec.engine is not None and spec.load_changes:
+        settle = np.full(n, -np.inf)
+        run = ~impossible & has_dashpot
+        reports = []
+        for lc in spec.load_changes:
+            hur, over, overs, st_time, xi0, good, detail = _load_change_many(
+                spec, lc, m, kappa, l0, central, I_given, dashpot, run)
+            impossible |= run & ~good
+            on = run & good
+            out[f"hurwitz_margin: {lc.name}"] = np.where(on, hur, np.nan)
+            out[f"over_regulation: {lc.name}"] = np.where(on, over, np.nan)
+            out[f"settling_time_s: {lc.name}"] = np.where(on, st_time, np.nan)
+            settle = np.where(on, np.maximum(settle, st_time), settle)
+            checks.add_rows(load_change_rows(spec, lc.name), {
+                "hurwitz": hur, "over": over, "over_regulates": overs, "xi0": xi0,
+                "settling": st_time}, where=on)
+            if report and on[0]:
+                a, xs, k2_0, s = detail
+                reports.append(loadchange.summary(spec, lc, tuple(float(v[0]) for v in a),
+                                                  tuple(float(v[0]) for v in xs),
+                                                  float(k2_0[0]), _pick(s, 0)))
+        out["settling_time_s"] = np.where(settle > -np.inf, settle, np.nan)
+        if reports:
+            dyn["load_changes"] = reports
+    vib_dicts = [None if v is None else v.to_dict() for v in vibs] if vibration else []
+    p2p = np.array([np.nan if v is None else _number(v, "peak_to_peak_rad")
+                    for v in vib_dicts], dtype=float)
+    if vibration and overridden(gov, "vibration"):
+        if (~impossible & (has_dashpot | (spec.engine is not None))).any():
+            out["vibration_p2p_rad"] = p2p
+            checks.add_rows(vibration_rows(spec), {"p2p": p2p}, where=~np.isnan(p2p))
+    if friction_on and spec.engine is not None and spec.load_changes:
+        moves = np.zeros(n, bool)
+        for lc in spec.load_changes:
+            moves |= friction_at(gov, cols, np.array([lc.alpha_to]))[:, 0] > 0
+        runs_of = {}  # Hamabe's friction strokes (eqs. 42-46), design by design
+        for i in np.nonzero(moves & ~impossible)[0]:
+            runs = per_design(i, lambda i=i: _friction_runs(spec, design_of(cols, i), sd_of(i)))
+            if runs is not None:
+                runs_of[i] = runs
+        for j, lc in enumerate(spec.load_changes):
+            rows = friction_rows(spec, lc.name)
+            for i, runs in runs_of.items():
+                row, ev_ = _friction_figures(lc, runs[j])
+                on = np.zeros(n, bool)
+                on[i] = True
+                checks.add_row(rows[row], ev_, where=on)
+        if report and 0 in runs_of:
+            dyn["friction"] = [r_.to_dict() for r_ in runs_of[0]]
+    req = spec.requirements
+    if req is not None and helical.any():
+        checks.add_rows(requirement_rows(spec, req), {
+            "d": cols["wire_diameter"], "r": cols["coil_radius"], "n": cols["active_turns"],
+            "m": cols["pendulum_mass"], "l0": l0[:, 0], "C": out["spring_index"],
+            "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}, where=helical)
+    if classic:
+        out.update(_classic(spec, cols, t, sd, w2c, x, omega, ~impossible))
+    error = np.full(n, None, dtype=object)
+    for i in np.nonzero(impossible)[0]:
+        error[i] = said.get(int(i)) or diagnose(spec, design_of(cols, i))
+    ev = Evaluation(n, spec, out, checks, error, plan=plan)
+    if report and not impossible[0]:
+        ev.spring = sd_of(0)
+        ev.char = char_of(0)
+        ev.k2 = np.array(k2[0])
+        ev.vib = vibs[0]
+        if vib_dicts and vib_dicts[0] is not None:
+            dyn["vibration"] = vib_dicts[0]
+        ev.dynamics = dyn
+    return ev
+
+
+def _spring(spec: Spec, cols: dict, col: dict, central) -> tuple[np.ndarray, np.ndarray]:
+    """The springs' rate ``kappa`` (N/m) and free length ``l0`` (the type's form, m), shape
+    ``(N, 1)``: a given stiffness, else the type's rate of the section (a helical spring's
+    ``G d^4 / (64 r^3 n)``, Wahl 1944, Hamabe Ex. 1, vectorised; a type's own spring, a leaf,
+    design by design); a given free length, else the one that holds the normal configuration at
+    the mean speed (:func:`statics.free_half_length`, Hamabe Ex. 1). Zeros without a spring."""
+    gov, mat, n = spec.governor, spec.material, len(cols["pendulum_mass"])
+    m = col["pendulum_mass"]
+    if gov.spring is None:
+        return np.zeros_like(m), np.zeros_like(m)
+    if overridden(gov, "spring_rate"):  # the type's own spring (a leaf): design by design
+        rate = np.array([gov.spring_rate(design_of(cols, i), mat)
+                         if np.isnan(cols["spring_stiffness"][i]) else np.nan
+                         for i in range(n)], dtype=float).reshape(n, 1)
+    elif mat is not None and mat.shear_modulus is not None:
+        rate = hx.stiffness_r(col["wire_diameter"], col["coil_radius"], col["active_turns"],
+                              mat.shear_modulus)
+    else:
+        rate = np.full_like(m, np.nan)
+    kappa = np.where(np.isfinite(col["spring_stiffness"]), col["spring_stiffness"], rate)
+    l0 = col["free_half_length"]
+    if np.isnan(l0).any():
+        l0 = np.where(np.isnan(l0), statics.free_half_length(spec, m, kappa, central), l0)
+    return kappa, l0
+
+
+def _friction_runs(spec: Spec, design: Design, sd: statics.SpringDesign) -> list:
+    """Hamabe's friction transient (eqs. 42-46) of every load change of one design."""
+    from .analysis import friction  # only where a design has friction (model what is asked)
+
+    spec = spec.with_design(design)  # its dash-pot and friction moment
+    return [friction.friction_load_change(spec, sd, lc) for lc in spec.load_changes]
+
+
+def _friction_figures(lc, run) -> tuple[str, dict]:
+    """Which friction row of :func:`govopt.requirements.friction_rows` a run of load change
+    ``lc`` is judged by, and its figures: "stuck" (the governor does not follow the load
+    change: the offset it rests at) or "moves" (how far its first stroke ends past the new
+    equilibrium)."""
+    xi0 = lc.alpha_from - lc.alpha_to
+    first = run.first_stroke_end
+    stuck = run.outcome == "stuck"
+    return ("stuck" if stuck else "moves"), {
+        "xi0": xi0, "rest": abs(run.final_state[0]),
+        "past": 0.0 if stuck or first is None else max(0.0, -float(np.sign(xi0)) * first)}
+
+
+def _load_change_many(spec, lc, m, kappa, l0, central, I_given, dashpot, run):
+    """:func:`govopt.analysis.loadchange.analyse` for many designs: Hamabe eqs. (24)-(32) with
+    the coefficients of :func:`loadchange.load_change_model`, events by
+    :func:`transient.analyse_many`. Returns (Hurwitz margin, over-regulation, over-regulates,
+    settling time, xi0, finite, (coefficients, initial state, k^2, summary of the designs
+    run))."""
+    gov = spec.governor
+    n = m.shape[0]
+    a0x, a1x = lc.alpha_to, lc.alpha_from
+    with np.errstate(all="ignore"):
+        t0 = statics.terms(spec, a0x, m, central)
+        t1 = statics.terms(spec, a1x, m, central)
+        w0 = np.sqrt(flat(t0.omega_squared(kappa, l0), n))
+        w1 = np.sqrt(flat(t1.omega_squared(kappa, l0), n))
+        own = flat(gov.inertia(np.asarray(a0x, dtype=float), m, central), n)
+        I = np.where(np.isnan(I_given[:, 0]), own, I_given[:, 0])
+        k2 = flat(t0.stiffness(kappa, l0, (w0**2)[:, None]), n) / I
+        C = 2.0 * w0 * flat(t0.lever, n)
+        R = loadchange.torque_ratio(spec, a0x)
+        xi0 = np.full(n, a1x - a0x)
+        eta0 = w1 * (1.0 + spec.engine.insensibility) - w0
+        a = (I, np.where(np.isfinite(dashpot), dashpot, 0.0) / 3.0, I * k2 / 3.0, C * R)
+        x = tr.hamabe_initial_conditions(a[0], a[2], a[3], R, xi0, eta0)
+    good = np.all([np.isfinite(v) for v in (*a, *x)], axis=0) & (a[0] != 0)
+    hur, over, overs, st = (np.full(n, np.nan) for _ in range(4))
+    overs = np.zeros(n, bool)
+    sel = np.nonzero(run & good)[0]
+    s = None
+    if sel.size:
+        s = tr.analyse_many(*(v[sel] for v in a), *(v[sel] for v in x),
+                            band=spec.analysis.settling_band)
+        hur[sel] = s.hurwitz_margin
+        over[sel] = np.where(s.stable, s.over_regulation, np.inf)
+        overs[sel] = ~s.stable | tr.over_regulates(s.over_regulation_scaled, x[0][sel])
+        st[sel] = s.settling_time
+    return hur, over, overs, st, x[0], good, (a, x, k2, s)
+
+
+def _classic(spec, cols, t, sd, w2, x, omega, ok):
+    """:func:`govopt.analysis.classic.classic_measures` (its scalar figures), vectorised."""
+    from .analysis.classic import speed_change, travel_between
+
+    gov = spec.governor
+    n = omega.shape[0]
+    band = friction_at(gov, cols, x)
+    with np.errstate(all="ignore"):
+        rise = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, band), 0.0))
+        fall = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, -band), 0.0))
+        i_c = int(np.searchsorted(x, gov.x_normal))
+        w0 = spec.speed.omega_mean if spec.speed is not None else omega[:, i_c]
+        stability = statics.stability(statics.rising_slopes(spec, sd, x, omega),
+                                      np.broadcast_to(statics.slope_scale(spec, w0), (n,)))
+        wi, wa = omega[:, 0], omega[:, -1]
+        c, over_range = speed_change(spec, wi, wa)
+        grow = (1.0 + c[:, None]) ** 2 - 1.0
+        lever = np.broadcast_to(t.lever, (n, x.size))
+        effort = gov.flying_masses * grow * w2 * lever / (2.0 * gov.travel_slope(x))
+        ic = int(np.argmin(np.abs(x - gov.x_normal)))
+        at = 0 if over_range else ic
+        if over_range:
+            travel = np.full(n, travel_between(spec, float(x[0]), float(x[-1])))
+        else:
+            target = (1.0 + c) ** 2 * w2[:, ic]
+            travel = _travel_many(spec, sd, float(x[ic]), float(x[-1]), target, ok)
+        return {"range_rad_s": wa - wi, "sensitiveness": 2.0 * (wa - wi) / (wa + wi),
+                "stability": np.where(ok, stability, None), "effort": effort[:, at],
+                "power": effort[:, at] * travel, "friction_band": band[:, ic],
+                "insensitiveness": ((rise - fall) / omega).max(axis=1)}
+
+
+def _travel_many(spec, sd, x0, x_end, target, ok):
+    """:func:`govopt.analysis.classic._travel` for many designs: the configuration ``x1`` in
+    equilibrium at speed^2 ``target`` (``brentq`` to 1e-15 in the scalar version) by a
+    safeguarded Newton iteration on the characteristic, whose slope is exact on the seam
+    (``d omega^2/dx = I k^2 / (jp - ci)`` with the dead loads' slope included), then the
+    member's travel ``int s'(u) du`` from ``x0`` by 8-point Gauss-Legendre."""
+    from .analysis.classic import travel_between
+
+    exact = spec.with_analysis(reaction_slope=True)
+    n = target.shape[0]
+
+    def excess(u):
+        t = statics.terms(exact, u[:, None], sd.m, sd.central)
+        w2 = flat(t.omega_squared(sd.kappa, sd.l0), n)
+        return w2 - target, flat(t.stiffness(sd.kappa, sd.l0, w2[:, None]) / t.lever, n)
+
+    out = np.full(n, np.inf)
+    top, _ = excess(np.full(n, x_end))
+    go = ok & (top > 0)
+    if not go.any():
+        return out
+    lo, hi = np.full(n, x0), np.full(n, x_end)
+    u = np.full(n, 0.5 * (x0 + x_end))
+    for _ in range(100):
+        f, df = excess(u)
+        lo, hi = np.where(f > 0, lo, u), np.where(f > 0, u, hi)
+        step = f / df
+        new = u - step
+        new = np.where((new > lo) & (new < hi) & np.isfinite(new), new, 0.5 * (lo + hi))
+        done = (np.abs(new - u) <= 1e-15 * np.abs(u)) | (f == 0) | (hi - lo <= 4e-16 * np.abs(u))
+        u = np.where(done, u, new)
+        if done[go].all():
+            break
+    out[go] = travel_between(spec, x0, u)[go]
+    return out
+
+
+__all__ = ["DESIGN_FIELDS", "Evaluation", "core", "dashpot_column", "design_columns", "diagnose",
+           "finite", "invalid", "possible"]
