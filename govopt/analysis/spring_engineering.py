@@ -284,7 +284,8 @@ def spread(spec, sd, sheet: sh.SpringSheet) -> Spread:
     for x in (gov.x_inner, gov.x_outer):
         with np.errstate(invalid="ignore"):
             w = np.sqrt(statics.omega_squared(spec, x, sd.m, K, L0, sd.central))
-        out.append((float(np.nanmin(w)), float(np.nanmax(w))))
+        w = w[np.isfinite(w)]  # no equilibrium at some corner of the spread: left out
+        out.append((float(w.min()), float(w.max())) if w.size else (math.nan, math.nan))
     return Spread(float(d_tol), float(D_tol), kappa, float(l0_tol), out[0], out[1], tuple(notes))
 
 
