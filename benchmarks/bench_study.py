@@ -38,7 +38,7 @@ SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
 
 def _designs(spec, n: int, seed: int = 0) -> dict:
     rng = np.random.default_rng(seed)
-    return {"pendulum_mass": spec.design.pendulum_mass * rng.uniform(0.8, 1.2, n),
+    return {"flying_mass": spec.design.flying_mass * rng.uniform(0.8, 1.2, n),
             "active_turns": spec.design.active_turns * rng.uniform(0.9, 1.1, n)}
 
 
@@ -68,9 +68,9 @@ def bulk_bench(points: int = 100_000, baseline: int = 200, repeats: int = 3) -> 
 
     spec = load_spec(SPECS / "hamabe-a.toml")
     cols = _designs(spec, points)
-    designs = [Design(**{**spec.design.__dict__, "pendulum_mass": float(m),
+    designs = [Design(**{**spec.design.__dict__, "flying_mass": float(m),
                          "active_turns": float(n)})
-               for m, n in zip(cols["pendulum_mass"][:baseline], cols["active_turns"][:baseline],
+               for m, n in zip(cols["flying_mass"][:baseline], cols["active_turns"][:baseline],
                                strict=True)]
     evaluate_many(spec, {k: v[:64] for k, v in cols.items()})  # warm caches and imports
 
@@ -119,7 +119,7 @@ def study_bench(points: int = 100_000) -> dict:
         run_study(study, Path(tmp) / "bench.db")
         study_s = time.perf_counter() - t0
         t0 = time.perf_counter()
-        frame = evaluate_many(study.base(), {"pendulum_mass": masses}, dynamics=False,
+        frame = evaluate_many(study.base(), {"flying_mass": masses}, dynamics=False,
                               vibration=False, classic=False)
         bulk_s = time.perf_counter() - t0
         hashes = [f"{i:064x}" for i in range(points)]

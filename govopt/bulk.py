@@ -201,7 +201,7 @@ def evaluate_many(spec: Spec, designs, *, dynamics: bool = True, vibration: bool
     exception.
     """
     cols = design_arrays(spec, designs)
-    n = len(cols["pendulum_mass"])
+    n = len(cols["flying_mass"])
     parts = [_block(spec, {k: v[s:s + chunk] for k, v in cols.items()}, dynamics, vibration,
                     classic) for s in range(0, n, chunk)]
     return pd.concat(parts, ignore_index=True) if parts else pd.DataFrame()

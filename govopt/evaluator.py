@@ -88,7 +88,7 @@ def overflow_message(spec: Spec) -> str:
 def invalid(spec: Spec, design: Design) -> str | None:
     """What the spec parser would say of a design given as numbers (a mass that is not a
     number, a wire thicker than its coil), or None."""
-    if design.pendulum_mass is None or not math.isfinite(design.pendulum_mass):
+    if design.flying_mass is None or not math.isfinite(design.flying_mass):
         return (f"{spec.path}: design: the {spec.governor.mass_key} mass is missing or not a "
                 "finite number")
     if design.wire_diameter is not None and design.coil_radius is not None and \
@@ -162,7 +162,7 @@ def friction_at(gov: Governor, cols: dict, x) -> np.ndarray:
     band = np.zeros((fm.size, np.size(x)))
     for value in np.unique(fm):
         rows = (fm == value) | (np.isnan(fm) & np.isnan(value))
-        probe = Design(pendulum_mass=1.0, friction_moment=None if np.isnan(value) else value)
+        probe = Design(flying_mass=1.0, friction_moment=None if np.isnan(value) else value)
         band[rows] = gov.friction(x, probe)
     return band
 
@@ -245,20 +245,20 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         vibration = vibration and plan.runs("vibration")
         friction_on = friction_on and plan.runs("friction")
     gov = spec.governor
-    n = len(cols["pendulum_mass"])
+    n = len(cols["flying_mass"])
     col = {k: v[:, None] for k, v in cols.items()}  # (N, 1) against configurations (K,)
-    m = col["pendulum_mass"]
+    m = col["flying_mass"]
     central = np.where(np.isnan(col["central_mass"]), 0.0, col["central_mass"])
     d, r, nt = col["wire_diameter"], col["coil_radius"], col["active_turns"]
     mat = spec.material
-    impossible = ~np.isfinite(cols["pendulum_mass"])
+    impossible = ~np.isfinite(cols["flying_mass"])
     impossible |= np.isfinite(cols["wire_diameter"]) & (
         cols["wire_diameter"] >= 2.0 * cols["coil_radius"])
     with np.errstate(all="ignore"):
         kappa, l0 = _spring(spec, cols, col, central)
         if gov.spring is not None and gov.free_length_positive:
             impossible |= ~(l0[:, 0] > 0)
-        I_given = col["pendulum_inertia"]
+        I_given = col["flying_inertia"]
         I_n = np.where(np.isnan(I_given), gov.inertia(np.asarray(gov.x_normal), m, central),
                        I_given)
         impossible |= ~np.isfinite(kappa[:, 0]) | ~np.isfinite(l0[:, 0]) | ~np.isfinite(
@@ -296,7 +296,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         secant = np.diff(omega, axis=1) / np.diff(x)
         rise = np.minimum(slope.min(axis=1), secant.min(axis=1, initial=np.inf))
     omega_mean = spec.speed.omega_mean if spec.speed is not None else math.nan
-    out = {f"{gov.mass_key}_mass_kg": cols["pendulum_mass"], "central_mass_kg": central[:, 0]}
+    out = {f"{gov.mass_key}_mass_kg": cols["flying_mass"], "central_mass_kg": central[:, 0]}
     if gov.spring is not None:
         out.update({"wire_diameter_m": cols["wire_diameter"],
                     "coil_radius_m": cols["coil_radius"], "active_turns": cols["active_turns"],
@@ -320,7 +320,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         for k, v in props.items():
             out[k] = np.where(helical, v, np.nan)
     out["spring_mass_kg"] = np.where(helical, smass, np.nan)
-    out["moving_mass_kg"] = cols["pendulum_mass"] + central[:, 0] + np.where(helical, smass, 0.0)
+    out["moving_mass_kg"] = cols["flying_mass"] + central[:, 0] + np.where(helical, smass, 0.0)
     out.update({"k2_min_rad2_s2": k2.min(axis=1), "k2_max_rad2_s2": k2.max(axis=1),
                 "k2_normal_rad2_s2": k2[:, i_n]})
 
@@ -448,7 +448,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
     if req is not None and helical.any():
         checks.add_rows(requirement_rows(spec, req), {
             "d": cols["wire_diameter"], "r": cols["coil_radius"], "n": cols["active_turns"],
-            "m": cols["pendulum_mass"], "l0": l0[:, 0], "C": out["spring_index"],
+            "m": cols["flying_mass"], "l0": l0[:, 0], "C": out["spring_index"],
             "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}, where=helical)
     if classic:
         out.update(_classic(spec, cols, t, sd, w2c, x, omega, ~impossible))
@@ -473,8 +473,8 @@ def _spring(spec: Spec, cols: dict, col: dict, central) -> tuple[np.ndarray, np.
     ``G d^4 / (64 r^3 n)``, Wahl 1944, Hamabe Ex. 1, vectorised; a type's own spring, a leaf,
     design by design); a given free length, else the one that holds the normal configuration at
     the mean speed (:func:`statics.free_half_length`, Hamabe Ex. 1). Zeros without a spring."""
-    gov, mat, n = spec.governor, spec.material, len(cols["pendulum_mass"])
-    m = col["pendulum_mass"]
+    gov, mat, n = spec.governor, spec.material, len(cols["flying_mass"])
+    m = col["flying_mass"]
     if gov.spring is None:
         return np.zeros_like(m), np.zeros_like(m)
     if overridden(gov, "spring_rate"):  # the type's own spring (a leaf): design by design

@@ -90,10 +90,10 @@ class SpringForm:
 class Design:
     """A given design: flying mass, spring, central load, dash-pot and friction, SI.
 
-    ``pendulum_inertia`` overrides the type's generalised inertia; ``friction_moment`` is the
+    ``flying_inertia`` overrides the type's generalised inertia; ``friction_moment`` is the
     shaft governor's Coulomb moment at the fulcrum (Hamabe eq. 42)."""
 
-    pendulum_mass: float  # the flying mass: the pendulum, each ball or each fly weight, kg
+    flying_mass: float  # the flying mass: the pendulum, each ball or each fly weight, kg
     wire_diameter: float | None = None
     coil_radius: float | None = None
     active_turns: float | None = None
@@ -102,7 +102,7 @@ class Design:
     spring_stiffness: float | None = None  # given directly instead of by wire, coil and turns
     leaf_width: float | None = None  # a leaf spring's section, m
     leaf_thickness: float | None = None
-    pendulum_inertia: float | None = None
+    flying_inertia: float | None = None
     dashpot: float | None = None
     friction_moment: float | None = None
 
@@ -176,7 +176,7 @@ class Requirements:
     min_fatigue_safety: float | None = None
     #: least relative distance of the surge frequency from each excitation harmonic present
     surge_detuning: float = 0.2
-    pendulum_mass: tuple[float, float] = (2.0, 20.0)  # the flying mass (pendulum, each ball)
+    flying_mass: tuple[float, float] = (2.0, 20.0)  # the flying mass (pendulum, each ball)
     central_mass: tuple[float, float] = (0.0, 0.0)  # central (sleeve) load, kg
     wire_diameter: tuple[float, float] = (0.001, 0.025)
     coil_radius: tuple[float, float] = (0.01, 0.1)

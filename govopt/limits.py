@@ -150,7 +150,7 @@ def design_size_error(req, points: int, spring: str | None, mass_key: str):
     weights (``req``: :class:`govopt.inputs.Requirements`; ``spring``: the governor's spring
     kind, a :class:`govopt.springs.kinds.SpringKind` that counts its own catalogue, None for a
     dead-weight governor). Counted from the bounds and steps before anything is allocated."""
-    grid = steps(*req.pendulum_mass, req.mass_step) * steps(*req.central_mass, req.mass_step)
+    grid = steps(*req.flying_mass, req.mass_step) * steps(*req.central_mass, req.mass_step)
     step_key = "catalogue.weight_step"
     what = (f"(flying, central) weight pairs on the weight grid (bounds.{mass_key}_weight on "
             f"{step_key})")

@@ -185,7 +185,7 @@ def requirement_rows(spec, req) -> list[Row]:
             lambda ev: factor * ev["l0"], "close-wound body (n + 1) d within 2 l0",
             group="spring", gp=GP_BOUNDS["L_body_max"]),
     ]
-    for name, key, bounds, unit, gp in ((f"{gov.mass_name} mass", "m", req.pendulum_mass, "kg",
+    for name, key, bounds, unit, gp in ((f"{gov.mass_name} mass", "m", req.flying_mass, "kg",
                                          None),
                                         ("wire diameter", "d", req.wire_diameter, "m", "d"),
                                         ("coil radius", "r", req.coil_radius, "m", "r"),

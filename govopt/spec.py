@@ -454,7 +454,7 @@ def band_spring(spec: Spec) -> Spec:
 
     ds = spec.design
     kappa, l0, f_inner, f_outer = (float(v) for v in statics.required_spring(
-        spec, ds.pendulum_mass, ds.central_mass or 0.0))
+        spec, ds.flying_mass, ds.central_mass or 0.0))
     key = f"{spec.path}: design"
     if not (math.isfinite(kappa) and kappa > 0.0):
         raise SpecError(f"{key}: no spring given, and none makes this governor float between "
@@ -594,12 +594,12 @@ def _design(ds: Reader | None, governor: Governor, material: Material | None,
                 ds.fail(*bad)
     key = governor.mass_key
     design = Design(
-        pendulum_mass=ds.weight_or_mass(key),
+        flying_mass=ds.weight_or_mass(key),
         central_mass=ds.weight_or_mass("central", required=False),
         free_half_length=ds.quantity(governor.free_length_key, "length", required=False,
                                      positive=governor.free_length_positive)
         if governor.spring is not None else None,
-        pendulum_inertia=ds.quantity(f"{key}_inertia", "inertia" if angular else "mass",
+        flying_inertia=ds.quantity(f"{key}_inertia", "inertia" if angular else "mass",
                                      required=False),
         dashpot=3.0 * a1 if a1 is not None else dashpot,
         friction_moment=ds.quantity("friction_moment", "moment", required=False,
@@ -717,7 +717,7 @@ def _requirements(top: Reader, governor: Governor) -> Requirements | None:
     if bnd is not None:
         mk = governor.mass_key
         kw.update(
-            pendulum_mass=_mass_pair(bnd, mk, d.pendulum_mass),
+            flying_mass=_mass_pair(bnd, mk, d.flying_mass),
             central_mass=_mass_pair(bnd, "central", d.central_mass, single=True),
             dashpot=_pair(bnd, "dashpot_f", "damping" if governor.coordinate == "angle"
                           else "linear_damping", None),

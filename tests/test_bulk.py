@@ -54,7 +54,7 @@ def _reference(spec, design) -> dict:
 def _designs(spec, n, seed):
     """``n`` designs scattered +-30 % around the spec's own (every given field)."""
     rng = np.random.default_rng(seed)
-    cols = design_arrays(spec, {"pendulum_mass": np.full(n, spec.design.pendulum_mass)})
+    cols = design_arrays(spec, {"flying_mass": np.full(n, spec.design.flying_mass)})
     for f in DESIGN_FIELDS:
         if f != "friction_moment" and np.isfinite(cols[f]).all():
             cols[f] = cols[f] * rng.uniform(0.7, 1.3, n)
@@ -126,10 +126,10 @@ def test_hamabe_case_a_row():
 
 def test_inputs_frame_dict_and_designs_agree():
     spec = load_spec(SPECS / "textbook-ex7-spring_loaded.toml")
-    masses = np.array([0.9, 1.0, 1.1]) * spec.design.pendulum_mass
-    a = evaluate_many(spec, {"pendulum_mass": masses})
-    b = evaluate_many(spec, pd.DataFrame({"pendulum_mass": masses}))
-    c = evaluate_many(spec, [replace(spec.design, pendulum_mass=float(m)) for m in masses])
+    masses = np.array([0.9, 1.0, 1.1]) * spec.design.flying_mass
+    a = evaluate_many(spec, {"flying_mass": masses})
+    b = evaluate_many(spec, pd.DataFrame({"flying_mass": masses}))
+    c = evaluate_many(spec, [replace(spec.design, flying_mass=float(m)) for m in masses])
     pd.testing.assert_frame_equal(a, b)
     pd.testing.assert_frame_equal(a, c)
     with pytest.raises(ValueError, match="unknown design columns"):
@@ -143,7 +143,7 @@ def test_error_rows_never_raise():
     spec = load_spec(SPECS / "hamabe-a.toml")
     d0 = spec.design
     designs = [d0, replace(d0, wire_diameter=0.13), replace(d0, active_turns=400.0),
-               replace(d0, pendulum_mass=float("nan")), d0]
+               replace(d0, flying_mass=float("nan")), d0]
     frame = evaluate_many(spec, {f: [np.nan if getattr(d, f) is None else getattr(d, f)
                                      for d in designs] for f in DESIGN_FIELDS},
                           vibration=False)
@@ -181,7 +181,7 @@ def test_use_case_is_honoured(use_case):
     settings, as evaluate does (a spring sizing has no load change columns)."""
     spec = with_values(load_spec(SPECS / "hamabe-a.toml"),
                        {"analysis.use_case": use_case, "analysis.tolerance": 1e-3})
-    cols = design_arrays(spec, {"pendulum_mass": [11.0, 12.5]})
+    cols = design_arrays(spec, {"flying_mass": [11.0, 12.5]})
     frame = evaluate_many(spec, cols)
     for i in range(2):
         design = Design(**{f: None if np.isnan(cols[f][i]) else float(cols[f][i])
@@ -215,7 +215,7 @@ def test_one_evaluator_no_fallback(name, borrow, monkeypatch):
     if spec.governor.spring == "leaf":
         cols["leaf_thickness"][4] = 0.0  # no leaf: the dead loads push it out, an error row
     else:
-        cols["pendulum_mass"][4] *= 40.0  # far too heavy for its spring: an error row
+        cols["flying_mass"][4] *= 40.0  # far too heavy for its spring: an error row
     refs = []
     for i in range(5):
         design = Design(**{f: None if np.isnan(cols[f][i]) else float(cols[f][i])

@@ -97,7 +97,7 @@ def _expected(res) -> dict[str, float]:
         out[f"spring_moment_{tag}"] = st.M_f[i]
         out[f"omega_{tag}"] = st.omega[i]
         out[f"rpm_{tag}"] = st.omega[i] * 30.0 / math.pi
-    if res.design.pendulum_inertia is None:
+    if res.design.flying_inertia is None:
         out["pendulum_inertia"] = sd.inertia
     return {k: float(v) for k, v in out.items()}
 
@@ -256,7 +256,7 @@ def test_sheets_charts_and_names(workbooks, results, name):
               "density", "link_a", "link_rho", "link_b", "alpha_inner", "alpha_normal",
               "alpha_outer", "omega_mean", "irregularity_required", "reaction_cf_inner",
               "reaction_ci_inner", "reaction_cf_outer", "reaction_ci_outer"}
-    if res.design.pendulum_inertia is not None:
+    if res.design.flying_inertia is not None:
         inputs.add("pendulum_inertia")
     formulas = set(_expected(res))
     assert set(names) == inputs | formulas

@@ -206,6 +206,6 @@ def test_optimiser_records_are_declared(name):
             if t.title == "Chosen design"}
     d = res.design
     assert rows[f"{res.spec.governor.mass_key} mass"][1:] == ["kg", pytest.approx(
-        d.pendulum_mass)]
+        d.flying_mass)]
     if res.spec.governor.spring is not None:
         assert rows["wire diameter"][1:] == ["mm", pytest.approx(d.wire_diameter * 1e3)]

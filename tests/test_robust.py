@@ -42,7 +42,7 @@ def _design(res) -> Design:
               if k in ("wire_diameter_m", "coil_radius_m", "active_turns")}
     mass = [v for k, v in o.items() if k.endswith("_mass_kg") and not k.startswith("central")]
     free = [v for k, v in o.items() if k.startswith("free_") and k.endswith("_m")]
-    return Design(pendulum_mass=mass[0], free_half_length=free[0], dashpot=f,
+    return Design(flying_mass=mass[0], free_half_length=free[0], dashpot=f,
                          central_mass=o.get("central_mass_kg"), **spring)
 
 
@@ -178,7 +178,7 @@ def test_worst_case_beside_nominal_is_the_evaluators(robust):
 def test_monte_carlo_is_seeded_and_its_interval_holds_the_estimate():
     spec = govopt.load_spec(ROBUST)
     req = dz.requirements(spec)
-    design = Design(pendulum_mass=4.0, wire_diameter=0.01, coil_radius=0.039,
+    design = Design(flying_mass=4.0, wire_diameter=0.01, coil_radius=0.039,
                            active_turns=9.5, free_half_length=0.13533890618217037,
                            dashpot=0.8614620504172288)  # the nominal optimum: not robust
     req = dataclasses.replace(req, robust_samples=400, robust_seed=11)

@@ -16,7 +16,7 @@ from govopt.spec import Design
 
 ROBUST = "govopt/specs/hamabe-design-robust.toml"
 #: the robust optimum of hamabe-design-robust (d 10 mm, r 39 mm, n 10; its README row)
-DESIGN = Design(pendulum_mass=4.0, wire_diameter=0.01, coil_radius=0.039, active_turns=10.0,
+DESIGN = Design(flying_mass=4.0, wire_diameter=0.01, coil_radius=0.039, active_turns=10.0,
                 free_half_length=0.1335489367461029, dashpot=0.9435718922634899)
 
 
@@ -58,8 +58,8 @@ def test_a_check_not_monotone_in_a_tolerance_has_its_worst_case_inside_the_box(b
     maximisation, lies inside the box, is worse than at every corner, and is the worst of a
     dense grid over the box evaluated independently (the bulk evaluator on every point)."""
     spec, req, cols, box, wc = box_case
-    assert wc["dims"] == ["coil_radius", "dashpot", "pendulum_mass"]
-    assert "pendulum_mass" in wc["not_monotone"]["irregularity"]
+    assert wc["dims"] == ["coil_radius", "dashpot", "flying_mass"]
+    assert "flying_mass" in wc["not_monotone"]["irregularity"]
     irr = wc["frame"][value_column("irregularity")].to_numpy()
     w = int(np.argmax(irr))
     assert wc["found_by"][w] == "inner maximisation"
@@ -134,7 +134,7 @@ def test_dead_weight_robust_design_holds_at_its_mass_corners(tmp_path):
     def failures_at_corners(m, c):
         out = set()
         for sm, sc in itertools.product((-1, 1), repeat=2):
-            d = Design(pendulum_mass=m * (1 + 0.005 * sm), central_mass=c * (1 + 0.005 * sc))
+            d = Design(flying_mass=m * (1 + 0.005 * sm), central_mass=c * (1 + 0.005 * sc))
             out |= {ck.name for ck in govopt.evaluate(spec.with_design(d)).checks
                     if not ck.passed and not any(b in ck.name for b in rb.BOUND_NAMES)}
         return out

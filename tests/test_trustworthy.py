@@ -146,7 +146,7 @@ def test_free_length_not_positive_is_an_error_with_the_least_stiffness(tmp_path)
     assert "free half length" in out.output and "Traceback" not in out.output
     kappa_min = float(re.search(r"kappa > ([0-9.e+]+) N/m", out.output).group(1))
     spec = govopt.load_spec(path)
-    m = spec.design.pendulum_mass
+    m = spec.design.flying_mass
     assert statics.free_half_length(spec, m, kappa_min * (1 + 1e-5)) > 0
     assert statics.free_half_length(spec, m, kappa_min * (1 - 1e-5)) < 0
 
@@ -248,7 +248,7 @@ def test_friction_that_never_lets_go():
     xi, v, eta = r.final_state
     assert xi == m.xi0 and v == 0.0
     assert eta == pytest.approx(m.eta0 - m.R * m.xi0 * r.t_horizon, rel=1e-12)
-    assert r.note.startswith("the pendulum does not move")
+    assert r.note.startswith("the governor does not move")
     json.dumps(r.to_dict())
 
 
@@ -280,4 +280,4 @@ def test_evaluate_reports_a_stuck_pendulum(tmp_path):
     assert not check["passed"]
     assert check["value"] == pytest.approx(math.radians(7 + 20 / 60), rel=1e-12)
     text = invoke(["evaluate", str(path), "--full"])  # the friction table's note
-    assert text.exit_code == 1 and "the pendulum does not move" in text.output
+    assert text.exit_code == 1 and "the governor does not move" in text.output

@@ -223,7 +223,7 @@ class FrictionResult:
     ``settle_tol |xi0|``; the model would go on creeping with ever smaller stick-slip cycles),
     ``"at rest"`` (stuck exactly at ``xi = 0`` with the speed error inside the friction band),
     ``"horizon"`` (time ``t_end`` reached), ``"max_strokes"`` (stroke budget used up) or
-    ``"stuck"``: the pendulum does not move at all before the horizon (the friction moment holds
+    ``"stuck"``: the governor does not move at all before the horizon (the friction moment holds
     it while the speed error grows; the governor does not follow the load change, and the
     residual offset is the whole ``xi0``).
     """
@@ -336,8 +336,8 @@ class FrictionResult:
     def note(self) -> str:
         """One sentence on what the run shows, for reports."""
         if self.outcome == "stuck":
-            return (f"the pendulum does not move: the friction (M0 = {self.M0:.4g}, SI) holds "
-                    f"it for the whole {self.t_simulated:.4g} s simulated, so the governor does "
+            return (f"the governor does not move: the friction (M0 = {self.M0:.4g}, SI) holds "
+                    f"it for the whole {self.t_simulated:.4g} s simulated, so it does "
                     f"not follow the load change (residual offset {self.final_state[0]:.4g}, SI, "
                     f"from the new equilibrium: all of xi0; the speed error drifts to "
                     f"{self.final_state[2]:.4g} rad/s)")

@@ -464,7 +464,7 @@ def screen_vibration(spec, req):
     if spec.engine is None or spec.speed is None:
         return None
     gov = spec.governor
-    m = 0.5 * (req.pendulum_mass[0] + req.pendulum_mass[1])
+    m = 0.5 * (req.flying_mass[0] + req.flying_mass[1])
     sd = statics.SpringDesign(m, float(gov.inertia(gov.x_normal, m)), 0.0, 0.0)
     return gov.vibration(spec, sd, 0.5 * spec.speed.omega_mean**2, 0.0)
 

@@ -174,12 +174,12 @@ def spring_design(spec: Spec, design: Design | None = None) -> SpringDesign:
     if gov.spring is not None:
         l0 = ds.free_half_length
         if l0 is None:
-            l0 = float(free_half_length(spec, ds.pendulum_mass, kappa, central))
-    given = ds.pendulum_inertia is not None
-    I = ds.pendulum_inertia if given else float(gov.inertia(gov.x_normal, ds.pendulum_mass,
+            l0 = float(free_half_length(spec, ds.flying_mass, kappa, central))
+    given = ds.flying_inertia is not None
+    I = ds.flying_inertia if given else float(gov.inertia(gov.x_normal, ds.flying_mass,
                                                             central))
     w, t = (np.nan if v is None else v for v in (ds.leaf_width, ds.leaf_thickness))
-    return SpringDesign(ds.pendulum_mass, I, kappa, l0, d, r, n, central, given, w, t)
+    return SpringDesign(ds.flying_mass, I, kappa, l0, d, r, n, central, given, w, t)
 
 
 @dataclass(frozen=True)

@@ -87,7 +87,7 @@ def _steps(lo: float, hi: float, step: float) -> np.ndarray:
 def mass_grid(req: Requirements) -> np.ndarray:
     """The flying masses on the catalogue's weight step within the bounds (not zero: a lower
     bound within rounding of it is no flying mass)."""
-    m = _steps(*req.pendulum_mass, req.mass_step)
+    m = _steps(*req.flying_mass, req.mass_step)
     return m[m > 0]
 
 
@@ -769,7 +769,7 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
     from ..evaluation import evaluate
 
     gov = spec.governor
-    chosen = Design(pendulum_mass=cand.m, **cand.spring, free_half_length=cand.l0,
+    chosen = Design(flying_mass=cand.m, **cand.spring, free_half_length=cand.l0,
                     central_mass=cand.central or None,
                     dashpot=None if math.isnan(cand.f) else cand.f)
     res = evaluate(spec.with_design(chosen))
@@ -955,7 +955,7 @@ def _dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fal
         moves.append(f"speed.outer {sp.omega_outer * rpm:.5g} rpm -> "
                      f"{sp.omega_outer * x * rpm:.5g} rpm")
     x = _bisect(lambda x: feasible(spec, replace(
-        req, pendulum_mass=(req.pendulum_mass[0] / x, req.pendulum_mass[1] * x),
+        req, flying_mass=(req.flying_mass[0] / x, req.flying_mass[1] * x),
         central_mass=(req.central_mass[0] / x, req.central_mass[1] * x))), hi=4.0)
     if x is not None:
         moves.append(f"the weight bounds widened x{x:.3g}")
@@ -1018,8 +1018,8 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
         return spec, replace(req, hurwitz_margin=req.hurwitz_margin / x)
 
     def with_mass(x):
-        return spec, replace(req, pendulum_mass=(req.pendulum_mass[0] / x,
-                                                 req.pendulum_mass[1] * x))
+        return spec, replace(req, flying_mass=(req.flying_mass[0] / x,
+                                                 req.flying_mass[1] * x))
 
     def with_band(inner, outer):  # a band stated [speed] inner/outer, re-derived as the parser
         return replace(spec, speed=Speed((inner + outer) / 2.0, 2.0 * (outer - inner)

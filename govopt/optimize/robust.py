@@ -137,7 +137,7 @@ class Box:
 
 def candidate_box(spec: Spec, req: Requirements, cols: dict) -> Box:
     """The tolerance box of candidates given as design columns ``cols`` (arrays)."""
-    n = len(cols["pendulum_mass"])
+    n = len(cols["flying_mass"])
     out = {}
     if req.robust_spring_grade is not None:
         if spec.governor.spring_kind is None or not spec.governor.spring_kind.helical:
@@ -150,7 +150,7 @@ def candidate_box(spec: Spec, req: Requirements, cols: dict) -> Box:
     if req.robust_dashpot > 0:
         out["dashpot"] = req.robust_dashpot * np.nan_to_num(cols["dashpot"])
     if req.robust_masses > 0:
-        out["pendulum_mass"] = req.robust_masses * cols["pendulum_mass"]
+        out["flying_mass"] = req.robust_masses * cols["flying_mass"]
         out["central_mass"] = req.robust_masses * np.nan_to_num(cols["central_mass"])
     return Box({k: np.broadcast_to(v, (n,)).astype(float) for k, v in out.items()},
                req.robust_torque_slope)
@@ -216,7 +216,7 @@ def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
     signs = np.array(list(itertools.product((-1.0, 1.0), repeat=len(dims))),
                      dtype=float).reshape(2 ** len(dims), len(dims))  # one, empty, without any
     nut, valve = nut_settings(req)
-    n = len(cols["pendulum_mass"])
+    n = len(cols["flying_mass"])
     cand, corner, k = (a.ravel() for a in np.meshgrid(np.arange(n), np.arange(len(signs)),
                                                          np.arange(nut.size), indexing="ij"))
     rows = {f: v[cand].copy() for f, v in cols.items()}
@@ -239,7 +239,7 @@ def corner_verdict(frame, n: int, n_corners: int, n_nut: int):
 
 def _design_columns(cat, rows, cols, l0, km, f) -> dict:
     c = km.central[rows, 0]
-    out = {"pendulum_mass": km.m[rows, 0], "free_half_length": l0, "dashpot": f,
+    out = {"flying_mass": km.m[rows, 0], "free_half_length": l0, "dashpot": f,
            "central_mass": np.where(c > 0, c, np.nan)}
     out.update({k: v[cols] for k, v in cat.fields.items()})
     return out
@@ -329,7 +329,7 @@ def dead_weight_batches(spec: Spec, req: Requirements):
                               float(win["f_hi"][g]), float(c[i]))
                  for i, g in zip(s, good, strict=True)]
         visited = [int(first + g + 1) for g in good]
-        yield ({"pendulum_mass": m[s], "central_mass": np.where(c[s] > 0, c[s], np.nan),
+        yield ({"flying_mass": m[s], "central_mass": np.where(c[s] > 0, c[s], np.nan),
                 "free_half_length": np.full(s.size, np.nan), "dashpot": win["f"][good]},
                cands, visited)
 
@@ -472,7 +472,7 @@ def robust_design(spec: Spec):
 
 def design_of(spec: Spec, cand) -> Design:
     """The candidate as a :class:`~govopt.spec.Design`."""
-    return Design(pendulum_mass=cand.m, **cand.spring, free_half_length=cand.l0,
+    return Design(flying_mass=cand.m, **cand.spring, free_half_length=cand.l0,
                   central_mass=cand.central or None,
                   dashpot=None if math.isnan(cand.f) else cand.f)
 
@@ -517,7 +517,7 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> di
     corner = np.array([f == "corner" for f in wc["found_by"]])
     damping = spec.governor.key_unit("damping")
     halves = {f"{k}_m" if k in ("wire_diameter", "coil_radius", "free_half_length")
-              else f"{spec.governor.mass_key}_mass_kg" if k == "pendulum_mass"
+              else f"{spec.governor.mass_key}_mass_kg" if k == "flying_mass"
               else f"{k}_kg" if k.endswith("mass") else f"{k}_{damping}": float(v[0])
               for k, v in box.fields.items() if v[0] > 0}
     s0 = int(wc["setting"][0])

@@ -429,7 +429,7 @@ def _design_values(res: Result, old: dict, bounds: dict) -> dict[str, tuple[str,
         else:  # a weight: a force read back through standard gravity
             out[f"{stem}_weight"] = ("force", value, G_STANDARD)
 
-    mass(gov.mass_key, d.pendulum_mass)
+    mass(gov.mass_key, d.flying_mass)
     mass("central", d.central_mass)
     if gov.spring is not None:
         for key in ("spring_stiffness", "leaf_width", "leaf_thickness", "wire_diameter",
@@ -440,9 +440,9 @@ def _design_values(res: Result, old: dict, bounds: dict) -> dict[str, tuple[str,
                 out[key] = (dimension.get(key, "length"), value, 1.0)
         if d.free_half_length is not None:
             out[gov.free_length_key] = ("length", d.free_half_length, 1.0)
-    if d.pendulum_inertia is not None:
+    if d.flying_inertia is not None:
         out[f"{gov.mass_key}_inertia"] = ("inertia" if angular else "mass",
-                                          d.pendulum_inertia, 1.0)
+                                          d.flying_inertia, 1.0)
     if d.dashpot is not None:
         damping = "damping" if angular else "linear_damping"
         if "dashpot_a1" in old:  # Hamabe's a1 = f/3

@@ -167,9 +167,9 @@ class ShaftGovernor(Governor):
                 "design.pendulum_weight (or mass x standard gravity)")
         s.input("std_gravity", "standard gravity", "g_n", G_STANDARD, "m/s^2",
                 "CGPM 1901; converts the weight to the mass")
-        if ds.pendulum_inertia is not None:
+        if ds.flying_inertia is not None:
             s.input("pendulum_inertia", "pendulum moment of inertia about the fulcrum", "I",
-                    sd.inertia, "kg*m^2", "design.pendulum_inertia")
+                    sd.inertia, "kg*m^2", "design.flying_inertia")
         s.input("dashpot", "dash-pot coefficient", "f", ds.dashpot, "N*m*s/rad",
                 "design.dashpot_f (= 3 a1)" if ds.dashpot is not None
                 else "not given in the spec (blank: no dash-pot)")
@@ -215,10 +215,10 @@ class ShaftGovernor(Governor):
         s.section("Derived quantities (blue, live formulas) next to govopt's values as written")
         s.formula("pendulum_mass", "pendulum mass", "m", "=pendulum_weight/std_gravity", "kg",
                   sd.m, "m = W / g_n")
-        if ds.pendulum_inertia is None:
+        if ds.flying_inertia is None:
             s.formula("pendulum_inertia", "pendulum moment of inertia about the fulcrum", "I",
                       "=link_rho^2*pendulum_mass", "kg*m^2", sd.inertia,
-                      "I = rho^2 m (point mass; design.pendulum_inertia not given)")
+                      "I = rho^2 m (point mass; design.flying_inertia not given)")
         s.helical_spring(sd, props)
         factor, corr = s.stress_factor(mat.stress_correction, props["spring_index"]), \
             mat.stress_correction
