@@ -40,11 +40,9 @@ def evaluate(spec: Spec, design: Design | None = None) -> Result:
 
 
 def _evaluate(spec: Spec, design: Design) -> Result:
-    from .analysis.classic import classic_measures
-
     if design is None:
         statics.spring_design(spec, design)  # the parser's diagnosis: no design to evaluate
-    ev = core(spec, design_columns([design]), classic=False, report=True)
+    ev = core(spec, design_columns([design]), report=True)
     if ev.error[0] is not None:
         raise DesignError(ev.error[0])
     spec, sd, char, k2 = ev.spec, ev.spring, ev.char, ev.k2  # spec: with the use case's plan
@@ -63,7 +61,7 @@ def _evaluate(spec: Spec, design: Design) -> Result:
                   spring_properties={k: float(ev.figures[f][0]) for k, f in SPRING_PROPERTIES}
                   if helical else {},
                   checks=ev.table.checks(), k2=k2, dynamics=dynamics,
-                  classic=classic_measures(spec, sd, char, k2, design),
+                  classic=ev.classic,
                   spring_report=gov.spring_report(spec, sd, char, ev.vib)
                   if gov.spring is not None else None)
 

@@ -25,6 +25,8 @@ import numpy as np
 
 from .analysis import loadchange, statics
 from .analysis import transient as tr
+from .analysis.classic import CLASSIC_FIGURES, classic_measures
+from .analysis.classic import report as classic_report
 from .errors import DesignError
 from .governors import Governor
 from .requirements import (
@@ -221,6 +223,8 @@ class Evaluation:
     dynamics: dict = field(default_factory=dict)
     #: the spec's ``[analysis] use_case`` plan (:func:`govopt.fidelity.plan`), None without
     plan: object = None
+    #: the classic measures' report of design 0 (:func:`govopt.analysis.classic.report`)
+    classic: dict = field(default_factory=dict)
 
     @property
     def impossible(self) -> np.ndarray:
@@ -450,8 +454,11 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
             "d": cols["wire_diameter"], "r": cols["coil_radius"], "n": cols["active_turns"],
             "m": cols["flying_mass"], "l0": l0[:, 0], "C": out["spring_index"],
             "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}, where=helical)
-    if classic:
-        out.update(_classic(spec, cols, t, sd, w2c, x, omega, ~impossible))
+    measures = None
+    if classic:  # the textbook's measures (ch. 3) over the range, the friction band included
+        measures = classic_measures(spec, sd, x, omega, t, friction_at(gov, cols, x),
+                                    ~impossible)
+        out.update({k: measures[k] for k in CLASSIC_FIGURES})
     error = np.full(n, None, dtype=object)
     for i in np.nonzero(impossible)[0]:
         error[i] = said.get(int(i)) or diagnose(spec, design_of(cols, i))
@@ -461,6 +468,8 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         ev.char = char_of(0)
         ev.k2 = np.array(k2[0])
         ev.vib = vibs[0]
+        if measures is not None:
+            ev.classic = classic_report(spec, measures, 0)
         if vib_dicts and vib_dicts[0] is not None:
             dyn["vibration"] = vib_dicts[0]
         ev.dynamics = dyn
@@ -550,75 +559,6 @@ def _load_change_many(spec, lc, m, kappa, l0, central, I_given, dashpot, run):
         overs[sel] = ~s.stable | tr.over_regulates(s.over_regulation_scaled, x[0][sel])
         st[sel] = s.settling_time
     return hur, over, overs, st, x[0], good, (a, x, k2, s)
-
-
-def _classic(spec, cols, t, sd, w2, x, omega, ok):
-    """:func:`govopt.analysis.classic.classic_measures` (its scalar figures), vectorised."""
-    from .analysis.classic import speed_change, travel_between
-
-    gov = spec.governor
-    n = omega.shape[0]
-    band = friction_at(gov, cols, x)
-    with np.errstate(all="ignore"):
-        rise = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, band), 0.0))
-        fall = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, -band), 0.0))
-        i_c = int(np.searchsorted(x, gov.x_normal))
-        w0 = spec.speed.omega_mean if spec.speed is not None else omega[:, i_c]
-        stability = statics.stability(statics.rising_slopes(spec, sd, x, omega),
-                                      np.broadcast_to(statics.slope_scale(spec, w0), (n,)))
-        wi, wa = omega[:, 0], omega[:, -1]
-        c, over_range = speed_change(spec, wi, wa)
-        grow = (1.0 + c[:, None]) ** 2 - 1.0
-        lever = np.broadcast_to(t.lever, (n, x.size))
-        effort = gov.flying_masses * grow * w2 * lever / (2.0 * gov.travel_slope(x))
-        ic = int(np.argmin(np.abs(x - gov.x_normal)))
-        at = 0 if over_range else ic
-        if over_range:
-            travel = np.full(n, travel_between(spec, float(x[0]), float(x[-1])))
-        else:
-            target = (1.0 + c) ** 2 * w2[:, ic]
-            travel = _travel_many(spec, sd, float(x[ic]), float(x[-1]), target, ok)
-        return {"range_rad_s": wa - wi, "sensitiveness": 2.0 * (wa - wi) / (wa + wi),
-                "stability": np.where(ok, stability, None), "effort": effort[:, at],
-                "power": effort[:, at] * travel, "friction_band": band[:, ic],
-                "insensitiveness": ((rise - fall) / omega).max(axis=1)}
-
-
-def _travel_many(spec, sd, x0, x_end, target, ok):
-    """:func:`govopt.analysis.classic._travel` for many designs: the configuration ``x1`` in
-    equilibrium at speed^2 ``target`` (``brentq`` to 1e-15 in the scalar version) by a
-    safeguarded Newton iteration on the characteristic, whose slope is exact on the seam
-    (``d omega^2/dx = I k^2 / (jp - ci)`` with the dead loads' slope included), then the
-    member's travel ``int s'(u) du`` from ``x0`` by 8-point Gauss-Legendre."""
-    from .analysis.classic import travel_between
-
-    exact = spec.with_analysis(reaction_slope=True)
-    n = target.shape[0]
-
-    def excess(u):
-        t = statics.terms(exact, u[:, None], sd.m, sd.central)
-        w2 = flat(t.omega_squared(sd.kappa, sd.l0), n)
-        return w2 - target, flat(t.stiffness(sd.kappa, sd.l0, w2[:, None]) / t.lever, n)
-
-    out = np.full(n, np.inf)
-    top, _ = excess(np.full(n, x_end))
-    go = ok & (top > 0)
-    if not go.any():
-        return out
-    lo, hi = np.full(n, x0), np.full(n, x_end)
-    u = np.full(n, 0.5 * (x0 + x_end))
-    for _ in range(100):
-        f, df = excess(u)
-        lo, hi = np.where(f > 0, lo, u), np.where(f > 0, u, hi)
-        step = f / df
-        new = u - step
-        new = np.where((new > lo) & (new < hi) & np.isfinite(new), new, 0.5 * (lo + hi))
-        done = (np.abs(new - u) <= 1e-15 * np.abs(u)) | (f == 0) | (hi - lo <= 4e-16 * np.abs(u))
-        u = np.where(done, u, new)
-        if done[go].all():
-            break
-    out[go] = travel_between(spec, x0, u)[go]
-    return out
 
 
 __all__ = ["DESIGN_FIELDS", "Evaluation", "core", "dashpot_column", "design_columns", "diagnose",

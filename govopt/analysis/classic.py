@@ -56,50 +56,71 @@ def speed_change(spec, wi, wa):
     return np.full(np.shape(wi), float(change)), False
 
 
-def classic_measures(spec, sd: statics.SpringDesign, char: statics.Characteristic,
-                     k2=None, design=None) -> dict:
-    """The textbook's measures of one design over its range (SI; see the module docstring);
-    effort and power at the normal configuration for the spec's speed change (over the range:
-    from the innermost configuration to the outermost); the type's geometry (``h``, the arm
-    ratio ``k``, the sleeve lift ...: :meth:`Governor.columns`) at the ends of the range and
-    the normal configuration."""
-    gov, x = spec.governor, char.alpha
-    t = statics.terms(spec, x, sd.m, sd.central)
-    w2 = char.omega**2
-    band = gov.friction(x, design)
-    rise = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, band), 0.0))
-    fall = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, -band), 0.0))
-    # the characteristic's own slope d omega/dx (exact, the dead loads' slope included) and its
-    # secants, at the one tolerance the "characteristic rises" check reads (statics.stability)
-    wi, wa = float(char.omega[0]), float(char.omega[-1])
-    i_n = int(np.argmin(np.abs(x - gov.x_normal)))
-    w0 = spec.speed.omega_mean if spec.speed is not None else float(char.omega[i_n])
-    stability = str(statics.stability(statics.rising_slopes(spec, sd, x, char.omega),
-                                      statics.slope_scale(spec, w0)))
-    c, over_range = speed_change(spec, wi, wa)
-    c = float(c)
-    at = 0 if over_range else i_n  # the configuration the speed changes from
-    grow = (1.0 + c) ** 2 - 1.0
-    slope = gov.travel_slope(x)
-    effort = gov.flying_masses * grow * w2 * t.lever / (2.0 * slope)
-    travel = (travel_between(spec, float(x[0]), float(x[-1])) if over_range else
-              _travel(spec, sd, float(x[i_n]), float(x[-1]), (1.0 + c) ** 2 * w2[i_n]))
+#: the per-design figures of :func:`classic_measures` (a bulk row's classic columns)
+CLASSIC_FIGURES = ("range_rad_s", "sensitiveness", "stability", "effort", "power",
+                   "friction_band", "insensitiveness")
+
+
+def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> dict:
+    """The textbook's measures of N designs over their range (see the module docstring), SI,
+    each an array over the designs (:data:`CLASSIC_FIGURES`), and the speeds at which each
+    starts to open and close against its friction (``rise``, ``fall``: N x K). ``sd``: the
+    designs (fields of shape ``(N, 1)``); ``x``: the configurations (K); ``omega``: the
+    characteristic (N x K, rad/s); ``t``: the seam's terms at ``x``; ``band``: the friction band
+    at ``x`` (N x K, :meth:`Governor.friction`); ``ok``: the designs with a characteristic
+    (the others' travel is not sought). Effort and power at the normal configuration for the
+    spec's speed change (over the range: from the innermost configuration to the outermost)."""
+    gov = spec.governor
+    n = omega.shape[0]
+    w2 = omega**2
+    with np.errstate(all="ignore"):
+        rise = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, band), 0.0))
+        fall = np.sqrt(np.maximum(t.omega_squared(sd.kappa, sd.l0, -band), 0.0))
+        i_n = int(np.argmin(np.abs(x - gov.x_normal)))
+        w0 = spec.speed.omega_mean if spec.speed is not None else omega[:, i_n]
+        # the characteristic's own slope d omega/dx (exact, the dead loads' slope included) and
+        # its secants, at the one tolerance the "characteristic rises" check reads
+        stability = statics.stability(statics.rising_slopes(spec, sd, x, omega),
+                                      np.broadcast_to(statics.slope_scale(spec, w0), (n,)))
+        wi, wa = omega[:, 0], omega[:, -1]
+        c, over_range = speed_change(spec, wi, wa)
+        grow = (1.0 + c[:, None]) ** 2 - 1.0
+        lever = np.broadcast_to(t.lever, (n, x.size))
+        effort = gov.flying_masses * grow * w2 * lever / (2.0 * gov.travel_slope(x))
+        at = 0 if over_range else i_n  # the configuration the speed changes from
+        if over_range:
+            travel = np.full(n, travel_between(spec, float(x[0]), float(x[-1])))
+        else:
+            target = (1.0 + c) ** 2 * w2[:, i_n]
+            travel = _travel(spec, sd, float(x[i_n]), float(x[-1]), target, ok)
+        return {"range_rad_s": wa - wi, "sensitiveness": 2.0 * (wa - wi) / (wa + wi),
+                "stability": np.where(ok, stability, None), "effort": effort[:, at],
+                "power": effort[:, at] * travel, "friction_band": band[:, i_n],
+                "insensitiveness": ((rise - fall) / omega).max(axis=1),
+                "rise": rise, "fall": fall, "change": c, "over_range": over_range,
+                "x_normal": float(x[i_n])}
+
+
+def report(spec, measures: dict, i: int) -> dict:
+    """The classic measures of design ``i`` of :func:`classic_measures` as a result reports
+    them (SI; units named), with the type's geometry at the ends and the normal configuration."""
+    gov = spec.governor
     return {
-        "range_rad_s": wa - wi,
-        "range_rpm": (wa - wi) * 30.0 / np.pi,
-        "sensitiveness": char.sensitiveness,
-        "stability": stability,
-        "effort_change": c,
-        "effort_over": "range" if over_range else "normal",
-        "effort": float(effort[at]),
+        "range_rad_s": float(measures["range_rad_s"][i]),
+        "range_rpm": float(measures["range_rad_s"][i]) * 30.0 / np.pi,
+        "sensitiveness": float(measures["sensitiveness"][i]),
+        "stability": str(measures["stability"][i]),
+        "effort_change": float(measures["change"][i]),
+        "effort_over": "range" if measures["over_range"] else "normal",
+        "effort": float(measures["effort"][i]),
         "effort_unit": "N*m" if gov.travel == "angle" else "N",
-        "power": float(effort[at] * travel),
+        "power": float(measures["power"][i]),
         "power_unit": "J",
-        "friction_band": float(band[i_n]),
-        "omega_rise_rad_s": rise.tolist(),
-        "omega_fall_rad_s": fall.tolist(),
-        "insensitiveness": float(np.max((rise - fall) / char.omega)),
-        "geometry": geometry(spec, x[i_n]),
+        "friction_band": float(measures["friction_band"][i]),
+        "omega_rise_rad_s": measures["rise"][i].tolist(),
+        "omega_fall_rad_s": measures["fall"][i].tolist(),
+        "insensitiveness": float(measures["insensitiveness"][i]),
+        "geometry": geometry(spec, measures["x_normal"]),
     }
 
 
@@ -129,14 +150,36 @@ def travel_between(spec, x0: float, x1):
     return float(out) if out.ndim == 0 else out
 
 
-def _travel(spec, sd, x0: float, x_end: float, target: float) -> float:
-    """Travel of the regulating member from ``x0`` to the equilibrium at speed^2 ``target``
-    (``inf`` where the governor reaches the end of its range first)."""
-    from .roots import brentq
+def _travel(spec, sd, x0: float, x_end: float, target, ok):
+    """Travel of the regulating member of each design from ``x0`` to its configuration ``x1`` in
+    equilibrium at speed^2 ``target`` (``inf`` where the governor reaches the end of its range
+    first): a safeguarded Newton iteration on the characteristic, whose slope is exact on the
+    seam (``d omega^2/dx = I k^2 / (jp - ci)``, the dead loads' slope included), to 1e-15, then
+    :func:`travel_between`."""
+    exact = spec.with_analysis(reaction_slope=True)
+    n = target.shape[0]
 
     def excess(u):
-        return float(statics.omega_squared(spec, u, sd.m, sd.kappa, sd.l0, sd.central)) - target
+        t = statics.terms(exact, u[:, None], sd.m, sd.central)
+        w2 = np.broadcast_to(t.omega_squared(sd.kappa, sd.l0), (n, 1))[:, 0]
+        slope = t.stiffness(sd.kappa, sd.l0, w2[:, None]) / t.lever
+        return w2 - target, np.broadcast_to(slope, (n, 1))[:, 0]
 
-    if not excess(x_end) > 0:
-        return float("inf")
-    return travel_between(spec, x0, brentq(excess, x0, x_end, xtol=1e-15, rtol=1e-15))
+    out = np.full(n, np.inf)
+    top, _ = excess(np.full(n, x_end))
+    go = ok & (top > 0)
+    if not go.any():
+        return out
+    lo, hi = np.full(n, x0), np.full(n, x_end)
+    u = np.full(n, 0.5 * (x0 + x_end))
+    for _ in range(100):
+        f, df = excess(u)
+        lo, hi = np.where(f > 0, lo, u), np.where(f > 0, u, hi)
+        new = u - f / df
+        new = np.where((new > lo) & (new < hi) & np.isfinite(new), new, 0.5 * (lo + hi))
+        done = (np.abs(new - u) <= 1e-15 * np.abs(u)) | (f == 0) | (hi - lo <= 4e-16 * np.abs(u))
+        u = np.where(done, u, new)
+        if done[go].all():
+            break
+    out[go] = travel_between(spec, x0, u)[go]
+    return out
