@@ -31,6 +31,10 @@ def _infinite(x) -> str | None:
     return None
 
 
+def _all_finite_floats(a: np.ndarray) -> bool:
+    return a.dtype.kind == "f" and bool(np.isfinite(a).all())
+
+
 def jsonable(obj):
     """Numpy scalars and arrays (nested in dicts, lists, tuples) to plain JSON types, with
     infinities as ``null`` and a ``<key>_infinite`` flag (see the module docstring)."""
@@ -39,6 +43,8 @@ def jsonable(obj):
         for k, v in obj.items():
             out[k] = jsonable(v)
             if isinstance(v, np.ndarray):
+                if _all_finite_floats(v):  # no flag: nothing infinite
+                    continue
                 v = v.tolist()
             flag = _infinite(v)
             if flag is None and isinstance(v, list | tuple):
@@ -50,7 +56,9 @@ def jsonable(obj):
     if isinstance(obj, list | tuple):
         return [jsonable(v) for v in obj]
     if isinstance(obj, np.ndarray):
-        return jsonable(obj.tolist())
+        # a float array with every number finite is plain floats as it is (a response's
+        # thousands of samples, not a Python call each)
+        return obj.tolist() if _all_finite_floats(obj) else jsonable(obj.tolist())
     if isinstance(obj, bool | np.bool_):
         return bool(obj)
     if isinstance(obj, int | np.integer):

@@ -111,6 +111,21 @@ def parse_quantity(text, dimension: str) -> float:
     Traceback (most recent call last):
     govopt.units.UnitError: cannot parse '18 kfg' ...: unknown unit 'kfg' (did you mean 'kgf'?)
     """
+    if isinstance(text, str) and len(text) <= MAX_QUANTITY_CHARS:
+        return _parse_text(text, dimension)
+    return _parse(text, dimension)
+
+
+@functools.lru_cache(maxsize=4096)
+def _parse_text(text: str, dimension: str) -> float:
+    """:func:`_parse` of a string, remembered: a spec's quantities are parsed again for every
+    study point and every variant of the spec (pint takes ~1 ms a string); an error is not
+    remembered (raised afresh each time)."""
+    return _parse(text, dimension)
+
+
+def _parse(text, dimension: str) -> float:
+    """:func:`parse_quantity` itself."""
     si = SI_UNITS[dimension]
     name = dimension.replace("_", " ")
     if isinstance(text, bool):

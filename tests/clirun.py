@@ -5,6 +5,7 @@ that escaped it, if any (``--debug`` lets a bug's exception through)."""
 from __future__ import annotations
 
 import io
+import os
 import sys
 from dataclasses import dataclass
 
@@ -30,16 +31,20 @@ class _Capture(io.StringIO):
         return super().write(text)
 
 
-def invoke(args) -> Run:
+def invoke(args, cwd=None) -> Run:
     """``govopt ARGS`` in this process: exit code, stdout, stderr, both interleaved, and an
     exception other than SystemExit that escaped (exit code 1 then, as an uncaught exception
-    in a process). A BaseException that is not an Exception (a test's time limit) passes."""
+    in a process). A BaseException that is not an Exception (a test's time limit) passes.
+    ``cwd``: the folder it runs in, as a shell's current folder (restored after)."""
     from govopt.cli import main
 
     both = io.StringIO()
     out, err = _Capture(both), _Capture(both)
     code, exception = 0, None
     saved = sys.stdout, sys.stderr
+    here = os.getcwd()
+    if cwd is not None:
+        os.chdir(cwd)
     sys.stdout, sys.stderr = out, err
     try:
         main([str(a) for a in args])
@@ -49,4 +54,5 @@ def invoke(args) -> Run:
         code, exception = 1, exc
     finally:
         sys.stdout, sys.stderr = saved
+        os.chdir(here)
     return Run(code, out.getvalue(), err.getvalue(), both.getvalue(), exception)

@@ -1,7 +1,9 @@
 """What an engineer sees (issue 13, items 4, 5, 7): a CLI with the conventions of the tools
 engineers use (version, exit codes, plain flags, outputs where asked or here, bundled specs that
 ship in a non-editable install), the units people type, and round trips that keep the
-engineer's file. CLI points run the console entry point in a subprocess."""
+engineer's file. CLI points about the process itself (its exit status, a closed pipe, the
+version and help of the console entry point, an installed copy) run it in a subprocess; the
+others run the CLI in this process, in the folder a user would run it in."""
 
 import dataclasses
 import importlib.metadata
@@ -145,47 +147,47 @@ def test_outputs_go_here_never_into_the_package(tmp_path):
     written inside the package."""
     package = Path(govopt.__file__).resolve().parent
     before = _files(package)
-    json_run = _govopt("design", "--json", "-o", "d.toml", cwd=tmp_path)
-    assert json_run.returncode == 0, json_run.stderr
+    json_run = invoke(["design", "--json", "-o", "d.toml"], cwd=tmp_path)
+    assert json_run.exit_code == 0, json_run.stderr
     assert json.loads(json_run.stdout)["kind"] == "design"
     assert sorted(os.listdir(tmp_path)) == ["d.toml"]
     assert f"wrote {tmp_path / 'd.toml'}" in json_run.stderr
-    run = _govopt("design", cwd=tmp_path)
-    assert run.returncode == 0, run.stderr
+    run = invoke(["design"], cwd=tmp_path)
+    assert run.exit_code == 0, run.stderr
     assert sorted(os.listdir(tmp_path)) == ["d.toml"] and "wrote" not in run.stdout
-    run = _govopt("design", "--xlsx", "hamabe-design.xlsx", cwd=tmp_path)
-    assert run.returncode == 0, run.stderr
+    run = invoke(["design", "--xlsx", "hamabe-design.xlsx"], cwd=tmp_path)
+    assert run.exit_code == 0, run.stderr
     assert sorted(os.listdir(tmp_path)) == ["d.toml", "hamabe-design.xlsx"]
     assert run.stdout.rstrip().endswith(f"wrote {tmp_path / 'hamabe-design.xlsx'}")
     assert _files(package) == before
 
 
 def test_examples_and_init(tmp_path):
-    listed = _govopt("examples", cwd=tmp_path)
-    assert listed.returncode == 0, listed.stderr
+    listed = invoke(["examples"], cwd=tmp_path)
+    assert listed.exit_code == 0, listed.stderr
     names = [line.split()[0] for line in listed.stdout.splitlines()]
     assert names == sorted(p.stem for p in [*SPECS.glob("*.toml"), *SPECS.glob("studies/*"),
                                             *SPECS.glob("springs/*")])
     assert "hamabe-a" in names and "hamabe-study" in names
     assert "Hamabe Example 1, case a" in listed.stdout  # each with its description
-    run = _govopt("init", "hamabe-a", cwd=tmp_path)
-    assert run.returncode == 0, run.stderr
+    run = invoke(["init", "hamabe-a"], cwd=tmp_path)
+    assert run.exit_code == 0, run.stderr
     copy = tmp_path / "hamabe-a.toml"
     assert copy.read_bytes() == (SPECS / "hamabe-a.toml").read_bytes()
     assert f"wrote {copy}" in run.stdout and "govopt evaluate hamabe-a.toml" in run.stdout
-    again = _govopt("init", "hamabe-a", cwd=tmp_path)
-    assert again.returncode == 2 and "already exists; use --force" in again.stderr
+    again = invoke(["init", "hamabe-a"], cwd=tmp_path)
+    assert again.exit_code == 2 and "already exists; use --force" in again.stderr
     (tmp_path / "sub").mkdir()
-    into = _govopt("init", "hamabe-design.toml", "-o", "sub", cwd=tmp_path)
-    assert into.returncode == 0 and (tmp_path / "sub" / "hamabe-design.toml").is_file()
+    into = invoke(["init", "hamabe-design.toml", "-o", "sub"], cwd=tmp_path)
+    assert into.exit_code == 0 and (tmp_path / "sub" / "hamabe-design.toml").is_file()
     assert "govopt design sub/hamabe-design.toml" in into.stdout  # a design problem
-    study = _govopt("init", "hamabe-study", "-o", "sub", cwd=tmp_path)  # a trade study
-    assert study.returncode == 0, study.stderr
+    study = invoke(["init", "hamabe-study", "-o", "sub"], cwd=tmp_path)  # a trade study
+    assert study.exit_code == 0, study.stderr
     assert (tmp_path / "sub" / "hamabe-study.toml").read_bytes() == \
         (SPECS / "studies" / "hamabe-study.toml").read_bytes()
     assert "govopt study sub/hamabe-study.toml" in study.stdout
-    typo = _govopt("init", "hamabe-z", cwd=tmp_path)
-    assert typo.returncode == 2 and "did you mean 'hamabe-" in typo.stderr
+    typo = invoke(["init", "hamabe-z"], cwd=tmp_path)
+    assert typo.exit_code == 2 and "did you mean 'hamabe-" in typo.stderr
     assert sorted(os.listdir(tmp_path)) == ["hamabe-a.toml", "sub"]
 
 
@@ -369,8 +371,9 @@ def test_changed_design_keeps_comments_order_and_units(tmp_path):
 def test_design_o_writes_the_types_own_keys(tmp_path):
     """`govopt design -o` on a Porter (ball_weight, central_weight: not the shaft's keys that
     the regex writer put in every spec): the file evaluates to the designed governor."""
-    run = _govopt("design", SPECS / "porter-design.toml", "-o", "p.toml", "--json", cwd=tmp_path)
-    assert run.returncode == 0, run.stderr
+    run = invoke(["design", SPECS / "porter-design.toml", "-o", "p.toml", "--json"],
+                 cwd=tmp_path)
+    assert run.exit_code == 0, run.stderr
     designed = json.loads(run.stdout)
     table = tomllib.loads((tmp_path / "p.toml").read_text(encoding="utf-8"))["design"]
     assert sorted(table) == ["ball_weight", "central_weight"]
@@ -378,8 +381,8 @@ def test_design_o_writes_the_types_own_keys(tmp_path):
                        ("central_weight", designed["central_mass_kg"])):
         assert table[key].endswith(" kgf")  # the unit of [bounds]
         assert _shortest(table[key], "force", value, G_STANDARD), table[key]
-    evaluated = _govopt("evaluate", "p.toml", "--json", cwd=tmp_path)
-    assert evaluated.returncode == 0, evaluated.stderr
+    evaluated = invoke(["evaluate", "p.toml", "--json"], cwd=tmp_path)
+    assert evaluated.exit_code == 0, evaluated.stderr
     ev = json.loads(evaluated.stdout)
     for key in ("ball_mass_kg", "central_mass_kg"):
         assert _reads_back(ev[key], designed[key]), key
@@ -396,17 +399,17 @@ def test_design_o_writes_the_design_as_drawn_and_that_design_passes(tmp_path):
     """`govopt design -o`: each designed length and dash-pot rounded to 4 significant digits
     (the catalogue's wire and turns as they are), the report and the JSON are the rounded
     design's, and `govopt evaluate` of the file reproduces them with every check passing."""
-    run = _govopt("design", SPECS / "hamabe-design.toml", "-o", "d.toml", "--json",
-                  cwd=tmp_path)
-    assert run.returncode == 0, run.stderr
+    run = invoke(["design", SPECS / "hamabe-design.toml", "-o", "d.toml", "--json"],
+                 cwd=tmp_path)
+    assert run.exit_code == 0, run.stderr
     designed = json.loads(run.stdout)
     table = tomllib.loads((tmp_path / "d.toml").read_text(encoding="utf-8"))["design"]
     for key in ("free_half_length", "coil_radius", "dashpot_f"):
         number = table[key].split()[0]
         assert len(re.sub(r"[-.]", "", number).strip("0")) <= 4, table[key]
     assert any("rounded to 4 significant digits" in n for n in designed["notes"])
-    evaluated = _govopt("evaluate", "d.toml", "--json", cwd=tmp_path)
-    assert evaluated.returncode == 0, evaluated.stderr
+    evaluated = invoke(["evaluate", "d.toml", "--json"], cwd=tmp_path)
+    assert evaluated.exit_code == 0, evaluated.stderr
     ev = json.loads(evaluated.stdout)
     assert all(c["passed"] for c in ev["checks"])
     for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s", "pendulum_mass_kg"):

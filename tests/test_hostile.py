@@ -11,6 +11,7 @@ import resource
 from concurrent.futures import ThreadPoolExecutor
 
 import hostile
+import pytest
 
 from govopt.governors import REGISTRY
 
@@ -42,6 +43,7 @@ def _report(outcomes, what: str) -> str:
     return line + "\n" + "\n".join(bad[:40])
 
 
+@pytest.mark.slow  # ~25-30 s: first, so that the other worker runs the rest beside it
 def test_hostile_corpus(tmp_path):
     cases = hostile.corpus(BUDGET, SECONDS)
     assert len(cases) >= 1000

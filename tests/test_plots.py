@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from clirun import invoke
 
 import govopt
 from govopt.analysis import vyshnegradsky as vy
@@ -318,9 +319,8 @@ def test_cli_plots_written_refused_and_forced(tmp_path):
     spec = tmp_path / "spec" / "textbook-ex4-hartnell.toml"
     spec.write_text(text.replace('outer = "256.8 rpm"', 'outer = "257 rpm"'))
     out = tmp_path / "plots"  # made by the run (its parent exists)
-    run = subprocess.run(CLI + ["evaluate", str(spec), "--plots", str(out)], cwd=tmp_path,
-                         capture_output=True, text=True)
-    assert run.returncode == 0, run.stderr
+    run = invoke(["evaluate", spec, "--plots", out], cwd=tmp_path)
+    assert run.exit_code == 0, run.output
     names = [f"textbook-ex4-hartnell-{k}.{f}" for k in ("characteristic", "controlling-force",
                                                          "k2") for f in ("png", "svg")]
     assert sorted(p.name for p in out.iterdir()) == sorted(names)
@@ -329,18 +329,15 @@ def test_cli_plots_written_refused_and_forced(tmp_path):
     for n in names:
         (_check_png if n.endswith(".png") else _check_svg)(out / n)
     before = {n: (out / n).stat().st_mtime_ns for n in names}
-    again = subprocess.run(CLI + ["evaluate", str(spec), "--plots", str(out)], cwd=tmp_path,
-                           capture_output=True, text=True)
-    assert again.returncode == 2 and "already exists; use --force" in again.stderr
+    again = invoke(["evaluate", spec, "--plots", out], cwd=tmp_path)
+    assert again.exit_code == 2 and "already exists; use --force" in again.stderr
     assert "Characteristic" not in again.stdout  # refused before the run
     assert {n: (out / n).stat().st_mtime_ns for n in names} == before
-    forced = subprocess.run(CLI + ["evaluate", str(spec), "--plots", str(out), "--force"],
-                            cwd=tmp_path, capture_output=True, text=True)
-    assert forced.returncode == 0, forced.stderr
+    forced = invoke(["evaluate", spec, "--plots", out, "--force"], cwd=tmp_path)
+    assert forced.exit_code == 0, forced.output
     assert all((out / n).stat().st_mtime_ns > before[n] for n in names)
-    bad = subprocess.run(CLI + ["evaluate", str(spec), "--plots", str(out / names[0])],
-                         cwd=tmp_path, capture_output=True, text=True)
-    assert bad.returncode == 2 and "not a folder" in bad.stderr
+    bad = invoke(["evaluate", spec, "--plots", out / names[0]], cwd=tmp_path)
+    assert bad.exit_code == 2 and "not a folder" in bad.stderr
 
 
 # ---------------------------------------------------------------------------- issue 23

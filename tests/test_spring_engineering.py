@@ -355,19 +355,18 @@ def test_spring_cli_governor_load_builds_and_exits_by_its_checks():
     r = 222 mm with 1.0 turn before), and with a wire grade exits 1 when a spring check fails
     (as evaluate does), 0 otherwise, never a traceback (an extension spring divided by zero)."""
     import json
-    import subprocess
-    import sys
 
-    base = [sys.executable, "-m", "govopt.cli", "spring", "--force", "606 kgf",
-            "--stiffness", "59.7 kgf/cm"]
-    out = subprocess.run(base + ["--allowable-stress", "4000 kgf/cm^2", "--shear-modulus",
-                                 "850000 kgf/cm^2", "--json"], capture_output=True, text=True)
-    assert out.returncode == 0, out.stderr
+    from clirun import invoke
+
+    base = ["spring", "--force", "606 kgf", "--stiffness", "59.7 kgf/cm"]
+    out = invoke(base + ["--allowable-stress", "4000 kgf/cm^2", "--shear-modulus",
+                         "850000 kgf/cm^2", "--json"])
+    assert out.exit_code == 0, out.output
     d = json.loads(out.stdout)
     assert 4 - 1e-9 <= d["spring_index"] <= 12 + 1e-9 and d["active_turns"] >= 3 - 1e-9
     for kind in ("extension", "compression"):
-        run = subprocess.run(base + ["--material", "EN10270-1 DH", "--kind", kind, "--json"],
-                             capture_output=True, text=True)
-        assert "Traceback" not in run.stderr and run.returncode in (0, 1), run.stderr
+        run = invoke(base + ["--material", "EN10270-1 DH", "--kind", kind, "--json"])
+        assert run.exception is None and "Traceback" not in run.stderr, run.output
+        assert run.exit_code in (0, 1), run.output
         checks = json.loads(run.stdout)["checks"]
-        assert run.returncode == (0 if all(c["passed"] for c in checks) else 1)
+        assert run.exit_code == (0 if all(c["passed"] for c in checks) else 1)

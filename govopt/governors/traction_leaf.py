@@ -47,6 +47,7 @@ scales rod friction; the weight moves along the spindle by half of it.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -92,6 +93,13 @@ def assembly_from_valve_travel(L, Z, hinge_radius, omega_idle, w, t, E, ends="hi
                 bow_closed=bows[1], radius_open=radii[0], radius_closed=radii[1],
                 force_open=forces[0], force_closed=forces[1], fly_mass=m,
                 omega_open=float(np.sqrt(forces[0] / (m * radii[0]))))
+
+
+@functools.lru_cache(maxsize=256)
+def _bow(l: float, L: float, model: str) -> float:
+    """:func:`govopt.springs.leaf.bow` of one chord, remembered: a nested bisection (~0.1 s),
+    the same for every spec giving the same range (each study point, each variant)."""
+    return float(leaf.bow(l, L, model))
 
 
 @dataclass(frozen=True)
@@ -161,8 +169,7 @@ class TractionLeafGovernor(FlyWeights):
         else:  # a travel from rest shortens the chord by as much
             chords = {e: None if v is None else (L - v if kind == "travel" else v)
                       for e, v in given.items()}
-            bows = {e: None if v is None else float(leaf.bow(v, L, model))
-                    for e, v in chords.items()}
+            bows = {e: None if v is None else _bow(v, L, model) for e, v in chords.items()}
         if not bows["open"] < bows["closed"]:
             reader.fail(f"{kind}_closed", f"expected the {kind} with the throttle closed "
                                           f"{'shorter' if kind == 'chord' else 'longer'} than open")

@@ -531,12 +531,15 @@ def peak_amplitude_bound(spec: Spec, alpha0, k2, inertia, m, dashpot=None, omega
     """
     N = spec.analysis.harmonics if n_harmonics is None else int(n_harmonics)
     omega0 = spec.speed.omega_mean if omega0 is None else omega0
-    k2, inertia, m, f, omega0, alpha0 = np.broadcast_arrays(
-        *(np.asarray(v, dtype=float) for v in (k2, inertia, m, _f(dashpot), omega0, alpha0)))
+    given = [np.asarray(v, dtype=float) for v in (k2, inertia, m, _f(dashpot), omega0, alpha0)]
+    k2, inertia, m, f, omega0, alpha0 = np.broadcast_arrays(*given)
     K = _tail_count(N, k2, omega0) if include_tail else N
-    a, b = forcing_harmonics(spec, alpha0, m, inertia, omega0, K,
+    # the forcing involves neither the spring nor the dash-pot: its harmonics once per (alpha0,
+    # m, inertia, omega0) given, spread over the stiffnesses and dash-pots (the same numbers)
+    a, b = forcing_harmonics(spec, given[5], given[2], given[1], given[4], K,
                              speed_fluctuation=speed_fluctuation,
                              tangential_inertia=tangential_inertia)
+    a, b = (np.broadcast_to(x, k2.shape + x.shape[-1:]) for x in (a, b))
     amp = harmonic_response(a, b, k2, inertia, omega0, f)["amplitude"]
     total = np.sum(amp[..., 1:], axis=-1)
     if include_tail:
