@@ -179,16 +179,6 @@ def spring_design_of(sd: statics.SpringDesign, i: int, given: bool) -> statics.S
     return statics.SpringDesign(**{**vals, "inertia_given": given})
 
 
-def _number(d: dict, key: str) -> float:
-    """A number of a JSON-ready dict (:func:`govopt.jsonable.jsonable`: an infinity is null
-    with a ``<key>_infinite`` flag)."""
-    v = d[key]
-    if v is not None:
-        return float(v)
-    flag = d.get(f"{key}_infinite")
-    return np.inf if flag == "+inf" else -np.inf if flag == "-inf" else np.nan
-
-
 def _pick(s: tr.TransientSummary, j: int) -> tr.TransientSummary:
     """Design ``j`` of a :class:`TransientSummary` of many."""
     return replace(s, **{f.name: np.asarray(getattr(s, f.name))[j] for f in fields(s)})
@@ -423,9 +413,11 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         out["settling_time_s"] = np.where(settle > -np.inf, settle, np.nan)
         if reports:
             dyn["load_changes"] = reports
-    vib_dicts = [None if v is None else v.to_dict() for v in vibs] if vibration else []
-    p2p = np.array([np.nan if v is None else _number(v, "peak_to_peak_rad")
-                    for v in vib_dicts], dtype=float)
+    # the report's dict of design 0 only (its trace and JSON cost far more than the one number)
+    vib_dicts = ([None if v is None else v.to_dict() for v in vibs[:1]]
+                 if report and vibration else [])
+    p2p = np.array([np.nan if v is None else float(v.peak_to_peak_rad) for v in vibs]
+                   if vibration else [], dtype=float)
     if vibration and overridden(gov, "vibration"):
         if (~impossible & (has_dashpot | (spec.engine is not None))).any():
             out["vibration_p2p_rad"] = p2p
