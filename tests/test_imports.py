@@ -93,7 +93,7 @@ def test_evaluate_loads_no_scipy_numerics_nor_unasked_writers(args):
 
     args = tuple(str(SPECS / a) if a.endswith(".toml") else a for a in args)
     loaded = modules_after("evaluate", *args)
-    assert "govopt.analysis.roots" in loaded  # it ran, with govopt's root finder
+    assert "govopt.evaluator" in loaded  # it ran (the classic travel needs no root finder now)
     assert not loaded & set(NOT_ON_EVALUATE), sorted(loaded & set(NOT_ON_EVALUATE))
     assert "rich" not in loaded  # piped, the text report is plain (rich only on a terminal)
 
