@@ -42,6 +42,19 @@ def _same(a, b) -> bool:
     return abs(a - b) <= RTOL * max(abs(a), abs(b)) or abs(a - b) <= 1e-300
 
 
+def _assert_row_is(row: dict, ref: dict, i: int) -> None:
+    """A bulk row equals evaluate's row ``ref`` of the same design: status, message of an error,
+    every figure and check (to rounding), and no column of its own with a value."""
+    assert row["status"] == ref["status"], (i, row["message"], ref["message"])
+    if ref["status"] == "error":
+        assert row["message"] == ref["message"]
+        return
+    wrong = {k: (ref[k], row.get(k)) for k in ref if not _same(ref[k], row.get(k))}
+    assert not wrong, wrong
+    extra = [k for k, v in row.items() if k not in ref and not _same(v, None)]
+    assert not extra, extra
+
+
 def _reference(spec, design) -> dict:
     from govopt.errors import GovoptError
 
@@ -73,15 +86,7 @@ def test_rows_are_evaluate_rows(name):
         design = Design(**{f: None if np.isnan(cols[f][i]) else float(cols[f][i])
                            for f in DESIGN_FIELDS})
         ref = _reference(spec, design)
-        row = frame.iloc[i].to_dict()
-        assert row["status"] == ref["status"], (i, row["message"], ref["message"])
-        if ref["status"] == "error":
-            assert row["message"] == ref["message"]
-            continue
-        wrong = {k: (ref[k], row.get(k)) for k in ref if not _same(ref[k], row.get(k))}
-        assert not wrong, wrong
-        extra = [k for k, v in row.items() if k not in ref and not _same(v, None)]
-        assert not extra, extra
+        _assert_row_is(frame.iloc[i].to_dict(), ref, i)
 
 
 @pytest.mark.parametrize("change", ["range", 0.05])
@@ -229,14 +234,6 @@ def test_one_evaluator_no_fallback(name, borrow, monkeypatch):
     monkeypatch.setattr(evaluation, "evaluate", no_fallback)
     frame = evaluate_many(spec, cols)
     for i, ref in enumerate(refs):
-        row = frame.iloc[i].to_dict()
-        assert row["status"] == ref["status"], (i, row["message"], ref["message"])
-        if ref["status"] == "error":
-            assert row["message"] == ref["message"]
-            continue
-        wrong = {k: (ref[k], row.get(k)) for k in ref if not _same(ref[k], row.get(k))}
-        assert not wrong, wrong
-        extra = [k for k, v in row.items() if k not in ref and not _same(v, None)]
-        assert not extra, extra
+        _assert_row_is(frame.iloc[i].to_dict(), ref, i)
     if spec.governor.coordinate == "angle":
         assert any(k.startswith("passed: friction:") for k in frame.columns)
