@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 
 from .analysis import statics
-from .errors import DesignError
+from .errors import DesignError, located
 from .evaluator import core, design_columns, finite, overflow_message, possible
 from .result import Result
 from .spec import Design, Spec
@@ -40,8 +40,11 @@ def evaluate(spec: Spec, design: Design | None = None) -> Result:
 
 
 def _evaluate(spec: Spec, design: Design) -> Result:
-    if design is None:
-        statics.spring_design(spec, design)  # the parser's diagnosis: no design to evaluate
+    if design is None:  # the parser's diagnosis: no design to evaluate
+        try:
+            statics.spring_design(spec, design)
+        except DesignError as exc:
+            raise DesignError(located(spec.path, str(exc))) from None
     ev = core(spec, design_columns([design]), report=True)
     if ev.error[0] is not None:
         raise DesignError(ev.error[0])

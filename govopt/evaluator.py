@@ -27,7 +27,7 @@ from .analysis import loadchange, statics
 from .analysis import transient as tr
 from .analysis.classic import CLASSIC_FIGURES, classic_measures
 from .analysis.classic import report as classic_report
-from .errors import DesignError
+from .errors import DesignError, located
 from .governors import Governor
 from .requirements import (
     CheckTable,
@@ -119,7 +119,7 @@ def diagnose(spec: Spec, design: Design) -> str:
                       **({"shear stress": char.stress} if spec.material is not None
                          and np.isfinite(sd.d) else {})})
     except DesignError as exc:
-        return str(exc)
+        return located(spec.path, str(exc))
     except OverflowError:
         pass
     return overflow_message(spec)
@@ -335,7 +335,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         try:
             return part()
         except DesignError as exc:
-            said[i] = str(exc)
+            said[i] = located(spec.path, str(exc))
         except OverflowError:
             said[i] = overflow_message(spec)
         impossible[i] = True
@@ -490,7 +490,10 @@ def _spring(spec: Spec, cols: dict, col: dict, central) -> tuple[np.ndarray, np.
     kappa = np.where(np.isfinite(col["spring_stiffness"]), col["spring_stiffness"], rate)
     l0 = col["free_half_length"]
     if np.isnan(l0).any():
-        l0 = np.where(np.isnan(l0), statics.free_half_length(spec, m, kappa, central), l0)
+        try:
+            l0 = np.where(np.isnan(l0), statics.free_half_length(spec, m, kappa, central), l0)
+        except DesignError as exc:  # the spec has no speed to set it from
+            raise DesignError(located(spec.path, str(exc))) from None
     return kappa, l0
 
 

@@ -98,11 +98,11 @@ def load_change_model(spec: Spec, sd: statics.SpringDesign | None = None,
     and ``friction_moment`` default to the design's (0 when absent).
     """
     if spec.engine is None:
-        raise ValueError(f"{spec.path}: a load change needs [engine] data")
+        raise ValueError("a load change needs [engine] data")
     sd = sd or statics.spring_design(spec)
     if load_change is None:
         if not spec.load_changes:
-            raise ValueError(f"{spec.path}: no [[load_change]] given")
+            raise ValueError("no [[load_change]] given")
         load_change = spec.load_changes[0]
     design = spec.design
     if dashpot is None:

@@ -69,7 +69,7 @@ def free_half_length(spec: Spec, m, kappa, central=None):
     """
     gov = spec.governor
     if spec.speed is None:
-        raise DesignError(f"{spec.path}: design.{gov.free_length_key}: missing, and the spec has "
+        raise DesignError(f"design.{gov.free_length_key}: missing, and the spec has "
                           "no [speed] to set it from equilibrium at the normal configuration")
     Q_n = required_spring_moment(spec, gov.x_normal, spec.speed.omega_mean, m, central)
     t = terms(spec, gov.x_normal, m, central)
@@ -160,7 +160,7 @@ def spring_design(spec: Spec, design: Design | None = None) -> SpringDesign:
     the normal configuration when the design does not fix it (Hamabe, Example 1)."""
     ds = design or spec.design
     if ds is None:
-        raise DesignError(f"{spec.path}: design: missing (the spec has no [design] to evaluate)")
+        raise DesignError("design: missing (the spec has no [design] to evaluate)")
     gov = spec.governor
     central = ds.central_mass or 0.0
     d, r, n = (np.nan if v is None else v for v in (ds.wire_diameter, ds.coil_radius,
@@ -255,7 +255,7 @@ def no_equilibrium(spec: Spec, sd: SpringDesign, alpha, t, w2) -> str:
 
     bad = ~(w2 > 0)
     i = int(np.argmax(bad))
-    head = (f"{spec.path}: design: no equilibrium speed at {gov.coordinate_name} = "
+    head = (f"design: no equilibrium speed at {gov.coordinate_name} = "
             f"{at(alpha[i])}: ")
     lever = np.broadcast_to(t.lever, alpha.shape)
     if np.any(lever <= 0):
