@@ -57,26 +57,62 @@ class Row:
     source: str | Callable
 
 
+class _Prepared(dict):
+    """:func:`prepare`'s keywords: each derived quantity (moduli, R_m, index, rate, largest
+    force, surge frequency) computed when a row first reads it, so that a subset of the rows
+    (``only=GEOMETRY``: the design screen's millions of springs) pays for what it reads only;
+    the same numbers as computing them all up front (each is elementwise)."""
+
+    def __missing__(self, key):
+        derive = _DERIVED[self["kind"]].get(key)
+        if derive is None:
+            raise KeyError(key)
+        self[key] = value = derive(self)
+        return value
+
+
+def _surge(kw):
+    return hx.surge_frequency(kw["d"], kw["D"], kw["n_active"], kw["G"], kw["mat"].density)
+
+
+_COMMON_DERIVED = {
+    "G": lambda kw: kw["mat"].shear_modulus(kw["d"]),
+    "E": lambda kw: kw["mat"].elastic_modulus(kw["d"]),
+    "Rm": lambda kw: kw["mat"].tensile_strength(kw["d"]),
+    "C": lambda kw: hx.spring_index(kw["d"], kw["D"]),
+    "f_e": _surge,
+}
+_DERIVED = {
+    "compression": {
+        **_COMMON_DERIVED,
+        "R": lambda kw: hx.stiffness(kw["d"], kw["D"], kw["n"], kw["G"]),
+        # the static stress at the overspeed deflection
+        "F_max": lambda kw: np.maximum(kw["F2"], kw["R"] * kw["s_max"]),
+    },
+    "extension": {
+        **_COMMON_DERIVED,
+        "n_active": lambda kw: hx.extension_active_coils(kw["n_body"], kw["G"], kw["E"]),
+        "R": lambda kw: hx.stiffness(kw["d"], kw["D"], kw["n_active"], kw["G"]),
+    },
+}
+
+
 def prepare(kind: str, **kw) -> dict:
-    """Fill defaults and the derived quantities every row needs (moduli, R_m, rate, ...)."""
-    kw = {**(COMPRESSION_DEFAULTS if kind == "compression" else EXTENSION_DEFAULTS), **kw}
-    mat, d, D = kw["mat"], np.asarray(kw["d"], dtype=float), np.asarray(kw["D"], dtype=float)
-    kw.update(d=d, D=D, G=mat.shear_modulus(d), E=mat.elastic_modulus(d),
-              Rm=mat.tensile_strength(d), C=hx.spring_index(d, D))
+    """Fill defaults and the derived quantities every row needs (moduli, R_m, rate, ...; each
+    computed when first read: :class:`_Prepared`)."""
+    kw = _Prepared(COMPRESSION_DEFAULTS if kind == "compression" else EXTENSION_DEFAULTS,
+                   **kw, kind=kind)
+    d, D = np.asarray(kw["d"], dtype=float), np.asarray(kw["D"], dtype=float)
+    kw.update(d=d, D=D)
     if kind == "compression":
-        kw["R"] = hx.stiffness(d, D, kw["n"], kw["G"])
         kw["n_active"] = np.asarray(kw["n"], dtype=float)
         if kw["s_max"] is None:
             kw["s_max"] = kw["F2"] / kw["R"]
-        kw["F_max"] = np.maximum(kw["F2"], kw["R"] * kw["s_max"])  # overspeed deflection
     else:
-        kw["n_active"] = hx.extension_active_coils(kw["n_body"], kw["G"], kw["E"])
-        kw["R"] = hx.stiffness(d, D, kw["n_active"], kw["G"])
         kw["L0"] = hx.extension_free_length(d, D, kw["n_body"])
         kw["r1"] = D / 2.0 if kw["r1"] is None else kw["r1"]
         kw["r2"] = 2.0 * d if kw["r2"] is None else kw["r2"]
         kw["F_max"] = kw["F2"]
-    kw["f_e"] = hx.surge_frequency(d, D, kw["n_active"], kw["G"], mat.density)
     return kw
 
 
