@@ -11,6 +11,7 @@ measures `govopt --help` and `govopt evaluate` against ``python -c "import numpy
 
 from __future__ import annotations
 
+import functools
 import importlib
 import os
 import signal
@@ -44,8 +45,11 @@ DESCRIPTION = ("Design and evaluate speed governors and their springs: Hamabe's 
                "governors (`govopt examples` lists a spec of each).")
 
 
+@functools.cache
 def command(name: str):
-    """The click command of ``govopt NAME``, built from its module (imported now)."""
+    """The click command of ``govopt NAME``, built from its module (imported now), once per
+    process (typer builds it from the functions' signatures: ~5 ms, paid again by every run of
+    an embedding's or a test's ``main(argv)`` otherwise)."""
     module, attribute, _ = COMMANDS[name]
     app = getattr(importlib.import_module(f"govopt.commands.{module}"), attribute)
     return typer.main.get_command(app)
@@ -102,8 +106,10 @@ def _root(ctx: typer.Context,
         raise SystemExit(2)
 
 
+@functools.cache
 def root():
-    """govopt's command line as a click group (its commands built on demand)."""
+    """govopt's command line as a click group (its commands built on demand), built once per
+    process."""
     return typer.main.get_command(app)
 
 
