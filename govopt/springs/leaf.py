@@ -121,17 +121,32 @@ def mass(w, t, L, density):
 # -- the chord-bow relation ------------------------------------------------------------------
 
 
-def _elastica(theta0):
-    """The cantilever elastica with tip angle ``theta0`` (rad, in (0, pi/2)): ``u = delta/l_c``,
-    ``c = a/l_c``, ``alpha`` and their derivatives in ``k`` (suffix ``_k``)."""
+def _elliptic(theta0):
+    """The elliptic integrals of the cantilever elastica with tip angle ``theta0`` (rad):
+    ``(sin theta0, m = k^2, alpha = K - F(phi1), G = E - E(phi1))`` (the module's
+    elastica, Bisshopp & Drucker)."""
     from scipy.special import ellipeinc, ellipkinc  # imported when used (docs/decisions.md)
 
     s0 = np.sin(theta0)
     m = 0.5 * (1.0 + s0)
-    k, kc2, q = np.sqrt(m), 0.5 * (1.0 - s0), np.sqrt(s0)  # k, k'^2, q = sqrt(2 k^2 - 1)
     psi = np.arctan(np.sqrt(2.0 * s0 / (1.0 - s0)))
     alpha = ellipkinc(psi, m)  # K - F(phi1)
     G = ellipeinc(psi, m) - 0.5 * np.sqrt(1.0 + s0) * np.sin(psi)  # E - E(phi1)
+    return s0, m, alpha, G
+
+
+def _elastica_u(theta0):
+    """``u = delta / l_c`` of :func:`_elastica` alone (the bisection's function: the same
+    numbers, without the derivatives)."""
+    _, _, alpha, G = _elliptic(theta0)
+    return 1.0 - 2.0 * G / alpha
+
+
+def _elastica(theta0):
+    """The cantilever elastica with tip angle ``theta0`` (rad, in (0, pi/2)): ``u = delta/l_c``,
+    ``c = a/l_c``, ``alpha`` and their derivatives in ``k`` (suffix ``_k``)."""
+    s0, m, alpha, G = _elliptic(theta0)
+    k, kc2, q = np.sqrt(m), 0.5 * (1.0 - s0), np.sqrt(s0)  # k, k'^2, q = sqrt(2 k^2 - 1)
     # d/dk by DLMF 19.4.1-19.4.4 with dphi1/dk = -1/(k q): a closed, linear system in (G, alpha)
     G_k = (G - alpha) / k + 1.0 / (_SQRT2 * k * q)
     alpha_k = G / (k * kc2) - alpha / k + q / (_SQRT2 * k * kc2) + _SQRT2 / (k * q)
@@ -157,7 +172,7 @@ def _elastica_at(x, L):
     """The elastica at bow ``x`` (m) of a leaf of length ``L`` (m); ``None`` where all are
     small (the linear limit applies)."""
     X = np.clip(np.asarray(x, dtype=float) / L, _SMALL, 0.5 - 1e-12)
-    theta0 = _bisect(lambda t: _elastica(t)["u"], 2.0 * X, 0.0, 0.5 * np.pi)
+    theta0 = _bisect(_elastica_u, 2.0 * X, 0.0, 0.5 * np.pi)
     return _elastica(theta0)
 
 
