@@ -1606,10 +1606,18 @@ def run_study(study: Study, db: str | Path, *, workers: int = 1, dask: str | Non
 
         def unwritten(c):
             """The points of chunk ``c`` not yet in the database (an earlier run's, resumed,
-            or another process's running the same study: they cooperate)."""
-            written = store.done(h for _, h, _ in c)
-            report.skipped += len(written)
-            return [item for item in c if item[1] not in written]
+            or another process's running the same study: they cooperate), each once: a point
+            repeated in the chunk (a grid of lists holding a value twice) is the same row,
+            which ``INSERT OR IGNORE`` keeps from its first occurrence, so the repeats are not
+            computed (skipped, as the points already written)."""
+            seen = set(store.done(h for _, h, _ in c))
+            out = []
+            for item in c:
+                if item[1] not in seen:
+                    seen.add(item[1])
+                    out.append(item)
+            report.skipped += len(c) - len(out)
+            return out
 
         def commit(chunk):
             store.add(chunk)

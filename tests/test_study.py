@@ -651,3 +651,21 @@ def test_sweep_and_tolerance_errors_name_the_key_and_spec(tmp_path):
                                          "spec has no numeric value there"):
         run_study(study, tmp_path / "t.db")
     assert not (tmp_path / "t.db").exists()
+
+
+def test_a_point_repeated_in_a_grid_is_computed_once(tmp_path, monkeypatch):
+    """A grid of lists holding a value twice repeats points; each is one row (the first
+    occurrence, INSERT OR IGNORE), so the repeats are skipped, not computed and thrown away."""
+    import govopt.study as st
+
+    computed = []
+    run_chunk = st.run_chunk
+    monkeypatch.setattr(st, "run_chunk", lambda text, items, spans=None: (
+        computed.extend(i for i, _, _ in items), run_chunk(text, items, spans))[1])
+    study = load_study(SPECS / "hamabe-a.toml", sweeps=[
+        "design.pendulum_weight=12 kgf,10 kgf,12 kgf", "speed.irregularity=0.12,0.12"])
+    report = run_study(study, tmp_path / "g.db")
+    assert (report.total, report.done, report.skipped) == (6, 2, 4)
+    with Store(tmp_path / "g.db") as store:
+        t = store.table()
+    assert computed == list(t["point"]) == [0, 2]
