@@ -243,9 +243,7 @@ class Spread:
             Figure("stiffness range", list(self.kappa), "N/m"),
             Figure("free length tolerance", self.l0_tol, "m"),
             Figure("omega inner range", list(self.omega_inner), "rad/s"),
-            Figure("omega outer range", list(self.omega_outer), "rad/s"),
-            Figure("rpm inner range", [w * 30.0 / math.pi for w in self.omega_inner]),
-            Figure("rpm outer range", [w * 30.0 / math.pi for w in self.omega_outer]))} | {
+            Figure("omega outer range", list(self.omega_outer), "rad/s"))} | {
             "notes": list(self.notes)}
 
     def to_dict(self) -> dict:

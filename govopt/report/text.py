@@ -445,7 +445,8 @@ def format_spring(res: Result) -> list[str]:
     harm = ", ".join(f"{f:.4g}" for f in value["excitation harmonics"])
     out.append(f"  surge               {value['surge frequency']:.4g} Hz; excitation "
                f"harmonics present: {f'{harm} Hz' if harm else 'none modelled'}")
-    rpm = [f"{a:.2f} .. {b:.2f}" for a, b in (sp["rpm_inner_range"], sp["rpm_outer_range"])]
+    rpm = [f"{a * 30.0 / math.pi:.2f} .. {b * 30.0 / math.pi:.2f}" for a, b in (
+        sp["omega_inner_range_rad_s"], sp["omega_outer_range_rad_s"])]
     out.append(f"  tolerance spread    rate {sp['stiffness_range_N_per_m'][0]:.6g} .. "
                f"{sp['stiffness_range_N_per_m'][1]:.6g} N/m (wire +- "
                f"{sp['wire_diameter_tolerance_m'] * 1e3:.3g} mm, coil +- "
