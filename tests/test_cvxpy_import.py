@@ -36,17 +36,22 @@ def fake_cvxpy(tmp_path, body: str) -> str:
     return str(tmp_path)
 
 
-@pytest.mark.parametrize("body", ["from scipy.optimize import linprog\n",
-                                  "import scipy.optimize as opt\nlinprog = opt.linprog\n"],
-                         ids=["from-import", "attribute"])
-def test_cvxpy_using_scipy_optimize_as_it_loads_is_imported_as_usual(tmp_path, body):
-    """A (future) cvxpy using scipy.optimize while it loads: the placeholders step aside."""
+@pytest.mark.parametrize("module, body, probe, expected", [
+    ("scipy.optimize", "from scipy.optimize import linprog\n", "cvxpy.linprog.__module__",
+     "scipy.optimize._linprog"),
+    ("scipy.optimize", "import scipy.optimize as opt\nlinprog = opt.linprog\n",
+     "cvxpy.linprog.__module__", "scipy.optimize._linprog"),
+    ("scipy.special", "from scipy.special import gamma\n", "cvxpy.gamma(5.0)", "24.0"),
+], ids=["optimize-from-import", "optimize-attribute", "special-more-names"])
+def test_cvxpy_using_a_left_out_module_as_it_loads_is_imported_as_usual(tmp_path, module, body,
+                                                                         probe, expected):
+    """A (future) cvxpy using scipy.optimize (or more of scipy.special than its five functions)
+    while it loads: the placeholders step aside and it gets the real module."""
     out = run_python("import sys\n"
                      "from govopt.optimize._cvxpy import cvxpy\n"
-                     "m = sys.modules['scipy.optimize']\n"
-                     "print(cvxpy.linprog.__module__, 'placeholder' in (m.__doc__ or ''))",
+                     f"print({probe}, 'placeholder' in (sys.modules[{module!r}].__doc__ or ''))",
                      PYTHONPATH=fake_cvxpy(tmp_path, body))
-    assert out == "scipy.optimize._linprog False"
+    assert out == f"{expected} False"
 
 
 def test_a_kept_placeholder_gives_the_real_modules_names(tmp_path):
@@ -85,12 +90,3 @@ def test_scipy_special_and_numpys_test_modules_load_only_when_used():
         "print(L.la.eigh is scipy.linalg.eigh, L.sparla.svds is scipy.sparse.linalg.svds,\n"
         "      round(float(C.eigsh(A, k=1)[0][0]), 9))")
     assert out.splitlines() == ["[] True", "True True", "True True True", "True True 3.0"]
-
-
-def test_cvxpy_using_more_of_scipy_special_as_it_loads_is_imported_as_usual(tmp_path):
-    out = run_python("import sys\n"
-                     "from govopt.optimize._cvxpy import cvxpy\n"
-                     "print(cvxpy.gamma(5.0), 'placeholder' in (sys.modules['scipy.special']"
-                     ".__doc__ or ''))",
-                     PYTHONPATH=fake_cvxpy(tmp_path, "from scipy.special import gamma\n"))
-    assert out == "24.0 False"
