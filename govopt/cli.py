@@ -163,8 +163,8 @@ def main(argv: list[str] | None = None) -> None:
     ``sys.argv[1:]``): never a traceback unless ``--debug``. Run as the console script it owns
     the process's SIGTERM; called with ``argv`` (tests, embedding) it leaves it alone."""
     # One BLAS thread unless told otherwise (before numpy loads): govopt's matrices are small,
-    # and OpenBLAS's pool costs ~0.05 s of CPU to start and spins idle after each call (issue
-    # 14: a third of `govopt evaluate`'s CPU); studies run processes in parallel anyway.
+    # and OpenBLAS's pool costs ~0.05 s of CPU to start and spins idle after each call (it was a
+    # third of `govopt evaluate`'s CPU); studies run processes in parallel anyway.
     os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     if argv is None:
         signal.signal(signal.SIGTERM, _on_sigterm)

@@ -18,8 +18,8 @@ for anything while it loads is imported the ordinary way instead. :func:`install
 asks cvxpy again the same way (its ``installed_solvers()`` probes every solver on each call).
 Nothing else changes: the same cvxpy, the same solvers.
 
-More that cvxpy loads and govopt's GP never uses (issue 22, the CPU of ``govopt
-spring``), left out the same way:
+More that cvxpy loads and govopt's GP never uses, left out the same way (together a third
+of ``govopt spring``'s CPU):
 
 * ``scipy.special`` (about 0.04 s): cvxpy's atoms ``entr``, ``kl_div``, ``rel_entr``,
   ``log_sum_exp`` and ``von_neumann_entr`` import five of its functions to evaluate those atoms
