@@ -9,7 +9,7 @@ the same row. Studies (:mod:`govopt.study`) are tables of these rows.
 
 from __future__ import annotations
 
-import math
+import copy
 
 import numpy as np
 import pandas as pd
@@ -59,59 +59,13 @@ def _objective_name(spec: Spec) -> str:
 def result_row(res: Result) -> dict:
     """One flat record of a result (SI): the design, the figures, every check's value, margin
     and verdict, the objective, status and message -- the row :func:`evaluate_many` gives for
-    the same design."""
-    spec, sd, st, gov, ds = res.spec, res.spring, res.statics, res.spec.governor, res.design
-    i_n = int(np.searchsorted(st.alpha, gov.x_normal))
-    row = {f"{gov.mass_key}_mass_kg": float(sd.m), "central_mass_kg": float(sd.central)}
-    if gov.spring is not None:
-        row.update({"wire_diameter_m": float(sd.d), "coil_radius_m": float(sd.r),
-                    "active_turns": float(sd.n), "stiffness_N_per_m": float(sd.kappa),
-                    f"{gov.free_length_key}_m": float(sd.l0)})
-    row[dashpot_column(gov)] = math.nan if ds.dashpot is None else float(ds.dashpot)
-    row.update({"irregularity": st.irregularity, "omega_inner_rad_s": float(st.omega[0]),
-                "omega_outer_rad_s": float(st.omega[-1]),
-                "omega_normal_rad_s": float(st.omega[i_n])})
-    if gov.spring is not None:
-        row["min_spring_force_N"] = float(np.min(st.spring_force))
-        row["max_spring_force_N"] = float(np.max(st.spring_force))
-        row["max_stress_Pa"] = float(np.max(st.stress))
-    props = res.spring_properties
-    spring_mass = props.get("mass_kg", 0.0)
-    for key in ("spring_index", "wahl_factor", "surge_frequency_Hz", "body_length_m"):
-        if key in props:
-            row[key] = float(props[key])
-    row["spring_mass_kg"] = float(spring_mass) if props else math.nan
-    row["moving_mass_kg"] = float(sd.m + sd.central + spring_mass)
-    if res.k2 is not None:
-        row.update({"k2_min_rad2_s2": float(np.min(res.k2)),
-                    "k2_max_rad2_s2": float(np.max(res.k2)),
-                    "k2_normal_rad2_s2": float(res.k2[i_n])})
-    cl = res.classic
-    if cl:
-        row.update({k: cl[k] for k in ("range_rad_s", "sensitiveness", "stability", "effort",
-                                       "power", "friction_band", "insensitiveness")})
-    changes = res.dynamics.get("load_changes", [])
-    for lc in changes:
-        row[f"hurwitz_margin: {lc['name']}"] = float(lc["hurwitz_margin"])
-        over = next(k for k in lc if k.startswith("over_regulation_")
-                    and not k.startswith("over_regulation_scaled"))
-        row[f"over_regulation: {lc['name']}"] = float(lc[over])
-        row[f"settling_time_s: {lc['name']}"] = float(lc["settling_time_s"])
-    if changes:
-        row["settling_time_s"] = max(float(lc["settling_time_s"]) for lc in changes)
-    vib = res.dynamics.get("vibration")
-    if vib is not None:
-        row["vibration_p2p_rad"] = float(vib["peak_to_peak_rad"])
-    for c in res.checks:
-        row[value_column(c.name)] = float(c.value)
-        row[margin_column(c.name)] = float(c.margin)
-        row[passed_column(c.name)] = bool(c.passed)
-    name = _objective_name(spec)
-    row["objective"] = name
-    row["objective_value"] = _objective(name, row)
-    failed = [c.name for c in res.checks if not c.passed]
-    row["status"] = STATUS_FAIL if failed else STATUS_PASS
-    row["message"] = ("fails: " + ", ".join(failed)) if failed else ""
+    the same design, read from the same columns (:func:`columns` of the evaluator's record)."""
+    row = {}
+    for k, v in columns(res.spec, res.evaluation).items():
+        x = v[0]
+        if x is pd.NA:  # a check that does not apply to this design: not in its row
+            continue
+        row[k] = x.item() if isinstance(x, np.generic) else x
     return row
 
 
@@ -120,10 +74,6 @@ def result_row(res: Result) -> dict:
 #: peak-to-peak
 OBJECTIVE_COLUMN = {"moving_mass": "moving_mass_kg", "spring_mass": "spring_mass_kg",
                      "settling_time": "settling_time_s", "vibration": "vibration_p2p_rad"}
-
-
-def _objective(name: str, row: dict) -> float:
-    return float(row.get(OBJECTIVE_COLUMN[name], math.nan))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -210,10 +160,18 @@ def evaluate_many(spec: Spec, designs, *, dynamics: bool = True, vibration: bool
 def _block(spec: Spec, cols: dict, dynamics: bool, vibration: bool,
            classic: bool) -> pd.DataFrame:
     """One chunk of designs as rows (:func:`govopt.evaluator.core`)."""
-    ev = core(spec, cols, dynamics=dynamics, vibration=vibration, classic=classic)
+    return pd.DataFrame(columns(spec, core(spec, cols, dynamics=dynamics, vibration=vibration,
+                                           classic=classic)))
+
+
+def columns(spec: Spec, ev) -> dict:
+    """The columns of the rows of the designs of an :class:`~govopt.evaluator.Evaluation`: the
+    design and figures (none for an impossible design), every check's value, margin and verdict,
+    the objective, status and message."""
     gov = spec.governor
     bad = ev.impossible
     out = dict(ev.figures)
+    table = ev.table
     if bad.any():  # an impossible design's row: its design, no figures, evaluate's message
         keep = {f"{gov.mass_key}_mass_kg", "central_mass_kg", "wire_diameter_m",
                 "coil_radius_m", "active_turns", dashpot_column(gov)}
@@ -222,19 +180,20 @@ def _block(spec: Spec, cols: dict, dynamics: bool, vibration: bool,
                 v = np.array(v, dtype=object if np.asarray(v).dtype == object else float)
                 v[bad] = np.nan
                 out[k] = v
-        ev.table.drop(bad)
-    out.update(_check_columns(ev.table))
-    frame = pd.DataFrame(out)
+        table = copy.deepcopy(table)
+        table.drop(bad)
+    out.update(_check_columns(table))
     obj = _objective_name(spec)
-    frame["objective"] = obj
+    out["objective"] = np.full(ev.n, obj, dtype=object)
     key = OBJECTIVE_COLUMN[obj]
-    frame["objective_value"] = frame[key] if key in frame else np.nan
-    status, message = _status(ev.table)
+    out["objective_value"] = np.asarray(out[key], dtype=float) if key in out else np.full(
+        ev.n, np.nan)
+    status, message = _status(table)
     if bad.any():
         status = np.where(bad, STATUS_ERROR, status)
         message = np.where(bad, ev.error, message)
-    frame["status"], frame["message"] = status, message
-    return frame
+    out["status"], out["message"] = status, message
+    return out
 
 
 __all__ = ["DESIGN_FIELDS", "design_arrays", "evaluate_many", "result_row"]

@@ -66,7 +66,7 @@ def _evaluate(spec: Spec, design: Design) -> Result:
                   checks=ev.table.checks(), k2=k2, dynamics=dynamics,
                   classic=ev.classic,
                   spring_report=gov.spring_report(spec, sd, char, ev.vib)
-                  if gov.spring is not None else None)
+                  if gov.spring is not None else None, evaluation=ev)
 
 
 __all__ = ["evaluate", "finite", "possible"]

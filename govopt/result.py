@@ -52,6 +52,9 @@ class Result:
     #: the helical spring's sheet for the spring maker, fatigue loads and manufacturing spread
     #: (:class:`govopt.analysis.spring_engineering.SpringReport`); None without a wire spring
     spring_report: Any = None
+    #: the one evaluator's record of this design (:class:`govopt.evaluator.Evaluation` of one
+    #: design): its figures and check table, the row a study stores (:func:`govopt.bulk.result_row`)
+    evaluation: Any = field(default=None, repr=False)
 
     @property
     def allowable_shear_stress(self) -> float | None:
