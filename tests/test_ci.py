@@ -20,8 +20,9 @@ def test_ci_runs_the_readme_test_command():
 
 def test_ci_command_makes_a_fresh_venv_before_installing():
     cmd = _ci_command()
-    venv, install, test = (cmd.index("python3 -m venv"), cmd.index("pip install"),
+    venv, install, test = (cmd.index("python3 -m venv"), cmd.index("-e '.[test]'"),
                            cmd.index("python -m pytest"))
-    assert venv < install < test
+    assert venv < cmd.index('. "$v/bin/activate"') < install < test
     assert "--system-site-packages" not in cmd
-    assert '. "$v/bin/activate"' in cmd
+    # uv installs into the activated venv (VIRTUAL_ENV), never into a system or user environment
+    assert "--system" not in cmd and "--user" not in cmd
