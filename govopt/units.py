@@ -140,6 +140,64 @@ def _parse(text, dimension: str) -> float:
     if len(text) > MAX_QUANTITY_CHARS:  # before pint, whose parser is super-linear
         raise UnitError(f"{shorten(text)}: a quantity of at most {MAX_QUANTITY_CHARS} "
                         f"characters (govopt's limit), got {len(text)}")
+    plain = _plain(text, dimension)
+    if plain is not None:
+        return _finite(plain, text, si)
+    return _parse_pint(text, dimension)
+
+
+#: Units written alone after a plain number, as a spring is usually specified ("500 N",
+#: "10 N/mm", "600 MPa"): dimension -> unit -> the factor to SI. Each factor is pint's own
+#: (``Q_(1, unit).to(SI).magnitude``, bit for bit, e.g. lbf is 0.45359237 kg x 9.80665 m/s^2
+#: as pint rounds it) and ``value * factor`` is what pint's conversion computes:
+#: tests/test_units_plain.py holds both against pint. A string of this form is read without
+#: importing pint (0.15 s of a ``govopt spring`` run); anything else goes through pint.
+PLAIN_UNITS: dict[str, dict[str, float]] = {
+    "force": {"N": 1.0, "kN": 1000.0, "mN": 0.001, "kgf": 9.80665,
+              "lbf": 4.4482216152605005},
+    "length": {"m": 1.0, "cm": 0.01, "mm": 0.001, "um": 1e-06, "in": 0.0254},
+    "stress": {"Pa": 1.0, "kPa": 1000.0, "MPa": 1000000.0, "GPa": 1000000000.0,
+               "N/mm^2": 1000000.0, "N/mm2": 1000000.0, "psi": 6894.7572931683635,
+               "kpsi": 6894757.293168363},
+    "stiffness": {"N/m": 1.0, "N/mm": 1000.0, "kN/m": 1000.0, "lbf/in": 175.12683524647645},
+    "frequency": {"Hz": 1.0},
+    "mass": {"kg": 1.0, "g": 0.001},
+    "time": {"s": 1.0, "ms": 0.001},
+    "angular_velocity": {"rpm": 0.10471975511965977, "rad/s": 1.0},
+}
+#: a number as pint's tokenizer reads one, without Python's underscores, "inf" or "nan"
+_PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+_LEADING_ZERO = re.compile(r"[+-]?0+[1-9]")
+
+
+def _plain(text: str, dimension: str) -> float | None:
+    """``text`` in SI when it is a plain number, one space and one of :data:`PLAIN_UNITS` of
+    ``dimension`` (a bare number when dimensionless), else None (pint reads it).
+
+    >>> _plain("10 N/mm", "stiffness"), _plain("10 N/mm", "force"), _plain("1_0 N", "force")
+    (10000.0, None, None)
+    """
+    parts = text.split(" ")  # one space between: pint rejects a leading space or tab
+    if dimension == "dimensionless":
+        number, factor = (parts[0], 1.0) if len(parts) == 1 else (None, None)
+    elif len(parts) == 2:
+        number, factor = parts[0], PLAIN_UNITS.get(dimension, {}).get(parts[1])
+    else:
+        return None
+    if factor is None or not _PLAIN_NUMBER.fullmatch(number):
+        return None
+    if not any(c in number for c in ".eE"):  # an integer, as Python reads one: no "05",
+        try:                                 # and "-0" is 0
+            return None if _LEADING_ZERO.match(number) else float(int(number)) * factor
+        except OverflowError:  # beyond floating point: pint's path says so
+            return None
+    return float(number) * factor
+
+
+def _parse_pint(text: str, dimension: str) -> float:
+    """:func:`_parse` of a string through pint."""
+    si = SI_UNITS[dimension]
+    name = dimension.replace("_", " ")
     pint = _import_pint()
     Q_ = registry().Quantity
     typed = normalise(text)

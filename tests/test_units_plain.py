@@ -1,0 +1,91 @@
+"""A plain quantity ("500 N", "10 N/mm") is read without pint (:data:`govopt.units.PLAIN_UNITS`):
+the same SI value, bit for bit, and the same error as pint's path, for every unit of the table
+and every way of writing the number; and ``govopt spring`` with such options never imports pint."""
+
+import math
+import random
+import subprocess
+import sys
+
+import pytest
+
+from govopt.units import PLAIN_UNITS, SI_UNITS, UnitError, _finite, _parse_pint, _plain, registry
+
+LBF = 0.45359237 * 9.80665  # N: avoirdupois pound (exact, 1959) x standard gravity (exact, 1901)
+INCH = 0.0254  # m, exact (1959)
+#: each unit from its definition, not from pint
+DEFINED = {"N": 1, "kN": 1e3, "mN": 1e-3, "kgf": 9.80665, "lbf": LBF, "m": 1, "cm": 1e-2,
+           "mm": 1e-3, "um": 1e-6, "in": INCH, "Pa": 1, "kPa": 1e3, "MPa": 1e6, "GPa": 1e9,
+           "N/mm^2": 1e6, "N/mm2": 1e6, "psi": LBF / INCH**2, "kpsi": 1e3 * LBF / INCH**2,
+           "N/m": 1, "N/mm": 1e3, "kN/m": 1e3, "lbf/in": LBF / INCH, "Hz": 1, "kg": 1,
+           "g": 1e-3, "s": 1, "ms": 1e-3, "rpm": 2 * math.pi / 60, "rad/s": 1}
+UNITS = [(dim, unit) for dim, units in PLAIN_UNITS.items() for unit in units]
+
+
+@pytest.mark.parametrize("dimension, unit", UNITS)
+def test_each_factor_is_pints_and_its_definition(dimension, unit):
+    factor = PLAIN_UNITS[dimension][unit]
+    pint_unit = unit.replace("N/mm2", "N/mm^2")
+    assert factor == registry().Quantity(1, pint_unit).to(SI_UNITS[dimension]).magnitude
+    # pint's rounding of a product of definitions is within 2 ulp of the exact product
+    assert factor == pytest.approx(DEFINED[unit], rel=5e-16)
+
+
+def _numbers(rng):
+    """Numbers as people and programs write them, with pint's own edge cases: leading zeros
+    (pint rejects "05" and reads "007.5"), signs, "-0", exponents, huge and tiny values."""
+    yield from ["0", "-0", "00", "05", "+5", "-5", "007.5", ".5", "5.", "1e5", "1E+5", "0e0",
+                "1e-400", "1e400", "1" * 400, "1" * 400 + ".5", "9" * 20, "0.1", "1_000",
+                "inf", "nan", "0x10", "1e", "--5", "5..0"]
+    for _ in range(20):
+        x = 10 ** rng.uniform(-9, 9) * rng.choice([1, -1])
+        yield from [repr(x), f"{x:.3g}", f"{x:.6e}", str(rng.randint(0, 10**7))]
+
+
+def _outcome(fn, text, dimension):
+    try:
+        return repr(fn(text, dimension))
+    except UnitError as exc:
+        return f"error: {exc}"
+
+
+def _through_plain(text, dimension):
+    value = _plain(text, dimension)
+    assert value is not None, text
+    return _finite(value, text, SI_UNITS[dimension])
+
+
+@pytest.mark.parametrize("dimension, unit", UNITS + [("dimensionless", None)])
+def test_plain_path_gives_pints_value_or_error(dimension, unit):
+    rng = random.Random(f"{dimension} {unit}")
+    for number in _numbers(rng):
+        for text in ([number] if unit is None else
+                     [f"{number} {unit}", f"{number}  {unit}", f" {number} {unit}",
+                      f"{number}\t{unit}", f"{number} {unit} "]):
+            if _plain(text, dimension) is None:  # pint's path, nothing to compare
+                continue
+            assert _outcome(_through_plain, text, dimension) == _outcome(
+                _parse_pint, text, dimension), text
+    # the plain forms are taken by the plain path; a unit of another dimension is not
+    if unit is not None:
+        assert _plain(f"12.5 {unit}", dimension) is not None
+        other = "length" if dimension != "length" else "force"
+        assert _plain(f"12.5 {unit}", other) is None
+
+
+@pytest.mark.parametrize("text", ["05 N", "1_000 N", "inf N", "12.5N", "12.5 N m", "12.5 N/mm^2",
+                                  "(12.5) N", "12.5 newton"])
+def test_what_is_not_plain_goes_through_pint(text):
+    assert _plain(text, "force") is None
+
+
+def test_spring_with_plain_options_does_not_import_pint():
+    code = ("import sys\nfrom govopt.cli import main\n"
+            "sys.argv = ['govopt', 'spring', '--force', '500 N', '--stiffness', '10 N/mm',"
+            " '--allowable-stress', '600 MPa', '--shear-modulus', '81.5 GPa', '--json']\n"
+            "try:\n    main()\nexcept SystemExit as exc:\n    assert not exc.code, exc.code\n"
+            "assert 'pint' not in sys.modules, 'pint imported'\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert '"mass"' in out.stdout
