@@ -120,7 +120,7 @@ class _Where:
 
 def _option_reader(options: dict, entries: list):
     """The options given, read as a spec table: errors name the option (``--force: ...``)."""
-    from .spec import Reader
+    from .reader import Reader
 
     class Options(Reader):
         def key(self, name: str) -> str:
@@ -130,7 +130,7 @@ def _option_reader(options: dict, entries: list):
 
 
 def _read(rd, key: str, problem: str | None):
-    """One value through :class:`govopt.spec.Reader` (units, types, ranges; errors ``FILE:
+    """One value through :class:`govopt.reader.Reader` (units, types, ranges; errors ``FILE:
     spring.KEY: ...`` or ``--key: ...``), in SI."""
     if problem:  # the literature problem's data: positive quantities
         return rd.quantity(key, SANDGREN_KEYS[key], required=False)
@@ -186,14 +186,14 @@ def _lengths(v: dict, where: _Where) -> None:
 
 def merged(spec: str | Path | None, options: dict) -> tuple[dict, _Where, str | None, str]:
     """The spec's values overridden by the options given (not None), read through the
-    governor spec's :class:`govopt.spec.Reader` (unknown keys with a did-you-mean, units,
+    governor spec's :class:`govopt.reader.Reader` (unknown keys with a did-you-mean, units,
     types), in SI; the :class:`_Where` naming each value's origin, the literature problem and
     the name."""
     entries: list = []
     given = {k: v for k, v in options.items() if v is not None}
     opts, sp, problem, name = _option_reader(given, entries), None, None, "spring"
     if spec is not None:
-        from .spec import Reader, read_spec_data
+        from .reader import Reader, read_spec_data
 
         top = Reader(str(spec), read_spec_data(spec), "", entries)
         name = top.text("name") or Path(spec).stem

@@ -37,7 +37,8 @@ import pandas as pd
 
 from . import limits
 from .errors import GovoptError
-from .spec import Spec, parse_spec, read_spec_data, with_values
+from .reader import read_spec_data
+from .spec import Spec, parse_spec, with_values
 from .stats import wilson
 
 MODES = ("evaluate", "design")

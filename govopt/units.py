@@ -140,10 +140,10 @@ def _parse(text, dimension: str) -> float:
     if len(text) > MAX_QUANTITY_CHARS:  # before pint, whose parser is super-linear
         raise UnitError(f"{shorten(text)}: a quantity of at most {MAX_QUANTITY_CHARS} "
                         f"characters (govopt's limit), got {len(text)}")
-    plain = _plain(text, dimension)
+    plain = plain_si(text, dimension)
     if plain is not None:
         return _finite(plain, text, si)
-    return _parse_pint(text, dimension)
+    return parse_with_pint(text, dimension)
 
 
 #: Units written alone after a plain number, as a spring is usually specified ("500 N",
@@ -170,11 +170,11 @@ _PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 _LEADING_ZERO = re.compile(r"[+-]?0+[1-9]")
 
 
-def _plain(text: str, dimension: str) -> float | None:
+def plain_si(text: str, dimension: str) -> float | None:
     """``text`` in SI when it is a plain number, one space and one of :data:`PLAIN_UNITS` of
     ``dimension`` (a bare number when dimensionless), else None (pint reads it).
 
-    >>> _plain("10 N/mm", "stiffness"), _plain("10 N/mm", "force"), _plain("1_0 N", "force")
+    >>> plain_si("10 N/mm", "stiffness"), plain_si("10 N/mm", "force"), plain_si("1_0 N", "force")
     (10000.0, None, None)
     """
     parts = text.split(" ")  # one space between: pint rejects a leading space or tab
@@ -194,7 +194,7 @@ def _plain(text: str, dimension: str) -> float | None:
     return float(number) * factor
 
 
-def _parse_pint(text: str, dimension: str) -> float:
+def parse_with_pint(text: str, dimension: str) -> float:
     """:func:`_parse` of a string through pint."""
     si = SI_UNITS[dimension]
     name = dimension.replace("_", " ")

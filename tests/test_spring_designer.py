@@ -64,7 +64,7 @@ def test_bad_spring_options_are_refused_in_one_line(extra, option):
 
 
 def test_spring_options_are_read_as_a_governor_spec_is():
-    """One reader (govopt.spec.Reader) for spring options, spring specs and governor specs: an
+    """One reader (govopt.reader.Reader) for spring options, spring specs and governor specs: an
     absurd count is refused as an input, not sent to the optimiser."""
     result = invoke([*SH, "--turns-min", "1e308"])
     assert result.exit_code == 2

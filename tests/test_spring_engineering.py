@@ -24,9 +24,10 @@ from clirun import invoke
 
 import govopt
 from govopt.analysis import spring_engineering as se
+from govopt.reader import SpecError
 from govopt.report import excel
 from govopt.report.text import format_result
-from govopt.spec import SpecError, parse_spec
+from govopt.spec import parse_spec
 
 SPECS = Path(govopt.__file__).resolve().parent / "specs"
 MPA = 1e6

@@ -23,7 +23,7 @@ from govopt.governors import governor_class
 from govopt.governors.porter import PorterGovernor
 from govopt.governors.proell import ProellGovernor
 from govopt.governors.watt import WattGovernor, height_constant, height_for_speed
-from govopt.spec import Reader, SpecError
+from govopt.reader import Reader, SpecError
 from govopt.units import G_STANDARD as G
 from govopt.units import parse_quantity
 

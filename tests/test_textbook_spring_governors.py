@@ -23,7 +23,8 @@ from govopt.governors import governor_class
 from govopt.governors.hartnell import HartnellGovernor
 from govopt.governors.spring_gravity import SpringGravityGovernor
 from govopt.governors.spring_loaded import SpringLoadedGovernor
-from govopt.spec import Reader, SpecError, load_spec
+from govopt.reader import Reader, SpecError
+from govopt.spec import load_spec
 from govopt.units import G_STANDARD as G
 from govopt.units import parse_quantity
 

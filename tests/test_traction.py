@@ -25,7 +25,7 @@ from scipy.optimize import brentq
 from govopt.governors import governor_class
 from govopt.governors import traction_coil as tc
 from govopt.governors import traction_leaf as tl
-from govopt.spec import Reader, SpecError
+from govopt.reader import Reader, SpecError
 from govopt.springs import leaf
 from govopt.units import G_STANDARD, Q_
 from govopt.units import parse_quantity as q

@@ -9,7 +9,15 @@ import sys
 
 import pytest
 
-from govopt.units import PLAIN_UNITS, SI_UNITS, UnitError, _finite, _parse_pint, _plain, registry
+from govopt.units import (
+    PLAIN_UNITS,
+    SI_UNITS,
+    UnitError,
+    parse_quantity,
+    parse_with_pint,
+    plain_si,
+    registry,
+)
 
 LBF = 0.45359237 * 9.80665  # N: avoirdupois pound (exact, 1959) x standard gravity (exact, 1901)
 INCH = 0.0254  # m, exact (1959)
@@ -35,7 +43,7 @@ def _numbers(rng):
     """Numbers as people and programs write them, with pint's own edge cases: leading zeros
     (pint rejects "05" and reads "007.5"), signs, "-0", exponents, huge and tiny values."""
     yield from ["0", "-0", "00", "05", "+5", "-5", "007.5", ".5", "5.", "1e5", "1E+5", "0e0",
-                "1e-400", "1e400", "1" * 400, "1" * 400 + ".5", "9" * 20, "0.1", "1_000",
+                "1e-400", "1e400", "1" * 150, "1" * 150 + ".5", "9" * 20, "0.1", "1_000",
                 "inf", "nan", "0x10", "1e", "--5", "5..0"]
     for _ in range(20):
         x = 10 ** rng.uniform(-9, 9) * rng.choice([1, -1])
@@ -50,9 +58,8 @@ def _outcome(fn, text, dimension):
 
 
 def _through_plain(text, dimension):
-    value = _plain(text, dimension)
-    assert value is not None, text
-    return _finite(value, text, SI_UNITS[dimension])
+    assert plain_si(text, dimension) is not None, text
+    return parse_quantity(text, dimension)
 
 
 @pytest.mark.parametrize("dimension, unit", UNITS + [("dimensionless", None)])
@@ -62,21 +69,21 @@ def test_plain_path_gives_pints_value_or_error(dimension, unit):
         for text in ([number] if unit is None else
                      [f"{number} {unit}", f"{number}  {unit}", f" {number} {unit}",
                       f"{number}\t{unit}", f"{number} {unit} "]):
-            if _plain(text, dimension) is None:  # pint's path, nothing to compare
+            if plain_si(text, dimension) is None:  # pint's path, nothing to compare
                 continue
             assert _outcome(_through_plain, text, dimension) == _outcome(
-                _parse_pint, text, dimension), text
+                parse_with_pint, text, dimension), text
     # the plain forms are taken by the plain path; a unit of another dimension is not
     if unit is not None:
-        assert _plain(f"12.5 {unit}", dimension) is not None
+        assert plain_si(f"12.5 {unit}", dimension) is not None
         other = "length" if dimension != "length" else "force"
-        assert _plain(f"12.5 {unit}", other) is None
+        assert plain_si(f"12.5 {unit}", other) is None
 
 
 @pytest.mark.parametrize("text", ["05 N", "1_000 N", "inf N", "12.5N", "12.5 N m", "12.5 N/mm^2",
                                   "(12.5) N", "12.5 newton"])
 def test_what_is_not_plain_goes_through_pint(text):
-    assert _plain(text, "force") is None
+    assert plain_si(text, "force") is None
 
 
 def test_spring_with_plain_options_does_not_import_pint():

@@ -25,7 +25,8 @@ import govopt
 from govopt.analysis import nonlinear, statics
 from govopt.governors import shaft
 from govopt.governors.shaft import valvegear
-from govopt.spec import LoadChange, SpecError, parse_spec
+from govopt.reader import SpecError
+from govopt.spec import LoadChange, parse_spec
 
 H = 1e-5  # rad, > the linear table's difference step 1e-6: each point stays on its side
 

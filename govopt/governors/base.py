@@ -147,7 +147,7 @@ class Governor(ABC):
     @classmethod
     @abstractmethod
     def parse(cls, reader) -> Governor:
-        """Read the type's ``[governor]`` table (a :class:`govopt.spec.Reader`; keys beyond
+        """Read the type's ``[governor]`` table (a :class:`govopt.reader.Reader`; keys beyond
         ``type``) and return an instance; errors name the file and key."""
 
     @abstractmethod

@@ -44,7 +44,7 @@ class HartnellGovernor(BellCrankGovernor):
         ``obliquity``, ``sleeve_friction`` (:meth:`BellCrankGovernor.read_common`) and
         ``spring_length`` (the spring's length at ``radius_inner``).
 
-        >>> from govopt.spec import Reader
+        >>> from govopt.reader import Reader
         >>> gov = HartnellGovernor.parse(Reader("ex5", {"ball_arm": "15 cm",
         ...     "sleeve_arm": "9 cm", "radius_inner": "10 cm", "radius_outer": "15 cm",
         ...     "spring_length": "10 cm"}, "governor", []))

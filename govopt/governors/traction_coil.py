@@ -143,7 +143,7 @@ class TractionCoilGovernor(FlyWeights):
         ``l_1``, ``l_2``), ``hinge_spacing_normal`` (default: the mid radius), ``spring_length``
         (installed, throttle fully open), ``rod_friction`` (default 0).
 
-        >>> from govopt.spec import Reader
+        >>> from govopt.reader import Reader
         >>> gov = TractionCoilGovernor.parse(Reader("ex", {"n_weights": 2, "arm_length": "3 in",
         ...     "hinge_radius": "0.75 in", "hinge_spacing_open": "5 in",
         ...     "hinge_spacing_closed": "4.75 in", "spring_length": "4 in"}, "governor", []))

@@ -141,7 +141,7 @@ class TractionLeafGovernor(FlyWeights):
         (default 0), ``leaf_set_min`` and ``leaf_set_max``: the bounds of the leaf's set ``l0``
         (default 0 and ``leaf_length / 5``; see the module's docstring).
 
-        >>> from govopt.spec import Reader
+        >>> from govopt.reader import Reader
         >>> gov = TractionLeafGovernor.parse(Reader("ex", {"n_weights": 3,
         ...     "leaf_length": "8 in", "hinge_radius": "1.25 in", "leaf_model": "straight",
         ...     "chord_open": "7.8125 in", "chord_closed": "7.625 in"}, "governor", []))

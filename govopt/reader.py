@@ -1,0 +1,257 @@
+"""Reading a spec file: the TOML read safely (:func:`read_spec_data`) and its tables read key by
+key (:class:`Reader`: units, types, ranges, unknown keys with a did-you-mean). Every error is a
+:class:`SpecError` naming the file, the key path and what was expected. Governor specs
+(:mod:`govopt.spec`) and spring specs (:mod:`govopt.spring_command`) read through it; it knows
+no governor, so ``govopt spring`` loads none."""
+
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from . import limits
+from .errors import GovoptError
+from .inputs import Entry
+from .units import G_STANDARD, SI_UNITS, UnitError, parse_quantity
+
+
+class SpecError(GovoptError):
+    """A spec that cannot be used, with the file and key path in the message."""
+
+
+#: Keys an engineer may write for what a spec names otherwise: key -> (the spec's key, how
+#: they differ), for the did-you-mean of a missing key.
+KEY_SYNONYMS: dict[str, tuple[str, str]] = {
+    "coil_diameter": ("coil_radius", "the mean coil radius, half the mean coil diameter"),
+    "mean_diameter": ("coil_radius", "the mean coil radius, half the mean coil diameter"),
+    "mean_coil_diameter": ("coil_radius", "the mean coil radius, half the mean coil diameter"),
+    "wire": ("wire_diameter", "the wire's diameter"),
+    "turns": ("active_turns", "the active turns"),
+    "min": ("inner", "the speed at the inner end of the range"),
+    "max": ("outer", "the speed at the outer end of the range"),
+    "minimum": ("inner", "the speed at the inner end of the range"),
+    "maximum": ("outer", "the speed at the outer end of the range"),
+    "low": ("inner", "the speed at the inner end of the range"),
+    "high": ("outer", "the speed at the outer end of the range"),
+}
+
+
+class Reader:
+    """Reads one TOML table, recording which keys were used; :meth:`finish` rejects the rest."""
+
+    def __init__(self, file: str, table: dict, path: str, entries: list[Entry]):
+        if not isinstance(table, dict):
+            raise SpecError(f"{file}: {path or 'top level'}: expected a table, got "
+                            f"{limits.shorten(table)}")
+        self.file, self.table, self.path, self.entries = file, table, path, entries
+        self.used: set[str] = set()
+
+    def key(self, name: str) -> str:
+        return f"{self.path}.{name}" if self.path else name
+
+    def fail(self, name: str, message: str):
+        """``FILE: KEY: message`` (without a file, e.g. options read as a table: ``KEY:
+        message``)."""
+        value = self.table.get(name)
+        if value is not None and len(repr(value)) > limits.SHOWN_CHARS:  # a 200 kB value
+            message = message.replace(repr(value), limits.shorten(value))
+        where = f"{self.file}: " if self.file else ""
+        raise SpecError(f"{where}{self.key(name)}: {message}")
+
+    def has(self, name: str) -> bool:
+        return name in self.table
+
+    def raw(self, name: str, required: bool):
+        self.used.add(name)
+        if name not in self.table:
+            if required:
+                self.fail(name, "missing (required)" + self._misspelt(name))
+            return None
+        return self.table[name]
+
+    def _misspelt(self, name: str) -> str:
+        """A hint when a key of this table not read (yet) is close to the missing ``name``:
+        ``irregularty`` for ``irregularity``, or names the same thing another way
+        (:data:`KEY_SYNONYMS`: ``coil_diameter`` for ``coil_radius``)."""
+        keys = [str(k) for k in self.table if k not in self.used]
+        for key in keys:
+            meant, note = KEY_SYNONYMS.get(key, (None, ""))
+            if meant == name:
+                return f"; the table has {key!r}: did you mean {name!r}? ({note})"
+        close = difflib.get_close_matches(name, keys, n=1, cutoff=0.8)
+        return f"; the table has {close[0]!r}: did you mean {name!r}?" if close else ""
+
+    def quantity(self, name, dimension, *, required=True, default=None, positive=True,
+                 nonnegative=False, low=None, high=None, range_text=None):
+        value = self.raw(name, required)
+        if value is None:
+            return default
+        try:
+            si = parse_quantity(value, dimension)
+        except UnitError as exc:
+            self.fail(name, str(exc))
+        self._check_range(name, value, si, positive, nonnegative, low, high, range_text)
+        self.entries.append(Entry(self.key(name), str(value), si, SI_UNITS[dimension]))
+        return si
+
+    def number(self, name, *, required=True, default=None, positive=True, nonnegative=False,
+               low=None, high=None, integer=False, range_text=None):
+        """A bare number; with ``integer``, a whole number returned as ``int`` (2.5 is an error,
+        never truncated)."""
+        value = self.raw(name, required)
+        if value is None:
+            return default
+        if isinstance(value, bool) or not isinstance(value, int | float) \
+                or not math.isfinite(value if isinstance(value, float) else 0.0):
+            self.fail(name, f"expected a finite number, got {value!r}")
+        # beyond floating point (a 400-digit integer), or far beyond any governor
+        problem = ("is too large a number" if abs(value) > 1e300
+                   else limits.magnitude_error(value))
+        if problem:
+            self.fail(name, f"{limits.shorten(value)} {problem}")
+        if integer and not float(value).is_integer():
+            self.fail(name, f"expected a whole number (a count), got {value!r}")
+        self._check_range(name, value, float(value), positive, nonnegative, low, high,
+                          range_text)
+        self.entries.append(Entry(self.key(name), str(value), float(value), ""))
+        return int(value) if integer else float(value)
+
+    def _check_range(self, name, written, si, positive, nonnegative, low, high,
+                     range_text=None):
+        if (low is not None and si <= low) or (high is not None and si >= high):
+            text = range_text or f"({low if low is not None else '-inf'}, "\
+                                 f"{high if high is not None else 'inf'})"
+            self.fail(name, f"must lie in {text}, got {written!r}")
+        if nonnegative and si < 0:
+            self.fail(name, f"must not be negative, got {written!r}")
+        elif positive and not nonnegative and si <= 0:
+            self.fail(name, f"must be positive, got {written!r}")
+
+    def choice(self, name, choices, default):
+        value = self.raw(name, False)
+        if value is None:
+            return default
+        if value not in choices:
+            self.fail(name, f"expected one of {', '.join(map(repr, choices))}, got {value!r}")
+        self.entries.append(Entry(self.key(name), str(value), value, ""))
+        return value
+
+    def text(self, name, default=""):
+        value = self.raw(name, False)
+        if value is None:
+            return default
+        if not isinstance(value, str):
+            self.fail(name, f"expected a string, got {value!r}")
+        if len(value) > limits.MAX_TEXT_CHARS:
+            self.fail(name, limits.count_error(len(value), limits.MAX_TEXT_CHARS, "characters"))
+        self.entries.append(Entry(self.key(name), value, value, ""))
+        return value
+
+    def boolean(self, name, default):
+        value = self.raw(name, False)
+        if value is None:
+            return default
+        if not isinstance(value, bool):
+            self.fail(name, f"expected true or false, got {value!r}")
+        self.entries.append(Entry(self.key(name), str(value).lower(), str(value).lower(), ""))
+        return value
+
+    def quantities(self, name, dimension, **kw):
+        values = self.raw(name, True)
+        if not isinstance(values, list) or not values:
+            self.fail(name, f"expected a non-empty list of {dimension} strings, got {values!r}")
+        if len(values) > limits.MAX_LIST_ITEMS:
+            self.fail(name, limits.count_error(len(values), limits.MAX_LIST_ITEMS, "items"))
+        sub = Reader(self.file, {str(i): v for i, v in enumerate(values)}, self.key(name),
+                      self.entries)
+        sub.key = lambda i: f"{self.key(name)}[{i}]"  # type: ignore[method-assign]
+        return np.array([sub.quantity(str(i), dimension, **kw) for i in range(len(values))])
+
+    def sub(self, name, required=True):
+        value = self.raw(name, required)
+        if value is None:
+            return None
+        return Reader(self.file, value, self.key(name), self.entries)
+
+    def tables(self, name):
+        values = self.raw(name, False)
+        if values is None:
+            return []
+        if not isinstance(values, list):
+            self.fail(name, "expected an array of tables ([[" + name + "]])")
+        return [Reader(self.file, v, f"{self.key(name)}[{i}]", self.entries)
+                for i, v in enumerate(values)]
+
+    def weight_or_mass(self, stem, *, required=True, default=None):
+        """``<stem>_weight`` (a force, converted with standard gravity) or ``<stem>_mass``."""
+        w, m = f"{stem}_weight", f"{stem}_mass"
+        if self.has(w) and self.has(m):
+            self.fail(w, f"give either {w} or {m}, not both")
+        if self.has(m):
+            return self.quantity(m, "mass")
+        weight = self.quantity(w, "force", required=required and not self.has(m), default=None)
+        return default if weight is None else weight / G_STANDARD
+
+    def finish(self):
+        unknown = sorted(set(self.table) - self.used)
+        if unknown:
+            absent = sorted(self.used - set(self.table))  # read but not given: the likelier
+            close = (difflib.get_close_matches(str(unknown[0]), absent, n=1, cutoff=0.6)
+                     or difflib.get_close_matches(str(unknown[0]), sorted(self.used), n=1,
+                                                  cutoff=0.6))
+            hint = f"did you mean {close[0]!r}? " if close else ""
+            allowed = ", ".join(sorted(self.used))
+            if len(allowed) > 150:  # one line: the first keys, the count
+                allowed = f"{allowed[:150].rsplit(', ', 1)[0]}, ... ({len(self.used)} keys)"
+            self.fail(unknown[0], f"unknown key ({hint}allowed here: {allowed})")
+
+
+def read_spec_data(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int = 32) -> dict:
+    """A spec file's TOML as a dict, read safely (see :func:`load_spec`), not yet validated."""
+    import os
+    import stat
+
+    path = Path(path)
+    try:
+        flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
+        fd = os.open(path, flags)  # O_NONBLOCK: opening a FIFO must not block
+        try:
+            mode = os.fstat(fd).st_mode
+            if not stat.S_ISREG(mode):
+                kind = ("a folder" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode)
+                        else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+                        else "not a regular file")
+                raise SpecError(f"{path}: expected a regular spec file, got {kind}")
+            with open(fd, "rb", closefd=False) as fh:
+                raw = fh.read(max_bytes + 1)
+        finally:
+            os.close(fd)
+    except OSError as exc:
+        raise SpecError(f"{path}: cannot read spec file ({exc.strerror or exc})") from None
+    if len(raw) > max_bytes:
+        raise SpecError(f"{path}: spec file larger than {max_bytes} bytes (a spec is a few KiB)")
+    bom = 3 if raw.startswith(b"\xef\xbb\xbf") else 0
+    try:
+        text = raw[bom:].decode("utf-8")
+    except UnicodeDecodeError as exc:
+        at, line = bom + exc.start, raw.count(b"\n", 0, bom + exc.start) + 1
+        raise SpecError(f"{path}: not UTF-8 text: byte 0x{raw[at]:02x} at byte offset {at} "
+                        f"(line {line}); save the file as UTF-8") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SpecError(f"{path}: malformed TOML: {exc}") from None
+    except RecursionError:
+        raise SpecError(f"{path}: TOML nested too deeply (at most {max_depth} levels)") from None
+    stack = [(data, 1)]
+    while stack:
+        value, depth = stack.pop()
+        if depth > max_depth:
+            raise SpecError(f"{path}: TOML nested too deeply (at most {max_depth} levels)")
+        items = value.values() if isinstance(value, dict) else value
+        stack.extend((v, depth + 1) for v in items if isinstance(v, dict | list))
+    return data
