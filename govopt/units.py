@@ -147,23 +147,23 @@ def _parse(text, dimension: str) -> float:
 
 
 #: Units written alone after a plain number, as a spring is usually specified ("500 N",
-#: "10 N/mm", "600 MPa"): dimension -> unit -> the factor to SI. Each factor is pint's own
-#: (``Q_(1, unit).to(SI).magnitude``, bit for bit, e.g. lbf is 0.45359237 kg x 9.80665 m/s^2
-#: as pint rounds it) and ``value * factor`` is what pint's conversion computes:
-#: tests/test_units_plain.py holds both against pint. A string of this form is read without
-#: importing pint (0.15 s of a ``govopt spring`` run); anything else goes through pint.
+#: "10 N/mm", "600 MPa"): dimension -> unit -> the factor to SI. Each is a decimal multiple of
+#: an SI unit (or the kilogram-force, 9.80665 N by definition), so the factor is the correctly
+#: rounded value of its definition, which is also pint's, in every pint release tested; and
+#: ``value * factor`` is what pint's conversion computes. tests/test_units_plain.py holds both.
+#: Units whose factor pint rounds from a product (lbf, psi, in, rpm: pint 0.24.4 and 0.25 round
+#: kpsi differently) are left to pint. A string of this form is read without importing pint
+#: (0.15 s of a ``govopt spring`` run); anything else goes through pint.
 PLAIN_UNITS: dict[str, dict[str, float]] = {
-    "force": {"N": 1.0, "kN": 1000.0, "mN": 0.001, "kgf": 9.80665,
-              "lbf": 4.4482216152605005},
-    "length": {"m": 1.0, "cm": 0.01, "mm": 0.001, "um": 1e-06, "in": 0.0254},
+    "force": {"N": 1.0, "kN": 1000.0, "mN": 0.001, "kgf": 9.80665},
+    "length": {"m": 1.0, "cm": 0.01, "mm": 0.001, "um": 1e-06},
     "stress": {"Pa": 1.0, "kPa": 1000.0, "MPa": 1000000.0, "GPa": 1000000000.0,
-               "N/mm^2": 1000000.0, "N/mm2": 1000000.0, "psi": 6894.7572931683635,
-               "kpsi": 6894757.293168363},
-    "stiffness": {"N/m": 1.0, "N/mm": 1000.0, "kN/m": 1000.0, "lbf/in": 175.12683524647645},
+               "N/mm^2": 1000000.0, "N/mm2": 1000000.0},
+    "stiffness": {"N/m": 1.0, "N/mm": 1000.0, "kN/m": 1000.0},
     "frequency": {"Hz": 1.0},
     "mass": {"kg": 1.0, "g": 0.001},
     "time": {"s": 1.0, "ms": 0.001},
-    "angular_velocity": {"rpm": 0.10471975511965977, "rad/s": 1.0},
+    "angular_velocity": {"rad/s": 1.0},
 }
 #: a number as pint's tokenizer reads one, without Python's underscores, "inf" or "nan"
 _PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")

@@ -259,12 +259,14 @@ def test_force_length_plot_and_table_read_one_computation(extra):
     table = so._force_length_points(out)
     fig, ax = plt.subplots()
     so.force_length(sizing, out.values, ax, "s")
-    line = ax.lines[0].get_xdata() / 1e3  # the spring's line, mm
-    plt.close(fig)
-    assert table[0][0] == pytest.approx(sizing.free_length, rel=1e-12) == line[0] \
+    line = ax.lines[0].get_xdata()  # the spring's line in mm: the lengths x 1e3 (a round trip
+    plt.close(fig)                  # back to m may move the last bit)
+    assert table[0][0] == pytest.approx(sizing.free_length, rel=1e-12) \
         == out.data["free_length_m"]
+    assert line[0] == sizing.free_length * 1e3
     if sizing.kind == "compression":
-        assert table[-1][0] == sizing.solid_length == line[-1] == out.data["solid_length_m"]
+        assert table[-1][0] == sizing.solid_length == out.data["solid_length_m"]
+        assert line[-1] == sizing.solid_length * 1e3
         assert sizing.solid_length < sizing.least_length < sizing.free_length
     if "--length-2" in extra:
         assert sizing.free_length == pytest.approx(0.080 + 500.0 / sizing.solution.stiffness)
