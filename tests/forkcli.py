@@ -25,7 +25,10 @@ from pathlib import Path
 _SERVER = r"""
 import json, os, sys, traceback
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # as govopt.cli.main, before numpy loads
-import numpy, pandas, govopt.cli, govopt.study, govopt.commands.study  # noqa: what `study` loads
+import importlib
+for name in sys.argv[1:]:  # what the commands will load anyway (govopt.cli first)
+    importlib.import_module(name)
+import govopt.cli
 ask, answer = sys.stdin, sys.stdout
 for line in ask:
     req = json.loads(line)
@@ -87,17 +90,24 @@ class Proc:
         return (self.out.read_text(encoding="utf-8"), self.err.read_text(encoding="utf-8"))
 
 
-class Server:
-    """The forking server (a context manager): ``start(*args)`` runs ``govopt ARGS``."""
+#: what ``govopt study`` loads
+STUDY = ("numpy", "pandas", "govopt.cli", "govopt.study", "govopt.commands.study")
 
-    def __init__(self):
+
+class Server:
+    """The forking server (a context manager): ``start(*args)`` runs ``govopt ARGS`` in
+    ``cwd``; ``preload``: the modules it imports first; ``env``: its environment (default
+    this process's, with this checkout first on PYTHONPATH)."""
+
+    def __init__(self, preload=STUDY, *, cwd=None, env=None):
         root = Path(__file__).resolve().parent.parent
         self.folder = tempfile.TemporaryDirectory(prefix="govopt-forkcli-")
         self.count = 0
-        env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        env = env or {**os.environ, "PYTHONPATH": os.pathsep.join(
             [str(root), *filter(None, [os.environ.get("PYTHONPATH")])])}
-        self.proc = subprocess.Popen([sys.executable, "-c", _SERVER], stdin=subprocess.PIPE,
-                                     stdout=subprocess.PIPE, text=True, env=env)
+        self.proc = subprocess.Popen([sys.executable, "-c", _SERVER, *preload], cwd=cwd,
+                                     stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True,
+                                     env=env)
 
     def ask(self, request: dict) -> dict:
         self.proc.stdin.write(json.dumps(request) + "\n")
