@@ -26,8 +26,11 @@ _SERVER = r"""
 import json, os, sys, traceback
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # as govopt.cli.main, before numpy loads
 import importlib
-for name in sys.argv[1:]:  # what the commands will load anyway (govopt.cli first)
-    importlib.import_module(name)
+for name in sys.argv[1:]:  # what the commands will load anyway: "module" or "module:attribute"
+    module, _, attribute = name.partition(":")
+    module = importlib.import_module(module)
+    if attribute:
+        getattr(module, attribute)
 import govopt.cli
 ask, answer = sys.stdin, sys.stdout
 for line in ask:
@@ -90,13 +93,15 @@ class Proc:
         return (self.out.read_text(encoding="utf-8"), self.err.read_text(encoding="utf-8"))
 
 
-#: what ``govopt study`` loads
-STUDY = ("numpy", "pandas", "govopt.cli", "govopt.study", "govopt.commands.study")
+#: what ``govopt study`` loads, and its unit registry (built on first use)
+STUDY = ("numpy", "pandas", "govopt.cli", "govopt.study", "govopt.commands.study",
+         "govopt.units:ureg")
 
 
 class Server:
     """The forking server (a context manager): ``start(*args)`` runs ``govopt ARGS`` in
-    ``cwd``; ``preload``: the modules it imports first; ``env``: its environment (default
+    ``cwd``; ``preload``: the modules it imports first (``module:attribute``: and gets that
+    attribute of it); ``env``: its environment (default
     this process's, with this checkout first on PYTHONPATH)."""
 
     def __init__(self, preload=STUDY, *, cwd=None, env=None):

@@ -65,8 +65,8 @@ def test_evaluate_exit_codes(tmp_path):
     that loaded `govopt evaluate`'s modules once."""
     from forkcli import Server
 
-    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluation"),
-                cwd=tmp_path) as server:
+    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluation",
+                 "govopt.units:ureg"), cwd=tmp_path) as server:
         code, out, err = _forked(server, "evaluate", SPECS / "hamabe-b.toml")
         assert code == 0, err
         assert "FAIL" not in out and err == ""
@@ -230,7 +230,7 @@ def test_non_editable_install_ships_the_specs(tmp_path):
 
     # the installed copy's commands, each a process forked from one interpreter in that
     # environment and folder which imported that copy's govopt.cli
-    with Server(("govopt.cli",), cwd=work, env=env) as server:
+    with Server(("govopt.cli", "govopt.units:ureg"), cwd=work, env=env) as server:
         _, listed, _ = _forked(server, "examples")
         assert [line.split()[0] for line in listed.splitlines()] == list(examples())
         code, evaluated, err = _forked(server, "evaluate", "--json")
