@@ -1083,8 +1083,8 @@ def encode(frame: pd.DataFrame, hashes: list[str], idx: list[int], keys=()) -> t
     float64 array (exact, compact) and the ``o`` columns as a JSON list."""
     frame = frame.reset_index(drop=True)
     layout = []
-    for c in frame.columns:
-        dt = frame[c].dtype
+    dtypes = frame.dtypes.to_dict()
+    for c, dt in dtypes.items():
         kind = ("o" if c in keys or c in ("status", "message") else
                 "b" if pd.api.types.is_bool_dtype(dt) else
                 "f" if pd.api.types.is_float_dtype(dt) or pd.api.types.is_integer_dtype(dt)
@@ -1093,8 +1093,14 @@ def encode(frame: pd.DataFrame, hashes: list[str], idx: list[int], keys=()) -> t
     lid = hashlib.sha256(json.dumps(layout).encode()).hexdigest()[:16]
     nums = [c for c, k in layout if k in "fb"]
     objs = [c for c, k in layout if k == "o"]
-    matrix = np.column_stack([frame[c].astype("Float64").to_numpy(dtype=float, na_value=np.nan)
-                              for c in nums]) if nums else np.zeros((len(frame), 0))
+    matrix = np.empty((len(frame), len(nums)))
+    # numpy columns at once (NaN written as np.nan, as a missing value of the others is)
+    plain = [j for j, c in enumerate(nums) if isinstance(dtypes[c], np.dtype)]
+    if plain:
+        matrix[:, plain] = frame[[nums[j] for j in plain]].to_numpy(dtype=float)
+        matrix[np.isnan(matrix)] = np.nan
+    for j in sorted(set(range(len(nums))) - set(plain)):
+        matrix[:, j] = frame[nums[j]].astype("Float64").to_numpy(dtype=float, na_value=np.nan)
     texts = frame[objs].astype(object).where(frame[objs].notna(), None).values.tolist()
     status = frame["status"].astype(str).tolist() if "status" in frame else ["error"] * len(
         frame)

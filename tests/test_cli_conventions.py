@@ -51,21 +51,34 @@ def test_version(tmp_path):
     assert govopt.__version__ == importlib.metadata.version("govopt")
 
 
+def _forked(server, *args):
+    """``govopt ARGS`` as a process forked from ``server`` (tests/forkcli.py), finished:
+    ``(returncode, stdout, stderr)``."""
+    proc = server.start(*args)
+    out, err = proc.communicate(timeout=120)
+    return proc.returncode, out, err
+
+
 def test_evaluate_exit_codes(tmp_path):
     """0: every check passed; 1: the report is printed and some check failed (named on
-    stderr); 2: bad input (one line)."""
-    ok = _govopt("evaluate", SPECS / "hamabe-b.toml", cwd=tmp_path)
-    assert ok.returncode == 0, ok.stderr
-    assert "FAIL" not in ok.stdout and ok.stderr == ""
-    failed = _govopt("evaluate", SPECS / "hamabe-a.toml", "--json", cwd=tmp_path)
-    assert failed.returncode == 1, failed.stderr
-    checks = json.loads(failed.stdout)["checks"]  # stdout is the JSON alone
-    assert [c["name"] for c in checks if not c["passed"]] == ["irregularity"]  # 0.123 > 0.12
-    text = _govopt("evaluate", SPECS / "hamabe-a.toml", cwd=tmp_path)
-    assert text.returncode == 1 and "FAIL" in text.stdout
-    assert text.stderr == f"1 of {len(checks)} checks failed: irregularity\n"
-    bad = _govopt("evaluate", tmp_path / "absent.toml", cwd=tmp_path)
-    assert bad.returncode == 2 and bad.stderr.startswith("error: ") and bad.stdout == ""
+    stderr); 2: bad input (one line). Each a process of its own, forked from one interpreter
+    that loaded `govopt evaluate`'s modules once."""
+    from forkcli import Server
+
+    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluation",
+                 "govopt.units:ureg"), cwd=tmp_path) as server:
+        code, out, err = _forked(server, "evaluate", SPECS / "hamabe-b.toml")
+        assert code == 0, err
+        assert "FAIL" not in out and err == ""
+        code, out, err = _forked(server, "evaluate", SPECS / "hamabe-a.toml", "--json")
+        assert code == 1, err
+        checks = json.loads(out)["checks"]  # stdout is the JSON alone
+        assert [c["name"] for c in checks if not c["passed"]] == ["irregularity"]  # > 0.12
+        code, out, err = _forked(server, "evaluate", SPECS / "hamabe-a.toml")
+        assert code == 1 and "FAIL" in out
+        assert err == f"1 of {len(checks)} checks failed: irregularity\n"
+        code, out, err = _forked(server, "evaluate", tmp_path / "absent.toml")
+        assert code == 2 and err.startswith("error: ") and out == ""
 
 
 def test_no_command_prints_the_help():
@@ -213,12 +226,17 @@ def test_non_editable_install_ships_the_specs(tmp_path):
     assert Path(where.stdout.strip()).parent == site / "govopt"
     assert sorted(p.name for p in (site / "govopt" / "specs").glob("*.toml")) == sorted(
         p.name for p in SPECS.glob("*.toml"))
-    listed = _govopt("examples", cwd=work, env=env)
-    assert [line.split()[0] for line in listed.stdout.splitlines()] == list(examples())
-    evaluated = _govopt("evaluate", "--json", cwd=work, env=env)
-    assert evaluated.returncode == 1, evaluated.stderr  # case a's irregularity check fails
-    assert json.loads(evaluated.stdout)["name"] == "hamabe-a"
-    assert _govopt("init", "porter-design", cwd=work, env=env).returncode == 0
+    from forkcli import Server
+
+    # the installed copy's commands, each a process forked from one interpreter in that
+    # environment and folder which imported that copy's govopt.cli
+    with Server(("govopt.cli", "govopt.units:ureg"), cwd=work, env=env) as server:
+        _, listed, _ = _forked(server, "examples")
+        assert [line.split()[0] for line in listed.splitlines()] == list(examples())
+        code, evaluated, err = _forked(server, "evaluate", "--json")
+        assert code == 1, err  # case a's irregularity check fails
+        assert json.loads(evaluated)["name"] == "hamabe-a"
+        assert _forked(server, "init", "porter-design")[0] == 0
     assert os.listdir(work) == ["porter-design.toml"]
 
 

@@ -5,8 +5,6 @@ import math
 import os
 import signal
 import sqlite3
-import subprocess
-import sys
 import time
 from pathlib import Path
 
@@ -183,10 +181,14 @@ def test_example1_study_reproduces_evaluate(tmp_path):
 # the store: kill, resume, integrity
 
 
-def _cli(*args, **kw):
-    env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parent.parent)}
-    return subprocess.Popen([sys.executable, "-m", "govopt.cli", *map(str, args)], env=env,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **kw)
+@pytest.fixture(scope="module")
+def cli():
+    """``cli(*args)``: ``govopt ARGS`` in a process of its own, forked from one interpreter
+    that loaded govopt once (tests/forkcli.py), a ``Popen``-like handle."""
+    from forkcli import Server
+
+    with Server() as server:
+        yield server.start
 
 
 def _rows(db: Path) -> int:
@@ -204,7 +206,7 @@ def _rows(db: Path) -> int:
         conn.close()
 
 
-def test_sigkill_and_resume_give_the_uninterrupted_table(tmp_path):
+def test_sigkill_and_resume_give_the_uninterrupted_table(tmp_path, cli):
     """A study killed with SIGKILL at several moments (before its first commit, and after
     about a quarter, a half and three quarters of its rows) and resumed each time ends with the
     table of one uninterrupted run; the database passes PRAGMA integrity_check after every
@@ -219,7 +221,7 @@ def test_sigkill_and_resume_give_the_uninterrupted_table(tmp_path):
     db = tmp_path / "killed.db"
     kills = 0
     for target in (0, 600, 1200, 1800):
-        proc = _cli(*args, "--db", db, "--resume")
+        proc = cli(*args, "--db", db, "--resume")
         deadline = time.monotonic() + 60
         while proc.poll() is None and _rows(db) < target and time.monotonic() < deadline:
             time.sleep(0.01)
@@ -233,7 +235,7 @@ def test_sigkill_and_resume_give_the_uninterrupted_table(tmp_path):
         n = _rows(db)
         assert n % 100 == 0 or n == 2400  # whole chunks only
     assert kills >= 3
-    proc = _cli(*args, "--db", db, "--resume")
+    proc = cli(*args, "--db", db, "--resume")
     out, err = proc.communicate(timeout=120)
     assert proc.returncode == 0, err
     with Store(db) as store:
@@ -467,7 +469,7 @@ def test_tolerance_plot_marks_the_limit_and_failing_samples(tmp_path):
     run_study(study, tmp_path / "t.db")
     with Store(tmp_path / "t.db") as store:
         frame = store.table()
-        plot_study(store, tmp_path / "plots")
+        plot_study(store, tmp_path / "plots", formats=("svg",))  # read below
     spec = load_spec(SPECS / "hamabe-c.toml")
     assert check_limit(frame, "irregularity") == pytest.approx(spec.speed.irregularity, rel=1e-9)
     svg = (tmp_path / "plots" / "tolerance.svg").read_text()
@@ -608,38 +610,38 @@ def test_show_opens_read_only(tmp_path):
     assert db.read_bytes() == before
 
 
-def _start(spec, db, sweep, *extra):
-    return _cli("study", "run", spec, "--db", db, "--sweep", sweep, "--chunk", "5",
-                "--skip", "dynamics,vibration,classic", *extra)
+def _start(cli, spec, db, sweep, *extra):
+    return cli("study", "run", spec, "--db", db, "--sweep", sweep, "--chunk", "5",
+               "--skip", "dynamics,vibration,classic", *extra)
 
 
-def test_two_studies_on_one_database(tmp_path):
+def test_two_studies_on_one_database(tmp_path, cli):
     """Two processes started at once: of two *different* studies one is refused (one line
     naming the database and that it holds another study) and the database holds only the
     other's rows; two runs of the *same* study cooperate: every point once."""
     db = tmp_path / "c.db"
-    a = _start(HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:120")
-    b = _start(HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:70")
+    a = _start(cli, HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:60")
+    b = _start(cli, HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:35")
     (_, err_a), (_, err_b) = a.communicate(timeout=300), b.communicate(timeout=300)
     codes = sorted([a.returncode, b.returncode])
     assert codes[0] in (0, 1) and codes[1] == 2, (err_a, err_b)
     refused = err_a if a.returncode == 2 else err_b
     assert refused.startswith(f"error: {db}: the database holds another study"), refused
     assert refused.count("\n") == 1
-    ran = 120 if a.returncode != 2 else 70
+    ran = 60 if a.returncode != 2 else 35
     with Store(db, create=False) as store:
         assert store.count() == ran == store.meta("total")
         assert store.integrity() == "ok"
     same = tmp_path / "same.db"
-    sweep = "design.ball_weight=1.8 kgf:2.2 kgf:200"
-    a = _start(HARTNELL, same, sweep, "--resume")
-    b = _start(HARTNELL, same, sweep, "--resume")
+    sweep = "design.ball_weight=1.8 kgf:2.2 kgf:100"
+    a = _start(cli, HARTNELL, same, sweep, "--resume")
+    b = _start(cli, HARTNELL, same, sweep, "--resume")
     for p in (a, b):
         out, err = p.communicate(timeout=300)
-        assert p.returncode in (0, 1) and "points: 200 of 200 done" in out, err
+        assert p.returncode in (0, 1) and "points: 100 of 100 done" in out, err
     with Store(same, create=False) as store:
-        assert store.count() == 200
-        assert sorted(store.table()["point"]) == list(range(200))
+        assert store.count() == 100
+        assert sorted(store.table()["point"]) == list(range(100))
 
 
 def test_sweep_and_tolerance_errors_name_the_key_and_spec(tmp_path):

@@ -133,10 +133,11 @@ def test_plots_of_a_large_study_draw_every_kth_point(grid_db, tmp_path):
     Pareto front whole; the constraints drawn are chosen over every row."""
     from govopt.report.study_plots import plot_study
 
-    with Store(grid_db, create=False) as store:
-        files = {p.name for p in plot_study(store, tmp_path / "p", max_points=10)}
+    with Store(grid_db, create=False) as store:  # the SVGs, read below (PNGs: test_study.py)
+        files = {p.name for p in plot_study(store, tmp_path / "p", max_points=10,
+                                            formats=("svg",))}
         front = len(store.pareto())
-        plot_study(store, tmp_path / "all")
+        plot_study(store, tmp_path / "all", formats=("svg",))
     assert "pareto.svg" in files and "sweep-design.pendulum_weight.svg" in files
     sweep = (tmp_path / "p" / "sweep-design.pendulum_weight.svg").read_text()
     assert "one point in 4 drawn" in sweep

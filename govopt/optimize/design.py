@@ -27,7 +27,7 @@ Method (each step uses the statics and dynamics modules as evaluators):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
@@ -912,21 +912,45 @@ def dead_weight_candidates(spec: Spec, req: Requirements):
 def _dead_weight_statics(spec: Spec, req: Requirements, grid: Grid, m, c):
     """The statics requirements of a dead-weight governor at every (ball, central) weight pair:
     ``({name: met}, omega^2, omega_rise^2, omega_fall^2, k^2, inertia)`` over the grid."""
-    gov, sp = spec.governor, spec.speed
     t = statics.terms(spec, grid.alpha, m[:, None], c[:, None])
+    arrays = _dead_weight_arrays(spec, grid, m, c, t)
+    return _dead_weight_parts(spec, req, *arrays[1:4]), *arrays
+
+
+def _dead_weight_arrays(spec: Spec, grid: Grid, m, c, t):
+    """``(omega^2, omega_rise^2, omega_fall^2, k^2, inertia)`` of a dead-weight governor at
+    every (ball, central) weight pair, from its generalised forces ``t`` there
+    (:func:`govopt.analysis.statics.terms`); the speed band enters only through ``t``."""
+    gov = spec.governor
     fr = gov.friction(grid.alpha)
     with np.errstate(divide="ignore", invalid="ignore"):
         w2, rise, fall = (t.omega_squared(0.0, 0.0, s * fr) for s in (0.0, 1.0, -1.0))
         inertia = gov.inertia(grid.alpha, m[:, None], c[:, None]) + 0.0 * w2
         k2 = t.stiffness(0.0, 0.0, w2) / inertia
+    return w2, rise, fall, k2, inertia
+
+
+def _dead_weight_parts(spec: Spec, req: Requirements, rise, fall, k2) -> dict:
+    """Which (ball, central) weight pairs meet each statics requirement (``{name: met}``),
+    from :func:`_dead_weight_arrays`."""
+    sp = spec.speed
     k2_lo, k2_hi = k2_limits(spec, req)
-    parts = {
+    return {
         "equilibrium speed > 0": np.all(fall > 0, axis=1),
         "k^2 within its margins": np.all((k2 >= k2_lo) & (k2 <= k2_hi), axis=1),
         statics.BAND_INNER: np.sqrt(np.maximum(fall[:, 0], 0)) >= sp.omega_inner,
         statics.BAND_OUTER: np.sqrt(rise[:, -1]) <= sp.omega_outer,
     }
-    return parts, w2, rise, fall, k2, inertia
+
+
+#: weight pairs per block of the infeasibility diagnosis's wider searches
+_DIAGNOSIS_BLOCK = 4096
+
+
+def _same_terms(a, b) -> bool:
+    """Whether two :class:`govopt.governors.base.Terms` hold the same numbers (NaN never
+    equal: such terms are computed again)."""
+    return all(np.array_equal(getattr(a, f.name), getattr(b, f.name)) for f in fields(a))
 
 
 def _bisect(feasible, lo: float = 1.0, hi: float = 100.0, iters: int = 12) -> float | None:
@@ -950,13 +974,28 @@ def _dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fal
             f"the bounds meets " + (", ".join(f"'{k}'" for k in failing) if failing else
                                     "all the statics requirements together"))
     grid = Grid.build(spec)
+    # the bisections below move a margin or the band, which leave the weights' generalised
+    # forces as they are (the band moves the mean speed, which a governor's forces may use):
+    # the spec's own weights' arrays are computed again only where the forces differ. Wider
+    # weight bounds are taken a block of weights at a time (each row is its own weight pair),
+    # up to the first feasible one.
+    own = masses(req)
+    memo: dict = {}
 
     def feasible(s, r):
         m, c = masses(r)
-        if m.size == 0:
-            return False
-        return bool(np.logical_and.reduce(list(
-            _dead_weight_statics(s, r, grid, m, c)[0].values())).any())
+        keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1])
+        for lo in range(0, m.size, _DIAGNOSIS_BLOCK):
+            mb, cb = m[lo:lo + _DIAGNOSIS_BLOCK], c[lo:lo + _DIAGNOSIS_BLOCK]
+            t = statics.terms(s, grid.alpha, mb[:, None], cb[:, None])
+            hit = memo.get(lo) if keep else None
+            if hit is None or not _same_terms(hit[0], t):
+                hit = t, _dead_weight_arrays(s, grid, mb, cb, t)[1:4]
+                if keep:
+                    memo[lo] = hit
+            if np.logical_and.reduce(list(_dead_weight_parts(s, r, *hit[1]).values())).any():
+                return True
+        return False
 
     def band(inner, outer):
         return replace(spec, speed=Speed((inner + outer) / 2.0, 2.0 * (outer - inner)

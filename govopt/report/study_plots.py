@@ -51,10 +51,10 @@ def _figure(rows: int, cols: int = 1, height: float = 2.3, width: float = 7.0):
     return Figure(figsize=(width, 0.6 + height * rows), dpi=DPI, layout="constrained"), rows, cols
 
 
-def _save(fig, folder: Path, name: str, overwrite: bool) -> list[Path]:
+def _save(fig, folder: Path, name: str, overwrite: bool, formats=FORMATS) -> list[Path]:
     from .plot_files import save_figure  # as every plot is written (an SVG without a date)
 
-    return save_figure(fig, folder / name, overwrite, FORMATS)
+    return save_figure(fig, folder / name, overwrite, formats)
 
 
 def _slug(text: str) -> str:
@@ -348,8 +348,9 @@ def _sample(store, columns: list[str], every: int, *, keep=None) -> pd.DataFrame
 
 
 def plot_study(store, folder: str | Path, *, overwrite: bool = False,
-               max_points: int = MAX_POINTS) -> list[Path]:
-    """Draw the study in ``store`` into ``folder`` (created if missing); returns the files.
+               max_points: int = MAX_POINTS, formats=FORMATS) -> list[Path]:
+    """Draw the study in ``store`` into ``folder`` (created if missing), each plot in each of
+    ``formats``; returns the files.
     The database is read a batch at a time (:meth:`govopt.study.Store.batches`): the plots of
     a study of more than ``max_points`` points draw every k-th of them (said on the plot),
     its Pareto front whole; the constraints are chosen and the tolerance histograms counted
@@ -374,7 +375,7 @@ def plot_study(store, folder: str | Path, *, overwrite: bool = False,
             needed = ["status", *SPREAD, *(passed_column(c) for c in checks),
                       *(margin_column(c) for c in checks), *checks]
             out += _save(_tolerance_figure(lambda: store.batches(needed)), folder, "tolerance",
-                         overwrite)
+                         overwrite, formats)
         else:
             keys = [k for k in study.get("keys", []) if k in columns]
             combine = study.get("combine", "grid")
@@ -387,7 +388,7 @@ def plot_study(store, folder: str | Path, *, overwrite: bool = False,
             drawn = keys[:1] if combine == "zip" and len(keys) > 1 else keys  # in step: one
             for key in drawn:
                 out += _save(_sweep_figure(frame, key, keys, combine, cons, every),
-                             folder, f"sweep-{_slug(key)}", overwrite)
+                             folder, f"sweep-{_slug(key)}", overwrite, formats)
         if study.get("pareto"):
             front = store.pareto()
             frame = _sample(store, ["status", *(objective_column(o)[0]
@@ -396,5 +397,5 @@ def plot_study(store, folder: str | Path, *, overwrite: bool = False,
             frame.attrs["feasible"] = store.conn.execute(
                 "SELECT COUNT(*) FROM points WHERE status IN ('pass', 'optimal')").fetchone()[0]
             out += _save(_pareto_figure(frame, study["pareto"], every), folder, "pareto",
-                         overwrite)
+                         overwrite, formats)
     return out
