@@ -1062,10 +1062,8 @@ def _extent(ws: Worksheet, anchor: str, width_cm: float, height_cm: float) -> tu
 
 def _align_top(ws: Worksheet) -> None:
     """Every cell aligned at the top of its row: a label beside a wrapped text (a long source,
-    a note) reads as that text's row, not the next one's. One Alignment per kind of cell (a
-    sheet has a handful), not one per cell: openpyxl's descriptors made that most of the
-    workbook's build."""
-    top: dict[tuple, Alignment] = {}
+    a note) reads as that text's row, not the next one's."""
+    top: dict[tuple, Alignment] = {}  # one object per alignment: openpyxl finds it by identity
     for c in _written(ws):
         a = c.alignment
         if a.vertical is None:
