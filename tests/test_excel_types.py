@@ -7,7 +7,7 @@ from pathlib import Path
 
 import openpyxl
 import pytest
-from test_excel import RTOL, _formula_cells, _recalculate, needs_libreoffice
+from test_excel import RTOL, _csv_values, _formula_cells, _recalculate, needs_libreoffice
 
 import govopt
 from govopt.report import excel
@@ -29,13 +29,33 @@ def results():
 
 
 @pytest.fixture(scope="module")
-def recalculated(results, tmp_path_factory):
+def written(results, tmp_path_factory):
     d = tmp_path_factory.mktemp("types")
-    written = {n: excel.write_workbook(r, d / f"{n}.xlsx") for n, r in results.items()}
+    return {n: excel.write_workbook(r, d / f"{n}.xlsx") for n, r in results.items()}
+
+
+@pytest.fixture(scope="module")
+def opened(written):
+    """name -> the written workbook as openpyxl reads it, loaded once (two tests read each)."""
+    cache = {}
+
+    def load(name):
+        if name not in cache:
+            cache[name] = openpyxl.load_workbook(written[name])
+        return cache[name]
+
+    return load
+
+
+@pytest.fixture(scope="module")
+def recalculated(written, tmp_path_factory):
+    """name -> the Design sheet's values after LibreOffice recalculated the whole workbook
+    (every workbook in one call), or None without soffice."""
     if needs_libreoffice.args[0]:  # no soffice: the written workbooks only
-        return written, None
-    out = _recalculate(list(written.values()), d / "out", d / "profile")
-    return written, {n: out[p] for n, p in written.items()}
+        return None
+    d = tmp_path_factory.mktemp("types-lo")
+    out = _recalculate(list(written.values()), d / "out", d / "profile", sheet="Design")
+    return {n: _csv_values(out[p]) for n, p in written.items()}
 
 
 def test_every_type_has_specs():
@@ -48,20 +68,19 @@ def test_every_type_has_specs():
 
 
 @pytest.mark.parametrize("name", EVALUATE + DESIGN)
-def test_design_sheet_is_live(recalculated, results, name):
+def test_design_sheet_is_live(opened, recalculated, name):
     """Every formula of the Design sheet has govopt's value beside it; after LibreOffice
     recalculates, each equals it to RTOL (1e-9)."""
-    written, recalc = recalculated
-    ws = openpyxl.load_workbook(written[name])["Design"]
+    ws = opened(name)["Design"]
     cells = [c for c in _formula_cells(ws) if c.column == excel._VALUE]
     assert len(cells) >= 5  # masses, speeds at both ends, rpm (and the spring's figures)
     assert any("omega_inner" in (ws.cell(c.row, excel._NAME).value or "") for c in cells)
-    if recalc is None:
+    if recalculated is None:
         pytest.skip("LibreOffice not available")
-    values = openpyxl.load_workbook(recalc[name], data_only=True)["Design"]
+    values = recalculated[name]
     for c in cells:
         want = ws.cell(c.row, excel._GOVOPT).value
-        got = values.cell(c.row, c.column).value
+        got = values.get((c.row, c.column))
         assert isinstance(got, float | int), (c.coordinate, got)
         assert got == pytest.approx(want, rel=RTOL, abs=1e-12), ws.cell(c.row, excel._NAME).value
 
@@ -80,14 +99,13 @@ def test_designs_pass_every_check(results, name):
 
 
 @pytest.mark.parametrize("name", EVALUATE + DESIGN)
-def test_workbook_reads_in_engineering_units(recalculated, results, name):
+def test_workbook_reads_in_engineering_units(opened, results, name):
     """Issue 23: every number a person reads on the Design, Characteristic and Checks sheets has
     a display format and an engineering unit (mm, MPa, N/mm, rpm, deg: no Pa, m, rad/s); the
     seam's spring terms only where the type has a spring; every cell aligned at the top; the
     characteristic's chart draws the spec's required band."""
-    written, _ = recalculated
     res = results[name]
-    wb = openpyxl.load_workbook(written[name])
+    wb = opened(name)
     for ws in (wb["Design"], wb["Characteristic"], wb["Checks"]):
         for row in ws.iter_rows():
             for c in row:

@@ -44,13 +44,24 @@ def region(A: float, B: float, rtol: float = 1e-12) -> str:
     >>> region(4.5 / q, 7.0 / q**2)
     'monotonic'
     """
-    if not A * B > 1.0:
-        return "unstable"
-    scale = max(1.0, A, B) ** 4
+    return REGIONS[int(regions(A, B, rtol))]
+
+
+def regions(A, B, rtol: float = 1e-12) -> np.ndarray:
+    """:func:`region` of every point of the arrays ``A``, ``B`` (broadcast together), as indices
+    into :data:`REGIONS`: the same tests in the same order, on a whole grid at once (the
+    diagram's map of the regions).
+
+    >>> [REGIONS[i] for i in regions([3.0, 1.0, 0.5, 4.0], [3.0, 0.5, 4.0, 1.0])]
+    ['aperiodic', 'unstable', 'oscillatory', 'oscillatory']
+    """
+    A, B = np.broadcast_arrays(np.asarray(A, dtype=float), np.asarray(B, dtype=float))
+    scale = np.maximum(np.maximum(1.0, A), B) ** 4
     disc = 18.0 * A * B - 4.0 * A**3 + A**2 * B**2 - 4.0 * B**3 - 27.0
-    if disc >= -rtol * scale:
-        return "aperiodic"
-    return "oscillatory" if 2.0 * A**3 - 9.0 * A * B + 27.0 > 0 else "monotonic"
+    stable = np.where(disc >= -rtol * scale, REGIONS.index("aperiodic"),
+                      np.where(2.0 * A**3 - 9.0 * A * B + 27.0 > 0,
+                               REGIONS.index("oscillatory"), REGIONS.index("monotonic")))
+    return np.where(A * B > 1.0, stable, REGIONS.index("unstable"))
 
 
 def point(a0, a1, a2, a3) -> dict:

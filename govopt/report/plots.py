@@ -332,7 +332,7 @@ def vyshnegradsky(res, ax) -> None:
     top = max([6.0] + [1.25 * v for p in pts for v in p])
     grid = np.linspace(top / 300, top, 300)
     index = {name: i for i, name in enumerate(vy.REGIONS)}
-    zone = np.array([[index[vy.region(a, b)] for a in grid] for b in grid])
+    zone = vy.regions(grid[None, :], grid[:, None])  # rows along B, columns along A
     colors = ("#dbe9f6", "#e2f0d9", "#fff2cc", "#f4cccc")  # in the order of vy.REGIONS
     from matplotlib.colors import ListedColormap
     from matplotlib.patches import Patch
