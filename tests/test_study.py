@@ -620,28 +620,28 @@ def test_two_studies_on_one_database(tmp_path, cli):
     naming the database and that it holds another study) and the database holds only the
     other's rows; two runs of the *same* study cooperate: every point once."""
     db = tmp_path / "c.db"
-    a = _start(cli, HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:60")
-    b = _start(cli, HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:35")
+    a = _start(cli, HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:120")
+    b = _start(cli, HARTNELL, db, "design.ball_weight=1.8 kgf:2.2 kgf:70")
     (_, err_a), (_, err_b) = a.communicate(timeout=300), b.communicate(timeout=300)
     codes = sorted([a.returncode, b.returncode])
     assert codes[0] in (0, 1) and codes[1] == 2, (err_a, err_b)
     refused = err_a if a.returncode == 2 else err_b
     assert refused.startswith(f"error: {db}: the database holds another study"), refused
     assert refused.count("\n") == 1
-    ran = 60 if a.returncode != 2 else 35
+    ran = 120 if a.returncode != 2 else 70
     with Store(db, create=False) as store:
         assert store.count() == ran == store.meta("total")
         assert store.integrity() == "ok"
     same = tmp_path / "same.db"
-    sweep = "design.ball_weight=1.8 kgf:2.2 kgf:100"
+    sweep = "design.ball_weight=1.8 kgf:2.2 kgf:200"
     a = _start(cli, HARTNELL, same, sweep, "--resume")
     b = _start(cli, HARTNELL, same, sweep, "--resume")
     for p in (a, b):
         out, err = p.communicate(timeout=300)
-        assert p.returncode in (0, 1) and "points: 100 of 100 done" in out, err
+        assert p.returncode in (0, 1) and "points: 200 of 200 done" in out, err
     with Store(same, create=False) as store:
-        assert store.count() == 100
-        assert sorted(store.table()["point"]) == list(range(100))
+        assert store.count() == 200
+        assert sorted(store.table()["point"]) == list(range(200))
 
 
 def test_sweep_and_tolerance_errors_name_the_key_and_spec(tmp_path):
