@@ -19,6 +19,27 @@ import sys
 import pytest
 
 HEAVY = ("cvxpy", "scipy", "scipy.optimize", "pint", "numpy")
+
+
+def _release(*names: str) -> tuple[int, int]:
+    """(major, minor) of the first of the distributions ``names`` installed."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    for name in names:
+        try:
+            return tuple(int(x) for x in version(name).split(".")[:2])
+        except PackageNotFoundError:
+            continue
+    raise PackageNotFoundError(names[0])
+
+
+#: Whether cvxpy loads without scipy.stats, scipy.optimize, scipy.special, scipy.linalg and
+#: numpy's test modules (govopt/optimize/_cvxpy.py's placeholders): from cvxpy 1.9 with scipy
+#: 1.17, the releases it is written for. Older ones (cvxpy-base 1.5-1.8, scipy 1.11-1.16, as
+#: pyproject.toml's floors admit) import them elsewhere as they load: govopt gives the same
+#: results there (the suite passes at the floors), only its start is slower, so the modules'
+#: absence is asserted only with the newer releases.
+DEFERRED = _release("cvxpy-base", "cvxpy") >= (1, 9) and _release("scipy") >= (1, 17)
 #: typer converts options through pydantic (~0.1 s of CPU at every start, issue 14, target 2):
 #: govopt's commands convert their own (govopt/commands/common.py), so none imports pydantic;
 #: typer vendors its click, so the separate click package is not loaded either
@@ -183,8 +204,8 @@ def test_design_that_needs_the_gp_loads_cvxpy_without_scipy_stats(tmp_path):
     spec.write_text(text.replace("[material]\n", '[material]\nstress_correction = "wahl"\n', 1))
     loaded = modules_after("design", str(spec), "--json", cwd=tmp_path)
     assert "cvxpy" in loaded and "govopt.optimize.spring_gp" in loaded
-    assert not loaded & {"scipy.stats", "scipy.optimize", "matplotlib", "pandas", "openpyxl",
-                         *FRAMEWORKS}
+    assert not loaded & {"matplotlib", "pandas", "openpyxl", *FRAMEWORKS}
+    assert not loaded & {"scipy.stats", "scipy.optimize"} or not DEFERRED
 
 
 def run_python(code: str, **env) -> str:
@@ -199,7 +220,7 @@ def test_cvxpy_placeholder_entropy_is_scipys_and_scipy_stats_loads_later():
     out = run_python(
         "import sys\n"
         "from govopt.optimize._cvxpy import cvxpy\n"
-        "assert 'scipy.stats' not in sys.modules\n"
+        f"assert 'scipy.stats' not in sys.modules or not {DEFERRED}\n"
         "ours = sys.modules['cvxpy.atoms.quantum_rel_entr'].entropy([0.2, 0.3, 0.5])\n"
         "from scipy.stats import entropy, norm\n"
         "print(ours == entropy([0.2, 0.3, 0.5]), type(norm).__name__ != 'function')\n")
