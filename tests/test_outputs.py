@@ -15,6 +15,7 @@ import zipfile
 from pathlib import Path
 from xml.dom import minidom
 
+import cliproc
 import openpyxl
 import pytest
 from clirun import invoke
@@ -347,15 +348,12 @@ def test_utf8_bom_is_accepted(tmp_path):
 # kill tests: SIGTERM / SIGKILL at many moments
 
 
-def _start(args, cwd):
-    return subprocess.Popen(CLI + [str(a) for a in args], cwd=cwd, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE)
-
-
 def _kill(args, cwd: Path, sig, delay: float | None):
-    """Run, send ``sig`` after ``delay`` s (None: as soon as a temporary file is written);
-    return (returncode, stderr, whether a temporary file was seen)."""
-    p = _start(args, cwd)
+    """Run ``govopt ARGS`` in a process of its own (:mod:`cliproc`: forked, not a new
+    interpreter, so that the moments fall in govopt's work rather than in Python's start-up),
+    send ``sig`` after ``delay`` s (None: as soon as a temporary file is written); return
+    (returncode, stderr, whether a temporary file was seen)."""
+    p = cliproc.Proc(args, cwd)
     seen = False
     if delay is None:
         while p.poll() is None and not seen:
@@ -370,7 +368,7 @@ def _kill(args, cwd: Path, sig, delay: float | None):
         except subprocess.TimeoutExpired:
             p.send_signal(sig)
     _, err = p.communicate(timeout=60)
-    return p.returncode, err.decode(errors="replace"), seen
+    return p.returncode, err, seen
 
 
 def _check_outputs(cwd: Path, old: dict[str, bytes]) -> None:
@@ -410,16 +408,17 @@ def _prepare(cwd: Path, existing: bool) -> dict[str, bytes]:
 
 @pytest.fixture(scope="module")
 def durations(tmp_path_factory):
-    """Seconds of one full run of each command (and that it succeeds)."""
+    """Seconds of one full run of each command, started as the kill tests start theirs (and
+    that it succeeds)."""
     d = tmp_path_factory.mktemp("full")
     out = {}
     for cmd, args in (("evaluate", ["evaluate", SPEC_PASS, "--xlsx", "out.xlsx"]),
                       ("design", ["design", SPEC_DESIGN, "--xlsx", "out.xlsx", "-o", "out.toml"])):
         _prepare(d, existing=False)
         t0 = time.perf_counter()
-        p = subprocess.run(CLI + [str(a) for a in args], cwd=d, capture_output=True)
+        p = cliproc.run(args, d)
         out[cmd] = time.perf_counter() - t0
-        assert p.returncode == 0, p.stderr.decode()
+        assert p.returncode == 0, p.stderr
         _check_outputs(d, {})
         assert _temps(d) == []
     assert load_spec(d / "out.toml").design is not None
@@ -462,7 +461,8 @@ def test_kill_while_writing(tmp_path, durations, sig, command):
         _after_kill(tmp_path, sig, rc, err)
         return
     assert rc == -signal.SIGKILL and _temps(tmp_path)  # SIGKILL cannot be cleaned up after
-    # ... but the next run into that folder ignores the dead process's files and removes them
+    # ... but the next run into that folder (a new interpreter, `python -m govopt.cli`) ignores
+    # the dead process's files and removes them
     p = subprocess.run(CLI + ["evaluate", SPEC_PASS, "--xlsx", "out.xlsx", "--force"],
                        cwd=tmp_path, capture_output=True)
     assert p.returncode == 0, p.stderr.decode()
