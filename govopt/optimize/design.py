@@ -955,11 +955,14 @@ def _dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fal
     grid = Grid.build(spec)
 
     def feasible(s, r):
+        # in blocks of weight pairs, stopping at the first that meets every requirement: the
+        # widened bounds hold up to 256 times the pairs (their arrays were 0.6 GB at once)
         m, c = masses(r)
-        if m.size == 0:
-            return False
-        return bool(np.logical_and.reduce(list(
-            _dead_weight_statics(s, r, grid, m, c)[0].values())).any())
+        return any(np.logical_and.reduce(list(
+            _dead_weight_statics(s, r, grid, m[i:i + block], c[i:i + block])[0].values())).any()
+            for i in range(0, m.size, block))
+
+    block = 4096
 
     def band(inner, outer):
         return replace(spec, speed=Speed((inner + outer) / 2.0, 2.0 * (outer - inner)
