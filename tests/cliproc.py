@@ -24,8 +24,9 @@ import threading
 
 #: imported once, by the server (not ``govopt.cli`` itself: run as ``__main__`` after being
 #: imported, runpy would warn on stderr)
-PRELOAD = ["numpy", "pint", "openpyxl", "govopt.commands.common", "govopt.commands.evaluate",
-           "govopt.commands.spring", "govopt.commands.study", "govopt.spec",
+PRELOAD = ["numpy", "numpy.fft", "numpy.ma", "numpy.polynomial", "pint", "openpyxl",
+           "xml.sax.saxutils", "tomlkit", "govopt.commands.common", "govopt.commands.evaluate",
+           "govopt.commands.spring", "govopt.commands.study", "govopt.spec", "govopt.fidelity",
            "govopt.evaluation", "govopt.optimize.search", "govopt.report.text",
            "govopt.report.files", "govopt.report.excel"]
 

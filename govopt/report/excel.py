@@ -1063,11 +1063,15 @@ def _extent(ws: Worksheet, anchor: str, width_cm: float, height_cm: float) -> tu
 def _align_top(ws: Worksheet) -> None:
     """Every cell aligned at the top of its row: a label beside a wrapped text (a long source,
     a note) reads as that text's row, not the next one's."""
+    top: dict[tuple, Alignment] = {}  # one object per alignment: openpyxl finds it by identity
     for c in _written(ws):
-        if c.alignment.vertical is None:
-            a = c.alignment
-            c.alignment = Alignment(horizontal=a.horizontal, vertical="top",
-                                    wrap_text=a.wrap_text, indent=a.indent)
+        a = c.alignment
+        if a.vertical is None:
+            key = (a.horizontal, a.wrap_text, a.indent)
+            if key not in top:
+                top[key] = Alignment(horizontal=a.horizontal, vertical="top",
+                                     wrap_text=a.wrap_text, indent=a.indent)
+            c.alignment = top[key]
 
 
 def fit_rows(ws: Worksheet) -> None:
