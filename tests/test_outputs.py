@@ -13,7 +13,7 @@ import tomllib
 import warnings
 import zipfile
 from pathlib import Path
-from xml.dom import minidom
+from xml.etree import ElementTree
 
 import cliproc
 import openpyxl
@@ -74,12 +74,13 @@ def _one_error_line(result, code=2) -> str:
 
 
 def _assert_valid_xlsx(path: Path) -> None:
-    """Opens in openpyxl with govopt's sheets, and every XML part parses."""
+    """Opens in openpyxl with govopt's sheets, and every XML part parses (expat, as
+    minidom's parser, without building a DOM in Python: a tenth of the time)."""
     assert tuple(openpyxl.load_workbook(path).sheetnames) == excel.SHEETS
     with zipfile.ZipFile(path) as z:
         for name in z.namelist():
             if name.endswith((".xml", ".rels")):
-                minidom.parseString(z.read(name))
+                ElementTree.fromstring(z.read(name))
 
 
 # ------------------------------------------------------------------------------------------
