@@ -28,7 +28,8 @@ PRELOAD = ["numpy", "numpy.fft", "numpy.ma", "numpy.polynomial", "pint", "openpy
            "xml.sax.saxutils", "tomlkit", "govopt.commands.common", "govopt.commands.evaluate",
            "govopt.commands.spring", "govopt.commands.study", "govopt.spec", "govopt.fidelity",
            "govopt.evaluation", "govopt.optimize.search", "govopt.report.text",
-           "govopt.report.files", "govopt.report.excel"]
+           "govopt.report.files", "govopt.report.excel", "govopt.spring_command",
+           "govopt.study"]
 
 _LOCK = threading.Lock()
 _CONTEXT = None
