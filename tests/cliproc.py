@@ -77,7 +77,8 @@ def _child(args: list[str], cwd: str, out: str, err: str) -> None:
 class Proc:
     """``govopt ARGS`` running in ``cwd``: the part of :class:`subprocess.Popen` the tests use
     (``pid``, ``poll``, ``wait``, ``send_signal``, ``communicate``, ``returncode``); stdout and
-    stderr are kept outside ``cwd``."""
+    stderr are kept outside ``cwd``. From one thread only: multiprocessing's ``start`` polls
+    the other running processes, and two threads reading one exit status make it 255."""
 
     def __init__(self, args, cwd):
         self._files = tempfile.mkdtemp(prefix="govopt-proc-")
