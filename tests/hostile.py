@@ -34,9 +34,10 @@ import warnings
 import zlib
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from functools import partial
+from functools import cache, partial
 from pathlib import Path
 
+import cliproc
 from clirun import invoke
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -66,6 +67,10 @@ class Raw:
 
 
 _BARE = re.compile(r"[A-Za-z0-9_-]+")
+#: a long string TOML can hold as a literal string ('...'): the same value once read, which
+#: tomllib finds with one search where a basic string ("...") costs it a Python loop per
+#: character (40 ms for 200 kB: a third of the corpus's time went there)
+_LITERAL = re.compile(r"[^'\x00-\x1f\x7f]*")
 
 
 def _key(k) -> str:
@@ -83,6 +88,8 @@ def _value(v) -> str:
         return "nan" if v != v else "inf" if v == math.inf else "-inf" if v == -math.inf \
             else repr(v)
     if isinstance(v, str):
+        if len(v) > 1000 and _LITERAL.fullmatch(v):
+            return f"'{v}'"
         return json.dumps(v, ensure_ascii=False)
     if isinstance(v, list):
         return "[" + ", ".join(_value(x) for x in v) + "]"
@@ -701,6 +708,17 @@ def _marks(case: Case) -> set:
             (case.gtype, case.command, "key", case.key)}
 
 
+@cache
+def _cases() -> tuple[tuple[Case, ...], tuple[Case, ...]]:
+    """The cases every selection starts from (built once a process: the cases are immutable):
+    the file and option cases, and the pool of spec mutations."""
+    fixed = (*_file_cases(), *_spring_cases(),
+             *(c for c in _study_cases() if c.kind == "option"), *_output_cases())
+    pool = (*(c for p in bundled_specs() for c in spec_cases(p)),
+            *(c for c in _study_cases() if c.kind != "option"))
+    return fixed, pool
+
+
 def corpus(budget: int | None = None, seconds: float | None = None) -> list[Case]:
     """The hostile inputs: every bundled spec's mutations, hostile files, and hostile options
     of ``spring`` and ``study run``.
@@ -709,12 +727,9 @@ def corpus(budget: int | None = None, seconds: float | None = None) -> list[Case
     selection: the file and option cases; then, cheapest first, a case for every (governor
     type, command, kind) and (type, command, key); then more, in a fixed pseudo-random
     order, while both budgets last."""
-    fixed = [*_file_cases(), *_spring_cases(),
-             *(c for c in _study_cases() if c.kind == "option"), *_output_cases()]
-    pool = [c for p in bundled_specs() for c in spec_cases(p)]
-    pool += [c for c in _study_cases() if c.kind != "option"]
+    fixed, pool = _cases()
     if budget is None:
-        return fixed + pool
+        return [*fixed, *pool]
     seconds = math.inf if seconds is None else seconds
     order = sorted(pool, key=lambda c: (estimate(c), zlib.crc32(c.id.encode())))
     covered, chosen, rest = set(), list(fixed), []
@@ -813,20 +828,27 @@ def run(case: Case, folder: Path, limit: float = 10.0, json_out: bool = False) -
     return classify(out, str(spec) if written else None, json_out)
 
 
-def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = False) -> Outcome:
-    """Run ``case`` through the real command line (``python -m govopt.cli``) in a process of
-    its own: the console entry point, its catch-all and its signal handling included."""
+def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = False,
+            fresh: bool = False) -> Outcome:
+    """Run ``case`` through the real command line in a process of its own: ``govopt.cli`` run
+    as ``__main__`` (the console entry point, its catch-all and its signal handling included),
+    forked from a server that has imported govopt already (:mod:`cliproc`), or with ``fresh``
+    a new interpreter (``python -m govopt.cli``: its imports on demand too)."""
     import subprocess
 
     spec, written = _write(case, folder)
     if case.prepare is not None:
         case.prepare(spec)
     json_out = json_out and case.command in ("evaluate", "design", "spring")
+    args = _args(case, spec, json_out)
     t0 = time.perf_counter()
     try:
-        p = subprocess.run([sys.executable, "-m", "govopt.cli", *_args(case, spec, json_out)],
-                           capture_output=True, text=True, errors="replace", timeout=limit,
-                           cwd=folder, stdin=subprocess.DEVNULL)
+        if fresh:
+            p = subprocess.run([sys.executable, "-m", "govopt.cli", *args], capture_output=True,
+                               text=True, errors="replace", timeout=limit, cwd=folder,
+                               stdin=subprocess.DEVNULL)
+        else:
+            p = cliproc.run(args, folder, timeout=limit)
     except subprocess.TimeoutExpired:
         return Outcome(case, "hang", None, "", "", time.perf_counter() - t0)
     out = Outcome(case, "", p.returncode, p.stdout, p.stderr, time.perf_counter() - t0)
