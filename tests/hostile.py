@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 from functools import cache, partial
 from pathlib import Path
 
-import cliproc
+import forkcli
 from clirun import invoke
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -832,7 +832,7 @@ def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = Fals
             fresh: bool = False) -> Outcome:
     """Run ``case`` through the real command line in a process of its own: ``govopt.cli`` run
     as ``__main__`` (the console entry point, its catch-all and its signal handling included),
-    forked from a server that has imported govopt already (:mod:`cliproc`), or with ``fresh``
+    forked from a server that has imported govopt already (:mod:`forkcli`), or with ``fresh``
     a new interpreter (``python -m govopt.cli``: its imports on demand too)."""
     import subprocess
 
@@ -848,7 +848,7 @@ def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = Fals
                                text=True, errors="replace", timeout=limit, cwd=folder,
                                stdin=subprocess.DEVNULL)
         else:
-            p = cliproc.run(args, folder, timeout=limit)
+            p = forkcli.run(args, folder, timeout=limit)
     except subprocess.TimeoutExpired:
         return Outcome(case, "hang", None, "", "", time.perf_counter() - t0)
     out = Outcome(case, "", p.returncode, p.stdout, p.stderr, time.perf_counter() - t0)

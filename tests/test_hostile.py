@@ -67,7 +67,7 @@ def test_hostile_corpus(tmp_path):
 
 def test_hostile_sample_through_the_real_cli(tmp_path):
     """Each case of :data:`SAMPLE` in a process of its own, forked from a server that has
-    imported govopt (:mod:`cliproc`); and :data:`FRESH` in a new interpreter as well, with
+    imported govopt (:mod:`forkcli`); and :data:`FRESH` in a new interpreter as well, with
     the imports on demand of ``python -m govopt.cli`` (the same answer both ways)."""
     cases = {c.id: c for c in hostile.corpus()}
     # one after the other: a forked process takes ~0.05 s here, and multiprocessing's

@@ -12,7 +12,6 @@ without ``scipy.stats`` (govopt/optimize/_cvxpy.py).
 """
 
 import functools
-import json
 import subprocess
 import sys
 
@@ -46,74 +45,33 @@ DEFERRED = _release("cvxpy-base", "cvxpy") >= (1, 9) and _release("scipy") >= (1
 FRAMEWORKS = ("click", "pydantic")
 
 
-#: Each command's interpreter: forked, as its first act, from one that ran what a fresh
-#: ``python -c`` running the command runs before it (``import json, sys``, ``from govopt.cli
-#: import main``), so it starts in that state without paying Python's start-up and govopt.cli's
-#: imports again; it runs ``main()`` with its ``sys.argv`` and stdout (a file), and reports.
-_FORKS = r"""
-import json, sys
-from govopt.cli import main
-import os
-for line in sys.stdin:
-    args, cwd, out = json.loads(line)
-    r, w = os.pipe()
-    pid = os.fork()
-    if pid == 0:
-        os.close(r)
-        os.dup2(os.open(os.devnull, os.O_RDONLY), 0)
-        os.dup2(os.open(out, os.O_WRONLY | os.O_CREAT | os.O_TRUNC), 1)
-        try:
-            if cwd is not None:
-                os.chdir(cwd)
-            sys.argv = ["govopt", *args]
-            try:
-                main()
-            except SystemExit:
-                pass
-            report = {"modules": sorted(sys.modules)}
-        except BaseException:
-            import traceback
-            report = {"error": traceback.format_exc()}
-        os.write(w, json.dumps(report).encode())
-        os._exit(0)
-    os.close(w)
-    with os.fdopen(r, "rb") as pipe:
-        report = pipe.read()
-    os.waitpid(pid, 0)
-    sys.stdout.write(report.decode() + "\n")
-    sys.stdout.flush()
-"""
-_server: list = []  # the forking interpreter, started on first use
+#: Each command's interpreter: forked from one that ran what a fresh ``python -c`` running the
+#: command runs before it (``import json, sys``, ``from govopt.cli import main``; nothing more
+#: preloaded), so it starts in that state without paying Python's start-up and govopt.cli's
+#: imports again (tests/forkcli.py); it runs ``main()`` and reports its ``sys.modules``.
+_server: list = []  # started on first use
 
 
 @pytest.fixture(scope="module", autouse=True)
 def _stop_the_forking_interpreter():
     yield
     while _server:
-        proc = _server.pop()
-        proc.stdin.close()
-        proc.wait(timeout=60)
-        proc.stdout.close()
+        _server.pop().close()
 
 
 @functools.cache
 def modules_after(*args: str, cwd=None) -> frozenset[str]:
     """The modules loaded by ``govopt ARGS`` run through the console entry point, in an
-    interpreter of its own that starts as a fresh one (``_FORKS``); each command once per test
-    process (the same command, the same modules)."""
-    import tempfile
+    interpreter of its own that starts as a fresh one; each command once per test process (the
+    same command, the same modules)."""
+    from forkcli import Server
 
     if not _server:
-        _server.append(subprocess.Popen([sys.executable, "-c", _FORKS], stdin=subprocess.PIPE,
-                                        stdout=subprocess.PIPE, text=True))
-    proc = _server[0]
-    with tempfile.TemporaryDirectory() as folder:
-        proc.stdin.write(json.dumps([list(args), None if cwd is None else str(cwd),
-                                     f"{folder}/stdout"]) + "\n")
-        proc.stdin.flush()
-        report = json.loads(proc.stdout.readline() or '{"error": "the interpreter ended"}')
-    assert "error" not in report, report["error"]
-    return frozenset(report["modules"])
+        _server.append(Server(()))
+    proc = _server[0].start(*args, cwd=cwd, modules=True)
+    _, err = proc.communicate(timeout=120)
+    assert "Traceback" not in err, err
+    return proc.modules()
 
 
 def test_help_loads_no_numerics():
