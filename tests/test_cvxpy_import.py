@@ -64,6 +64,8 @@ def test_a_kept_placeholder_gives_the_real_modules_names(tmp_path):
     assert out == "False 2.0"
 
 
+@pytest.mark.skipif(not DEFERRED, reason="older cvxpy and scipy load these modules themselves "
+                    "(and scipy 1.11 has no copy of numpy's namespace): nothing is deferred")
 def test_scipy_special_and_numpys_test_modules_load_only_when_used():
     """cvxpy loads without scipy.special, scipy.linalg, scipy.sparse.linalg and numpy's
     testing/f2py/ma (issue 22, CPU of `govopt spring`); numpy's ``__all__`` and ``dir()`` are its
@@ -89,6 +91,4 @@ def test_scipy_special_and_numpys_test_modules_load_only_when_used():
         "A = scipy.sparse.csc_array(numpy.diag([1.0, 2.0, 3.0]))\n"
         "print(L.la.eigh is scipy.linalg.eigh, L.sparla.svds is scipy.sparse.linalg.svds,\n"
         "      round(float(C.eigsh(A, k=1)[0][0]), 9))")
-    late, *rest = out.splitlines()
-    assert late == "[] True" if DEFERRED else late.endswith("] True")
-    assert rest == ["True True", "True True True", "True True 3.0"]
+    assert out.splitlines() == ["[] True", "True True", "True True True", "True True 3.0"]
