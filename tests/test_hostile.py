@@ -70,8 +70,7 @@ def test_hostile_sample_through_the_real_cli(tmp_path):
     imported govopt (:mod:`forkcli`); and :data:`FRESH` in a new interpreter as well, with
     the imports on demand of ``python -m govopt.cli`` (the same answer both ways)."""
     cases = {c.id: c for c in hostile.corpus()}
-    # one after the other: a forked process takes ~0.05 s here, and multiprocessing's
-    # processes must not be started and waited for from several threads at once
+    # one after the other: a forked process takes ~0.05 s here
     outcomes = [hostile.run_cli(cases[i], tmp_path, 60.0) for i in SAMPLE]
     fresh = [hostile.run_cli(cases[i], tmp_path, 60.0, fresh=True) for i in FRESH]
     text = _report(outcomes + fresh, "through the real command line")
