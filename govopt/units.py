@@ -177,21 +177,18 @@ def plain_si(text: str, dimension: str) -> float | None:
     >>> plain_si("10 N/mm", "stiffness"), plain_si("10 N/mm", "force"), plain_si("1_0 N", "force")
     (10000.0, None, None)
     """
-    parts = text.split(" ")  # one space between: pint rejects a leading space or tab
+    number, *unit = text.split(" ")  # one space between: pint rejects a leading space or tab
     if dimension == "dimensionless":
-        number, factor = (parts[0], 1.0) if len(parts) == 1 else (None, None)
-    elif len(parts) == 2:
-        number, factor = parts[0], PLAIN_UNITS.get(dimension, {}).get(parts[1])
+        factor = None if unit else 1.0
     else:
-        return None
+        factor = PLAIN_UNITS.get(dimension, {}).get(unit[0]) if len(unit) == 1 else None
     if factor is None or not _PLAIN_NUMBER.fullmatch(number):
         return None
-    if not any(c in number for c in ".eE"):  # an integer, as Python reads one: no "05",
-        try:                                 # and "-0" is 0
-            return None if _LEADING_ZERO.match(number) else float(int(number)) * factor
-        except OverflowError:  # beyond floating point: pint's path says so
-            return None
-    return float(number) * factor
+    integer = not any(c in number for c in ".eE")
+    if integer and _LEADING_ZERO.match(number):  # Python's tokenizer, pint's, rejects "05"
+        return None
+    value = float(number) * factor
+    return value + 0.0 if integer else value  # "-0" is the integer 0 to pint, not -0.0
 
 
 def parse_with_pint(text: str, dimension: str) -> float:

@@ -131,14 +131,17 @@ def _formula_cells(ws):
 
 
 def _recalculate(files: list[Path], outdir: Path, profile: Path,
-                 sheet: str | None = None) -> dict[Path, Path]:
+                 sheet: str | None = None, pdf: bool = False) -> dict[Path, Path]:
     """Convert ``files`` with LibreOffice headless (one process), recalculating every formula
     on load: xlsx -> xlsx, or with ``sheet`` (one of excel.SHEETS) that sheet's recalculated
     values alone as CSV (``<stem>-<sheet>.csv``, read by :func:`_csv_values`; LibreOffice
-    writes no workbook, a third of the time); returns {input: output}."""
+    writes no workbook, a third of the time), or with ``pdf`` the workbooks as printed
+    (``<stem>.pdf``); returns {input: output}."""
     (profile / "user").mkdir(parents=True, exist_ok=True)
     (profile / "user" / "registrymodifications.xcu").write_text(_RECALC_ALWAYS)
-    if sheet is None:
+    if pdf:
+        target, out = "pdf", {f: outdir / f"{f.stem}.pdf" for f in files}
+    elif sheet is None:
         target, out = "xlsx:Calc MS Excel 2007 XML", {f: outdir / f.name for f in files}
     else:  # UTF-8, values not as shown (all 15 digits LibreOffice keeps), the sheet's number
         target = ("csv:Text - txt - csv (StarCalc):44,34,76,1,,0,false,true,false,false,false,"

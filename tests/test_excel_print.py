@@ -12,13 +12,13 @@ from pathlib import Path
 
 import pytest
 from openpyxl.utils import column_index_from_string
+from test_excel import SOFFICE, _recalculate  # the suite's LibreOffice helpers
 
 import govopt
 from govopt.report import excel
 
 ROOT = Path(__file__).resolve().parent.parent
 SPECS = ROOT / "govopt" / "specs"
-SOFFICE = shutil.which("soffice") or shutil.which("libreoffice")
 PDFTOTEXT = shutil.which("pdftotext")
 
 #: Types whose workbooks print long tables: the shaft's Design and Spring sheets and its three
@@ -46,14 +46,12 @@ def printed(tmp_path_factory):
         res = run(govopt.load_spec(SPECS / f"{name}.toml"))
         excel.write_workbook(res, folder / f"{name}.xlsx")
         built[name] = excel.build_workbook(res)  # the same layout, with its tables' rows
-    profile = folder / "profile"  # a fresh LibreOffice profile: no lock shared with others
-    subprocess.run([SOFFICE, f"-env:UserInstallation=file://{profile}", "--headless",
-                    "--convert-to", "pdf", "--outdir", str(folder),
-                    *(str(folder / f"{n}.xlsx") for n in CASES)],
-                   check=True, capture_output=True, timeout=240)
+    # one soffice call, with a fresh LibreOffice profile: no lock shared with others
+    pdfs = _recalculate([folder / f"{n}.xlsx" for n in CASES], folder, folder / "profile",
+                        pdf=True)
     out = {}
     for name, wb in built.items():
-        pdf = folder / f"{name}.pdf"
+        pdf = pdfs[folder / f"{name}.xlsx"]
         text = subprocess.run([PDFTOTEXT, "-layout", str(pdf), "-"],
                               check=True, capture_output=True, text=True).stdout
         pages: dict[str, list[str]] = {}
