@@ -177,6 +177,13 @@ class Server:
                         "modules": str(files["modules"]) if modules else None})["pid"]
         return Proc(self, args, pid, files)
 
+    def run(self, *args, cwd=None, timeout: float | None = 120) -> subprocess.CompletedProcess:
+        """``govopt ARGS`` in ``cwd`` to its end, as :func:`subprocess.run` with
+        ``capture_output=True, text=True`` would report it."""
+        p = self.start(*args, cwd=cwd)
+        out, err = p.communicate(timeout)
+        return subprocess.CompletedProcess(p.args, p.returncode, out, err)
+
     def close(self) -> None:
         """Stop the server and wait for it: its CPU time and its children's then count among
         this process's children, as a subprocess's do (``time pytest`` measures them)."""
@@ -202,8 +209,5 @@ def shared() -> Server:
 
 
 def run(args, cwd, timeout: float | None = None) -> subprocess.CompletedProcess:
-    """``govopt ARGS`` in ``cwd`` to its end on the :func:`shared` server, as
-    :func:`subprocess.run` with ``capture_output=True, text=True`` would report it."""
-    p = shared().start(*args, cwd=cwd)
-    out, err = p.communicate(timeout)
-    return subprocess.CompletedProcess(p.args, p.returncode, out, err)
+    """:meth:`Server.run` on the :func:`shared` server."""
+    return shared().run(*args, cwd=cwd, timeout=timeout)

@@ -51,14 +51,6 @@ def test_version(tmp_path):
     assert govopt.__version__ == importlib.metadata.version("govopt")
 
 
-def _forked(server, *args):
-    """``govopt ARGS`` as a process forked from ``server`` (tests/forkcli.py), finished:
-    ``(returncode, stdout, stderr)``."""
-    proc = server.start(*args)
-    out, err = proc.communicate(timeout=120)
-    return proc.returncode, out, err
-
-
 def test_evaluate_exit_codes(tmp_path):
     """0: every check passed; 1: the report is printed and some check failed (named on
     stderr); 2: bad input (one line). Each a process of its own, forked from one interpreter
@@ -67,18 +59,18 @@ def test_evaluate_exit_codes(tmp_path):
 
     with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluation",
                  "govopt.units:ureg"), cwd=tmp_path) as server:
-        code, out, err = _forked(server, "evaluate", SPECS / "hamabe-b.toml")
-        assert code == 0, err
-        assert "FAIL" not in out and err == ""
-        code, out, err = _forked(server, "evaluate", SPECS / "hamabe-a.toml", "--json")
-        assert code == 1, err
-        checks = json.loads(out)["checks"]  # stdout is the JSON alone
+        p = server.run("evaluate", SPECS / "hamabe-b.toml")
+        assert p.returncode == 0, p.stderr
+        assert "FAIL" not in p.stdout and p.stderr == ""
+        p = server.run("evaluate", SPECS / "hamabe-a.toml", "--json")
+        assert p.returncode == 1, p.stderr
+        checks = json.loads(p.stdout)["checks"]  # stdout is the JSON alone
         assert [c["name"] for c in checks if not c["passed"]] == ["irregularity"]  # > 0.12
-        code, out, err = _forked(server, "evaluate", SPECS / "hamabe-a.toml")
-        assert code == 1 and "FAIL" in out
-        assert err == f"1 of {len(checks)} checks failed: irregularity\n"
-        code, out, err = _forked(server, "evaluate", tmp_path / "absent.toml")
-        assert code == 2 and err.startswith("error: ") and out == ""
+        p = server.run("evaluate", SPECS / "hamabe-a.toml")
+        assert p.returncode == 1 and "FAIL" in p.stdout
+        assert p.stderr == f"1 of {len(checks)} checks failed: irregularity\n"
+        p = server.run("evaluate", tmp_path / "absent.toml")
+        assert p.returncode == 2 and p.stderr.startswith("error: ") and p.stdout == ""
 
 
 def test_no_command_prints_the_help():
@@ -231,12 +223,12 @@ def test_non_editable_install_ships_the_specs(tmp_path):
     # the installed copy's commands, each a process forked from one interpreter in that
     # environment and folder which imported that copy's govopt.cli
     with Server(("govopt.cli", "govopt.units:ureg"), cwd=work, env=env) as server:
-        _, listed, _ = _forked(server, "examples")
+        listed = server.run("examples").stdout
         assert [line.split()[0] for line in listed.splitlines()] == list(examples())
-        code, evaluated, err = _forked(server, "evaluate", "--json")
-        assert code == 1, err  # case a's irregularity check fails
-        assert json.loads(evaluated)["name"] == "hamabe-a"
-        assert _forked(server, "init", "porter-design")[0] == 0
+        p = server.run("evaluate", "--json")
+        assert p.returncode == 1, p.stderr  # case a's irregularity check fails
+        assert json.loads(p.stdout)["name"] == "hamabe-a"
+        assert server.run("init", "porter-design").returncode == 0
     assert os.listdir(work) == ["porter-design.toml"]
 
 
