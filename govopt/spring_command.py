@@ -30,6 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from .errors import GovoptError
+from .reader import Reader, read_spec_data
 
 #: option -> (kind, detail): ``quantity`` (its dimension), ``number`` (what it must be: a
 #: positive finite number), ``choice`` (None: the allowed values are looked up), ``flag``,
@@ -120,8 +121,6 @@ class _Where:
 
 def _option_reader(options: dict, entries: list):
     """The options given, read as a spec table: errors name the option (``--force: ...``)."""
-    from .reader import Reader
-
     class Options(Reader):
         def key(self, name: str) -> str:
             return "--" + name.replace("_", "-")
@@ -193,8 +192,6 @@ def merged(spec: str | Path | None, options: dict) -> tuple[dict, _Where, str | 
     given = {k: v for k, v in options.items() if v is not None}
     opts, sp, problem, name = _option_reader(given, entries), None, None, "spring"
     if spec is not None:
-        from .reader import Reader, read_spec_data
-
         top = Reader(str(spec), read_spec_data(spec), "", entries)
         name = top.text("name") or Path(spec).stem
         top.text("description")
