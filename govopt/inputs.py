@@ -11,18 +11,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:  # annotations only: a governor type is a plug above this module
-    from .governors.base import Governor
-
-
-@dataclass(frozen=True)
-class Entry:
-    """One input as written in the spec and in SI."""
-
-    key: str
-    written: str
-    si: float | str
-    unit: str
+if TYPE_CHECKING:  # annotations only: a governor type is a plug above this module, and an
+    from .governors.base import Governor  # Entry is what the spec's reader records
+    from .reader import Entry
 
 
 

@@ -9,14 +9,24 @@ from __future__ import annotations
 import difflib
 import math
 import tomllib
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from . import limits
 from .errors import GovoptError
-from .inputs import Entry
 from .units import G_STANDARD, SI_UNITS, UnitError, parse_quantity
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One input as written in the spec and in SI (``Spec.entries``, for reports)."""
+
+    key: str
+    written: str
+    si: float | str
+    unit: str
 
 
 class SpecError(GovoptError):

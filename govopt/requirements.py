@@ -21,7 +21,6 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from .analysis import statics
 from .springs import helical as hx
 from .springs.checks import Row as SpringRow
 from .units import SI_UNITS
@@ -120,6 +119,7 @@ def statics_rows(spec) -> list[Row]:
     ``rise`` (the least slope of the characteristic, :func:`statics.rising_slopes`); ``w0sq``
     (the reference ``omega0^2``); ``F_min``, ``F_top`` (the least and the largest absolute
     spring force); ``k2_min``, ``k2_max``."""
+    from .analysis import statics  # here: the spring designer's rows need no governor's statics
     gov, sp, req = spec.governor, spec.speed, spec.requirements
     margin = req.k2_margin if req else 0.0
     unit = SI_UNITS[gov.coordinate]

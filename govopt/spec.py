@@ -19,7 +19,6 @@ from .inputs import (
     Analysis,
     Design,
     Engine,
-    Entry,
     LoadChange,
     Material,
     Requirements,
@@ -27,7 +26,7 @@ from .inputs import (
     Speed,
     SpringForm,
 )
-from .reader import Reader, SpecError, read_spec_data
+from .reader import Entry, Reader, SpecError, read_spec_data
 from .units import G_STANDARD, SI_UNITS
 
 ANGLE_RANGE = dict(low=0.0, high=math.pi, range_text="(0 deg, 180 deg)")

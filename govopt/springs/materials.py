@@ -220,7 +220,12 @@ def materials() -> dict[str, Material]:
     return out
 
 
-GRADES = tuple(materials())
+def __getattr__(name: str):
+    """``GRADES``, the grade names of the data file, read when first asked for (a spring
+    sized from an allowable stress and a modulus reads no grade)."""
+    if name == "GRADES":
+        return tuple(materials())
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def material(grade: str, *, tensile_strength: float | None = None, G: float | None = None,
@@ -236,7 +241,8 @@ def material(grade: str, *, tensile_strength: float | None = None, G: float | No
     try:
         mat = materials()[grade]
     except KeyError:
-        raise ValueError(f"unknown spring material {grade!r}; known: {', '.join(GRADES)}") from None
+        raise ValueError(f"unknown spring material {grade!r}; "
+                         f"known: {', '.join(materials())}") from None
     changes = {k: float(v) for k, v in (("G", G), ("E", E), ("density", density)) if v is not None}
     if tensile_strength is not None:
         changes["rm"] = {"kind": "constant", "MPa": tensile_strength / MPA,
@@ -306,5 +312,5 @@ def shigley_A_si(A_kpsi: float, m: float) -> float:
     return KSI / MPA * (INCH / MM) ** m * A_kpsi
 
 
-__all__ = ["FatigueDiagram", "Material", "Allowable", "GRADES", "METHODS", "material",
+__all__ = ["FatigueDiagram", "Material", "Allowable", "METHODS", "material",
            "materials", "static_rule", "allowable_static_stress", "ksi_to_pa", "shigley_A_si"]
