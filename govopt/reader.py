@@ -53,6 +53,11 @@ KEY_SYNONYMS: dict[str, tuple[str, str]] = {
 }
 
 
+#: the longest list of allowed keys an error line gives in full; a longer one is pointed to
+#: the reference (:attr:`Reader.guide`), never cut short
+ALLOWED_CHARS = 160
+
+
 class Reader:
     """Reads one TOML table, recording which keys were used; :meth:`finish` rejects the rest."""
 
@@ -64,6 +69,10 @@ class Reader:
         self.file, self.table, self.path, self.entries = file, table, path, entries
         #: the table's declaration (:class:`govopt.keys.Table`): its keys are the ones allowed
         self.declared = declared
+        #: where a person finds the keys of a table too long to list in an error line
+        #: (``"docs/reference/spec.md under hartnell:"``); the tables read from this one inherit
+        #: it
+        self.guide = ""
         self.used: set[str] = set()
         self._meaning = ""  # the meaning of the key being read, for its Entry
 
@@ -106,10 +115,11 @@ class Reader:
                       range_text=key.range_text or None)
         if kind == WEIGHT:
             if key.shape == "pair":
-                return self.weight_pair(name, default, single=key.single)
+                return self.weight_pair(name, default, single=key.single,
+                                        nonnegative=key.nonnegative)
             return self.weight_or_mass(name, required=need, default=default)
         if key.shape == "pair":
-            return self.pair(name, kind, default)
+            return self.pair(name, kind, default, nonnegative=key.nonnegative)
         if key.shape == "list":
             value = self.raw(name, False) if not need else None
             if (value is None and not need) or value in key.options():
@@ -150,6 +160,10 @@ class Reader:
         return name in self.table
 
     def raw(self, name: str, required: bool):
+        if self.declared is not None and not self.declared.open \
+                and name not in self.declared.names:  # the parser's own mistake, not the user's
+            raise AssertionError(f"{self.key(name)}: read, but not declared in "
+                                 f"[{self.declared.name}]")
         self.used.add(name)
         if name not in self.table:
             if required:
@@ -258,9 +272,10 @@ class Reader:
         sub._meaning = self._meaning
         return np.array([sub.quantity(str(i), dimension, **kw) for i in range(len(values))])
 
-    def pair(self, name, dimension, default):
+    def pair(self, name, dimension, default, nonnegative=False):
         """A bound ``[low, high]`` of ``dimension`` (SI; bare numbers for "dimensionless"),
-        ``low <= high`` (equal ends fix the value); ``default`` where absent."""
+        ``low <= high`` (equal ends fix the value), each positive (or, with ``nonnegative``,
+        not negative); ``default`` where absent."""
         value = self.raw(name, False)
         if value is None:
             return default
@@ -270,16 +285,17 @@ class Reader:
             sub = Reader(self.file, {"low": value[0], "high": value[1]}, self.key(name),
                          self.entries)
             sub._meaning = self._meaning
-            lo, hi = sub.number("low"), sub.number("high")
+            lo, hi = (sub.number(end, nonnegative=nonnegative) for end in ("low", "high"))
         else:
-            lo, hi = self.quantities(name, dimension)
+            lo, hi = self.quantities(name, dimension, nonnegative=nonnegative)
         if not lo <= hi:
             self.fail(name, f"expected low <= high, got {value!r}")
         return (float(lo), float(hi))
 
-    def weight_pair(self, stem, default, single: bool = False):
+    def weight_pair(self, stem, default, single: bool = False, nonnegative: bool = False):
         """Bounds ``<stem>_weight = [lo, hi]`` (forces) or ``<stem>_mass`` (kg); with
-        ``single`` one value fixes it (a spring governor's sleeve load)."""
+        ``single`` one value fixes it (a spring governor's sleeve load); ``nonnegative``: zero
+        allowed (no central load)."""
         w, m = f"{stem}_weight", f"{stem}_mass"
         if self.has(w) and self.has(m):
             self.fail(w, f"give either {w} or {m}, not both")
@@ -288,14 +304,16 @@ class Reader:
         if single and self.has(name) and not isinstance(self.table[name], list):
             value = self.quantity(name, dim, nonnegative=True) / scale
             return (value, value)
-        pair = self.pair(name, dim, None)
+        pair = self.pair(name, dim, None, nonnegative=nonnegative)
         return default if pair is None else (pair[0] / scale, pair[1] / scale)
 
     def sub(self, name, required=True, declared: Table | None = None):
         value = self.raw(name, required)
         if value is None:
             return None
-        return Reader(self.file, value, self.key(name), self.entries, declared)
+        out = Reader(self.file, value, self.key(name), self.entries, declared)
+        out.guide = self.guide
+        return out
 
     def tables(self, name, declared: Table | None = None):
         values = self.raw(name, False)
@@ -303,8 +321,11 @@ class Reader:
             return []
         if not isinstance(values, list):
             self.fail(name, "expected an array of tables ([[" + name + "]])")
-        return [Reader(self.file, v, f"{self.key(name)}[{i}]", self.entries, declared)
-                for i, v in enumerate(values)]
+        out = [Reader(self.file, v, f"{self.key(name)}[{i}]", self.entries, declared)
+               for i, v in enumerate(values)]
+        for reader in out:
+            reader.guide = self.guide
+        return out
 
     def weight_or_mass(self, stem, *, required=True, default=None):
         """``<stem>_weight`` (a force, converted with standard gravity) or ``<stem>_mass``."""
@@ -337,7 +358,13 @@ class Reader:
             close = (difflib.get_close_matches(unknown[0], absent, n=1, cutoff=0.6)
                      or difflib.get_close_matches(unknown[0], allowed, n=1, cutoff=0.6))
             hint = f"did you mean {close[0]!r}? " if close else ""
-            self.fail(unknown[0], f"unknown key ({hint}allowed here: {', '.join(allowed)})")
+            listed = ", ".join(allowed)
+            if len(listed) > ALLOWED_CHARS and self.guide:  # one line a person reads
+                table = f"[{self.declared.name}]" if self.declared.name else "the top level"
+                listed = f"{len(allowed)} keys allowed here, listed in {self.guide} {table}"
+            else:
+                listed = f"allowed here: {listed}"
+            self.fail(unknown[0], f"unknown key ({hint}{listed})")
 
 
 def read_spec_data(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int = 32) -> dict:

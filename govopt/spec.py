@@ -120,6 +120,7 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
         gov.fail("type", f"expected one of {', '.join(map(repr, REGISTRY))}, got {gtype!r}")
     tables = spec_tables(gtype)
     top.declared = tables[""]
+    top.guide = gov.guide = f"docs/reference/spec.md under {gtype}:"
     name = top.read(top.declared.key("name"))
     top.read(top.declared.key("description"))
     name = name or Path(file).stem
@@ -342,7 +343,7 @@ def _design(ds: Reader | None, governor: Governor, material: Material | None,
     key = governor.mass_key
     design = Design(
         flying_mass=ds.read(decl.key(key)),
-        central_mass=ds.read(decl.key("central")),
+        central_mass=ds.read(decl.key("central")) if governor.central_load else None,
         free_half_length=ds.read(decl.key(governor.free_length_key))
         if governor.spring is not None else None,
         flying_inertia=ds.read(decl.key(f"{key}_inertia")),
@@ -377,8 +378,9 @@ def _requirements(top: Reader, governor: Governor) -> Requirements | None:
         req.finish()
     if bnd is not None:
         v = bnd.read_all(bnd.declared)
-        kw.update(flying_mass=v.pop(governor.mass_key), central_mass=v.pop("central"),
-                  dashpot=v.pop("dashpot_f"), **v)
+        kw.update(flying_mass=v.pop(governor.mass_key), dashpot=v.pop("dashpot_f"), **v)
+        if "central" in kw:
+            kw["central_mass"] = kw.pop("central")
         bnd.finish()
     if cat is not None:
         v = cat.read_all(cat.declared)

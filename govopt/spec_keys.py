@@ -63,7 +63,7 @@ SPEED = Table("speed", "the speeds the governor must float between: a band (inne
     Key("mean", "angular_velocity", "the mean speed omega0", source="Hamabe Part I",
         when="with irregularity, in place of inner and outer"),
     Key("irregularity", "number", "the irregularity delta0 = (omega_a - omega_i) / omega0: "
-                                  "the design's own is at most this", high=2.0,
+                                  "the design's own is at most this", high=2.0, example=0.12,
         source="Hamabe Part I", when="with mean"),
 ), when="required unless the spec only evaluates a given [design]")
 
@@ -76,7 +76,7 @@ def material_table() -> Table:
                                "standard gives the allowables per wire diameter, G and the "
                                "density, and the spring engineering checks run (fatigue, "
                                "tolerances)", default=None, choices=_grades,
-            when="helical springs"),
+            when="to helical springs"),
         Key("tensile_strength", "stress", "the tensile strength R_m", default=None,
             when="with grade (required for grade \"custom\")"),
         Key("surface", "choice", "the wire's surface, for the fatigue check",
@@ -92,9 +92,9 @@ def material_table() -> Table:
                                                 "spring (a grade's rule per wire diameter "
                                                 "where a grade is given)",
             default=None, source="Hamabe Ex. 1",
-            when="helical springs (required without grade)"),
+            when="to helical springs (required there without grade)"),
         Key("shear_modulus", "stress", "the shear modulus G", default=None,
-            default_text="the grade's", when="helical springs (required without grade)"),
+            default_text="the grade's", when="to helical springs (required there without grade)"),
         Key("density", "density", "the wire's or strip's density (the spring's mass)",
             default=7850.0, default_text="the grade's, else 7850 kg/m^3"),
         Key("stress_correction", "choice", "the stress correction of a helical spring's "
@@ -103,9 +103,9 @@ def material_table() -> Table:
             default_text="\"none\" (with a grade: the rules' static correction)",
             source="Wahl 1944; EN 13906-1"),
         Key("elastic_modulus", "stress", "Young's modulus E of a leaf spring", default=None,
-            when="leaf springs (required there)"),
+            when="to leaf springs (required there)"),
         Key("allowable_bending_stress", "stress", "the allowable bending stress of a leaf "
-                                                  "spring", default=None, when="leaf springs"),
+                                                  "spring", default=None, when="to leaf springs"),
     ), when="required to design a spring or to evaluate one given by its section")
 
 
@@ -123,9 +123,10 @@ def design_table(gov, kind) -> Table:
     angular = gov.coordinate == "angle"
     damping = "damping" if angular else "linear_damping"
     keys = [Key(gov.mass_key, "weight", f"each {gov.mass_name}'s weight (a force) or mass",
-                example="12 kgf"),
-            Key("central", "weight", "the central (sleeve) load's weight or mass",
-                default=None, default_text="none")]
+                example="12 kgf")]
+    if gov.central_load:
+        keys.append(Key("central", "weight", "the central (sleeve) load's weight or mass",
+                        default=None, default_text="none"))
     if kind is not None:
         spring = "with spring_stiffness or the spring's section"
         keys += [Key("spring_stiffness", "stiffness", "the spring's stiffness kappa, in place of "
@@ -153,7 +154,7 @@ def design_table(gov, kind) -> Table:
                "speed.inner and speed.outer" if kind is not None else "")
     return Table("design", "a given design, to evaluate (govopt evaluate; govopt design -o "
                            f"writes one){without}", tuple(keys),
-                 when="for govopt evaluate")
+                 when="read by govopt evaluate")
 
 
 def engine_table(gov) -> Table:
@@ -192,7 +193,7 @@ def load_change_table(gov) -> Table:
             **_configuration(gov)),
         Key("to", dim, f"the configuration ({gov.coordinate_name}) after it",
             **_configuration(gov)),
-    ), array=True, when="with [engine]")
+    ), array=True, when="read with [engine]")
 
 
 ANALYSIS = Table("analysis", "fidelity settings (every default is the exact model)", (
@@ -278,7 +279,7 @@ def requirements_table(kind) -> Table:
         Key("robust_seed", "count", "robust design: the Monte-Carlo seed",
             default=_REQ.robust_seed, nonnegative=True),
         *(kind.requirements if kind is not None else ()),
-    ), when="for govopt design")
+    ), when="read by govopt design")
 
 
 def bounds_table(gov, kind) -> Table:
@@ -288,13 +289,15 @@ def bounds_table(gov, kind) -> Table:
                            "part: a design is not checked against them)", (
         Key(gov.mass_key, "weight", f"each {gov.mass_name}'s weight (or mass) searched",
             shape="pair", default=_REQ.flying_mass),
-        Key("central", "weight", "the central (sleeve) load's weight (or mass) searched; one "
-                                 "value fixes it", shape="pair", single=True,
-            default=_REQ.central_mass, default_text="[0, 0] kg: no central load"),
+        *([Key("central", "weight", "the central (sleeve) load's weight (or mass) searched; "
+                                    "one value fixes it", shape="pair", single=True,
+               nonnegative=True, default=_REQ.central_mass,
+               default_text="[0, 0] kg: no central load")]
+          if gov.central_load else []),
         Key("dashpot_f", damping, "the dash-pot coefficients searched", shape="pair",
             default=None, default_text="any that meets the load-change requirements"),
         *(kind.bounds if kind is not None else ()),
-    ), when="for govopt design")
+    ), when="read by govopt design")
 
 
 def catalogue_table(kind) -> Table:
@@ -303,7 +306,7 @@ def catalogue_table(kind) -> Table:
         Key("weight_step", "force", "the step of the flying and central weights",
             default=_REQ.mass_step * G_STANDARD, default_text=f"{_REQ.mass_step:g} kgf"),
         *(kind.catalogue if kind is not None else ()),
-    ), when="for govopt design")
+    ), when="read by govopt design")
 
 
 def governor_table(gov) -> Table:

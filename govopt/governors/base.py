@@ -151,6 +151,9 @@ class Governor(ABC):
     optional_spring: ClassVar[str | None] = None
     #: what the ``[design]`` key :attr:`free_length_key` holds
     free_length_meaning: ClassVar[str] = "the spring's free length l0"
+    #: the type carries a central (sleeve) load, which ``[design] central_weight`` gives and
+    #: the design search varies within ``[bounds] central_weight``
+    central_load: ClassVar[bool] = False
 
     #: innermost, outermost and normal configurations (SI), set by :meth:`parse`
     x_inner: float

@@ -82,7 +82,7 @@ SLEEVE_LIFT = Key("sleeve_lift", "length", "the sleeve's lift from the innermost
                   source="textbook 3.5(a), eq. vi: h = (b/a)(r_1 - r_2)")
 CRANK_ANGLE = Key("crank_angle", "angle", "the angle between the bell crank's two arms "
                                           "(\"usually 90 deg but in practice it may be "
-                                          "greater\")", default=RIGHT_ANGLE,
+                                          "greater\")", default=RIGHT_ANGLE, example="90 deg",
                   default_text="90 deg", low=0.0, high=np.pi, range_text="(0 deg, 180 deg)",
                   source="textbook 3.5(a)")
 OBLIQUITY = Key("obliquity", "choice", "\"exact\": the levers' true geometry (the balls' weight "
@@ -212,6 +212,7 @@ class BellCrankGovernor(Governor):
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
+    central_load: ClassVar[bool] = True
     #: True where the fulcrum rides on the sleeve and the ball hangs below it (Fig. 3.12)
     fulcrum_on_sleeve: ClassVar[bool] = False
     #: the spec key of the lever's second arm

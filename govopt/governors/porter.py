@@ -221,6 +221,7 @@ class BallGovernor(Governor):
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
+    central_load: ClassVar[bool] = True
 
     def __init__(self, linkage: Linkage, x_inner, x_outer, x_normal, sleeve_friction=0.0,
                  spring=None, lever_ratio=0.0, spring_length=0.0):

@@ -97,7 +97,8 @@ class SpringLoadedGovernor(BellCrankGovernor):
         ("direct" | "lever"), ``ball_springs`` (default 2), ``spring_length`` (the design
         spring's length at ``radius_inner``) and, for the lever, :data:`LEVER_KEYS`."""
         common = cls.read_common(reader)
-        v = reader.read_all((VARIANT, BALL_SPRINGS), {"radius_inner": common["x_inner"]})
+        v = {"radius_inner": common["x_inner"]}
+        reader.read_all((VARIANT, BALL_SPRINGS), v)
         lever = v["variant"] == "lever"
         extra = dict(variant=v["variant"], ball_springs=v["ball_springs"],
                      spring_length=reader.read(SPRING_LENGTH, v, required=lever or None))
