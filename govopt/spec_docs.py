@@ -60,7 +60,7 @@ def _cell(text: str) -> str:
     return str(text).replace("|", "\\|").replace("\n", " ")
 
 
-def _kind_words(key: Key) -> str:
+def kind_words(key: Key) -> str:
     if key.kind == WEIGHT:
         words = "weight (force) or mass (N or kg)"
     elif key.quantity:
@@ -94,7 +94,7 @@ def table_markdown(table: Table, heading: str) -> list[str]:
         when = f" ({key.when})" if key.kind == "table" else f" (applies {key.when})"
         meaning = key.meaning + (when if key.when else "")
         lines.append("| " + " | ".join(_cell(c) for c in (
-            _key_names(key), meaning, _kind_words(key),
+            _key_names(key), meaning, kind_words(key),
             "required" if key.required else key.default_words(), key.range_words(),
             key.source)) + " |")
     return lines + [""]
@@ -196,17 +196,19 @@ def _suggested(key: Key, name: str):
     return EXAMPLES[dim]
 
 
+def describe(key: Key) -> str:
+    """A key in sentences: its meaning, kind, default, range, when it applies and its source
+    (the templates' comments, the schema's descriptions)."""
+    facts = [kind_words(key), "required" if key.required and not key.when else
+             f"default {key.default_words()}" if not key.required else "", key.range_words()]
+    return (key.meaning[0].upper() + key.meaning[1:] + ". " + "; ".join(f for f in facts if f)
+            + (f"; applies {key.when}" if key.when else "")
+            + (f" ({key.source})" if key.source else "") + ".")
+
+
 def _comment(key: Key) -> list[str]:
-    """The comment above a key: its meaning, kind, default, range and source."""
-    parts = [key.meaning[0].upper() + key.meaning[1:] + "."]
-    facts = [_kind_words(key)]
-    facts.append("required" if key.required and not key.when else
-                  f"default {key.default_words()}" if not key.required else "")
-    facts.append(key.range_words())
-    facts = [f for f in facts if f]
-    parts.append("; ".join(facts) + (f"; applies {key.when}" if key.when else "")
-                 + (f" ({key.source})" if key.source else "") + ".")
-    return ["# " + line for line in textwrap.wrap(" ".join(parts), 96)]
+    """The comment above a key in a template (:func:`describe`)."""
+    return ["# " + line for line in textwrap.wrap(describe(key), 96)]
 
 
 def _table_lines(table: Table, data: dict | None, tables: dict, prefix: str = "") -> list[str]:

@@ -16,25 +16,11 @@ import json
 import math
 
 from .keys import WEIGHT, Key, Table
+from .spec_docs import describe
 
 #: a string with a unit: a letter that is not an exponent's ``e``, or a degree, minute or
 #: second sign (no look-ahead, which taplo's regular expressions lack)
 UNIT_PATTERN = "[A-DF-Za-df-z_°µ'\"%]"
-
-
-def _describe(key: Key) -> str:
-    from .spec_docs import _kind_words
-
-    parts = [key.meaning[0].upper() + key.meaning[1:] + "."]
-    facts = [_kind_words(key), "required" if key.required and not key.when else
-             (f"default {key.default_words()}" if not key.required else ""),
-             key.range_words()]
-    parts.append("; ".join(f for f in facts if f) + ".")
-    if key.when:
-        parts.append(f"Applies {key.when}.")
-    if key.source:
-        parts.append(f"Source: {key.source}.")
-    return " ".join(parts)
 
 
 def _limits(key: Key) -> dict:
@@ -84,7 +70,7 @@ def _key_schema(key: Key, name: str) -> dict:
     extra = key.options() if key.kind != "choice" else ()
     if extra:
         schema = {"anyOf": [schema, {"enum": list(extra)}]}
-    out = {"description": _describe(key), **schema}
+    out = {"description": describe(key), **schema}
     default = key.default
     if key.kind in ("choice", "flag", "count", "number") and key.shape == "scalar" \
             and isinstance(default, bool | int | float | str) and not callable(default):

@@ -240,3 +240,90 @@ def test_spring_length_of_the_ball_springs_defaults_to_the_balls_distance():
     del lever["governor"]["spring_length"]
     with pytest.raises(govopt.SpecError, match="spring_length: missing"):
         parse_spec(lever, "ex7.toml")
+
+
+# -- search bounds ----------------------------------------------------------------------------
+
+
+def test_a_written_design_is_evaluated_without_its_search_bounds(tmp_path):
+    """`govopt design hartnell-design.toml -o d.toml && govopt evaluate d.toml`: the design
+    file keeps the spec's [bounds] (they are the search's), and neither the design nor its
+    evaluation checks the made part against them."""
+    out = tmp_path / "d.toml"
+    run = invoke(["design", str(SPECS / "hartnell-design.toml"), "-o", str(out), "--json"])
+    assert run.exit_code == 0, run.output
+    designed = json.loads(run.stdout)
+    assert "bounds" in tomllib.loads(out.read_text())
+    run = invoke(["evaluate", str(out), "--json"])
+    assert run.exit_code == 0, run.output
+    evaluated = json.loads(run.stdout)
+    for res in (designed, evaluated):
+        names = [c["name"] for c in res["checks"]]
+        bounds = {f"{x} {s}" for x in ("ball mass", "wire diameter", "coil radius",
+                                       "active turns") for s in (">= min", "<= max")}
+        assert not bounds & set(names), names
+        assert all(c["group"] != "bounds" for c in res["checks"])
+    text = invoke(["evaluate", str(out)]).stdout
+    assert ">= min" not in text.replace("spring index >= min", "")
+
+
+def test_design_reports_the_bounds_it_searched_and_a_value_at_one():
+    """The design's record lists every bound searched, the defaults marked, and says where the
+    design takes the least value the search could give a variable (the Porter's balls at 2 kgf,
+    the lower end of bounds.ball_weight)."""
+    from govopt.optimize.design import design
+
+    data = tomllib.loads((SPECS / "porter-design.toml").read_text())
+    data["bounds"]["ball_weight"] = ["4 kgf", "10 kgf"]
+    res = design(parse_spec(data, "porter.toml"))
+    searched = {b["name"]: b for b in res.optimisation["search_bounds"]}
+    assert searched["ball_mass"]["at"] == "lower" and searched["ball_mass"]["value_kg"] == 4.0
+    assert searched["ball_mass"]["key"] == "ball_weight" and searched["ball_mass"]["given"]
+    notes = res.optimisation["notes"]
+    assert "at the lower search bound of ball_mass (4 kg): widen [bounds] ball_weight to " \
+           "search beyond it" in notes
+    assert any(n.startswith("search bounds ([bounds]): ball_mass 4 kg .. 10 kg, central_mass "
+                            "10 kg .. 100 kg") for n in notes)
+    hartnell = design(govopt.load_spec(SPECS / "hartnell-design.toml"))
+    line = next(n for n in hartnell.optimisation["notes"] if n.startswith("search bounds"))
+    assert "central_mass 0 kg (default, fixed)" in line  # a default, stated
+
+
+def test_equal_bounds_fix_a_value():
+    """`ball_weight = ["2.5 kgf", "2.5 kgf"]` fixes the balls; a wire fixed off the catalogue
+    is that wire."""
+    from govopt.optimize.design import design
+
+    data = tomllib.loads((SPECS / "hartnell-design.toml").read_text())
+    data["bounds"].update(ball_weight=["2.5 kgf", "2.5 kgf"], wire_diameter=["5.7 mm", "5.7 mm"])
+    res = design(parse_spec(data, "h.toml"))
+    assert res.design.flying_mass == pytest.approx(2.5)
+    assert res.design.wire_diameter == pytest.approx(0.0057)
+    fixed = {b["name"] for b in res.optimisation["search_bounds"] if b["at"] == "fixed"}
+    assert fixed >= {"ball_mass", "wire_diameter"}
+    data["bounds"]["ball_weight"] = ["3 kgf", "2 kgf"]
+    with pytest.raises(govopt.SpecError, match="expected low <= high"):
+        parse_spec(data, "h.toml")
+
+
+def test_porter_without_bounds_is_told_its_central_load_bound(tmp_path):
+    """A Porter spec without [bounds] searches a central load of 0 .. 0 kg (the default): no
+    ball floats it at 190-224 rpm, and the diagnosis names that bound first, with the central
+    load that makes the spec feasible; that bound does, and a little less does not."""
+    from govopt.errors import InfeasibleError
+    from govopt.optimize.design import design
+
+    data = tomllib.loads((SPECS / "porter-design.toml").read_text())
+    del data["bounds"]
+    with pytest.raises(InfeasibleError) as info:
+        design(parse_spec(data, "porter.toml"))
+    message = str(info.value)
+    moves = message.split("it becomes feasible if one of these moves: ")[1].split("; ")
+    assert moves[0].startswith("bounds.central_weight 0 .. 0 kg (the default: no central "
+                               "load) -> 0 .. "), message
+    upper = float(moves[0].split(" .. ")[-1].removesuffix(" kg"))
+    data["bounds"] = {"central_mass": ["0 kg", f"{upper} kg"]}
+    assert design(parse_spec(data, "porter.toml")).design.central_mass <= upper
+    data["bounds"] = {"central_mass": ["0 kg", f"{upper - 0.5} kg"]}
+    with pytest.raises(InfeasibleError):
+        design(parse_spec(data, "porter.toml"))

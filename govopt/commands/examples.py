@@ -8,8 +8,8 @@ from typing import Annotated
 
 import typer
 
-from . import common
 from ..errors import GovoptError
+from . import common
 from .common import FORCE_HELP, Command, echo, guarded
 
 EXAMPLES_SHORT = "List the bundled example specs."

@@ -34,7 +34,8 @@ SLEEVE_ARM = Key("sleeve_arm", "length", "the bell crank's sleeve arm b, from th
                  source="textbook 3.5(a), Fig. 3.10", example="9 cm")
 SPRING_LENGTH = spring_length_key(
     "the compression spring's installed length with the sleeve down (at radius_inner), "
-    "between the collar and its seat; it shortens by the sleeve lift", source="textbook 3.5(a)",
+    "between the collar and its seat; it shortens by the sleeve lift. The levers do not fix "
+    "it (the frame does), so it has no default", source="textbook 3.5(a)",
     example="10 cm")
 
 

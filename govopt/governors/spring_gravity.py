@@ -34,7 +34,8 @@ ROLLER_ARM = Key("roller_arm", "length", "the bell crank's roller arm b, from th
                  source="textbook 3.5(c), Fig. 3.12")
 SPRING_LENGTH = spring_length_key(
     "the compression spring's length between the sleeve and the cap at radius_inner; it "
-    "shortens by the sleeve lift", source="textbook 3.5(c)")
+    "shortens by the sleeve lift. The levers do not fix it (the cap's height does), so it has "
+    "no default", source="textbook 3.5(c)")
 
 
 class SpringGravityGovernor(BellCrankGovernor):
