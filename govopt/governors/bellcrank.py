@@ -61,15 +61,17 @@ import numpy as np
 from ..keys import Key
 from ..units import G_STANDARD
 from .base import Governor, Terms
+from .porter import RANGE
 
 OBLIQUITIES = ("exact", "small_angle")
 RIGHT_ANGLE = np.pi / 2
+#: the ball radius range as the ball governors give it (:mod:`.porter`); the outer radius may
+#: be given by the sleeve's lift instead
+RADIUS_INNER, _, RADIUS_NORMAL = RANGE
 
 BALL_ARM = Key("ball_arm", "length", "the bell crank's ball arm a, from the fulcrum to the "
                                      "ball's centre", source="textbook 3.5(a), Fig. 3.10",
                example="15 cm")
-RADIUS_INNER = Key("radius_inner", "length", "the balls' radius of rotation at the innermost "
-                                             "configuration (sleeve down, lowest speed)")
 RADIUS_OUTER = Key("radius_outer", "length", "the balls' radius of rotation at the outermost "
                                              "configuration (sleeve up, highest speed)",
                    default=None, default_text="from sleeve_lift",
@@ -90,10 +92,6 @@ OBLIQUITY = Key("obliquity", "choice", "\"exact\": the levers' true geometry (th
                                        "simplification (arms square to the forces, the balls' "
                                        "weight neglected; a 90 deg crank only)",
                 default="exact", choices=OBLIQUITIES, source="textbook 3.5(a)")
-RADIUS_NORMAL = Key("radius_normal", "length", "the balls' radius at the normal configuration "
-                                               "(the dynamics' reference), within the range",
-                    default=lambda v: 0.5 * (v["radius_inner"] + v["radius_outer"]),
-                    default_text="the mid radius, (radius_inner + radius_outer) / 2")
 SLEEVE_FRICTION = Key("sleeve_friction", "force", "the friction force R at the sleeve, added to "
                                                   "the spring force rising and subtracted "
                                                   "falling", default=0.0, nonnegative=True,
