@@ -182,7 +182,7 @@ class Key:
             text = f"[low, high], each {text}; low <= high (equal ends fix it)"
             if self.single:
                 text += ", or one value"
-        extra = self.options()
+        extra = [c for c in self.options() if f'"{c}"' not in text]
         if extra:
             text += " or " + ", ".join(f'"{c}"' for c in extra)
         return text

@@ -1,8 +1,10 @@
 """Reading a spec file: the TOML read safely (:func:`read_spec_data`) and its tables read key by
-key (:class:`Reader`: units, types, ranges, unknown keys with a did-you-mean). Every error is a
-:class:`SpecError` naming the file, the key path and what was expected. Governor specs
-(:mod:`govopt.spec`) and spring specs (:mod:`govopt.spring_command`) read through it; it knows
-no governor, so ``govopt spring`` loads none."""
+key (:class:`Reader`: units, types, ranges, unknown keys with a did-you-mean). A table read with
+its declaration (:class:`govopt.keys.Table`) is read by :meth:`Reader.read`, one declared key at
+a time (dimension, default, range and meaning from the declaration), and takes no key that is
+not declared. Every error is a :class:`SpecError` naming the file, the key path and what was
+expected. Governor specs (:mod:`govopt.spec`) and spring specs (:mod:`govopt.spring_command`)
+read through it; it knows no governor, so ``govopt spring`` loads none."""
 
 from __future__ import annotations
 

@@ -75,7 +75,7 @@ BALL_ARM = Key("ball_arm", "length", "the bell crank's ball arm a, from the fulc
 RADIUS_OUTER = Key("radius_outer", "length", "the balls' radius of rotation at the outermost "
                                              "configuration (sleeve up, highest speed)",
                    default=None, default_text="from sleeve_lift",
-                   when="unless sleeve_lift is given (give one of the two)")
+                   when="unless sleeve_lift is given: give one of the two")
 SLEEVE_LIFT = Key("sleeve_lift", "length", "the sleeve's lift from the innermost to the "
                                            "outermost configuration, in place of radius_outer "
                                            "(which follows from the levers: (a/b) times the "

@@ -170,7 +170,7 @@ FORM = Table("spring", "the helical spring's form, for the spring engineering ch
         nonnegative=True),
     Key("initial_tension", "force", "an extension spring's initial tension", default=None,
         nonnegative=True, default_text="the middle of Shigley's preferred range, at most the "
-                                       "least working force", source="Shigley 10-10"),
+                                       "least working force"),
     Key("hook_bend_radius", "length", "an extension spring's hook bend radius", default=None,
         default_text="2 d"),
 ))
