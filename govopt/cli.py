@@ -34,7 +34,10 @@ COMMANDS = {
     "bench": ("bench", "app", "Speed against error of every analysis and the speed targets "
                               "beside what was measured."),
     "examples": ("examples", "examples_app", "List the bundled example specs."),
-    "init": ("examples", "init_app", "Copy a bundled example spec here, to start from."),
+    "init": ("examples", "init_app", "Copy a bundled example spec here, or write a type's "
+                                     "template, to start from."),
+    "schema": ("examples", "schema_app", "Write the JSON Schema of a spec file, for TOML "
+                                         "editors."),
     "study": ("study", "app", "Batch trade studies: sweep a spec's inputs, one row per point "
                               "in an SQLite database; export, plot and summarise it."),
 }

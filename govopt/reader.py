@@ -1,8 +1,10 @@
 """Reading a spec file: the TOML read safely (:func:`read_spec_data`) and its tables read key by
-key (:class:`Reader`: units, types, ranges, unknown keys with a did-you-mean). Every error is a
-:class:`SpecError` naming the file, the key path and what was expected. Governor specs
-(:mod:`govopt.spec`) and spring specs (:mod:`govopt.spring_command`) read through it; it knows
-no governor, so ``govopt spring`` loads none."""
+key (:class:`Reader`: units, types, ranges, unknown keys with a did-you-mean). A table read with
+its declaration (:class:`govopt.keys.Table`) is read by :meth:`Reader.read`, one declared key at
+a time (dimension, default, range and meaning from the declaration), and takes no key that is
+not declared. Every error is a :class:`SpecError` naming the file, the key path and what was
+expected. Governor specs (:mod:`govopt.spec`) and spring specs (:mod:`govopt.spring_command`)
+read through it; it knows no governor, so ``govopt spring`` loads none."""
 
 from __future__ import annotations
 
@@ -16,6 +18,7 @@ import numpy as np
 
 from . import limits
 from .errors import GovoptError
+from .keys import WEIGHT, Key, Table
 from .units import G_STANDARD, SI_UNITS, UnitError, parse_quantity
 
 
@@ -27,6 +30,8 @@ class Entry:
     written: str
     si: float | str
     unit: str
+    #: what the key is, one line (its declaration's :attr:`govopt.keys.Key.meaning`)
+    meaning: str = ""
 
 
 class SpecError(GovoptError):
@@ -50,15 +55,96 @@ KEY_SYNONYMS: dict[str, tuple[str, str]] = {
 }
 
 
+#: the longest list of allowed keys an error line gives in full; a longer one is pointed to
+#: the reference (:attr:`Reader.guide`), never cut short
+ALLOWED_CHARS = 160
+
+
 class Reader:
     """Reads one TOML table, recording which keys were used; :meth:`finish` rejects the rest."""
 
-    def __init__(self, file: str, table: dict, path: str, entries: list[Entry]):
+    def __init__(self, file: str, table: dict, path: str, entries: list[Entry],
+                 declared: Table | None = None):
         if not isinstance(table, dict):
             raise SpecError(f"{file}: {path or 'top level'}: expected a table, got "
                             f"{limits.shorten(table)}")
         self.file, self.table, self.path, self.entries = file, table, path, entries
+        #: the table's declaration (:class:`govopt.keys.Table`): its keys are the ones allowed
+        self.declared = declared
+        #: where a person finds the keys of a table too long to list in an error line
+        #: (``"docs/reference/spec.md under hartnell:"``); the tables read from this one inherit
+        #: it
+        self.guide = ""
         self.used: set[str] = set()
+        self._meaning = ""  # the meaning of the key being read, for its Entry
+
+    # -- declared keys ----------------------------------------------------------------------
+
+    def read(self, key: Key, values: dict | None = None, *, required: bool | None = None):
+        """The value of the declared ``key`` (SI; see :class:`govopt.keys.Key`), recorded with
+        its meaning. ``values``: the values read before it in this table, for a default or a
+        range that depends on them; the value read is added to it under ``key.name``.
+        ``required`` overrides the declaration's (a key needed in one configuration only:
+        then absent means None)."""
+        values = {} if values is None else values
+        need = key.required if required is None else required
+        if not need and not any(map(self.has, key.names)):  # the default, from what is read
+            self.used.update(key.names)
+            value = key.default_value(values)
+        else:
+            self._meaning = key.meaning
+            try:
+                value = self._read(key, values, need, None)
+            finally:
+                self._meaning = ""
+        values[key.name] = value
+        return value
+
+    def read_all(self, keys, values: dict | None = None) -> dict:
+        """Every key of ``keys`` (a :class:`govopt.keys.Table` or keys) by :meth:`read`, in
+        order: ``{name: value}`` of these keys (``values``, the values read before them, is
+        updated with them too)."""
+        values = {} if values is None else values
+        keys = getattr(keys, "keys", keys)
+        for key in keys:
+            self.read(key, values)
+        return {key.name: values[key.name] for key in keys}
+
+    def _read(self, key: Key, values: dict, need: bool, default):
+        name, kind = key.name, key.kind
+        bounds = dict(low=key.limit("low", values), high=key.limit("high", values),
+                      positive=key.positive, nonnegative=key.nonnegative,
+                      range_text=key.range_text or None)
+        if kind == WEIGHT:
+            if key.shape == "pair":
+                return self.weight_pair(name, default, single=key.single,
+                                        nonnegative=key.nonnegative)
+            return self.weight_or_mass(name, required=need, default=default)
+        if key.shape == "pair":
+            return self.pair(name, kind, default, nonnegative=key.nonnegative)
+        if key.shape == "list":
+            value = self.raw(name, False) if not need else None
+            if (value is None and not need) or value in key.options():
+                self.used.add(name)
+                return default if value is None else value
+            return tuple(self.quantities(name, kind, **bounds))
+        if kind == "choice":
+            if need:
+                self.raw(name, True)
+            return self.choice(name, key.options(), default)
+        if kind == "text":
+            return self.text(name, default)
+        if kind == "flag":
+            return self.boolean(name, default)
+        if kind == "table":
+            value = self.raw(name, need)
+            return default if value is None else value
+        if key.options() and isinstance(self.table.get(name), str):  # a number or a word
+            return self.choice(name, key.options(), default)
+        if kind in ("number", "count", "dimensionless"):
+            return self.number(name, required=need, default=default, integer=kind == "count",
+                               **bounds)
+        return self.quantity(name, kind, required=need, default=default, **bounds)
 
     def key(self, name: str) -> str:
         return f"{self.path}.{name}" if self.path else name
@@ -76,6 +162,10 @@ class Reader:
         return name in self.table
 
     def raw(self, name: str, required: bool):
+        if self.declared is not None and not self.declared.open \
+                and name not in self.declared.names:  # the parser's own mistake, not the user's
+            raise AssertionError(f"{self.key(name)}: read, but not declared in "
+                                 f"[{self.declared.name}]")
         self.used.add(name)
         if name not in self.table:
             if required:
@@ -105,7 +195,8 @@ class Reader:
         except UnitError as exc:
             self.fail(name, str(exc))
         self._check_range(name, value, si, positive, nonnegative, low, high, range_text)
-        self.entries.append(Entry(self.key(name), str(value), si, SI_UNITS[dimension]))
+        self.entries.append(Entry(self.key(name), str(value), si, SI_UNITS[dimension],
+                                  self._meaning))
         return si
 
     def number(self, name, *, required=True, default=None, positive=True, nonnegative=False,
@@ -127,7 +218,7 @@ class Reader:
             self.fail(name, f"expected a whole number (a count), got {value!r}")
         self._check_range(name, value, float(value), positive, nonnegative, low, high,
                           range_text)
-        self.entries.append(Entry(self.key(name), str(value), float(value), ""))
+        self.entries.append(Entry(self.key(name), str(value), float(value), "", self._meaning))
         return int(value) if integer else float(value)
 
     def _check_range(self, name, written, si, positive, nonnegative, low, high,
@@ -147,7 +238,7 @@ class Reader:
             return default
         if value not in choices:
             self.fail(name, f"expected one of {', '.join(map(repr, choices))}, got {value!r}")
-        self.entries.append(Entry(self.key(name), str(value), value, ""))
+        self.entries.append(Entry(self.key(name), str(value), value, "", self._meaning))
         return value
 
     def text(self, name, default=""):
@@ -158,7 +249,7 @@ class Reader:
             self.fail(name, f"expected a string, got {value!r}")
         if len(value) > limits.MAX_TEXT_CHARS:
             self.fail(name, limits.count_error(len(value), limits.MAX_TEXT_CHARS, "characters"))
-        self.entries.append(Entry(self.key(name), value, value, ""))
+        self.entries.append(Entry(self.key(name), value, value, "", self._meaning))
         return value
 
     def boolean(self, name, default):
@@ -167,7 +258,8 @@ class Reader:
             return default
         if not isinstance(value, bool):
             self.fail(name, f"expected true or false, got {value!r}")
-        self.entries.append(Entry(self.key(name), str(value).lower(), str(value).lower(), ""))
+        self.entries.append(Entry(self.key(name), str(value).lower(), str(value).lower(), "",
+                                  self._meaning))
         return value
 
     def quantities(self, name, dimension, **kw):
@@ -179,45 +271,102 @@ class Reader:
         sub = Reader(self.file, {str(i): v for i, v in enumerate(values)}, self.key(name),
                       self.entries)
         sub.key = lambda i: f"{self.key(name)}[{i}]"  # type: ignore[method-assign]
+        sub._meaning = self._meaning
         return np.array([sub.quantity(str(i), dimension, **kw) for i in range(len(values))])
 
-    def sub(self, name, required=True):
+    def pair(self, name, dimension, default, nonnegative=False):
+        """A bound ``[low, high]`` of ``dimension`` (SI; bare numbers for "dimensionless"),
+        ``low <= high`` (equal ends fix the value), each positive (or, with ``nonnegative``,
+        not negative); ``default`` where absent."""
+        value = self.raw(name, False)
+        if value is None:
+            return default
+        if not isinstance(value, list) or len(value) != 2:
+            self.fail(name, f"expected [low, high], got {value!r}")
+        if dimension == "dimensionless":
+            sub = Reader(self.file, {"low": value[0], "high": value[1]}, self.key(name),
+                         self.entries)
+            sub._meaning = self._meaning
+            lo, hi = (sub.number(end, nonnegative=nonnegative) for end in ("low", "high"))
+        else:
+            lo, hi = self.quantities(name, dimension, nonnegative=nonnegative)
+        if not lo <= hi:
+            self.fail(name, f"expected low <= high, got {value!r}")
+        return (float(lo), float(hi))
+
+    def weight_pair(self, stem, default, single: bool = False, nonnegative: bool = False):
+        """Bounds ``<stem>_weight = [lo, hi]`` (forces) or ``<stem>_mass`` (kg); with
+        ``single`` one value fixes it (a spring governor's sleeve load); ``nonnegative``: zero
+        allowed (no central load)."""
+        w, m = f"{stem}_weight", f"{stem}_mass"
+        if self.has(w) and self.has(m):
+            self.fail(w, f"give either {w} or {m}, not both")
+        self.used.update((w, m))
+        name, dim, scale = (w, "force", G_STANDARD) if self.has(w) else (m, "mass", 1.0)
+        if single and self.has(name) and not isinstance(self.table[name], list):
+            value = self.quantity(name, dim, nonnegative=True) / scale
+            return (value, value)
+        pair = self.pair(name, dim, None, nonnegative=nonnegative)
+        return default if pair is None else (pair[0] / scale, pair[1] / scale)
+
+    def sub(self, name, required=True, declared: Table | None = None):
         value = self.raw(name, required)
         if value is None:
             return None
-        return Reader(self.file, value, self.key(name), self.entries)
+        out = Reader(self.file, value, self.key(name), self.entries, declared)
+        out.guide = self.guide
+        return out
 
-    def tables(self, name):
+    def tables(self, name, declared: Table | None = None):
         values = self.raw(name, False)
         if values is None:
             return []
         if not isinstance(values, list):
             self.fail(name, "expected an array of tables ([[" + name + "]])")
-        return [Reader(self.file, v, f"{self.key(name)}[{i}]", self.entries)
-                for i, v in enumerate(values)]
+        out = [Reader(self.file, v, f"{self.key(name)}[{i}]", self.entries, declared)
+               for i, v in enumerate(values)]
+        for reader in out:
+            reader.guide = self.guide
+        return out
 
     def weight_or_mass(self, stem, *, required=True, default=None):
         """``<stem>_weight`` (a force, converted with standard gravity) or ``<stem>_mass``."""
         w, m = f"{stem}_weight", f"{stem}_mass"
         if self.has(w) and self.has(m):
             self.fail(w, f"give either {w} or {m}, not both")
+        self.used.update((w, m))
         if self.has(m):
             return self.quantity(m, "mass")
         weight = self.quantity(w, "force", required=required and not self.has(m), default=None)
         return default if weight is None else weight / G_STANDARD
 
+    def allowed(self) -> list[str]:
+        """The keys this table may have: its declaration's (every key of the table, in
+        declared order), else the keys read."""
+        if self.declared is not None:
+            return self.declared.names
+        return sorted(self.used)
+
     def finish(self):
-        unknown = sorted(set(self.table) - self.used)
+        """Reject a key not read (a misspelling, another type's key), naming the closest
+        allowed key and every allowed key (in full: the list is the reference's)."""
+        allowed = self.allowed()
+        unknown = sorted(set(map(str, self.table)) - self.used)
+        if unknown and unknown[0] in allowed:  # declared, but not read in this configuration
+            when = self.declared.key(unknown[0]).when
+            self.fail(unknown[0], f"does not apply here{f' (it applies {when})' if when else ''}")
         if unknown:
-            absent = sorted(self.used - set(self.table))  # read but not given: the likelier
-            close = (difflib.get_close_matches(str(unknown[0]), absent, n=1, cutoff=0.6)
-                     or difflib.get_close_matches(str(unknown[0]), sorted(self.used), n=1,
-                                                  cutoff=0.6))
+            absent = [k for k in allowed if k not in self.table]  # not given: the likelier
+            close = (difflib.get_close_matches(unknown[0], absent, n=1, cutoff=0.6)
+                     or difflib.get_close_matches(unknown[0], allowed, n=1, cutoff=0.6))
             hint = f"did you mean {close[0]!r}? " if close else ""
-            allowed = ", ".join(sorted(self.used))
-            if len(allowed) > 150:  # one line: the first keys, the count
-                allowed = f"{allowed[:150].rsplit(', ', 1)[0]}, ... ({len(self.used)} keys)"
-            self.fail(unknown[0], f"unknown key ({hint}allowed here: {allowed})")
+            listed = ", ".join(allowed)
+            if len(listed) > ALLOWED_CHARS and self.guide:  # one line a person reads
+                table = f"[{self.declared.name}]" if self.declared.name else "the top level"
+                listed = f"{len(allowed)} keys allowed here, listed in {self.guide} {table}"
+            else:
+                listed = f"allowed here: {listed}"
+            self.fail(unknown[0], f"unknown key ({hint}{listed})")
 
 
 def read_spec_data(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int = 32) -> dict:

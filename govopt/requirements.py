@@ -170,12 +170,11 @@ INDEX_SOURCE = ("requirements.spring_index (EN 13906-1 scope, cold coiled: 4 <= 
 
 
 def requirement_rows(spec, req) -> list[Row]:
-    """The design requirements (group ``"spring"``) and search bounds (group ``"bounds"``) of
-    `govopt design`; ``ev``: ``d``, ``r``, ``n`` (wire diameter, coil radius, active turns),
-    ``m`` (flying mass), ``l0`` (the type's free length), ``C`` (spring index), ``body``
-    (close-wound body length ``(n + 1) d``), ``surge`` (Hz)."""
-    gov = spec.governor
-    factor = gov.spring_length_factor
+    """The spring's design requirements (group ``"spring"``) of `govopt design`, what a made
+    spring is checked against; ``ev``: ``d``, ``r``, ``n`` (wire diameter, coil radius, active
+    turns), ``l0`` (the type's free length), ``C`` (spring index), ``body`` (close-wound body
+    length ``(n + 1) d``), ``surge`` (Hz)."""
+    factor = spec.governor.spring_length_factor
     rows = [
         Row("spring index >= min", ">=", "", lambda ev: ev["C"], _const(req.spring_index[0]),
             INDEX_SOURCE, group="spring", gp=GP_BOUNDS["C_min"]),
@@ -185,15 +184,6 @@ def requirement_rows(spec, req) -> list[Row]:
             lambda ev: factor * ev["l0"], "close-wound body (n + 1) d within 2 l0",
             group="spring", gp=GP_BOUNDS["L_body_max"]),
     ]
-    for name, key, bounds, unit, gp in ((f"{gov.mass_name} mass", "m", req.flying_mass, "kg",
-                                         None),
-                                        ("wire diameter", "d", req.wire_diameter, "m", "d"),
-                                        ("coil radius", "r", req.coil_radius, "m", "r"),
-                                        ("active turns", "n", req.active_turns, "", "n")):
-        rows += [Row(f"{name} >= min", ">=", unit, lambda ev, k=key: ev[k], _const(bounds[0]), "",
-                     group="bounds", gp=gp and GP_BOUNDS[f"{gp}_min"]),
-                 Row(f"{name} <= max", "<=", unit, lambda ev, k=key: ev[k], _const(bounds[1]), "",
-                     group="bounds", gp=gp and GP_BOUNDS[f"{gp}_max"])]
     if req.max_outer_diameter is not None:
         rows.append(Row("outer diameter", "<=", "m", lambda ev: 2.0 * ev["r"] + ev["d"],
                         _const(req.max_outer_diameter), "", group="spring",
@@ -202,6 +192,21 @@ def requirement_rows(spec, req) -> list[Row]:
         rows.append(Row("surge frequency", ">=", "Hz", lambda ev: ev["surge"],
                         _const(req.min_surge_frequency), "Wahl 1944 ch. 25", group="spring",
                         gp=GP_BOUNDS["f_surge_min"]))
+    return rows
+
+
+def search_bound_rows(req) -> list[Row]:
+    """The helical spring's search bounds (group ``"bounds"``): the limits of the spring GP's
+    continuous bound (:func:`govopt.optimize.design.gp_values`), not requirements of a made
+    spring, which is never checked against them; ``ev``: ``d``, ``r``, ``n``."""
+    rows = []
+    for name, key, bounds, unit in (("wire diameter", "d", req.wire_diameter, "m"),
+                                    ("coil radius", "r", req.coil_radius, "m"),
+                                    ("active turns", "n", req.active_turns, "")):
+        rows += [Row(f"{name} >= min", ">=", unit, lambda ev, k=key: ev[k], _const(bounds[0]), "",
+                     group="bounds", gp=GP_BOUNDS[f"{key}_min"]),
+                 Row(f"{name} <= max", "<=", unit, lambda ev, k=key: ev[k], _const(bounds[1]), "",
+                     group="bounds", gp=GP_BOUNDS[f"{key}_max"])]
     return rows
 
 
@@ -417,5 +422,6 @@ class CheckTable:
 
 
 __all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "Column", "GPForm", "Row", "SpringFigures",
-           "friction_rows", "holds", "load_change_rows", "requirement_rows", "statics_rows",
+           "friction_rows", "holds", "load_change_rows", "requirement_rows",
+           "search_bound_rows", "statics_rows",
            "statics_figures", "stress_row", "vibration_rows"]

@@ -37,18 +37,22 @@ def test_friction_run_uses_the_evaluated_design(tmp_path):
     assert [(c.name, c.value) for c in res.checks] == [(c.name, c.value) for c in same.checks]
 
 
-@pytest.mark.parametrize("name, word", [("hartnell-design.toml", "ball"),
-                                        ("traction-coil-design.toml", "fly weight"),
+@pytest.mark.parametrize("name, stem", [("hartnell-design.toml", "ball"),
+                                        ("traction-coil-design.toml", "fly"),
                                         ("hamabe-design.toml", "pendulum")])
-def test_mass_bound_checks_name_the_types_mass(name, word):
-    """The design's bounds on the flying mass are named with Governor.mass_name."""
+def test_search_bounds_are_no_checks_and_name_the_types_mass(name, stem):
+    """The design's search bounds are not checks of the design (a made part is not held to
+    them); its record states every bound searched, the flying mass's under the type's key."""
     from govopt.optimize.design import design
 
     res = design(govopt.load_spec(SPECS / name))
     names = [c.name for c in res.checks]
-    assert f"{word} mass >= min" in names and f"{word} mass <= max" in names
-    if word != "pendulum":
-        assert not any("pendulum" in n for n in names)
+    assert not any(n.endswith((">= min", "<= max")) and "index" not in n for n in names)
+    assert all(c.group != "bounds" for c in res.checks)
+    searched = res.optimisation["search_bounds"]
+    assert searched[0]["name"] == f"{stem}_mass"
+    assert {b["name"] for b in searched} >= {"wire_diameter", "coil_radius", "active_turns"}
+    assert any(n.startswith("search bounds ([bounds]): ") for n in res.optimisation["notes"])
 
 
 def test_gp_forms_are_the_rows():
@@ -56,14 +60,15 @@ def test_gp_forms_are_the_rows():
     with the same sense, and its limit is the GP parameter the design search fills from the
     row's limit (one declaration for the evaluator, the screen and the GP)."""
     from govopt.optimize import gp_table
-    from govopt.requirements import SpringFigures, requirement_rows
+    from govopt.requirements import SpringFigures, requirement_rows, search_bound_rows
 
     spec = govopt.load_spec(SPECS / "hamabe-design.toml")
     req, mat = spec.requirements, spec.material
     d, r, n, l0 = 0.004, 0.02, 9.0, 0.05
     ev = SpringFigures(d, r, n, l0, mat, m=1.0)
     P = {"G": mat.shear_modulus, "density": mat.density}
-    rows = [row for row in requirement_rows(spec, req) if row.gp is not None]
+    rows = [row for row in (*requirement_rows(spec, req), *search_bound_rows(req))
+            if row.gp is not None]
     assert {row.gp.limit for row in rows} >= {"d_min", "d_max", "r_min", "r_max", "n_min",
                                              "n_max", "C_min", "C_max", "L_body_max"}
     for row in rows:

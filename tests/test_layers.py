@@ -22,12 +22,13 @@ PACKAGE = Path(govopt.__file__).resolve().parent
 #: matching prefix; the seam's modules are named exactly (:data:`SEAM`).
 LAYERS = (
     ("ground", ("govopt.units", "govopt.limits", "govopt.errors", "govopt.inputs",
-                "govopt.stats", "govopt.jsonable", "govopt.examples", "govopt.verdict")),
+                "govopt.stats", "govopt.jsonable", "govopt.examples", "govopt.verdict",
+                "govopt.keys")),
     ("springs", ("govopt.springs",)),
     ("seam", ()),
     ("analysis", ("govopt.analysis", "govopt.fidelity")),
     ("governor types", ("govopt.governors",)),
-    ("parser", ("govopt.reader", "govopt.spec")),
+    ("parser", ("govopt.reader", "govopt.spec", "govopt.spec_keys")),
     ("evaluator", ("govopt.result", "govopt.requirements", "govopt.evaluator",
                    "govopt.evaluation", "govopt.bulk")),
     ("optimize", ("govopt.optimize",)),
@@ -227,9 +228,9 @@ def test_spring_kinds_declare_their_spec_keys():
     from govopt.springs.kinds import KINDS
 
     assert set(KINDS) == {"compression", "tension", "leaf"}
-    assert [k for k, _ in KINDS["leaf"].section] == ["leaf_width", "leaf_thickness"]
-    assert [k for k, _ in KINDS["tension"].section] == ["wire_diameter", "coil_radius",
-                                                        "active_turns"]
+    assert [k.name for k in KINDS["leaf"].section] == ["leaf_width", "leaf_thickness"]
+    assert [k.name for k in KINDS["tension"].section] == ["wire_diameter", "coil_radius",
+                                                          "active_turns"]
     assert KINDS["compression"].helical and not KINDS["leaf"].helical
     assert KINDS["leaf"].section_error({"leaf_width": 0.01, "leaf_thickness": 0.02})[0] \
         == "leaf_thickness"

@@ -183,7 +183,7 @@ def test_every_value_has_its_unit_and_margins_read_as_margins(designed):
     assert by["shear stress"][1] == f"{designed.max_stress / 1e6:.6g}"
     k2_check = check_name(designed.check("k^2 > 0 (stability)"), designed)
     assert by[k2_check][3] == "1/s^2" == lc["k^2 at the new equilibrium"][1]
-    assert by["wire diameter >= min"][3] == "mm" == summary["wire diameter"][2]
+    assert by["body length within free length"][3] == "mm" == summary["wire diameter"][2]
     # every summary row has a unit column; the first arrival never comes: "never", not "inf s"
     assert all(len(r) >= 3 and r[2] for r in summary.values())
     assert lc["first arrival at the new equilibrium"][1:] == ["s", "never"]

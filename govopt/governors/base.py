@@ -40,6 +40,7 @@ from typing import ClassVar
 
 import numpy as np
 
+from ..keys import Key, Table
 from ..springs.kinds import KINDS, SpringKind
 
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
@@ -112,7 +113,11 @@ class Governor(ABC):
     * ``mass_key``: stem of the flying mass's spec key (``"pendulum"`` -> ``pendulum_weight``);
     * ``mass_name``: the type's own word for one flying mass in reports and check names
       (``"pendulum"``, ``"ball"``, ``"fly weight"``);
-    * ``free_length_key``: the ``[design]`` key of the spring's free length ``l0``.
+    * ``free_length_key``: the ``[design]`` key of the spring's free length ``l0``;
+    * ``keys``: its ``[governor]`` keys beyond ``type`` (:class:`govopt.keys.Key`, in reading
+      order), which :meth:`parse` reads; ``tables``: top-level tables of its own (the shaft
+      governor's ``[valve_gear]``); ``example``: the bundled design spec of the type (the
+      values of its ``govopt init --type`` template).
     """
 
     type_name: ClassVar[str]
@@ -138,6 +143,17 @@ class Governor(ABC):
     spring_length_factor: ClassVar[float] = 1.0
     #: names of the three generalised forces in reports: centrifugal, spring, dead loads
     force_names: ClassVar[tuple[str, str, str]] = ("F_c", "F_s", "F_d")
+    keys: ClassVar[tuple[Key, ...]] = ()
+    tables: ClassVar[tuple[Table, ...]] = ()
+    example: ClassVar[str] = ""
+    #: a spring the type may have, where ``spring`` is decided by its spec (a Porter's
+    #: auxiliary spring): the kind whose keys its spec may hold (:meth:`declared_spring_kind`)
+    optional_spring: ClassVar[str | None] = None
+    #: what the ``[design]`` key :attr:`free_length_key` holds
+    free_length_meaning: ClassVar[str] = "the spring's free length l0"
+    #: the type carries a central (sleeve) load, which ``[design] central_weight`` gives and
+    #: the design search varies within ``[bounds] central_weight``
+    central_load: ClassVar[bool] = False
 
     #: innermost, outermost and normal configurations (SI), set by :meth:`parse`
     x_inner: float
@@ -213,6 +229,13 @@ class Governor(ABC):
         return f"{stem}_m", float(x)
 
     # -- the spring plug: a helical spring by default (a type with another spring overrides) --
+
+    @classmethod
+    def declared_spring_kind(cls) -> SpringKind | None:
+        """The spring kind whose keys a spec of this type may hold (its spring, or the one it
+        may have), None for a dead-weight type."""
+        name = cls.spring or cls.optional_spring
+        return None if name is None else KINDS[name]
 
     @property
     def spring_kind(self) -> SpringKind | None:

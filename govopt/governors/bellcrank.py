@@ -52,16 +52,75 @@ the sleeve's) and the friction of the rollers on the collar or cap.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
 
+from ..keys import Key
 from ..units import G_STANDARD
 from .base import Governor, Terms
+from .porter import RANGE
 
 OBLIQUITIES = ("exact", "small_angle")
 RIGHT_ANGLE = np.pi / 2
+#: the ball radius range as the ball governors give it (:mod:`.porter`); the outer radius may
+#: be given by the sleeve's lift instead
+RADIUS_INNER, _, RADIUS_NORMAL = RANGE
+
+BALL_ARM = Key("ball_arm", "length", "the bell crank's ball arm a, from the fulcrum to the "
+                                     "ball's centre", source="textbook 3.5(a), Fig. 3.10",
+               example="15 cm")
+RADIUS_OUTER = Key("radius_outer", "length", "the balls' radius of rotation at the outermost "
+                                             "configuration (sleeve up, highest speed)",
+                   default=None, default_text="from sleeve_lift",
+                   when="unless sleeve_lift is given: give one of the two")
+SLEEVE_LIFT = Key("sleeve_lift", "length", "the sleeve's lift from the innermost to the "
+                                           "outermost configuration, in place of radius_outer "
+                                           "(which follows from the levers: (a/b) times the "
+                                           "lift for a 90 deg crank)",
+                  default=None, when="in place of radius_outer",
+                  source="textbook 3.5(a), eq. vi: h = (b/a)(r_1 - r_2)")
+CRANK_ANGLE = Key("crank_angle", "angle", "the angle between the bell crank's two arms "
+                                          "(\"usually 90 deg but in practice it may be "
+                                          "greater\")", default=RIGHT_ANGLE, example="90 deg",
+                  default_text="90 deg", low=0.0, high=np.pi, range_text="(0 deg, 180 deg)",
+                  source="textbook 3.5(a)")
+OBLIQUITY = Key("obliquity", "choice", "\"exact\": the levers' true geometry (the balls' weight "
+                                       "works as the arms tilt); \"small_angle\": the book's "
+                                       "simplification (arms square to the forces, the balls' "
+                                       "weight neglected; a 90 deg crank only)",
+                default="exact", choices=OBLIQUITIES, source="textbook 3.5(a)")
+SLEEVE_FRICTION = Key("sleeve_friction", "force", "the friction force R at the sleeve, added to "
+                                                  "the spring force rising and subtracted "
+                                                  "falling", default=0.0, nonnegative=True,
+                      source="textbook 3.4(b), 3.5(a)")
+
+
+def common_keys(arm: Key, fulcrum_at: str) -> tuple[Key, ...]:
+    """The ``[governor]`` keys every bell-crank type reads (:meth:`BellCrankGovernor.read_common`),
+    in order: ``arm`` its second arm's key; the fulcrum's default radius where the ball arm
+    stands vertical, at radius_normal or radius_inner (``fulcrum_at``)."""
+    at = "radius_normal" if fulcrum_at == "normal" else "radius_inner"
+    fulcrum = Key("fulcrum_radius", "length", "the fulcrum's radius from the spindle's axis",
+                  default=lambda v: v[at],
+                  default_text=f"{at}: the ball arm vertical there"
+                               + (" (the book's examples)" if fulcrum_at == "normal" else
+                                  " (at minimum speed, Fig. 3.13(b))"),
+                  source="textbook 3.5")
+    return (BALL_ARM, arm, RADIUS_INNER, RADIUS_OUTER, SLEEVE_LIFT, CRANK_ANGLE, OBLIQUITY,
+            RADIUS_NORMAL, fulcrum, SLEEVE_FRICTION)
+
+
+def spring_length_key(meaning: str, **kw) -> Key:
+    """The bell-crank types' ``spring_length``: the design spring's length at radius_inner
+    (``meaning`` says where the spring sits), and how to choose it."""
+    return Key("spring_length", "length", meaning + ". Only the spring's initial compression "
+               "or extension enters the statics (the search designs the free length), but the "
+               "spring must fit: a longer spring leaves room for more turns of thinner wire, a "
+               "shorter one needs fewer turns of thicker wire; choose the room the frame gives",
+               **kw)
 
 
 @dataclass(frozen=True)
@@ -151,12 +210,15 @@ class BellCrankGovernor(Governor):
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
+    central_load: ClassVar[bool] = True
     #: True where the fulcrum rides on the sleeve and the ball hangs below it (Fig. 3.12)
     fulcrum_on_sleeve: ClassVar[bool] = False
     #: the spec key of the lever's second arm
     arm_key: ClassVar[str] = "sleeve_arm"
     #: the default fulcrum radius: the ball arm vertical at radius "normal" or "inner"
     fulcrum_at: ClassVar[str] = "normal"
+    #: the keys every bell-crank type reads first (:func:`common_keys`, :meth:`read_common`)
+    common: ClassVar[tuple[Key, ...]] = ()
 
     def __init__(self, crank: BellCrank, x_inner, x_outer, x_normal, sleeve_friction=0.0,
                  spring_length=0.0):
@@ -173,38 +235,79 @@ class BellCrankGovernor(Governor):
 
     @classmethod
     def read_common(cls, reader) -> dict:
-        """Keys ``ball_arm``, the second arm (:attr:`arm_key`), ``radius_inner``,
-        ``radius_outer``, ``radius_normal`` (default the mid radius), ``fulcrum_radius`` (default:
-        the ball arm vertical at :attr:`fulcrum_at`), ``crank_angle`` (default 90 deg),
-        ``obliquity`` and ``sleeve_friction`` (default 0)."""
-        a = reader.quantity("ball_arm", "length")
-        b = reader.quantity(cls.arm_key, "length")
-        inner = reader.quantity("radius_inner", "length")
-        outer = reader.quantity("radius_outer", "length")
-        if not inner < outer:
-            reader.fail("radius_outer", "expected radius_inner < radius_outer")
-        normal = reader.quantity("radius_normal", "length", required=False,
-                                 default=0.5 * (inner + outer))
-        if not inner <= normal <= outer:
-            reader.fail("radius_normal", "expected radius_inner <= radius_normal <= radius_outer")
-        r_f = reader.quantity("fulcrum_radius", "length", required=False,
-                              default=normal if cls.fulcrum_at == "normal" else inner)
-        gamma = reader.quantity("crank_angle", "angle", required=False, default=RIGHT_ANGLE,
-                                low=0.0, high=np.pi, range_text="(0 deg, 180 deg)")
-        obliquity = reader.choice("obliquity", OBLIQUITIES, "exact")
+        """The keys of :func:`common_keys`: ``ball_arm``, the second arm (:attr:`arm_key`),
+        ``radius_inner``, ``radius_outer`` or ``sleeve_lift``, ``crank_angle`` (default 90
+        deg), ``obliquity``, ``radius_normal`` (default the mid radius), ``fulcrum_radius``
+        (default: the ball arm vertical at :attr:`fulcrum_at`) and ``sleeve_friction``
+        (default 0)."""
+        keys = cls.common
+        v = reader.read_all(keys[:3])
+        a, b, inner = v["ball_arm"], v[cls.arm_key], v["radius_inner"]
+        if reader.has("radius_outer") and reader.has("sleeve_lift"):
+            reader.fail("sleeve_lift", "give either radius_outer or sleeve_lift, not both")
+        lift = reader.read(SLEEVE_LIFT, v) if reader.has("sleeve_lift") else None
+        outer = reader.read(RADIUS_OUTER, v, required=lift is None)
+        gamma, obliquity = reader.read_all((CRANK_ANGLE, OBLIQUITY), v).values()
         if obliquity == "small_angle" and abs(gamma - RIGHT_ANGLE) > 1e-12:
             reader.fail("obliquity", "the book's small-angle simplification assumes a 90 deg "
                                      "crank (give crank_angle = \"90 deg\" or obliquity = "
                                      "\"exact\")")
+        placed = keys[7:9]  # radius_normal and fulcrum_radius: defaults from the range
+        given = {k.name: reader.read(k, v) for k in placed if reader.has(k.name)}
+        if lift is not None:
+            v["radius_outer"] = outer = cls._outer_for_lift(reader, v, given, lift)
+        elif not inner < outer:
+            reader.fail("radius_outer", "expected radius_inner < radius_outer")
+        normal, r_f = (given[k.name] if k.name in given else reader.read(k, v)
+                       for k in placed)
+        if not inner <= normal <= outer:
+            reader.fail("radius_normal", "expected radius_inner <= radius_normal <= radius_outer")
         crank = BellCrank(a, b, r_f, gamma, obliquity)
         why = crank.reach_error([inner, outer], cls.arm_key)
         if why:
             reader.fail("radius_outer" if crank.reach_error([inner]) == "" else "radius_inner",
                         f"radii {inner * 100:g} cm to {outer * 100:g} cm: {why}")
-        friction = reader.quantity("sleeve_friction", "force", required=False, default=0.0,
-                                   nonnegative=True)
+        friction = reader.read(SLEEVE_FRICTION)
         return dict(crank=crank, x_inner=inner, x_outer=outer, x_normal=normal,
                     sleeve_friction=friction)
+
+    @classmethod
+    def _outer_for_lift(cls, reader, v: dict, given: dict, lift: float) -> float:
+        """The outer ball radius (m) at which the sleeve has risen ``lift`` (m) from
+        radius_inner, the fulcrum where ``given`` puts it or by default
+        (:func:`common_keys`): by bisection on the lift, which rises with the radius while
+        the sleeve arm turns towards the sleeve (the closed form ``r_i + (a/b) lift`` for a
+        90 deg crank; the bisection ends on it to the last bits)."""
+        a, b, inner = v["ball_arm"], v[cls.arm_key], v["radius_inner"]
+        gamma, obliquity = v["crank_angle"], v["obliquity"]
+
+        def rise(outer):
+            normal = given.get("radius_normal", 0.5 * (inner + outer))
+            r_f = given.get("fulcrum_radius", normal if cls.fulcrum_at == "normal" else inner)
+            crank = BellCrank(a, b, r_f, gamma, obliquity)
+            if crank.reach_error([inner, outer], cls.arm_key):
+                return math.nan
+            return float(crank.state(outer)["s"] - crank.state(inner)["s"])
+
+        lo, hi = inner, inner + 2.0 * a  # the ball arm reaches at most 2a across its fulcrum
+        if math.isnan(rise(hi)):  # the end of the levers' reach (rise is NaN beyond it)
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                if mid in (lo, hi):
+                    break
+                lo, hi = (lo, mid) if math.isnan(rise(mid)) else (mid, hi)
+            hi = lo
+        if not rise(hi) >= lift:
+            reader.fail("sleeve_lift", f"the levers cannot lift the sleeve {lift * 1e3:g} mm "
+                                       f"from radius_inner (ball arm {a * 100:g} cm, "
+                                       f"{cls.arm_key.replace('_', ' ')} {b * 100:g} cm)")
+        lo = inner
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if mid in (lo, hi):
+                break
+            lo, hi = (mid, hi) if rise(mid) < lift else (lo, mid)
+        return hi
 
     def check_spring_length(self, reader):
         """A compression spring on the sleeve must keep a positive length over the range."""

@@ -26,7 +26,17 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from .bellcrank import BellCrankGovernor
+from ..keys import Key
+from .bellcrank import BellCrankGovernor, common_keys, spring_length_key
+
+SLEEVE_ARM = Key("sleeve_arm", "length", "the bell crank's sleeve arm b, from the fulcrum to the "
+                                         "roller on the sleeve's collar",
+                 source="textbook 3.5(a), Fig. 3.10", example="9 cm")
+SPRING_LENGTH = spring_length_key(
+    "the compression spring's installed length with the sleeve down (at radius_inner), "
+    "between the collar and its seat; it shortens by the sleeve lift. The levers do not fix "
+    "it (the frame does), so it has no default", source="textbook 3.5(a)",
+    example="10 cm")
 
 
 class HartnellGovernor(BellCrankGovernor):
@@ -36,13 +46,17 @@ class HartnellGovernor(BellCrankGovernor):
     type_name: ClassVar[str] = "hartnell"
     title: ClassVar[str] = "Hartnell governor (textbook ch. 3, section 3.5(a), Fig. 3.10)"
     spring: ClassVar[str | None] = "compression"
+    common: ClassVar[tuple[Key, ...]] = common_keys(SLEEVE_ARM, "normal")
+    keys: ClassVar[tuple[Key, ...]] = (*common, SPRING_LENGTH)
+    example: ClassVar[str] = "hartnell-design"
 
     @classmethod
     def parse(cls, reader) -> HartnellGovernor:
-        """Keys: ``ball_arm``, ``sleeve_arm``, the radius range, ``fulcrum_radius`` (default:
-        the ball arm vertical at ``radius_normal``, as in the book's examples), ``crank_angle``,
-        ``obliquity``, ``sleeve_friction`` (:meth:`BellCrankGovernor.read_common`) and
-        ``spring_length`` (the spring's length at ``radius_inner``).
+        """Keys: ``ball_arm``, ``sleeve_arm``, the radius range (or ``sleeve_lift``),
+        ``fulcrum_radius`` (default: the ball arm vertical at ``radius_normal``, as in the
+        book's examples), ``crank_angle``, ``obliquity``, ``sleeve_friction``
+        (:meth:`BellCrankGovernor.read_common`) and ``spring_length`` (the spring's length at
+        ``radius_inner``).
 
         >>> from govopt.reader import Reader
         >>> gov = HartnellGovernor.parse(Reader("ex5", {"ball_arm": "15 cm",
@@ -52,7 +66,7 @@ class HartnellGovernor(BellCrankGovernor):
         3.0
         """
         common = cls.read_common(reader)
-        gov = cls(**common, spring_length=reader.quantity("spring_length", "length"))
+        gov = cls(**common, spring_length=reader.read(SPRING_LENGTH))
         gov.check_spring_length(reader)
         reader.finish()
         return gov

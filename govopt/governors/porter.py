@@ -45,11 +45,59 @@ from typing import ClassVar
 
 import numpy as np
 
+from ..keys import Key
 from ..units import G_STANDARD
 from .base import Governor, Terms
 
 K_MODES = ("exact", "unity")
 SPRING_KINDS = ("tension", "compression")
+
+#: the linkage's keys shared by the Porter and the Proell (the Watt's suspension differs)
+ARM = Key("arm", "length", "the upper arm a, from its pivot to the joint B with the lower link",
+          source="textbook Fig. 3.4", example="30 cm")
+LINK = Key("link", "length", "the lower (suspension) link b, from the joint B to the sleeve "
+                             "pin C", default=lambda v: v["arm"], default_text="arm",
+           source="textbook Fig. 3.4")
+PIVOT_OFFSET = Key("pivot_offset", "length", "the upper arm's pivot's distance from the "
+                                             "spindle's axis", default=0.0, nonnegative=True,
+                   source="textbook Figs. 3.4-3.5")
+SLEEVE_OFFSET = Key("sleeve_offset", "length", "the sleeve pin's distance from the spindle's "
+                                               "axis", default=0.0, nonnegative=True,
+                    source="textbook Figs. 3.4-3.5")
+K = Key("k", "choice", "the book's k = tan(beta)/tan(alpha): \"exact\" (the linkage's own, "
+                       "varying with the configuration) or \"unity\" (the book's k = 1 "
+                       "shortcut: the sleeve rises twice as fast as the ball)",
+        default="exact", choices=K_MODES, source="textbook 3.4(b), eq. i")
+#: the ball radius range (the coordinate) of the ball governors
+RANGE = (
+    Key("radius_inner", "length", "the balls' radius of rotation at the innermost configuration "
+                                  "(sleeve down, lowest speed)", example="20 cm"),
+    Key("radius_outer", "length", "the balls' radius of rotation at the outermost configuration "
+                                  "(sleeve up, highest speed)", example="25 cm"),
+    Key("radius_normal", "length", "the balls' radius at the normal configuration (the load "
+                                   "changes' and dynamics' reference), within the range",
+        default=lambda v: 0.5 * (v["radius_inner"] + v["radius_outer"]),
+        default_text="the mid radius, (radius_inner + radius_outer) / 2"),
+)
+SLEEVE_FRICTION = Key("sleeve_friction", "force", "the friction force R at the sleeve: the "
+                                                  "central load is W + R rising, W - R falling",
+                      default=0.0, nonnegative=True,
+                      source="textbook 3.4(b), Friction at the sleeve")
+#: the Porter's auxiliary spring on the sleeve through a lever (Example 2, Fig. 3.7)
+WITH_SPRING = "with spring = \"tension\" or \"compression\""
+SPRING_KEYS = (
+    Key("spring", "choice", "an auxiliary spring acting on the sleeve through a lever, in "
+                            "tension or compression (textbook Example 2, Fig. 3.7); none: a "
+                            "dead-weight governor", default=None, default_text="none",
+        choices=SPRING_KINDS),
+    Key("spring_arm", "length", "the lever's arm from its pivot to the spring", when=WITH_SPRING,
+        source="textbook Fig. 3.7"),
+    Key("sleeve_arm", "length", "the lever's arm from its pivot to the sleeve", when=WITH_SPRING,
+        source="textbook Fig. 3.7"),
+    Key("spring_length", "length", "the auxiliary spring's length at the innermost "
+                                   "configuration (radius_inner); its free length is designed",
+        when=WITH_SPRING),
+)
 
 
 @dataclass(frozen=True)
@@ -173,6 +221,7 @@ class BallGovernor(Governor):
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
+    central_load: ClassVar[bool] = True
 
     def __init__(self, linkage: Linkage, x_inner, x_outer, x_normal, sleeve_friction=0.0,
                  spring=None, lever_ratio=0.0, spring_length=0.0):
@@ -192,10 +241,7 @@ class BallGovernor(Governor):
     @staticmethod
     def _read_range(reader):
         """``radius_inner``, ``radius_outer``, ``radius_normal`` (default the mid radius)."""
-        inner = reader.quantity("radius_inner", "length")
-        outer = reader.quantity("radius_outer", "length")
-        normal = reader.quantity("radius_normal", "length", default=(inner + outer) / 2,
-                                 required=False)
+        inner, outer, normal = reader.read_all(RANGE).values()
         if not inner < outer:
             reader.fail("radius_outer", "expected radius_inner < radius_outer")
         if not inner <= normal <= outer:
@@ -213,17 +259,14 @@ class BallGovernor(Governor):
     def _read_spring(reader):
         """``spring`` ("tension" | "compression"), ``spring_arm``, ``sleeve_arm``,
         ``spring_length``; none of them: no auxiliary spring (a dead-weight governor)."""
-        kind = reader.choice("spring", SPRING_KINDS, None)
-        keys = ("spring_arm", "sleeve_arm", "spring_length")
+        kind = reader.read(SPRING_KEYS[0])
         if kind is None:
-            for key in keys:
-                if reader.has(key):
-                    reader.fail(key, "given without spring = \"tension\" or \"compression\"")
+            for key in SPRING_KEYS[1:]:
+                if reader.has(key.name):
+                    reader.fail(key.name, f"given without {WITH_SPRING[5:]}")
             return dict(spring=None)
-        spring_arm = reader.quantity("spring_arm", "length")
-        sleeve_arm = reader.quantity("sleeve_arm", "length")
-        return dict(spring=kind, lever_ratio=spring_arm / sleeve_arm,
-                    spring_length=reader.quantity("spring_length", "length"))
+        spring_arm, sleeve_arm, length = reader.read_all(SPRING_KEYS[1:]).values()
+        return dict(spring=kind, lever_ratio=spring_arm / sleeve_arm, spring_length=length)
 
     # -- geometry for reports -----------------------------------------------------------------
 
@@ -312,23 +355,19 @@ class PorterGovernor(BallGovernor):
 
     type_name: ClassVar[str] = "porter"
     title: ClassVar[str] = "Porter governor (textbook ch. 3, section 3.4(b), Figs. 3.1(b), 3.4-3.7)"
+    keys: ClassVar[tuple[Key, ...]] = (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, K, *RANGE,
+                                       SLEEVE_FRICTION, *SPRING_KEYS)
+    example: ClassVar[str] = "porter-design"
+    optional_spring: ClassVar[str | None] = "tension"
 
     @classmethod
     def parse(cls, reader) -> PorterGovernor:
         """Keys: ``arm``, ``link`` (default ``arm``), ``pivot_offset``, ``sleeve_offset``
         (default 0), ``k`` ("exact" | "unity"), the radius range, ``sleeve_friction`` and the
         auxiliary spring's keys (:meth:`BallGovernor._read_spring`)."""
-        arm = reader.quantity("arm", "length")
-        linkage = Linkage(
-            arm=arm, link=reader.quantity("link", "length", required=False, default=arm),
-            pivot_offset=reader.quantity("pivot_offset", "length", required=False, default=0.0,
-                                         nonnegative=True),
-            sleeve_offset=reader.quantity("sleeve_offset", "length", required=False,
-                                          default=0.0, nonnegative=True),
-            k=reader.choice("k", K_MODES, "exact"))
+        linkage = Linkage(**reader.read_all((ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, K)))
         inner, outer, normal = cls._read_range(reader)
-        friction = reader.quantity("sleeve_friction", "force", required=False, default=0.0,
-                                   nonnegative=True)
+        friction = reader.read(SLEEVE_FRICTION)
         spring = cls._read_spring(reader)
         reader.finish()
         cls._check_reach(reader, linkage, inner, outer)

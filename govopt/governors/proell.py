@@ -31,7 +31,28 @@ from typing import ClassVar
 
 import numpy as np
 
-from .porter import K_MODES, BallGovernor, Linkage
+from ..keys import Key
+from .porter import (
+    ARM,
+    LINK,
+    PIVOT_OFFSET,
+    RANGE,
+    SLEEVE_FRICTION,
+    SLEEVE_OFFSET,
+    BallGovernor,
+    K,
+    Linkage,
+)
+
+EXTENSION = Key("extension", "length", "the extension c = BG of the lower link beyond the joint "
+                                       "B to the ball's centre G", source="textbook Fig. 3.8")
+EXTENSION_ANGLE = Key("extension_angle", "angle", "the extension's turn from the line CB "
+                                                  "produced, towards the axis (0: the ball on "
+                                                  "the straight extension, Fig. 3.1(c))",
+                      default=None, nonnegative=True, high=math.pi / 2,
+                      range_text="[0 deg, 90 deg)",
+                      default_text="BG vertical at radius_normal (the book's assumption for "
+                                   "Fig. 3.8 and Example 3)", source="textbook 3.4(c)")
 
 
 class ProellGovernor(BallGovernor):
@@ -40,6 +61,9 @@ class ProellGovernor(BallGovernor):
     type_name: ClassVar[str] = "proell"
     title: ClassVar[str] = ("Proell governor (textbook ch. 3, section 3.4(c), Figs. 3.1(c), 3.8, "
                             "3.9)")
+    keys: ClassVar[tuple[Key, ...]] = (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, EXTENSION,
+                                       EXTENSION_ANGLE, K, *RANGE, SLEEVE_FRICTION)
+    example: ClassVar[str] = "proell-design"
 
     @classmethod
     def parse(cls, reader) -> ProellGovernor:
@@ -47,16 +71,8 @@ class ProellGovernor(BallGovernor):
         ``pivot_offset``, ``sleeve_offset`` (default 0), ``extension`` (BG), ``extension_angle``
         (default: BG vertical at ``radius_normal``), ``k``, the radius range and
         ``sleeve_friction``."""
-        arm = reader.quantity("arm", "length")
-        link = reader.quantity("link", "length", required=False, default=arm)
-        pivot = reader.quantity("pivot_offset", "length", required=False, default=0.0,
-                                nonnegative=True)
-        sleeve = reader.quantity("sleeve_offset", "length", required=False, default=0.0,
-                                 nonnegative=True)
-        extension = reader.quantity("extension", "length")
-        angle = reader.quantity("extension_angle", "angle", required=False, nonnegative=True,
-                                high=math.pi / 2, range_text="[0 deg, 90 deg)")
-        k = reader.choice("k", K_MODES, "exact")
+        arm, link, pivot, sleeve, extension, angle, k = reader.read_all(
+            (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, EXTENSION, EXTENSION_ANGLE, K)).values()
         inner, outer, normal = cls._read_range(reader)
         if angle is None:  # BG vertical at the normal configuration: r_B = r there
             sin_beta = (normal - sleeve) / link
@@ -65,8 +81,7 @@ class ProellGovernor(BallGovernor):
             angle = math.asin(sin_beta)
         linkage = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve,
                           extension=extension, crank=angle, k=k)
-        friction = reader.quantity("sleeve_friction", "force", required=False, default=0.0,
-                                   nonnegative=True)
+        friction = reader.read(SLEEVE_FRICTION)
         reader.finish()
         cls._check_reach(reader, linkage, inner, outer)
         return cls(linkage, inner, outer, normal, friction)

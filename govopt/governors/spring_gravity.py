@@ -26,7 +26,16 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from .bellcrank import BellCrankGovernor
+from ..keys import Key
+from .bellcrank import BellCrankGovernor, common_keys, spring_length_key
+
+ROLLER_ARM = Key("roller_arm", "length", "the bell crank's roller arm b, from the fulcrum O on "
+                                         "the sleeve to the roller under the cap",
+                 source="textbook 3.5(c), Fig. 3.12")
+SPRING_LENGTH = spring_length_key(
+    "the compression spring's length between the sleeve and the cap at radius_inner; it "
+    "shortens by the sleeve lift. The levers do not fix it (the cap's height does), so it has "
+    "no default", source="textbook 3.5(c)")
 
 
 class SpringGravityGovernor(BellCrankGovernor):
@@ -40,16 +49,20 @@ class SpringGravityGovernor(BellCrankGovernor):
     fulcrum_on_sleeve: ClassVar[bool] = True
     arm_key: ClassVar[str] = "roller_arm"
     fulcrum_at: ClassVar[str] = "inner"
+    common: ClassVar[tuple[Key, ...]] = common_keys(ROLLER_ARM, "inner")
+    keys: ClassVar[tuple[Key, ...]] = (*common, SPRING_LENGTH)
+    example: ClassVar[str] = "spring_gravity-design"
 
     @classmethod
     def parse(cls, reader) -> SpringGravityGovernor:
-        """Keys: ``ball_arm``, ``roller_arm``, the radius range, ``fulcrum_radius`` (O's radius;
+        """Keys: ``ball_arm``, ``roller_arm``, the radius range (or ``sleeve_lift``),
+        ``fulcrum_radius`` (O's radius;
         default ``radius_inner``: the ball arm vertical at minimum speed, Fig. 3.13(b)),
         ``crank_angle``, ``obliquity``, ``sleeve_friction``
         (:meth:`~.bellcrank.BellCrankGovernor.read_common`) and ``spring_length`` (the spring's
         length at ``radius_inner``)."""
         common = cls.read_common(reader)
-        gov = cls(**common, spring_length=reader.quantity("spring_length", "length"))
+        gov = cls(**common, spring_length=reader.read(SPRING_LENGTH))
         gov.check_spring_length(reader)
         reader.finish()
         return gov

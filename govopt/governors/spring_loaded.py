@@ -34,11 +34,39 @@ from __future__ import annotations
 
 from typing import ClassVar
 
-from .bellcrank import BellCrankGovernor
+from ..keys import Key
+from .bellcrank import BellCrankGovernor, common_keys, spring_length_key
 
 VARIANTS = ("direct", "lever")
-LEVER_KEYS = ("lever_spring_arm", "lever_sleeve_arm", "ball_spring_stiffness",
-              "ball_spring_tension")
+LEVER = "with variant = \"lever\" (required there)"
+SLEEVE_ARM = Key("sleeve_arm", "length", "the bell crank's sleeve arm b, from the fulcrum to the "
+                                         "sleeve", source="textbook 3.5(b), Fig. 3.11")
+VARIANT = Key("variant", "choice", "\"direct\": the ball springs are the design spring (Fig. "
+                                   "3.11(a)); \"lever\": a supplementary spring on a lever "
+                                   "loads the sleeve and is the design spring, the ball springs "
+                                   "given (Fig. 3.11(b))", default="direct", choices=VARIANTS,
+              source="textbook 3.5(b)")
+BALL_SPRINGS = Key("ball_springs", "count", "how many identical springs join the two balls",
+                   default=2, source="textbook Fig. 3.11")
+SPRING_LENGTH = spring_length_key(
+    "the design spring's length at radius_inner: each ball spring's (\"direct\"; it lengthens "
+    "by twice the balls' outward travel) or the lever's spring's (\"lever\")",
+    default=lambda v: 2.0 * v["radius_inner"] if v["variant"] == "direct" else None,
+    default_text="with variant = \"direct\", 2 radius_inner: the springs join the balls' "
+                 "centres, 2 r apart (give the spring's own length where its hooks or the balls "
+                 "take room); required with variant = \"lever\" (the lever's spring has no "
+                 "length the geometry fixes)", source="textbook 3.5(b)")
+LEVER_KEYS = (
+    Key("lever_spring_arm", "length", "the lever's arm from its pivot to the supplementary "
+                                      "spring", when=LEVER, source="textbook Fig. 3.11(b)"),
+    Key("lever_sleeve_arm", "length", "the lever's arm from its pivot to the sleeve",
+        when=LEVER, source="textbook Fig. 3.11(b)"),
+    Key("ball_spring_stiffness", "stiffness", "each ball spring's stiffness (the ball springs "
+                                              "are given in this variant)", when=LEVER,
+        source="textbook 3.5(b), Example 7"),
+    Key("ball_spring_tension", "force", "each ball spring's tension at radius_inner",
+        nonnegative=True, when=LEVER, source="textbook 3.5(b), Example 7"),
+)
 
 
 class SpringLoadedGovernor(BellCrankGovernor):
@@ -49,6 +77,10 @@ class SpringLoadedGovernor(BellCrankGovernor):
     title: ClassVar[str] = ("Spring-loaded governor, balls connected by springs (textbook ch. 3, "
                             "section 3.5(b), Fig. 3.11)")
     spring: ClassVar[str | None] = "tension"
+    common: ClassVar[tuple[Key, ...]] = common_keys(SLEEVE_ARM, "normal")
+    keys: ClassVar[tuple[Key, ...]] = (*common, VARIANT, BALL_SPRINGS, SPRING_LENGTH,
+                                       *LEVER_KEYS)
+    example: ClassVar[str] = "spring_loaded-design"
 
     def __init__(self, *, variant="direct", ball_springs=2, lever_ratio=0.0,
                  ball_spring_stiffness=0.0, ball_spring_tension=0.0, **common):
@@ -65,23 +97,19 @@ class SpringLoadedGovernor(BellCrankGovernor):
         ("direct" | "lever"), ``ball_springs`` (default 2), ``spring_length`` (the design
         spring's length at ``radius_inner``) and, for the lever, :data:`LEVER_KEYS`."""
         common = cls.read_common(reader)
-        variant = reader.choice("variant", VARIANTS, "direct")
-        n = reader.number("ball_springs", required=False, default=2.0)
-        if n != int(n):
-            reader.fail("ball_springs", f"expected a whole number of springs, got {n!r}")
-        extra = dict(variant=variant, ball_springs=int(n),
-                     spring_length=reader.quantity("spring_length", "length"))
-        if variant == "lever":
-            extra.update(
-                lever_ratio=reader.quantity("lever_spring_arm", "length")
-                / reader.quantity("lever_sleeve_arm", "length"),
-                ball_spring_stiffness=reader.quantity("ball_spring_stiffness", "stiffness"),
-                ball_spring_tension=reader.quantity("ball_spring_tension", "force",
-                                                    nonnegative=True))
+        v = {"radius_inner": common["x_inner"]}
+        reader.read_all((VARIANT, BALL_SPRINGS), v)
+        lever = v["variant"] == "lever"
+        extra = dict(variant=v["variant"], ball_springs=v["ball_springs"],
+                     spring_length=reader.read(SPRING_LENGTH, v, required=lever or None))
+        if lever:
+            arm, sleeve, stiffness, tension = reader.read_all(LEVER_KEYS).values()
+            extra.update(lever_ratio=arm / sleeve, ball_spring_stiffness=stiffness,
+                         ball_spring_tension=tension)
         else:
             for key in LEVER_KEYS:
-                if reader.has(key):
-                    reader.fail(key, "belongs to variant = \"lever\" (Fig. 3.11(b))")
+                if reader.has(key.name):
+                    reader.fail(key.name, "belongs to variant = \"lever\" (Fig. 3.11(b))")
         reader.finish()
         return cls(**common, **extra)
 

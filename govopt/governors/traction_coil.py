@@ -35,7 +35,46 @@ from typing import ClassVar
 
 import numpy as np
 
+from ..keys import Key
 from .base import Governor, Terms
+
+#: what both traction governors read (:class:`FlyWeights`)
+N_WEIGHTS = Key("n_weights", "count", "the number of fly weights", source="article 003",
+                example=2)
+ROD_FRICTION = Key("rod_friction", "force", "the throttle rod's friction (valve and gland), "
+                                            "a band about the characteristic",
+                   default=0.0, nonnegative=True)
+HINGE_RADIUS = Key("hinge_radius", "length", "the hinges' (end attachments') radius from the "
+                                             "spindle's centreline r_h", nonnegative=True,
+                   source="article 003, Figs. 1-2")
+
+
+def _spacing(end: str, meaning: str, **kw) -> Key:
+    return Key(f"hinge_spacing_{end}", "length", meaning, high=lambda v: 2.0 * v["arm_length"],
+               range_text="(0, 2 arm_length)", source="article 003, Fig. 1", **kw)
+
+
+#: ``[governor]`` of the coil-spring traction governor (article 003, Fig. 1)
+KEYS = (
+    N_WEIGHTS,
+    Key("arm_length", "length", "each toggle arm, from its hinge to the fly weight's centre a",
+        source="article 003, Fig. 1"),
+    HINGE_RADIUS,
+    _spacing("open", "the hinges' spacing along the spindle with the throttle just fully open "
+                     "(the article's l_1; the lowest speed)"),
+    _spacing("closed", "the hinges' spacing with the throttle just closed (l_2; the highest "
+                       "speed), less than hinge_spacing_open"),
+    _spacing("normal", "the hinges' spacing at the normal configuration", default=None,
+             default_text="the fly weights at the mid radius"),
+    Key("spring_length", "length", "the compression spring's installed length round the rod "
+                                    "with the throttle fully open; it shortens by the rod's "
+                                    "travel. Only its initial compression enters the statics "
+                                    "(the search designs the free length), but the spring must "
+                                    "fit: a longer spring leaves room for more turns of "
+                                    "thinner wire; choose the room the rod gives",
+        source="article 003, eqs. 2-4"),
+    ROD_FRICTION,
+)
 
 
 def centrifugal_force(m, r, omega):
@@ -125,6 +164,8 @@ class TractionCoilGovernor(FlyWeights):
     mass_key: ClassVar[str] = "fly"
     mass_name: ClassVar[str] = "fly weight"
     free_length_key: ClassVar[str] = "free_length"
+    keys: ClassVar[tuple[Key, ...]] = KEYS
+    example: ClassVar[str] = "traction-coil-design"
 
     n_weights: int
     arm_length: float
@@ -150,16 +191,9 @@ class TractionCoilGovernor(FlyWeights):
         >>> round(gov.x_inner / 0.0254, 6)  # r_1 = r_h + sqrt(a^2 - (l_1/2)^2), in
         2.408312
         """
-        n = reader.number("n_weights")
-        if n != int(n):
-            reader.fail("n_weights", f"expected a whole number, got {n!r}")
-        a = reader.quantity("arm_length", "length")
-        r_h = reader.quantity("hinge_radius", "length", nonnegative=True)
-        spacing = {}
-        for key in ("open", "closed", "normal"):
-            name = f"hinge_spacing_{key}"
-            spacing[key] = reader.quantity(name, "length", required=key != "normal",
-                                           high=2.0 * a, range_text="(0, 2 arm_length)")
+        v = reader.read_all(KEYS[:6])
+        n, a, r_h = v["n_weights"], v["arm_length"], v["hinge_radius"]
+        spacing = {key: v[f"hinge_spacing_{key}"] for key in ("open", "closed", "normal")}
         if not spacing["closed"] < spacing["open"]:
             reader.fail("hinge_spacing_closed", "expected less than hinge_spacing_open (the "
                                                 "collars close as the weights fly out)")
@@ -169,13 +203,11 @@ class TractionCoilGovernor(FlyWeights):
             else 0.5 * (radius["open"] + radius["closed"])
         if not radius["open"] <= normal <= radius["closed"]:
             reader.fail("hinge_spacing_normal", "expected between the open and closed spacings")
-        gov = cls(n_weights=int(n), arm_length=a, hinge_radius=r_h,
-                  spacing_open=spacing["open"],
-                  spring_length=reader.quantity("spring_length", "length"),
-                  x_inner=float(radius["open"]), x_outer=float(radius["closed"]),
-                  x_normal=float(normal),
-                  rod_friction=reader.quantity("rod_friction", "force", required=False,
-                                               default=0.0, nonnegative=True))
+        length, friction = reader.read_all(KEYS[6:]).values()
+        gov = cls(n_weights=n, arm_length=a, hinge_radius=r_h, spacing_open=spacing["open"],
+                  spring_length=length, x_inner=float(radius["open"]),
+                  x_outer=float(radius["closed"]), x_normal=float(normal),
+                  rod_friction=friction)
         travel = spacing["open"] - spacing["closed"]
         if gov.spring_length <= travel:
             reader.fail("spring_length", f"the rod travels {travel:.4g} m over the range: the "

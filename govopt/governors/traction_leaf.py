@@ -53,16 +53,68 @@ from typing import ClassVar
 
 import numpy as np
 
+from ..keys import Key
 from ..springs import leaf
 from ..verdict import Check
 from .base import Terms
-from .traction_coil import FlyWeights, centrifugal_force
+from .traction_coil import HINGE_RADIUS, N_WEIGHTS, ROD_FRICTION, FlyWeights, centrifugal_force
 
 #: the ways a spec gives the range: chords ``l`` (the valve's positions), bows ``x`` (measured
 #: at the weights) or rod travels from rest (the article's design from the valve travel ``Z``:
 #: ``travel_open = Z``, ``travel_closed = 2 Z``, eq. 9)
 RANGE_KINDS = ("chord", "bow", "travel")
 ENDS = ("open", "closed", "normal")
+
+_RANGE_WORDS = {
+    "chord": ("the leaf's chord (its end attachments' distance)", "(0, leaf_length)",
+              "article 003, l_1 and l_2"),
+    "bow": ("the leaf's bow at its middle from the line of its ends (measured)",
+            "(0, leaf_length/2)", "article 003, x"),
+    "travel": ("the throttle rod's travel from rest", "(0, leaf_length)",
+               "article 003, Z and 2 Z (eq. 9)"),
+}
+_END_WORDS = {"open": "with the throttle just fully open (the lowest speed)",
+              "closed": "with the throttle just closed (the highest speed)",
+              "normal": "at the normal configuration"}
+
+
+def _range_key(kind: str, end: str) -> Key:
+    what, text, source = _RANGE_WORDS[kind]
+    top = 0.5 if kind == "bow" else 1.0
+    return Key(f"{kind}_{end}", "length", f"{what} {_END_WORDS[end]}", default=None,
+               default_text="the fly weights at the mid radius" if end == "normal" else "",
+               high=lambda v, top=top: top * v["leaf_length"], range_text=text, source=source,
+               when="one way: chords, bows or travels; open and closed are required, normal "
+                    "is optional")
+
+
+def _set_key(end: str, meaning: str, default, default_text: str) -> Key:
+    return Key(f"leaf_set_{end}", "length", meaning, default=default, default_text=default_text,
+               positive=False, low=lambda v: -0.5 * v["leaf_length"],
+               high=lambda v: 0.5 * v["leaf_length"],
+               range_text="[-leaf_length/2, leaf_length/2]")
+
+
+#: ``[governor]`` of the flat-spring traction governor (article 003, Fig. 2)
+KEYS = (
+    N_WEIGHTS,
+    Key("leaf_length", "length", "each flat spring's length L (the fly weight at its middle)",
+        source="article 003, eq. 5"),
+    Key("leaf_ends", "choice", "how the leaf's ends are held: \"hinged\" or \"clamped\" "
+                               "(48 or 192 E I / L^3)", default="hinged",
+        choices=tuple(leaf.ENDS), source="article 003, eq. 5"),
+    HINGE_RADIUS,
+    Key("leaf_model", "choice", "the leaf's force and chord: \"straight\" (the article's eqs. "
+                                "5 and 8), \"arc\" (circular-arc chord) or \"elastica\" (exact "
+                                "large deflection)", default="elastica",
+        choices=tuple(leaf.CHORD_MODELS), source="article 003, eqs. 5, 8"),
+    *(_range_key(kind, end) for kind in RANGE_KINDS for end in ENDS),
+    _set_key("min", "the least set of the leaf (its unloaded bow, outward +): below 0 only "
+                    "against a stop", 0.0, "0"),
+    _set_key("max", "the largest set of the leaf", lambda v: 0.2 * v["leaf_length"],
+             "leaf_length / 5 (the article's range of the bow for eq. 8)"),
+    ROD_FRICTION,
+)
 
 
 def fly_mass_from_deflection(delta, r, omega, w, t, L, E, ends="hinged"):
@@ -116,6 +168,10 @@ class TractionLeafGovernor(FlyWeights):
     mass_name: ClassVar[str] = "fly weight"
     free_length_key: ClassVar[str] = "leaf_set"
     free_length_positive: ClassVar[bool] = False  # the set may bow either way
+    free_length_meaning: ClassVar[str] = ("the leaf's set l0: its unloaded bow at the middle, "
+                                          "from the line of its ends, outward +")
+    keys: ClassVar[tuple[Key, ...]] = KEYS
+    example: ClassVar[str] = "traction-leaf-design"
 
     n_weights: int
     leaf_length: float
@@ -148,21 +204,15 @@ class TractionLeafGovernor(FlyWeights):
         >>> round((gov.x_outer - gov.hinge_radius) / 0.0254, 6)  # eq. 8: sqrt(8^2 - 7.625^2)/2
         1.210307
         """
-        n = reader.number("n_weights")
-        if n != int(n):
-            reader.fail("n_weights", f"expected a whole number, got {n!r}")
-        L = reader.quantity("leaf_length", "length")
-        ends = reader.choice("leaf_ends", tuple(leaf.ENDS), "hinged")
-        r_h = reader.quantity("hinge_radius", "length", nonnegative=True)
-        model = reader.choice("leaf_model", leaf.CHORD_MODELS, "elastica")
+        v = reader.read_all(KEYS[:5])
+        n, L, ends, r_h, model = v.values()
         kinds = [k for k in RANGE_KINDS if any(reader.has(f"{k}_{e}") for e in ENDS)]
         if len(kinds) > 1:
             key = next(f"{kinds[1]}_{e}" for e in ENDS if reader.has(f"{kinds[1]}_{e}"))
             reader.fail(key, f"give the range one way, not as {kinds[0]}s and {kinds[1]}s")
         kind = kinds[0] if kinds else "chord"
-        top, text = (0.5 * L, "(0, leaf_length/2)") if kind == "bow" else (L, "(0, leaf_length)")
-        given = {e: reader.quantity(f"{kind}_{e}", "length", required=e != "normal", high=top,
-                                    range_text=text) for e in ENDS}
+        given = {e: reader.read(KEYS[5 + 3 * RANGE_KINDS.index(kind) + i], v,
+                                required=e != "normal") for i, e in enumerate(ENDS)}
         chords = {}
         if kind == "bow":
             bows = given
@@ -181,20 +231,13 @@ class TractionLeafGovernor(FlyWeights):
                 reader.fail(f"{kind}_{end}", f"beyond the reach of the {model!r} chord model")
         normal = r_h + (bows["normal"] if bows["normal"] is not None
                         else 0.5 * (bows["open"] + bows["closed"]))
-        set_min = reader.quantity("leaf_set_min", "length", required=False, default=0.0,
-                                  positive=False, low=-0.5 * L, high=0.5 * L,
-                                  range_text="[-leaf_length/2, leaf_length/2]")
-        set_max = reader.quantity("leaf_set_max", "length", required=False, default=0.2 * L,
-                                  positive=False, low=-0.5 * L, high=0.5 * L,
-                                  range_text="[-leaf_length/2, leaf_length/2]")
+        set_min, set_max = reader.read_all(KEYS[-3:-1], v).values()
         if not set_min <= set_max:
             reader.fail("leaf_set_max", "expected at least leaf_set_min")
-        gov = cls(n_weights=int(n), leaf_length=L, leaf_ends=ends, hinge_radius=r_h,
+        gov = cls(n_weights=n, leaf_length=L, leaf_ends=ends, hinge_radius=r_h,
                   leaf_model=model, chord_open=chord_open, x_inner=r_h + bows["open"],
                   x_outer=r_h + bows["closed"], x_normal=float(normal),
-                  rod_friction=reader.quantity("rod_friction", "force", required=False,
-                                               default=0.0, nonnegative=True),
-                  set_min=set_min, set_max=set_max)
+                  rod_friction=reader.read(ROD_FRICTION), set_min=set_min, set_max=set_max)
         if not gov.x_inner <= gov.x_normal <= gov.x_outer:
             reader.fail(f"{kind}_normal", "expected between the open and closed positions")
         reader.finish()

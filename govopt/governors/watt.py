@@ -31,9 +31,22 @@ from __future__ import annotations
 import math
 from typing import ClassVar
 
-from .porter import BallGovernor, Linkage
+from ..keys import Key
+from .porter import ARM, RANGE, SLEEVE_FRICTION, SLEEVE_OFFSET, BallGovernor, Linkage
 
 SUSPENSIONS = ("axis", "collar", "crossed")
+
+SUSPENSION = Key("suspension", "choice", "how the arms hang: \"axis\" (pivoted on the "
+                                         "spindle's axis, Fig. 3.3(a)), \"collar\" (from a "
+                                         "collar on the ball's side, Fig. 3.3(b)) or \"crossed\" "
+                                         "(the arms crossing the spindle, Fig. 3.3(c))",
+                 default="axis", choices=SUSPENSIONS, source="textbook Fig. 3.3")
+PIVOT_OFFSET = Key("pivot_offset", "length", "the arms' pivots' distance from the spindle's "
+                                             "axis", when="with suspension = \"collar\" or "
+                                                          "\"crossed\" (required there)",
+                   source="textbook Fig. 3.3(b), (c)")
+LINK = Key("link", "length", "the link from the ball's joint to the sleeve pin",
+           default=lambda v: v["arm"], default_text="arm", source="textbook Fig. 3.3")
 
 
 def height_for_speed(omega, g=9.80665):
@@ -62,6 +75,9 @@ class WattGovernor(BallGovernor):
 
     type_name: ClassVar[str] = "watt"
     title: ClassVar[str] = "Watt governor (textbook ch. 3, section 3.4(a), Figs. 3.1(a), 3.3)"
+    keys: ClassVar[tuple[Key, ...]] = (ARM, SUSPENSION, PIVOT_OFFSET, LINK, SLEEVE_OFFSET,
+                                       *RANGE, SLEEVE_FRICTION)
+    example: ClassVar[str] = "watt-design"
 
     @classmethod
     def parse(cls, reader) -> WattGovernor:
@@ -69,22 +85,20 @@ class WattGovernor(BallGovernor):
         ``pivot_offset`` (required and positive for "collar" and "crossed", absent for "axis");
         ``link`` (default ``arm``), ``sleeve_offset`` (default 0); the radius range and
         ``sleeve_friction``."""
-        arm = reader.quantity("arm", "length")
-        suspension = reader.choice("suspension", SUSPENSIONS, "axis")
+        v = reader.read_all((ARM, SUSPENSION))
+        suspension = v["suspension"]
         if suspension == "axis":
             if reader.has("pivot_offset"):
                 reader.fail("pivot_offset", "not used with suspension = \"axis\" (Fig. 3.3(a))")
             offset = 0.0
         else:
-            offset = reader.quantity("pivot_offset", "length")
-        linkage = Linkage(
-            arm=arm, link=reader.quantity("link", "length", required=False, default=arm),
-            pivot_offset=-offset if suspension == "crossed" else offset,
-            sleeve_offset=reader.quantity("sleeve_offset", "length", required=False,
-                                          default=0.0, nonnegative=True))
+            offset = reader.read(PIVOT_OFFSET, v)
+        reader.read_all((LINK, SLEEVE_OFFSET), v)
+        linkage = Linkage(arm=v["arm"], link=v["link"],
+                          pivot_offset=-offset if suspension == "crossed" else offset,
+                          sleeve_offset=v["sleeve_offset"])
         inner, outer, normal = cls._read_range(reader)
-        friction = reader.quantity("sleeve_friction", "force", required=False, default=0.0,
-                                   nonnegative=True)
+        friction = reader.read(SLEEVE_FRICTION)
         reader.finish()
         cls._check_reach(reader, linkage, inner, outer)
         gov = cls(linkage, inner, outer, normal, friction)

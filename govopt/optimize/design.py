@@ -35,7 +35,13 @@ from ..analysis import loadchange, statics
 from ..analysis import transient as tr
 from ..errors import DesignError, InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS, design_size_error
-from ..requirements import SpringFigures, holds, requirement_rows, stress_row
+from ..requirements import (
+    SpringFigures,
+    holds,
+    requirement_rows,
+    search_bound_rows,
+    stress_row,
+)
 from ..spec import Design, Requirements, Spec, Speed
 from ..springs import helical as hx
 from ..units import G_STANDARD, SI_UNITS
@@ -294,16 +300,13 @@ def vibration_bound(spec: Spec, km: KappaModel, grid: Grid, rows, kappa, f):
 
 
 def catalogue_axes(req: Requirements):
-    """The catalogue's wire diameters, coil radii and turns within the bounds (1-D arrays)."""
-    d = np.array([w for w in req.wire_diameters
-                  if req.wire_diameter[0] - 1e-12 <= w <= req.wire_diameter[1] + 1e-12])
-    rs = req.coil_radius_step
-    r = np.arange(math.ceil(req.coil_radius[0] / rs - 1e-9),
-                  math.floor(req.coil_radius[1] / rs + 1e-9) + 1) * rs
-    ts = req.turn_step
-    n = np.arange(math.ceil(req.active_turns[0] / ts - 1e-9),
-                  math.floor(req.active_turns[1] / ts + 1e-9) + 1) * ts
-    return d, r, n
+    """The catalogue's wire diameters, coil radii and turns within the bounds (1-D arrays);
+    a bound with equal ends fixes the value, on the catalogue or not."""
+    lo, hi = req.wire_diameter
+    d = np.array([lo] if lo == hi else
+                 [w for w in req.wire_diameters if lo - 1e-12 <= w <= hi + 1e-12])
+    return d, _steps(*req.coil_radius, req.coil_radius_step), \
+        _steps(*req.active_turns, req.turn_step)
 
 
 def spring_catalogue(req: Requirements):
@@ -402,8 +405,7 @@ def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=(
     for the springs that pass the cheap rows before them: the same answer for each spring, in
     a fraction of the time (the design screen checks millions of pairs)."""
     mat = spec.material
-    ok = holds([row for row in requirement_rows(spec, req) if row.group == "spring"],
-               SpringFigures(d, r, n, l0, mat))
+    ok = holds(requirement_rows(spec, req), SpringFigures(d, r, n, l0, mat))
     from ..analysis import spring_engineering as se
 
     if kappa is None:
@@ -685,7 +687,8 @@ def gp_values(spec: Spec, req: Requirements, km: KappaModel, i: int, k_lo: float
                   density=mat.density)
     # the requirement rows' GP limits; the body length at the band's largest free length
     ev = {"l0": float(km.l0.x[i, 0] + km.l0.y[i, 0] / k_hi)}
-    values.update({row.gp.limit: row.limit(ev) for row in requirement_rows(spec, req)
+    values.update({row.gp.limit: row.limit(ev)
+                   for row in (*requirement_rows(spec, req), *search_bound_rows(req))
                    if row.gp is not None})
     return values
 
@@ -825,6 +828,7 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
     if failed:  # the closing check decides: a design that fails it is no design
         raise DesignError(unverified(spec, cand, failed))
     res.kind = "design"
+    searched = search_bounds(spec, req, cand)
     gap = None if bound is None else (cand.objective - bound["objective"]) / bound["objective"]
     damping = gov.key_unit("damping")
     unit = objective_unit(req, gov)
@@ -845,13 +849,100 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
             (f"objective_{unit}" if k == "objective" else k): v for k, v in bound.items()},
         "gap": gap,
         "search": stats,
-        "notes": [] if spec.engine is not None and spec.load_changes else [
+        "notes": ([] if spec.engine is not None and spec.load_changes else [
             "no [engine] or [[load_change]] in the spec: the dash-pot and the load-change "
-            "requirements (eq. 32, over-regulation, settling) were not designed for"],
+            "requirements (eq. 32, over-regulation, settling) were not designed for"])
+        + bounds_notes(searched),
+        "search_bounds": searched,
         "sensitivities": sensitivities(spec, req, None if bound is None
                                        else bound["objective"]),
     }
     return res
+
+
+def _grid_ends(values) -> tuple[float, float]:
+    values = np.asarray(values, dtype=float)
+    return (float(values.min()), float(values.max())) if values.size else (math.nan, math.nan)
+
+
+def search_bounds(spec: Spec, req: Requirements, cand: Candidate) -> list[dict]:
+    """The bounds the search searched (``[bounds]``, defaults included) and where the chosen
+    design lies in them, one dict each: the variable's ``name`` (``ball_mass``,
+    ``wire_diameter``, ...), its ``key`` in ``[bounds]``, its SI ``unit``, ``low_<unit>``,
+    ``high_<unit>`` and ``value_<unit>`` (``low``, ``high``, ``value`` when dimensionless),
+    ``given`` (the spec states it) and ``at``: ``"lower"`` or ``"upper"`` where the design
+    takes the least or the largest value the search could give it within the bound (the
+    catalogue's grid), ``"fixed"`` for equal ends, else None."""
+    from ..spec_keys import bounds_table
+
+    gov = spec.governor
+    kind = gov.spring_kind
+    given = (spec.data or {}).get("bounds") or {}
+    table = bounds_table(gov, kind)
+    rows = [(f"{gov.mass_key}_mass", gov.mass_key, "kg", req.flying_mass, mass_grid(req),
+             cand.m)]
+    if gov.central_load:
+        rows.append(("central_mass", "central", "kg", req.central_mass,
+                     _steps(*req.central_mass, req.mass_step), cand.central))
+    if cand.spring and kind is not None and kind.helical:
+        axes = dict(zip(("wire_diameter", "coil_radius", "active_turns"),
+                        catalogue_axes(req), strict=True))
+        rows += [(k.name, k.name, k.unit, getattr(req, k.name), axes[k.name],
+                  cand.spring[k.name]) for k in kind.bounds]
+    elif cand.spring and kind is not None:
+        from ..springs import leaf
+
+        w, t = leaf.stock_sections()
+        keep = ((w >= req.leaf_width[0] - 1e-12) & (w <= req.leaf_width[1] + 1e-12)
+                & (t >= req.leaf_thickness[0] - 1e-12) & (t <= req.leaf_thickness[1] + 1e-12))
+        rows += [(k.name, k.name, k.unit, getattr(req, k.name), grid[keep],
+                  cand.spring[k.name]) for k, grid in zip(kind.bounds, (w, t), strict=True)]
+    if req.dashpot is not None and not math.isnan(cand.f):
+        rows.append(("dashpot_f", "dashpot_f", gov.key_unit("damping"), req.dashpot,
+                     np.array(req.dashpot), cand.f))
+    out = []
+    for name, key, unit, (lo, hi), grid, value in rows:
+        first, last = _grid_ends(grid)
+        tol = 1e-9 * max(abs(first), abs(last), 1e-300)
+        at = ("fixed" if lo == hi else "lower" if value <= first + tol
+              else "upper" if value >= last - tol else None)
+        suffix = f"_{unit}" if unit else ""
+        names = [n for n in table.key(key).names if n in given]
+        out.append({"name": name, "key": names[0] if names else "/".join(table.key(key).names),
+                    "unit": unit, f"low{suffix}": lo, f"high{suffix}": hi,
+                    f"value{suffix}": value, "given": bool(names), "at": at})
+    return out
+
+
+def _shown(value: float, unit: str) -> str:
+    """A bound's value as a person reads it: lengths in mm."""
+    if unit == "m":
+        return f"{value * 1e3:.4g} mm"
+    return f"{value:.4g} {unit}".rstrip()
+
+
+def bounds_notes(searched: list[dict]) -> list[str]:
+    """The report's lines on the bounds searched (:func:`search_bounds`): every bound, its
+    default marked, and each variable the design takes at a search bound."""
+    def ends(b):
+        s = f"_{b['unit']}" if b["unit"] else ""
+        return b[f"low{s}"], b[f"high{s}"], b[f"value{s}"]
+
+    parts = []
+    for b in searched:
+        lo, hi, _ = ends(b)
+        span = (_shown(lo, b["unit"]) if b["at"] == "fixed" else
+                f"{_shown(lo, b['unit'])} .. {_shown(hi, b['unit'])}")
+        how = [w for w, on in (("default", not b["given"]), ("fixed", b["at"] == "fixed"))
+               if on]
+        parts.append(f"{b['name']} {span}" + (f" ({', '.join(how)})" if how else ""))
+    notes = ["search bounds ([bounds]): " + ", ".join(parts)]
+    for b in searched:
+        if b["at"] in ("lower", "upper"):
+            notes.append(f"at the {b['at']} search bound of {b['name']} "
+                         f"({_shown(ends(b)[2], b['unit'])}): widen [bounds] {b['key']} to "
+                         "search beyond it")
+    return notes
 
 
 def unverified(spec: Spec, cand: Candidate, failed) -> str:
@@ -1030,6 +1121,9 @@ def _dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fal
 
     rpm = 30.0 / math.pi
     moves = []
+    central = central_move(spec, req, lambda r: feasible(spec, r))
+    if central:
+        moves.append(central)
     x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=req.k2_margin / x)))
     if x is not None and req.k2_margin:
         moves.append(f"requirements.k2_margin {req.k2_margin:g} -> {req.k2_margin / x:.4g}")
@@ -1055,6 +1149,32 @@ def _dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fal
         f"operating band the geometry and friction allow spans a speed ratio {best:.4g}, the "
         f"spec's range {sp.omega_outer / sp.omega_inner:.4g})")
     return head + tail
+
+
+def central_move(spec: Spec, req: Requirements, feasible) -> str | None:
+    """The central load's upper search bound that makes ``feasible(requirements)`` hold, as
+    a diagnosis's move (``bounds.central_weight 0 .. 0 kg (the default: no central load) -> 0
+    .. 21.6 kg``), or None: where the type has a central load and no central load up to 100
+    times the flying mass's upper bound does it. The bound is raised from the spec's (from a
+    hundredth of the flying mass's upper bound where it is 0) by bisection in log space."""
+    gov = spec.governor
+    if not gov.central_load:
+        return None
+    lo, hi = req.central_mass
+    top = 100.0 * max(req.flying_mass[1], hi)
+    base = hi if hi > 0 else req.flying_mass[1] / 100.0
+
+    def widened(x):
+        return replace(req, central_mass=(lo, base * x))
+
+    x = _bisect(lambda x: feasible(widened(x)), lo=1.0, hi=top / base, iters=16)
+    if x is None or (hi > 0 and x == 1.0):
+        return None
+    given = "central_weight" if "central_mass" not in ((spec.data or {}).get("bounds") or {}) \
+        else "central_mass"
+    default = "" if hi > 0 else " (the default: no central load)"
+    return (f"bounds.{given} {lo:.4g} .. {hi:.4g} kg{default} -> {lo:.4g} .. "
+            f"{base * x:.4g} kg")
 
 
 def _check_grids(spec: Spec, req: Requirements) -> None:

@@ -13,34 +13,41 @@ Kinds (:data:`KINDS`, keyed by :attr:`govopt.governors.base.Governor.spring`):
   governor's (the traction engine's leaf, :mod:`govopt.springs.leaf`), of a ``[material]`` with
   an elastic modulus.
 
-Defaults of the bounds are the fields of :class:`govopt.inputs.Requirements` of the same names.
+Each key is a :class:`govopt.keys.Key` (what the parser reads, the reference and the schema
+show); the defaults of the bounds are the fields of :class:`govopt.inputs.Requirements` of the
+same names. :data:`FORM` declares the governor spec's ``[spring]`` table, the helical spring's
+form for the spring engineering checks (:class:`govopt.inputs.SpringForm`).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..inputs import PREFERRED_WIRE, Requirements, SpringForm
+from ..keys import Key, Table
 from ..limits import MAX_COMBINATIONS, MAX_SPRINGS, count_error, steps
+
+_REQ, _FORM = Requirements(), SpringForm()
 
 
 @dataclass(frozen=True)
 class SpringKind:
-    """One kind of governor spring: its spec keys and the search's catalogue limits."""
+    """One kind of governor spring: its spec keys (:class:`govopt.keys.Key`) and the search's
+    catalogue limits."""
 
     name: str
     #: a helical spring of round wire (shear stress, wire grades, EN 15800 tolerances)
     helical: bool
-    #: the ``[design]`` keys of its section, in reading order: (key, dimension); ``None`` for a
-    #: bare number (a count)
-    section: tuple[tuple[str, str | None], ...]
+    #: the ``[design]`` keys of its section, in reading order
+    section: tuple[Key, ...]
     #: the section's key an error names when ``[material]`` is missing, and why it is needed
     needs_material: tuple[str, str]
-    #: ``[bounds]`` of the section: (key, dimension; "dimensionless" for a bare pair)
-    bounds: tuple[tuple[str, str], ...]
-    #: the kind's own ``[requirements]`` numbers: (key, upper limit, exclusive)
-    requirement_numbers: tuple[tuple[str, float], ...] = ()
-    #: the kind's own ``[catalogue]`` choices: (key, choices, default)
-    catalogue_choices: tuple[tuple[str, tuple[str, ...], str], ...] = ()
+    #: ``[bounds]`` of the section (pairs; defaults: :class:`govopt.inputs.Requirements`)
+    bounds: tuple[Key, ...]
+    #: the kind's own ``[requirements]`` keys
+    requirements: tuple[Key, ...] = ()
+    #: the kind's own ``[catalogue]`` keys
+    catalogue: tuple[Key, ...] = ()
 
     def section_error(self, values: dict) -> tuple[str, str] | None:
         """``(key, message)`` when the section read from ``[design]`` cannot be built, else
@@ -77,26 +84,93 @@ class SpringKind:
         ]
 
 
+#: a helical spring's section: wire, mean coil radius, active turns (Hamabe Ex. 1; EN 13906-1)
+HELICAL_SECTION = (
+    Key("wire_diameter", "length", "the wire's diameter d", source="EN 13906-1", example="4 mm"),
+    Key("coil_radius", "length", "the coil's mean radius r (half the mean coil diameter)",
+        source="Hamabe Ex. 1", example="2.4 cm"),
+    Key("active_turns", "number", "the active turns n", source="EN 13906-1", example=8.5),
+)
+HELICAL_BOUNDS = (
+    Key("wire_diameter", "length", "the wire diameters searched", shape="pair",
+        default=_REQ.wire_diameter),
+    Key("coil_radius", "length", "the mean coil radii searched", shape="pair",
+        default=_REQ.coil_radius),
+    Key("active_turns", "dimensionless", "the active turns searched", shape="pair",
+        default=_REQ.active_turns),
+)
+HELICAL_CATALOGUE = (
+    Key("wire_diameters", "length", "the wire diameters the search may use (within "
+                                    "bounds.wire_diameter), or \"preferred\": ISO 3 R20 sizes "
+                                    "1-25 mm", shape="list", choices=("preferred",),
+        default=PREFERRED_WIRE, default_text="\"preferred\" (ISO 3 R20, 1 mm to 25 mm)"),
+    Key("turn_step", "number", "the step of the active turns", default=_REQ.turn_step),
+    Key("coil_radius_step", "length", "the step of the mean coil radius",
+        default=_REQ.coil_radius_step),
+)
+
+
 def _helical(name: str) -> SpringKind:
     return SpringKind(
-        name=name, helical=True,
-        section=(("wire_diameter", "length"), ("coil_radius", "length"), ("active_turns", None)),
+        name=name, helical=True, section=HELICAL_SECTION,
         needs_material=("wire_diameter", "a spring given by its wire needs a [material] table "
                                          "(or give spring_stiffness)"),
-        bounds=(("wire_diameter", "length"), ("coil_radius", "length"),
-                ("active_turns", "dimensionless")))
+        bounds=HELICAL_BOUNDS, catalogue=HELICAL_CATALOGUE)
 
 
 #: a leaf's bow over its length within the article's stated range of its chord models (eq. 8)
 LEAF = SpringKind(
     name="leaf", helical=False,
-    section=(("leaf_width", "length"), ("leaf_thickness", "length")),
+    section=(Key("leaf_width", "length", "the leaf's width w", source="article 003, eq. 7"),
+             Key("leaf_thickness", "length", "the leaf's thickness t, less than its width",
+                 source="article 003, eq. 7")),
     needs_material=("leaf_width", "a leaf given by its section needs a [material] table "
                                   "(or give spring_stiffness)"),
-    bounds=(("leaf_width", "length"), ("leaf_thickness", "length")),
-    requirement_numbers=(("max_bow_ratio", 0.5),),
-    catalogue_choices=(("leaf_sections", ("standard",), "standard"),))
+    bounds=(Key("leaf_width", "length", "the leaf widths searched (stock sections within them)",
+                shape="pair", default=_REQ.leaf_width),
+            Key("leaf_thickness", "length", "the leaf thicknesses searched", shape="pair",
+                default=_REQ.leaf_thickness)),
+    requirements=(Key("max_bow_ratio", "number", "the largest bow of the leaf over its length "
+                                                 "(the article's stated range of its eq. 8)",
+                      default=_REQ.max_bow_ratio, high=0.5, source="article 003, eq. 8"),),
+    catalogue=(Key("leaf_sections", "choice", "the leaf sections the search may use: "
+                                              "\"standard\", the stock list "
+                                              "(govopt/data/leaf_stock.csv)",
+                   default="standard", choices=("standard",)),))
 
 #: every spring kind by the name a governor type gives it (``Governor.spring``)
 KINDS: dict[str, SpringKind] = {
     "compression": _helical("compression"), "tension": _helical("tension"), "leaf": LEAF}
+
+
+def _end_forms() -> tuple:
+    from . import helical
+
+    return tuple(helical.END_FORMS)
+
+
+def _seatings() -> tuple:
+    from . import helical
+
+    return tuple(helical.SEATING)
+
+
+#: ``[spring]``: the helical spring's form, for the spring engineering checks
+#: (:class:`govopt.inputs.SpringForm`)
+FORM = Table("spring", "the helical spring's form, for the spring engineering checks (coil "
+                       "clash, buckling, hooks)", (
+    Key("ends", "choice", "a compression spring's end form (its solid length)",
+        default=_FORM.ends, choices=_end_forms, source="EN 13906-1 (solid length)"),
+    Key("seating", "choice", "how a compression spring's ends are held (its buckling length)",
+        default=_FORM.seating, choices=_seatings, source="EN 13906-1 (buckling)"),
+    Key("inactive_turns", "number", "the turns beyond the active ones (n_t = n + this)",
+        default=_FORM.inactive_turns, nonnegative=True, source="EN 13906-1"),
+    Key("overtravel", "number", "the deflection beyond full lift (an overspeed margin), as a "
+                                "fraction of the working stroke", default=_FORM.overtravel,
+        nonnegative=True),
+    Key("initial_tension", "force", "an extension spring's initial tension", default=None,
+        nonnegative=True, default_text="the middle of Shigley's preferred range, at most the "
+                                       "least working force"),
+    Key("hook_bend_radius", "length", "an extension spring's hook bend radius", default=None,
+        default_text="2 d"),
+))

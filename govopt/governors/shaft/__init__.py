@@ -24,12 +24,68 @@ from typing import ClassVar
 
 import numpy as np
 
+from ...keys import Key, Table
 from ...springs import helical as hx
 from ...units import G_STANDARD
 from ..base import Governor, Terms
 from . import linkage, valvegear
 
 ANGLE_RANGE = dict(low=0.0, high=np.pi, range_text="(0 deg, 180 deg)")
+
+
+def _angle(name: str, meaning: str, source: str = "Hamabe Fig. 1") -> Key:
+    return Key(name, "angle", meaning, source=source, **ANGLE_RANGE)
+
+
+#: ``[governor]`` of the shaft governor (Hamabe Fig. 1; the pendulum swings about its fulcrum S
+#: on the flywheel, O the shaft's axis)
+KEYS = (
+    Key("a", "length", "fulcrum S to the shaft's axis O (a = SO)", source="Hamabe Fig. 1",
+        example="18 cm"),
+    Key("rho", "length", "fulcrum S to the pendulum's centre of gravity P (rho = SP)",
+        source="Hamabe Fig. 1", example="12 cm"),
+    Key("b", "length", "fulcrum S to the spring's attachment G (b = SG), less than a",
+        source="Hamabe Fig. 1", example="3 cm"),
+    Key("q", "length", "the lever SQ that drives the valve gear's eccentric",
+        source="Hamabe Fig. 1, eqs. 4-11", example="5 cm"),
+    _angle("alpha_inner", "the angle OSP at the innermost configuration (lowest speed)"),
+    _angle("alpha_outer", "the angle OSP at the outermost configuration (highest speed)"),
+    _angle("alpha_normal", "the angle OSP at the normal configuration (the normal cut-off), "
+                           "between alpha_inner and alpha_outer"),
+)
+
+#: ``[valve_gear]``: the valve gear the pendulums drive (Hamabe Part I, eqs. 4-11)
+VALVE_GEAR = Table("valve_gear", "the valve gear the pendulums drive, whose mean reaction "
+                                 "loads them (Hamabe Part I, eqs. 4-11, Fig. 6)", (
+    Key("eccentricity", "length", "the eccentric's eccentricity e", source="Hamabe Figs. 3-4"),
+    Key("offset", "length", "the offset s of the rotating parts' centre of gravity, "
+                            "y = e cot(delta) - s cos(delta)",
+        nonnegative=True, source="Hamabe Fig. 4"),
+    Key("friction", "force", "the valve gear's friction P1 (chiefly the stuffing box's)",
+        nonnegative=True, source="Hamabe eq. 5"),
+    Key("steam_load", "force", "the unbalanced steam load on the valve spindle P3 (signed)",
+        positive=False, source="Hamabe eqs. 7-8"),
+    Key("weight", "force", "the weight of the valve, its spindle, the eccentric and its rod "
+                           "P4 (signed)", positive=False, source="Hamabe eqs. 7-8"),
+    Key("reciprocating", "weight", "the valve gear's reciprocating parts m_v",
+        source="Hamabe eq. 6"),
+    Key("eccentric", "weight", "the valve gear's rotating parts m_e (eccentric disc and "
+                               "strap)", source="Hamabe Part I, force (v)"),
+    Key("engine", "choice", "how the engine stands (the valve's weight acts along the valve "
+                            "rod only in a vertical engine)",
+        default="vertical", choices=("vertical", "horizontal")),
+    Key("table", "table", "the valve gear's table: the eccentric's angle delta at each "
+                          "configuration alpha ([valve_gear.table])"),
+), required=True)
+
+#: ``[valve_gear.table]``: delta(alpha), Hamabe Fig. 6
+VALVE_TABLE = Table("valve_gear.table", "the eccentric's angle delta at configurations alpha, "
+                                        "covering alpha_inner .. alpha_outer (Hamabe Fig. 6)", (
+    Key("alpha", "angle", "configurations alpha, strictly increasing", shape="list",
+        source="Hamabe Fig. 6", **ANGLE_RANGE),
+    Key("delta", "angle", "the eccentric's angle delta at each alpha", shape="list",
+        source="Hamabe Fig. 6", **ANGLE_RANGE),
+), required=True)
 
 
 @dataclass(frozen=True)
@@ -62,6 +118,11 @@ class ShaftGovernor(Governor):
     mass_name: ClassVar[str] = "pendulum"
     resonance_source: ClassVar[str] = "Hamabe Part II, case 1"
     free_length_key: ClassVar[str] = "free_half_length"
+    free_length_meaning: ClassVar[str] = ("half the spring's free length, l0 (the spring joins "
+                                          "the two pendulums' attachments G through the axis)")
+    keys: ClassVar[tuple[Key, ...]] = KEYS
+    tables: ClassVar[tuple[Table, ...]] = (VALVE_GEAR, VALVE_TABLE)
+    example: ClassVar[str] = "hamabe-design"
     spring_length_factor: ClassVar[float] = 2.0
     force_names: ClassVar[tuple[str, str, str]] = ("M_z", "M_f", "M_r0")
 
@@ -90,20 +151,14 @@ class ShaftGovernor(Governor):
     def parse(cls, reader) -> ShaftGovernor:
         """``[governor]`` keys a, rho, b, q, alpha_inner, alpha_outer, alpha_normal, and the
         top-level ``[valve_gear]`` table (``reader.top``)."""
-        gov = cls(
-            a=reader.quantity("a", "length"), rho=reader.quantity("rho", "length"),
-            b=reader.quantity("b", "length"), q=reader.quantity("q", "length"),
-            alpha_inner=reader.quantity("alpha_inner", "angle", **ANGLE_RANGE),
-            alpha_outer=reader.quantity("alpha_outer", "angle", **ANGLE_RANGE),
-            alpha_normal=reader.quantity("alpha_normal", "angle", **ANGLE_RANGE),
-        )
+        gov = cls(**reader.read_all(KEYS))
         if not gov.alpha_inner < gov.alpha_normal < gov.alpha_outer:
             reader.fail("alpha_normal", "expected alpha_inner < alpha_normal < alpha_outer")
         if gov.b >= gov.a:
             reader.fail("b", "expected b < a (the spring attachment lies between fulcrum and "
                              "shaft)")
         reader.finish()
-        vg = _parse_valve_gear(reader.top.sub("valve_gear"), gov)
+        vg = _parse_valve_gear(reader.top.sub("valve_gear", declared=VALVE_GEAR), gov)
         return cls(**{**gov.__dict__, "valve_gear": vg})
 
     # -- the valve gear's mean reaction (eq. 11) ------------------------------------------------
@@ -309,9 +364,9 @@ class ShaftGovernor(Governor):
 def _parse_valve_gear(vg, geometry) -> ValveGear:
     """``[valve_gear]`` and its table (Hamabe Part I eqs. 4-11, Fig. 6), SI; the table must
     cover the configuration range."""
-    table = vg.sub("table")
-    t_alpha = table.quantities("alpha", "angle", **ANGLE_RANGE)
-    t_delta = table.quantities("delta", "angle", **ANGLE_RANGE)
+    v = vg.read_all(VALVE_GEAR.keys[:-1])
+    table = vg.sub("table", declared=VALVE_TABLE)
+    t_alpha, t_delta = (np.array(x) for x in table.read_all(VALVE_TABLE).values())
     if len(t_alpha) != len(t_delta):
         table.fail("delta", f"expected {len(t_alpha)} values, one per alpha, got {len(t_delta)}")
     if np.any(np.diff(t_alpha) <= 0):
@@ -326,15 +381,10 @@ def _parse_valve_gear(vg, geometry) -> ValveGear:
                                 "govopt does not extrapolate the valve gear)")
     table.finish()
     out = ValveGear(
-        eccentricity=vg.quantity("eccentricity", "length"),
-        offset=vg.quantity("offset", "length", nonnegative=True),
-        friction=vg.quantity("friction", "force", nonnegative=True),
-        steam_load=vg.quantity("steam_load", "force", positive=False),
-        weight=vg.quantity("weight", "force", positive=False),
-        reciprocating_mass=vg.weight_or_mass("reciprocating"),
-        eccentric_mass=vg.weight_or_mass("eccentric"),
-        engine=vg.choice("engine", ("vertical", "horizontal"), "vertical"),
-        table_alpha=t_alpha, table_delta=t_delta,
+        eccentricity=v["eccentricity"], offset=v["offset"], friction=v["friction"],
+        steam_load=v["steam_load"], weight=v["weight"],
+        reciprocating_mass=v["reciprocating"], eccentric_mass=v["eccentric"],
+        engine=v["engine"], table_alpha=t_alpha, table_delta=t_delta,
     )
     vg.finish()
     return out

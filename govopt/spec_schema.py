@@ -1,0 +1,147 @@
+"""The JSON Schema of a governor spec file, generated from the key declarations
+(:mod:`govopt.keys`, :func:`govopt.spec_keys.spec_tables`): ``govopt schema`` writes it for TOML
+editors (Even Better TOML / taplo: completion, hover text and checking as the file is typed).
+
+Draft-07. The base schema names the governor types; for each type an ``if``/``then`` pair
+closes every table to the type's declared keys (a misspelt key is an error, as in the parser),
+quantities must be strings with a unit (a bare number, or a string of digits, is not a length),
+choices are enumerations and static ranges are limits. What only the parser can check (a
+quantity's dimension, ranges that depend on other keys, keys required in one configuration)
+stays the parser's.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+from .keys import WEIGHT, Key, Table
+from .spec_docs import describe
+
+#: a string with a unit: a letter that is not an exponent's ``e``, or a degree, minute or
+#: second sign (no look-ahead, which taplo's regular expressions lack)
+UNIT_PATTERN = "[A-DF-Za-df-z_°µ'\"%]"
+
+
+def _limits(key: Key) -> dict:
+    """JSON Schema limits of a bare number from the declaration's static range (the reader's:
+    exclusive ``low`` and ``high``, and positive or not negative)."""
+    out = {}
+    if key.nonnegative:
+        out["minimum"] = 0
+    elif key.positive:
+        out["exclusiveMinimum"] = 0
+    lo = None if callable(key.low) else key.low
+    hi = None if callable(key.high) else key.high
+    if lo is not None and math.isfinite(lo):
+        out["exclusiveMinimum"] = max(lo, out.get("exclusiveMinimum", lo))
+    if hi is not None and math.isfinite(hi):
+        out["exclusiveMaximum"] = hi
+    return out
+
+
+def _value(key: Key, dimension: str | None) -> dict:
+    """The schema of one value of ``key`` (a quantity of ``dimension``, or its kind's)."""
+    kind = key.kind
+    if kind == "choice":
+        return {"enum": list(key.options())}
+    if kind == "text":
+        return {"type": "string"}
+    if kind == "flag":
+        return {"type": "boolean"}
+    if kind == "table":
+        return {"type": "object"}
+    if dimension is None or dimension == "dimensionless":
+        return {"type": "integer" if kind == "count" else "number", **_limits(key)}
+    return {"type": "string", "pattern": UNIT_PATTERN}
+
+
+def _key_schema(key: Key, name: str) -> dict:
+    dimension = ("force" if name.endswith("_weight") else "mass") if key.kind == WEIGHT \
+        else key.dimension
+    one = _value(key, dimension)
+    if key.shape == "pair":
+        pair = {"type": "array", "items": one, "minItems": 2, "maxItems": 2}
+        schema = {"anyOf": [one, pair]} if key.single else pair
+    elif key.shape == "list":
+        schema = {"type": "array", "items": one, "minItems": 1}
+    else:
+        schema = one
+    extra = key.options() if key.kind != "choice" else ()
+    if extra:
+        schema = {"anyOf": [schema, {"enum": list(extra)}]}
+    out = {"description": describe(key), **schema}
+    default = key.default
+    if key.kind in ("choice", "flag", "count", "number") and key.shape == "scalar" \
+            and isinstance(default, bool | int | float | str) and not callable(default):
+        out["default"] = default
+    return out
+
+
+def table_schema(table: Table, tables: dict[str, Table]) -> dict:
+    """The schema of one table: its declared keys only (a sub-table by its own schema)."""
+    props, required, rules = {}, [], []
+    for key in table.keys:
+        for name in key.names:
+            sub = tables.get(f"{table.name}.{name}" if table.name else name)
+            if key.kind == "table" and sub is not None:
+                schema = table_schema(sub, tables)
+                props[name] = ({"type": "array", "items": schema, "description": sub.meaning}
+                               if sub.array else schema)
+            elif key.kind == "table" and not table.name:  # an open table (a study's)
+                props[name] = {"type": "object", "description": key.meaning}
+            else:
+                props[name] = _key_schema(key, name)
+        if key.required and not key.when:
+            if key.kind == WEIGHT:
+                rules.append({"anyOf": [{"required": [n]} for n in key.names]})
+            else:
+                required.append(key.name)
+        if key.kind == WEIGHT:  # one spelling, not both
+            rules.append({"not": {"required": list(key.names)}})
+    out = {"type": "object", "description": table.meaning, "properties": props,
+           "additionalProperties": False}
+    if table.open:
+        out = {"type": "object", "description": table.meaning}
+    if required:
+        out["required"] = required
+    if rules:
+        out["allOf"] = rules
+    return out
+
+
+def schema() -> dict:
+    """The JSON Schema (draft-07) of a governor spec file, every type's tables closed to their
+    declared keys."""
+    from .governors import REGISTRY, governor_class
+    from .spec_keys import spec_tables
+
+    branches = []
+    for name in REGISTRY:
+        tables = spec_tables(name)
+        branches.append({
+            "if": {"properties": {"governor": {"properties": {"type": {"const": name}},
+                                               "required": ["type"]}},
+                   "required": ["governor"]},
+            "then": {**table_schema(tables[""], tables),
+                     "description": f"{governor_class(name).title}"}})
+    return {
+        "$schema": "http://json-schema.org/draft-07/schema#",
+        "title": "govopt governor spec",
+        "description": "A govopt spec file (TOML with units): the governor, the speeds, the "
+                       "spring's material, a design to evaluate or the requirements of one to "
+                       "find. docs/reference/spec.md lists every key.",
+        "type": "object",
+        "properties": {"governor": {
+            "type": "object", "description": "the governor: its type and geometry",
+            "properties": {"type": {"enum": list(REGISTRY),
+                                    "description": "the governor type: its own keys follow"}},
+            "required": ["type"]}},
+        "required": ["governor"],
+        "allOf": branches,
+    }
+
+
+def text() -> str:
+    """:func:`schema` as JSON text (indented, keys in declared order)."""
+    return json.dumps(schema(), indent=2, ensure_ascii=False) + "\n"

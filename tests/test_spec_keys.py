@@ -1,0 +1,329 @@
+"""Every spec key declared once (govopt.keys): the parser reads the declarations, and the
+reference, the `govopt init --type` templates and the JSON Schema are generated from them."""
+
+import copy
+import json
+import tomllib
+from pathlib import Path
+
+import pytest
+from clirun import invoke
+
+import govopt
+from govopt.examples import SPECS
+from govopt.governors import REGISTRY, governor_class
+from govopt.keys import Key
+from govopt.spec import parse_spec
+from govopt.spec_keys import spec_tables
+
+REFERENCE = Path(__file__).resolve().parents[1] / "docs" / "reference" / "spec.md"
+GOVERNOR_SPECS = sorted([*SPECS.glob("*.toml"), *SPECS.glob("studies/*.toml")])
+
+
+def test_reference_is_generated_from_the_declarations():
+    """docs/reference/spec.md is what the declarations give today; regenerate it with
+    `python -m govopt.spec_docs docs/reference/spec.md`."""
+    from govopt.spec_docs import reference
+
+    assert REFERENCE.read_text(encoding="utf-8") == reference(), (
+        "docs/reference/spec.md is stale: run python -m govopt.spec_docs "
+        "docs/reference/spec.md")
+
+
+def _sections(text: str) -> dict[str, str]:
+    """The reference's ``### `` sections by heading."""
+    return {part.split("\n", 1)[0]: part for part in text.split("\n### ")[1:]}
+
+
+def test_reference_lists_every_key_of_every_type():
+    """Each type's own sections, or the shared ones, name every table and every key a spec of
+    the type may hold, with its default (the default [bounds] and [requirements] among them)."""
+    sections = _sections(REFERENCE.read_text(encoding="utf-8"))
+    for gtype in REGISTRY:
+        for name, table in spec_tables(gtype).items():
+            title = f"[[{name}]]" if table.array else f"[{name}]" if name else "top level"
+            where = sections.get(f"{gtype}: {title}") or sections[title]
+            for key in () if table.open else table.keys:
+                row = next((ln for ln in where.splitlines()
+                            if ln.startswith(f"| `{key.names[0]}`")), None)
+                assert row is not None, (gtype, name, key.name)
+                assert key.required or f"| {key.default_words()} |" in row, row
+    bounds = sections["hartnell: [bounds]"]
+    assert "[0.001, 0.025] m" in bounds and "[2, 20] kg" in bounds  # wire and ball defaults
+    assert "| `objective` |" in sections["hartnell: [requirements]"]
+
+
+def test_every_entry_carries_its_meaning():
+    """Every input a bundled spec gives is recorded with its declaration's meaning (the
+    workbook's Spec sheet labels it)."""
+    for path in GOVERNOR_SPECS:
+        spec = govopt.load_spec(path)
+        blank = [e.key for e in spec.entries if not e.meaning]
+        assert not blank, (path.name, blank)
+
+
+def test_an_undeclared_key_is_the_parsers_mistake():
+    """A table read with its declaration takes only declared keys (the parser cannot read a
+    key that the reference, the template and the schema do not know)."""
+    from govopt.keys import Table
+    from govopt.reader import Reader
+
+    rd = Reader("f", {"a": "1 m"}, "t", [], Table("t", "a table", (Key("b", "length", "b"),)))
+    with pytest.raises(AssertionError, match="not declared"):
+        rd.quantity("a", "length")
+
+
+def test_unknown_key_lists_the_allowed_keys_in_full_or_points_to_the_reference(tmp_path):
+    """A short table's keys are listed in full; a long one's are pointed to in the reference,
+    never cut short."""
+    base = (SPECS / "hartnell-design.toml").read_text()
+    path = tmp_path / "s.toml"
+    path.write_text(base.replace('sleeve_friction = "1.5 kgf"', 'sleeve_fricton = "1.5 kgf"'))
+    run = invoke(["design", str(path)])
+    line = run.stderr.strip()
+    assert run.exit_code == 2 and "did you mean 'sleeve_friction'?" in line
+    assert line.endswith(", ".join(spec_tables("hartnell")["governor"].names) + ")")
+    path.write_text(base.replace('objective = "moving_mass"', 'objectve = "moving_mass"'))
+    line = invoke(["design", str(path)]).stderr.strip()
+    assert line.endswith("did you mean 'objective'? 18 keys allowed here, listed in "
+                         "docs/reference/spec.md under hartnell: [requirements])"), line
+    path.write_text(base + '\n[analysis]\npoints = 31\nponts = 3\n')
+    line = invoke(["design", str(path)]).stderr.strip()
+    for key in spec_tables("hartnell")["analysis"].names:
+        assert key in line
+    path.write_text(base.replace("[speed]", "[speed]\nmiddle = \"150 rpm\""))
+    line = invoke(["design", str(path)]).stderr.strip()
+    assert "allowed here: inner, outer, mean, irregularity)" in line
+
+
+@pytest.mark.parametrize("gtype", list(REGISTRY))
+def test_template_is_complete_and_designs_as_written(tmp_path, gtype):
+    """`govopt init --type TYPE` writes every key of the type (its example's values set, the
+    rest commented with their meaning), and `govopt design` runs it as written."""
+    from govopt.spec_docs import template
+
+    run = invoke(["init", "--type", gtype], cwd=tmp_path)
+    assert run.exit_code == 0, run.output
+    path = tmp_path / f"{gtype}.toml"
+    text = path.read_text(encoding="utf-8")
+    assert text == template(gtype)
+    for name, table in spec_tables(gtype).items():
+        for key in () if table.open else table.keys:
+            if key.kind != "table":
+                assert any(f"{n} = " in text for n in key.names), (name, key.name)
+    data = tomllib.loads(text)
+    example = tomllib.loads((SPECS / f"{governor_class(gtype).example}.toml").read_text())
+    for k in ("name", "description"):
+        data.pop(k), example.pop(k)
+    assert data == example  # the values: the bundled design example's, nothing else set
+    run = invoke(["design", str(path), "--json"], cwd=tmp_path)
+    assert run.exit_code == 0, run.output
+    assert json.loads(run.stdout)["status"] == "optimal"
+
+
+def test_init_needs_one_of_name_or_type(tmp_path):
+    for args in (["init"], ["init", "hamabe-a", "--type", "watt"]):
+        run = invoke(args, cwd=tmp_path)
+        assert run.exit_code == 2 and run.stderr.startswith("error: init: give"), run.output
+    run = invoke(["init", "--type", "steam"], cwd=tmp_path)
+    assert run.exit_code == 2 and "--type: expected one of shaft" in run.stderr
+
+
+@pytest.fixture(scope="module")
+def validator():
+    jsonschema = pytest.importorskip("jsonschema")
+    from govopt.spec_schema import schema
+
+    found = schema()
+    jsonschema.Draft7Validator.check_schema(found)
+    return jsonschema.Draft7Validator(found)
+
+
+def test_schema_validates_every_bundled_governor_spec(validator):
+    for path in GOVERNOR_SPECS:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        errors = [e.message for e in validator.iter_errors(data)]
+        assert not errors, (path.name, errors[:3])
+
+
+@pytest.mark.parametrize("change, where", [
+    (lambda d: d["governor"].__setitem__("ball_amr", d["governor"].pop("ball_arm")),
+     "governor"),  # a misspelt key
+    (lambda d: d["governor"].__setitem__("ball_arm", 15), "governor"),  # a bare number
+    (lambda d: d["governor"].__setitem__("ball_arm", "15"), "governor"),  # digits, no unit
+    (lambda d: d["bounds"].__setitem__("ball_mass", ["1 kg", "2 kg"]), "bounds"),  # both
+    (lambda d: d["requirements"].__setitem__("objective", "mass"), "requirements"),
+    (lambda d: d["requirements"].__setitem__("k2_margin", 0.7), "requirements"),  # > 0.5
+    (lambda d: d.__setitem__("extras", {"x": 1}), None),  # an unknown table
+    (lambda d: d["governor"].__setitem__("arm", "30 cm"), "governor"),  # a Porter's key
+])
+def test_schema_rejects_what_the_parser_rejects(validator, change, where, tmp_path):
+    """A misspelt key, a quantity without a unit, a choice or range outside the declaration:
+    the schema refuses them, and so does the parser."""
+    data = tomllib.loads((SPECS / "hartnell-design.toml").read_text())
+    bad = copy.deepcopy(data)
+    change(bad)
+    errors = list(validator.iter_errors(bad))
+    assert errors
+    assert where is None or any(where in e.absolute_path or where in list(e.path)
+                                or e.absolute_path and e.absolute_path[0] == where
+                                for e in errors), [e.message for e in errors]
+    with pytest.raises(govopt.SpecError):
+        parse_spec(bad, "bad.toml")
+
+
+def test_schema_command_writes_the_schema(tmp_path):
+    from govopt.spec_schema import text
+
+    run = invoke(["schema"])
+    assert run.exit_code == 0 and run.stdout == text()
+    run = invoke(["schema", "-o", str(tmp_path / "s.json")])
+    assert run.exit_code == 0 and (tmp_path / "s.json").read_text(encoding="utf-8") == text()
+
+
+def _hartnell(**governor) -> dict:
+    data = tomllib.loads((SPECS / "hartnell-design.toml").read_text())
+    data["governor"].update(governor)
+    return {k: v for k, v in data["governor"].items() if v is not None}
+
+
+def test_sleeve_lift_in_place_of_the_outer_radius():
+    """The Hartnell of Example 5: 3 cm of sleeve lift with 15 cm and 9 cm arms is an outer ball
+    radius of 10 + (15/9) 3 = 15 cm (the book's h = (b/a)(r_1 - r_2), exact for a 90 deg
+    crank), the same governor as radius_outer = 15 cm; with a 110 deg crank (no closed form)
+    the sleeve rises by the lift asked at the radius found."""
+    spec = tomllib.loads((SPECS / "hartnell-design.toml").read_text())
+    by_radius = parse_spec(spec).governor
+    lifted = copy.deepcopy(spec)
+    del lifted["governor"]["radius_outer"]
+    lifted["governor"]["sleeve_lift"] = "3 cm"
+    gov = parse_spec(lifted).governor
+    assert gov.x_outer == pytest.approx(by_radius.x_outer, rel=1e-15)
+    assert gov.x_normal == by_radius.x_normal and gov.crank == by_radius.crank
+    assert any(e.key == "governor.sleeve_lift" and e.meaning for e in parse_spec(lifted).entries)
+    for crank in ("110 deg", "80 deg"):
+        lifted["governor"]["crank_angle"] = crank
+        gov = parse_spec(lifted).governor
+        assert float(gov.sleeve_lift(gov.x_outer)) == pytest.approx(0.03, rel=1e-12)
+
+
+@pytest.mark.parametrize("gtype, changes, message", [
+    ("hartnell", {"sleeve_lift": "3 cm"}, "give either radius_outer or sleeve_lift"),
+    ("hartnell", {"radius_outer": None, "sleeve_lift": "40 cm"}, "cannot lift the sleeve"),
+    ("hartnell", {"radius_outer": None}, "radius_outer: missing"),
+])
+def test_sleeve_lift_errors(gtype, changes, message):
+    data = tomllib.loads((SPECS / "hartnell-design.toml").read_text())
+    data["governor"] = _hartnell(**changes)
+    with pytest.raises(govopt.SpecError, match=message):
+        parse_spec(data, "h.toml")
+
+
+def test_sleeve_lift_for_the_spring_and_gravity_governor():
+    """Fulcrum on the sleeve, at radius_inner by default: the lift gives the radius too."""
+    data = tomllib.loads((SPECS / "spring_gravity-design.toml").read_text())
+    gov = parse_spec(data).governor
+    lift = float(gov.sleeve_lift(gov.x_outer))
+    del data["governor"]["radius_outer"]
+    data["governor"]["sleeve_lift"] = f"{lift} m"
+    assert parse_spec(data).governor.x_outer == pytest.approx(gov.x_outer, rel=1e-12)
+
+
+def test_spring_length_of_the_ball_springs_defaults_to_the_balls_distance():
+    """Balls joined directly by springs: their length at radius_inner defaults to 2
+    radius_inner (the balls' centres' distance); the lever's spring has no default."""
+    data = tomllib.loads((SPECS / "spring_loaded-design.toml").read_text())
+    del data["governor"]["spring_length"]
+    gov = parse_spec(data).governor
+    assert gov.spring_length == 2.0 * gov.x_inner
+    lever = tomllib.loads((SPECS / "textbook-ex7-spring_loaded.toml").read_text())
+    del lever["governor"]["spring_length"]
+    with pytest.raises(govopt.SpecError, match="spring_length: missing"):
+        parse_spec(lever, "ex7.toml")
+
+
+# -- search bounds ----------------------------------------------------------------------------
+
+
+def test_a_written_design_is_evaluated_without_its_search_bounds(tmp_path):
+    """`govopt design hartnell-design.toml -o d.toml && govopt evaluate d.toml`: the design
+    file keeps the spec's [bounds] (they are the search's), and neither the design nor its
+    evaluation checks the made part against them."""
+    out = tmp_path / "d.toml"
+    run = invoke(["design", str(SPECS / "hartnell-design.toml"), "-o", str(out), "--json"])
+    assert run.exit_code == 0, run.output
+    designed = json.loads(run.stdout)
+    assert "bounds" in tomllib.loads(out.read_text())
+    run = invoke(["evaluate", str(out), "--json"])
+    assert run.exit_code == 0, run.output
+    evaluated = json.loads(run.stdout)
+    for res in (designed, evaluated):
+        names = [c["name"] for c in res["checks"]]
+        bounds = {f"{x} {s}" for x in ("ball mass", "wire diameter", "coil radius",
+                                       "active turns") for s in (">= min", "<= max")}
+        assert not bounds & set(names), names
+        assert all(c["group"] != "bounds" for c in res["checks"])
+    text = invoke(["evaluate", str(out)]).stdout
+    assert ">= min" not in text.replace("spring index >= min", "")
+
+
+def test_design_reports_the_bounds_it_searched_and_a_value_at_one():
+    """The design's record lists every bound searched, the defaults marked, and says where the
+    design takes the least value the search could give a variable (the Porter's balls at 2 kgf,
+    the lower end of bounds.ball_weight)."""
+    from govopt.optimize.design import design
+
+    data = tomllib.loads((SPECS / "porter-design.toml").read_text())
+    data["bounds"]["ball_weight"] = ["4 kgf", "10 kgf"]
+    res = design(parse_spec(data, "porter.toml"))
+    searched = {b["name"]: b for b in res.optimisation["search_bounds"]}
+    assert searched["ball_mass"]["at"] == "lower" and searched["ball_mass"]["value_kg"] == 4.0
+    assert searched["ball_mass"]["key"] == "ball_weight" and searched["ball_mass"]["given"]
+    notes = res.optimisation["notes"]
+    assert "at the lower search bound of ball_mass (4 kg): widen [bounds] ball_weight to " \
+           "search beyond it" in notes
+    assert any(n.startswith("search bounds ([bounds]): ball_mass 4 kg .. 10 kg, central_mass "
+                            "10 kg .. 100 kg") for n in notes)
+    hartnell = design(govopt.load_spec(SPECS / "hartnell-design.toml"))
+    line = next(n for n in hartnell.optimisation["notes"] if n.startswith("search bounds"))
+    assert "central_mass 0 kg (default, fixed)" in line  # a default, stated
+
+
+def test_equal_bounds_fix_a_value():
+    """`ball_weight = ["2.5 kgf", "2.5 kgf"]` fixes the balls; a wire fixed off the catalogue
+    is that wire."""
+    from govopt.optimize.design import design
+
+    data = tomllib.loads((SPECS / "hartnell-design.toml").read_text())
+    data["bounds"].update(ball_weight=["2.5 kgf", "2.5 kgf"], wire_diameter=["5.7 mm", "5.7 mm"])
+    res = design(parse_spec(data, "h.toml"))
+    assert res.design.flying_mass == pytest.approx(2.5)
+    assert res.design.wire_diameter == pytest.approx(0.0057)
+    fixed = {b["name"] for b in res.optimisation["search_bounds"] if b["at"] == "fixed"}
+    assert fixed >= {"ball_mass", "wire_diameter"}
+    data["bounds"]["ball_weight"] = ["3 kgf", "2 kgf"]
+    with pytest.raises(govopt.SpecError, match="expected low <= high"):
+        parse_spec(data, "h.toml")
+
+
+def test_porter_without_bounds_is_told_its_central_load_bound(tmp_path):
+    """A Porter spec without [bounds] searches a central load of 0 .. 0 kg (the default): no
+    ball floats it at 190-224 rpm, and the diagnosis names that bound first, with the central
+    load that makes the spec feasible; that bound does, and a little less does not."""
+    from govopt.errors import InfeasibleError
+    from govopt.optimize.design import design
+
+    data = tomllib.loads((SPECS / "porter-design.toml").read_text())
+    del data["bounds"]
+    with pytest.raises(InfeasibleError) as info:
+        design(parse_spec(data, "porter.toml"))
+    message = str(info.value)
+    moves = message.split("it becomes feasible if one of these moves: ")[1].split("; ")
+    assert moves[0].startswith("bounds.central_weight 0 .. 0 kg (the default: no central "
+                               "load) -> 0 .. "), message
+    upper = float(moves[0].split(" .. ")[-1].removesuffix(" kg"))
+    data["bounds"] = {"central_mass": ["0 kg", f"{upper} kg"]}
+    assert design(parse_spec(data, "porter.toml")).design.central_mass <= upper
+    data["bounds"] = {"central_mass": ["0 kg", f"{upper - 0.5} kg"]}
+    with pytest.raises(InfeasibleError):
+        design(parse_spec(data, "porter.toml"))
