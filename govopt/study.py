@@ -314,10 +314,13 @@ class Tolerance:
         from scipy.special import ndtri
 
         half = self.half * abs(nominal_si) if self.relative else self.half
-        if not self.relative and self.unit:
-            from .units import registry
+        if not self.relative and self.unit:  # by the spec's rule for units (an angle in it)
+            from .units import UnitError, convert
 
-            half = float(registry().Quantity(self.half, self.unit).to(si_unit or "").magnitude)
+            try:
+                half = convert(self.half, self.unit, si_unit)
+            except UnitError as exc:
+                raise StudyError(f"tolerance {self.key}: {exc}") from None
         z = (ndtri(np.clip(u, 1e-12, 1 - 1e-12)) / TOLERANCE_SIGMAS
              if self.distribution == "normal" else 2.0 * u - 1.0)
         return nominal_si + half * z
