@@ -231,6 +231,12 @@ class Sweep:
                 except Exception:
                     raise StudyError(f"sweep {key}: {parts[0]!r} and {parts[1]!r} are not "
                                      "of the same dimension") from None
+                from .units import angle_power
+
+                if angle_power(qa) != angle_power(qb):  # '20 Hz:1400 rpm': pint's radian is 1
+                    raise StudyError(f"sweep {key}: {parts[0]!r} and {parts[1]!r} differ by an "
+                                     "angle, which pint cannot tell from a number; write both "
+                                     "ends in the same kind of unit")
                 unit, integer = f"{qa.units:~}", False
             sw = cls(key, (), start, stop, unit, integer)
             if num is not None and num > LAZY_VALUES:

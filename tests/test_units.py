@@ -136,3 +136,19 @@ def test_a_surge_frequency_in_rpm_is_the_same_requirement_as_in_hz(tmp_path):
     assert a["surge_frequency_Hz"] >= 1400 / 60 * (1 - 1e-9)
     for key in ("wire_diameter_m", "coil_radius_m", "active_turns", "mass_kg"):
         assert a[key] == pytest.approx(b[key], rel=1e-6), key
+
+
+def test_a_study_reads_units_by_the_same_rule():
+    """A sweep's ends differing by an angle are refused; a tolerance of a frequency in rpm is
+    its value in Hz, of a speed in Hz refused (as in a spec)."""
+    import numpy as np
+
+    from govopt.study import StudyError, Sweep, Tolerance
+
+    with pytest.raises(StudyError, match="differ by an angle"):
+        Sweep.parse("speed.mean", "4 Hz:250 rpm:3")
+    u = np.array([0.0, 0.5, 1.0])  # uniform: -1, 0, +1 half-widths
+    band = Tolerance.parse("requirements.min_surge_frequency", "uniform ±60 rpm")
+    assert band.draw(20.0, "Hz", u) == pytest.approx([19.0, 20.0, 21.0], rel=1e-12)
+    with pytest.raises(StudyError, match="names no angle"):
+        Tolerance.parse("speed.mean", "uniform ±5 Hz").draw(25.0, "rad/s", u)
