@@ -82,7 +82,7 @@ def _scalar(text: str):
 
 def _quantity(text: str, where: str):
     """``text`` as a pint quantity; an error names ``where`` (``sweep KEY``)."""
-    from .units import UnitError, normalise, registry, strict_units
+    from .units import UnitError, malformed, normalise, registry, strict_units
 
     if len(text) > limits.MAX_QUANTITY_CHARS:
         raise StudyError(f"{where}: {limits.shorten(text)}: a quantity of at most "
@@ -94,8 +94,8 @@ def _quantity(text: str, where: str):
     try:
         return registry().Quantity(normalise(text))
     except Exception as exc:
-        raise StudyError(f"{where}: cannot read {text!r} as a quantity "
-                         f"({type(exc).__name__})") from None
+        raise StudyError(f"{where}: cannot read {text!r} as a quantity: "
+                         f"{malformed(exc)}") from None
 
 
 def _range_at(start: float, stop: float, unit: str, integer: bool, u) -> tuple:

@@ -137,7 +137,10 @@ def _parse(text, dimension: str) -> float:
         raise UnitError(f"expected {_a(name)} with units (e.g. '{_example(dimension)}'), "
                         f"got the bare number {text!r}")
     if not isinstance(text, str):
-        raise UnitError(f"expected a string with units, got {type(text).__name__} {text!r}")
+        kind = {list: "a list", tuple: "a list", dict: "a table"}.get(type(text), "a value")
+        raise UnitError(f"expected a string with units, got {kind} {shorten(text)}")
+    if any("\ud800" <= c <= "\udfff" for c in text):  # from an option's bytes, not UTF-8
+        raise UnitError(f"{shorten(text)}: it holds bytes that are not UTF-8 text")
     if len(text) > MAX_QUANTITY_CHARS:  # before pint, whose parser is super-linear
         raise UnitError(f"{shorten(text)}: a quantity of at most {MAX_QUANTITY_CHARS} "
                         f"characters (govopt's limit), got {len(text)}")
@@ -209,7 +212,7 @@ def parse_with_pint(text: str, dimension: str) -> float:
     except OverflowError:
         raise UnitError(f"{text!r} is too large a number") from None
     except Exception as exc:  # pint raises many exception types for malformed strings
-        raise UnitError(f"cannot parse {text!r} as a quantity ({type(exc).__name__})") from None
+        raise UnitError(f"cannot parse {text!r} as a quantity: {malformed(exc)}") from None
     if not has_unit and dimension != "dimensionless":
         raise UnitError(f"{text!r} has no unit: expected {_a(name)} such as "
                         f"'{_example(dimension)}'"
@@ -232,13 +235,13 @@ def parse_with_pint(text: str, dimension: str) -> float:
 ANGLE_POWER = {"angle": 1, "angular_velocity": 1, "torque_per_angle": -1, "damping": -1}
 
 
-def angle_power(q) -> int:
+def angle_power(q) -> float:
     """The power of the angle in a pint quantity's unit (``rpm``: 1, ``kgf*m/deg``: -1, ``Hz``
-    and ``J``: 0)."""
-    return int(round(dict(q.to_root_units().unit_items()).get("radian", 0)))
+    and ``J``: 0; ``rad**0.5``: 0.5, which no dimension has)."""
+    return float(dict(q.to_root_units().unit_items()).get("radian", 0))
 
 
-def angle_factor(dimension: str, power: int, text: str, value: float | None = None) -> float:
+def angle_factor(dimension: str, power: float, text: str, value: float | None = None) -> float:
     """What pint's SI value of a quantity of ``dimension`` whose unit holds an angle to
     ``power`` (:func:`angle_power`; ``value``: that SI value, quoted in a refusal) is multiplied
     by; a :class:`UnitError` saying why where the angle does not fit the dimension. The one
@@ -274,9 +277,10 @@ def angle_factor(dimension: str, power: int, text: str, value: float | None = No
         read = "the number as radians" if want == 1 else "it per radian"
         return _refuse(f"{text!r} names no angle, which {_a(name)} needs: pint would read "
                        f"{read}; write the angle (e.g. '{example}')")
-    what = ("has an angle in its unit" if power > 0 else "is per angle") if want == 0 else \
-        f"has an angle to the power {power}"
-    has = "has none" if want == 0 else f"has it to the power {want}"
+    what = ("has an angle in its unit" if power > 0 else "is per angle") if want == 0 \
+        and abs(power) == 1 else \
+        f"has an angle to the power {power:g}"
+    has = "has none" if want == 0 else f"has it to the power {want:g}"
     return _refuse(f"{text!r} {what}, and {_a(name)} {has}; pint cannot tell an angle from a "
                    f"plain number, so govopt refuses rather than guess (expected e.g. "
                    f"'{example}')")
@@ -312,6 +316,30 @@ def convert(magnitude: float, unit: str, si_unit: str) -> float:
     q = registry().Quantity(float(magnitude), normalise(unit))
     return _finite(_to_si(q, dimension, f"{magnitude:g} {unit}"), f"{magnitude:g} {unit}",
                    si_unit)
+
+
+def malformed(exc: Exception) -> str:
+    """What is wrong with a quantity string pint's parser raised ``exc`` on, in words (not the
+    exception's class: pint's parser raises an AssertionError on an operator with nothing after
+    it, the tokenizer a TokenError on an unclosed bracket).
+
+    >>> import tokenize
+    >>> malformed(tokenize.TokenError("EOF in multi-line statement"))
+    'its parentheses do not match'
+    >>> malformed(AssertionError())
+    'it is incomplete: an operator or bracket with nothing on one side'
+    """
+    import tokenize
+
+    if isinstance(exc, tokenize.TokenError):
+        return "its parentheses do not match"
+    if isinstance(exc, AssertionError | IndexError):
+        return "it is incomplete: an operator or bracket with nothing on one side"
+    if isinstance(exc, ZeroDivisionError):
+        return "it divides by zero"
+    if isinstance(exc, UnicodeError):
+        return "it holds bytes that are not UTF-8 text"
+    return "it is not a number with units (e.g. '18 cm', '64 deg + 40 arcmin')"
 
 
 def _a(noun: str) -> str:

@@ -12,8 +12,9 @@ the outcomes:
 * ``error``: exit 2 and one line ``error: FILE: KEY: ...`` (or ``--option: ...``, or a
   design's diagnosis ``error: FILE: infeasible: ...``) of at most :data:`MAX_LINE` characters
   besides the path (:data:`MAX_DIAGNOSIS` for a diagnosis), no traceback;
-* ``unclear``: exit 2, but more than one line, too long, naming neither file nor key, or a
-  diagnosis that says nothing (a requirement "conflicting" with itself);
+* ``unclear``: exit 2, but more than one line, too long, naming neither file nor key, naming
+  an exception's class instead of what went wrong, or a diagnosis that says nothing (a
+  requirement "conflicting" with itself);
 * ``traceback``: anything else (exit 3 too: a user's mistake is not an internal error);
 * ``hang``: the time limit ran out;
 * ``silent``: ``ok`` on an input that is nonsense (:attr:`Case.nonsense`).
@@ -146,7 +147,8 @@ NONSENSE = {
     "big_exponent", "control_quantity", "unknown_unit", "garbage", "empty_string", "blank",
     "wrong_type", "table_for_scalar", "array_for_scalar", "string_for_number", "unknown_key",
     "misspelt", "bogus_choice", "empty_list", "nested_list", "long_list", "table_as_string",
-    "unknown_table", "size_limit", "file",
+    "unknown_table", "size_limit", "file", "incomplete", "unbalanced", "divide_by_zero",
+    "angle_in_unit", "not_utf8",
 }
 #: keys (by name) where a negative value means something: accepting one is right
 SIGNED = {
@@ -267,6 +269,12 @@ def _leaf_mutations(value, key: str) -> Iterator[tuple[str, object]]:
         yield "big_exponent", f"2**100000 {unit}"
         yield "control_quantity", f"{mag:g}\x00\x1b[2J {unit}"
         yield "unknown_unit", f"{mag:g} blorps"
+        # what pint's parser raises on (say what is wrong, never the exception's class)
+        yield "incomplete", f"{mag:g} {unit} /"
+        yield "unbalanced", f"({mag:g} {unit}"
+        yield "divide_by_zero", f"{mag:g} {unit} / 0"
+        # an angle the dimension has not: pint takes the radian for 1 and would not say
+        yield "angle_in_unit", f"{mag:g} {unit}*rad^2"
         yield "garbage", f"{mag:g} {unit}; rm -rf /"
         yield "empty_string", ""
         yield "blank", "   "
@@ -465,6 +473,11 @@ def _spring_cases() -> Iterator[Case]:
                        nonsense(kind, option), "spring")
     yield Case("spring/--correction/bogus", ("spring", *base, "--correction", "bogus"), None,
                "bogus_choice", "--correction", True, "spring")
+    # an option's bytes that are not UTF-8 (Python hands them on as lone surrogates)
+    args = list(base)
+    args[args.index("--force") + 1] = "606 \udcffkgf"
+    yield Case("spring/--force/not_utf8", ("spring", *args), None, "not_utf8", "--force", True,
+               "spring")
 
 
 def study_specs() -> list[Path]:
@@ -893,10 +906,15 @@ def classify(out: Outcome, spec: str | None, json_out: bool = False) -> Outcome:
             out.why = "names no file and key"
         elif re.search(r"'([^']+)' needs a stiffer spring than '\1'|conflicting ;", first):
             out.why = "a diagnosis that says nothing (a requirement against itself, or none)"
+        elif EXCEPTION_NAME.search(first):  # "(AssertionError)": says what failed, not why
+            out.why = "names an exception's class instead of what went wrong"
         if out.why:
             out.klass = "unclear"
     return out
 
+
+#: a Python exception's class in a message (``(AssertionError)``, ``UnicodeEncodeError:``)
+EXCEPTION_NAME = re.compile(r"\b[A-Z]\w*(Error|Exception)\b")
 
 #: the tables of a spec, as error messages name them (``speed.mean``, ``[material]``)
 TABLES = ("governor", "speed", "design", "material", "engine", "load_change", "analysis",
