@@ -152,3 +152,15 @@ def test_a_study_reads_units_by_the_same_rule():
     assert band.draw(20.0, "Hz", u) == pytest.approx([19.0, 20.0, 21.0], rel=1e-12)
     with pytest.raises(StudyError, match="names no angle"):
         Tolerance.parse("speed.mean", "uniform ±5 Hz").draw(25.0, "rad/s", u)
+
+
+@pytest.mark.parametrize(("text", "words"), [
+    ("18 cm (", "its parentheses do not match"), ("18 cm)", "its parentheses do not match"),
+    ("18 cm /", "it is incomplete"), ("()", "it is incomplete"), ("+", "it is incomplete"),
+    ("18 cm / 0", "it divides by zero"), ("18 \udcff cm", "bytes that are not UTF-8"),
+    ([1], "got a list"),
+])
+def test_a_malformed_quantity_is_told_in_words_not_an_exception_class(text, words):
+    with pytest.raises(UnitError, match=re.escape(words)) as err:
+        parse_quantity(text, "length")
+    assert not re.search(r"\b[A-Z]\w*(Error|Exception)\b|\blist\b \[", str(err.value))
