@@ -385,13 +385,24 @@ def _analysis(an: Reader | None) -> Analysis:
         settling_band=an.number("settling_band", required=False, default=0.02, high=1.0),
         use_case=an.choice("use_case", tuple(USE_CASES), None),
         tolerance=an.number("tolerance", required=False, default=1e-6, high=1.0),
-        speed_change=an.choice("speed_change", ("range",), "range")
-        if isinstance(an.table.get("speed_change"), str) else
-        an.number("speed_change", required=False, default=0.01, high=1.0,
-                  range_text="(0, 1) (a fraction of the speed, e.g. 0.01), or \"range\""),
+        speed_change=read_speed_change(an),
     )
     an.finish()
     return out
+
+
+def read_speed_change(rd: Reader, name: str = "speed_change") -> float | str:
+    """``[analysis] speed_change`` (or the option ``--speed-change``, read as a table of one
+    key: one rule for both): a fraction of the speed in (0, 1), within govopt's range, or
+    ``"range"``; default 0.01."""
+    text = "(0, 1) (a fraction of the speed, e.g. 0.01), or \"range\""
+    value = rd.table.get(name)
+    if isinstance(value, str) and value != "range":
+        rd.fail(name, "expected a fraction of the speed in (0, 1), e.g. 0.01, or \"range\", "
+                f"got {limits.shorten(value)}")
+    if isinstance(value, str):
+        return rd.choice(name, ("range",), "range")
+    return rd.number(name, required=False, default=0.01, high=1.0, range_text=text)
 
 
 def _pair(rd: Reader, name, dimension, default):

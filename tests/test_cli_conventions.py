@@ -401,6 +401,24 @@ def test_design_o_writes_the_types_own_keys(tmp_path):
         assert ev[key] == pytest.approx(designed[key], rel=1e-14), key
 
 
+def test_design_o_writes_the_runs_analysis_options(tmp_path):
+    """`govopt design -o ... --speed-change range`: the written spec says ``speed_change =
+    "range"`` in its ``[analysis]``, so that evaluating it reproduces the report's effort and
+    power (over the range, not for the default 1 %)."""
+    run = invoke(["design", SPECS / "porter-design.toml", "-o", "p.toml", "--json",
+                  "--speed-change", "range"], cwd=tmp_path)
+    assert run.exit_code == 0, run.stderr
+    designed = json.loads(run.stdout)["classic"]
+    written = tomllib.loads((tmp_path / "p.toml").read_text(encoding="utf-8"))
+    assert written["analysis"]["speed_change"] == "range"
+    evaluated = invoke(["evaluate", "p.toml", "--json"], cwd=tmp_path)
+    assert evaluated.exit_code == 0, evaluated.stderr
+    again = json.loads(evaluated.stdout)["classic"]
+    assert again["effort_over"] == designed["effort_over"] == "range"
+    for key in ("effort_change", "effort_N", "power_J"):
+        assert again[key] == pytest.approx(designed[key], rel=1e-12), key
+
+
 # ------------------------------------------------------------------------------------------
 # issue 23: numbers an engineer can draw
 

@@ -337,6 +337,7 @@ def design_toml(res: Result, digits: int | None = None) -> str:
     values = _design_values(res, old, bounds)
     for key in [k for k in old if k not in values]:
         del table[key]
+    _analysis_as_run(doc, spec)
     for key, (dimension, target, scale) in values.items():
         if _close(_reads_as(old.get(key), dimension, scale), target):
             continue  # unchanged: as the engineer wrote it ("9.510 cm" stays)
@@ -352,6 +353,28 @@ def design_toml(res: Result, digits: int | None = None) -> str:
             # not 0.078740157480315 in
         table[key] = text
     return tomlkit.dumps(doc)
+
+
+def _analysis_as_run(doc, spec) -> None:
+    """Set the ``[analysis]`` keys of the document ``doc`` to the values the run read
+    (:attr:`Spec.data`: the file with the command's options, ``--speed-change range``), so
+    that the written spec reproduces the report."""
+    import tomlkit
+
+    ran = (spec.data or {}).get("analysis")
+    if not isinstance(ran, dict):
+        return
+    table = doc.get("analysis")
+    changed = {k: v for k, v in ran.items() if table is None or table.get(k) != v}
+    if not changed:
+        return
+    if table is None:
+        table = tomlkit.table()
+        doc.add(tomlkit.nl())
+        doc.add("analysis", table)
+    for key, value in changed.items():
+        table[key] = value
+        table[key].comment("as run by govopt design")
 
 
 def drawn_design(res: Result) -> tuple[str, Result, str]:
