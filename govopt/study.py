@@ -1207,10 +1207,11 @@ def check_database(path: str | Path, *, inputs: Iterable = ()) -> Path:
     spec or another input, a regular file or none, in a folder that exists and can be
     written; an existing file must be a govopt study database (or empty): nothing else is
     ever written into, nor replaced."""
-    from .report.files import names_folder
+    from .report.files import names_folder, refuse_package
 
     if str(path) in ("", ".") or Path(path).name in ("", ".", "..") or names_folder(path):
         raise StudyError(f"--db: expected a database file name, got {str(path)!r}")
+    refuse_package(path, "the study database")
     path = Path(path)
     for other in inputs:
         with contextlib.suppress(OSError):

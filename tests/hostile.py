@@ -625,6 +625,13 @@ OUTPUT_CASES = (
      ("bench", "--quick", "--out", "/nonexistent/a/b"), None),
     ("bench/--out over existing files", "bench",
      ("bench", "--quick", "--out", "{spec}.out"), _existing),
+    # the package's own files, read by every run: never an output (a new name, so that a
+    # regression leaves a stray file, not a replaced bundled spec)
+    ("output/-o into the package, --force", "design",
+     ("design", "{spec}", "-o", str(ROOT / "govopt" / "specs" / "hostile-output.toml"),
+      "--force"), None),
+    ("init/-o into the package", "init",
+     ("init", "hamabe-a", "-o", str(ROOT / "govopt" / "data" / "hostile-output.toml")), None),
 )
 
 

@@ -87,13 +87,32 @@ def names_folder(path: str | Path) -> bool:
     return isinstance(path, str) and path.endswith(tuple(filter(None, (os.sep, os.altsep))))
 
 
+#: the installed package's own folder (its bundled specs and data): govopt writes nothing there
+PACKAGE = Path(__file__).resolve().parent.parent
+
+
+def refuse_package(path: str | Path, what: str) -> None:
+    """One line (:class:`GovoptError`) if ``path`` (a file or folder to write, through any
+    symbolic link) lies inside the installed package, whose bundled specs and data every run
+    reads: an ``-o ... --force`` there would replace a bundled spec for every later run. The
+    one rule for every output of every command (design specs, workbooks, plots, copies of
+    examples, benchmark reports, study databases and tables)."""
+    real = Path(os.path.realpath(path))
+    if real == PACKAGE or PACKAGE in real.parents:
+        raise GovoptError(f"{path}: cannot write {what} inside the installed govopt package "
+                          f"({PACKAGE}), whose bundled specs and data it reads; write it "
+                          "elsewhere (govopt init NAME copies a bundled spec to start from)")
+
+
 def _file_name(path: str | Path, what: str) -> Path:
-    """``path`` as a file's path, refused (one line) if it names a folder."""
+    """``path`` as a file's path, refused (one line) if it names a folder or lies inside the
+    package (:func:`refuse_package`)."""
     if str(path) == "" or Path(path).name in ("", ".", ".."):
         raise GovoptError(f"{what}: expected a file name, got {str(path)!r}")
     if names_folder(path) and not os.path.isdir(path):
         raise GovoptError(f"{path}: cannot write {what}: a name ending in '/' is a folder, and "
                           f"{path} does not exist; expected a file name")
+    refuse_package(path, what)
     return Path(path)
 
 
@@ -101,6 +120,7 @@ def output_folder(directory: str | Path, what: str) -> Path:
     """The folder ``directory`` for outputs, made if only its parent exists (as ``--plots``);
     one line if it is not a folder or cannot be made."""
     directory = Path(directory)
+    refuse_package(directory, what)
     if directory.is_dir():
         return directory
     if directory.exists() or directory.is_symlink():
