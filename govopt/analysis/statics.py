@@ -109,23 +109,34 @@ def required_spring(spec: Spec, m, central=None):
 #: reports: evaluate, bulk, the design search and studies)
 BAND_INNER = "lowest speed >= speed.inner"
 BAND_OUTER = "highest speed <= speed.outer"
-BAND_SOURCE = ("[speed] inner/outer: the whole operating band inside the spec's; with friction "
-               "the governor closes at omega_fall and opens at omega_rise, omega^2 = (Q_s + cf "
-               "-+ F) / (jp - ci) (textbook 3.4(b), 'Friction at the sleeve'; Hamabe eq. 42)")
+BAND_SOURCE = ("[speed] inner/outer: the whole operating band inside the spec's, over the whole "
+               "range; with friction the governor closes at omega_fall and opens at omega_rise, "
+               "omega^2 = (Q_s + cf -+ F) / (jp - ci) (textbook 3.4(b), 'Friction at the "
+               "sleeve'; Hamabe eq. 42)")
 
 
-def band_speeds_squared(spec: Spec, m, kappa, l0, central=None, friction=(0.0, 0.0)):
-    """``(omega_fall^2 at x_inner, omega_rise^2 at x_outer)``, (rad/s)^2: the ends of the
-    operating band, the governor closing at the innermost configuration and opening at the
-    outermost against the friction band ``friction = (F_inner, F_outer)`` (generalised forces,
-    the type's :meth:`Governor.friction`; textbook 3.4(b)). Arrays broadcast over designs.
-    The requirement (where the spec states ``[speed] inner/outer``, :attr:`Speed.band`):
-    ``omega_fall(x_inner) >= omega_inner`` and ``omega_rise(x_outer) <= omega_outer``."""
-    gov = spec.governor
-    t_i = terms(spec, gov.x_inner, m, central)
-    t_a = terms(spec, gov.x_outer, m, central)
-    return (t_i.omega_squared(kappa, l0, -np.asarray(friction[0])),
-            t_a.omega_squared(kappa, l0, np.asarray(friction[1])))
+def band_speeds_squared(t, kappa, l0, friction=0.0):
+    """``(omega_fall^2, omega_rise^2)``, (rad/s)^2, at the configurations of the terms ``t``
+    (:func:`terms`; last axis): the speeds at which the governor closes and opens against the
+    friction band ``friction`` there (generalised forces, the type's
+    :meth:`Governor.friction`; textbook 3.4(b)). Arrays broadcast over designs."""
+    f = np.asarray(friction, dtype=float)
+    return t.omega_squared(kappa, l0, -f), t.omega_squared(kappa, l0, f)
+
+
+def band_extremes(fall2, rise2):
+    """The operating band's lowest and highest speed, rad/s: the least ``omega_fall`` and the
+    largest ``omega_rise`` over the configurations (last axis; :func:`band_speeds_squared`).
+    Over the whole range, not at its ends: a governor whose speed falls inside the range runs
+    below its innermost configuration's speed there. The requirement (where the spec states
+    ``[speed] inner/outer``, :attr:`Speed.band`): lowest ``>= omega_inner``, highest
+    ``<= omega_outer``.
+
+    >>> band_extremes(np.array([[25.0, 24.0, 26.0]]), np.array([[26.0, 25.0, 27.0]]))
+    (array([4.89897949]), array([5.19615242]))
+    """
+    return (np.sqrt(np.maximum(np.min(fall2, axis=-1), 0.0)),
+            np.sqrt(np.max(rise2, axis=-1)))
 
 
 def inertia(spec: Spec, sd: SpringDesign, x):

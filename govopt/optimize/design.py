@@ -965,8 +965,8 @@ def _dead_weight_parts(spec: Spec, req: Requirements, rise, fall, k2) -> dict:
     return {
         "equilibrium speed > 0": np.all(fall > 0, axis=1),
         "k^2 within its margins": np.all((k2 >= k2_lo) & (k2 <= k2_hi), axis=1),
-        statics.BAND_INNER: np.sqrt(np.maximum(fall[:, 0], 0)) >= sp.omega_inner,
-        statics.BAND_OUTER: np.sqrt(rise[:, -1]) <= sp.omega_outer,
+        statics.BAND_INNER: statics.band_extremes(fall, rise)[0] >= sp.omega_inner,
+        statics.BAND_OUTER: statics.band_extremes(fall, rise)[1] <= sp.omega_outer,
     }
 
 
