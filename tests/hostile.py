@@ -148,7 +148,7 @@ NONSENSE = {
     "wrong_type", "table_for_scalar", "array_for_scalar", "string_for_number", "unknown_key",
     "misspelt", "bogus_choice", "empty_list", "nested_list", "long_list", "table_as_string",
     "unknown_table", "size_limit", "file", "incomplete", "unbalanced", "divide_by_zero",
-    "angle_in_unit", "not_utf8",
+    "angle_in_unit", "not_utf8", "band_narrow",
 }
 #: keys (by name) where a negative value means something: accepting one is right
 SIGNED = {
@@ -673,6 +673,22 @@ def _degenerate_mutations(data: dict) -> Iterator[tuple[str, str, object]]:
         if q is not None:
             yield "degenerate_long", f"design.{key}", partial(
                 _set, data, ("design", key), f"{q[0] * 1000:g} {q[1]}")
+    # no spring given in a band: the spring that floats the governor across it is found
+    # (band_spring); across a band narrower than double precision resolves, refused
+    speed = data.get("speed", {})
+    if "spring_stiffness" in design and "inner" in speed and "outer" in speed:
+        def springless(outer=None):
+            out = _set(data, ("design", "spring_stiffness"), _DELETE)
+            for key in ("free_length", "free_half_length"):
+                if key in out["design"]:
+                    del out["design"][key]
+            if outer is not None:
+                out["speed"]["outer"] = outer
+            return out
+
+        yield "band_spring", "design.spring_stiffness", springless
+        mag, unit, _, _ = _quantity(speed["inner"])
+        yield "band_narrow", "speed.outer", partial(springless, f"{mag * (1 + 1e-15)!r} {unit}")
 
 
 def command_of(data: dict) -> str:

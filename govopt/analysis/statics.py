@@ -139,6 +139,42 @@ def band_extremes(fall2, rise2):
             np.sqrt(np.max(rise2, axis=-1)))
 
 
+#: what a spring whose force would have the wrong sign would have to do, by kind
+_WRONG_SIGN = {"compression": "a compression spring cannot pull",
+               "tension": "a tension spring cannot push", "leaf": "the leaf would bend back"}
+
+
+def band_spring(spec: Spec, m, central=0.0):
+    """The spring that makes the governor float between the band's two speeds (the textbook's
+    question, ch. 3, Examples 4 and 8; Hamabe Example 1: :func:`required_spring`), or why no
+    spring does it (:class:`DesignError`, the reason in words): a band narrower than govopt
+    resolves (its width over the mean speed at most :data:`SLOPE_RTOL`: the governor floating
+    across it would be isochronous to rounding, not stable), a rate or free length that is not
+    positive and finite, or a force that does not keep the spring loaded in its working sense
+    at every configuration (a compression spring that would have to pull). Returns ``(kappa,
+    l0, F_inner, F_outer)``."""
+    gov, sp = spec.governor, spec.speed
+    width = (sp.omega_outer - sp.omega_inner) / sp.omega_mean
+    if not width > SLOPE_RTOL:
+        raise DesignError(f"the band is {width:.3g} of the mean speed wide, within govopt's "
+                          f"resolution ({SLOPE_RTOL:g}): isochronous to rounding; widen it")
+    kappa, l0, f_inner, f_outer = (float(v) for v in required_spring(spec, m, central))
+    if not (np.isfinite(kappa) and kappa > 0.0):
+        raise DesignError(f"the rate that would is {kappa:.4g} N/m")
+    if not np.isfinite(l0) or (gov.free_length_positive and l0 <= 0.0):
+        raise DesignError(f"its free length would be {l0:.4g} m")
+    x = configurations(spec)
+    force = np.broadcast_to(spring_force(spec, x, kappa, l0), x.shape)
+    i = int(np.argmin(force))
+    if not force[i] >= 0.0:
+        where = ("the innermost configuration" if i == 0 else "the outermost configuration"
+                 if i == x.size - 1 else "a configuration inside the range")
+        raise DesignError(f"its force would be {force[i]:.4g} N at {where} ("
+                          f"{gov.spring_loaded_check} needs >= 0): "
+                          f"{_WRONG_SIGN.get(gov.spring, 'the spring would unload')}")
+    return kappa, l0, f_inner, f_outer
+
+
 def inertia(spec: Spec, sd: SpringDesign, x):
     """Generalised inertia at ``x``: the design's own value if it gives one, else the type's."""
     if sd.inertia_given:
