@@ -91,12 +91,15 @@ def invalid(spec: Spec, design: Design) -> str | None:
     """What the spec parser would say of a design given as numbers (a mass that is not a
     number, a wire thicker than its coil), or None."""
     if design.flying_mass is None or not math.isfinite(design.flying_mass):
-        return (f"{spec.path}: design: the {spec.governor.mass_key} mass is missing or not a "
-                "finite number")
+        return (f"{spec.path}: {statics.design_key(spec, 'flying_mass') or 'design'}: the "
+                f"{spec.governor.mass_key} mass is missing or not a finite number")
     if design.wire_diameter is not None and design.coil_radius is not None and \
             design.wire_diameter >= 2.0 * design.coil_radius:
-        return (f"{spec.path}: design.wire_diameter: expected a wire thinner than the coil "
-                "diameter 2 r")
+        key = statics.design_key(spec, "wire_diameter")
+        return (f"{spec.path}: {key}: expected a wire thinner than the coil diameter 2 r" if key
+                else f"{spec.path}: design: impossible design: the wire "
+                f"({design.wire_diameter:.4g} m) is not thinner than the coil diameter 2 r "
+                f"({2.0 * design.coil_radius:.4g} m)")
     return None
 
 

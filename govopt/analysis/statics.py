@@ -279,6 +279,23 @@ def configurations(spec: Spec, points: int | None = None) -> np.ndarray:
     return np.unique(np.append(x, g.x_normal))
 
 
+def design_key(spec: Spec, field: str) -> str | None:
+    """The ``[design]`` key the spec writes for the design quantity ``field`` (a
+    :class:`~govopt.spec.Design` field: ``"design.pendulum_mass"`` where the spec gives the
+    mass, ``"design.pendulum_weight"`` where the weight), read from what the spec's reader
+    recorded; None where the spec's ``[design]`` does not give it (a design found by the
+    search, a study's point): a message then names the quantity, never a key the spec has
+    not."""
+    gov = spec.governor
+    forms = {"flying_mass": (f"{gov.mass_key}_weight", f"{gov.mass_key}_mass"),
+             "central_mass": ("central_weight", "central_mass"),
+             "free_half_length": (gov.free_length_key,),
+             "flying_inertia": (f"{gov.mass_key}_inertia",),
+             "dashpot": ("dashpot_f", "dashpot_a1")}.get(field, (field,))
+    written = {e.key for e in spec.entries}
+    return next((f"design.{k}" for k in forms if f"design.{k}" in written), None)
+
+
 #: how each [design] key of a spring makes it softer (Hamabe eq. 2's rate ``G d^4 / (64 r^3 n)``
 #: for a coil, ``E w t^3`` over the cube of the length for a leaf)
 SOFTER = (("spring_stiffness", "lower"), ("wire_diameter", "thinner"),
@@ -307,13 +324,16 @@ def no_equilibrium(spec: Spec, sd: SpringDesign, alpha, t, w2) -> str:
     lever = np.broadcast_to(t.lever, alpha.shape)
     if np.any(lever <= 0):
         j = int(np.argmax(lever <= 0))
+        mass = design_key(spec, "flying_mass")
         return head + (f"the regulating gear's inertia outweighs the flying masses' centrifugal "
-                       f"force at {at(alpha[j])}: a heavier design.{gov.mass_key}_weight, or a "
-                       "lighter regulating gear (its masses and levers in the spec)")
+                       f"force at {at(alpha[j])}: heavier flying masses"
+                       + (f" ({mass})" if mass else "") + ", or a lighter regulating gear (its "
+                       "masses and levers in the spec)")
     A, B, cf = (np.broadcast_to(v, alpha.shape) for v in (t.A, t.B, t.cf))
     spring = sd.kappa * (A - B * sd.l0)
     if gov.spring is not None and spring[i] < 0 and sd.kappa > 0:
-        key = f"design.{gov.free_length_key}"
+        key = design_key(spec, "free_half_length") or (
+            f"the {gov.free_length_key.replace('_', ' ')}")
         if design is not None and design.free_half_length is not None:
             # restoring > 0  <=>  B l0 < A + cf / kappa
             bound = (A + cf / sd.kappa) / B
@@ -330,8 +350,8 @@ def no_equilibrium(spec: Spec, sd: SpringDesign, alpha, t, w2) -> str:
                                          sd.central)
             c1 = A - B * tn.A / tn.B  # restoring = kappa c1 + c0 with l0 from the normal
             c0 = B * Q_n / tn.B + cf
-            softer = ", ".join(f"{way} design.{k}" for k, way in SOFTER
-                               if design is not None and getattr(design, k, None) is not None)
+            softer = ", ".join(f"{way} {design_key(spec, k)}" for k, way in SOFTER
+                               if design_key(spec, k))
             if np.all(c0[c1 < 0] > 0):
                 kmax = float(np.min(c0[c1 < 0] / -c1[c1 < 0]))
                 return head + (f"the spring is too stiff ({key} from the normal "
