@@ -58,6 +58,56 @@ MAX_COMBINATIONS = 50_000_000
 #: points of a trade study (``govopt study run``: a sweep's NUM, a grid's product, samples):
 #: each is a row of ~0.7 kB in the study's database and a list entry in memory
 MAX_STUDY_POINTS = 1_000_000
+#: ``requirements.robust_samples``: the Monte-Carlo verification's samples (default 2000):
+#: its 95 % interval is then +-0.2 % at a probability near 1, +-0.6 % at 100 000; each sample
+#: is one evaluation (:func:`evaluation_seconds`), so the samples a spec may ask are bounded
+#: by :data:`MAX_MONTE_CARLO_SECONDS` too
+MAX_ROBUST_SAMPLES = 100_000
+
+# -- time: what one design's evaluation costs, and the work a run may do --------------------
+# CPU seconds measured on the reference machine (2 cores shared, Python 3.11, numpy 2; the
+# bulk evaluator over a few hundred designs), rounded up: each part of an evaluation that runs
+# design by design, and the vectorised rest. An estimate of work counted before a run, not a
+# timer: the same spec is refused or run on every machine.
+
+#: the vectorised evaluation of one design (statics, k^2, the load changes' transients, the
+#: classic measures): 0.35 ms at 31 configurations, 0.65 ms at 1001
+ROW_SECONDS, ROW_SECONDS_PER_POINT = 4e-4, 4e-7
+#: a type's forced vibration, design by design (Hamabe Part II: the valve gear's harmonics and
+#: the response's peak-to-peak): 3.3-3.7 ms at 12-50 harmonics and 31 configurations, 4.2-5.2
+#: ms at 1001
+VIBRATION_SECONDS, VIBRATION_SECONDS_PER_POINT = 4e-3, 1.5e-6
+#: a spring's own checks, design by design (a leaf's over the configurations: 9 ms at 31, 99 ms
+#: at 1001; a wire grade's fatigue and the spring maker's checks: ~1.5 ms)
+SPRING_CHECK_SECONDS, SPRING_CHECK_SECONDS_PER_POINT = 6e-3, 1e-4
+#: Hamabe's friction strokes (eqs. 42-46) of one load change of one design with a friction band:
+#: 15-20 ms
+FRICTION_RUN_SECONDS = 2.5e-2
+#: the robust design's search (corners, edges and inner maximisations of the candidates'
+#: tolerance boxes, at every setting of the fitter's), estimated CPU seconds at most
+MAX_ROBUST_SEARCH_SECONDS = 30.0
+#: the robust design's Monte-Carlo verification (its samples, then the fitter's adjustment of
+#: those that fail), estimated CPU seconds at most; the samples alone at most half of it
+MAX_MONTE_CARLO_SECONDS = 20.0
+
+
+def evaluation_seconds(points: int, *, vibration: bool = False, spring_checks: bool = False,
+                       friction_runs: int = 0) -> float:
+    """Estimated CPU seconds of one design's evaluation in a bulk frame at ``points``
+    configurations, with the parts that run design by design: a forced ``vibration``, the
+    spring's own checks (``spring_checks``), and ``friction_runs`` (load changes run with
+    Hamabe's friction strokes). See the constants above for what each was measured at.
+
+    >>> round(evaluation_seconds(31) * 1e3, 3), round(evaluation_seconds(31, vibration=True), 4)
+    (0.412, 0.0045)
+    """
+    return (ROW_SECONDS + ROW_SECONDS_PER_POINT * points
+            + (VIBRATION_SECONDS + VIBRATION_SECONDS_PER_POINT * points if vibration else 0.0)
+            + (SPRING_CHECK_SECONDS + SPRING_CHECK_SECONDS_PER_POINT * points
+               if spring_checks else 0.0)
+            + FRICTION_RUN_SECONDS * friction_runs)
+
+
 #: characters of a value quoted in an error message
 SHOWN_CHARS = 80
 

@@ -471,8 +471,9 @@ def _requirements(top: Reader, governor: Governor) -> Requirements | None:
             dashpot_valve=req.number("dashpot_valve", required=False, default=0.0,
                                      nonnegative=True, high=0.9),
             robust_samples=req.number("robust_samples", required=False,
-                                      default=d.robust_samples, low=9, high=100001,
-                                      integer=True, range_text="[10, 100000]"),
+                                      default=d.robust_samples, low=9,
+                                      high=limits.MAX_ROBUST_SAMPLES + 1, integer=True,
+                                      range_text=f"[10, {limits.MAX_ROBUST_SAMPLES}]"),
             robust_seed=req.number("robust_seed", required=False, default=d.robust_seed,
                                    nonnegative=True, integer=True),
         )
