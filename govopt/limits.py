@@ -2,15 +2,21 @@
 
 A spec is a few KiB written by a person; these limits are far beyond any real governor and
 keep every run within seconds and a few hundred MB whatever a spec says. Each one exceeded is
-an error (exit 2) naming the key and the limit; the README's "Errors" section lists them.
+an error (exit 2) naming the key and the limit; docs/reference/limits-and-exit-codes.md lists
+them. Work whose size a spec sets only through several keys (the robust design's evaluations,
+the design search's dynamics) is counted as it is done, each part at its measured cost
+(:func:`evaluation_seconds`, :class:`Work`), against a limit in estimated CPU seconds.
 Spec files themselves (regular, at most 1 MiB, UTF-8, nested at most 32 deep) are checked by
 :func:`govopt.spec.load_spec`.
 """
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import math
 import re
+from dataclasses import dataclass
 
 #: characters in one quantity string: pint's parser is recursive and super-linear (a 2 kB sum
 #: takes 0.2 s, 7 kB exhausts the recursion); a spec's quantity is ~20 characters
@@ -89,6 +95,62 @@ MAX_ROBUST_SEARCH_SECONDS = 30.0
 #: the robust design's Monte-Carlo verification (its samples, then the fitter's adjustment of
 #: those that fail), estimated CPU seconds at most; the samples alone at most half of it
 MAX_MONTE_CARLO_SECONDS = 20.0
+
+
+#: one candidate's dash-pot window in ``govopt design``'s search
+#: (:func:`govopt.optimize.design.dashpot_window`: the load-change transients at 25 dash-pot
+#: settings): ~7 ms a load change (Hamabe's governor; 13 ms each of twenty), and the forced
+#: vibration's bound at those settings, ~0.035 ms a harmonic
+WINDOW_SECONDS_PER_LOAD_CHANGE, WINDOW_SECONDS_PER_HARMONIC = 8e-3, 4e-5
+#: ``govopt design``'s dynamics (the dash-pot windows of the candidates checked best first,
+#: the surrogate ordering them, the lattice screening them), estimated CPU seconds at most
+MAX_DESIGN_DYNAMICS_SECONDS = 20.0
+
+
+class WorkLimit(Exception):
+    """The work counted by the running :class:`Work` would pass its limit (not done)."""
+
+
+@dataclass
+class Work:
+    """Work counted in estimated CPU seconds (the constants above) against ``limit``, and the
+    items counted (evaluations, candidates)."""
+
+    limit: float
+    spent: float = 0.0
+    items: int = 0
+
+    def charge(self, seconds: float, items: int = 0) -> None:
+        """Count ``seconds`` of work, or raise :class:`WorkLimit` (nothing counted) if they
+        would take it past its limit."""
+        if self.spent + seconds > self.limit:
+            raise WorkLimit
+        self.spent += seconds
+        self.items += items
+
+    def left(self) -> float:
+        return self.limit - self.spent
+
+
+_WORK: contextvars.ContextVar[Work | None] = contextvars.ContextVar("govopt_work",
+                                                                    default=None)
+
+
+@contextlib.contextmanager
+def counting(work: Work):
+    """Within this block :func:`charge` counts against ``work``."""
+    token = _WORK.set(work)
+    try:
+        yield work
+    finally:
+        _WORK.reset(token)
+
+
+def charge(seconds: float, items: int = 0) -> None:
+    """Count work against the running :class:`Work` (:func:`counting`), if any."""
+    work = _WORK.get()
+    if work is not None:
+        work.charge(seconds, items)
 
 
 def evaluation_seconds(points: int, *, vibration: bool = False, spring_checks: bool = False,

@@ -53,8 +53,6 @@ lower bound, and says so).
 
 from __future__ import annotations
 
-import contextlib
-import contextvars
 import itertools
 import math
 import time
@@ -169,42 +167,7 @@ def candidate_box(spec: Spec, req: Requirements, cols: dict) -> Box:
                req.robust_torque_slope)
 
 
-class WorkLimit(Exception):
-    """The work counted by :class:`Work` reached its limit (the evaluation is not done)."""
-
-
-@dataclass
-class Work:
-    """Evaluations counted at ``seconds`` (estimated) each against ``limit`` seconds."""
-
-    seconds: float
-    limit: float
-    spent: float = 0.0
-    rows: int = 0
-
-    def charge(self, rows: int) -> None:
-        """Count ``rows`` evaluations, or raise :class:`WorkLimit` (nothing counted) if they
-        would take the work past its limit."""
-        cost = rows * self.seconds
-        if self.spent + cost > self.limit:
-            raise WorkLimit
-        self.spent += cost
-        self.rows += rows
-
-
-#: the work the running search or verification counts (:func:`counting`), None: not counted
-_WORK: contextvars.ContextVar[Work | None] = contextvars.ContextVar("robust_work",
-                                                                    default=None)
-
-
-@contextlib.contextmanager
-def counting(work: Work):
-    """Within this block every :func:`_evaluate` charges ``work`` first."""
-    token = _WORK.set(work)
-    try:
-        yield work
-    finally:
-        _WORK.reset(token)
+WorkLimit, Work, counting = limits.WorkLimit, limits.Work, limits.counting
 
 
 def _vibration(spec: Spec, req: Requirements) -> bool:
@@ -285,9 +248,7 @@ def _evaluate(spec: Spec, req: Requirements, cols: dict, torque: np.ndarray):
 
     from ..bulk import evaluate_many
 
-    work = _WORK.get()
-    if work is not None:
-        work.charge(len(torque))
+    limits.charge(len(torque) * row_seconds(spec, req), len(torque))
     vibration = _vibration(spec, req)
     frames, index = [], []
     for level in np.unique(torque):
@@ -468,14 +429,14 @@ def robust_search(spec: Spec, req: Requirements):
     stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0,
              "inner_maximisations": 0, "rejected_inside_the_box": 0}
     failing: dict[tuple[str, str], int] = {}
-    work = Work(row_seconds(spec, req), limits.MAX_ROBUST_SEARCH_SECONDS)
+    work = Work(limits.MAX_ROBUST_SEARCH_SECONDS)
     try:
         with counting(work):
             found = _search(spec, req, stats, failing)
     except WorkLimit:
         found = None
         stats["stopped_at_the_work_limit"] = True
-    stats["evaluations"], stats["work_s"] = work.rows, round(work.spent, 3)
+    stats["evaluations"], stats["work_s"] = work.items, round(work.spent, 3)
     if found is not None:
         return found
     worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
@@ -564,7 +525,7 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     if box.torque > 0:
         levels = np.linspace(-box.torque, box.torque, TORQUE_LEVELS)
         torque = levels[rng.integers(0, TORQUE_LEVELS, n)]
-    work = Work(row_seconds(spec, req), limits.MAX_MONTE_CARLO_SECONDS)
+    work = Work(limits.MAX_MONTE_CARLO_SECONDS)
     with counting(work):  # the samples (within half the limit: work_errors)
         frame = _evaluate(spec, req, rows, torque)
     ok = holds(frame)
@@ -594,7 +555,7 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     out = {"samples": n, "seed": req.robust_seed, "distribution": "uniform within the box",
            "holds": k, "adjusted_by_the_fitter": adjusted, "probability": k / n,
            "failing_checks": failing,
-           "ci95": [lo, hi], "evaluations": work.rows, "work_s": round(work.spent, 3)}
+           "ci95": [lo, hi], "evaluations": work.items, "work_s": round(work.spent, 3)}
     if stopped:
         out["note"] = (f"the fitter's adjustment stopped at govopt's limit of work (~"
                        f"{limits.MAX_MONTE_CARLO_SECONDS:g} s): {stopped} failing samples were "
