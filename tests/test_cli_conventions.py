@@ -117,10 +117,22 @@ def test_closed_stdout_is_quiet(tmp_path):
     assert p.wait(timeout=120) == 1 and err == b""
 
 
-def test_readme_documents_the_exit_codes():
-    errors = (ROOT / "README.md").read_text(encoding="utf-8").split("## Errors", 1)[1]
+def test_the_reference_documents_exit_codes_and_every_limit():
+    """docs/reference/limits-and-exit-codes.md (the README points to it) gives every exit code
+    and every limit of govopt/limits.py at its value (``1 000 000`` or ``1e12``)."""
+    from govopt import limits
+
+    page = (ROOT / "docs" / "reference" / "limits-and-exit-codes.md").read_text(encoding="utf-8")
+    assert "`docs/reference/limits-and-exit-codes.md`" in (ROOT / "README.md").read_text(
+        encoding="utf-8").split("## Errors", 1)[1]
     for code in (0, 1, 2, 3):
-        assert re.search(rf"^\| {code} \|", errors, re.M), code
+        assert re.search(rf"^\| {code} \|", page, re.M), code
+    for name in dir(limits):
+        if name.startswith("MAX_") or name.startswith("MIN_"):
+            value = getattr(limits, name)
+            shown = {f"{value:,}".replace(",", " "), f"{value:g}".replace("e+", "e"),
+                     f"{value:g} s"}
+            assert any(s in page for s in shown), (name, value)
 
 
 def _commands():
