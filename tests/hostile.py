@@ -396,6 +396,17 @@ def _size_mutations(data: dict) -> Iterator[tuple[str, str, object]]:
                                                     "load_change": data["load_change"] * 200}
     if "requirements" not in data and "bounds" not in data:
         return
+    req = data.get("requirements", {})
+    if any(k.startswith("robust_") or k in ("adjusting_nut", "dashpot_valve") for k in req):
+        # the robust design's work past its limits, counted at each evaluation's cost: the
+        # most samples with a forced vibration solved for each, and every tolerance at every
+        # setting of both the fitter's adjustments
+        yield "size_limit", "requirements.robust_samples", table(
+            "requirements", robust_samples=100_000, max_vibration="25 deg")
+        yield "size_limit", "requirements", table(
+            "requirements", robust_masses=0.02, robust_torque_slope=0.1,
+            robust_spring_grade=2, adjusting_nut="2 mm", dashpot_valve=0.2,
+            robust_dashpot=0.1, max_vibration="25 deg")
     yield "size_limit", "analysis.harmonics", lambda: {
         **table("analysis", harmonics=1000)(), "requirements": {
             **data.get("requirements", {}), "objective": "vibration"}}
@@ -449,6 +460,12 @@ def _file_cases() -> Iterator[Case]:
                         ("no such file", "/nonexistent/spec.toml"), ("empty name", "")):
         yield Case(f"file/{label}", ("evaluate", path), None, "file", None, True,
                    names_key=False)
+    # an option read by its spec key's rule (one rule, the same words)
+    for value in ("1e-300", "0", "2", "nan", "-inf", "lift", "0.01 0.02", "9" * 400):
+        for command in ("evaluate", "design"):
+            yield Case(f"option/--speed-change {value[:20]}/{command}",
+                       (command, "{spec}", "--speed-change", value), lambda: spec.encode(),
+                       "option", "--speed-change", True, command, names_key=True)
     for label, target in (("/proc", "/proc/x.toml"), ("a folder", "/tmp"), ("empty name", "")):
         yield Case(f"output/{label}", ("design", "{spec}", "-o", target),
                    lambda: spec.encode(), "file", None, True, "design", names_key=False)
