@@ -569,7 +569,7 @@ def test_no_command_writes_into_the_package(tmp_path):
     study = tmp_path / "study.toml"
     study.write_text(SPEC_A.read_text(encoding="utf-8"), encoding="utf-8")
     runs = [
-        ["design", SPEC_DESIGN, "-o", SPEC_DESIGN, "--force"],
+        ["design", SPEC_DESIGN, "-o", SPEC_A, "--force"],
         ["design", SPEC_DESIGN, "-o", link / "hamabe-a.toml", "--force"],
         ["evaluate", SPEC_A, "--xlsx", SPECS.parent / "data" / "new.xlsx"],
         ["evaluate", SPEC_A, "--plots", SPECS / "plots"],

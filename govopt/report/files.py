@@ -105,14 +105,12 @@ def refuse_package(path: str | Path, what: str) -> None:
 
 
 def _file_name(path: str | Path, what: str) -> Path:
-    """``path`` as a file's path, refused (one line) if it names a folder or lies inside the
-    package (:func:`refuse_package`)."""
+    """``path`` as a file's path, refused (one line) if it names a folder."""
     if str(path) == "" or Path(path).name in ("", ".", ".."):
         raise GovoptError(f"{what}: expected a file name, got {str(path)!r}")
     if names_folder(path) and not os.path.isdir(path):
         raise GovoptError(f"{path}: cannot write {what}: a name ending in '/' is a folder, and "
                           f"{path} does not exist; expected a file name")
-    refuse_package(path, what)
     return Path(path)
 
 
@@ -166,6 +164,7 @@ def check_output(path: str | Path, *, overwrite: bool = False, inputs: Iterable 
         if same:
             raise GovoptError(f"{path}: cannot write {what}: it is the same file as {role} "
                               f"({other})")
+    refuse_package(path, what)
     if st is not None and not overwrite:
         raise GovoptError(f"{path}: {what} already exists; use {_OPTION.get()} to replace it")
     tmp = None
@@ -283,6 +282,7 @@ def atomic_write(path: str | Path, write: Callable[[Path], object], *,
     :class:`OSError` becomes a one-line :class:`GovoptError` naming ``path`` and ``what``.
     """
     shown = _file_name(path, what)
+    refuse_package(shown, what)
     overwrite = _OVERWRITE.get() if overwrite is None else overwrite
     target = Path(os.path.realpath(shown))
     directory = target.parent
