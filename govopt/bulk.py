@@ -124,9 +124,11 @@ def _status(table: CheckTable):
     """``(status, message)`` arrays: "fail" and "fails: <names>" where a check failed."""
     names = table.names
     failed = table.failed()
-    bits = np.zeros(table.n, dtype=object if len(names) > 62 else np.int64)
+    wide = len(names) > 62  # past 62 checks the bits are Python integers (20 load changes
+    bits = np.zeros(table.n, dtype=object if wide else np.int64)  # give ~70 checks)
     for j in range(len(names)):
-        bits = bits + np.where(failed[:, j], 1 << j, 0)
+        bits = bits + (failed[:, j].astype(object) * (1 << j) if wide
+                       else np.where(failed[:, j], 1 << j, 0))
     patterns, inverse = np.unique(bits, return_inverse=True)
     texts = np.array([", ".join(nm for j, nm in enumerate(names) if int(b) >> j & 1)
                       for b in patterns], dtype=object)

@@ -91,12 +91,15 @@ def invalid(spec: Spec, design: Design) -> str | None:
     """What the spec parser would say of a design given as numbers (a mass that is not a
     number, a wire thicker than its coil), or None."""
     if design.flying_mass is None or not math.isfinite(design.flying_mass):
-        return (f"{spec.path}: design: the {spec.governor.mass_key} mass is missing or not a "
-                "finite number")
+        return (f"{spec.path}: {statics.design_key(spec, 'flying_mass') or 'design'}: the "
+                f"{spec.governor.mass_key} mass is missing or not a finite number")
     if design.wire_diameter is not None and design.coil_radius is not None and \
             design.wire_diameter >= 2.0 * design.coil_radius:
-        return (f"{spec.path}: design.wire_diameter: expected a wire thinner than the coil "
-                "diameter 2 r")
+        key = statics.design_key(spec, "wire_diameter")
+        return (f"{spec.path}: {key}: expected a wire thinner than the coil diameter 2 r" if key
+                else f"{spec.path}: design: impossible design: the wire "
+                f"({design.wire_diameter:.4g} m) is not thinner than the coil diameter 2 r "
+                f"({2.0 * design.coil_radius:.4g} m)")
     return None
 
 
@@ -380,12 +383,12 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
             checks.add(row.name, value, limit, row.sense, where=helical, unit=row.unit,
                        source=source, group="spring")
     band = (None, None)
-    if spec.speed is not None and spec.speed.band:  # the whole operating band, with friction
-        fr = friction_at(gov, cols, np.array([gov.x_inner, gov.x_outer]))
-        with np.errstate(all="ignore"):
-            band = tuple(np.sqrt(np.maximum(flat(b2, n), 0.0)) for b2 in
-                         statics.band_speeds_squared(spec, m, kappa, l0, central,
-                                                     (fr[:, :1], fr[:, 1:])))
+    friction_x = friction_at(gov, cols, x)  # the friction band at every configuration
+    if spec.speed is not None and spec.speed.band:  # the whole operating band, with friction,
+        with np.errstate(all="ignore"):  # over the whole range
+            band = statics.band_extremes(*(np.broadcast_to(b2, (n, K)) for b2 in
+                                           statics.band_speeds_squared(t, kappa, l0,
+                                                                       friction_x)))
     checks.add_rows(statics_rows(spec), statics_figures(out["irregularity"], *band, rise, w0sq,
                                                         F, k2))
     dyn: dict = {}
@@ -448,8 +451,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
             "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}, where=helical)
     measures = None
     if classic:  # the textbook's measures (ch. 3) over the range, the friction band included
-        measures = classic_measures(spec, sd, x, omega, t, friction_at(gov, cols, x),
-                                    ~impossible)
+        measures = classic_measures(spec, sd, x, omega, t, friction_x, ~impossible)
         out.update({k: measures[k] for k in CLASSIC_FIGURES})
     error = np.full(n, None, dtype=object)
     for i in np.nonzero(impossible)[0]:

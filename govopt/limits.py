@@ -2,15 +2,21 @@
 
 A spec is a few KiB written by a person; these limits are far beyond any real governor and
 keep every run within seconds and a few hundred MB whatever a spec says. Each one exceeded is
-an error (exit 2) naming the key and the limit; the README's "Errors" section lists them.
+an error (exit 2) naming the key and the limit; docs/reference/limits-and-exit-codes.md lists
+them. Work whose size a spec sets only through several keys (the robust design's evaluations,
+the design search's dynamics) is counted as it is done, each part at its measured cost
+(:func:`evaluation_seconds`, :class:`Work`), against a limit in estimated CPU seconds.
 Spec files themselves (regular, at most 1 MiB, UTF-8, nested at most 32 deep) are checked by
 :func:`govopt.spec.load_spec`.
 """
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import math
 import re
+from dataclasses import dataclass
 
 #: characters in one quantity string: pint's parser is recursive and super-linear (a 2 kB sum
 #: takes 0.2 s, 7 kB exhausts the recursion); a spec's quantity is ~20 characters
@@ -58,6 +64,112 @@ MAX_COMBINATIONS = 50_000_000
 #: points of a trade study (``govopt study run``: a sweep's NUM, a grid's product, samples):
 #: each is a row of ~0.7 kB in the study's database and a list entry in memory
 MAX_STUDY_POINTS = 1_000_000
+#: ``requirements.robust_samples``: the Monte-Carlo verification's samples (default 2000):
+#: its 95 % interval is then +-0.2 % at a probability near 1, +-0.6 % at 100 000; each sample
+#: is one evaluation (:func:`evaluation_seconds`), so the samples a spec may ask are bounded
+#: by :data:`MAX_MONTE_CARLO_SECONDS` too
+MAX_ROBUST_SAMPLES = 100_000
+
+# -- time: what one design's evaluation costs, and the work a run may do --------------------
+# CPU seconds measured on the reference machine (2 cores shared, Python 3.11, numpy 2; the
+# bulk evaluator over a few hundred designs), rounded up: each part of an evaluation that runs
+# design by design, and the vectorised rest. An estimate of work counted before a run, not a
+# timer: the same spec is refused or run on every machine.
+
+#: the vectorised evaluation of one design (statics, k^2, the load changes' transients, the
+#: classic measures): 0.35 ms at 31 configurations, 0.65 ms at 1001
+ROW_SECONDS, ROW_SECONDS_PER_POINT = 4e-4, 4e-7
+#: a type's forced vibration, design by design (Hamabe Part II: the valve gear's harmonics and
+#: the response's peak-to-peak): 3.3-3.7 ms at 12-50 harmonics and 31 configurations, 4.2-5.2
+#: ms at 1001
+VIBRATION_SECONDS, VIBRATION_SECONDS_PER_POINT = 4e-3, 1.5e-6
+#: a spring's own checks, design by design (a leaf's over the configurations: 9 ms at 31, 99 ms
+#: at 1001; a wire grade's fatigue and the spring maker's checks: ~1.5 ms)
+SPRING_CHECK_SECONDS, SPRING_CHECK_SECONDS_PER_POINT = 6e-3, 1e-4
+#: Hamabe's friction strokes (eqs. 42-46) of one load change of one design with a friction band:
+#: 15-20 ms
+FRICTION_RUN_SECONDS = 2.5e-2
+#: the robust design's search (corners, edges and inner maximisations of the candidates'
+#: tolerance boxes, at every setting of the fitter's), estimated CPU seconds at most
+MAX_ROBUST_SEARCH_SECONDS = 30.0
+#: the robust design's Monte-Carlo verification (its samples, then the fitter's adjustment of
+#: those that fail), estimated CPU seconds at most; the samples alone at most half of it
+MAX_MONTE_CARLO_SECONDS = 20.0
+
+
+#: one candidate's dash-pot window in ``govopt design``'s search
+#: (:func:`govopt.optimize.design.dashpot_window`: the load-change transients at 25 dash-pot
+#: settings): ~7 ms a load change (Hamabe's governor; 13 ms each of twenty), and the forced
+#: vibration's bound at those settings, ~0.035 ms a harmonic
+WINDOW_SECONDS_PER_LOAD_CHANGE, WINDOW_SECONDS_PER_HARMONIC = 8e-3, 4e-5
+#: ``govopt design``'s dynamics (the dash-pot windows of the candidates checked best first,
+#: the surrogate ordering them, the lattice screening them), estimated CPU seconds at most
+MAX_DESIGN_DYNAMICS_SECONDS = 20.0
+
+
+class WorkLimit(Exception):
+    """The work counted by the running :class:`Work` would pass its limit (not done)."""
+
+
+@dataclass
+class Work:
+    """Work counted in estimated CPU seconds (the constants above) against ``limit``, and the
+    items counted (evaluations, candidates)."""
+
+    limit: float
+    spent: float = 0.0
+    items: int = 0
+
+    def charge(self, seconds: float, items: int = 0) -> None:
+        """Count ``seconds`` of work, or raise :class:`WorkLimit` (nothing counted) if they
+        would take it past its limit."""
+        if self.spent + seconds > self.limit:
+            raise WorkLimit
+        self.spent += seconds
+        self.items += items
+
+    def left(self) -> float:
+        return self.limit - self.spent
+
+
+_WORK: contextvars.ContextVar[Work | None] = contextvars.ContextVar("govopt_work",
+                                                                    default=None)
+
+
+@contextlib.contextmanager
+def counting(work: Work):
+    """Within this block :func:`charge` counts against ``work``."""
+    token = _WORK.set(work)
+    try:
+        yield work
+    finally:
+        _WORK.reset(token)
+
+
+def charge(seconds: float, items: int = 0) -> None:
+    """Count work against the running :class:`Work` (:func:`counting`), if any."""
+    work = _WORK.get()
+    if work is not None:
+        work.charge(seconds, items)
+
+
+def evaluation_seconds(points: int, *, vibration: bool = False, spring_checks: bool = False,
+                       friction_runs: int = 0) -> float:
+    """Estimated CPU seconds of one design's evaluation in a bulk frame at ``points``
+    configurations, with the parts that run design by design: a forced ``vibration``, the
+    spring's own checks (``spring_checks``), and ``friction_runs`` (load changes run with
+    Hamabe's friction strokes). See the constants above for what each was measured at.
+
+    >>> round(evaluation_seconds(31) * 1e3, 3), round(evaluation_seconds(31, vibration=True), 4)
+    (0.412, 0.0045)
+    """
+    return (ROW_SECONDS + ROW_SECONDS_PER_POINT * points
+            + (VIBRATION_SECONDS + VIBRATION_SECONDS_PER_POINT * points if vibration else 0.0)
+            + (SPRING_CHECK_SECONDS + SPRING_CHECK_SECONDS_PER_POINT * points
+               if spring_checks else 0.0)
+            + FRICTION_RUN_SECONDS * friction_runs)
+
+
 #: characters of a value quoted in an error message
 SHOWN_CHARS = 80
 

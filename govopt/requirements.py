@@ -115,7 +115,8 @@ their limit (:mod:`govopt.optimize.gp_table` appends them to its stiffness and s
 
 def statics_rows(spec) -> list[Row]:
     """The statics requirements (group ``"statics"``); ``ev``: ``irregularity``; ``band_low``,
-    ``band_high`` (the operating band's ends with friction, :func:`statics.band_speeds_squared`);
+    ``band_high`` (the operating band's lowest and highest speed over the range, with
+    friction, :func:`statics.band_extremes`);
     ``rise`` (the least slope of the characteristic, :func:`statics.rising_slopes`); ``w0sq``
     (the reference ``omega0^2``); ``F_min``, ``F_top`` (the least and the largest absolute
     spring force); ``k2_min``, ``k2_max``."""

@@ -166,9 +166,9 @@ class Result:
                     Figure("stability", str(cm["stability"]), "", "classic",
                            note="the characteristic's slope"),
                     Figure("effort", cm["effort"], str(cm.get("effort_unit", "N*m")), "classic",
-                           note=change),
+                           note=cm.get("effort_note") or change),
                     Figure("power", cm["power"], str(cm.get("power_unit", "J")), "classic",
-                           note=change)]
+                           note=cm.get("effort_note") or change)]
             for key, (label, unit) in GEOMETRY.items():  # the type's own geometry
                 g = (cm.get("geometry") or {}).get(key)
                 if g:

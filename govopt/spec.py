@@ -7,11 +7,11 @@ silently. ``Spec.entries`` keeps every input as written and in SI, for reports.
 
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 from pathlib import Path
 
 from . import limits
+from .errors import DesignError
 from .governors import REGISTRY, Governor, governor_class
 from .inputs import (
     PREFERRED_WIRE,
@@ -179,22 +179,19 @@ def band_spring(spec: Spec) -> Spec:
     ``speed.outer`` (the textbook's question, ch. 3, Examples 4 and 8: "find the initial load
     on the sleeve and the spring's stiffness"; Hamabe, Example 1, ``kappa = (F_a - F_i) /
     (2 (l_a - l_i))``): two linear equations in ``kappa`` and ``kappa l0``
-    (:func:`govopt.analysis.statics.required_spring`). Friction is not in them: with a friction
+    (:func:`govopt.analysis.statics.band_spring`). Friction is not in them: with a friction
     band the governor's own band is wider than the spec's by it. Raises :class:`SpecError`
-    where no spring does it (a rate or free length that is not positive and finite)."""
+    where no spring does it, saying why (:func:`govopt.analysis.statics.band_spring`)."""
     from .analysis import statics
 
     ds = spec.design
-    kappa, l0, f_inner, f_outer = (float(v) for v in statics.required_spring(
-        spec, ds.flying_mass, ds.central_mass or 0.0))
-    key = f"{spec.path}: design"
-    if not (math.isfinite(kappa) and kappa > 0.0):
-        raise SpecError(f"{key}: no spring given, and none makes this governor float between "
-                        f"speed.inner and speed.outer: the rate that would is {kappa:.4g} N/m "
-                        "(give spring_stiffness, or a wire with [material])")
-    if not math.isfinite(l0) or (spec.governor.free_length_positive and l0 <= 0.0):
-        raise SpecError(f"{key}: no spring given, and none makes this governor float between "
-                        f"speed.inner and speed.outer: its free length would be {l0:.4g} m")
+    try:
+        kappa, l0, f_inner, f_outer = statics.band_spring(spec, ds.flying_mass,
+                                                          ds.central_mass or 0.0)
+    except DesignError as exc:  # the reason is the statics' (a band no spring can give)
+        raise SpecError(f"{spec.path}: design: no spring given, and none floats the governor "
+                        f"between speed.inner and speed.outer: {exc}; or give "
+                        "spring_stiffness") from None
     design = replace(ds, spring_stiffness=kappa, free_half_length=l0)
     found = {"stiffness": kappa, "free_length": l0, "force_inner": f_inner,
              "force_outer": f_outer}
@@ -362,6 +359,14 @@ def _analysis(an: Reader | None) -> Analysis:
     out = Analysis(**an.read_all(ANALYSIS))
     an.finish()
     return out
+
+
+def read_speed_change(rd: Reader, name: str = "speed_change") -> float | str:
+    """``[analysis] speed_change`` (or the option ``--speed-change``, read as a table of one
+    key): one declaration, one rule for both (a fraction of the speed in (0, 1), within govopt's
+    range, or ``"range"``)."""
+    key = ANALYSIS.key("speed_change")
+    return rd.read(key if name == key.name else replace(key, name=name))
 
 
 def _requirements(top: Reader, governor: Governor) -> Requirements | None:

@@ -82,7 +82,7 @@ def _scalar(text: str):
 
 def _quantity(text: str, where: str):
     """``text`` as a pint quantity; an error names ``where`` (``sweep KEY``)."""
-    from .units import UnitError, normalise, registry, strict_units
+    from .units import UnitError, malformed, normalise, registry, strict_units
 
     if len(text) > limits.MAX_QUANTITY_CHARS:
         raise StudyError(f"{where}: {limits.shorten(text)}: a quantity of at most "
@@ -94,8 +94,8 @@ def _quantity(text: str, where: str):
     try:
         return registry().Quantity(normalise(text))
     except Exception as exc:
-        raise StudyError(f"{where}: cannot read {text!r} as a quantity "
-                         f"({type(exc).__name__})") from None
+        raise StudyError(f"{where}: cannot read {text!r} as a quantity: "
+                         f"{malformed(exc)}") from None
 
 
 def _range_at(start: float, stop: float, unit: str, integer: bool, u) -> tuple:
@@ -231,6 +231,12 @@ class Sweep:
                 except Exception:
                     raise StudyError(f"sweep {key}: {parts[0]!r} and {parts[1]!r} are not "
                                      "of the same dimension") from None
+                from .units import angle_power
+
+                if angle_power(qa) != angle_power(qb):  # '20 Hz:1400 rpm': pint's radian is 1
+                    raise StudyError(f"sweep {key}: {parts[0]!r} and {parts[1]!r} differ by an "
+                                     "angle, which pint cannot tell from a number; write both "
+                                     "ends in the same kind of unit")
                 unit, integer = f"{qa.units:~}", False
             sw = cls(key, (), start, stop, unit, integer)
             if num is not None and num > LAZY_VALUES:
@@ -314,10 +320,13 @@ class Tolerance:
         from scipy.special import ndtri
 
         half = self.half * abs(nominal_si) if self.relative else self.half
-        if not self.relative and self.unit:
-            from .units import registry
+        if not self.relative and self.unit:  # by the spec's rule for units (an angle in it)
+            from .units import UnitError, convert
 
-            half = float(registry().Quantity(self.half, self.unit).to(si_unit or "").magnitude)
+            try:
+                half = convert(self.half, self.unit, si_unit)
+            except UnitError as exc:
+                raise StudyError(f"tolerance {self.key}: {exc}") from None
         z = (ndtri(np.clip(u, 1e-12, 1 - 1e-12)) / TOLERANCE_SIGMAS
              if self.distribution == "normal" else 2.0 * u - 1.0)
         return nominal_si + half * z
@@ -1198,10 +1207,11 @@ def check_database(path: str | Path, *, inputs: Iterable = ()) -> Path:
     spec or another input, a regular file or none, in a folder that exists and can be
     written; an existing file must be a govopt study database (or empty): nothing else is
     ever written into, nor replaced."""
-    from .report.files import names_folder
+    from .report.files import names_folder, refuse_package
 
     if str(path) in ("", ".") or Path(path).name in ("", ".", "..") or names_folder(path):
         raise StudyError(f"--db: expected a database file name, got {str(path)!r}")
+    refuse_package(path, "the study database")
     path = Path(path)
     for other in inputs:
         with contextlib.suppress(OSError):

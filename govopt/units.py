@@ -100,7 +100,8 @@ def parse_quantity(text, dimension: str) -> float:
     Raises :class:`UnitError` with a readable message when the string does not parse (naming
     an unknown unit), is not a real finite number, or has the wrong dimension. An angular
     velocity must name its angle (``rpm``, ``rev/s``, ``rad/s``): pint reads ``"5 Hz"`` as
-    5 rad/s, not 5 revolutions per second.
+    5 rad/s, not 5 revolutions per second; a frequency counts revolutions where its unit has
+    an angle (:func:`angle_factor`: ``"1400 rpm"`` is 23.3 Hz).
 
     >>> parse_quantity("300 rev/min", "angular_velocity") == parse_quantity("300 RPM",
     ...                                                                     "angular_velocity")
@@ -136,7 +137,10 @@ def _parse(text, dimension: str) -> float:
         raise UnitError(f"expected {_a(name)} with units (e.g. '{_example(dimension)}'), "
                         f"got the bare number {text!r}")
     if not isinstance(text, str):
-        raise UnitError(f"expected a string with units, got {type(text).__name__} {text!r}")
+        kind = {list: "a list", tuple: "a list", dict: "a table"}.get(type(text), "a value")
+        raise UnitError(f"expected a string with units, got {kind} {shorten(text)}")
+    if any("\ud800" <= c <= "\udfff" for c in text):  # from an option's bytes, not UTF-8
+        raise UnitError(f"{shorten(text)}: it holds bytes that are not UTF-8 text")
     if len(text) > MAX_QUANTITY_CHARS:  # before pint, whose parser is super-linear
         raise UnitError(f"{shorten(text)}: a quantity of at most {MAX_QUANTITY_CHARS} "
                         f"characters (govopt's limit), got {len(text)}")
@@ -208,7 +212,7 @@ def parse_with_pint(text: str, dimension: str) -> float:
     except OverflowError:
         raise UnitError(f"{text!r} is too large a number") from None
     except Exception as exc:  # pint raises many exception types for malformed strings
-        raise UnitError(f"cannot parse {text!r} as a quantity ({type(exc).__name__})") from None
+        raise UnitError(f"cannot parse {text!r} as a quantity: {malformed(exc)}") from None
     if not has_unit and dimension != "dimensionless":
         raise UnitError(f"{text!r} has no unit: expected {_a(name)} such as "
                         f"'{_example(dimension)}'"
@@ -216,22 +220,126 @@ def parse_with_pint(text: str, dimension: str) -> float:
                            if dimension == "angle" else ""))
     if not isinstance(q, pint.Quantity):  # a bare number in a string
         q = Q_(float(q), "")
+    value = _to_si(q, dimension, text)
+    if isinstance(value, complex):
+        raise UnitError(f"{text!r} is not a real number")
+    return _finite(value, text, si)
+
+
+#: The power of the angle in each dimension's unit (``rad/s``: 1; ``N*m/rad``: -1; none: 0).
+#: pint takes the radian for the number 1, so by dimension alone it cannot tell a frequency
+#: from an angular velocity, a torque from a torque per radian, a length from a length times an
+#: angle: ``"1400 rpm"`` as a frequency would be 146.6 Hz, not 23.3 Hz. govopt counts the angle
+#: a written unit holds (the radian's power in its root units) and reads it by one rule,
+#: :func:`angle_factor`.
+ANGLE_POWER = {"angle": 1, "angular_velocity": 1, "torque_per_angle": -1, "damping": -1}
+
+
+def angle_power(q) -> float:
+    """The power of the angle in a pint quantity's unit (``rpm``: 1, ``kgf*m/deg``: -1, ``Hz``
+    and ``J``: 0; ``rad**0.5``: 0.5, which no dimension has)."""
+    return float(dict(q.to_root_units().unit_items()).get("radian", 0))
+
+
+def angle_factor(dimension: str, power: float, text: str, value: float | None = None) -> float:
+    """What pint's SI value of a quantity of ``dimension`` whose unit holds an angle to
+    ``power`` (:func:`angle_power`; ``value``: that SI value, quoted in a refusal) is multiplied
+    by; a :class:`UnitError` saying why where the angle does not fit the dimension. The one
+    rule:
+
+    * the angle the dimension has (:data:`ANGLE_POWER`): read as written, angles in radians;
+    * a frequency counts cycles: an angle per time in one is counted in revolutions (a cycle is
+      one revolution): ``1 rev/min = 1/60 Hz``, ``2 pi rad/s = 1 Hz``;
+    * anything else is refused: an angular velocity or a quantity per angle written without
+      its angle (``"5 Hz"`` as a speed: pint would take it as 5 rad/s, not 5 rev/s), or an
+      angle where the dimension has none (``"18 cm*rad"``, ``"5 N*m/rad"`` as a moment).
+
+    >>> angle_factor("frequency", 1, "1400 rpm") == 1 / (2 * math.pi)
+    True
+    >>> angle_factor("moment", -1, "5 N*m/rad")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    govopt.units.UnitError: '5 N*m/rad' is per angle, and a moment has none; pint cannot ...
+    """
+    want = ANGLE_POWER.get(dimension, 0)
+    if power == want:
+        return 1.0
+    if dimension == "frequency" and power == 1:
+        return 1.0 / (2.0 * math.pi)
+    name = dimension.replace("_", " ")
+    example = _example(dimension)
+    if dimension == "angular_velocity" and power == 0:
+        read = "radians per time" if value is None else f"{value:g} rad/s"
+        return _refuse(f"{text!r} names no angle: pint would read it as {read}; write "
+                       "revolutions ('300 rpm', '5 rev/s') or radians ('31.4 rad/s')")
+    if name == "dimensionless":
+        name = "dimensionless number"
+    if power == 0:
+        read = "the number as radians" if want == 1 else "it per radian"
+        return _refuse(f"{text!r} names no angle, which {_a(name)} needs: pint would read "
+                       f"{read}; write the angle (e.g. '{example}')")
+    what = ("has an angle in its unit" if power > 0 else "is per angle") if want == 0 \
+        and abs(power) == 1 else \
+        f"has an angle to the power {power:g}"
+    has = "has none" if want == 0 else f"has it to the power {want:g}"
+    return _refuse(f"{text!r} {what}, and {_a(name)} {has}; pint cannot tell an angle from a "
+                   f"plain number, so govopt refuses rather than guess (expected e.g. "
+                   f"'{example}')")
+
+
+def _refuse(message: str):
+    raise UnitError(message)
+
+
+def _to_si(q, dimension: str, text: str) -> float:
+    """The pint quantity ``q`` (``text`` as written) in the SI unit of ``dimension``, its angle
+    read by :func:`angle_factor`."""
+    import pint
+
+    si = SI_UNITS[dimension]
     try:
         value = q.to(si).magnitude if si else q.to("").magnitude
     except OverflowError:  # an exact integer beyond floating point: '10**400 cm'
         raise UnitError(f"{text!r} is too large a number") from None
     except pint.DimensionalityError:
         raise UnitError(
-            f"{text!r} is not {_a(name)} "
+            f"{text!r} is not {_a(dimension.replace('_', ' '))} "
             f"(it has dimension {q.dimensionality}; expected e.g. '{_example(dimension)}')"
         ) from None
-    if dimension == "angular_velocity" and dict(q.to_root_units().unit_items()).get(
-            "radian") != 1:
-        raise UnitError(f"{text!r} names no angle: pint would read it as {value:g} rad/s; "
-                        "write revolutions ('300 rpm', '5 rev/s') or radians ('31.4 rad/s')")
-    if isinstance(value, complex):
-        raise UnitError(f"{text!r} is not a real number")
-    return _finite(value, text, si)
+    factor = angle_factor(dimension, angle_power(q), text, value)
+    return value * factor if factor != 1.0 else value
+
+
+def convert(magnitude: float, unit: str, si_unit: str) -> float:
+    """``magnitude`` in ``unit`` (pint's syntax) in ``si_unit`` (one of :data:`SI_UNITS`), by
+    the rule of :func:`angle_factor` (``convert(60, "rpm", "Hz") == 1.0``)."""
+    dimension = {v: k for k, v in SI_UNITS.items()}[si_unit]
+    q = registry().Quantity(float(magnitude), normalise(unit))
+    return _finite(_to_si(q, dimension, f"{magnitude:g} {unit}"), f"{magnitude:g} {unit}",
+                   si_unit)
+
+
+def malformed(exc: Exception) -> str:
+    """What is wrong with a quantity string pint's parser raised ``exc`` on, in words (not the
+    exception's class: pint's parser raises an AssertionError on an operator with nothing after
+    it, the tokenizer a TokenError on an unclosed bracket).
+
+    >>> import tokenize
+    >>> malformed(tokenize.TokenError("EOF in multi-line statement"))
+    'its parentheses do not match'
+    >>> malformed(AssertionError())
+    'it is incomplete: an operator or bracket with nothing on one side'
+    """
+    import tokenize
+
+    if isinstance(exc, tokenize.TokenError):
+        return "its parentheses do not match"
+    if isinstance(exc, AssertionError | IndexError):
+        return "it is incomplete: an operator or bracket with nothing on one side"
+    if isinstance(exc, ZeroDivisionError):
+        return "it divides by zero"
+    if isinstance(exc, UnicodeError):
+        return "it holds bytes that are not UTF-8 text"
+    return "it is not a number with units (e.g. '18 cm', '64 deg + 40 arcmin')"
 
 
 def _a(noun: str) -> str:
@@ -394,5 +502,8 @@ def _example(dimension: str) -> str:
 
 
 def to_unit(value_si: float, dimension: str, unit: str) -> float:
-    """Convert an SI value of ``dimension`` into ``unit`` (for reports)."""
-    return registry().Quantity(value_si, SI_UNITS[dimension]).to(unit).magnitude
+    """Convert an SI value of ``dimension`` into ``unit`` (for reports), the angle by the rule
+    of :func:`angle_factor` (a frequency in ``rpm``: revolutions per minute)."""
+    one = registry().Quantity(1.0, unit)
+    factor = angle_factor(dimension, angle_power(one), unit)
+    return registry().Quantity(value_si / factor, SI_UNITS[dimension]).to(unit).magnitude

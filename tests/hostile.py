@@ -12,8 +12,9 @@ the outcomes:
 * ``error``: exit 2 and one line ``error: FILE: KEY: ...`` (or ``--option: ...``, or a
   design's diagnosis ``error: FILE: infeasible: ...``) of at most :data:`MAX_LINE` characters
   besides the path (:data:`MAX_DIAGNOSIS` for a diagnosis), no traceback;
-* ``unclear``: exit 2, but more than one line, too long, naming neither file nor key, or a
-  diagnosis that says nothing (a requirement "conflicting" with itself);
+* ``unclear``: exit 2, but more than one line, too long, naming neither file nor key, naming
+  an exception's class instead of what went wrong, or a diagnosis that says nothing (a
+  requirement "conflicting" with itself);
 * ``traceback``: anything else (exit 3 too: a user's mistake is not an internal error);
 * ``hang``: the time limit ran out;
 * ``silent``: ``ok`` on an input that is nonsense (:attr:`Case.nonsense`).
@@ -146,7 +147,8 @@ NONSENSE = {
     "big_exponent", "control_quantity", "unknown_unit", "garbage", "empty_string", "blank",
     "wrong_type", "table_for_scalar", "array_for_scalar", "string_for_number", "unknown_key",
     "misspelt", "bogus_choice", "empty_list", "nested_list", "long_list", "table_as_string",
-    "unknown_table", "size_limit", "file",
+    "unknown_table", "size_limit", "file", "incomplete", "unbalanced", "divide_by_zero",
+    "angle_in_unit", "not_utf8", "band_narrow",
 }
 #: keys (by name) where a negative value means something: accepting one is right
 SIGNED = {
@@ -267,6 +269,12 @@ def _leaf_mutations(value, key: str) -> Iterator[tuple[str, object]]:
         yield "big_exponent", f"2**100000 {unit}"
         yield "control_quantity", f"{mag:g}\x00\x1b[2J {unit}"
         yield "unknown_unit", f"{mag:g} blorps"
+        # what pint's parser raises on (say what is wrong, never the exception's class)
+        yield "incomplete", f"{mag:g} {unit} /"
+        yield "unbalanced", f"({mag:g} {unit}"
+        yield "divide_by_zero", f"{mag:g} {unit} / 0"
+        # an angle the dimension has not: pint takes the radian for 1 and would not say
+        yield "angle_in_unit", f"{mag:g} {unit}*rad^2"
         yield "garbage", f"{mag:g} {unit}; rm -rf /"
         yield "empty_string", ""
         yield "blank", "   "
@@ -388,6 +396,17 @@ def _size_mutations(data: dict) -> Iterator[tuple[str, str, object]]:
                                                     "load_change": data["load_change"] * 200}
     if "requirements" not in data and "bounds" not in data:
         return
+    req = data.get("requirements", {})
+    if any(k.startswith("robust_") or k in ("adjusting_nut", "dashpot_valve") for k in req):
+        # the robust design's work past its limits, counted at each evaluation's cost: the
+        # most samples with a forced vibration solved for each, and every tolerance at every
+        # setting of both the fitter's adjustments
+        yield "size_limit", "requirements.robust_samples", table(
+            "requirements", robust_samples=100_000, max_vibration="25 deg")
+        yield "size_limit", "requirements", table(
+            "requirements", robust_masses=0.02, robust_torque_slope=0.1,
+            robust_spring_grade=2, adjusting_nut="2 mm", dashpot_valve=0.2,
+            robust_dashpot=0.1, max_vibration="25 deg")
     yield "size_limit", "analysis.harmonics", lambda: {
         **table("analysis", harmonics=1000)(), "requirements": {
             **data.get("requirements", {}), "objective": "vibration"}}
@@ -441,6 +460,12 @@ def _file_cases() -> Iterator[Case]:
                         ("no such file", "/nonexistent/spec.toml"), ("empty name", "")):
         yield Case(f"file/{label}", ("evaluate", path), None, "file", None, True,
                    names_key=False)
+    # an option read by its spec key's rule (one rule, the same words)
+    for value in ("1e-300", "0", "2", "nan", "-inf", "lift", "0.01 0.02", "9" * 400):
+        for command in ("evaluate", "design"):
+            yield Case(f"option/--speed-change {value[:20]}/{command}",
+                       (command, "{spec}", "--speed-change", value), lambda: spec.encode(),
+                       "option", "--speed-change", True, command, names_key=True)
     for label, target in (("/proc", "/proc/x.toml"), ("a folder", "/tmp"), ("empty name", "")):
         yield Case(f"output/{label}", ("design", "{spec}", "-o", target),
                    lambda: spec.encode(), "file", None, True, "design", names_key=False)
@@ -465,6 +490,11 @@ def _spring_cases() -> Iterator[Case]:
                        nonsense(kind, option), "spring")
     yield Case("spring/--correction/bogus", ("spring", *base, "--correction", "bogus"), None,
                "bogus_choice", "--correction", True, "spring")
+    # an option's bytes that are not UTF-8 (Python hands them on as lone surrogates)
+    args = list(base)
+    args[args.index("--force") + 1] = "606 \udcffkgf"
+    yield Case("spring/--force/not_utf8", ("spring", *args), None, "not_utf8", "--force", True,
+               "spring")
 
 
 def study_specs() -> list[Path]:
@@ -612,6 +642,13 @@ OUTPUT_CASES = (
      ("bench", "--quick", "--out", "/nonexistent/a/b"), None),
     ("bench/--out over existing files", "bench",
      ("bench", "--quick", "--out", "{spec}.out"), _existing),
+    # the package's own files, read by every run: never an output (a new name, so that a
+    # regression leaves a stray file, not a replaced bundled spec)
+    ("output/-o into the package, --force", "design",
+     ("design", "{spec}", "-o", str(ROOT / "govopt" / "specs" / "hostile-output.toml"),
+      "--force"), None),
+    ("init/-o into the package", "init",
+     ("init", "hamabe-a", "-o", str(ROOT / "govopt" / "data" / "hostile-output.toml")), None),
 )
 
 
@@ -653,6 +690,22 @@ def _degenerate_mutations(data: dict) -> Iterator[tuple[str, str, object]]:
         if q is not None:
             yield "degenerate_long", f"design.{key}", partial(
                 _set, data, ("design", key), f"{q[0] * 1000:g} {q[1]}")
+    # no spring given in a band: the spring that floats the governor across it is found
+    # (band_spring); across a band narrower than double precision resolves, refused
+    speed = data.get("speed", {})
+    if "spring_stiffness" in design and "inner" in speed and "outer" in speed:
+        def springless(outer=None):
+            out = _set(data, ("design", "spring_stiffness"), _DELETE)
+            for key in ("free_length", "free_half_length"):
+                if key in out["design"]:
+                    del out["design"][key]
+            if outer is not None:
+                out["speed"]["outer"] = outer
+            return out
+
+        yield "band_spring", "design.spring_stiffness", springless
+        mag, unit, _, _ = _quantity(speed["inner"])
+        yield "band_narrow", "speed.outer", partial(springless, f"{mag * (1 + 1e-15)!r} {unit}")
 
 
 def command_of(data: dict) -> str:
@@ -893,10 +946,15 @@ def classify(out: Outcome, spec: str | None, json_out: bool = False) -> Outcome:
             out.why = "names no file and key"
         elif re.search(r"'([^']+)' needs a stiffer spring than '\1'|conflicting ;", first):
             out.why = "a diagnosis that says nothing (a requirement against itself, or none)"
+        elif EXCEPTION_NAME.search(first):  # "(AssertionError)": says what failed, not why
+            out.why = "names an exception's class instead of what went wrong"
         if out.why:
             out.klass = "unclear"
     return out
 
+
+#: a Python exception's class in a message (``(AssertionError)``, ``UnicodeEncodeError:``)
+EXCEPTION_NAME = re.compile(r"\b[A-Z]\w*(Error|Exception)\b")
 
 #: the tables of a spec, as error messages name them (``speed.mean``, ``[material]``)
 TABLES = ("governor", "speed", "design", "material", "engine", "load_change", "analysis",

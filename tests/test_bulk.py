@@ -237,3 +237,22 @@ def test_one_evaluator_no_fallback(name, borrow, monkeypatch):
         _assert_row_is(frame.iloc[i].to_dict(), ref, i)
     if spec.governor.coordinate == "angle":
         assert any(k.startswith("passed: friction:") for k in frame.columns)
+
+
+def test_more_checks_than_bits_in_an_integer():
+    """Twenty load changes (govopt's limit) give a Porter on an engine more than 62 checks: the
+    rows' status still names every failing check (the failure bits as Python integers past
+    62, not an overflow)."""
+    spec = load_spec("govopt/specs/porter-engine.toml")  # with sleeve friction: its rows too
+    changes = [{"name": f"change {i}", "from": "21 cm", "to": f"{22 + i / 20:.3f} cm"}
+               for i in range(20)]
+    data = dict(spec.data, load_change=changes,
+                governor=dict(spec.data["governor"], sleeve_friction="1 kgf"))
+    many = with_values(replace(spec, data=data), {})
+    frame = evaluate_many(many, [many.design, many.design])
+    names = [c for c in frame.columns if c.startswith("passed: ")]
+    assert len(names) > 62
+    failing = [c[len("passed: "):] for c in names if frame[c].iloc[0] == False]  # noqa: E712
+    assert frame["status"].iloc[0] == ("fail" if failing else "pass")
+    for name in failing:
+        assert name in frame["message"].iloc[0]

@@ -99,3 +99,25 @@ def test_vyshnegradsky_regions_against_roots(seed):
                     continue  # on the boundary curve
                 want = "oscillatory" if gap < 0 else "monotonic"
         assert region(A, B) == want, (A, B)
+
+
+def test_no_effort_over_a_range_whose_speed_falls():
+    """Over the range (``speed_change = "range"``) the effort and power need a speed that
+    rises from the innermost configuration to the outermost: a weak spring with a large initial
+    load makes the Hartnell's speed fall (unstable), and the effort of a falling speed would be
+    a negative force. Not computed, and the report says why; at a fraction it is computed."""
+    from govopt.spec import load_spec, with_values
+
+    base = load_spec("govopt/specs/textbook-ex4-hartnell.toml")
+    falling = with_values(base, {"design.spring_stiffness": "0.1 kgf/cm",
+                                 "design.free_length": "40 cm",
+                                 "analysis.speed_change": "range"})
+    res = govopt.evaluate(falling)
+    cm = res.classic
+    assert cm["effort_change"] < 0 and cm["stability"] == "unstable"
+    assert math.isnan(cm["effort"]) and math.isnan(cm["power"])
+    assert "the speed falls over the range" in cm["effort_note"]
+    assert res.figure("effort").note == cm["effort_note"]
+    assert res.to_dict()["classic"]["effort_N"] is None
+    rising = govopt.evaluate(with_values(base, {"analysis.speed_change": "range"})).classic
+    assert rising["effort"] > 0 and rising["power"] > 0 and not rising["effort_note"]

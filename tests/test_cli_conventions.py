@@ -117,10 +117,22 @@ def test_closed_stdout_is_quiet(tmp_path):
     assert p.wait(timeout=120) == 1 and err == b""
 
 
-def test_readme_documents_the_exit_codes():
-    errors = (ROOT / "README.md").read_text(encoding="utf-8").split("## Errors", 1)[1]
+def test_the_reference_documents_exit_codes_and_every_limit():
+    """docs/reference/limits-and-exit-codes.md (the README points to it) gives every exit code
+    and every limit of govopt/limits.py at its value (``1 000 000`` or ``1e12``)."""
+    from govopt import limits
+
+    page = (ROOT / "docs" / "reference" / "limits-and-exit-codes.md").read_text(encoding="utf-8")
+    assert "`docs/reference/limits-and-exit-codes.md`" in (ROOT / "README.md").read_text(
+        encoding="utf-8").split("## Errors", 1)[1]
     for code in (0, 1, 2, 3):
-        assert re.search(rf"^\| {code} \|", errors, re.M), code
+        assert re.search(rf"^\| {code} \|", page, re.M), code
+    for name in dir(limits):
+        if name.startswith("MAX_") or name.startswith("MIN_"):
+            value = getattr(limits, name)
+            shown = {f"{value:,}".replace(",", " "), f"{value:g}".replace("e+", "e"),
+                     f"{value:g} s"}
+            assert any(s in page for s in shown), (name, value)
 
 
 def _commands():
@@ -399,6 +411,24 @@ def test_design_o_writes_the_types_own_keys(tmp_path):
     for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s"):
         # from masses a few ulps apart: the speeds agree to rounding
         assert ev[key] == pytest.approx(designed[key], rel=1e-14), key
+
+
+def test_design_o_writes_the_runs_analysis_options(tmp_path):
+    """`govopt design -o ... --speed-change range`: the written spec says ``speed_change =
+    "range"`` in its ``[analysis]``, so that evaluating it reproduces the report's effort and
+    power (over the range, not for the default 1 %)."""
+    run = invoke(["design", SPECS / "porter-design.toml", "-o", "p.toml", "--json",
+                  "--speed-change", "range"], cwd=tmp_path)
+    assert run.exit_code == 0, run.stderr
+    designed = json.loads(run.stdout)["classic"]
+    written = tomllib.loads((tmp_path / "p.toml").read_text(encoding="utf-8"))
+    assert written["analysis"]["speed_change"] == "range"
+    evaluated = invoke(["evaluate", "p.toml", "--json"], cwd=tmp_path)
+    assert evaluated.exit_code == 0, evaluated.stderr
+    again = json.loads(evaluated.stdout)["classic"]
+    assert again["effort_over"] == designed["effort_over"] == "range"
+    for key in ("effort_change", "effort_N", "power_J"):
+        assert again[key] == pytest.approx(designed[key], rel=1e-12), key
 
 
 # ------------------------------------------------------------------------------------------

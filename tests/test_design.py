@@ -316,3 +316,39 @@ def test_a_design_the_evaluator_fails_is_diagnosed_not_returned(monkeypatch):
     assert "irregularity (tightened): 0.05 , required <= 0.04 (margin -0.25)" in text
     assert "edge of irregularity (tightened)" in text and "more margin" in text
     assert "bug" not in text
+
+
+def test_dead_weight_design_on_an_engine_checks_each_candidates_own_central_load(tmp_path):
+    """A Porter on an engine whose first candidates fail the dynamics: each batch of candidates
+    is checked with its own central loads (the speed lever of eq. 24 reads them), and no
+    dash-pot settling in 1 ms gives a diagnosis, not an error of array shapes."""
+    text = (Path("govopt/specs/porter-design.toml").read_text(encoding="utf-8")
+            .replace('objective = "moving_mass"',
+                     'objective = "moving_mass"\nmax_settling_time = "0.001 s"')
+            + '\n[engine]\nflywheel_inertia = "50 kg*m^2"\ntorque_slope = "-1000 N*m/m"\n'
+              '\n[[load_change]]\nname = "lc"\nfrom = "21 cm"\nto = "23 cm"\n')
+    path = tmp_path / "porter-engine-design.toml"
+    path.write_text(text, encoding="utf-8")
+    run = invoke(["design", str(path)])
+    assert run.exit_code == 2, run.stderr
+    assert run.stderr.startswith(f"error: {path}: infeasible: ") and "load change" in run.stderr
+
+
+def test_the_dynamics_stop_at_the_limit_of_work_and_say_so(monkeypatch):
+    """The settling-time objective checks 512 candidates best first after ordering them on a
+    lattice (~10 s of counted work on Hamabe's problem); with a limit of 2 s the lattice is
+    coarsened to fit its share, the visit stops at the limit, and the design is the best of
+    those checked, with a note saying so (twenty load changes took 89 s before)."""
+    from govopt import limits
+    from govopt.optimize import design as dz
+
+    spec = govopt.load_spec("govopt/specs/hamabe-design.toml")
+    spec = dataclasses.replace(spec, requirements=dataclasses.replace(
+        spec.requirements, objective="settling_time"))
+    monkeypatch.setattr(limits, "MAX_DESIGN_DYNAMICS_SECONDS", 2.0)
+    res = dz.design(spec)
+    search = res.optimisation["search"]
+    assert search["dynamics_stopped_at_the_work_limit"]
+    assert search["dynamics_checked"] < 512 and search["dynamics_work_s"] <= 2.0
+    assert any("stopped at govopt's limit of work" in n for n in res.optimisation["notes"])
+    assert all(c.passed for c in res.checks)

@@ -1,4 +1,4 @@
-"""Hostile inputs (issue 15, items 1, 2 and 4): a corpus of more than a thousand mutated specs,
+"""Hostile inputs: a corpus of more than a thousand mutated specs,
 hostile files and options (:mod:`hostile`), for every governor type and every command
 (evaluate, design, spring, study run), degenerate geometries of every type, study databases
 (another study's, damaged, empty, foreign) and the outputs of study, init and bench (issue
@@ -30,6 +30,8 @@ SAMPLE = (
     "hamabe-design/engine.flywheel_inertia/huge", "spring/--force/power_tower",
     "hamabe-study/option/sweep of 1e8 points", "hamabe-study/option/sweep of 9**9**9",
     "traction-leaf-assembly/material/missing", "textbook-ex1-porter/name/text_control",
+    "spring/--force/not_utf8", "output/-o into the package, --force",
+    "option/--speed-change 1e-300/evaluate",
 )
 #: run in a new interpreter too (a design: the optimiser is imported on demand)
 FRESH = ("hamabe-design/analysis.points/size_limit",)
@@ -52,7 +54,9 @@ def test_hostile_corpus(tmp_path):
     assert {c.command for c in cases} == {"evaluate", "design", "spring", "study", "init",
                                           "bench"}
     assert {c.kind for c in cases} >= {"degenerate_long", "degenerate_near", "degenerate_wire",
-                                       "degenerate_turns"}
+                                       "degenerate_turns", "angle_in_unit", "incomplete",
+                                       "unbalanced", "divide_by_zero", "not_utf8",
+                                       "band_spring", "band_narrow"}
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
     outcomes = [hostile.run(c, tmp_path, LIMIT, json_out=i % 2 == 1)
                 for i, c in enumerate(cases)]

@@ -220,3 +220,52 @@ def test_cli_runs_one_blas_thread_unless_told(preset, expect):
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                        env=env)
     assert p.stdout.strip().splitlines()[-1] == expect
+
+
+def _guarded(tree) -> set:
+    """The import nodes inside a ``try`` that catches ImportError (an optional library, named
+    in its own error or skipped)."""
+    import ast
+
+    out = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Try) and any(
+                isinstance(h.type, ast.Name) and h.type.id in ("ImportError",
+                                                               "ModuleNotFoundError")
+                for h in node.handlers):
+            out |= {id(n) for stmt in node.body for n in ast.walk(stmt)}
+    return out
+
+
+def test_every_library_govopt_imports_is_a_main_dependency():
+    """A plain install (``pip install govopt``, no extra) runs every command: each third-party
+    module the package imports is one of pyproject's ``dependencies``, unless imported inside a
+    ``try`` that catches ImportError (an optional library: python-control beside the bench's
+    other methods, dask for ``--dask``, which names ``govopt[dask]`` when absent)."""
+    import ast
+    import re
+    import tomllib
+    from importlib.metadata import packages_distributions
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    project = tomllib.loads((root / "pyproject.toml").read_text())["project"]
+    main = {re.split(r"[\s<>=!~\[;]", d, maxsplit=1)[0].lower() for d in project["dependencies"]}
+    dists = packages_distributions()
+    missing = set()
+    for path in (root / "govopt").rglob("*.py"):
+        tree = ast.parse(path.read_text())
+        optional = _guarded(tree)
+        for node in ast.walk(tree):
+            if id(node) in optional:
+                continue
+            names = ([a.name for a in node.names] if isinstance(node, ast.Import) else
+                     [node.module] if isinstance(node, ast.ImportFrom) and node.level == 0
+                     and node.module else [])
+            for name in names:
+                top = name.split(".")[0]
+                if top in sys.stdlib_module_names or top == "govopt":
+                    continue
+                if not {d.lower() for d in dists.get(top, [top])} & main:
+                    missing.add(f"{top} ({path.relative_to(root)})")
+    assert not missing, f"imported but not a main dependency: {sorted(missing)}"

@@ -61,4 +61,30 @@ def test_a_free_length_too_long_names_it_and_its_bound(tmp_path):
 def test_the_regulating_gears_inertia_names_the_flying_mass(tmp_path):
     msg = _message(_variant(tmp_path, "hamabe-a.toml", "q", '"1000 m"'))
     assert "the regulating gear's inertia outweighs the flying masses' centrifugal force" in msg
-    assert "a heavier design.pendulum_weight" in msg
+    assert "heavier flying masses (design.pendulum_weight)" in msg
+    # written as a mass, the mass's key is named
+    path = tmp_path / "q.toml"
+    path.write_text(path.read_text().replace('pendulum_weight = "12 kgf"',
+                                             'pendulum_mass = "12 kg"'))
+    assert "heavier flying masses (design.pendulum_mass)" in _message(path)
+
+
+def test_messages_name_the_keys_the_spec_writes():
+    """A design the spec's [design] does not give (found by the search, a study's point) is
+    diagnosed in words, never under a key the spec has not; a key the spec writes is named as
+    written (``pendulum_mass``, not ``pendulum_weight``)."""
+    import dataclasses
+
+    from govopt.analysis.statics import design_key
+    from govopt.evaluator import invalid
+    from govopt.spec import Design, load_spec
+
+    search = load_spec("govopt/specs/hamabe-design.toml")  # no [design]
+    thick = Design(flying_mass=10.0, wire_diameter=0.1, coil_radius=0.04, active_turns=8.0)
+    message = invalid(search, thick)
+    assert "design.wire_diameter" not in message and "not thinner than the coil" in message
+    a = load_spec("govopt/specs/hamabe-a.toml")
+    assert invalid(a, dataclasses.replace(a.design, wire_diameter=1.0)).startswith(
+        f"{a.path}: design.wire_diameter: ")
+    assert design_key(a, "flying_mass") == "design.pendulum_weight"
+    assert design_key(search, "flying_mass") is None

@@ -551,3 +551,45 @@ def test_sigterm_inside_a_bare_except_still_exits_as_sigterm(monkeypatch):
     finally:
         signal.signal(signal.SIGTERM, previous)
     assert exc.value.code == 128 + signal.SIGTERM
+
+
+def _package_files() -> dict:
+    """Every file of the package folder with its size and modification time."""
+    root = SPECS.parent
+    return {p: (p.stat().st_size, p.stat().st_mtime_ns) for p in root.rglob("*") if p.is_file()
+            and "__pycache__" not in p.parts}
+
+
+def test_no_command_writes_into_the_package(tmp_path):
+    """The bundled specs and data are read by every run: no output of any command goes into
+    the package folder, not even an existing bundled spec with ``--force`` nor through a
+    symbolic link (one rule, govopt.report.files.refuse_package)."""
+    link = tmp_path / "link"
+    link.symlink_to(SPECS)
+    study = tmp_path / "study.toml"
+    study.write_text(SPEC_A.read_text(encoding="utf-8"), encoding="utf-8")
+    runs = [
+        ["design", SPEC_DESIGN, "-o", SPEC_A, "--force"],
+        ["design", SPEC_DESIGN, "-o", link / "hamabe-a.toml", "--force"],
+        ["evaluate", SPEC_A, "--xlsx", SPECS.parent / "data" / "new.xlsx"],
+        ["evaluate", SPEC_A, "--plots", SPECS / "plots"],
+        ["init", "hamabe-b", "-o", SPEC_A, "--force"],
+        ["init", "hamabe-b", "-o", f"{SPECS}/springs/"],
+        ["spring", "--force", "606 kgf", "--stiffness", "59.7 kgf/cm", "--allowable-stress",
+         "4000 kgf/cm^2", "--shear-modulus", "850000 kgf/cm^2", "--xlsx", SPECS / "s.xlsx"],
+        ["study", "run", study, "--db", SPECS / "new.db", "--sweep",
+         "design.pendulum_weight=10 kgf:12 kgf:2"],
+        ["bench", "--quick", "--out", SPECS / "bench"],
+    ]
+    before = _package_files()
+    try:
+        for args in runs:
+            run = invoke([str(a) for a in args])
+            assert run.exit_code == 2, (args, run.stderr)
+            assert "inside the installed govopt package" in run.stderr, run.stderr
+            assert run.stderr.count("\n") == 1, run.stderr
+    finally:
+        made = set(_package_files()) - set(before)
+        for path in made:  # a regression must not leave files in the checkout
+            path.unlink()
+    assert not made and _package_files() == before

@@ -102,13 +102,28 @@ def one_inner(spec: str) -> float:
 
 
 @pytest.mark.parametrize("args, message", [
-    (["--speed-change", "2"], "error: --speed-change: expected a fraction of the speed in "
-                              "(0, 1), e.g. 0.01, or 'range', got '2'"),
+    (["--speed-change", "2"], "error: --speed-change: must lie in (0, 1) (a fraction of the "
+                              "speed, e.g. 0.01), or \"range\", got 2"),
     (["--speed-change", "lift"], "error: --speed-change: expected a fraction"),
 ])
 def test_bad_speed_change_is_one_error_line(args, message):
     run = invoke(["evaluate", PORTER, *args])
     assert run.exit_code == 2 and run.stdout == "" and run.stderr.startswith(message)
+
+
+@pytest.mark.parametrize("value", ["1e-300", "2", "0", "-0.1", "nan", "lift", "1e300"])
+def test_speed_change_option_and_key_are_one_rule(tmp_path, value):
+    """``--speed-change X`` is refused exactly where ``[analysis] speed_change = X`` is, with
+    the same words (1e-300 is below govopt's range in both)."""
+    text = (SPECS / "textbook-ex1-porter.toml").read_text(encoding="utf-8")
+    path = tmp_path / "bad.toml"
+    written = f'"{value}"' if value == "lift" else value
+    path.write_text(text + f"\n[analysis]\nspeed_change = {written}\n", encoding="utf-8")
+    key = invoke(["evaluate", str(path)])
+    option = invoke(["evaluate", PORTER, "--speed-change", value])
+    assert key.exit_code == option.exit_code == 2
+    assert key.stderr.replace(f"{path}: analysis.speed_change", "--speed-change") \
+        == option.stderr
 
 
 def test_bad_speed_change_in_the_spec_names_its_key(tmp_path):

@@ -188,3 +188,32 @@ def test_check_table_columns_failed_and_drop():
     t.drop(np.array([False, True, False]))
     assert t.failed().tolist() == [[False, False], [False, False], [True, False]]
     assert [c.name for c in t.checks(1)] == [] and [c.name for c in t.checks(2)] == ["a", "b"]
+
+
+def test_band_checks_hold_over_the_whole_range():
+    """A Hartnell whose speed falls over its range, 250 rpm at the innermost configuration to
+    230 rpm at the outermost (the spring from Hamabe Example 1's two equations,
+    statics.required_spring), in a band of 240-256.8 rpm: at the range's ends the closing
+    speed inside (250 >= 240) and the opening speed outside (230 <= 256.8) both pass, yet it
+    runs at 230 rpm, below the band. The checks read the least and largest speed over the
+    range (statics.band_extremes): the lowest-speed check fails by 10 rpm."""
+    import dataclasses
+    import math
+
+    import govopt
+    from govopt.analysis import statics
+    from govopt.spec import load_spec, with_values
+
+    spec = load_spec("govopt/specs/textbook-ex4-hartnell.toml")
+    rpm = math.pi / 30
+    falling = dataclasses.replace(spec, speed=dataclasses.replace(
+        spec.speed, omega_mean=240 * rpm, irregularity=-20 / 240))  # 250 -> 230 rpm
+    kappa, l0, _, _ = statics.required_spring(falling, spec.design.flying_mass)
+    res = govopt.evaluate(with_values(spec, {
+        "design.spring_stiffness": f"{float(kappa)!r} N/m",
+        "design.free_length": f"{float(l0)!r} m"}))
+    assert res.to_dict()["omega_inner_rad_s"] == pytest.approx(250 * rpm, rel=1e-9)
+    low = next(c for c in res.checks if c.name == statics.BAND_INNER)
+    high = next(c for c in res.checks if c.name == statics.BAND_OUTER)
+    assert low.value == pytest.approx(230 * rpm, rel=1e-9) and not low.passed
+    assert high.value == pytest.approx(250 * rpm, rel=1e-9) and high.passed

@@ -345,3 +345,72 @@ def test_robust_record_in_the_workbook(tmp_path):
              for v in row if isinstance(v, str)}
     assert "Worst case over the tolerance box (after adjustment)" in cells
     assert "probability every check holds" in cells
+
+
+# ---------------------------------------------------------------------------------------------
+# Work bounded by govopt's limits, each evaluation counted at its cost (limits.evaluation_seconds)
+
+
+def _with(path: str, text: str):
+    """The spec at ``path`` with ``text`` added to its [requirements] table."""
+    import tomllib
+
+    from govopt.spec import parse_spec
+
+    data = tomllib.loads(open(path, encoding="utf-8").read())
+    data["requirements"].update(tomllib.loads(text))
+    return parse_spec(data, path)
+
+
+def test_an_evaluation_costs_what_its_parts_cost():
+    """A forced vibration (design by design) makes each robust evaluation ten times the
+    vectorised statics and transients: the vibration limit's samples count at that cost."""
+    plain = govopt.load_spec(ROBUST)
+    shaking = _with(ROBUST, 'max_vibration = "25 deg"')
+    row, vib = (rb.row_seconds(s, dz.requirements(s)) for s in (plain, shaking))
+    assert vib > 9 * row
+    assert rb.work_errors(plain, dz.requirements(plain)) is None
+
+
+@pytest.mark.parametrize(("text", "key", "words"), [
+    # a vibration limit and the largest sample count: ~7 minutes of samples, refused at once
+    ('max_vibration = "25 deg"\nrobust_samples = 100000', "requirements.robust_samples",
+     "at most 2241 samples for this spec"),
+    # every tolerance and both fitter's adjustments: 81 settings at every corner and edge
+    ('max_vibration = "25 deg"\nrobust_masses = 0.02\nrobust_torque_slope = 0.1\n'
+     'adjusting_nut = "2 mm"\ndashpot_valve = 0.2', "requirements",
+     "the tolerance box of 4 quantities (16 corners) at each of the fitter's 81 settings"),
+])
+def test_robust_work_past_the_limits_is_refused_before_it_runs(text, key, words):
+    spec = _with(ROBUST, text)
+    with pytest.raises(govopt.errors.InfeasibleError) as err:
+        search.design(spec)
+    assert str(err.value).startswith(f"{ROBUST}: {key}: {words}"), str(err.value)
+
+
+def test_the_search_stops_at_its_limit_with_a_diagnosis(monkeypatch):
+    """A search that reaches its limit of work stops and says so (the textbook's robust spring
+    governor checks 72 candidates, ~0.56 s of counted work; here the limit is 0.2 s)."""
+    monkeypatch.setattr(rb.limits, "MAX_ROBUST_SEARCH_SECONDS", 0.2)
+    spec = govopt.load_spec(TEXTBOOK)
+    with pytest.raises(govopt.errors.InfeasibleError,
+                       match=r"stopped at govopt's limit of work \(~0.2 s\)"):
+        rb.robust_search(spec, dz.requirements(spec))
+
+
+def test_the_verification_stops_adjusting_at_its_limit_and_says_so(monkeypatch):
+    """The textbook's robust governor: 2000 samples, then the fitter's nut for those that fail
+    (5057 evaluations in all, ~2.1 s counted). With a limit that takes the samples but not the
+    adjustments, the failing samples count as failing: the probability is a lower bound, and
+    the record says so."""
+    spec = govopt.load_spec(TEXTBOOK)
+    req = dz.requirements(spec)
+    cand, _, _ = rb.robust_search(spec, req)
+    design = rb.design_of(spec, cand)
+    full = rb.monte_carlo(spec, req, design)
+    assert "note" not in full and full["adjusted_by_the_fitter"] > 0
+    monkeypatch.setattr(rb.limits, "MAX_MONTE_CARLO_SECONDS",
+                        2.05 * req.robust_samples * rb.row_seconds(spec, req))
+    cut = rb.monte_carlo(spec, req, design)
+    assert "lower bound" in cut["note"]
+    assert cut["holds"] < full["holds"] and cut["evaluations"] < full["evaluations"]

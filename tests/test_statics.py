@@ -6,6 +6,7 @@ omega0^2 = 630 (240 rpm is 631.65), so the tests that reproduce its arithmetic u
 
 import dataclasses
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -203,3 +204,44 @@ def test_wahl_factor_limits():
     assert hx.shear_stress_r(100.0, 0.01, 0.04, "wahl") > hx.shear_stress_r(100.0, 0.01, 0.04)
     with pytest.raises(ValueError):
         hx.shear_stress_r(1.0, 0.01, 0.04, "bogus")
+
+
+def _without_spring(path: str, **speeds):
+    """A bundled spec's data without its spring, with the band ``speeds`` (rpm)."""
+    import tomllib
+
+    data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+    for key in ("spring_stiffness", "free_length"):
+        data["design"].pop(key)
+    data["speed"] = {k: f"{v!r} rpm" for k, v in speeds.items()}
+    return data
+
+
+@pytest.mark.parametrize(("path", "speeds", "words"), [
+    # textbook Example 8's spring-and-gravity governor at 100-120 rpm: the sleeve's weight
+    # alone lifts it faster; the compression spring would have to pull (-59.5 N)
+    ("govopt/specs/textbook-ex8-spring_gravity.toml", {"inner": 100.0, "outer": 120.0},
+     "a compression spring cannot pull"),
+    # a band narrower than double precision resolves: isochronous to rounding
+    ("govopt/specs/textbook-ex4-hartnell.toml", {"inner": 240.0, "outer": 240.00000000000003},
+     "isochronous to rounding"),
+])
+def test_no_band_spring_from_a_band_no_spring_can_give(path, speeds, words):
+    """Where [design] gives no spring, the one that floats the governor between the band's
+    speeds (statics.band_spring) is refused, saying why, where no spring gives that band: a
+    result from it would be a failing "spring loaded" check or an isochronous governor."""
+    from govopt.spec import SpecError, parse_spec
+
+    with pytest.raises(SpecError, match=words) as err:
+        parse_spec(_without_spring(path, **speeds), path)
+    assert "design: no spring given" in str(err.value)
+
+
+def test_band_spring_is_found_where_one_gives_the_band():
+    """Example 4's band (240-256.8 rpm): the book's spring, 3.572 kgf/cm (the spec's)."""
+    from govopt.spec import parse_spec
+
+    path = "govopt/specs/textbook-ex4-hartnell.toml"
+    spec = parse_spec(_without_spring(path, inner=240.0, outer=256.8), path)
+    assert spec.band_spring["stiffness"] == pytest.approx(3.572 * 9.80665e2, rel=2e-3)
+    assert spec.band_spring["force_inner"] > 0 and spec.band_spring["force_outer"] > 0

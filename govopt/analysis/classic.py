@@ -22,7 +22,8 @@ All are computed from the characteristic, written once on the seam
 * **effort** (Rattan): the mean force on the regulating member when the speed changes by
   ``c`` (``[analysis] speed_change``, default 1 %, at the normal configuration; ``"range"``: the
   governor's own change ``c = omega_a / omega_i - 1`` from the innermost configuration, the
-  textbook's effort over the range or the lift) with the member held: the generalised force
+  textbook's effort over the range or the lift; none where the speed does not rise over the
+  range, :func:`effort_note`) with the member held: the generalised force
   grows from 0 to
   ``((1 + c)^2 - 1) omega^2 (jp - ci)``, which each of the ``n`` flying masses puts on the member
   through ``s'(x)``; mean effort ``P = n ((1 + c)^2 - 1) omega^2 (jp - ci) / (2 s')``. For the
@@ -93,6 +94,8 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
         else:
             target = (1.0 + c) ** 2 * w2[:, i_n]
             travel = _travel(spec, sd, float(x[i_n]), float(x[-1]), target, ok)
+        if over_range:  # a speed that does not rise over the range has no effort to move it
+            effort = np.where((c > 0.0)[:, None], effort, np.nan)
         return {"range_rad_s": wa - wi, "sensitiveness": 2.0 * (wa - wi) / (wa + wi),
                 "stability": np.where(ok, stability, None), "effort": effort[:, at],
                 "power": effort[:, at] * travel, "friction_band": band[:, i_n],
@@ -112,6 +115,7 @@ def report(spec, measures: dict, i: int) -> dict:
         "stability": str(measures["stability"][i]),
         "effort_change": float(measures["change"][i]),
         "effort_over": "range" if measures["over_range"] else "normal",
+        "effort_note": effort_note(measures, i),
         "effort": float(measures["effort"][i]),
         "effort_unit": "N*m" if gov.travel == "angle" else "N",
         "power": float(measures["power"][i]),
@@ -122,6 +126,20 @@ def report(spec, measures: dict, i: int) -> dict:
         "insensitiveness": float(measures["insensitiveness"][i]),
         "geometry": geometry(spec, measures["x_normal"]),
     }
+
+
+def effort_note(measures: dict, i: int) -> str:
+    """Why design ``i`` has no effort and power (empty where it has them): over the range
+    (``speed_change = "range"``) the speed must rise from the innermost configuration to the
+    outermost; where it falls or stays, no speed change moves the regulating member outward,
+    and Rattan's effort ``c (w + W)`` of a falling speed would be a negative force, not an
+    effort."""
+    c = float(measures["change"][i])
+    if not measures["over_range"] or c > 0.0:
+        return ""
+    how = "falls" if c < 0.0 else "does not rise"
+    return (f"not computed: the speed {how} over the range ({100.0 * c:.4g} %), so no rise "
+            "of speed moves the regulating member (see stability)")
 
 
 def geometry(spec, x_normal) -> dict:

@@ -109,23 +109,70 @@ def required_spring(spec: Spec, m, central=None):
 #: reports: evaluate, bulk, the design search and studies)
 BAND_INNER = "lowest speed >= speed.inner"
 BAND_OUTER = "highest speed <= speed.outer"
-BAND_SOURCE = ("[speed] inner/outer: the whole operating band inside the spec's; with friction "
-               "the governor closes at omega_fall and opens at omega_rise, omega^2 = (Q_s + cf "
-               "-+ F) / (jp - ci) (textbook 3.4(b), 'Friction at the sleeve'; Hamabe eq. 42)")
+BAND_SOURCE = ("[speed] inner/outer: the whole operating band inside the spec's, over the whole "
+               "range; with friction the governor closes at omega_fall and opens at omega_rise, "
+               "omega^2 = (Q_s + cf -+ F) / (jp - ci) (textbook 3.4(b), 'Friction at the "
+               "sleeve'; Hamabe eq. 42)")
 
 
-def band_speeds_squared(spec: Spec, m, kappa, l0, central=None, friction=(0.0, 0.0)):
-    """``(omega_fall^2 at x_inner, omega_rise^2 at x_outer)``, (rad/s)^2: the ends of the
-    operating band, the governor closing at the innermost configuration and opening at the
-    outermost against the friction band ``friction = (F_inner, F_outer)`` (generalised forces,
-    the type's :meth:`Governor.friction`; textbook 3.4(b)). Arrays broadcast over designs.
-    The requirement (where the spec states ``[speed] inner/outer``, :attr:`Speed.band`):
-    ``omega_fall(x_inner) >= omega_inner`` and ``omega_rise(x_outer) <= omega_outer``."""
-    gov = spec.governor
-    t_i = terms(spec, gov.x_inner, m, central)
-    t_a = terms(spec, gov.x_outer, m, central)
-    return (t_i.omega_squared(kappa, l0, -np.asarray(friction[0])),
-            t_a.omega_squared(kappa, l0, np.asarray(friction[1])))
+def band_speeds_squared(t, kappa, l0, friction=0.0):
+    """``(omega_fall^2, omega_rise^2)``, (rad/s)^2, at the configurations of the terms ``t``
+    (:func:`terms`; last axis): the speeds at which the governor closes and opens against the
+    friction band ``friction`` there (generalised forces, the type's
+    :meth:`Governor.friction`; textbook 3.4(b)). Arrays broadcast over designs."""
+    f = np.asarray(friction, dtype=float)
+    return t.omega_squared(kappa, l0, -f), t.omega_squared(kappa, l0, f)
+
+
+def band_extremes(fall2, rise2):
+    """The operating band's lowest and highest speed, rad/s: the least ``omega_fall`` and the
+    largest ``omega_rise`` over the configurations (last axis; :func:`band_speeds_squared`).
+    Over the whole range, not at its ends: a governor whose speed falls inside the range runs
+    below its innermost configuration's speed there. The requirement (where the spec states
+    ``[speed] inner/outer``, :attr:`Speed.band`): lowest ``>= omega_inner``, highest
+    ``<= omega_outer``.
+
+    >>> band_extremes(np.array([[25.0, 24.0, 26.0]]), np.array([[26.0, 25.0, 27.0]]))
+    (array([4.89897949]), array([5.19615242]))
+    """
+    return (np.sqrt(np.maximum(np.min(fall2, axis=-1), 0.0)),
+            np.sqrt(np.max(rise2, axis=-1)))
+
+
+#: what a spring whose force would have the wrong sign would have to do, by kind
+_WRONG_SIGN = {"compression": "a compression spring cannot pull",
+               "tension": "a tension spring cannot push", "leaf": "the leaf would bend back"}
+
+
+def band_spring(spec: Spec, m, central=0.0):
+    """The spring that makes the governor float between the band's two speeds (the textbook's
+    question, ch. 3, Examples 4 and 8; Hamabe Example 1: :func:`required_spring`), or why no
+    spring does it (:class:`DesignError`, the reason in words): a band narrower than govopt
+    resolves (its width over the mean speed at most :data:`SLOPE_RTOL`: the governor floating
+    across it would be isochronous to rounding, not stable), a rate or free length that is not
+    positive and finite, or a force that does not keep the spring loaded in its working sense
+    at every configuration (a compression spring that would have to pull). Returns ``(kappa,
+    l0, F_inner, F_outer)``."""
+    gov, sp = spec.governor, spec.speed
+    width = (sp.omega_outer - sp.omega_inner) / sp.omega_mean
+    if not width > SLOPE_RTOL:
+        raise DesignError(f"the band is {width:.3g} of the mean speed wide, within govopt's "
+                          f"resolution ({SLOPE_RTOL:g}): isochronous to rounding; widen it")
+    kappa, l0, f_inner, f_outer = (float(v) for v in required_spring(spec, m, central))
+    if not (np.isfinite(kappa) and kappa > 0.0):
+        raise DesignError(f"the rate that would is {kappa:.4g} N/m")
+    if not np.isfinite(l0) or (gov.free_length_positive and l0 <= 0.0):
+        raise DesignError(f"its free length would be {l0:.4g} m")
+    x = configurations(spec)
+    force = np.broadcast_to(spring_force(spec, x, kappa, l0), x.shape)
+    i = int(np.argmin(force))
+    if not force[i] >= 0.0:
+        where = ("the innermost configuration" if i == 0 else "the outermost configuration"
+                 if i == x.size - 1 else "a configuration inside the range")
+        raise DesignError(f"its force would be {force[i]:.4g} N at {where} ("
+                          f"{gov.spring_loaded_check} needs >= 0): "
+                          f"{_WRONG_SIGN.get(gov.spring, 'the spring would unload')}")
+    return kappa, l0, f_inner, f_outer
 
 
 def inertia(spec: Spec, sd: SpringDesign, x):
@@ -232,6 +279,23 @@ def configurations(spec: Spec, points: int | None = None) -> np.ndarray:
     return np.unique(np.append(x, g.x_normal))
 
 
+def design_key(spec: Spec, field: str) -> str | None:
+    """The ``[design]`` key the spec writes for the design quantity ``field`` (a
+    :class:`~govopt.spec.Design` field: ``"design.pendulum_mass"`` where the spec gives the
+    mass, ``"design.pendulum_weight"`` where the weight), read from what the spec's reader
+    recorded; None where the spec's ``[design]`` does not give it (a design found by the
+    search, a study's point): a message then names the quantity, never a key the spec has
+    not."""
+    gov = spec.governor
+    forms = {"flying_mass": (f"{gov.mass_key}_weight", f"{gov.mass_key}_mass"),
+             "central_mass": ("central_weight", "central_mass"),
+             "free_half_length": (gov.free_length_key,),
+             "flying_inertia": (f"{gov.mass_key}_inertia",),
+             "dashpot": ("dashpot_f", "dashpot_a1")}.get(field, (field,))
+    written = {e.key for e in spec.entries}
+    return next((f"design.{k}" for k in forms if f"design.{k}" in written), None)
+
+
 #: how each [design] key of a spring makes it softer (Hamabe eq. 2's rate ``G d^4 / (64 r^3 n)``
 #: for a coil, ``E w t^3`` over the cube of the length for a leaf)
 SOFTER = (("spring_stiffness", "lower"), ("wire_diameter", "thinner"),
@@ -260,13 +324,16 @@ def no_equilibrium(spec: Spec, sd: SpringDesign, alpha, t, w2) -> str:
     lever = np.broadcast_to(t.lever, alpha.shape)
     if np.any(lever <= 0):
         j = int(np.argmax(lever <= 0))
+        mass = design_key(spec, "flying_mass")
         return head + (f"the regulating gear's inertia outweighs the flying masses' centrifugal "
-                       f"force at {at(alpha[j])}: a heavier design.{gov.mass_key}_weight, or a "
-                       "lighter regulating gear (its masses and levers in the spec)")
+                       f"force at {at(alpha[j])}: heavier flying masses"
+                       + (f" ({mass})" if mass else "") + ", or a lighter regulating gear (its "
+                       "masses and levers in the spec)")
     A, B, cf = (np.broadcast_to(v, alpha.shape) for v in (t.A, t.B, t.cf))
     spring = sd.kappa * (A - B * sd.l0)
     if gov.spring is not None and spring[i] < 0 and sd.kappa > 0:
-        key = f"design.{gov.free_length_key}"
+        key = design_key(spec, "free_half_length") or (
+            f"the {gov.free_length_key.replace('_', ' ')}")
         if design is not None and design.free_half_length is not None:
             # restoring > 0  <=>  B l0 < A + cf / kappa
             bound = (A + cf / sd.kappa) / B
@@ -283,8 +350,8 @@ def no_equilibrium(spec: Spec, sd: SpringDesign, alpha, t, w2) -> str:
                                          sd.central)
             c1 = A - B * tn.A / tn.B  # restoring = kappa c1 + c0 with l0 from the normal
             c0 = B * Q_n / tn.B + cf
-            softer = ", ".join(f"{way} design.{k}" for k, way in SOFTER
-                               if design is not None and getattr(design, k, None) is not None)
+            softer = ", ".join(f"{way} {design_key(spec, k)}" for k, way in SOFTER
+                               if design_key(spec, k))
             if np.all(c0[c1 < 0] > 0):
                 kmax = float(np.min(c0[c1 < 0] / -c1[c1 < 0]))
                 return head + (f"the spring is too stiff ({key} from the normal "

@@ -46,11 +46,13 @@ design_app = typer.Typer(add_completion=False)
 
 
 def _load(spec: Path | None, default: Path, **analysis):
-    from ..spec import load_spec
+    """The spec with the command's ``[analysis]`` options set as if written in it (re-read:
+    ``design -o`` writes them into the design's spec, which then reproduces the report)."""
+    from ..spec import load_spec, with_values
 
     s = load_spec(spec or default)
-    changes = {k: v for k, v in analysis.items() if v is not None}
-    return s.with_analysis(**changes) if changes else s
+    changes = {f"analysis.{k}": v for k, v in analysis.items() if v is not None}
+    return with_values(s, changes) if changes else s
 
 
 @evaluate_app.command("evaluate", cls=Command, help=EVALUATE_HELP, short_help=EVALUATE_SHORT)
@@ -92,17 +94,28 @@ def design(spec: Spec = None, json_out: Json = False,
 
 
 def _speed_change(text: str | None) -> float | str | None:
-    """``--speed-change``: 'range' or a fraction in (0, 1)."""
-    if text is None or text.strip() == "range":
-        return None if text is None else "range"
-    try:
-        value = float(text)
-    except ValueError:
-        value = float("nan")
-    if not 0.0 < value < 1.0:
-        fail(f"--speed-change: expected a fraction of the speed in (0, 1), e.g. 0.01, or "
-             f"'range', got {text!r}")
-    return value
+    """``--speed-change``: 'range' or a fraction in (0, 1), read by the rule of the spec's
+    ``[analysis] speed_change`` (:func:`govopt.spec.read_speed_change`)."""
+    if text is None:
+        return None
+    from ..reader import Reader
+    from ..spec import read_speed_change
+
+    return read_speed_change(Reader("", {"--speed-change": _toml_value(text)}, "", []),
+                             "--speed-change")
+
+
+def _toml_value(text: str):
+    """An option's text as the value it would be in a spec (``2`` an integer, ``1e-300`` a
+    float, ``nan`` a float), else the text itself: an option and its spec key are read alike."""
+    import tomllib
+
+    if "\n" not in text and "\r" not in text:
+        try:
+            return tomllib.loads(f"value = {text}")["value"]
+        except tomllib.TOMLDecodeError:
+            pass
+    return text.strip()
 
 
 def _sections(full: bool, section: list[str] | None) -> list[str] | None:

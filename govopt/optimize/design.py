@@ -31,6 +31,7 @@ from dataclasses import dataclass, fields, replace
 
 import numpy as np
 
+from .. import limits
 from ..analysis import loadchange, statics
 from ..analysis import transient as tr
 from ..errors import DesignError, InfeasibleError
@@ -197,7 +198,7 @@ def load_change_problem(spec: Spec, km: KappaModel, grid: Grid, rows, kappa):
     R = -eng.torque_slope * spec.governor.travel_slope(alpha0) / eng.flywheel_inertia
     a0 = inertia + 0.0 * alpha0
     a2 = inertia * k2[:, i0] / 3.0
-    a3 = 2.0 * omega0 * loadchange.speed_lever(spec, alpha0, m, km.central) * R
+    a3 = 2.0 * omega0 * loadchange.speed_lever(spec, alpha0, m, km.central[rows]) * R
     xi0 = (grid.alpha[i1] - alpha0) + 0.0 * a0
     x = tr.hamabe_initial_conditions(a0, a2, a3, R, xi0, omega1 - omega0)
     return a0, a2, a3, x
@@ -215,6 +216,7 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
     bound is used, so it errs safe), kept at ``requirements.min_fatigue_safety`` (default 1).
     Returns a dict of arrays over candidates."""
     n = len(rows)
+    limits.charge(n * window_seconds(spec, req), n)  # the running search's work, if counted
     nan = np.full(n, np.nan)
     if spec.engine is None or not spec.load_changes:  # no dash-pot is designed
         ok, vib = np.ones(n, bool), nan
@@ -280,6 +282,36 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
                 "vibration": np.where(feasible, vib[idx, best], np.inf),
                 "f_lo": np.nanmin(np.where(feasible[:, None], f_ok, np.inf), axis=1),
                 "f_hi": np.nanmax(np.where(feasible[:, None], f_ok, -np.inf), axis=1)}
+
+
+def window_seconds(spec: Spec, req: Requirements) -> float:
+    """Estimated CPU seconds of one candidate's :func:`dashpot_window`
+    (:data:`govopt.limits.WINDOW_SECONDS_PER_LOAD_CHANGE` a load change, and the vibration
+    bound's harmonics where a requirement reads it); a small floor without load changes."""
+    changes = len(spec.load_changes) if spec.engine is not None else 0
+    vibration = spec.engine is not None and (req.max_vibration is not None
+                                             or req.objective == "vibration")
+    return (limits.WINDOW_SECONDS_PER_LOAD_CHANGE * max(changes, 0.05)
+            + (limits.WINDOW_SECONDS_PER_HARMONIC * spec.analysis.harmonics
+               if vibration else 0.0))
+
+
+#: candidates a single dash-pot window takes at once at one load change (its transients' arrays
+#: grow with candidates x dash-pot settings x load changes: at most ~10^5 transients at once)
+WINDOW_ROWS = 4096
+
+
+def _windows(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, rows, kappa) -> dict:
+    """:func:`dashpot_window` of many candidates, in blocks of at most :data:`WINDOW_ROWS`
+    over the load changes (memory bounded): the arrays of the blocks joined."""
+    block = max(1, WINDOW_ROWS // max(len(spec.load_changes), 1))
+    parts = [dashpot_window(spec, req, km, grid, rows[i:i + block], kappa[i:i + block])
+             for i in range(0, len(rows), block)] or [
+        dashpot_window(spec, req, km, grid, rows, kappa)]
+    out = {k: np.concatenate([p[k] for p in parts]) for k in parts[0] if k != "least"}
+    out["least"] = {k: np.concatenate([p["least"][k] for p in parts])
+                    for k in parts[0]["least"]}
+    return out
 
 
 def vibration_bound(spec: Spec, km: KappaModel, grid: Grid, rows, kappa, f):
@@ -547,8 +579,8 @@ def best_discrete(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, lo,
         values = objective_values(req, m, smass[cols], central=km.central[rows, 0])
         head = _best_first(values, max_checked)[:max_checked]
         order = None
-    best, checked = _visit(spec, req, km, grid, rows, cols, cat, m, l0, head, batch)
-    if best is None and rows.size > max_checked:
+    best, checked, stopped = _visit(spec, req, km, grid, rows, cols, cat, m, l0, head, batch)
+    if best is None and rows.size > max_checked and not stopped:
         # best-first found nothing: screen the dynamics on a (mass, stiffness) lattice and visit
         # only candidates in or next to cells where some dash-pot works
         keep = _lattice_screen(spec, req, km, grid, rows, kappa[cols], stats)
@@ -556,11 +588,13 @@ def best_discrete(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, lo,
             order = np.argsort(values, kind="stable")
         rest = order[max_checked:]
         rest = rest[keep[rest]]
-        best, more = _visit(spec, req, km, grid, rows, cols, cat, m, l0, rest, batch)
+        best, more, stopped = _visit(spec, req, km, grid, rows, cols, cat, m, l0, rest, batch)
         checked += more
-    elif best is None and rows.size:
+    elif best is None and rows.size and not stopped:
         _lattice_screen(spec, req, km, grid, rows, kappa[cols], stats)  # for the diagnosis
     stats["dynamics_checked"] = checked
+    if stopped:
+        stats["dynamics_stopped_at_the_work_limit"] = True
     return best, stats
 
 
@@ -576,13 +610,18 @@ def _batches(size: int, batch: int):
 
 def _visit(spec, req, km, grid, rows, cols, cat, m, l0, order, batch):
     """Check candidates in ``order`` in batches; the best feasible one (first batch with one
-    feasible for the mass objectives, which are visited in objective order)."""
+    feasible for the mass objectives, which are visited in objective order), the candidates
+    checked, and whether the visit stopped at the running search's limit of work."""
     best, checked = None, 0
     for part in _batches(order.size, batch):
         sel = order[part]
         fat = None if cat.fatigue is None else (
             lambda swing, s=sel: cat.fatigue(cols[s], l0[s], swing))
-        win = dashpot_window(spec, req, km, grid, rows[sel], cat.kappa[cols[sel]], fatigue=fat)
+        try:
+            win = dashpot_window(spec, req, km, grid, rows[sel], cat.kappa[cols[sel]],
+                                 fatigue=fat)
+        except limits.WorkLimit:  # the best among those checked, with a note (design())
+            return best, checked, True
         checked += sel.size
         if not np.any(win["feasible"]):
             continue
@@ -599,7 +638,7 @@ def _visit(spec, req, km, grid, rows, cols, cat, m, l0, order, batch):
             best = cand
         if req.objective in ("moving_mass", "spring_mass"):
             break
-    return best, checked
+    return best, checked, False
 
 
 def _cells(rows, kappa, width: float):
@@ -618,8 +657,11 @@ def _lattice_screen(spec, req, km, grid, rows, kappa, stats, cells: int = 24):
     records in ``stats["least"]`` how far each dynamic requirement can be pushed (for the
     diagnosis)."""
     width = max(float(np.ptp(np.log(kappa))) / cells, 1e-9)
-    key, uniq, cell_rows, centre = _cells(rows, kappa, width)
-    win = dashpot_window(spec, req, km, grid, cell_rows, centre)
+    key, uniq, cell_rows, centre = _affordable_cells(spec, req, rows, kappa, width, LATTICE)
+    if uniq is None:  # not within its share: every candidate stays, the visit counts them
+        stats["lattice_cells"] = 0
+        return np.ones(rows.size, bool)
+    win = _windows(spec, req, km, grid, cell_rows, centre)
     stats["least"] = {k: float(np.min(v)) for k, v in win["least"].items()}
     good = set()
     for u in uniq[win["feasible"]]:
@@ -636,10 +678,34 @@ def _surrogate_order(spec, req, km, grid, rows, kappa):
     cell; every candidate visited is checked exactly."""
     if rows.size == 0:
         return np.arange(0)
-    key, uniq, cell_rows, centre = _cells(rows, kappa, 0.05)
-    win = dashpot_window(spec, req, km, grid, cell_rows, centre)
+    key, uniq, cell_rows, centre = _affordable_cells(spec, req, rows, kappa, 0.05, SURROGATE)
+    if uniq is None:  # not even a cell per mass within its share: lightest first
+        return np.argsort(km.m[rows, 0], kind="stable")
+    win = _windows(spec, req, km, grid, cell_rows, centre)
     score = np.where(win["feasible"], objective_values(req, None, None, win), np.inf)
     return np.argsort(score[np.searchsorted(uniq, key)], kind="stable")
+
+
+#: the shares of the design's dynamics work (:data:`govopt.limits.MAX_DESIGN_DYNAMICS_SECONDS`)
+#: the surrogate ordering the candidates and the lattice screening them may take at most
+SURROGATE, LATTICE = 0.3, 0.3
+
+
+def _affordable_cells(spec, req, rows, kappa, width: float, share: float):
+    """:func:`_cells` at ``width``, widened (doubled) until their dash-pot windows take at most
+    ``share`` of what the running search has left (:func:`govopt.limits.charge`); ``uniq``
+    None where even a cell per mass row would not."""
+    work = limits._WORK.get()
+    budget = math.inf if work is None else share * work.left()
+    each = window_seconds(spec, req)
+    span = float(np.ptp(np.log(kappa))) if kappa.size else 0.0
+    while True:
+        key, uniq, cell_rows, centre = _cells(rows, kappa, width)
+        if uniq.size * each <= budget:
+            return key, uniq, cell_rows, centre
+        if width > span:
+            return key, None, cell_rows, centre
+        width *= 2.0
 
 
 # ---------------------------------------------------------------------------------------------
@@ -786,20 +852,29 @@ def design(spec: Spec):
     if req.robust:
         raise ValueError("a robust spec is designed by govopt.optimize.search.design (the "
                          "tolerance box's search), not the nominal search")
+    work = limits.Work(limits.MAX_DESIGN_DYNAMICS_SECONDS)  # the dash-pot windows' work
     if spec.governor.spring is None:  # a dead-weight governor: masses only
-        cand, stats = dead_weight_search(spec, req)
-        return _result(spec, req, cand, stats, None)
+        with limits.counting(work):
+            cand, stats = dead_weight_search(spec, req)
+        return _result(spec, req, cand, _with_work(stats, work), None)
     _check_grids(spec, req)
     grid, km, lo, hi, parts = statics_window(spec, req)
     if not np.any(lo <= hi):
         raise InfeasibleError(diagnose(spec, req, "statics", parts))
-    cand, stats = best_discrete(spec, req, km, grid, lo, hi)
+    with limits.counting(work):
+        cand, stats = best_discrete(spec, req, km, grid, lo, hi)
+    stats = _with_work(stats, work)
     if cand is None:
         stage = "spring" if stats["spring_feasible"] == 0 else "dynamics"
         raise InfeasibleError(diagnose(spec, req, stage, parts, stats))
     bound = continuous_bound(spec, req, km, lo, hi) \
         if req.objective in ("moving_mass", "spring_mass") and stats.pop("gp") else None
     return _result(spec, req, cand, stats, bound)
+
+
+def _with_work(stats: dict, work) -> dict:
+    """The search's stats with the dynamics' counted work (estimated CPU seconds)."""
+    return {**stats, "dynamics_work_s": round(work.spent, 3)}
 
 
 def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict,
@@ -851,7 +926,12 @@ def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: 
         "search": stats,
         "notes": ([] if spec.engine is not None and spec.load_changes else [
             "no [engine] or [[load_change]] in the spec: the dash-pot and the load-change "
-            "requirements (eq. 32, over-regulation, settling) were not designed for"])
+            "requirements (eq. 32, over-regulation, settling) were not designed for"]) + ([
+            f"the dynamics were checked for {stats.get('dynamics_checked')} candidates, "
+            f"best first, then stopped at govopt's limit of work (~"
+            f"{limits.MAX_DESIGN_DYNAMICS_SECONDS:g} s): the best among them, which a longer "
+            "search might better (fewer load changes, or narrower bounds)"]
+            if stats.get("dynamics_stopped_at_the_work_limit") else [])
         + bounds_notes(searched),
         "search_bounds": searched,
         "sensitivities": sensitivities(spec, req, None if bound is None
@@ -981,7 +1061,8 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     At each (m, M) the characteristic is exact (virtual work on the seam); with a friction band
     the sleeve rises at ``omega_rise`` and falls at ``omega_fall`` (section 3.4(b), "Friction at
     the sleeve"), so the requirement is that the whole operating band lies in the spec's range:
-    ``omega_fall(x_inner) >= omega_inner`` and ``omega_rise(x_outer) <= omega_outer``, with
+    the least ``omega_fall`` over the range ``>= omega_inner`` and the largest ``omega_rise``
+    ``<= omega_outer`` (:func:`govopt.analysis.statics.band_extremes`), with
     ``k^2`` within its margins (a rising characteristic) everywhere. The geometry fixes the
     ratio of the band's ends; the masses set its level (``M/m``) and, against friction, its
     width. With an engine and load changes the dash-pot is designed as for spring governors.
@@ -989,7 +1070,12 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     grid, km, rows, m, c, stats = dead_weight_candidates(spec, req)
     for part in _batches(rows.size, 64):
         sel, start = rows[part], part.start
-        win = dashpot_window(spec, req, km, grid, sel, np.zeros(sel.size))
+        try:
+            win = dashpot_window(spec, req, km, grid, sel, np.zeros(sel.size))
+        except limits.WorkLimit:
+            stats["dynamics_checked"] = int(start)
+            stats["dynamics_stopped_at_the_work_limit"] = True
+            raise InfeasibleError(_dynamics_conflict(spec, req, stats)) from None
         if np.any(win["feasible"]):
             j = int(np.argmax(win["feasible"]))
             i = sel[j]
@@ -1056,8 +1142,8 @@ def _dead_weight_parts(spec: Spec, req: Requirements, rise, fall, k2) -> dict:
     return {
         "equilibrium speed > 0": np.all(fall > 0, axis=1),
         "k^2 within its margins": np.all((k2 >= k2_lo) & (k2 <= k2_hi), axis=1),
-        statics.BAND_INNER: np.sqrt(np.maximum(fall[:, 0], 0)) >= sp.omega_inner,
-        statics.BAND_OUTER: np.sqrt(rise[:, -1]) <= sp.omega_outer,
+        statics.BAND_INNER: statics.band_extremes(fall, rise)[0] >= sp.omega_inner,
+        statics.BAND_OUTER: statics.band_extremes(fall, rise)[1] <= sp.omega_outer,
     }
 
 
@@ -1296,9 +1382,11 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
 def _dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
     """Name the dynamic requirement that no admissible dash-pot meets, and how far it is."""
     least = stats.get("least", {})
-    where = (f"({stats['spring_feasible']} mass-spring combinations pass the statics "
-             f"and spring checks; {stats['dynamics_checked']} checked best first, "
-             f"{stats.get('lattice_cells', 0)} mass x stiffness cells screened)")
+    where = (f"({stats.get('spring_feasible', 'all')} candidates pass the statics "
+             f"and spring checks; {stats['dynamics_checked']} checked best first"
+             + (f", stopped at govopt's limit of work (~{limits.MAX_DESIGN_DYNAMICS_SECONDS:g} s)"
+                if stats.get("dynamics_stopped_at_the_work_limit") else "")
+             + f", {stats.get('lattice_cells', 0)} mass x stiffness cells screened)")
     if spec.engine is None or not spec.load_changes:  # no dash-pot to design: the vibration
         broken = " and ".join(name for name, on in (
             ("requirements.max_vibration", req.max_vibration is not None),

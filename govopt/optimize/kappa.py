@@ -152,19 +152,16 @@ class KappaModel:
             # l0 sense limit <=> kappa l0 - limit kappa sense 0 (kappa > 0)
             parts[name] = _interval(*start, Affine(self.l0.x - limit, self.l0.y), 0.0, sense)
         sp = self.spec.speed
-        if sp.band:  # the whole operating band inside [speed] inner/outer, friction included
-            gov = self.spec.governor
-            x_ends = self.alpha[[i_inner, i_outer]]
-            fr = gov.friction(x_ends)
-            # omega_fall^2, omega_rise^2 at the ends are affine in kappa: the same slope in
-            # kappa as omega^2, shifted by -+ F / (jp - ci) (statics.band_speeds_squared)
-            zero = statics.band_speeds_squared(self.spec, self.m, 0.0, 0.0, self.central,
-                                               (fr[0], fr[1]))
-            one = statics.band_speeds_squared(self.spec, self.m, 0.0, 0.0, self.central)
-            fall = Affine(self.omega2.x[:, [i_inner]],
-                          self.omega2.y[:, [i_inner]] + (zero[0] - one[0]))
-            rise = Affine(self.omega2.x[:, [i_outer]],
-                          self.omega2.y[:, [i_outer]] + (zero[1] - one[1]))
+        if sp.band:  # the whole operating band inside [speed] inner/outer, friction included,
+            # at every configuration (statics.band_extremes): omega_fall^2, omega_rise^2 are
+            # affine in kappa, the same slope as omega^2, shifted by -+ F / (jp - ci)
+            # (statics.band_speeds_squared)
+            t = statics.terms(self.spec, self.alpha, self.m, self.central)
+            fall0, rise0 = statics.band_speeds_squared(
+                t, 0.0, 0.0, self.spec.governor.friction(self.alpha))
+            w0 = t.omega_squared(0.0, 0.0)
+            fall = Affine(self.omega2.x, self.omega2.y + (fall0 - w0))
+            rise = Affine(self.omega2.x, self.omega2.y + (rise0 - w0))
             parts[statics.BAND_INNER] = _interval(*start, fall, sp.omega_inner**2, ">=")
             parts[statics.BAND_OUTER] = _interval(*start, rise, sp.omega_outer**2, "<=")
         lo_irr, hi_irr = self.irregularity_interval(i_inner, i_outer, delta)

@@ -39,6 +39,16 @@ that fail in the sample.
 
 The checks of the search bounds (``pendulum mass >= min`` ...) are not requirements on a made
 part and are left out of the worst case.
+
+Work. Every evaluation is counted at its estimated cost (:func:`row_seconds`,
+:func:`govopt.limits.evaluation_seconds`: a forced vibration, a leaf's checks or friction
+strokes design by design cost ten to a hundred times the vectorised rest), against
+:data:`govopt.limits.MAX_ROBUST_SEARCH_SECONDS` for the search and
+:data:`govopt.limits.MAX_MONTE_CARLO_SECONDS` for the verification: a spec whose first
+candidate's box or whose samples alone exceed them is refused before anything runs
+(:func:`work_errors`), a search that reaches its limit stops with a diagnosis, and a
+verification that reaches it stops adjusting the failing samples (the probability is then a
+lower bound, and says so).
 """
 
 from __future__ import annotations
@@ -50,6 +60,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from .. import limits
 from ..bulk import margin_column, passed_column, value_column
 from ..errors import InfeasibleError
 from ..requirements import PASS_TOL
@@ -156,15 +167,89 @@ def candidate_box(spec: Spec, req: Requirements, cols: dict) -> Box:
                req.robust_torque_slope)
 
 
+WorkLimit, Work, counting = limits.WorkLimit, limits.Work, limits.counting
+
+
+def _vibration(spec: Spec, req: Requirements) -> bool:
+    """Whether the robust evaluations solve the forced vibration (a limit or objective on it,
+    or a wire grade's fatigue)."""
+    return req.max_vibration is not None or req.objective == "vibration" or (
+        spec.material is not None and spec.material.grade is not None)
+
+
+def row_seconds(spec: Spec, req: Requirements) -> float:
+    """Estimated CPU seconds of one robust evaluation of a design of ``spec``
+    (:func:`govopt.limits.evaluation_seconds`): the parts that run design by design where the
+    evaluator runs them (:func:`govopt.evaluator.core`)."""
+    from ..analysis import statics
+    from ..evaluator import overridden
+
+    gov = spec.governor
+    checks = gov.spring is not None and (overridden(gov, "spring_checks") or (
+        spec.material is not None and getattr(spec.material, "grade", None) is not None))
+    vibration = (_vibration(spec, req) or checks) and overridden(gov, "vibration")
+    friction = 0
+    if spec.engine is not None and spec.load_changes:
+        to = np.array([lc.alpha_to for lc in spec.load_changes])
+        friction = int(np.count_nonzero(np.asarray(gov.friction(to)) > 0))
+    return limits.evaluation_seconds(statics.configurations(spec).size, vibration=vibration,
+                                     spring_checks=checks, friction_runs=friction)
+
+
+def _dimensions_at_most(spec: Spec, req: Requirements) -> int:
+    """How many quantities a candidate's box tolerances at most (:func:`candidate_box`)."""
+    from ..analysis import spring_engineering as se
+    from ..springs import sheet
+
+    k = 0
+    if req.robust_spring_grade is not None and spec.governor.spring is not None:
+        k += 1 + (sheet.wire_standard(se.wire(spec.material)) is not None) + (
+            se.KINDS[spec.governor.spring] == "compression")
+    if req.robust_dashpot > 0:
+        k += 1
+    if req.robust_masses > 0:
+        k += 1 + bool(req.central_mass[1] > 0)
+    return k + (req.robust_torque_slope > 0)
+
+
+def work_errors(spec: Spec, req: Requirements):
+    """The robust design's work past govopt's limits before anything runs, as ``(key,
+    message)``, else None: the Monte-Carlo's samples alone beyond half of
+    :data:`govopt.limits.MAX_MONTE_CARLO_SECONDS` (the rest is the fitter's adjustment of the
+    samples that fail), or the first batch of candidates at their corners and one candidate's
+    edges (:func:`worst_case`) at every fitter's setting beyond
+    :data:`govopt.limits.MAX_ROBUST_SEARCH_SECONDS`."""
+    row = row_seconds(spec, req)
+    each = f"each evaluation ~{row * 1e3:.2g} ms here"
+    samples = int(limits.MAX_MONTE_CARLO_SECONDS / 2 / row)
+    if req.robust_samples > samples:
+        return ("requirements.robust_samples",
+                f"at most {samples} samples for this spec ({each}: govopt's limit of "
+                f"{limits.MAX_MONTE_CARLO_SECONDS / 2:g} s for the sample), got "
+                f"{req.robust_samples}")
+    k, settings = _dimensions_at_most(spec, req), nut_settings(req)[0].size
+    rows = (BATCHES[0] * 2**k + k * 2 ** max(k - 1, 0) * len(EDGE_POINTS) + 1) * settings
+    if rows * row > limits.MAX_ROBUST_SEARCH_SECONDS:
+        fitter = (f" at each of the fitter's {settings} settings (adjusting_nut, "
+                  "dashpot_valve)" if settings > 1 else "")
+        return ("requirements",
+                f"the tolerance box of {k} quantities ({2**k} corners){fitter} takes "
+                f"~{rows * row:.0f} s to check the first candidates ({each}), past govopt's "
+                f"limit of {limits.MAX_ROBUST_SEARCH_SECONDS:g} s: tolerance fewer quantities "
+                "(robust_*)" + (" or adjust fewer" if settings > 1 else ""))
+    return None
+
+
 def _evaluate(spec: Spec, req: Requirements, cols: dict, torque: np.ndarray):
     """Bulk evaluation of design columns, each row at its relative torque-slope change
-    ``torque`` (a few levels, one evaluation each): the frame, rows in order."""
+    ``torque`` (a few levels, one evaluation each): the frame, rows in order. The running
+    :class:`Work` (:func:`counting`) is charged first."""
     import pandas as pd
 
     from ..bulk import evaluate_many
 
-    vibration = req.max_vibration is not None or req.objective == "vibration" or (
-        spec.material is not None and spec.material.grade is not None)
+    limits.charge(len(torque) * row_seconds(spec, req), len(torque))
+    vibration = _vibration(spec, req)
     frames, index = [], []
     for level in np.unique(torque):
         sel = np.nonzero(torque == level)[0]
@@ -272,6 +357,9 @@ def supported(spec: Spec, req: Requirements) -> None:
         key = "dashpot_valve" if req.dashpot_valve > 0 else "robust_dashpot"
         raise InfeasibleError(f"{spec.path}: requirements.{key}: no dash-pot is designed "
                               "without [engine] and [[load_change]]: drop the key or add them")
+    too_much = work_errors(spec, req)
+    if too_much:  # counted before anything runs
+        raise InfeasibleError(f"{spec.path}: {too_much[0]}: {too_much[1]}")
 
 
 def _slices(order):
@@ -340,8 +428,38 @@ def robust_search(spec: Spec, req: Requirements):
     :class:`InfeasibleError` when none does."""
     stats = {"nominal_feasible_checked": 0, "corner_evaluations": 0,
              "inner_maximisations": 0, "rejected_inside_the_box": 0}
-    batches = spring_batches if spec.governor.spring is not None else dead_weight_batches
     failing: dict[tuple[str, str], int] = {}
+    work = Work(limits.MAX_ROBUST_SEARCH_SECONDS)
+    try:
+        with counting(work):
+            found = _search(spec, req, stats, failing)
+    except WorkLimit:
+        found = None
+        stats["stopped_at_the_work_limit"] = True
+    stats["evaluations"], stats["work_s"] = work.items, round(work.spent, 3)
+    if found is not None:
+        return found
+    worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
+    which = "; ".join(f"'{k}' fails {where} for {v}" for (k, where), v in worst) or (
+        "at some corner no setting of the fitter's makes every check hold at once"
+        if stats["corner_evaluations"] else "none is within the EN 15800 / EN 10270 tables")
+    stopped = stats.get("stopped_at_the_work_limit")
+    raise InfeasibleError(
+        f"{spec.path}: infeasible: requirements.robust_*: no candidate holds every check over "
+        f"its tolerance box ({stats['nominal_feasible_checked']} candidates feasible at nominal "
+        "values checked best first, "
+        + (f"stopped at govopt's limit of work (~{limits.MAX_ROBUST_SEARCH_SECONDS:g} s)"
+           if stopped else f"at most {MAX_CHECKED}")
+        + f": {which}); narrow the tolerances, "
+        + ("add requirements.adjusting_nut, " if spec.governor.spring is not None
+           and not stopped else "")
+        + "or widen the bounds (or the speed range)")
+
+
+def _search(spec: Spec, req: Requirements, stats: dict, failing: dict):
+    """:func:`robust_search`'s loop: the candidate found with its stats and worst case, else
+    None (``stats`` and ``failing`` filled in)."""
+    batches = spring_batches if spec.governor.spring is not None else dead_weight_batches
     for dcols, cands, visited in batches(spec, req):
         if stats["nominal_feasible_checked"] >= MAX_CHECKED:
             break
@@ -379,16 +497,7 @@ def robust_search(spec: Spec, req: Requirements):
                 continue
             stats["candidates_visited"] = visited[j]
             return cands[j], stats, wc
-    worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
-    which = "; ".join(f"'{k}' fails {where} for {v}" for (k, where), v in worst) or (
-        "at some corner no setting of the fitter's makes every check hold at once"
-        if stats["corner_evaluations"] else "none is within the EN 15800 / EN 10270 tables")
-    raise InfeasibleError(
-        f"{spec.path}: infeasible: requirements.robust_*: no candidate holds every check over "
-        f"its tolerance box ({stats['nominal_feasible_checked']} candidates feasible at nominal "
-        f"values checked best first, at most {MAX_CHECKED}: {which}); narrow the tolerances, "
-        + ("add requirements.adjusting_nut, " if spec.governor.spring is not None else "")
-        + "or widen the bounds (or the speed range)")
+    return None
 
 
 def failures(frame, n: int, n_corners: int, n_nut: int) -> dict:
@@ -416,9 +525,11 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     if box.torque > 0:
         levels = np.linspace(-box.torque, box.torque, TORQUE_LEVELS)
         torque = levels[rng.integers(0, TORQUE_LEVELS, n)]
-    frame = _evaluate(spec, req, rows, torque)
+    work = Work(limits.MAX_MONTE_CARLO_SECONDS)
+    with counting(work):  # the samples (within half the limit: work_errors)
+        frame = _evaluate(spec, req, rows, torque)
     ok = holds(frame)
-    adjusted = 0
+    adjusted, stopped = 0, 0
     nut, valve = (x[1:] for x in nut_settings(req))
     for part in [p for p in np.array_split(np.arange(nut.size), ADJUSTMENT_GROUPS) if p.size]:
         bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones, least change first
@@ -427,8 +538,13 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
         rep = {k: np.repeat(v[bad], part.size) for k, v in rows.items()}
         rep["free_half_length"] = rep["free_half_length"] + np.tile(nut[part], bad.size)
         rep["dashpot"] = rep["dashpot"] * np.tile(valve[part], bad.size)
-        fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], part.size))) \
-            .reshape(bad.size, part.size).any(axis=1)
+        try:
+            with counting(work):
+                fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], part.size))) \
+                    .reshape(bad.size, part.size).any(axis=1)
+        except WorkLimit:  # not tried at the other settings: they count as failing
+            stopped = int(bad.size)
+            break
         ok[bad] = fixed
         adjusted += int(fixed.sum())
     k = int(ok.sum())
@@ -436,10 +552,16 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     # the checks that fail in the sample before any adjustment (a failure inside a box whose
     # corners hold: the check is not monotone in a tolerance)
     failing = failures(frame.iloc[np.nonzero(~ok)[0]], int((~ok).sum()), 1, 1) if k < n else {}
-    return {"samples": n, "seed": req.robust_seed, "distribution": "uniform within the box",
-            "holds": k, "adjusted_by_the_fitter": adjusted, "probability": k / n,
-            "failing_checks": failing,
-            "ci95": [lo, hi]}
+    out = {"samples": n, "seed": req.robust_seed, "distribution": "uniform within the box",
+           "holds": k, "adjusted_by_the_fitter": adjusted, "probability": k / n,
+           "failing_checks": failing,
+           "ci95": [lo, hi], "evaluations": work.items, "work_s": round(work.spent, 3)}
+    if stopped:
+        out["note"] = (f"the fitter's adjustment stopped at govopt's limit of work (~"
+                       f"{limits.MAX_MONTE_CARLO_SECONDS:g} s): {stopped} failing samples were "
+                       "not tried at every setting and count as failing, so the probability is "
+                       "a lower bound (fewer robust_samples, or fewer fitter's settings)")
+    return out
 
 
 def robust_design(spec: Spec):
@@ -458,6 +580,9 @@ def robust_design(spec: Spec):
     res = dz.result_of(spec, req, cand, stats, None)
     record = robust_record(spec, req, cand, res.checks, wc)
     record["monte_carlo"] = monte_carlo(spec, req, design_of(spec, cand))
+    if record["monte_carlo"].get("note"):
+        res.optimisation["notes"] = [*res.optimisation.get("notes", []),
+                                     record["monte_carlo"]["note"]]
     t_robust = time.perf_counter() - t0
     unit = res.optimisation["objective"]["unit"]
     v_nom = nominal.optimisation["objective"][f"value_{unit}"]

@@ -87,6 +87,23 @@ def names_folder(path: str | Path) -> bool:
     return isinstance(path, str) and path.endswith(tuple(filter(None, (os.sep, os.altsep))))
 
 
+#: the installed package's own folder (its bundled specs and data): govopt writes nothing there
+PACKAGE = Path(__file__).resolve().parent.parent
+
+
+def refuse_package(path: str | Path, what: str) -> None:
+    """One line (:class:`GovoptError`) if ``path`` (a file or folder to write, through any
+    symbolic link) lies inside the installed package, whose bundled specs and data every run
+    reads: an ``-o ... --force`` there would replace a bundled spec for every later run. The
+    one rule for every output of every command (design specs, workbooks, plots, copies of
+    examples, benchmark reports, study databases and tables)."""
+    real = Path(os.path.realpath(path))
+    if real == PACKAGE or PACKAGE in real.parents:
+        raise GovoptError(f"{path}: cannot write {what} inside the installed govopt package "
+                          f"({PACKAGE}), whose bundled specs and data it reads; write it "
+                          "elsewhere (govopt init NAME copies a bundled spec to start from)")
+
+
 def _file_name(path: str | Path, what: str) -> Path:
     """``path`` as a file's path, refused (one line) if it names a folder."""
     if str(path) == "" or Path(path).name in ("", ".", ".."):
@@ -101,6 +118,7 @@ def output_folder(directory: str | Path, what: str) -> Path:
     """The folder ``directory`` for outputs, made if only its parent exists (as ``--plots``);
     one line if it is not a folder or cannot be made."""
     directory = Path(directory)
+    refuse_package(directory, what)
     if directory.is_dir():
         return directory
     if directory.exists() or directory.is_symlink():
@@ -146,6 +164,7 @@ def check_output(path: str | Path, *, overwrite: bool = False, inputs: Iterable 
         if same:
             raise GovoptError(f"{path}: cannot write {what}: it is the same file as {role} "
                               f"({other})")
+    refuse_package(path, what)
     if st is not None and not overwrite:
         raise GovoptError(f"{path}: {what} already exists; use {_OPTION.get()} to replace it")
     tmp = None
@@ -263,6 +282,7 @@ def atomic_write(path: str | Path, write: Callable[[Path], object], *,
     :class:`OSError` becomes a one-line :class:`GovoptError` naming ``path`` and ``what``.
     """
     shown = _file_name(path, what)
+    refuse_package(shown, what)
     overwrite = _OVERWRITE.get() if overwrite is None else overwrite
     target = Path(os.path.realpath(shown))
     directory = target.parent
@@ -337,6 +357,7 @@ def design_toml(res: Result, digits: int | None = None) -> str:
     values = _design_values(res, old, bounds)
     for key in [k for k in old if k not in values]:
         del table[key]
+    _analysis_as_run(doc, spec)
     for key, (dimension, target, scale) in values.items():
         if _close(_reads_as(old.get(key), dimension, scale), target):
             continue  # unchanged: as the engineer wrote it ("9.510 cm" stays)
@@ -352,6 +373,28 @@ def design_toml(res: Result, digits: int | None = None) -> str:
             # not 0.078740157480315 in
         table[key] = text
     return tomlkit.dumps(doc)
+
+
+def _analysis_as_run(doc, spec) -> None:
+    """Set the ``[analysis]`` keys of the document ``doc`` to the values the run read
+    (:attr:`Spec.data`: the file with the command's options, ``--speed-change range``), so
+    that the written spec reproduces the report."""
+    import tomlkit
+
+    ran = (spec.data or {}).get("analysis")
+    if not isinstance(ran, dict):
+        return
+    table = doc.get("analysis")
+    changed = {k: v for k, v in ran.items() if table is None or table.get(k) != v}
+    if not changed:
+        return
+    if table is None:
+        table = tomlkit.table()
+        doc.add(tomlkit.nl())
+        doc.add("analysis", table)
+    for key, value in changed.items():
+        table[key] = value
+        table[key].comment("as run by govopt design")
 
 
 def drawn_design(res: Result) -> tuple[str, Result, str]:
