@@ -140,6 +140,12 @@ class Reader:
             value = self.raw(name, need)
             return default if value is None else value
         if key.options() and isinstance(self.table.get(name), str):  # a number or a word
+            if self.table[name] not in key.options():
+                words = " or ".join(map(repr, key.options()))
+                self.fail(name, f"expected a number in {key.range_text}, got "
+                                f"{limits.shorten(self.table[name])}" if key.range_text else
+                          f"expected a number or {words}, got "
+                          f"{limits.shorten(self.table[name])}")
             return self.choice(name, key.options(), default)
         if kind in ("number", "count", "dimensionless"):
             return self.number(name, required=need, default=default, integer=kind == "count",

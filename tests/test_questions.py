@@ -104,7 +104,8 @@ def one_inner(spec: str) -> float:
 @pytest.mark.parametrize("args, message", [
     (["--speed-change", "2"], "error: --speed-change: must lie in (0, 1) (a fraction of the "
                               "speed, e.g. 0.01), or \"range\", got 2"),
-    (["--speed-change", "lift"], "error: --speed-change: expected a fraction"),
+    (["--speed-change", "lift"], "error: --speed-change: expected a number in (0, 1) (a "
+                                 "fraction of the speed, e.g. 0.01), or \"range\", got 'lift'"),
 ])
 def test_bad_speed_change_is_one_error_line(args, message):
     run = invoke(["evaluate", PORTER, *args])
