@@ -28,6 +28,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ..study.store import BATCH
+
 #: characters of the columns repeated on every page of the Table at most (the point and
 #: the inputs; the point alone beyond)
 TITLE_WIDTH = 40
@@ -352,7 +354,7 @@ def _columns(book, store) -> None:
 
 
 def write_workbook(store, path: str | Path, *, overwrite: bool | None = None,
-                   batch: int = 20_000, plots: bool = True) -> Path:
+                   batch: int = BATCH, plots: bool = True) -> Path:
     """Write the study's workbook (see the module's docstring) to ``path``, atomically;
     ``plots``: with the plots on the Summary sheet."""
     from openpyxl import Workbook

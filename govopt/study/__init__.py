@@ -14,25 +14,17 @@ The modules, one job each: :mod:`.definition` (what a study is, the values of it
 (the samplers and the tolerance model),
 :mod:`.keys` (study and point keys), :mod:`.rows` (points into typed rows), :mod:`.store`
 (the database), :mod:`.runner` and :mod:`.backends` (running it: this process, a process
-pool, Dask), :mod:`.shown` (the spec's units), :mod:`.summary` and :mod:`.export`.
+pool, Dask), :mod:`.shown` (the spec's units), :mod:`.pareto`, :mod:`.summary` and :mod:`.export`.
 """
 
 from .definition import Study, Sweep, load_study, read_study_file
 from .errors import StudyError
 from .export import export
+from .pareto import OBJECTIVES, feasible, objective_column, pareto_front, pareto_points
 from .rows import Column, Rows, run_chunk
 from .runner import RunReport, default_chunk, run_study
 from .store import FORMAT_VERSION, Store, check_database, is_study_database, remove_database
-from .summary import (
-    OBJECTIVES,
-    feasible,
-    objective_column,
-    outcome,
-    pareto_front,
-    pareto_points,
-    summary_text,
-    tolerance_summary,
-)
+from .summary import outcome, summary_text, tolerance_summary
 from .tolerances import Tolerance, grade_tolerances
 
 __all__ = ["FORMAT_VERSION", "OBJECTIVES", "Column", "Rows", "RunReport", "Store", "Study",

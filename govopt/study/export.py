@@ -18,6 +18,7 @@ import numpy as np
 import pandas as pd
 
 from .errors import StudyError
+from .store import BATCH
 from .summary import heading, pareto_points
 
 #: numbers in a CSV file: 12 significant digits (the database keeps every digit; a value
@@ -27,7 +28,7 @@ CSV_FLOAT = "%.12g"
 FORMATS = (".csv", ".parquet")
 
 
-def shown_batches(store, *, batch: int = 20_000, columns=None):
+def shown_batches(store, *, batch: int = BATCH, columns=None):
     """``(headings, batches)``: the table's columns headed with their units, and its batches
     in those units (a ``pareto`` column where the study names objectives)."""
     info = store.columns().set_index("name")
@@ -49,7 +50,7 @@ def shown_batches(store, *, batch: int = 20_000, columns=None):
     return out, batches()
 
 
-def export(store, path: str | Path, *, overwrite: bool = False, batch: int = 20_000) -> Path:
+def export(store, path: str | Path, *, overwrite: bool = False, batch: int = BATCH) -> Path:
     """Write the study's table as CSV or Parquet (by the file's extension), in the spec's
     units, atomically."""
     from ..report.files import atomic_write

@@ -462,6 +462,12 @@ def _runner(definition_text: str) -> _Runner:
     return _Runner(study_from_text(definition_text))
 
 
+def clear_caches() -> None:
+    """Forget the studies, specs and maps this process has parsed (a benchmark's cold run)."""
+    _runner.cache_clear()
+    study_from_text.cache_clear()
+
+
 def run_chunk(definition_text: str, points) -> Rows:
     """The rows of the points ``points`` (an array of their numbers) of the study
     ``definition_text`` (JSON of :meth:`Study.definition`). Runs in any process (the pool's

@@ -46,6 +46,9 @@ FORMAT_VERSION = 2
 APPLICATION_ID = 0x676F766F
 #: seconds a writer waits for another's transaction (a block's rows) before giving up
 BUSY_SECONDS = 30.0
+#: rows read at a time (a batch of ~70 columns holds ~15 MB of Python values while it is
+#: typed)
+BATCH = 5000
 #: the columns every ``points`` table has
 FIXED = ("point", "status", "message")
 
@@ -543,7 +546,7 @@ class Store:
         for name, values in zip(names, cols, strict=True):
             kind, role = types.get(name, ("TEXT", ""))
             if kind == "REAL":
-                out[name] = np.array([np.nan if v is None else v for v in values], dtype=float)
+                out[name] = np.array(values, dtype=float)  # NULL (None) as NaN
             elif role == "check passed":
                 out[name] = pd.array([None if v is None else bool(v) for v in values],
                                      dtype="boolean")
@@ -554,7 +557,7 @@ class Store:
                 out[name] = np.array(values, dtype=object)
         return pd.DataFrame(out, columns=names)
 
-    def batches(self, columns: Iterable[str] | None = None, *, batch: int = 20_000,
+    def batches(self, columns: Iterable[str] | None = None, *, batch: int = BATCH,
                 where: str = ""):
         """The rows in the study's order, ``batch`` at a time: frames of the columns of
         ``points`` (``columns``: only those that exist, with ``point``), each of its type. A
@@ -568,12 +571,12 @@ class Store:
         while records := cursor.fetchmany(batch):
             yield self._typed(records, want, types)
 
-    def table(self, columns: Iterable[str] | None = None, *, batch: int = 20_000
+    def table(self, columns: Iterable[str] | None = None, *, batch: int = BATCH
               ) -> pd.DataFrame:
         """Every row, in the study's order, with ``pareto`` marked where the study names
         objectives (``columns``: only those, and what the front needs). For a whole table; a
         large study is read by :meth:`batches`."""
-        from .summary import objectives, pareto_mark
+        from .pareto import objectives, pareto_mark
 
         study = self.study()
         if columns is not None:
