@@ -52,7 +52,8 @@ BATCH = 5000
 #: the columns every ``points`` table has
 FIXED = ("point", "status", "message")
 
-_SCHEMA = (
+#: the tables of a new database (docs/reference/study-database.md)
+SCHEMA = (
     "CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)",
     "CREATE TABLE columns (name TEXT PRIMARY KEY, position INTEGER NOT NULL UNIQUE, "
     "type TEXT NOT NULL, unit TEXT NOT NULL, role TEXT NOT NULL, label TEXT NOT NULL, "
@@ -271,7 +272,7 @@ class Store:
             "SELECT name FROM sqlite_master WHERE type = 'table'")}
 
     def _create(self) -> None:
-        for statement in _SCHEMA:
+        for statement in SCHEMA:
             self.conn.execute(statement)
         self.conn.executemany("INSERT INTO columns VALUES (?, ?, ?, ?, ?, ?, ?, '', 1.0)",
                               [(n, p, t, u, r, lab, about)
