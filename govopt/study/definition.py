@@ -347,6 +347,15 @@ class Study:
                for s in self.sweeps):
             return  # a proper range of numbers: no two points alike
         columns = [s.take(np.arange(len(s))) for s in self.sweeps]
+        if not any(s.text for s in self.sweeps):  # numbers: at once
+            table = np.column_stack(columns).astype(float)
+            _, first, counts = np.unique(table, axis=0, return_index=True, return_counts=True)
+            if counts.max() == 1:
+                return
+            again = np.nonzero(~np.isin(np.arange(len(table)), first))[0][0]
+            twin = int(np.nonzero((table == table[again]).all(axis=1))[0][0])
+            raise StudyError(f"points {twin} and {int(again)} are the same (each point is "
+                             "computed once)")
         rows = zip(*(c if isinstance(c, list) else c.tolist() for c in columns), strict=True)
         seen: dict[str, int] = {}
         for i, row in enumerate(rows):
