@@ -133,14 +133,21 @@ def constraints(least: dict[str, float]) -> list[str]:
     return sorted(chosen, key=lambda n: least[n])[:MAX_CONSTRAINTS]
 
 
+def _value(v, unit: str) -> str:
+    """An input's value as a legend names it: 4 significant digits and the unit."""
+    if isinstance(v, float | np.floating | int | np.integer) and not isinstance(v, bool):
+        return f"{float(v):.4g}" + (f" {unit}" if unit else "")
+    return str(v)
+
+
 def _groups(frame: pd.DataFrame, cols: _Columns, others: list[str]):
     """The series of a sweep plot: ``(name -> row positions, colour of each, legend or colour
     bar)``: one per combination of the ``others`` keys' values, in order."""
     if not others:
         return {"": np.arange(len(frame))}, {"": "C0"}, None
     names = [cols.inputs[k] for k in others]
-    keyed = frame[names].astype(str).agg(", ".join, axis=1) if len(names) > 1 else \
-        frame[names[0]].astype(str)
+    shown = pd.DataFrame({n: [_value(v, cols.unit.get(n, "")) for v in frame[n]] for n in names})
+    keyed = shown.agg(", ".join, axis=1) if len(names) > 1 else shown[names[0]]
     groups = {k: np.asarray(v) for k, v in keyed.groupby(keyed, sort=False).indices.items()}
     if len(groups) <= MAX_LEGEND:
         colours = {g: f"C{i}" for i, g in enumerate(groups)}
@@ -202,6 +209,12 @@ def _sweep_figure(frame: pd.DataFrame, cols: _Columns, key: str, keys: list[str]
                                                             strict=False)), 40)
 
     _series(axes[0], frame, groups, colours, y, x, ticks, few, named)
+    from matplotlib.lines import Line2D
+
+    axes[0].legend(handles=[Line2D([], [], ls="", marker="o", color="0.3", ms=4,
+                                   label="passes every check"),
+                            Line2D([], [], ls="", marker="o", mfc="none", color="0.3", ms=4,
+                                   label="fails a check")], loc="best", fontsize=7)
     axes[0].set_ylabel(_wrap(cols.label(obj.replace("_", " "), "objective_value"), 30))
     note = ("; labels: point numbers" if few else "") + (
         f"; one point in {every} drawn" if every > 1 else "")
