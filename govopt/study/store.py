@@ -233,8 +233,9 @@ class Store:
                                             isolation_level=None)
                 self.conn.execute("PRAGMA synchronous=NORMAL")
                 if not self._tables():
-                    with self._transaction():
-                        self._create()
+                    with self._transaction():  # another process may have made it meanwhile
+                        if not self._tables():
+                            self._create()
             else:
                 self._open_read_only()
         except sqlite3.Error as exc:
@@ -292,7 +293,8 @@ class Store:
         """Close; a writer folds the write-ahead journal back into the database (when no other
         process holds it) so that no ``-wal`` or ``-shm`` file is left."""
         if self.writable:
-            with contextlib.suppress(sqlite3.Error):
+            with contextlib.suppress(sqlite3.Error):  # not while another holds it: no wait
+                self.conn.execute("PRAGMA busy_timeout = 50")
                 self.conn.execute("PRAGMA journal_mode=DELETE")
         self.conn.close()
 
