@@ -56,7 +56,8 @@ MAX_SPRINGS = 1_000_000
 #: million, and the candidates that pass are kept)
 MAX_COMBINATIONS = 50_000_000
 #: points of a trade study (``govopt study run``: a sweep's NUM, a grid's product, samples):
-#: each is a row of ~0.7 kB in the study's database and a list entry in memory
+#: each is a row of ~0.4 kB in the study's database (the points themselves are made a block at
+#: a time, never held)
 MAX_STUDY_POINTS = 1_000_000
 #: characters of a value quoted in an error message
 SHOWN_CHARS = 80
