@@ -300,7 +300,7 @@ def bin_edges(lo: float, hi: float, bins: int = BINS) -> np.ndarray:
     tolerance study may be all equal, a few distinct values, or none.
 
     >>> bin_edges(2.0, 2.0).tolist(), bin_edges(0.0, 0.0).tolist()
-    ([1.998, 2.002], [-0.5, 0.5])
+    ([1.98, 2.02], [-0.5, 0.5])
     >>> bin_edges(0.0, 1.0, 4).tolist()
     [0.0, 0.25, 0.5, 0.75, 1.0]
     >>> bin_edges(1e6, 1e6 + 1e-9).size, bin_edges(np.inf, -np.inf).size
@@ -310,7 +310,7 @@ def bin_edges(lo: float, hi: float, bins: int = BINS) -> np.ndarray:
         return np.zeros(0)
     scale = max(abs(lo), abs(hi))
     if hi - lo <= 1e-9 * scale or hi == lo:
-        half = 0.5 if scale == 0 else max(0.5 * (hi - lo), 1e-3 * scale)
+        half = 0.5 if scale == 0 else max(0.5 * (hi - lo), 1e-2 * scale)  # a visible bar
         centre = 0.5 * (lo + hi)
         return np.array([centre - half, centre + half])
     return np.linspace(lo, hi, bins + 1)
