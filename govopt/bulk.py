@@ -51,12 +51,14 @@ def check_names(columns) -> list[str]:
 
 class RowFigure(NamedTuple):
     """A figure of a row: a short ``name`` (an identifier), its SI ``unit`` (``""``
-    dimensionless), what it is (``label``) and whether its values are words (``text``)."""
+    dimensionless), what it is (``label``), whether its values are words (``text``) and
+    whether it is one of the design's own numbers (``design``: what a drawing gives)."""
 
     name: str
     unit: str
     label: str
     text: bool = False
+    design: bool = False
 
 
 def row_figures(spec: Spec) -> dict[str, RowFigure]:
@@ -109,7 +111,9 @@ def row_figures(spec: Spec) -> dict[str, RowFigure]:
                   f"over-regulation: {lc.name}"),
                  (f"settling_time_s: {lc.name}", f"settling_time: {lc.name}", "s",
                   f"settling time: {lc.name}")]
-    return {key: RowFigure(*rest) for key, *rest in rows}
+    design = {f"{gov.mass_key}_mass_kg", "central_mass_kg", "wire_diameter_m", "coil_radius_m",
+              "active_turns", "stiffness_N_per_m", f"{free}_m", dashpot_column(gov)}
+    return {key: RowFigure(*rest, design=key in design) for key, *rest in rows}
 
 
 def _objective_name(spec: Spec) -> str:

@@ -203,7 +203,7 @@ def _database_names(store, spec) -> dict[str, str]:
     out = {"objective": "objective", "objective_value": "objective_value", "status": "status",
            "message": "message"}
     for key, name in figures.items():
-        out[key] = names.get(("figure", name), name)
+        out[key] = names.get(("figure", name)) or names.get(("design", name), name)
     for (role, label), name in names.items():
         if role.startswith("check "):
             out[f"{role.split()[1]}: {label}"] = name

@@ -31,8 +31,8 @@ from .definition import SKIPPABLE, Input, Study, study_from_text
 from .shown import Shown
 
 #: a column's role in a row
-ROLES = ("input", "figure", "check value", "check margin", "check passed", "objective",
-         "objective value")
+ROLES = ("input", "design", "figure", "check value", "check margin", "check passed",
+         "objective", "objective value")
 #: distinct values of a design key parsed one by one; more are mapped linearly (_Runner)
 EXACT_VALUES = 64
 #: spec variants (and linear maps) a process keeps parsed
@@ -232,7 +232,8 @@ class _Runner:
                     b.put(Column("figure", fig.name, "", "TEXT", fig.label), pos,
                           [None if x is None or x is pd.NA else str(x) for x in v])
                 else:
-                    b.put(Column("figure", fig.name, fig.unit, "REAL", fig.label,
+                    b.put(Column("design" if fig.design else "figure", fig.name, fig.unit,
+                                 "REAL", fig.label,
                                  *self.shown(fig.unit)), pos,
                           pd.to_numeric(v, errors="coerce").to_numpy(dtype=float))
 

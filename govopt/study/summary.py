@@ -222,8 +222,9 @@ def summary_text(store) -> str:
         return "\n".join(lines)
     lines.append("status: " + ", ".join(f"{k} {v}" for k, v in counts.items()))
     inputs = store.names("input")
-    if not tolerances:
-        lines += _best(store, inputs, units, info)
+    if not tolerances:  # a designed point: its design too
+        lines += _best(store, inputs + (store.names("design") if study.get("mode") == "design"
+                                        else []), units, info)
     if study.get("pareto"):
         front = pareto_points(store)
         lines.append(f"Pareto front ({', '.join(study['pareto'])}): {len(front)} point"
