@@ -14,7 +14,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
 from .errors import StudyError
@@ -101,10 +100,5 @@ def _parquet(tmp: Path, store, headings: list[str], batches) -> None:
 
     sch = schema(store, headings)
     with pq.ParquetWriter(tmp, sch) as writer:
-        for part in batches:
-            for c, f in zip(part.columns, sch, strict=True):
-                if pa.types.is_string(f.type):
-                    part[c] = [None if v is None or v is pd.NA or (isinstance(v, float) and
-                                                                   np.isnan(v)) else str(v)
-                               for v in part[c]]
+        for part in batches:  # texts are texts or None already (the database's TEXT)
             writer.write_table(pa.Table.from_pandas(part, schema=sch, preserve_index=False))
