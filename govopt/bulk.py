@@ -10,6 +10,7 @@ the same row. Studies (:mod:`govopt.study`) are tables of these rows.
 from __future__ import annotations
 
 import copy
+from typing import NamedTuple
 
 import numpy as np
 import pandas as pd
@@ -46,6 +47,73 @@ def passed_column(check: str) -> str:
 def check_names(columns) -> list[str]:
     """The checks present in a table's ``columns``, in order."""
     return [c[len("margin: "):] for c in columns if c.startswith("margin: ")]
+
+
+class RowFigure(NamedTuple):
+    """A figure of a row: a short ``name`` (an identifier), its SI ``unit`` (``""``
+    dimensionless), what it is (``label``), whether its values are words (``text``) and
+    whether it is one of the design's own numbers (``design``: what a drawing gives)."""
+
+    name: str
+    unit: str
+    label: str
+    text: bool = False
+    design: bool = False
+
+
+def row_figures(spec: Spec) -> dict[str, RowFigure]:
+    """Every figure a row of ``spec``'s designs may have (:func:`columns`), by its column: the
+    declaration the study's database, exports and plots read their units and names from."""
+    gov = spec.governor
+    angle = gov.coordinate == "angle"
+    x, damping, force = ("rad", "N*m*s/rad", "N*m") if angle else ("m", "N*s/m", "N")
+    effort = "N*m" if gov.travel == "angle" else "N"
+    free = gov.free_length_key
+    rows = [
+        (f"{gov.mass_key}_mass_kg", f"{gov.mass_key}_mass", "kg", f"{gov.mass_name} mass"),
+        ("central_mass_kg", "central_mass", "kg", "central mass"),
+        ("wire_diameter_m", "wire_diameter", "m", "wire diameter"),
+        ("coil_radius_m", "coil_radius", "m", "mean coil radius"),
+        ("active_turns", "active_turns", "", "active turns"),
+        ("stiffness_N_per_m", "stiffness", "N/m", "spring rate"),
+        (f"{free}_m", free, "m", free.replace("_", " ")),
+        (dashpot_column(gov), "dashpot", damping, "dash-pot coefficient"),
+        ("irregularity", "irregularity", "", "irregularity (speed range / mean speed)"),
+        ("omega_inner_rad_s", "omega_inner", "rad/s", "speed at the inner end"),
+        ("omega_outer_rad_s", "omega_outer", "rad/s", "speed at the outer end"),
+        ("omega_normal_rad_s", "omega_normal", "rad/s", "speed at the normal configuration"),
+        ("min_spring_force_N", "min_spring_force", "N", "least spring force"),
+        ("max_spring_force_N", "max_spring_force", "N", "largest spring force"),
+        ("max_stress_Pa", "max_stress", "Pa", "largest shear stress"),
+        ("spring_index", "spring_index", "", "spring index D/d"),
+        ("wahl_factor", "wahl_factor", "", "Wahl factor"),
+        ("surge_frequency_Hz", "surge_frequency", "Hz", "surge frequency"),
+        ("body_length_m", "body_length", "m", "close-wound body length"),
+        ("spring_mass_kg", "spring_mass", "kg", "spring mass"),
+        ("moving_mass_kg", "moving_mass", "kg", "moving mass (flying, central and spring)"),
+        ("k2_min_rad2_s2", "k2_min", "rad^2/s^2", "least k^2 over the range"),
+        ("k2_max_rad2_s2", "k2_max", "rad^2/s^2", "largest k^2 over the range"),
+        ("k2_normal_rad2_s2", "k2_normal", "rad^2/s^2", "k^2 at the normal configuration"),
+        ("settling_time_s", "settling_time", "s", "longest settling time"),
+        ("vibration_p2p_rad", "vibration_p2p", "rad", "forced vibration, peak to peak"),
+        ("range_rad_s", "speed_range", "rad/s", "range of speed"),
+        ("sensitiveness", "sensitiveness", "", "sensitiveness"),
+        ("stability", "stability", "", "stability", True),
+        ("effort", "effort", effort, "effort"),
+        ("power", "power", "J", "power"),
+        ("friction_band", "friction_band", force, "friction band"),
+        ("insensitiveness", "insensitiveness", "", "coefficient of insensitiveness"),
+    ]
+    for lc in spec.load_changes:
+        rows += [(f"hurwitz_margin: {lc.name}", f"hurwitz_margin: {lc.name}", "",
+                  f"Hurwitz margin: {lc.name}"),
+                 (f"over_regulation: {lc.name}", f"over_regulation: {lc.name}", x,
+                  f"over-regulation: {lc.name}"),
+                 (f"settling_time_s: {lc.name}", f"settling_time: {lc.name}", "s",
+                  f"settling time: {lc.name}")]
+    design = {f"{gov.mass_key}_mass_kg", "central_mass_kg", "wire_diameter_m", "coil_radius_m",
+              "active_turns", "stiffness_N_per_m", f"{free}_m", dashpot_column(gov)}
+    return {key: RowFigure(*rest, design=key in design) for key, *rest in rows}
 
 
 def _objective_name(spec: Spec) -> str:
@@ -152,18 +220,22 @@ def evaluate_many(spec: Spec, designs, *, dynamics: bool = True, vibration: bool
     than its coil) is a row with ``status = "error"`` and evaluate's own message, never an
     exception.
     """
+    return evaluate_rows(spec, designs, dynamics=dynamics, vibration=vibration,
+                         classic=classic, chunk=chunk)[0]
+
+
+def evaluate_rows(spec: Spec, designs, *, dynamics: bool = True, vibration: bool = True,
+                  classic: bool = True, chunk: int = CHUNK) -> tuple[pd.DataFrame, dict]:
+    """:func:`evaluate_many` and the SI unit of each of its checks (name -> unit)."""
     cols = design_arrays(spec, designs)
     n = len(cols["flying_mass"])
-    parts = [_block(spec, {k: v[s:s + chunk] for k, v in cols.items()}, dynamics, vibration,
-                    classic) for s in range(0, n, chunk)]
-    return pd.concat(parts, ignore_index=True) if parts else pd.DataFrame()
-
-
-def _block(spec: Spec, cols: dict, dynamics: bool, vibration: bool,
-           classic: bool) -> pd.DataFrame:
-    """One chunk of designs as rows (:func:`govopt.evaluator.core`)."""
-    return pd.DataFrame(columns(spec, core(spec, cols, dynamics=dynamics, vibration=vibration,
-                                           classic=classic)))
+    parts, units = [], {}
+    for s in range(0, n, chunk):
+        ev = core(spec, {k: v[s:s + chunk] for k, v in cols.items()}, dynamics=dynamics,
+                  vibration=vibration, classic=classic)
+        units.update(ev.table.units())
+        parts.append(pd.DataFrame(columns(spec, ev)))
+    return (pd.concat(parts, ignore_index=True) if parts else pd.DataFrame()), units
 
 
 def columns(spec: Spec, ev) -> dict:
@@ -198,4 +270,5 @@ def columns(spec: Spec, ev) -> dict:
     return out
 
 
-__all__ = ["DESIGN_FIELDS", "design_arrays", "evaluate_many", "result_row"]
+__all__ = ["DESIGN_FIELDS", "RowFigure", "design_arrays", "evaluate_many", "evaluate_rows",
+           "result_row", "row_figures"]

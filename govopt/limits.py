@@ -62,7 +62,8 @@ MAX_SPRINGS = 1_000_000
 #: million, and the candidates that pass are kept)
 MAX_COMBINATIONS = 50_000_000
 #: points of a trade study (``govopt study run``: a sweep's NUM, a grid's product, samples):
-#: each is a row of ~0.7 kB in the study's database and a list entry in memory
+#: each is a row of ~0.4 kB in the study's database (the points themselves are made a block at
+#: a time, never held)
 MAX_STUDY_POINTS = 1_000_000
 #: ``requirements.robust_samples``: the Monte-Carlo verification's samples (default 2000):
 #: its 95 % interval is then +-0.2 % at a probability near 1, +-0.6 % at 100 000; each sample

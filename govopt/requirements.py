@@ -404,6 +404,10 @@ class CheckTable:
                              verdict=bool(p[i]) if given else None, group=group))
         return out
 
+    def units(self) -> dict[str, str]:
+        """Every row's SI unit (``""`` dimensionless), by name, in order."""
+        return {name: self._meta[name][1] for name in self.names}
+
     def columns(self) -> dict[str, Column]:
         """Every row's arrays (:class:`Column`), by name, in order."""
         return {name: self._cols[name] for name in self.names}

@@ -523,6 +523,10 @@ STUDY_OPTIONS = {
     "tolerance garbage": ("--tolerance", "design.pendulum_weight=lots"),
     "pareto of four": ("--pareto", "a,b,c,d"), "mode bogus": ("--mode", "bogus"),
     "skip bogus": ("--skip", "bogus"), "two samplers": ("--lhs", "3", "--sobol", "4"),
+    "seed -1": ("--sweep", "design.pendulum_weight=6 kgf:12 kgf", "--lhs", "3", "--seed", "-1"),
+    "samples 0": ("--tolerance", "design.pendulum_weight=±1%", "--samples", "0"),
+    "a key swept twice": ("--sweep", "design.pendulum_weight=6 kgf", "--sweep",
+                          "design.pendulum_weight=7 kgf"),
 }
 
 
@@ -585,6 +589,17 @@ def _damaged_db(spec: Path) -> None:
         fh.write(bytes(range(256)) * 64)
 
 
+def _truncated_db(spec: Path) -> None:
+    """A govopt study database cut to half its length."""
+    from govopt.study import Store
+
+    _clean(_db(spec))
+    with Store(_db(spec)) as store:
+        store.set_meta({"study": {"name": "x", "pad": "x" * 40_000}, "digest": "x"})
+    with open(_db(spec), "r+b") as fh:
+        fh.truncate(fh.seek(0, 2) // 2)
+
+
 def _empty_file(spec: Path) -> None:
     _clean(_db(spec))
     _db(spec).touch()
@@ -614,6 +629,9 @@ OUTPUT_CASES = (
     ("study/show damaged", "study", ("study", "show", "{db}"), _damaged_db),
     ("study/export damaged", "study", ("study", "export", "{db}", "--out", "{db}.csv"),
      _damaged_db),
+    ("study/show truncated", "study", ("study", "show", "{db}"), _truncated_db),
+    ("study/--db truncated, --resume", "study",
+     ("study", "run", "{spec}", "--db", "{db}", "--resume"), _truncated_db),
     ("study/show empty file", "study", ("study", "show", "{db}"), _empty_file),
     ("study/export empty file", "study", ("study", "export", "{db}", "--out", "{db}.csv"),
      _empty_file),

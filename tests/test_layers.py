@@ -59,8 +59,10 @@ KNOWN_UPWARD = KNOWN_CYCLE_EDGES | {
     # (conveniences for a notebook; no writer imports the result's module back)
     ("govopt.result", "govopt.report.plots"),
     ("govopt.result", "govopt.report.text"),
-    # a study writes its files atomically with the writers' helper
-    ("govopt.study", "govopt.report.files"),
+    # a study checks its database's name and writes its exports atomically with the writers'
+    # helpers
+    ("govopt.study.store", "govopt.report.files"),
+    ("govopt.study.export", "govopt.report.files"),
 }
 
 

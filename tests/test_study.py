@@ -13,7 +13,7 @@ import pandas as pd
 import pytest
 
 from govopt import evaluate, load_spec
-from govopt.bulk import margin_column, passed_column, result_row
+from govopt.bulk import result_row, row_figures
 from govopt.stats import wilson
 from govopt.study import (
     Store,
@@ -28,6 +28,7 @@ from govopt.study import (
     summary_text,
     tolerance_summary,
 )
+from govopt.study.summary import check_columns
 
 SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
 STUDY = SPECS / "studies" / "hamabe-study.toml"
@@ -48,20 +49,31 @@ def _same(a, b) -> bool:
 # sweeps and points
 
 
+def _written(sweep: Sweep) -> list:
+    """A sweep's values as the spec file writes them."""
+    return [sweep.toml(v) for v in sweep.take(np.arange(len(sweep)))]
+
+
 def test_sweep_forms():
+    """Values are kept as numbers in the unit written (a list of texts only where they are not
+    numbers in one unit), and written back for the parser as the file writes them."""
     r = Sweep.parse("design.pendulum_weight", "6 kgf:12 kgf:4")
-    assert r.values == ("6 kgf", "8 kgf", "10 kgf", "12 kgf")
+    assert (r.unit, r.num, list(r.take(np.arange(4)))) == ("kgf", 4, [6.0, 8.0, 10.0, 12.0])
+    assert _written(r) == ["6 kgf", "8 kgf", "10 kgf", "12 kgf"]
     mixed = Sweep.parse("design.wire_diameter", "1 cm:20 mm:3")  # STOP in START's unit
-    assert mixed.values == ("1 cm", "1.5 cm", "2 cm")
-    assert Sweep.parse("speed.irregularity", "0.08:0.12:3").values == (0.08, 0.1, 0.12)
-    assert Sweep.parse("design.active_turns", "6:10:3").values == (6, 8, 10)
-    assert Sweep.parse("design.pendulum_weight", "12,10,8 kgf").values == (
-        "12 kgf", "10 kgf", "8 kgf")
+    assert _written(mixed) == ["1 cm", "1.5 cm", "2 cm"]
+    assert _written(Sweep.parse("speed.irregularity", "0.08:0.12:3")) == [0.08, 0.1, 0.12]
+    turns = Sweep.parse("design.active_turns", "6:10:3")
+    assert turns.integer and _written(turns) == [6, 8, 10]
+    listed = Sweep.parse("design.pendulum_weight", "12,10,8 kgf")
+    assert (listed.values, listed.unit, listed.text) == ((12.0, 10.0, 8.0), "kgf", False)
     assert Sweep.parse("analysis.geometry", "exact,series").values == ("exact", "series")
-    assert Sweep.parse("k", {"start": "1 cm", "stop": "2 cm", "num": 2}).values == (
-        "1 cm", "2 cm")
-    assert Sweep.parse("k", "1 cm:2 cm").values == ()  # a range for the samplers
-    for bad in ("1 cm:2 kg:3", "1:2:0", "1:2:x", "1,,2", "1:2:3:4"):
+    assert Sweep.parse("analysis.geometry", "exact,series").text
+    assert Sweep.parse("k", "1 cm, 2 kg").text  # not one unit: each read by the parser
+    assert _written(Sweep.parse("k", {"start": "1 cm", "stop": "2 cm", "num": 2})) == [
+        "1 cm", "2 cm"]
+    assert len(Sweep.parse("k", "1 cm:2 cm")) == 0  # a range for the samplers
+    for bad in ("1 cm:2 kg:3", "1:2:0", "1:2:x", "1,,2", "1:2:3:4", "nan:1:3"):
         with pytest.raises(StudyError):
             Sweep.parse("k", bad)
 
@@ -118,6 +130,8 @@ def test_bad_points_are_rows_not_crashes(tmp_path):
         t = store.table()
     assert list(t["point"]) == [0, 1, 2, 3, 4]
     assert list(t["status"]) == ["pass", "error", "error", "pass", "error"]
+    # the inputs as written, in the row of a point the parser refused too
+    assert list(t["design_free_length"]) == ["15.41 cm", "-1 cm", "2 kg", "15.5 cm", "8 cm"]
     assert "design.free_length" in t["message"][1] and "positive" in t["message"][1]
     assert "length" in t["message"][2]
     assert "no equilibrium speed at ball radius = 0.075 m" in t["message"][4]
@@ -164,17 +178,36 @@ def test_example1_study_reproduces_evaluate(tmp_path):
     run_study(study, tmp_path / "h.db")
     with Store(tmp_path / "h.db") as store:
         table = store.table()
+        names = _database_names(store, load_spec(SPECS / "hamabe-a.toml"))
     for i, case in enumerate(["a", "b", "c", "d", "d-prime"]):
         ref = result_row(evaluate(load_spec(SPECS / f"hamabe-{case}.toml")))
         row = table.iloc[i].to_dict()
-        wrong = {k: (v, row.get(k)) for k, v in ref.items() if not _same(v, row.get(k))}
+        wrong = {k: (v, row.get(names[k])) for k, v in ref.items()
+                 if not _same(v, row.get(names[k]))}
         assert not wrong, (case, wrong)
-    # inputs as written and in SI: 12 kgf = 117.68 N
-    assert table["design.pendulum_weight [N]"][0] == pytest.approx(12 * 9.80665, rel=1e-15)
+    # inputs as written (12 kgf); the flying mass in SI (12 kg)
+    assert table["design_pendulum_weight"][0] == 12.0
+    assert table["pendulum_mass"][0] == pytest.approx(12.0, rel=1e-15)
     # the spring stiffnesses of the paper's table (kgf/cm from d, r, n): 64.2, 50.4, 38.9,
     # 21.95, 29.3 (model doc, Example 1)
     paper = np.array([64.2, 50.4, 38.9, 21.95, 29.3]) * 9.80665 / 0.01
-    assert np.allclose(table["stiffness_N_per_m"], paper, rtol=0.003)
+    assert np.allclose(table["stiffness"], paper, rtol=0.003)
+
+
+def _database_names(store, spec) -> dict[str, str]:
+    """Each column of a bulk row (:func:`govopt.bulk.result_row`) -> its column in the
+    study's database (the declared figure's name; a check's value, margin and verdict)."""
+    figures = {k: f.name for k, f in row_figures(spec).items()}
+    names = {(r, label): n for n, r, label in store.conn.execute(
+        "SELECT name, role, label FROM columns")}
+    out = {"objective": "objective", "objective_value": "objective_value", "status": "status",
+           "message": "message"}
+    for key, name in figures.items():
+        out[key] = names.get(("figure", name)) or names.get(("design", name), name)
+    for (role, label), name in names.items():
+        if role.startswith("check "):
+            out[f"{role.split()[1]}: {label}"] = name
+    return out
 
 
 # ---------------------------------------------------------------------------------------------
@@ -291,7 +324,10 @@ def test_dask_and_process_pool_give_the_same_table(tmp_path):
     res = design(load_spec(spec))  # point 1 is the spec's own 190-224 rpm
     value = res.optimisation["objective"]["value_kg"]
     assert ta["objective_value"][1] == value
-    assert ta["moving_mass_kg"][1] == pytest.approx(value, rel=1e-12)
+    assert ta["moving_mass"][1] == pytest.approx(value, rel=1e-12)
+    with Store(tmp_path / "pool.db", create=False) as store:
+        units = store.columns().set_index("name")
+    assert units.at["objective_value", "unit"] == "kg"
 
 
 # ---------------------------------------------------------------------------------------------
@@ -340,16 +376,19 @@ def test_tolerance_study(tmp_path):
     with Store(tmp_path / "t.db") as store:
         table = store.table()
         text = summary_text(store)
-    k = table["stiffness_N_per_m"].to_numpy()
+        checks = {k: c["passed"] for k, c in check_columns(store).items()}
+        units = store.columns().set_index("name")
+    k = table["stiffness"].to_numpy()
     assert np.std(k) / np.mean(k) == pytest.approx(4 / 300, rel=0.1)
-    d = table["design.wire_diameter [m]"].to_numpy()
+    d = table["design_wire_diameter"].to_numpy()  # drawn in SI, read in the spec's cm
     assert np.mean(d) == pytest.approx(0.015, rel=1e-3)
-    s = tolerance_summary(table)
+    assert (units.at["design_wire_diameter", "unit"],
+            units.at["design_wire_diameter", "shown_unit"]) == ("m", "cm")
+    s = tolerance_summary(table, checks)
     shear = s["checks"]["shear stress"]
-    p = float((table[passed_column("shear stress")] == True).mean())  # noqa: E712
+    p = float(table[checks["shear stress"]].fillna(False).mean())
     assert shear["probability"] == p and shear["ci95"][0] <= p <= shear["ci95"][1]
-    assert 0 < s["spread"]["omega_inner_rad_s"]["std"] < 0.05 * s["spread"][
-        "omega_inner_rad_s"]["mean"]
+    assert 0 < s["spread"]["omega_inner"]["std"] < 0.05 * s["spread"]["omega_inner"]["mean"]
     assert "tolerance study, 400 samples" in text
     with pytest.raises(StudyError, match="±X%"):
         Tolerance.parse("k", "1%")
@@ -358,23 +397,42 @@ def test_tolerance_study(tmp_path):
 
 
 def test_exports_and_no_clobber(tmp_path):
+    """CSV and Parquet in the spec's units with the unit in each heading (speeds in rpm,
+    lengths in cm, forces in kgf: Hamabe's), the workbook's Data sheet the database's own
+    columns; an existing file is replaced only when asked."""
+    from govopt.report.study_workbook import write_workbook
+
     study = load_study(STUDY)
     run_study(study, tmp_path / "h.db")
     with Store(tmp_path / "h.db") as store:
         table = store.table()
-        for name in ("t.csv", "t.parquet", "t.xlsx"):
+        for name in ("t.csv", "t.parquet"):
             export(store, tmp_path / name)
+        write_workbook(store, tmp_path / "t.xlsx", plots=False)
         with pytest.raises(Exception, match="already exists"):
             export(store, tmp_path / "t.csv")
         export(store, tmp_path / "t.csv", overwrite=True)
     csv = pd.read_csv(tmp_path / "t.csv")
     parquet = pd.read_parquet(tmp_path / "t.parquet")
-    xlsx = pd.read_excel(tmp_path / "t.xlsx")
-    col = margin_column("irregularity")
-    for other in (csv, parquet, xlsx):
-        assert list(other.columns) == list(table.columns)
-        assert np.allclose(other[col], table[col], rtol=1e-15)
-    assert list(parquet["pareto"]) == list(table["pareto"])
+    data = pd.read_excel(tmp_path / "t.xlsx", sheet_name="Data")
+    assert list(data.columns) == [c for c in table.columns if c != "pareto"]
+    for other in (csv, parquet, data):
+        assert np.allclose(other["margin_irregularity"], table["margin_irregularity"],
+                           rtol=1e-11)
+    for other in (csv, parquet):
+        assert "omega_inner [rpm]" in other and "omega_inner_rad_s" not in other
+        assert np.allclose(other["omega_inner [rpm]"], table["omega_inner"] * 30 / math.pi,
+                           rtol=1e-11)
+        assert np.allclose(other["free_half_length [cm]"], table["free_half_length"] * 100,
+                           rtol=1e-11)
+        assert np.allclose(other["max_spring_force [kgf]"],
+                           table["max_spring_force"] / 9.80665, rtol=1e-11)
+        assert list(other["design_pendulum_weight [kgf]"]) == [12, 10, 8, 6, 6]
+        assert list(other["pareto"]) == list(table["pareto"])
+    import pyarrow.parquet as pq
+
+    field = pq.read_schema(tmp_path / "t.parquet").field("omega_inner [rpm]")
+    assert field.metadata[b"si_unit"] == b"rad/s" and field.metadata[b"unit"] == b"rpm"
 
 
 def test_cli_study_show_export(tmp_path, monkeypatch):
@@ -471,11 +529,13 @@ def test_tolerance_plot_marks_the_limit_and_failing_samples(tmp_path):
         frame = store.table()
         plot_study(store, tmp_path / "plots", formats=("svg",))  # read below
     spec = load_spec(SPECS / "hamabe-c.toml")
-    assert check_limit(frame, "irregularity") == pytest.approx(spec.speed.irregularity, rel=1e-9)
+    assert check_limit(frame, "value_irregularity", "margin_irregularity") == pytest.approx(
+        spec.speed.irregularity, rel=1e-9)
     svg = (tmp_path / "plots" / "tolerance.svg").read_text()
     assert f"required &lt;= {spec.speed.irregularity:.4g}" in svg
-    assert (pd.to_numeric(frame[margin_column("irregularity")]) < 0).any()  # some fail
+    assert (frame["margin_irregularity"] < 0).any()  # some fail
     assert "fill: #d62728" in svg  # their bars red (C3), beside the passing ones' green
+    assert "speed at the inner end [rpm]" in svg  # in the spec's unit
 
 
 def _inner_speed_spread(spec, folder, samples):
@@ -487,17 +547,16 @@ def _inner_speed_spread(spec, folder, samples):
         text = summary_text(store)
         frame = store.table()
     line = next(x for x in text.splitlines() if x.strip().startswith("omega_inner")).strip()
-    return (text, line, float(line.split("mean ")[1].split(",")[0]),
-            pd.to_numeric(frame["omega_inner_rad_s"]).mean())
+    return (text, line, float(line.split("mean ")[1].split()[0]), frame["omega_inner"].mean())
 
 
 def test_study_show_gives_speeds_in_rpm_and_inputs_as_drawn(tmp_path):
     """`govopt study show`: the tolerance spread of the speeds in rpm (the spec's and the
-    plot's unit), not rad/s; the best point's inputs to 4 significant digits."""
+    plot's unit), not rad/s, every number of the line with its unit."""
     text, line, mean, stored = _inner_speed_spread(SPECS / "hamabe-c.toml", tmp_path, 20)
-    assert line.startswith("omega_inner_rpm")
+    assert line.startswith("omega_inner: mean ") and line.count(" rpm") == 3, line
     assert mean == pytest.approx(stored * 30 / math.pi, rel=1e-5)
-    assert "rad_s" not in text.split("tolerance study", 1)[1].split("irregularity: mean")[0]
+    assert "rad/s" not in text.split("tolerance study", 1)[1]
 
 
 def test_study_show_gives_speeds_in_the_specs_own_unit(tmp_path):
@@ -511,7 +570,7 @@ def test_study_show_gives_speeds_in_the_specs_own_unit(tmp_path):
     assert new != speed
     spec.write_text(text.replace(speed, new), encoding="utf-8")
     _, line, value, stored = _inner_speed_spread(spec, tmp_path, 8)
-    assert line.startswith("omega_inner_rad/s")
+    assert line.startswith("omega_inner: mean ") and line.count(" rad/s") == 3, line
     assert value == pytest.approx(stored, rel=1e-5)
 
 
@@ -648,26 +707,26 @@ def test_sweep_and_tolerance_errors_name_the_key_and_spec(tmp_path):
     with pytest.raises(StudyError, match=r"^.*hartnell.toml: study: sweep design.ball_weight: "
                                          r"cannot read '9\*\*9\*\*9 kgf'"):
         load_study(HARTNELL, sweeps=["design.ball_weight=9**9**9 kgf:3 kgf:3"])
-    study = load_study(HARTNELL, tolerances=["design.bogus=+-1%"], samples=4)
     with pytest.raises(StudyError, match=r"hartnell.toml: study: tolerance design.bogus: the "
                                          "spec has no numeric value there"):
-        run_study(study, tmp_path / "t.db")
+        load_study(HARTNELL, tolerances=["design.bogus=+-1%"], samples=4)
     assert not (tmp_path / "t.db").exists()
 
 
-def test_a_point_repeated_in_a_grid_is_computed_once(tmp_path, monkeypatch):
-    """A grid of lists holding a value twice repeats points; each is one row (the first
-    occurrence, INSERT OR IGNORE), so the repeats are skipped, not computed and thrown away."""
-    import govopt.study as st
-
-    computed = []
-    run_chunk = st.run_chunk
-    monkeypatch.setattr(st, "run_chunk", lambda text, items, spans=None: (
-        computed.extend(i for i, _, _ in items), run_chunk(text, items, spans))[1])
-    study = load_study(SPECS / "hamabe-a.toml", sweeps=[
-        "design.pendulum_weight=12 kgf,10 kgf,12 kgf", "speed.irregularity=0.12,0.12"])
-    report = run_study(study, tmp_path / "g.db")
-    assert (report.total, report.done, report.skipped) == (6, 2, 4)
-    with Store(tmp_path / "g.db") as store:
-        t = store.table()
-    assert computed == list(t["point"]) == [0, 2]
+def test_a_point_is_never_held_twice(tmp_path):
+    """A grid whose list holds a value twice, a zip whose values repeat in step and a key swept
+    twice are refused when the study is defined (one line naming the sweep): each point of a
+    study is one row, its number the database's key."""
+    spec = SPECS / "hamabe-a.toml"
+    with pytest.raises(StudyError, match=r"sweep design.pendulum_weight: '12 kgf' is listed "
+                                         "twice"):
+        load_study(spec, sweeps=["design.pendulum_weight=12 kgf,10 kgf,12 kgf",
+                                 "speed.irregularity=0.12,0.11"])
+    with pytest.raises(StudyError, match="points 0 and 2 are the same"):
+        load_study(spec, sweeps=["design.pendulum_weight=12 kgf,10 kgf,12 kgf",
+                                 "speed.irregularity=0.12,0.11,0.12"], combine="zip")
+    with pytest.raises(StudyError, match="--sweep: design.pendulum_weight is given twice"):
+        load_study(spec, sweeps=["design.pendulum_weight=12 kgf,10 kgf",
+                                 "design.pendulum_weight=8 kgf"])
+    # the same value in step with different others: two points
+    assert load_study(STUDY).count() == 5

@@ -15,8 +15,8 @@ STUDY_SHORT = ("Batch trade studies: sweep a spec's inputs, one row per point in
 STUDY_HELP = STUDY_SHORT + " `govopt study SPEC ...` is `govopt study run SPEC ...`."
 RUN_HELP = "Run a trade study: the spec at every point of the sweeps (or tolerance samples)."
 EXPORT_HELP = "Export a study's table from its database (CSV, Parquet or xlsx)."
-SHOW_HELP = ("Summarise a study: progress, status counts, best point, Pareto front, "
-             "tolerances.")
+SHOW_HELP = ("Summarise a study: progress, status counts, the best points in the spec's units, "
+             "Pareto front, tolerances.")
 
 app = typer.Typer(cls=common.Group, add_completion=False, help=STUDY_HELP, short_help=STUDY_SHORT,
                   invoke_without_command=True)
@@ -85,20 +85,25 @@ def study_run(
     """Run a trade study: the spec at every point of the sweeps (or tolerance samples)."""
     from ..report.files import check_output
     from ..study import load_study, outcome, run_study
+    from ..study.sampling import check_seed
 
     chosen = [name for name, on in (("grid", grid), ("zip", zip_), ("lhs", lhs is not None),
                                     ("sobol", sobol is not None)) if on]
     if len(chosen) > 1:
         fail(f"choose one of --grid, --zip, --lhs, --sobol (got {', '.join(chosen)})")
-    if workers < 1 or (chunk is not None and chunk < 1):
-        fail("--workers and --chunk must be at least 1")
+    for name, value in (("--lhs", lhs), ("--sobol", sobol), ("--samples", samples),
+                        ("--workers", workers), ("--chunk", chunk)):
+        if value is not None and value < 1:
+            fail(f"{name}: expected a whole number >= 1, got {value}")
+    if seed is not None:
+        check_seed(seed, "--seed")
     study = load_study(spec, sweeps=sweep or (), tolerances=tolerance or (),
                        combine=chosen[0] if chosen else None,
                        samples=lhs if lhs is not None else sobol if sobol is not None else samples,
                        seed=seed, mode=mode, skip=skip, pareto=pareto)
     db = Path(f"{spec.stem}.study.db") if db is None else db
     if out is not None:
-        check_output(out, overwrite=force, inputs=[spec, db], what="study table")
+        check_output(out, overwrite=force, inputs=[spec], databases=[db], what="study table")
     if plot is not None:
         from ..report.study_plots import check_plot_folder
 
@@ -110,26 +115,50 @@ def study_run(
     finally:
         if bar is not None:
             bar.close()
+    for note in report.notes:
+        echo(f"note: {note}", err=True)
     study_outputs(db, out, plot, force)
-    code, line = outcome(db, report)  # 0; 1 every point failed; 2 none ran; 130 interrupted
+    code, line = _outcome(db, report, outcome)
     if line:
         echo(line, err=True)
     if code:
         raise ChecksFailed if code == 1 else SystemExit(code)
 
 
+def _outcome(db, report, outcome):
+    """0; 1 every point failed; 2 none ran; 130 interrupted (:func:`govopt.study.outcome`)."""
+    from ..study import Store
+
+    with Store(db, create=False) as store:
+        return outcome(store, report)
+
+
 def study_outputs(db: Path, out: Path | None, plot: Path | None, force: bool) -> None:
-    from ..study import Store, export, summary_text
+    """The summary, and the table and plots where asked for."""
+    from ..study import Store, summary_text
 
     with Store(db, create=False) as store:
         echo(summary_text(store))
-        if out is not None:
-            echo(f"wrote {Path(export(store, out, overwrite=force)).absolute()}")
-        if plot is not None:
-            from ..report.study_plots import plot_study
+        write_outputs(store, out, plot, force)
 
-            for path in plot_study(store, plot, overwrite=force):
-                echo(f"wrote {Path(path).absolute()}")
+
+def write_outputs(store, out, plot, force: bool) -> None:
+    """The table (CSV, Parquet, or the workbook) and the plots of the study in ``store``."""
+    if out is not None:
+        if Path(out).suffix.lower() == ".xlsx":
+            from ..report.study_workbook import write_workbook
+
+            written = write_workbook(store, out, overwrite=force)
+        else:
+            from ..study import export
+
+            written = export(store, out, overwrite=force)
+        echo(f"wrote {Path(written).absolute()}")
+    if plot is not None:
+        from ..report.study_plots import plot_study
+
+        for path in plot_study(store, plot, overwrite=force):
+            echo(f"wrote {Path(path).absolute()}")
 
 
 def progress_bar():
@@ -180,26 +209,19 @@ def study_export(
         force: Annotated[bool, common.flag("--force", help=FORCE_HELP)] = False) -> None:
     """Export a study's table from its database (CSV, Parquet or xlsx)."""
     from ..report.files import check_output
-    from ..study import Store, export
+    from ..study import Store
 
-    check_output(out, overwrite=force, inputs=[db], what="study table")
+    check_output(out, overwrite=force, databases=[db], what="study table")
     with Store(db, create=False) as store:
-        echo(f"wrote {Path(export(store, out, overwrite=force)).absolute()}")
-        if plot is not None:
-            from ..report.study_plots import plot_study
-
-            for path in plot_study(store, plot, overwrite=force):
-                echo(f"wrote {Path(path).absolute()}")
+        write_outputs(store, out, plot, force)
 
 
 @app.command("show", cls=Command, help=SHOW_HELP, short_help=SHOW_HELP)
 @guarded
 def study_show(db: Annotated[Path, typer.Argument(metavar="db", show_default=False,
                                                   help="The study's database.")]) -> None:
-    """Summarise a study: progress, status counts, best point, Pareto front, tolerances."""
+    """Summarise a study: progress, status counts, best points, Pareto front, tolerances."""
     from ..study import Store, summary_text
 
     with Store(db, create=False) as store:
         echo(summary_text(store))
-
-

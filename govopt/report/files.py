@@ -135,11 +135,11 @@ def output_folder(directory: str | Path, what: str) -> Path:
 
 
 def check_output(path: str | Path, *, overwrite: bool = False, inputs: Iterable = (),
-                 others: Iterable = (), what: str = "output") -> Path:
+                 others: Iterable = (), databases: Iterable = (), what: str = "output") -> Path:
     """Check before a run that ``path`` can be written: a file name (not a folder's: ``x/``),
-    its folder exists, it is not the input (``inputs``) nor another output of the same run
-    (``others``), and it is absent or a regular file that ``overwrite`` allows to replace.
-    Raises :class:`GovoptError` with one line."""
+    its folder exists, it is not the input (``inputs``), a study's database (``databases``)
+    nor another output of the same run (``others``), and it is absent or a regular file that
+    ``overwrite`` allows to replace. Raises :class:`GovoptError` with one line."""
     path = _file_name(path, what)
     try:
         st = os.stat(path)
@@ -156,6 +156,7 @@ def check_output(path: str | Path, *, overwrite: bool = False, inputs: Iterable 
                           "(govopt only ever replaces regular files)")
     real = Path(os.path.realpath(path))
     for other, role in [(p, "the input spec") for p in inputs] + \
+                       [(p, "the study database") for p in databases] + \
                        [(p, "another output of this run") for p in others]:
         same = real == Path(os.path.realpath(other))
         if not same and st is not None:
