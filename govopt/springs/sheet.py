@@ -169,11 +169,8 @@ def _f(x) -> float:
 
 def wire_standard(mat: Material) -> str | None:
     """The wire standard whose diameter tolerances apply to the grade (EN 10270-1 or -2), or
-    None."""
-    for std in tol.WIRE_TOLERANCE:
-        if mat.grade.startswith(std):
-            return std
-    return None
+    None (:func:`govopt.springs.tolerances.wire_standard`)."""
+    return tol.wire_standard(mat.grade)
 
 
 def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "closed_ground",
@@ -194,9 +191,12 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
         kind="compression", grade=mat.grade, material_standard=mat.standard, d=_f(d), D=_f(D),
         n=_f(n), coils=_f(n_t), ends=ends.replace("_", " "), L0=_f(L0), R=R, F1=_f(F1),
         L1=_f(L0) - _f(F1) / R, F2=_f(F2), L2=_f(L0) - _f(F2) / R, tolerance_grade=grade,
-        surface=surface, mass=_f(hx.mass(d, D, n_t, mat.density)),
+        surface=surface,
+        mass=_f(hx.helix_mass(d, D, n, hx.pitch(L0, d, n, n_t, ends), _f(n_t) - _f(n),
+                              mat.density)),
         surge_frequency=_f(hx.surge_frequency(d, D, n, G, mat.density)),
-        solid_length=_f(hx.solid_length(d, n_t, ends)), tolerances=tols, notes=notes)
+        solid_length=_f(hx.solid_length(tol.max_wire_diameter(d, mat.grade), n_t, ends)),
+        tolerances=tols, notes=notes)
 
 
 def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,
@@ -218,6 +218,8 @@ def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,
         kind="extension", grade=mat.grade, material_standard=mat.standard, d=_f(d), D=_f(D),
         n=n, coils=_f(n_body), ends=hooks, L0=L0, R=R, F1=_f(F1), L1=L0 + (_f(F1) - F0) / R,
         F2=_f(F2), L2=L0 + (_f(F2) - F0) / R, tolerance_grade=grade, surface=surface, F0=_f(F0),
-        mass=_f(hx.mass(d, D, _f(n_body) + 2.0, mat.density)),
+        # the body's coils touching (pitch d), each loop a flat coil
+        mass=_f(hx.helix_mass(d, D, n_body, d, 0.0, mat.density) + hx.mass(d, D, 2.0,
+                                                                            mat.density)),
         surge_frequency=_f(hx.surge_frequency(d, D, n, G, mat.density)),
         tolerances=tols, notes=notes)
