@@ -232,10 +232,10 @@ COMPRESSION = (
         lambda kw: f"EN 13906-1, 9.14: buckling deflection s_K, seating {kw['seating']} "
                    f"(nu = {hx.SEATING[kw['seating']]})"),
     Row("free pitch > wire diameter", ">=", "m",
-        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"]),
+        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"], kw["d_max"]),
         lambda kw: kw["d"], "geometry: the free spring must have gaps between active coils"),
     Row(PITCH_MAX, "<=", "m",
-        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"]),
+        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"], kw["d_max"]),
         lambda kw: hx.max_pitch(kw["d"], kw["D"]),
         "Gutekunst Federn ('Spring pitch'): m <= 0.7 D_i, a helix angle atan(m / (pi D)) of at "
         "most 9.5-12.6 deg, where the rate G d^4 / (8 D^3 n) is within 1.5 % of the "

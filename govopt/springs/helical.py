@@ -213,13 +213,16 @@ def min_working_length(d, D, n, n_t, ends: str = "closed_ground", dynamic: bool 
             + sum_of_min_gaps(d, D, n, dynamic, hot))
 
 
-def pitch(L0, d, n, n_t, ends: str = "closed_ground"):
-    """Pitch of the active coils ``m = (L0 - L_c)/n + d`` (m): the free gap shared by n coils.
+def pitch(L0, d, n, n_t, ends: str = "closed_ground", d_max=None):
+    """Pitch of the active coils ``m = (L0 - L_c)/n + d = s_c/n + d`` (m): the free gap shared
+    by n coils, with EN 13906-1's solid length ``L_c`` (:func:`solid_length` with the largest
+    wire diameter ``d_max``, default ``d``), as SpringONE's EN 13906-1 solver computes it
+    (``SpringLIB/src/EN13906.pas``: pitch ``S_c / n + d``, ``S_c = L0 - L_c``).
 
     Equals Shigley Table 10-1's ``(L0 - 3d)/N_a`` for squared ends and ``(L0 - 2d)/N_a`` for
-    squared and ground ends (with N_t = N_a + 2).
+    squared and ground ends (with N_t = N_a + 2 and ``d_max = d``).
     """
-    return (L0 - solid_length(d, n_t, ends)) / n + d
+    return (L0 - solid_length(d if d_max is None else d_max, n_t, ends)) / n + d
 
 
 def helix_angle(m, D):
@@ -299,11 +302,11 @@ def buckling_deflection(L0, D, G, E, nu):
     return np.where(radicand < 0.0, np.inf, sK)
 
 
-def diameter_increase(d, D, n, L0, n_t, ends: str = "closed_ground"):
+def diameter_increase(d, D, n, L0, n_t, ends: str = "closed_ground", d_max=None):
     """Increase of the outside diameter at solid length, ``Delta D_e`` (m), EN 13906-1:2013:
     ``0.1 (m^2 - 0.8 m d - 0.2 d^2)/D`` with the pitch ``m`` of :func:`pitch` (ends free to turn).
     """
-    m = pitch(L0, d, n, n_t, ends)
+    m = pitch(L0, d, n, n_t, ends, d_max)
     return 0.1 * (m**2 - 0.8 * m * d - 0.2 * np.asarray(d, dtype=float) ** 2) / D
 
 
