@@ -152,7 +152,6 @@ def catalogue_sizing(s: Sizing, wires: Sequence[float], step: float, limits: dic
             if math.isinf(b) and b > 0:
                 continue  # no spring at all with this wire
             enumerate_wire(w)
-    continuous = s.value
     if best is None:
         why = (f"no spring with a wire of the table ({len(table_wires)} sizes between "
                f"{lo * 1e3:.4g} and {hi * 1e3:.4g} mm; {source.split(':')[0]}) and coils on "
@@ -167,17 +166,17 @@ def catalogue_sizing(s: Sizing, wires: Sequence[float], step: float, limits: dic
                                for x in (sp.d, sp.D, sp.coils, sp.end_coils, sp.L0)),
                     sp.form, float(np.asarray(sp.F0)[i]) if np.ndim(sp.F0) else float(sp.F0))
     checks, _ = table(spring, s.mat, s.loads, s.rules)
-    out = Sizing(s.solution, s.kind, checks, notes=list(s.notes), mat=s.mat, loads=s.loads,
-                 rules=s.rules, objective=s.objective, cycles=s.cycles, spring=spring,
+    out = Sizing(s.solution, s.kind, checks, mat=s.mat, loads=s.loads, rules=s.rules,
+                 objective=s.objective, cycles=s.cycles, spring=spring,
                  method=(f"bounded enumeration of the wire table and the coils on the step "
                          f"{step:g}, each wire bounded by the continuous GP with that wire"),
                  search=stats)
     out.lower_bound = out.value  # exact by enumeration: the optimum is its own bound
     out.notes.append(f"wire sizes: {source}")
-    out.notes.append(
-        f"the continuous optimum (any wire, any coils: d = {s.spring.d * 1e3:.4g} mm, n = "
-        f"{s.spring.coils:.4g}) is {100 * (out.value / continuous - 1):.3g} % better in "
-        f"{s.objective} than this orderable spring" if s.objective != "mass per energy" else
-        f"the continuous optimum (any wire, any coils) stores "
-        f"{100 * (out.value / continuous - 1):.3g} % more energy per mass")
+    if math.isfinite(s.lower_bound):  # the price of ordering: against the certified bound
+        price = (out.value / s.lower_bound - 1 if s.objective != "mass per energy"
+                 else s.lower_bound / out.value - 1)
+        out.notes.append(f"a spring of any wire and coils cannot do better than the "
+                         f"continuous relaxation's certified bound; this orderable spring is "
+                         f"within {100 * price:.3g} % of it")
     return out

@@ -717,6 +717,13 @@ class SpringGP:
                                  allowable_exponent=self.allowable_exponent)
         sol.active = [k for k, q in ratios.items() if q >= 1.0 - 1e-6] + [
             k for k, c in self.named.items() if float(np.asarray(c.dual_value)) > 1e-6]
+        for name, c in self.named.items():  # lhs <= rhs, the limit in rhs: -dual
+            lam = float(np.asarray(c.dual_value))
+            if name == "inside diameter":  # (Di_min + d) / (2 r) <= 1: the limit in lhs
+                Di = float(self.free_length_params["Di_min"].value)
+                sol.sensitivities[name] = lam * Di / (Di + sol.d)
+            else:
+                sol.sensitivities[name] = -lam
 
     def _solver_certificate(self, raw, status) -> dict[str, Any]:
         cert: dict[str, Any] = {"solver": self.solver, "status": status,

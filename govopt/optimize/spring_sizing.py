@@ -485,7 +485,7 @@ def _buckling_search(attempt, sizing, stable):
                             "guide it (--seating) or allow a larger diameter")
         return sizing
     sol = sizing.solution
-    good, bad = 1.0, float(sizing.free_length / (2.0 * sol.r) / stable)
+    good, bad = 1.0, float(sizing.spring.L0 / (2.0 * sol.r) / stable)
     while bad / good > 1.001:  # one compiled GP: the allowable's fit is frozen meanwhile
         mid = math.sqrt(good * bad)
         trial, _ = attempt(factor, mid, refit=False)

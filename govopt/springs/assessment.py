@@ -290,7 +290,8 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
                                     source="EN 13906-1: S_a = n (0.0015 D^2/d + 0.1 d), x1.5 "
                                            "dynamic" if compression else ""),
         "least working length": Figure("least working length", Ln, "m", symbol="L_n"),
-        "deflection used": Figure("deflection used", used, "", symbol="s2/(L0 - L_c)",
+        "deflection used": Figure("deflection used", 100.0 * used, "%",
+                                  symbol="s2 / (L0 - L_c)",
                                   source="the deflection at L2 over the deflection to solid"),
         "energy to L2": Figure("energy to L2", energy_2, "J", symbol="W2",
                                source="the work from the free length to L2"),
@@ -304,7 +305,9 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
                                   .splitlines()[2].strip()),
         "buckling deflection": Figure("buckling deflection", sK, "m", symbol="s_K",
                                       source=f"EN 13906-1, 9.14, seating {rules.seating}"
-                                      if compression else ""),
+                                      if compression else "",
+                                      note="cannot buckle at any deflection" if math.isinf(sK)
+                                      else ""),
         "diameter increase at solid": Figure(
             "diameter increase at solid",
             _f(hx.diameter_increase(d, D, n, L0, spring.total_coils, spring.form, d_max))
@@ -328,7 +331,7 @@ def _fatigue(spring, mat, loads, rules, rows) -> tuple[dict[str, Figure], float 
     if loads.cycle is None:
         out = ft.cycle_figures(nan, nan, nan, nan)
         out["safety factor"] = Figure("safety factor", nan)
-        out["life"] = Figure("life", nan, "", note="no load cycle given")
+        out["life"] = Figure("life", nan, "cycles", note="no load cycle given")
         return out, None
     lo, hi = min(loads.cycle), max(loads.cycle)
     d, D = spring.d, spring.D
@@ -342,9 +345,10 @@ def _fatigue(spring, mat, loads, rules, rows) -> tuple[dict[str, Figure], float 
         life = _f(ft.finite_life(safety, Sse, Ssu, ck.DATA_CYCLES))
     out["safety factor"] = Figure("safety factor", safety, source=row.source if row else "")
     out["life"] = Figure(
-        "life", life, "", source="Basquin's line from 0.9 S_su at 1e3 cycles to the endurance "
-                                 "at the data's 1e7 (Shigley 9th ed. section 6-7)",
-        note="infinite: the cycle passes at the data's life" if math.isinf(life) else
+        "life", life, "cycles", source="Basquin's line from 0.9 S_su at 1e3 cycles to the "
+                                       "endurance at the data's 1e7 (Shigley 9th ed. "
+                                       "section 6-7)",
+        note="the cycle passes at the data's 1e7 cycles" if math.isinf(life) else
         "below 1e3 cycles: quasi-static, no S-N estimate" if math.isnan(life) else "")
     return out, life
 
