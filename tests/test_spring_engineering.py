@@ -345,10 +345,10 @@ def test_spring_command_with_a_grade():
                  "hook A fatigue safety factor", "body fatigue safety factor"):
         assert checks[name]["source"] and checks[name]["passed"]
     assert min(c["value"] for n, c in checks.items() if "fatigue" in n) >= 1.3
-    d = out["wire_diameter_m"]
+    d, D = out["spring"]["wire_diameter_m"], out["spring"]["mean_coil_diameter_m"]
     assert checks["body static shear stress"]["limit"] == pytest.approx(0.45 * rm_dh(d))
     assert checks["body static shear stress"]["value"] == pytest.approx(
-        8 * 1000 * 2 * out["coil_radius_m"] / (math.pi * d**3))
+        8 * 1000 * D / (math.pi * d**3))
 
 
 def test_spring_cli_governor_load_builds_and_exits_by_its_checks():
@@ -364,8 +364,8 @@ def test_spring_cli_governor_load_builds_and_exits_by_its_checks():
     out = invoke(base + ["--allowable-stress", "4000 kgf/cm^2", "--shear-modulus",
                          "850000 kgf/cm^2", "--json"])
     assert out.exit_code == 0, out.output
-    d = json.loads(out.stdout)
-    assert 4 - 1e-9 <= d["spring_index"] <= 12 + 1e-9 and d["active_turns"] >= 3 - 1e-9
+    d = json.loads(out.stdout)["spring"]
+    assert 4 - 1e-9 <= d["spring_index"] <= 12 + 1e-9 and d["active_coils"] >= 3 - 1e-9
     for kind in ("extension", "compression"):
         run = invoke(base + ["--material", "EN10270-1 DH", "--kind", kind, "--json"])
         assert run.exception is None and "Traceback" not in run.stderr, run.output

@@ -71,7 +71,11 @@ def _candidates(s: Sizing, w: float, step: float, limits: dict, ends: str, L2):
 
 def _feasible(s: Sizing, sp: Spring, n: np.ndarray, limits: dict) -> np.ndarray:
     """Where the springs ``sp`` (arrays) meet every row of the spring's table that the
-    material can give (:func:`govopt.springs.assessment.table`'s) and the problem's limits."""
+    material can give (:func:`govopt.springs.assessment.table`'s) and the problem's limits;
+    a row the continuous design ``s`` fails too is not required (it is reported, as the
+    continuous design's would be: an extension spring's initial tension without a least
+    force, say)."""
+    failed = {c.name for c in s.checks if not c.passed}
     from ..springs.assessment import _kw
 
     d, D = sp.d, sp.D
@@ -85,7 +89,7 @@ def _feasible(s: Sizing, sp: Spring, n: np.ndarray, limits: dict) -> np.ndarray:
                  if "fatigue" in name]
     senses = {r.name: r.sense for r in ck.TABLES[s.kind] + ck.COMMON}
     for name, v, lim in rows:
-        if np.all(np.isnan(lim)):  # a grade's row, no grade: not checked (as the table)
+        if np.all(np.isnan(lim)) or name in failed:  # a grade's row, no grade: not checked
             continue
         with np.errstate(invalid="ignore"):
             ok &= (v <= lim) if senses[name] == "<=" else (v >= lim)
@@ -173,6 +177,10 @@ def catalogue_sizing(s: Sizing, wires: Sequence[float], step: float, limits: dic
                  search=stats)
     out.lower_bound = out.value  # exact by enumeration: the optimum is its own bound
     out.notes.append(f"wire sizes: {source}")
+    unmet = [c.name for c in s.checks if not c.passed]
+    if unmet:
+        out.notes.append("the continuous design fails " + ", ".join(unmet) + " too: the wire "
+                         "table's springs were not required to pass it")
     if math.isfinite(s.lower_bound):  # the price of ordering: against the certified bound
         price = (out.value / s.lower_bound - 1 if s.objective != "mass per energy"
                  else s.lower_bound / out.value - 1)

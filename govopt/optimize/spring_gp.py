@@ -99,13 +99,13 @@ STIFFNESS_MODES = ("equality", "band")
 #: :meth:`SpringGP.solve` keywords of the free-length limit (``free_length=True``)
 FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "Di_min",
                     "L0_max", "Lc_max", "L2", "clear", "Ln_max", "L2_solid", "clear_solid",
-                    "pitch_on", "d_max_factor", "pitch_clear", "pitch_L2", "pitch_F")
+                    "pitch_on", "d_tol", "pitch_clear", "pitch_L2", "pitch_F")
 #: their values when not given: far outside any spring (the constraint never binds); ``L2``
 #: (an installed length at ``F_max``) tiny and ``clear`` 1 (the least free length); the solid
-#: length with the nominal wire (``d_max_factor`` 1); the helix's pitch that of the least free
-#: length (:meth:`SpringGP._pitch`)
+#: length with the nominal wire (``d_tol``, the wire's tolerance, tiny); the helix's pitch that
+#: of the least free length (:meth:`SpringGP._pitch`)
 _FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12, "L2": 1e-12, "clear": 1.0, "L2_solid": 1e-12,
-                         "clear_solid": 1.0, "pitch_on": 1e-12, "d_max_factor": 1.0,
+                         "clear_solid": 1.0, "pitch_on": 1e-12, "d_tol": 1e-12,
                          "pitch_clear": 1.0, "pitch_L2": 1e-12, "pitch_F": 1.0}
 
 
@@ -473,7 +473,7 @@ class SpringGP:
         end form with the largest wire diameter (EN 13906-1, as :meth:`_working_length`)."""
         if self.objective_name == "solid length":
             Q = self.free_length_params
-            return (self.n + Q["solid_coils"]) * Q["d_max_factor"] * self.d
+            return (self.n + Q["solid_coils"]) * (self.d + Q["d_tol"])
         return self._helix_objective()
 
     def _helix_objective(self):
@@ -550,9 +550,11 @@ class SpringGP:
                 + 64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4))
 
     def _working_length(self):
-        """The least working length ``L_n = L_c + S_a`` of :meth:`_least_free_length` (m)."""
+        """The least working length ``L_n = L_c + S_a`` of :meth:`_least_free_length` (m), the
+        solid length with the largest wire diameter ``d + d_tol`` (EN 13906-1; ``d_tol`` the
+        wire's tolerance, a constant over a row of the wire standard's table)."""
         d, r, n, Q = self.d, self.r, self.n, self.free_length_params
-        return ((n + Q["solid_coils"]) * Q["d_max_factor"] * d
+        return ((n + Q["solid_coils"]) * (d + Q["d_tol"])
                 + 1.5 * n * (0.006 * r**2 / d + 0.1 * d))
 
     def _envelope(self, kind: str) -> dict:
@@ -569,7 +571,7 @@ class SpringGP:
         out = {"inside diameter": (Q["Di_min"] + d) / (2.0 * r) <= 1.0}
         if kind == "compression":
             out["free length"] = self._least_free_length() <= Q["L0_max"]
-            out["solid length"] = (n + Q["solid_coils"]) * Q["d_max_factor"] * d <= Q["Lc_max"]
+            out["solid length"] = (n + Q["solid_coils"]) * (d + Q["d_tol"]) <= Q["Lc_max"]
             out["working length"] = self._working_length() <= Q["Ln_max"]
             # m = (L0 - L_c)/n + d = L0/n - solid_coils d/n <= L0/n: a restriction
             out["free pitch"] = (Q["pitch_on"] * (self._least_free_length() / n + 0.7 * d)

@@ -329,7 +329,8 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
             k, m = _monomial(mat, place, rules, k_s, *state["window"])
             m_c = None
             dc = math.sqrt(state["window"][0] * state["window"][1])
-            extra["d_max_factor"] = float(tl.max_wire_diameter(dc, grade)) / dc
+            # the wire's tolerance at the window's centre (the table's row the wire settles in)
+            extra["d_tol"] = max(float(tl.max_wire_diameter(dc, grade)) - dc, 1e-12)
             if kind == "compression":  # the stress at solid length, a constraint too
                 k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
                 extra.update(k_solid=k_c, s_over_D_max=stable)
@@ -367,12 +368,12 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
             out["k_solid"] = values["k_solid"] * _domination(mat, "solid", rules, None,
                                                              values["k_solid"], m_c, lo, hi)
         if set(space) & {"L0_max", "Lc_max", "L2"}:  # the solid length bounds these
-            out["d_max_factor"] = min(values["d_max_factor"], _least_tolerance(grade, lo, hi))
+            out["d_tol"] = min(values["d_tol"], _least_tolerance(grade, lo))
         return out
 
     def certified_bound(sizing) -> float:
         """The bound of the GP just solved (at the rule's own allowable), made valid for every
-        wire (:func:`relaxation`), the GP solved again where a value had to move (a step
+        wire (``relaxation``), the GP solved again where a value had to move (a step
         table's rows, an interpolated table's kinks); a concave rule's tangent already lies
         above."""
         gp, values, k, m, m_c = state["fit"]
@@ -392,7 +393,7 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
             gp = cached_gp(objective, correction, mode, m, Q, False, m_c, envelope, helix=True)
             keep = {key: x for key, x in values.items()
                     if key not in FREE_LENGTH_KEYS or key in ("k_solid", "s_over_D_max",
-                                                              "d_max_factor")}
+                                                              "d_tol")}
             sizing.relaxation = (gp, {**keep, **relaxed, **relaxation(values, k, m, m_c)})
         return sizing
 
@@ -405,7 +406,16 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
             loose.lower_bound = bound
             return finish(loose)
         state["window"] = (lo, hi)  # the design's GP fitted afresh, as without the relaxation
-    sizing, worst = attempt(1.0)
+        # the force at solid length bounded by F + R (L2 - lam), safe where L_c >= lam: from
+        # the relaxation's solid length (a design near it), else lam = 0 (every design)
+        lam = 0.99 * _solid_length(loose)
+        state["installed"] = {"L2_solid": L2 - lam}
+        sizing, worst = attempt(1.0)
+        if not sizing.solution.ok or _solid_length(sizing) < lam:
+            state["installed"], state["window"] = {}, (lo, hi)
+            sizing, worst = attempt(1.0)
+    else:
+        sizing, worst = attempt(1.0)
     if L2 is None:
         bound = certified_bound(sizing)  # the GP is a relaxation of the rows: a lower bound
     sizing = _stress_search(attempt, sizing, worst)
@@ -417,15 +427,17 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
     return finish(sizing)
 
 
-def _least_tolerance(grade, lo: float, hi: float) -> float:
-    """The least ``d_max / d`` of the grade's wires in ``[lo, hi]`` (m): at a tolerance row's
-    upper end or at ``hi`` (within a row the relative tolerance falls as ``d`` grows)."""
-    d = np.geomspace(lo, hi, 257)
-    std = tl.wire_standard(grade)
-    if std is not None:
-        up = tl.WIRE_TOLERANCE[std][0] * 1e-3
-        d = np.union1d(d, up[(up >= lo) & (up <= hi)])
-    return float(np.min(tl.max_wire_diameter(d, grade) / d))
+def _solid_length(sizing: Sizing) -> float:
+    """The drawn spring's solid length with the largest wire diameter (EN 13906-1), m."""
+    sp = sizing.spring
+    return float(hx.solid_length(tl.max_wire_diameter(sp.d, sizing.mat.grade), sp.total_coils,
+                                 sp.form))
+
+
+def _least_tolerance(grade, lo: float) -> float:
+    """The least wire tolerance of the grade's wires from ``lo`` (m) up: its tolerance table
+    rises with the diameter (EN 10270), so the least is the thinnest wire's."""
+    return max(float(tl.max_wire_diameter(lo, grade)) - lo, 1e-12)
 
 
 def _draw(sizing: Sizing, ends: str, L2: float | None) -> Sizing:
@@ -513,10 +525,7 @@ def _installed_search(attempt, sizing, state, L2, ends):
     design) always is. Bisection on ``lam = theta L_c`` of the design found keeps the lightest
     design whose solid length is at least its ``lam`` and that passes every check, to 0.1 %;
     the bound stays the relaxation's (:func:`size_spring`)."""
-    def solid(s):
-        sp = s.spring
-        return float(hx.solid_length(tl.max_wire_diameter(sp.d, s.mat.grade), sp.total_coils,
-                                     ends))
+    solid = _solid_length
 
     factor, best, notes = sizing.allowable_factor, sizing, list(sizing.notes)
     lo, hi = 0.0, 1.0

@@ -45,7 +45,7 @@ class Shown:
         """``(value, unit)`` in the shown unit (text and numbers other than floats as
         they are)."""
         unit, per = self.table.get(si, (si, 1.0))
-        if isinstance(value, bool) or not isinstance(value, int | float):
+        if value is None or isinstance(value, bool | str | tuple | list):
             return value, unit
         return value / per, unit
 

@@ -279,7 +279,7 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
         "grade": Figure("grade", mat.grade), "standard": Figure("standard", mat.standard),
         "shear modulus": Figure("shear modulus", G, "Pa", symbol="G"),
         "elastic modulus": Figure("elastic modulus", E, "Pa", symbol="E"),
-        "density": Figure("density", rho, "kg/m^3"),
+        "density": Figure("density", rho, "kg/m^3", json="density_kg_per_m3"),
         "tensile strength": Figure("tensile strength", Rm, "Pa", symbol="R_m"),
     }
     lengths = {
