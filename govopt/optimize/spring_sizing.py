@@ -276,32 +276,17 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
             raise ValueError(f"stiffness range {stiffness!r} .. {stiffness_max!r} is empty")
         mode, rate = "band", {"kappa_min": stiffness, "kappa_max": stiffness_max}
     loads = Loads(F_min, F_max, None if fatigue is None else (min(fatigue), max(fatigue)))
-    if grade is None:
-        correction = correction or "wahl"
+    if grade is None:  # the allowable and modulus given: a stand-in wire (no R_m)
         mat = mt.given(G, density)
-        rule = Rules(method=rules, allowable=k_s, correction=correction, peened=peened,
-                     seating=seating, index=(bounds.get("C_min", DEFAULT_BOUNDS["C_min"]),
-                                             bounds.get("C_max", DEFAULT_BOUNDS["C_max"])),
-                     fatigue_safety=min_fatigue_safety, cycles=cycles)
-        gp = cached_gp(objective, correction, mode, 0.0, end_coils(kind, mat, ends),
-                       envelope=envelope, helix=True)
-        values = dict(**rate, F_max=F_max, k_s=k_s, G=G, density=density, **bounds)
-        sol = gp.solve(certify=True, **values, **space)
-        why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
-            gp, **values, **space)
-        bound = _bound(sol)
-        if sol.ok and L2 is not None:  # the design's pitch restricts: the relaxation bounds
-            bound = _bound(gp.solve(**values, **relaxed))
-        out = Sizing(sol, kind, lower_bound=bound, diagnosis=why, mat=mat, loads=loads,
-                     rules=rule, objective=objective, cycles=cycles,
-                     relaxation=(gp, {**values, **relaxed}))
-        return _draw(out, ends, L2)
-    mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
-    if not isinstance(mat.G, float):
-        raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire diameter "
-                         f"({mat.moduli_source}): give it")
-    correction = correction or hx.DEFAULT_CORRECTION[(rules, "static")]
-    bounds = {"C_min": 4.0, "C_max": 20.0, **bounds}
+        correction = correction or "wahl"
+        bounds = {"C_min": DEFAULT_BOUNDS["C_min"], "C_max": DEFAULT_BOUNDS["C_max"], **bounds}
+    else:
+        mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
+        if not isinstance(mat.G, float):
+            raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire "
+                             f"diameter ({mat.moduli_source}): give it")
+        correction = correction or hx.DEFAULT_CORRECTION[(rules, "static")]
+        bounds = {"C_min": 4.0, "C_max": 20.0, **bounds}
     index = (bounds["C_min"], bounds["C_max"])
     rule = Rules(method=rules, allowable=k_s, correction=correction, peened=peened,
                  seating=seating, index=index, fatigue_safety=min_fatigue_safety, cycles=cycles)
@@ -331,7 +316,7 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
             dc = math.sqrt(state["window"][0] * state["window"][1])
             # the wire's tolerance at the window's centre (the table's row the wire settles in)
             extra["d_tol"] = max(float(tl.max_wire_diameter(dc, grade)) - dc, 1e-12)
-            if kind == "compression":  # the stress at solid length, a constraint too
+            if kind == "compression" and grade is not None:  # the stress at solid length
                 k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
                 extra.update(k_solid=k_c, s_over_D_max=stable)
             gp = cached_gp(objective, correction, mode, m, Q, slender is not None, m_c,
@@ -347,7 +332,8 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
                              "the fatigue or hook rows)")
                 return Sizing(sol, kind, diagnosis=text), 0.0
             new = (max(lo, sol.d / 1.25), min(hi, sol.d * 1.25))
-            if not refit or np.allclose(new, state["window"], rtol=1e-5, atol=0.0):
+            if not refit or (m == 0.0 and m_c is None and grade is None) or np.allclose(
+                    new, state["window"], rtol=1e-5, atol=0.0):  # nothing fitted to re-fit
                 break
             state["window"] = new  # re-fit the allowable about this wire
         sizing = _checked(Sizing(sol, kind, mat=mat, loads=loads, rules=rule,
