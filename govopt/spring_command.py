@@ -486,6 +486,7 @@ def _catalogue(v: dict, where: _Where):
 
 
 def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
+    from .optimize.spring_catalogue import size_orderable_spring
     from .optimize.spring_sizing import size_spring
     from .springs.assessment import assess
 
@@ -521,15 +522,16 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
         L0_max=v.get("max_free_length"), Lc_max=v.get("max_solid_length"),
         n_min=v["turns_min"], C_min=v["index_min"], C_max=v["index_max"],
         **({"n_max": v["turns_max"]} if v.get("turns_max") is not None else {}))
+    order = {} if wires is None else dict(wires=wires, coil_step=v.get("coil_step") or 0.5,
+                                          wire_source=source)
     try:
-        sizing = size_spring(
+        sizing = (size_orderable_spring if order else size_spring)(
             F, v["stiffness"], grade=material, kind=v["kind"], rules=v["rules"],
             correction=v.get("correction"), tensile_strength=v.get("tensile_strength"),
             F_min=F_min, fatigue=cycle, min_fatigue_safety=v["min_fatigue_safety"],
             peened=v["peened"], cycles=v["life"], ends=v.get("ends") or v.get("loops"),
             seating=v["seating"], objective=OBJECTIVES[v["objective"]],
-            stiffness_max=v.get("max_stiffness"), L2=v.get("length_2"), wires=wires,
-            coil_step=v.get("coil_step") or 0.5, wire_source=source, **bounds)
+            stiffness_max=v.get("max_stiffness"), L2=v.get("length_2"), **order, **bounds)
     except ValueError as exc:
         raise GovoptError(str(exc)) from None
     if not sizing.solution.ok or sizing.spring is None:

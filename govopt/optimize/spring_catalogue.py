@@ -33,10 +33,10 @@ from ..limits import MAX_SPRINGS
 from ..springs import checks as ck
 from ..springs import helical as hx
 from ..springs import tolerances as tl
-from ..springs.assessment import Spring, table
-from .spring_sizing import Sizing, _bound, drawn, objective_value
+from ..springs.assessment import Spring, table, table_keywords
+from .spring_sizing import Sizing, drawn, dual_bound, objective_value, size_spring
 
-__all__ = ["catalogue_sizing"]
+__all__ = ["catalogue_sizing", "size_orderable_spring"]
 
 
 def _interval(lo: float, hi: float, step: float) -> np.ndarray:
@@ -76,11 +76,9 @@ def _feasible(s: Sizing, sp: Spring, n: np.ndarray, limits: dict) -> np.ndarray:
     continuous design's would be: an extension spring's initial tension without a least
     force, say)."""
     failed = {c.name for c in s.checks if not c.passed}
-    from ..springs.assessment import _kw
-
     d, D = sp.d, sp.D
     ok = np.ones(np.shape(n), dtype=bool)
-    kw = _kw(sp, s.mat, s.loads, s.rules)
+    kw = table_keywords(sp, s.mat, s.loads, s.rules)
     rows = [(name, v, lim) for name, (v, lim) in ck.evaluate(s.kind, **kw).items()
             if "fatigue" not in name]
     if s.loads.cycle is not None:
@@ -127,7 +125,7 @@ def catalogue_sizing(s: Sizing, wires: Sequence[float], step: float, limits: dic
         sol = gp.solve(**{**values, "d_min": w, "d_max": w})
         if sol.status == "infeasible":
             return math.inf
-        return _bound(sol) if sol.ok else -math.inf
+        return dual_bound(sol) if sol.ok else -math.inf
 
     def enumerate_wire(w: float) -> None:
         nonlocal best
@@ -188,3 +186,21 @@ def catalogue_sizing(s: Sizing, wires: Sequence[float], step: float, limits: dic
                          f"continuous relaxation's certified bound; this orderable spring is "
                          f"within {100 * price:.3g} % of it")
     return out
+
+
+def size_orderable_spring(F_max: float, stiffness: float, *, wires: Sequence[float],
+                          coil_step: float = 0.5, wire_source: str = "", **kw) -> Sizing:
+    """The best spring with a wire of ``wires`` (m) and its coils on ``coil_step``
+    (:func:`catalogue_sizing`) for the problem of
+    :func:`govopt.optimize.spring_sizing.size_spring` (``kw``: its keywords);
+    ``wire_source``: where the table comes from."""
+    sizing = size_spring(F_max, stiffness, **kw)
+    if not sizing.solution.ok:
+        return sizing
+    bounds = {k: v for k, v in kw.items() if k in (
+        "n_min", "n_max", "C_min", "C_max", "D_out_max", "L_body_max", "f_surge_min", "d_min",
+        "d_max", "Di_min", "L0_max", "Lc_max")}
+    limits = {**bounds, "kappa_min": stiffness,
+              "kappa_max": kw.get("stiffness_max") or stiffness}
+    return catalogue_sizing(sizing, wires, coil_step, limits, ends=sizing.spring.form,
+                            L2=kw.get("L2"), source=wire_source)

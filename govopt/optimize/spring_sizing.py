@@ -31,7 +31,6 @@ stress and fatigue rows, its optimality certificate is that of the last GP only)
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -213,8 +212,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 peened: bool = False, cycles: float = 1e7, ends: str | None = None,
                 seating: str = "fixed-fixed", objective: str = "mass",
                 stiffness_max: float | None = None, L2: float | None = None,
-                wires: Sequence[float] | None = None, coil_step: float = 0.5,
-                wire_source: str = "", **bounds) -> Sizing:
+                **bounds) -> Sizing:
     """Size a spring (SI): see the module docstring. ``bounds``: the GP's optional limits
     (``n_min``, ``n_max``, ``C_min``, ``C_max``, ``D_out_max``, ``L_body_max``,
     ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20.
@@ -227,23 +225,14 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     R`` (the solid-length stress row of the GP then takes the least free length: a relaxation,
     checked exactly afterwards). ``ends``: a compression spring's end form
     (:data:`~govopt.springs.helical.END_FORMS`, default closed and ground), an extension
-    spring's loops (:data:`~govopt.springs.helical.HOOKS`, default full loops). ``wires``: a
-    table of wire diameters (m) to order from, with the coils on ``coil_step`` (the best of
-    them by :func:`govopt.optimize.spring_catalogue.catalogue_sizing`; ``wire_source``: where
-    the table comes from), else any wire and coils."""
-    sizing = _size(F_max, stiffness, grade=grade, kind=kind, k_s=k_s, G=G, density=density,
-                   tensile_strength=tensile_strength, rules=rules, correction=correction,
-                   F_min=F_min, fatigue=fatigue, min_fatigue_safety=min_fatigue_safety,
-                   peened=peened, cycles=cycles, ends=ends, seating=seating,
-                   objective=objective, stiffness_max=stiffness_max, L2=L2, **bounds)
-    if wires is None or not sizing.solution.ok:
-        return sizing
-    from .spring_catalogue import catalogue_sizing
-
-    limits = {**bounds, "kappa_min": stiffness,
-              "kappa_max": stiffness if stiffness_max is None else stiffness_max}
-    return catalogue_sizing(sizing, wires, coil_step, limits, ends=sizing.spring.form, L2=L2,
-                            source=wire_source)
+    spring's loops (:data:`~govopt.springs.helical.HOOKS`, default full loops). Any wire and
+    coils: :func:`govopt.optimize.spring_catalogue.size_orderable_spring` takes them from a
+    table of wires and a step of coils."""
+    return _size(F_max, stiffness, grade=grade, kind=kind, k_s=k_s, G=G, density=density,
+                 tensile_strength=tensile_strength, rules=rules, correction=correction,
+                 F_min=F_min, fatigue=fatigue, min_fatigue_safety=min_fatigue_safety,
+                 peened=peened, cycles=cycles, ends=ends, seating=seating, objective=objective,
+                 stiffness_max=stiffness_max, L2=L2, **bounds)
 
 
 def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensile_strength,
@@ -367,8 +356,8 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
             return math.nan
         moved = relaxation(values, k, m, m_c)
         if all(abs(x / values[key] - 1.0) <= 2e-6 for key, x in moved.items()):
-            return _bound(sizing.solution)
-        return _bound(gp.solve(**{**values, **moved}))
+            return dual_bound(sizing.solution)
+        return dual_bound(gp.solve(**{**values, **moved}))
 
     def finish(sizing):
         """``sizing`` with the relaxation over every wire: the last fit's GP without the
@@ -458,7 +447,7 @@ def diagnose(gp, **values) -> str:
     return why.summary()
 
 
-def _bound(sol) -> float:
+def dual_bound(sol) -> float:
     """The solver's dual objective: a lower bound on the GP's optimum (nan unless optimal)."""
     return float(sol.certificate.get("objective_lower_bound", math.nan))
 
@@ -597,8 +586,8 @@ def _monomial(mat, place, rules, k_s, lo, hi):
     return float(a * dc**m * (1.0 - 1e-6)), m
 
 
-__all__ = ["KINDS", "OBJECTIVE_RECORD", "Sizing", "diagnose", "drawn", "end_coils",
-           "objective_value", "size_spring"]
+__all__ = ["KINDS", "OBJECTIVE_RECORD", "Sizing", "diagnose", "drawn", "dual_bound",
+           "end_coils", "objective_value", "size_spring"]
 
 
 def _ratio(check) -> float:

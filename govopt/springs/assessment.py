@@ -168,7 +168,7 @@ def _point(name: str, length: float, force: float, deflection: float, d: float, 
                                               "0.75)")}
 
 
-def _kw(spring: Spring, mat: Material, loads: Loads, rules: Rules) -> dict:
+def table_keywords(spring: Spring, mat: Material, loads: Loads, rules: Rules) -> dict:
     """The table's keywords (:mod:`govopt.springs.checks`) for the spring and its working
     forces."""
     kw = dict(mat=mat, d=spring.d, D=spring.D, F1=loads.F1, F2=loads.F2, method=rules.method,
@@ -188,7 +188,7 @@ def table(spring: Spring, mat: Material, loads: Loads, rules: Rules
     """The spring kind's checks at the working forces, the fatigue rows at the load cycle;
     rows whose value or limit the material cannot give (no R_m without a grade) left out and
     named."""
-    kw = _kw(spring, mat, loads, rules)
+    kw = table_keywords(spring, mat, loads, rules)
     rows = [c for c in ck.checks(spring.kind, **kw) if "fatigue" not in c.name]
     if loads.cycle is not None:
         kw.update(F1=min(loads.cycle), F2=max(loads.cycle))
@@ -399,4 +399,4 @@ def _tolerances(spring, mat, loads, rules, n, R, G, s2) -> dict[str, Figure]:
 
 
 __all__ = ["KINDS", "POINTS", "SECTIONS", "Assessment", "Loads", "Rules", "Spring", "assess",
-           "extension_free_length", "table"]
+           "extension_free_length", "table", "table_keywords"]
