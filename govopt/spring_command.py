@@ -372,9 +372,9 @@ def _pairs(v: dict, where: _Where) -> None:
     for lo, hi, unit in PAIRS:
         a, b = v.get(lo), v.get(hi)
         if a is not None and b is not None and a > b:
-            raise GovoptError(f"{where(lo)} {a:.6g} and {where(hi)} {b:.6g}"
-                              f"{' ' + unit if unit else ''}: the least is above the largest "
-                              f"(expected {lo} <= {hi})")
+            u = f" {unit}" if unit else ""
+            raise GovoptError(f"{where(lo)} {a:.6g}{u} and {where(hi)} {b:.6g}{u}: the least "
+                              f"is above the largest (expected {lo} <= {hi})")
 
 
 def _material_rules(v: dict, where: _Where) -> None:
@@ -429,10 +429,23 @@ def _material(v: dict):
 
 
 def _outcome(name, command, assessment, record, entries, v, notes=(), sizing=None) -> Outcome:
+    """The outcome of a designed or checked spring; a spring without a name (options alone)
+    named by what it is, in the units of the input."""
     from .report.spring_report import shown_units
 
-    return Outcome(name, command, assessment, record, list(assessment.checks),
-                   shown_units(entries), v, [*notes, *assessment.notes], sizing=sizing)
+    shown = shown_units(entries)
+    if not name:
+        sp = assessment.spring
+        grade = f", {v['material']}" if v.get("material") else ""
+        if command == "design":
+            name = (f"{sp.kind} spring for {shown.text(v['force'], 'N', 4)} at "
+                    f"{shown.text(v['stiffness'], 'N/m', 4)}{grade}")
+        else:
+            name = (f"{sp.kind} spring d {shown.text(sp.d, 'm', 4)}, D "
+                    f"{shown.text(sp.D, 'm', 4)}, n {assessment.value('active coils'):.4g}"
+                    f"{grade}")
+    return Outcome(name, command, assessment, record, list(assessment.checks), shown, v,
+                   [*notes, *assessment.notes], sizing=sizing)
 
 
 # ---------------------------------------------------------------------------- design
@@ -538,14 +551,7 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
         why = sizing.diagnosis
         raise GovoptError("no spring meets these requirements" + (f": {why}" if why else ""))
     a = assess(sizing.spring, sizing.mat, sizing.loads, sizing.rules)
-    name = name or _design_name(v)
     return _outcome(name, "design", a, sizing.record(), entries, v, sizing=sizing)
-
-
-def _design_name(v: dict) -> str:
-    """A spring designed from options alone is named by what it is for."""
-    return (f"{v['kind']} spring for {v['force']:.4g} N at {v['stiffness'] * 1e-3:.4g} N/mm"
-            + (f", {v['material']}" if v.get("material") else ""))
 
 
 # ---------------------------------------------------------------------------- check
@@ -610,8 +616,6 @@ def _check(v: dict, where: _Where, name: str, entries) -> Outcome:
     if v.get("fatigue_min_force") is not None:
         cycle = (v["fatigue_min_force"], v["fatigue_max_force"])
     a = assess(spring, mat, Loads(F1, F2, cycle), _rules(v))
-    name = name or (f"{kind} spring d {d * 1e3:.4g} mm, D {D * 1e3:.4g} mm, n {n:.4g}"
-                    + (f", {v['material']}" if v.get("material") else ""))
     return _outcome(name, "check", a, None, entries, v, notes)
 
 

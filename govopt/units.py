@@ -207,8 +207,9 @@ def parse_with_pint(text: str, dimension: str) -> float:
         raise UnitError(f"cannot parse {text!r} as a quantity: {_unknown(exc)}") from None
     except OverflowError:
         raise UnitError(f"{text!r} is too large a number") from None
-    except Exception as exc:  # pint raises many exception types for malformed strings
-        raise UnitError(f"cannot parse {text!r} as a quantity ({type(exc).__name__})") from None
+    except Exception:  # pint raises many exception types for malformed strings
+        raise UnitError(f"cannot parse {text!r} as a quantity: expected a number and a unit, "
+                        f"e.g. '{_example(dimension)}'") from None
     if not has_unit and dimension != "dimensionless":
         raise UnitError(f"{text!r} has no unit: expected {_a(name)} such as "
                         f"'{_example(dimension)}'"

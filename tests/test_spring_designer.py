@@ -251,8 +251,8 @@ def test_stiffness_range():
     assert fig(band, "mass_kg") < fig(one, "mass_kg") and band["optimisation"]["certified"]
     bad = invoke([*BASE, "--max-stiffness", "8 N/mm"])
     assert bad.exit_code == 2
-    assert bad.output.startswith("error: --stiffness 10000 and --max-stiffness 8000 N/m: the "
-                                 "least is above the largest"), bad.output
+    assert bad.output.startswith("error: --stiffness 10000 N/m and --max-stiffness 8000 N/m: "
+                                 "the least is above the largest"), bad.output
 
 
 def test_sandgren_mixed_discrete_spring_reproduces_the_best_known_optimum():

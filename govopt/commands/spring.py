@@ -10,7 +10,7 @@ from typing import Annotated
 import typer
 
 from . import common
-from .common import JSON_HELP, ChecksFailed, Command, echo, guarded
+from .common import JSON_HELP, ChecksFailed, Command, echo, guarded, rich_text
 
 SPRING_SHORT = ("Least-mass helical spring for a force and stiffness (an exact GP, certified "
                 "global), or check one you have.")
@@ -26,10 +26,10 @@ CHECK_HELP = ("Check a helical spring you have: its wire, coil diameter, coils a
               "checks, buckling, surge, fatigue and life, EN 15800 tolerances), in the units "
               "the input is written in; exit code 1 when a check fails.")
 WIRE_SIZES_HELP = ("Wires to order from: 'preferred' (the grade's standard's diameters, "
-                   "govopt/data/wire_sizes.toml: EN 10270-1's nominal sizes, ASTM A228's; "
-                   "other grades the ISO 3 R20 series govopt design uses), a list ('2.5 mm, "
-                   "2.8 mm, 3 mm') or 'continuous' (any wire and coils). Default: 'preferred' "
-                   "with --material, else 'continuous'.")
+                   "listed with their source in govopt's data/wire_sizes.toml: EN 10270-1's "
+                   "nominal sizes, ASTM A228's; other grades the ISO 3 R20 series govopt "
+                   "design uses), a list ('2.5 mm, 2.8 mm, 3 mm') or 'continuous' (any wire "
+                   "and coils). Default: 'preferred' with --material, else 'continuous'.")
 
 app = typer.Typer(cls=common.Group, add_completion=False, help=SPRING_HELP,
                   short_help=SPRING_SHORT, invoke_without_command=True)
@@ -63,8 +63,9 @@ def _finish(out, json_out: bool) -> None:
 @guarded
 def design(
         spec: Annotated[Path | None, typer.Argument(
-            help="Spring spec file (TOML with units, a [spring] table of these options); the "
-                 "options override it.", metavar="spec", show_default=False)] = None,
+            help=rich_text("Spring spec file (TOML with units, a [spring] table of these "
+                           "options); the options override it."), metavar="spec",
+            show_default=False)] = None,
         force: Annotated[Text, _o("--force", "Largest working force, e.g. '606 kgf' "
                                   "(required, here or in the spec).")] = None,
         stiffness: Annotated[Text, _o("--stiffness", "Stiffness, e.g. '59.7 kgf/cm' (or from "
@@ -182,8 +183,8 @@ def design(
 @guarded
 def check(
         spec: Annotated[Path | None, typer.Argument(
-            help="Spring spec file whose [spring] gives the spring (these options with "
-                 "underscores); the options override it.", metavar="spec",
+            help=rich_text("Spring spec file whose [spring] gives the spring (these options "
+                           "with underscores); the options override it."), metavar="spec",
             show_default=False)] = None,
         wire_diameter: Annotated[Text, _o("--wire-diameter", "Wire diameter d, e.g. '2.8 mm' "
                                           "(required).")] = None,

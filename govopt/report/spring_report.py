@@ -80,6 +80,8 @@ def shown_units(entries) -> Shown:
         except ValueError:  # a unit the parser reads only with a number before it
             pass
 
+    if "m" not in first and "/" in first.get("N/m", ""):  # a length from a stiffness: lbf/in
+        first["m"] = first["N/m"].split("/")[-1]
     for si in ("m", "N", "Pa", "N/m"):
         if si in first:
             use(si, first[si])
