@@ -465,6 +465,21 @@ def _spring_cases() -> Iterator[Case]:
                        nonsense(kind, option), "spring")
     yield Case("spring/--correction/bogus", ("spring", *base, "--correction", "bogus"), None,
                "bogus_choice", "--correction", True, "spring")
+    check = [a for k, v in SPRING_CHECK.items() for a in (k, v)]
+    for option, value in SPRING_CHECK.items():
+        for kind, new in _leaf_mutations(value, option):
+            if kind in ("array_for_scalar", "table_for_scalar"):
+                continue
+            args = list(check)
+            args[args.index(option) + 1] = str(new)
+            yield Case(f"spring check/{option}/{kind}",
+                       ("spring", "check", *args, "--active-coils", "8"), None, kind, option,
+                       nonsense(kind, option), "spring")
+
+
+#: ``govopt spring check`` options and a valid value of each (a spring given as it is)
+SPRING_CHECK = {"--wire-diameter": "3 mm", "--mean-diameter": "20 mm",
+                "--free-length": "60 mm", "--force": "100 N", "--material": "EN10270-1 SH"}
 
 
 def study_specs() -> list[Path]:

@@ -191,6 +191,13 @@ def _hook_fatigue(point):
     return value, source
 
 
+def _over(a, b):
+    """``a / b``, infinite where ``b`` is zero (a buckling deflection lost to rounding on a
+    spring far longer than it is wide: it buckles at once)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.asarray(a, dtype=float) / b
+
+
 def _surge_source(kw):
     return ("EN 13906-1 surge frequency (both ends fixed) kept at least the required relative "
             f"distance from each excitation harmonic present ({len(kw['harmonics_hz'])} given)")
@@ -226,8 +233,8 @@ COMPRESSION = (
         "(0.0015 D^2/d + 0.1 d) (x1.5 dynamic), at the largest deflection including the "
         "overspeed margin"),
     Row("deflection / buckling deflection", "<=", "",
-        lambda kw: kw["s_max"] / hx.buckling_deflection(kw["L0"], kw["D"], kw["G"], kw["E"],
-                                                        hx.SEATING[kw["seating"]]),
+        lambda kw: _over(kw["s_max"], hx.buckling_deflection(kw["L0"], kw["D"], kw["G"], kw["E"],
+                                                             hx.SEATING[kw["seating"]])),
         lambda kw: 1.0,
         lambda kw: f"EN 13906-1, 9.14: buckling deflection s_K, seating {kw['seating']} "
                    f"(nu = {hx.SEATING[kw['seating']]})"),
