@@ -128,7 +128,7 @@ class Sizing:
         if flip:
             value, bound = 1.0 / value, 1.0 / bound
         sens = {k: (-v if flip else v) for k, v in sol.sensitivities.items()
-                if abs(v) > 1e-9}
+                if abs(v) > 1e-6}  # below: a limit that does not bind (the duals' rounding)
         # a discrete optimum's binding limits are its checks' (the relaxation's are the GP's)
         active = [c.name for c in self.checks if c.active] if self.search else sol.active
         return Record(

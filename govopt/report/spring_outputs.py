@@ -210,9 +210,9 @@ def write_workbook(outcome, path, *, replace: bool = True) -> Path:
             ws.append([label])
             return
         if isinstance(value, float) and not math.isfinite(value):
-            value = "infinite" if math.isinf(value) else "none"
+            value, unit = ("infinite" if math.isinf(value) else "none"), ""
         if isinstance(value, int | float) and not isinstance(value, bool):
-            fmt = engineering(value, unit)[2]
+            fmt = "0.00" if unit == "%" else engineering(value, unit)[2]
             value, unit = shown(value, unit)  # the units the input was written in
             ws.append([label, value, unit])
             ws.cell(ws.max_row, 2).number_format = fmt
