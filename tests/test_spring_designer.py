@@ -11,6 +11,7 @@ import json
 import numpy as np
 import pytest
 from clirun import invoke
+from springjson import fig
 
 BASE = ["spring", "--force", "500 N", "--stiffness", "10 N/mm", "--allowable-stress", "600 MPa",
         "--shear-modulus", "81.5 GPa"]
@@ -35,16 +36,6 @@ def _least_total_mass(F, k, ks, G, rho, C_lo, C_hi, n_min):
     i = int(np.argmin(mass))
     return mass[i], d[i], D[i], n[i]
 
-
-SECTIONS = ("spring", "material", "lengths_and_energy", "dynamics", "fatigue", "tolerances")
-
-
-def fig(out: dict, key: str):
-    """A figure of `govopt spring --json` by its key, whatever its section."""
-    for section in SECTIONS:
-        if key in out[section]:
-            return out[section][key]
-    raise KeyError(key)
 
 
 def test_least_total_mass_counts_the_end_coils():

@@ -7,21 +7,12 @@ import math
 
 import pytest
 from clirun import invoke
+from springjson import fig
 
 from govopt.examples import SPECS, example
 from govopt.optimize import spring_literature as sl
 from govopt.springs import helical as hx
 from govopt.springs import tolerances as tl
-
-SECTIONS = ("spring", "material", "lengths_and_energy", "dynamics", "fatigue", "tolerances")
-
-
-def fig(out: dict, key: str):
-    """A figure of `govopt spring --json` by its key, whatever its section."""
-    for section in SECTIONS:
-        if key in out[section]:
-            return out[section][key]
-    raise KeyError(key)
 
 SPRINGS = SPECS / "springs"
 BASE = ["--allowable-stress", "600 MPa", "--shear-modulus", "81.5 GPa"]

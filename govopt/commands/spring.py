@@ -42,6 +42,56 @@ def _o(name: str, help: str, metavar: str = "<str>"):
     return common.option(name, help=help, metavar=metavar)
 
 
+# the options design and check share, declared once
+Material = Annotated[Text, _o("--material", "Wire grade, e.g. 'EN10270-1 DH' "
+                              "(govopt/data/spring_materials.toml): allowables per wire "
+                              "diameter and the spring maker's checks.")]
+TensileStrength = Annotated[Text, _o("--tensile-strength", "R_m of --material custom.")]
+ShearModulus = Annotated[Text, _o("--shear-modulus", "Shear modulus G (required without "
+                                  "--material).")]
+AllowableStress = Annotated[Text, _o("--allowable-stress", "Allowable shear stress k_s "
+                                     "(required without --material; overrides its rule).")]
+Density = Annotated[Text, _o("--density", "Wire density (default: the grade's, or 7850 "
+                             "kg/m^3).")]
+Correction = Annotated[Text, _o("--correction", "Static stress correction: 'wahl', "
+                                "'bergstrasser' or 'none' (default: 'wahl'; with --material "
+                                "the rules' choice).")]
+Kind = Annotated[Text, _o("--kind", "Spring type: 'compression' (default) or 'extension'.")]
+Rules = Annotated[Text, _o("--rules", "Allowables and fatigue: 'EN13906' (default) or "
+                           "'Shigley'.")]
+MinForce = Annotated[Text, _o("--min-force", "Least working force F1 (extension: the initial "
+                              "tension stays below it).")]
+Length1 = Annotated[Text, _o("--length-1", "Working (installed) length L1 at --min-force "
+                             "(compression).")]
+FatigueMin = Annotated[Text, _o("--fatigue-min-force", "Least force of the fatigue load cycle "
+                                "(with --fatigue-max-force and --material).")]
+FatigueMax = Annotated[Text, _o("--fatigue-max-force", "Largest force of the fatigue load "
+                                "cycle.")]
+FatigueSafety = Annotated[Number, _o("--min-fatigue-safety", "Required fatigue safety "
+                                     "(default 1).", "<float>")]
+Life = Annotated[Number, _o("--life", "Required life, cycles (default 1e7).", "<float>")]
+Peened = Annotated[bool | None, common.flag(
+    "--peened/--no-peened", help="Shot-peened wire (fatigue; default: not peened).",
+    show_default=False)]
+Ends = Annotated[Text, _o("--ends", "Compression spring ends: closed_ground (default), "
+                          "closed, open, open_ground (EN 13906-1 and Shigley's solid "
+                          "lengths).")]
+Loops = Annotated[Text, _o("--loops", "Extension spring loops: full_loop (default), "
+                           "half_loop, side_loop, english_loop (EN 13906-2).")]
+Seating = Annotated[Text, _o("--seating", "Compression spring seating for buckling (default "
+                             "fixed-fixed).")]
+Name = Annotated[Text, _o("--name", "The spring's name (reports, plot titles; default: the "
+                          "spec's, or what the spring is).")]
+JsonOut = Annotated[bool, common.flag("--json", help=JSON_HELP)]
+Xlsx = Annotated[Text, _o("--xlsx", "Write a workbook: the spring maker's sheet, the checks, "
+                          "the force-length table.", "<path>")]
+Plots = Annotated[Path | None, _o("--plots", "Write the plots (force-length; the fatigue "
+                                  "diagram with a load cycle), PNG and SVG, into this folder.",
+                                  "<path>")]
+Replace = Annotated[bool, common.flag("--replace", help="Replace output files that exist "
+                                      "(--force is the spring's force here).")]
+
+
 @app.callback()
 def spring(ctx: typer.Context) -> None:
     if ctx.invoked_subcommand is None:  # `govopt spring`: its help, exit code 2 (nothing ran)
@@ -70,25 +120,14 @@ def design(
                                   "(required, here or in the spec).")] = None,
         stiffness: Annotated[Text, _o("--stiffness", "Stiffness, e.g. '59.7 kgf/cm' (or from "
                                       "the stroke).")] = None,
-        allowable_stress: Annotated[Text, _o("--allowable-stress", "Allowable shear stress k_s "
-                                             "(required without --material; overrides its "
-                                             "rule).")] = None,
-        shear_modulus: Annotated[Text, _o("--shear-modulus", "Shear modulus G (required "
-                                          "without --material).")] = None,
-        density: Annotated[Text, _o("--density", "Wire density (default: the grade's, or 7850 "
-                                    "kg/m^3).")] = None,
-        correction: Annotated[Text, _o("--correction", "Stress correction: 'wahl', "
-                                       "'bergstrasser' or 'none' (default: 'wahl'; with "
-                                       "--material the rules' choice).")] = None,
-        material: Annotated[Text, _o("--material", "Wire grade, e.g. 'EN10270-1 DH' "
-                                     "(govopt/data/spring_materials.toml): allowables per wire "
-                                     "diameter and the spring maker's checks.")] = None,
-        tensile_strength: Annotated[Text, _o("--tensile-strength", "R_m of --material "
-                                             "custom.")] = None,
-        kind: Annotated[Text, _o("--kind", "Spring type: 'compression' (default) or "
-                                 "'extension'.")] = None,
-        rules: Annotated[Text, _o("--rules", "Allowables and fatigue: 'EN13906' (default) or "
-                                  "'Shigley'.")] = None,
+        allowable_stress: AllowableStress = None,
+        shear_modulus: ShearModulus = None,
+        density: Density = None,
+        correction: Correction = None,
+        material: Material = None,
+        tensile_strength: TensileStrength = None,
+        kind: Kind = None,
+        rules: Rules = None,
         index_min: Annotated[Number, _o("--index-min", "Least spring index D/d (default 4: "
                                         "EN 13906-1 scope and Shigley's preferred range).",
                                         "<float>")] = None,
@@ -98,34 +137,21 @@ def design(
         turns_min: Annotated[Number, _o("--turns-min", "Least active turns (default 3: fewer "
                                         "coil poorly and load unevenly).", "<float>")] = None,
         turns_max: Annotated[Number, _o("--turns-max", "Most active turns.", "<float>")] = None,
-        min_force: Annotated[Text, _o("--min-force", "Least working force F1 (extension: the "
-                                      "initial tension stays below it).")] = None,
-        length_1: Annotated[Text, _o("--length-1", "Installed length L1 at --min-force "
-                                     "(compression).")] = None,
+        min_force: MinForce = None,
+        length_1: Length1 = None,
         length_2: Annotated[Text, _o("--length-2", "Installed length L2 at --force: the coils "
                                      "stay clear there; free length L2 + F/R "
                                      "(compression).")] = None,
         stroke: Annotated[Text, _o("--stroke", "Working stroke H = L1 - L2: the stiffness "
                                    "(F - F1) / H.")] = None,
-        fatigue_min_force: Annotated[Text, _o("--fatigue-min-force", "Least force of the "
-                                              "fatigue load cycle (with "
-                                              "--fatigue-max-force and --material).")] = None,
-        fatigue_max_force: Annotated[Text, _o("--fatigue-max-force", "Largest force of the "
-                                              "fatigue load cycle.")] = None,
-        min_fatigue_safety: Annotated[Number, _o("--min-fatigue-safety", "Required fatigue "
-                                                 "safety (default 1).", "<float>")] = None,
-        life: Annotated[Number, _o("--life", "Required life, cycles (default 1e7).",
-                                   "<float>")] = None,
-        peened: Annotated[bool | None, common.flag(
-            "--peened/--no-peened", help="Shot-peened wire (fatigue; default: not peened).",
-            show_default=False)] = None,
-        ends: Annotated[Text, _o("--ends", "Compression spring ends: closed_ground (default), "
-                                 "closed, open, open_ground (EN 13906-1 and Shigley's solid "
-                                 "lengths).")] = None,
-        loops: Annotated[Text, _o("--loops", "Extension spring loops: full_loop (default), "
-                                  "half_loop, side_loop, english_loop (EN 13906-2).")] = None,
-        seating: Annotated[Text, _o("--seating", "Compression spring seating for buckling "
-                                    "(default fixed-fixed).")] = None,
+        fatigue_min_force: FatigueMin = None,
+        fatigue_max_force: FatigueMax = None,
+        min_fatigue_safety: FatigueSafety = None,
+        life: Life = None,
+        peened: Peened = None,
+        ends: Ends = None,
+        loops: Loops = None,
+        seating: Seating = None,
         max_outer_diameter: Annotated[Text, _o("--max-outer-diameter", "Outside diameter in a "
                                                "bore (envelope), e.g. '10 cm'.")] = None,
         max_body_length: Annotated[Text, _o("--max-body-length", "Close-wound body length "
@@ -155,21 +181,15 @@ def design(
         coil_step: Annotated[Number, _o("--coil-step", "Active coils (extension: body coils) "
                                         "on this step with a wire table: 0.5 (default), 0.25 "
                                         "or 1.", "<float>")] = None,
-        name: Annotated[Text, _o("--name", "The spring's name (reports, plot titles; default: "
-                                 "the spec's, or what the spring is for).")] = None,
-        json_out: Annotated[bool, common.flag("--json", help=JSON_HELP)] = False,
+        name: Name = None,
+        json_out: JsonOut = False,
         output: Annotated[Text, common.option(
             "-o", "--output", metavar="<path>",
             help="Write the designed spring as a spec for 'govopt spring check' (its "
                  "geometry, material, loads and rules).")] = None,
-        xlsx: Annotated[Text, _o("--xlsx", "Write a workbook: the spring maker's sheet, the "
-                                 "checks, the force-length table.", "<path>")] = None,
-        plots: Annotated[Path | None, _o("--plots", "Write the plots (force-length; the fatigue "
-                                         "diagram with a load cycle), PNG and SVG, into this "
-                                         "folder.", "<path>")] = None,
-        replace: Annotated[bool, common.flag("--replace", help="Replace output files that "
-                                             "exist (--force is the spring's force here).")]
-        = False,
+        xlsx: Xlsx = None,
+        plots: Plots = None,
+        replace: Replace = False,
 ) -> None:
     from ..spring_command import run
 
@@ -200,62 +220,41 @@ def check(
         free_length: Annotated[Text, _o("--free-length", "Free length L0 (required for a "
                                         "compression spring; an extension spring's inside its "
                                         "loops, default from them).")] = None,
-        ends: Annotated[Text, _o("--ends", "Compression spring ends: closed_ground (default), "
-                                 "closed, open, open_ground.")] = None,
-        loops: Annotated[Text, _o("--loops", "Extension spring loops: full_loop (default), "
-                                  "half_loop, side_loop, english_loop.")] = None,
+        ends: Ends = None,
+        loops: Loops = None,
         initial_tension: Annotated[Text, _o("--initial-tension", "Extension spring's initial "
                                             "tension F0.")] = None,
-        kind: Annotated[Text, _o("--kind", "'compression' (default) or 'extension'.")] = None,
-        material: Annotated[Text, _o("--material", "Wire grade, e.g. 'EN10270-1 SH'.")]
-        = None,
-        tensile_strength: Annotated[Text, _o("--tensile-strength", "R_m of --material "
-                                             "custom.")] = None,
-        shear_modulus: Annotated[Text, _o("--shear-modulus", "Shear modulus G (without "
-                                          "--material).")] = None,
-        allowable_stress: Annotated[Text, _o("--allowable-stress", "Allowable shear stress "
-                                             "(without --material; overrides its rule).")]
-        = None,
-        density: Annotated[Text, _o("--density", "Wire density (default: the grade's, or "
-                                    "7850 kg/m^3).")] = None,
-        correction: Annotated[Text, _o("--correction", "Static stress correction: 'wahl', "
-                                       "'bergstrasser' or 'none'.")] = None,
-        rules: Annotated[Text, _o("--rules", "'EN13906' (default) or 'Shigley'.")] = None,
+        kind: Kind = None,
+        material: Material = None,
+        tensile_strength: TensileStrength = None,
+        shear_modulus: ShearModulus = None,
+        allowable_stress: AllowableStress = None,
+        density: Density = None,
+        correction: Correction = None,
+        rules: Rules = None,
         force: Annotated[Text, _o("--force", "Largest working force F2 (or --length-2).")]
         = None,
-        min_force: Annotated[Text, _o("--min-force", "Least working force F1 (or "
-                                      "--length-1).")] = None,
-        length_1: Annotated[Text, _o("--length-1", "Working length L1 (F1 from the rate).")]
-        = None,
+        min_force: MinForce = None,
+        length_1: Length1 = None,
         length_2: Annotated[Text, _o("--length-2", "Working length L2 (F2 from the rate).")]
         = None,
-        fatigue_min_force: Annotated[Text, _o("--fatigue-min-force", "Least force of the "
-                                              "fatigue load cycle (with --material).")] = None,
-        fatigue_max_force: Annotated[Text, _o("--fatigue-max-force", "Largest force of the "
-                                              "fatigue load cycle.")] = None,
-        min_fatigue_safety: Annotated[Number, _o("--min-fatigue-safety", "Required fatigue "
-                                                 "safety (default 1).", "<float>")] = None,
-        life: Annotated[Number, _o("--life", "Required life, cycles (default 1e7).",
-                                   "<float>")] = None,
-        peened: Annotated[bool | None, common.flag(
-            "--peened/--no-peened", help="Shot-peened wire (fatigue).", show_default=False)]
-        = None,
-        seating: Annotated[Text, _o("--seating", "Seating for buckling (default "
-                                    "fixed-fixed).")] = None,
+        fatigue_min_force: FatigueMin = None,
+        fatigue_max_force: FatigueMax = None,
+        min_fatigue_safety: FatigueSafety = None,
+        life: Life = None,
+        peened: Peened = None,
+        seating: Seating = None,
         index_min: Annotated[Number, _o("--index-min", "Least spring index (default 4).",
                                         "<float>")] = None,
         index_max: Annotated[Number, _o("--index-max", "Largest spring index (default 20, "
                                         "EN 13906-1).", "<float>")] = None,
         tolerance_grade: Annotated[Number, _o("--tolerance-grade", "EN 15800 quality grade "
                                               "1, 2 (default) or 3.", "<int>")] = None,
-        name: Annotated[Text, _o("--name", "The spring's name (reports, plot titles).")]
-        = None,
-        json_out: Annotated[bool, common.flag("--json", help=JSON_HELP)] = False,
-        xlsx: Annotated[Text, _o("--xlsx", "Write a workbook.", "<path>")] = None,
-        plots: Annotated[Path | None, _o("--plots", "Write the plots into this folder.",
-                                         "<path>")] = None,
-        replace: Annotated[bool, common.flag("--replace", help="Replace output files that "
-                                             "exist.")] = False,
+        name: Name = None,
+        json_out: JsonOut = False,
+        xlsx: Xlsx = None,
+        plots: Plots = None,
+        replace: Replace = False,
 ) -> None:
     from ..spring_command import check as run_check
 
