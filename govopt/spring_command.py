@@ -680,9 +680,9 @@ def _sandgren(raw: dict, where: _Where, name: str) -> Outcome:
 
     shown = Shown({**METRIC, **IMPERIAL, "m": ("in", inch), "N": ("lbf", lbf),
                    "Pa": ("psi", lbf / inch**2), "N/m": ("lbf/in", lbf / inch)})
-    out = Outcome(name, "sandgren-1990", a, record, sl.sandgren_checks(p, best), shown,
-                  raw, [*record.notes])
-    return out
+    notes = ["the figures with a steel wire's density, 7850 kg/m^3 (the problem states none)"]
+    return Outcome(name, "sandgren-1990", a, record, sl.sandgren_checks(p, best), shown, raw,
+                   notes)
 
 
 __all__ = ["CHECK_OPTIONS", "DEFAULTS", "OBJECTIVES", "OPTIONS", "ORDER_OPTIONS", "Outcome",

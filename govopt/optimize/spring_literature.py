@@ -248,14 +248,16 @@ def sandgren_sensitivities(p) -> tuple[dict[str, float], str]:
     if problem.status != cp.OPTIMAL:
         return {}, str(problem.status)
     lower = {"min_wire_diameter", "min_working_deflection"}  # g >= limit: +dual
-    return {k: (1.0 if k in lower else -1.0) * float(np.asarray(c.dual_value))
-            for k, c in cons.items()}, "optimal"
+    sens = {k: (1.0 if k in lower else -1.0) * float(np.asarray(c.dual_value))
+            for k, c in cons.items()}
+    return {k: v for k, v in sens.items() if abs(v) > 1e-6}, "optimal"
 
 
 def sandgren_record(p, best):
     """The optimiser's record of Sandgren's problem (:class:`govopt.optimize.record.Record`):
     the wire volume in m^3, certified by the exhaustive bounded enumeration (its own bound),
-    the sensitivities of its continuous relaxation by the spec's keys."""
+    the constraints that bind on the spring found, the sensitivities of its continuous
+    relaxation by the spec's keys."""
     from .record import Objective, Record
 
     sens, status = sandgren_sensitivities(p)
@@ -265,8 +267,9 @@ def sandgren_record(p, best):
     if status != "optimal":
         notes.append(f"no sensitivities: the continuous relaxation was not solved ({status})")
     volume = best.objective * _INCH**3
+    active = [c.name for c in sandgren_checks(p, best) if c.active]
     return Record(status="optimal", objective=Objective("volume pi^2 D d^2 (N + 2) / 4", "m^3"),
-                  value=volume, bound=volume, active=[], sensitivities=sens,
+                  value=volume, bound=volume, active=active, sensitivities=sens,
                   sensitivities_of="the continuous relaxation (any wire, any coils)",
                   method="exhaustive bounded enumeration of Sandgren's wire table and whole "
                          "coils", solver="enumeration", search={"pairs examined": best.checked},
