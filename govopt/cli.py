@@ -30,7 +30,7 @@ COMMANDS = {
     "design": ("evaluate", "design_app", "Find the best design for the spec's requirements "
                                          "(default: bundled hamabe-design)."),
     "spring": ("spring", "app", "Least-mass helical spring for a force and stiffness (an exact "
-                                "GP, certified global)."),
+                                "GP, certified global), or check one you have."),
     "bench": ("bench", "app", "Speed against error of every analysis and the speed targets "
                               "beside what was measured."),
     "examples": ("examples", "examples_app", "List the bundled example specs."),
@@ -126,14 +126,23 @@ def _debug_env() -> bool:
     fail(f"GOVOPT_DEBUG: expected 1 or 0 (true/false, yes/no, on/off), got {value!r}")
 
 
+#: a group's default subcommand: `govopt study SPEC` is `govopt study run SPEC`, `govopt
+#: spring ...` is `govopt spring design ...`
+DEFAULT_SUBCOMMANDS = {"study": ("run", ("run", "export", "show")),
+                       "spring": ("design", ("design", "check"))}
+
+
 def _run(argv: list[str]) -> None:
-    """Parse ``argv`` and run its command (`govopt study SPEC` is `govopt study run SPEC`); a
-    bad command line is one line ``error: ...`` and exit code 2."""
+    """Parse ``argv`` and run its command (a group's default subcommand inserted:
+    :data:`DEFAULT_SUBCOMMANDS`); a bad command line is one line ``error: ...`` and exit
+    code 2."""
     State.debug = False
     at = next((i for i, a in enumerate(argv) if not a.startswith("-")), len(argv))
-    if argv[at:at + 1] == ["study"] and argv[at + 1:at + 2] not in (
-            [], ["run"], ["export"], ["show"], ["-h"], ["--help"]):
-        argv = [*argv[:at + 1], "run", *argv[at + 1:]]
+    group = argv[at] if at < len(argv) else None
+    if group in DEFAULT_SUBCOMMANDS:
+        default, subcommands = DEFAULT_SUBCOMMANDS[group]
+        if argv[at + 1:at + 2] not in ([], *([c] for c in subcommands), ["-h"], ["--help"]):
+            argv = [*argv[:at + 1], default, *argv[at + 1:]]
     try:
         code = root().main(args=argv, prog_name="govopt", standalone_mode=False)
     except UsageError as exc:
@@ -149,7 +158,7 @@ def _command_path(argv: list[str]) -> str:
     """``govopt`` and the command words of ``argv`` (``govopt study run``)."""
     words = [a for a in argv if not a.startswith("-")][:2]
     if words[:1] and words[0] in COMMANDS:
-        return " ".join(["govopt", *words[:2 if words[0] == "study" else 1]])
+        return " ".join(["govopt", *words[:2 if words[0] in DEFAULT_SUBCOMMANDS else 1]])
     return "govopt"
 
 

@@ -1,14 +1,16 @@
-"""`govopt spring`: a helical spring sized on its own, from options, a spring spec file or both
-(options override the file). Plain Python values in, a report out; the command line only
-parses (:mod:`govopt.cli`).
+"""`govopt spring` (design) and `govopt spring check`: a helical spring sized on its own, or
+checked as it is, from options, a spring spec file or both (options override the file). Plain
+Python values in, a report out; the command line only parses (:mod:`govopt.commands.spring`).
 
 A spring spec is TOML with units as a governor spec (``error: FILE: KEY: expected ...``, exit
 code 2): a ``name``, a ``description`` and a ``[spring]`` table whose keys are the command's
 options with underscores (``force = "500 N"``, ``max_outer_diameter = "40 mm"``, ``turns_min =
 3``, ``peened = true``). ``problem = "sandgren-1990"`` states Sandgren's mixed-discrete spring
-(:func:`govopt.optimize.spring_literature.solve_sandgren`) with its data as keys.
+(:func:`govopt.optimize.spring_literature.solve_sandgren`) with its data as keys. A spec whose
+``[spring]`` gives a spring's geometry (``wire_diameter``, ``mean_diameter`` ...) is checked
+(`govopt spring check SPEC`), and `govopt spring -o SPEC` writes one of the designed spring.
 
-The problem statements beyond a force and a stiffness:
+The design's problem statements beyond a force and a stiffness:
 
 - installed lengths and working stroke: ``length_2`` (``L2``, the length at ``force``),
   ``length_1`` (``L1`` at ``min_force``) and ``stroke`` (``H = L1 - L2``); two of them, or the
@@ -17,9 +19,19 @@ The problem statements beyond a force and a stiffness:
 - free-length and solid-length limits, inside diameter over a rod, outside diameter in a bore,
   a stiffness range, a least surge frequency and wire-diameter bounds: GP rows
   (:mod:`govopt.optimize.spring_gp`);
-- objectives: mass (all coils of wire), solid length, outside diameter, the literature's
-  volume ``(n + end coils) D d^2`` and the stored energy per mass ``F^2 / (2 R m)`` (its
-  reciprocal minimised, a posynomial).
+- objectives: mass (all coils of wire, the helix rise included), solid length, outside
+  diameter, the literature's volume ``(n + end coils) D d^2`` and the stored energy per mass
+  ``F^2 / (2 R m)`` (its reciprocal minimised, a posynomial);
+- a spring that can be ordered: ``wire_sizes`` (``"preferred"``: the grade's standard's
+  diameters, :func:`govopt.springs.materials.wire_sizes`; a list; ``"continuous"``) and
+  ``coil_step`` (coils on 0.25, 0.5 or 1): the best such spring by a bounded enumeration
+  (:mod:`govopt.optimize.spring_catalogue`); the grade's table by default when a grade is
+  given.
+
+Either way the spring is reported from :func:`govopt.springs.assessment.assess` (the same rows
+for a designed and a checked spring), in the units the input was written in
+(:func:`govopt.report.spring_report.shown_units`), with the optimiser's record where something
+was optimised (:class:`govopt.optimize.record.Record`).
 """
 
 from __future__ import annotations
@@ -58,6 +70,33 @@ OPTIONS: dict[str, tuple[str, Any]] = {
     "max_solid_length": ("quantity", "length"), "length_1": ("quantity", "length"),
     "length_2": ("quantity", "length"), "stroke": ("quantity", "length"),
 }
+
+# ---- keys of springs that can be ordered and of springs checked as they are ---------------
+# (one block: to be declared with the spec keys' declarations; the check's keys are the
+# design's that describe the material, the loads and the rules, and these)
+#: design: ordering and naming
+ORDER_OPTIONS: dict[str, tuple[str, Any]] = {
+    "wire_sizes": ("sizes", None), "coil_step": ("number", "a step of coils in (0, 1]"),
+    "loops": ("choice", None), "name": ("text", None),
+}
+#: check: the spring's geometry, and what it shares with the design
+CHECK_OPTIONS: dict[str, tuple[str, Any]] = {
+    "wire_diameter": ("quantity", "length"), "mean_diameter": ("quantity", "length"),
+    "outer_diameter": ("quantity", "length"), "active_coils": ("number", "a number of coils"),
+    "total_coils": ("number", "a number of coils"), "free_length": ("quantity", "length"),
+    "initial_tension": ("quantity", "force"), "tolerance_grade": ("number", "1, 2 or 3"),
+    **{k: OPTIONS[k] for k in (
+        "kind", "material", "tensile_strength", "shear_modulus", "allowable_stress", "density",
+        "correction", "rules", "ends", "seating", "force", "min_force", "length_1",
+        "length_2", "fatigue_min_force", "fatigue_max_force", "min_fatigue_safety", "life",
+        "peened", "index_min", "index_max")},
+    "loops": ORDER_OPTIONS["loops"], "name": ORDER_OPTIONS["name"],
+}
+#: the geometry a design spec cannot have (it is a check's)
+GEOMETRY_KEYS = ("wire_diameter", "mean_diameter", "outer_diameter", "active_coils",
+                 "total_coils", "free_length", "initial_tension")
+# ---- end of the block ------------------------------------------------------------------------
+
 #: the spec-only keys of Sandgren's problem (``problem = "sandgren-1990"``)
 SANDGREN_KEYS = {"force": "force", "min_force": "force", "allowable_stress": "stress",
                  "shear_modulus": "stress", "max_free_length": "length",
@@ -68,40 +107,53 @@ PROBLEMS = ("sandgren-1990",)
 #: defaults of the options (applied after the spec and the options are merged)
 DEFAULTS = {"kind": "compression", "rules": "EN13906", "index_min": 4.0, "index_max": 12.0,
             "turns_min": 3.0, "min_fatigue_safety": 1.0, "life": 1e7, "peened": False,
-            "ends": "closed_ground", "seating": "fixed-fixed", "objective": "mass"}
+            "seating": "fixed-fixed", "objective": "mass"}
+#: the check's: EN 13906-1's index range for cold-coiled springs, EN 15800 grade 2
+CHECK_DEFAULTS = {"kind": "compression", "rules": "EN13906", "index_min": 4.0,
+                  "index_max": 20.0, "min_fatigue_safety": 1.0, "life": 1e7, "peened": False,
+                  "seating": "fixed-fixed", "tolerance_grade": 2}
 
 #: ``govopt spring --objective`` choices and the GP objective each minimises
 OBJECTIVES = {"mass": "mass", "volume": "volume", "solid length": "solid length",
               "outer diameter": "outer diameter", "energy per mass": "mass per energy"}
-#: how each objective is printed (scale from SI, unit)
-OBJECTIVE_UNITS = {"mass": (1e3, "g"), "volume": (1e6, "cm^3"), "solid length": (1e3, "mm"),
-                   "outer diameter": (1e3, "mm"), "mass per energy": (1.0, "kg/J")}
-#: SI units of the spring checks and the units they are printed in (scale, unit)
-CHECK_UNITS = {"Pa": (1e-6, "MPa"), "m": (1e3, "mm"), "N/m": (1e-3, "N/mm"), "N": (1.0, "N")}
+#: coil steps a spring maker winds to (any in (0, 1] is accepted)
+COIL_STEPS = (0.25, 0.5, 1.0)
 
 
 @dataclass
 class Outcome:
-    """What `govopt spring` prints, and the checks that failed (exit code 1 when any)."""
+    """What `govopt spring` prints (its text, its JSON), the checks the verdict reads (exit
+    code 1 when one fails), the spring's assessment and the optimiser's record (None for a
+    check), the problem's values (SI, defaults applied), the units shown and the files
+    written."""
 
-    text: str
-    data: dict
-    failed: list[str] = field(default_factory=list)
-    total: int = 0
-    sizing: Any = None
-    #: the problem's values (SI, defaults applied), its name and the optimality claim
+    name: str
+    command: str
+    assessment: Any
+    record: Any
+    checks: list
+    shown: Any
     values: dict = field(default_factory=dict)
-    name: str = "spring"
-    claim: str = ""
-    #: the files written (--xlsx, --plots)
+    notes: list = field(default_factory=list)
+    text: str = ""
+    data: dict = field(default_factory=dict)
+    sizing: Any = None
     written: list = field(default_factory=list)
+
+    @property
+    def failed(self) -> list[str]:
+        return [c.name for c in self.checks if not c.passed]
+
+    @property
+    def total(self) -> int:
+        return len(self.checks)
 
 
 class _Where:
     """Where each value came from: ``--option`` or ``FILE: spring.key`` (error messages)."""
 
-    def __init__(self, file: str | None, from_file: set[str]):
-        self.file, self.from_file = file, from_file
+    def __init__(self, file: str | None, from_file: set[str], command: str = "spring"):
+        self.file, self.from_file, self.command = file, from_file, command
 
     def __call__(self, key: str) -> str:
         if key in self.from_file:
@@ -115,7 +167,7 @@ class _Where:
         """A required value given nowhere: named in the spec when there is one."""
         option = "--" + key.replace("_", "-")
         if self.file is None:  # as the parser's own errors: where to look
-            raise GovoptError(f"{option}: required{also} (see 'govopt spring --help')")
+            raise GovoptError(f"{option}: required{also} (see 'govopt {self.command} --help')")
         raise GovoptError(f"{self.file}: spring.{key}: required (or {option}){also}")
 
 
@@ -128,28 +180,275 @@ def _option_reader(options: dict, entries: list):
     return Options("", options, "", entries)
 
 
-def _read(rd, key: str, problem: str | None):
+def _read(rd, key: str, problem: str | None, table: dict):
     """One value through :class:`govopt.reader.Reader` (units, types, ranges; errors ``FILE:
     spring.KEY: ...`` or ``--key: ...``), in SI."""
     if problem:  # the literature problem's data: positive quantities
         return rd.quantity(key, SANDGREN_KEYS[key], required=False)
-    kind, detail = OPTIONS[key]
+    kind, detail = table[key]
     if kind == "quantity":  # the lower forces of a cycle may be zero
         return rd.quantity(key, detail, required=False,
-                           nonnegative=key in ("min_force", "fatigue_min_force"))
+                           nonnegative=key in ("min_force", "fatigue_min_force",
+                                               "initial_tension"))
+    if key == "tolerance_grade":
+        value = rd.number(key, required=False, integer=True)
+        if value is not None and value not in (1, 2, 3):
+            rd.fail(key, f"expected an EN 15800 quality grade 1, 2 or 3, got {value!r}")
+        return value
     if kind == "number":
-        return rd.number(key, required=False)
+        value = rd.number(key, required=False)
+        if key == "coil_step" and value is not None and not value <= 1.0:
+            rd.fail(key, f"expected a step of coils in (0, 1] ({', '.join(map(str, COIL_STEPS))}"
+                         f" usual), got {value!r}")
+        return value
     if kind == "flag":
         return rd.boolean(key, None)
-    return rd.choice(key, _choices(key), None)
+    if kind == "text":
+        return rd.text(key, None)
+    if kind == "sizes":
+        return _sizes(rd, key)
+    return rd.choice(key, _choices(key, table), None)
 
 
-def _choices(key: str):
+def _sizes(rd, key: str):
+    """``wire_sizes``: ``"preferred"``, ``"continuous"``, or wire diameters (a list in a
+    spec, or one text with commas: ``"2.5 mm, 2.8 mm, 3 mm"``), SI, rising."""
+    raw = rd.raw(key, False)
+    if raw is None:
+        return None
+    if isinstance(raw, str) and raw.strip() in ("preferred", "continuous"):
+        return raw.strip()
+    if isinstance(raw, str):
+        items = [x.strip() for x in raw.split(",") if x.strip()]
+        if not items:
+            rd.fail(key, "expected 'preferred', 'continuous' or wire diameters, e.g. '2.5 mm, "
+                         "2.8 mm'")
+        sub = Reader(rd.file, {key: items}, rd.path, rd.entries)
+        sub.key = rd.key  # type: ignore[method-assign]
+        return tuple(sorted(sub.quantities(key, "length")))
+    return tuple(sorted(rd.quantities(key, "length")))
+
+
+def _choices(key: str, table: dict):
     from .springs import helical, materials
 
     return {"material": materials.GRADES, "rules": materials.METHODS,
-            "ends": tuple(helical.END_FORMS), "seating": tuple(helical.SEATING),
-            "objective": tuple(OBJECTIVES)}.get(key) or OPTIONS[key][1]
+            "ends": tuple(helical.END_FORMS), "loops": tuple(helical.HOOKS),
+            "seating": tuple(helical.SEATING),
+            "objective": tuple(OBJECTIVES)}.get(key) or table[key][1]
+
+
+def merged(spec: str | Path | None, options: dict, command: str = "design"
+           ) -> tuple[dict, _Where, str | None, str, list]:
+    """The spec's values overridden by the options given (not None), read through the
+    governor spec's :class:`govopt.reader.Reader` (unknown keys with a did-you-mean, units,
+    types), in SI; the :class:`_Where` naming each value's origin, the literature problem, the
+    name and the entries read (for the units shown)."""
+    entries: list = []
+    given = {k: v for k, v in options.items() if v is not None}
+    table = CHECK_OPTIONS if command == "check" else {**OPTIONS, **ORDER_OPTIONS}
+    opts, sp, problem, name = _option_reader(given, entries), None, None, ""
+    if spec is not None:
+        top = Reader(str(spec), read_spec_data(spec), "", entries)
+        name = top.text("name") or Path(spec).stem
+        top.text("description")
+        if not top.has("spring"):
+            top.fail("spring", "missing (required: a [spring] table)")
+        sp = top.sub("spring")
+        top.finish()
+        if command == "design":
+            problem = sp.choice("problem", PROBLEMS, None)
+            geometry = [k for k in GEOMETRY_KEYS if sp.has(k)]
+            if geometry and not problem:
+                sp.fail(geometry[0], f"a spring's geometry: check it with 'govopt spring check "
+                                     f"{spec}' (a design spec states forces and limits)")
+        for key in SANDGREN_KEYS if problem else table:
+            sp.raw(key, False)  # the keys allowed here
+        sp.finish()
+    allowed = SANDGREN_KEYS if problem else table
+    from_file = set() if sp is None else {k for k in allowed if sp.has(k)} - set(given)
+    where = _Where(None if spec is None else str(spec), from_file,
+                   "spring check" if command == "check" else "spring")
+    for key in given:
+        if key not in allowed:
+            where.fail(key, f"not a value of the problem {problem!r} of {spec} (its "
+                            f"values: {', '.join(sorted(SANDGREN_KEYS))})")
+    values = {}
+    for key in allowed:
+        rd = opts if key in given else sp if key in from_file else None
+        if rd is not None:
+            values[key] = _read(rd, key, problem, allowed if not problem else SANDGREN_KEYS)
+    return values, where, problem, values.pop("name", None) or name, entries
+
+
+def _outputs(xlsx, plots, output, stem: str, replace: bool, inputs) -> None:
+    """Every file of the run planned and checked against the others and the input before
+    anything is computed or written (:func:`govopt.report.spring_outputs.check_outputs`)."""
+    from .report import spring_outputs as so
+
+    so.check_outputs(xlsx, plots, stem, replace=replace, inputs=inputs, output=output)
+
+
+def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool) -> Outcome:
+    from .report import spring_outputs as so
+
+    if output is not None:
+        out.written.append(so.write_check_spec(out, output, replace=replace))
+    if xlsx is not None:
+        out.written.append(so.write_workbook(out, xlsx, replace=replace))
+    if plots is not None:
+        out.written += so.write_plots(out, plots, stem, replace=replace)
+    return out
+
+
+def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
+        output=None, replace: bool = False, **options) -> Outcome:
+    """`govopt spring [SPEC] [options]` (module docstring): the sized spring's report (text or
+    JSON) and its failed checks; with ``xlsx`` a workbook, with ``plots`` a folder of plots
+    (:mod:`govopt.report.spring_outputs`), with ``output`` a spec of the spring for `govopt
+    spring check`, all planned and checked before the run and written after it (existing files
+    only with ``replace``). Raises :class:`GovoptError` (exit code 2) on bad input or when no
+    spring meets the requirements: nothing is written then."""
+    values, where, problem, name, entries = merged(spec, options)
+    stem = Path(spec).stem if spec is not None else "spring"
+    if (xlsx is not None or plots is not None or output is not None) and problem:
+        raise GovoptError(f"--xlsx, --plots, -o: not for the literature problem {problem!r} "
+                          "(its answer is the printed one)")
+    if problem == "sandgren-1990":
+        return _render(_sandgren(values, where, name or stem), json_out)
+    from .report.files import overwrite_option
+
+    with overwrite_option("--replace"):  # this command's --force is the spring's force
+        _outputs(xlsx, plots, output, stem, replace, [] if spec is None else [spec])
+        out = _design({**DEFAULTS, **values}, where, name, entries)
+        _render(out, json_out)
+        return _write(out, xlsx, plots, output, stem, replace)
+
+
+def check(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
+          replace: bool = False, **options) -> Outcome:
+    """`govopt spring check [SPEC] [options]`: a given spring's report (module docstring),
+    the same as a designed spring's without the optimiser's record; files as :func:`run`."""
+    values, where, _, name, entries = merged(spec, options, "check")
+    stem = Path(spec).stem if spec is not None else "spring"
+    from .report.files import overwrite_option
+
+    with overwrite_option("--replace"):
+        _outputs(xlsx, plots, None, stem, replace, [] if spec is None else [spec])
+        out = _check({**CHECK_DEFAULTS, **values}, where, name, entries)
+        _render(out, json_out)
+        return _write(out, xlsx, plots, None, stem, replace)
+
+
+def _render(out: Outcome, json_out: bool) -> Outcome:
+    from .report import spring_report as sr
+
+    out.data = sr.to_json(out)
+    if json_out:
+        import json
+
+        out.text = json.dumps(out.data, indent=2)
+    else:
+        out.text = sr.to_text(out)
+    return out
+
+
+# ---------------------------------------------------------------------------- shared rules
+
+
+def _require(v: dict, where: _Where, *keys) -> None:
+    for key in keys:
+        if v.get(key) is None:
+            where.missing(key)
+
+
+#: option pairs whose least must not exceed their largest (a range)
+PAIRS = (("index_min", "index_max", ""), ("turns_min", "turns_max", ""),
+         ("min_wire_diameter", "max_wire_diameter", "m"), ("stiffness", "max_stiffness", "N/m"))
+
+
+def _pairs(v: dict, where: _Where) -> None:
+    """An inverted range is an error naming both ends (not an infeasible spring)."""
+    for lo, hi, unit in PAIRS:
+        a, b = v.get(lo), v.get(hi)
+        if a is not None and b is not None and a > b:
+            u = f" {unit}" if unit else ""
+            raise GovoptError(f"{where(lo)} {a:.6g}{u} and {where(hi)} {b:.6g}{u}: the least "
+                              f"is above the largest (expected {lo} <= {hi})")
+
+
+def _material_rules(v: dict, where: _Where) -> None:
+    """What a wire grade must come with, and what needs one: the tensile strength of
+    ``custom`` only, a load cycle's fatigue only with a grade's data; a grade whose shear
+    modulus varies with the wire needs it; without a grade, the allowable and the modulus."""
+    from .springs import materials
+
+    material = v.get("material")
+    if v.get("tensile_strength") is not None and material != "custom":
+        where.fail("tensile_strength", "applies to --material custom only (a grade's R_m is its "
+                   "standard's), got " + (f"material {material!r}" if material
+                                          else "no --material"))
+    if material == "custom" and v.get("tensile_strength") is None:
+        where.missing("tensile_strength", " with material 'custom'")
+    cycle = [k for k in ("fatigue_min_force", "fatigue_max_force") if v.get(k) is not None]
+    if cycle and material is None:
+        where.fail(cycle[0], "a load cycle's fatigue needs a wire grade's fatigue data: give "
+                             "--material (e.g. 'EN10270-1 DH')")
+    if len(cycle) == 1:
+        raise GovoptError(f"{where('fatigue_min_force')} and {where('fatigue_max_force')}: "
+                          "give both (the load cycle)")
+    if cycle and v["fatigue_min_force"] > v["fatigue_max_force"]:
+        where.fail("fatigue_min_force", f"expected at most {where('fatigue_max_force')}, "
+                                        f"got {v['fatigue_min_force']:.6g} N")
+    if material is not None and v.get("shear_modulus") is None and not isinstance(
+            materials.material(material, tensile_strength=1.0).G, float):
+        where.missing("shear_modulus", f" with material {material!r}, whose shear modulus "
+                                       "varies with the wire diameter")
+    if material is None:
+        _require(v, where, "allowable_stress", "shear_modulus")
+
+
+def _rules(v: dict):
+    from .springs.assessment import Rules
+
+    return Rules(method=v["rules"], allowable=v.get("allowable_stress"),
+                 correction=v.get("correction") or (None if v.get("material") else "wahl"),
+                 peened=v["peened"], seating=v["seating"],
+                 index=(v["index_min"], v["index_max"]),
+                 fatigue_safety=v["min_fatigue_safety"], cycles=v["life"],
+                 tolerance_grade=v.get("tolerance_grade", 2))
+
+
+def _material(v: dict):
+    from .springs import materials
+
+    if v.get("material") is None:
+        return materials.given(v["shear_modulus"], v.get("density") or 7850.0)
+    return materials.material(v["material"], tensile_strength=v.get("tensile_strength"),
+                              G=v.get("shear_modulus"), density=v.get("density"))
+
+
+def _outcome(name, command, assessment, record, entries, v, notes=(), sizing=None) -> Outcome:
+    """The outcome of a designed or checked spring; a spring without a name (options alone)
+    named by what it is, in the units of the input."""
+    from .report.spring_report import shown_units
+
+    shown = shown_units(entries)
+    if not name:
+        sp = assessment.spring
+        grade = f", {v['material']}" if v.get("material") else ""
+        if command == "design":
+            name = (f"{sp.kind} spring for {shown.text(v['force'], 'N', 4)} at "
+                    f"{shown.text(v['stiffness'], 'N/m', 4)}{grade}")
+        else:
+            name = (f"{sp.kind} spring d {shown.text(sp.d, 'm', 4)}, D "
+                    f"{shown.text(sp.D, 'm', 4)}, n {assessment.value('active coils'):.4g}"
+                    f"{grade}")
+    return Outcome(name, command, assessment, record, list(assessment.checks), shown, v,
+                   [*notes, *assessment.notes], sizing=sizing)
+
+
+# ---------------------------------------------------------------------------- design
 
 
 def _lengths(v: dict, where: _Where) -> None:
@@ -183,112 +482,50 @@ def _lengths(v: dict, where: _Where) -> None:
     v["stiffness"] = rate
 
 
-def merged(spec: str | Path | None, options: dict) -> tuple[dict, _Where, str | None, str]:
-    """The spec's values overridden by the options given (not None), read through the
-    governor spec's :class:`govopt.reader.Reader` (unknown keys with a did-you-mean, units,
-    types), in SI; the :class:`_Where` naming each value's origin, the literature problem and
-    the name."""
-    entries: list = []
-    given = {k: v for k, v in options.items() if v is not None}
-    opts, sp, problem, name = _option_reader(given, entries), None, None, "spring"
-    if spec is not None:
-        top = Reader(str(spec), read_spec_data(spec), "", entries)
-        name = top.text("name") or Path(spec).stem
-        top.text("description")
-        if not top.has("spring"):
-            top.fail("spring", "missing (required: a [spring] table)")
-        sp = top.sub("spring")
-        top.finish()
-        problem = sp.choice("problem", PROBLEMS, None)
-        for key in SANDGREN_KEYS if problem else OPTIONS:
-            sp.raw(key, False)  # the keys allowed here
-        sp.finish()
-    allowed = SANDGREN_KEYS if problem else OPTIONS
-    from_file = set() if sp is None else {k for k in allowed if sp.has(k)} - set(given)
-    where = _Where(None if spec is None else str(spec), from_file)
-    for key in given:
-        if key not in allowed:
-            where.fail(key, f"not a value of the problem {problem!r} of {spec} (its "
-                            f"values: {', '.join(sorted(SANDGREN_KEYS))})")
-    values = {}
-    for key in allowed:
-        rd = opts if key in given else sp if key in from_file else None
-        if rd is not None:
-            values[key] = _read(rd, key, problem)
-    return values, where, problem, name
-
-
-def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
-        replace: bool = False, **options) -> Outcome:
-    """`govopt spring [SPEC] [options]` (module docstring): the sized spring's report (text or
-    JSON) and its failed checks; with ``xlsx`` a workbook (the spring maker's sheet, the
-    checks, the force-length table) and with ``plots`` a folder of plots
-    (:mod:`govopt.report.spring_outputs`), checked before the run and written after it (existing
-    files only with ``replace``). Raises :class:`GovoptError` (exit code 2) on bad input or
-    when no spring meets the requirements: nothing is written then."""
-    values, where, problem, name = merged(spec, options)
-    stem = Path(spec).stem if spec is not None else "spring"
-    if (xlsx is not None or plots is not None) and problem:
-        raise GovoptError(f"--xlsx, --plots: not for the literature problem {problem!r} "
-                          "(its answer is the printed one)")
-    if problem == "sandgren-1990":
-        return _sandgren(values, where, json_out)
-    if xlsx is None and plots is None:
-        return _size({**DEFAULTS, **values}, where, name, json_out)
-    from .report import spring_outputs as so
-    from .report.files import overwrite_option
-
-    with overwrite_option("--replace"):  # this command's --force is the spring's force
-        so.check_outputs(xlsx, plots, stem, replace=replace,
-                         inputs=[] if spec is None else [spec])
-        out = _size({**DEFAULTS, **values}, where, name, json_out)
-        if xlsx is not None:
-            out.written.append(so.write_workbook(out, xlsx, replace=replace))
-        if plots is not None:
-            out.written += so.write_plots(out, plots, stem, replace=replace)
-    return out
-
-
-def _require(v: dict, where: _Where, *keys) -> None:
-    for key in keys:
-        if v.get(key) is None:
-            where.missing(key)
-
-
-def _size(v: dict, where: _Where, name: str, json_out: bool) -> Outcome:
-    from .optimize.spring_sizing import size_spring
+def _catalogue(v: dict, where: _Where):
+    """The wire sizes to order from (m) and their source, or None for any wire: the grade's
+    table by default when a grade is given (:func:`govopt.springs.materials.wire_sizes`)."""
     from .springs import materials
+
+    sizes = v.get("wire_sizes") or ("preferred" if v.get("material") else "continuous")
+    if sizes == "continuous":
+        if v.get("coil_step") is not None:
+            where.fail("coil_step", "a step of coils needs wire sizes to order from "
+                                    "(--wire-sizes preferred or a list)")
+        return None, ""
+    if sizes == "preferred":
+        return materials.wire_sizes(v.get("material"))
+    return sizes, "the wire diameters given (" + where("wire_sizes") + ")"
+
+
+def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
+    from .optimize.spring_catalogue import size_orderable_spring
+    from .optimize.spring_sizing import size_spring
+    from .springs.assessment import assess
 
     _require(v, where, "force")
     _lengths(v, where)
     if v.get("stiffness") is None:
         where.missing("stiffness", " (or the stroke: length_1 and length_2, or stroke, with "
                                    "the forces)")
-    material = v.get("material")
-    if material is not None and v.get("shear_modulus") is None and not isinstance(
-            materials.material(material, tensile_strength=1.0).G, float):
-        where.missing("shear_modulus", f" with material {material!r}, whose shear modulus "
-                                       "varies with the wire diameter")
-    if material is None:
-        _require(v, where, "allowable_stress", "shear_modulus")
-    cycle = None
-    if (v.get("fatigue_min_force") is None) != (v.get("fatigue_max_force") is None):
-        raise GovoptError(f"{where('fatigue_min_force')} and {where('fatigue_max_force')}: "
-                          "give both (the load cycle)")
-    if v.get("fatigue_min_force") is not None:
-        cycle = (v["fatigue_min_force"], v["fatigue_max_force"])
-        if cycle[0] > cycle[1]:
-            where.fail("fatigue_min_force", f"expected at most {where('fatigue_max_force')}, "
-                                            f"got {cycle[0]:.6g} N")
-    k, k_max = v["stiffness"], v.get("max_stiffness")
-    if k_max is not None and k_max < k:
-        where.fail("max_stiffness", f"expected at least the stiffness ({k * 1e-3:.6g} N/mm), "
-                                    f"got {k_max * 1e-3:.6g} N/mm")
+    _pairs(v, where)
+    _material_rules(v, where)
     F, F_min = v["force"], v.get("min_force") or 0.0
     if F_min > F:
         where.fail("min_force", f"expected at most the force ({F:.6g} N), got {F_min:.6g} N")
     if v.get("length_2") is not None and v["kind"] != "compression":
         where.fail("length_2", "installed lengths are for compression springs")
+    if v.get("loops") is not None and v["kind"] != "extension":
+        where.fail("loops", "loops are an extension spring's (--kind extension); a compression "
+                            "spring has --ends")
+    if v.get("ends") is not None and v["kind"] != "compression":
+        where.fail("ends", "end forms are a compression spring's; an extension spring has "
+                           "--loops")
+    wires, source = _catalogue(v, where)
+    material = v.get("material")
+    cycle = None
+    if v.get("fatigue_min_force") is not None:
+        cycle = (v["fatigue_min_force"], v["fatigue_max_force"])
     density = v.get("density") or (None if material else 7850.0)
     bounds = dict(
         k_s=v.get("allowable_stress"), G=v.get("shear_modulus"), density=density,
@@ -298,218 +535,155 @@ def _size(v: dict, where: _Where, name: str, json_out: bool) -> Outcome:
         L0_max=v.get("max_free_length"), Lc_max=v.get("max_solid_length"),
         n_min=v["turns_min"], C_min=v["index_min"], C_max=v["index_max"],
         **({"n_max": v["turns_max"]} if v.get("turns_max") is not None else {}))
+    order = {} if wires is None else dict(wires=wires, coil_step=v.get("coil_step") or 0.5,
+                                          wire_source=source)
     try:
-        sizing = size_spring(
-            F, k, grade=material, kind=v["kind"], rules=v["rules"],
+        sizing = (size_orderable_spring if order else size_spring)(
+            F, v["stiffness"], grade=material, kind=v["kind"], rules=v["rules"],
             correction=v.get("correction"), tensile_strength=v.get("tensile_strength"),
             F_min=F_min, fatigue=cycle, min_fatigue_safety=v["min_fatigue_safety"],
-            peened=v["peened"], cycles=v["life"], ends=v["ends"], seating=v["seating"],
-            objective=OBJECTIVES[v["objective"]], stiffness_max=k_max, L2=v.get("length_2"),
-            **bounds)
+            peened=v["peened"], cycles=v["life"], ends=v.get("ends") or v.get("loops"),
+            seating=v["seating"], objective=OBJECTIVES[v["objective"]],
+            stiffness_max=v.get("max_stiffness"), L2=v.get("length_2"), **order, **bounds)
     except ValueError as exc:
         raise GovoptError(str(exc)) from None
-    sol = sizing.solution
-    if not sol.ok:
+    if not sizing.solution.ok or sizing.spring is None:
         why = sizing.diagnosis
         raise GovoptError("no spring meets these requirements" + (f": {why}" if why else ""))
-    data = _data(sizing, v, name)
-    text = None if json_out else _text(sizing, data, v)
-    if json_out:
-        import json
-
-        from .jsonable import jsonable
-
-        text = json.dumps(jsonable(data), indent=2)
-    failed = [c.name for c in sizing.checks if not c.passed] if material is not None else []
-    return Outcome(text, data, failed, len(sizing.checks), sizing, v, name,
-                   claim(sizing, bound_text(sizing, v)))
+    a = assess(sizing.spring, sizing.mat, sizing.loads, sizing.rules)
+    return _outcome(name, "design", a, sizing.record(), entries, v, sizing=sizing)
 
 
-def _data(sizing, v: dict, name: str) -> dict:
-    """The JSON of a sized spring: SI, each key's unit in its name."""
-    sol = sizing.solution
-    out = {"name": name, "wire_diameter_m": sol.d, "coil_radius_m": sol.r,
-           "active_turns": sol.n, "mass_kg": sol.mass, "end_coils": sol.end_coils,
-           "active_mass_kg": sol.mass * sol.n / (sol.n + sol.end_coils),
-           "stiffness_N_per_m": sol.stiffness, "shear_stress_Pa": sol.stress,
-           "wahl_factor": sol.wahl_factor, "spring_index": sol.index,
-           "surge_frequency_Hz": sol.surge_frequency, "sensitivities": sol.sensitivities,
-           "objective": v["objective"], "objective_value": _shown(sol.objective, v),
-           "active": sol.active, "global_optimum": sizing.certified,
-           # a bound on the objective as asked: the energy per mass's is an upper one
-           ("upper_bound" if v["objective"] == "energy per mass" else "lower_bound"):
-               _shown(sizing.lower_bound, v), "gap_to_bound": sizing.gap,
-           "stress_correction": sol.correction,
-           "duality_gap_log": sol.certificate.get("duality_gap_log"),
-           "stored_energy_J": v["force"]**2 / (2.0 * sol.stiffness)}
-    out["energy_per_mass_J_per_kg"] = out["stored_energy_J"] / sol.mass
-    out["free_length_m"] = sizing.free_length  # spring_sizing.lengths: one computation
-    if sizing.kind == "compression":
-        out["solid_length_m"] = sizing.solid_length
-    if v.get("length_2") is not None:
-        # the stroke as given, else the spring's from F1 to F2 (L2 and a stiffness given)
-        H = v.get("stroke") or (v["force"] - (v.get("min_force") or 0.0)) / sol.stiffness
-        out.update(installed_length_2_m=v["length_2"], stroke_m=H,
-                   installed_length_1_m=v["length_2"] + H)
-    if v.get("material") is not None:
-        out.update({"material": v["material"], "kind": v["kind"],
-                    "initial_tension_N": sizing.initial_tension,
-                    "checks": [c.to_dict() for c in sizing.checks], "notes": sizing.notes})
-        life = body_life(sizing, v)
-        if life is not None:  # inf: at least the data's life (JSON null with a flag)
-            out["fatigue_life_cycles"] = life
-    return out
+# ---------------------------------------------------------------------------- check
 
 
-def _shown(value: float, v: dict) -> float:
-    """The objective as asked: the energy per mass is the reciprocal of what the GP minimises
-    (J/kg); the others as minimised (SI)."""
-    return 1.0 / value if v["objective"] == "energy per mass" else value
+def _check(v: dict, where: _Where, name: str, entries) -> Outcome:
+    """A given spring (module docstring): its geometry, material, loads and rules read and
+    checked for consistency, then assessed."""
+    from .springs import helical as hx
+    from .springs.assessment import Loads, Spring, assess, extension_free_length
 
-
-#: the body's fatigue row (:mod:`govopt.springs.checks`)
-BODY_FATIGUE = "body fatigue safety factor"
-
-
-def body_life(sizing, v: dict) -> float | None:
-    """The estimated life (cycles) of the body under the fatigue load cycle
-    (:func:`govopt.springs.fatigue.finite_life`: Basquin's line from ``0.9 S_su`` at 1e3
-    cycles to the data's endurance at 1e7, read at the row's safety): ``inf`` when it passes
-    at the data's life, nan below 1e3 cycles; None without a fatigue row."""
-    from .springs import fatigue, materials
-    from .springs.checks import DATA_CYCLES
-
-    row = next((c for c in sizing.checks if c.name == BODY_FATIGUE), None)
-    if row is None:
-        return None
-    mat = materials.material(v["material"], tensile_strength=v.get("tensile_strength"),
-                             G=v.get("shear_modulus"), density=v.get("density"))
-    Sse, Ssu = fatigue.reversed_endurance(mat, sizing.solution.d, v["rules"], v["peened"])
-    return float(fatigue.finite_life(row.value, Sse, Ssu, DATA_CYCLES))
-
-
-def _verdict(check, sizing, life=None) -> str:
-    """PASS or FAIL; a fatigue row past its data's life says so (strength held constant), and
-    the body's row below 1 (the stress above the data's endurance) its estimated finite
-    life."""
-    from .springs.checks import DATA_CYCLES
-
-    verdict = "PASS" if check.passed else "FAIL"
-    if "fatigue" in check.name and sizing.cycles > DATA_CYCLES:
-        verdict += (f" (life {sizing.cycles:.3g} cycles is beyond the data's {DATA_CYCLES:.0e}:"
-                    " extrapolated)")
-    if check.name == BODY_FATIGUE and life is not None and check.value < 1.0:
-        if math.isnan(life):
-            verdict += " (estimated life below 1e3 cycles: quasi-static, no S-N estimate)"
-        elif math.isfinite(life):
-            enough = "enough for" if life >= sizing.cycles else "short of"
-            verdict += (f" at the data's {DATA_CYCLES:.0e} cycles; estimated finite life "
-                        f"{life:.3g} cycles, {enough} the required {sizing.cycles:.3g} (Basquin "
-                        "line 0.9 S_su at 1e3 to the endurance at 1e7, Shigley 9th ed. §6-7)")
-    return verdict
-
-
-def bound_text(sizing, v: dict) -> str:
-    """The certified bound in the objective's unit (the energy per mass: an upper bound)."""
-    if v["objective"] == "energy per mass":
-        return f"{1.0 / sizing.lower_bound:.5g} J/kg"
-    scale, unit = OBJECTIVE_UNITS[OBJECTIVES[v["objective"]]]
-    return f"{sizing.lower_bound * scale:.5g} {unit}"
-
-
-def claim(sizing, bound: str) -> str:
-    """What the optimiser can say of its design: a certified global optimum, or optimal within
-    X % of a certified lower bound (``bound``: that bound as text), or no bound."""
-    if sizing.certified:
-        return "global optimum certified"
-    if math.isfinite(sizing.gap):
-        return f"optimal within {100 * sizing.gap:.3g} % of a certified bound ({bound})"
-    return "no certified bound (the relaxation was not solved to optimality)"
-
-
-def _text(sizing, data: dict, v: dict) -> str:
-    """The text report: the spring first, then the certificate, sensitivities, checks."""
-    from .springs.helical import correction_factor
-
-    sol, lines = sizing.solution, []
-    k_b = float(correction_factor(sol.index, "bergstrasser"))
-    factor = {"none": "uncorrected stress", "wahl": f"Wahl K {sol.wahl_factor:.4f}",
-              "bergstrasser": f"Bergstraesser k {k_b:.4f}"}[sol.correction]
-    lines.append(f"d = {sol.d * 1e3:.4f} mm, D = {2e3 * sol.r:.4f} mm, n = {sol.n:.4f} active "
-                 f"+ {sol.end_coils:.3g} end coils, mass = {sol.mass * 1e3:.5g} g, stress = "
-                 f"{sol.stress / 1e6:.2f} MPa (index {sol.index:.2f}, {factor})")
-    if v.get("length_2") is not None:
-        lines.append(f"free length {data['free_length_m'] * 1e3:.2f} mm, installed "
-                     f"L1 = {data['installed_length_1_m'] * 1e3:.2f} mm at "
-                     f"{v.get('min_force') or 0.0:.4g} N, L2 = {v['length_2'] * 1e3:.2f} mm at "
-                     f"{v['force']:.4g} N (stroke {data['stroke_m'] * 1e3:.2f} mm), stiffness "
-                     f"{sol.stiffness * 1e-3:.4f} N/mm")
-    objective, bound = v["objective"], bound_text(sizing, v)
-    if objective == "energy per mass":
-        lines.append(f"most stored energy per mass: {data['objective_value']:.6g} J/kg "
-                     f"({data['stored_energy_J']:.4g} J at {v['force']:.4g} N)")
+    _require(v, where, "wire_diameter")
+    _pairs(v, where)
+    _material_rules(v, where)
+    d = v["wire_diameter"]
+    given = [k for k in ("mean_diameter", "outer_diameter") if v.get(k) is not None]
+    if len(given) != 1:
+        raise GovoptError(f"{where('mean_diameter')} or {where('outer_diameter')}: give one"
+                          + (" (got both)" if given else " (the coil's diameter)"))
+    D = v["mean_diameter"] if given[0] == "mean_diameter" else v["outer_diameter"] - d
+    if not D > d:
+        where.fail(given[0], f"expected a coil wider than the wire ({d * 1e3:.6g} mm), got a "
+                             f"mean diameter of {D * 1e3:.6g} mm")
+    mat, kind = _material(v), v["kind"]
+    G, E = float(mat.shear_modulus(d)), float(mat.elastic_modulus(d))
+    notes = []
+    if kind == "compression":
+        for key in ("loops", "initial_tension"):
+            if v.get(key) is not None:
+                where.fail(key, "an extension spring's (--kind extension)")
+        _require(v, where, "active_coils", "free_length")
+        n, ends = v["active_coils"], v.get("ends") or "closed_ground"
+        total = v.get("total_coils")
+        if total is not None and not total > n:
+            where.fail("total_coils", f"expected more than the active coils ({n:g}), got "
+                                      f"{total:g}")
+        end_coils = hx.end_coils(ends) if total is None else total - n
+        spring = Spring(kind, d, D, n, end_coils, v["free_length"], ends)
+        R = float(hx.stiffness(d, D, n, G))
     else:
-        scale, unit = OBJECTIVE_UNITS[OBJECTIVES[objective]]
-        if objective != "mass":
-            lines.append(f"least {objective}: {sol.objective * scale:.6g} {unit}")
-    lines.append(f"{claim(sizing, bound)} (duality gap in log space "
-                 f"{data['duality_gap_log']:.2g}); active in the last GP: "
-                 f"{', '.join(sol.active)}")
-    for name, value in sol.sensitivities.items():
-        if abs(value) > 1e-6:
-            lines.append(f"  +1 % on {name} -> {value:+.3f} % {sol.objective_name}")
-    material, kind = v.get("material"), v["kind"]
-    if material is not None:
-        extra = (f"free length {sizing.free_length * 1e3:.2f} mm"
-                 + (" (coils clear at the force)" if v.get("length_2") is None else "")
-                 if kind == "compression" else
-                 f"initial tension {sizing.initial_tension:.4g} N")
-        lines.append(f"{kind} spring of {material}: {extra}; checks (value, limit, margin, "
-                     "source):")
-        life = data.get("fatigue_life_cycles")
-        for c in sizing.checks:
-            scale, unit = CHECK_UNITS.get(c.unit, (1.0, c.unit))
-            lines.append(f"  {c.name}: {c.value * scale:.6g} {c.sense} {c.limit * scale:.6g} "
-                         f"{unit}, margin {100 * c.margin:+.2f} % "
-                         f"{_verdict(c, sizing, life)} - {c.source}")
-        lines.extend(f"  note: {note}" for note in sizing.notes)
-    return "\n".join(lines)
+        if v.get("ends") is not None:
+            where.fail("ends", "a compression spring's; an extension spring has --loops")
+        loops = v.get("loops") or "full_loop"
+        if v.get("total_coils") is not None:  # an extension spring's body coils
+            n_b = v["total_coils"]
+        else:
+            _require(v, where, "active_coils")
+            n_b = v["active_coils"] - G / E
+        n = n_b + G / E
+        R = float(hx.stiffness(d, D, n, G))
+        F0 = v.get("initial_tension")
+        if F0 is None:
+            lo, hi = hx.initial_tension_range(D / d)
+            F0 = float(min(hx.force_at_stress(0.5 * (lo + hi), d, D),
+                           v.get("min_force") or math.inf))
+            notes.append(f"initial tension not given: {F0:.4g} N, the middle of Shigley's "
+                         "preferred range (eq. (10-40)), at most the least force")
+        L0 = v.get("free_length") or float(extension_free_length(d, D, n_b, loops))
+        spring = Spring(kind, d, D, n_b, 0.0, L0, loops, F0)
+    F1, F2 = _forces(v, where, spring, R)
+    cycle = None
+    if v.get("fatigue_min_force") is not None:
+        cycle = (v["fatigue_min_force"], v["fatigue_max_force"])
+    a = assess(spring, mat, Loads(F1, F2, cycle), _rules(v))
+    return _outcome(name, "check", a, None, entries, v, notes)
 
 
-def _sandgren(raw: dict, where: _Where, json_out: bool) -> Outcome:
+def _forces(v: dict, where: _Where, spring, R: float) -> tuple[float, float]:
+    """The working forces ``F1 <= F2``: given, or from the working lengths and the rate."""
+    sign = 1.0 if spring.kind == "compression" else -1.0
+    F0 = spring.F0
+
+    def at(length):
+        return (F0 if sign < 0 else 0.0) + R * sign * (spring.L0 - length)
+
+    out = []
+    for force, length in (("min_force", "length_1"), ("force", "length_2")):
+        if v.get(force) is not None and v.get(length) is not None:
+            raise GovoptError(f"{where(force)} and {where(length)}: give one (the other "
+                              "follows from the rate)")
+        out.append(v.get(force) if v.get(length) is None else at(v[length]))
+    F1, F2 = out
+    if F2 is None:
+        where.missing("force", " (or the working length: length_2)")
+    F1 = 0.0 if F1 is None else F1
+    if not F1 <= F2:
+        where.fail("min_force" if v.get("min_force") is not None else "length_1",
+                   f"expected at most the force at L2 ({F2:.6g} N), got {F1:.6g} N")
+    if F1 < 0.0 or F2 < 0.0:
+        where.fail("length_2" if v.get("length_2") is not None else "force",
+                   "a working length beyond the free length (the spring would pull)")
+    return F1, F2
+
+
+# ---------------------------------------------------------------------------- Sandgren
+
+
+def _sandgren(raw: dict, where: _Where, name: str) -> Outcome:
     """Sandgren's (1990) mixed-discrete spring with the spec's data (SI in ``raw``; inch, lbf,
-    psi inside, as the problem is stated): the exact optimum by enumeration."""
-    from .optimize.spring_literature import SANDGREN, solve_sandgren
+    psi inside, as the problem is stated): the exact optimum by enumeration, reported as every
+    spring (its own constraints g1..g8 the checks); an infeasible variant gets the conflicting
+    data keys from its continuous relaxation's diagnosis."""
+    from .optimize import spring_literature as sl
+    from .springs import materials
+    from .springs.assessment import Loads, Rules, Spring, assess
 
     inch, lbf = 0.0254, 4.4482216152605
     scale = {"length": inch, "force": lbf, "stress": lbf / inch**2}
-    names = {"force": "F_max", "min_force": "F_load", "allowable_stress": "S",
-             "shear_modulus": "G", "max_free_length": "l_max", "min_wire_diameter": "d_min",
-             "max_outer_diameter": "D_max", "max_preload_deflection": "delta_pm",
-             "min_working_deflection": "delta_w"}
-    p = dict(SANDGREN)
+    p = dict(sl.SANDGREN)
     for key, q in raw.items():  # SI (read by merged) -> the problem's units
-        p[names[key]] = q / scale[SANDGREN_KEYS[key]]
+        p[sl.SANDGREN_DATA[key]] = q / scale[SANDGREN_KEYS[key]]
     if not p["F_load"] < p["F_max"]:
         where.fail("min_force", "expected below the force")
-    best = solve_sandgren(p)
+    best = sl.solve_sandgren(p)
     if not math.isfinite(best.objective):
-        raise GovoptError("no spring meets these requirements: no wire of Sandgren's table "
-                          "and whole number of coils satisfies g1..g8")
-    data = {"problem": "sandgren-1990", "active_turns": best.N,
-            "mean_coil_diameter_m": best.D * inch, "wire_diameter_m": best.d * inch,
-            "objective": "volume pi^2 D d^2 (N + 2) / 4",
-            "objective_value_in3": best.objective, "pairs_examined": best.checked,
-            "global_optimum": True}
-    if json_out:
-        import json
+        raise GovoptError(sl.sandgren_diagnosis(p, where))
+    record = sl.sandgren_record(p, best)
+    d, D, N = best.d * inch, best.D * inch, best.N
+    L0 = sl.sandgren_free_length(p, best) * inch
+    spring = Spring("compression", d, D, float(N), 2.0, L0, "closed_ground")
+    mat = materials.given(p["G"] * lbf / inch**2, 7850.0)
+    loads = Loads(p["F_load"] * lbf, p["F_max"] * lbf)
+    a = assess(spring, mat, loads, Rules(allowable=p["S"] * lbf / inch**2, correction="wahl",
+                                         index=(3.0, math.inf)))
+    from .report.spring_report import IMPERIAL, METRIC, Shown
 
-        return Outcome(json.dumps(data, indent=2), data)
-    text = (f"Sandgren (1990) mixed-discrete spring: N = {best.N} coils, D = {best.D:.5f} in, "
-            f"d = {best.d} in (table), volume pi^2 D d^2 (N + 2) / 4 = {best.objective:.6g} in^3"
-            f"\nglobal optimum certified by exhaustive bounded enumeration "
-            f"({best.checked} wire/coil pairs examined, every one that could beat it)")
-    return Outcome(text, data)
+    shown = Shown({**METRIC, **IMPERIAL, "m": ("in", inch), "N": ("lbf", lbf),
+                   "Pa": ("psi", lbf / inch**2), "N/m": ("lbf/in", lbf / inch)})
+    notes = ["the figures with a steel wire's density, 7850 kg/m^3 (the problem states none)"]
+    return Outcome(name, "sandgren-1990", a, record, sl.sandgren_checks(p, best), shown, raw,
+                   notes)
 
 
-__all__ = ["DEFAULTS", "OBJECTIVES", "OPTIONS", "Outcome", "merged", "run"]
+__all__ = ["CHECK_OPTIONS", "DEFAULTS", "OBJECTIVES", "OPTIONS", "ORDER_OPTIONS", "Outcome",
+           "check", "merged", "run"]

@@ -478,16 +478,24 @@ SPRING = {"--force": "606 kgf", "--stiffness": "59.7 kgf/cm",
           "--max-body-length": "30 cm", "--min-surge-frequency": "40 Hz"}
 
 
-def _spring_cases() -> Iterator[Case]:
-    base = [a for k, v in SPRING.items() for a in (k, v)]
-    for option, value in SPRING.items():
+def _mutated(options: dict, command: tuple[str, ...], tail: tuple[str, ...] = ()
+             ) -> Iterator[Case]:
+    """Every leaf mutation of each of ``options`` (option -> a valid value) in the command
+    line ``command`` with all of them (and ``tail``)."""
+    base = [a for k, v in options.items() for a in (k, v)]
+    for option, value in options.items():
         for kind, new in _leaf_mutations(value, option):
             if kind in ("array_for_scalar", "table_for_scalar"):
                 continue
             args = list(base)
             args[args.index(option) + 1] = str(new)
-            yield Case(f"spring/{option}/{kind}", ("spring", *args), None, kind, option,
-                       nonsense(kind, option), "spring")
+            yield Case(f"{' '.join(command)}/{option}/{kind}", (*command, *args, *tail), None,
+                       kind, option, nonsense(kind, option), "spring")
+
+
+def _spring_cases() -> Iterator[Case]:
+    base = [a for k, v in SPRING.items() for a in (k, v)]
+    yield from _mutated(SPRING, ("spring",))
     yield Case("spring/--correction/bogus", ("spring", *base, "--correction", "bogus"), None,
                "bogus_choice", "--correction", True, "spring")
     # an option's bytes that are not UTF-8 (Python hands them on as lone surrogates)
@@ -495,6 +503,12 @@ def _spring_cases() -> Iterator[Case]:
     args[args.index("--force") + 1] = "606 \udcffkgf"
     yield Case("spring/--force/not_utf8", ("spring", *args), None, "not_utf8", "--force", True,
                "spring")
+    yield from _mutated(SPRING_CHECK, ("spring", "check"), ("--active-coils", "8"))
+
+
+#: ``govopt spring check`` options and a valid value of each (a spring given as it is)
+SPRING_CHECK = {"--wire-diameter": "3 mm", "--mean-diameter": "20 mm",
+                "--free-length": "60 mm", "--force": "100 N", "--material": "EN10270-1 SH"}
 
 
 def study_specs() -> list[Path]:

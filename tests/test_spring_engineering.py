@@ -250,7 +250,8 @@ def test_compression_spring_checks_without_forcing():
     s_max = (F.max() + 0.1 * (F.max() - F.min())) / R  # [spring] overtravel default 0.1
     assert res.check("working length >= least length (coil clash)").value == \
         pytest.approx(L0 - s_max, rel=1e-12)
-    assert rep["sheet"]["solid_length_m"] == pytest.approx((8 + 2) * 3e-3)  # n_t = n + 2
+    # EN 13906-1: L_c = n_t d_max, n_t = n + 2, d_max = 3 mm + 0.030 mm (EN 10270-1 tolerance)
+    assert rep["sheet"]["solid_length_m"] == pytest.approx((8 + 2) * 3.03e-3, rel=1e-12)
     # EN 15800: a finer grade narrows the spread of the governed speed range
     widths = []
     for grade in (1, 3):
@@ -344,10 +345,10 @@ def test_spring_command_with_a_grade():
                  "hook A fatigue safety factor", "body fatigue safety factor"):
         assert checks[name]["source"] and checks[name]["passed"]
     assert min(c["value"] for n, c in checks.items() if "fatigue" in n) >= 1.3
-    d = out["wire_diameter_m"]
+    d, D = out["spring"]["wire_diameter_m"], out["spring"]["mean_coil_diameter_m"]
     assert checks["body static shear stress"]["limit"] == pytest.approx(0.45 * rm_dh(d))
     assert checks["body static shear stress"]["value"] == pytest.approx(
-        8 * 1000 * 2 * out["coil_radius_m"] / (math.pi * d**3))
+        8 * 1000 * D / (math.pi * d**3))
 
 
 def test_spring_cli_governor_load_builds_and_exits_by_its_checks():
@@ -363,8 +364,8 @@ def test_spring_cli_governor_load_builds_and_exits_by_its_checks():
     out = invoke(base + ["--allowable-stress", "4000 kgf/cm^2", "--shear-modulus",
                          "850000 kgf/cm^2", "--json"])
     assert out.exit_code == 0, out.output
-    d = json.loads(out.stdout)
-    assert 4 - 1e-9 <= d["spring_index"] <= 12 + 1e-9 and d["active_turns"] >= 3 - 1e-9
+    d = json.loads(out.stdout)["spring"]
+    assert 4 - 1e-9 <= d["spring_index"] <= 12 + 1e-9 and d["active_coils"] >= 3 - 1e-9
     for kind in ("extension", "compression"):
         run = invoke(base + ["--material", "EN10270-1 DH", "--kind", kind, "--json"])
         assert run.exception is None and "Traceback" not in run.stderr, run.output

@@ -61,10 +61,9 @@ def wire(material) -> mt.Material:
     """The spec's ``[material]`` as a wire grade: the grade with the spec's explicit G, density
     and R_m; without a grade a stand-in carrying G and density only (no R_m)."""
     if material.grade is None:
-        return replace(mt.materials()["custom"], grade="as specified (no wire grade)",
-                       standard="shear modulus and allowable stress given in the spec",
-                       G=float(material.shear_modulus), density=float(material.density),
-                       rm={"kind": "constant", "MPa": math.nan, "source": "no wire grade"})
+        return replace(mt.given(material.shear_modulus, material.density),
+                       grade="as specified (no wire grade)",
+                       standard="shear modulus and allowable stress given in the spec")
     return mt.material(material.grade, tensile_strength=material.tensile_strength,
                        G=material.shear_modulus, density=material.density)
 

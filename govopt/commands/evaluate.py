@@ -144,19 +144,17 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
     """Check the outputs, compute a Result, write the requested files, print it and say what
     was written where (on stderr with ``--json``); a user's error (GovoptError) exits 2 and a
     result with failed checks 1, through :func:`~govopt.commands.common.guarded`."""
-    from ..report.files import check_output, drawn_design, overwrite_policy, write_design_spec
+    from ..report.files import check_planned, drawn_design, overwrite_policy, write_design_spec
     from ..report.text import format_result
 
-    outputs = [(p, what, force)
-               for p, what in ((output, "design spec"), (xlsx, "workbook")) if p is not None]
-    for p, what, overwrite in outputs:  # before the run: fail in a second, not after it
-        check_output(p, overwrite=overwrite, inputs=[spec], what=what,
-                     others=[q for q, _, _ in outputs if q is not p])
+    outputs = [(p, what) for p, what in ((output, "design spec"), (xlsx, "workbook"))
+               if p is not None]  # before the run: fail in a second, not after it
+    check_planned(outputs, overwrite=force, inputs=[spec])
     if plots is not None:  # the folder, and no plot replaced without --force
         from ..report.plot_files import check_plot_dir, write_plots
 
         check_plot_dir(plots, spec.stem, overwrite=force, inputs=[spec],
-                       others=[p for p, _, _ in outputs])
+                       others=[p for p, _ in outputs])
     res = compute()
     if output is not None:  # rounded as drawn, and evaluated again: the report is its
         text, res, _ = drawn_design(res)

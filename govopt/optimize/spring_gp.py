@@ -99,11 +99,14 @@ STIFFNESS_MODES = ("equality", "band")
 #: :meth:`SpringGP.solve` keywords of the free-length limit (``free_length=True``)
 FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "Di_min",
                     "L0_max", "Lc_max", "L2", "clear", "Ln_max", "L2_solid", "clear_solid",
-                    "pitch_on")
+                    "pitch_on", "d_tol", "pitch_clear", "pitch_L2", "pitch_F")
 #: their values when not given: far outside any spring (the constraint never binds); ``L2``
-#: (an installed length at ``F_max``) tiny and ``clear`` 1 (the least free length)
+#: (an installed length at ``F_max``) tiny and ``clear`` 1 (the least free length); the solid
+#: length with the nominal wire (``d_tol``, the wire's tolerance, tiny); the helix's pitch that
+#: of the least free length (:meth:`SpringGP._pitch`)
 _FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12, "L2": 1e-12, "clear": 1.0, "L2_solid": 1e-12,
-                         "clear_solid": 1.0, "pitch_on": 1e-12}
+                         "clear_solid": 1.0, "pitch_on": 1e-12, "d_tol": 1e-12,
+                         "pitch_clear": 1.0, "pitch_L2": 1e-12, "pitch_F": 1.0}
 
 
 #: Clarabel tolerances tighter than its 1e-8 defaults: same solve time here (a few more
@@ -399,7 +402,7 @@ class SpringGP:
                  solver_opts: Mapping[str, Any] | None = None,
                  allowable_exponent: float = 0.0, end_coils: float = 0.0,
                  free_length: bool = False, solid_exponent: float | None = None,
-                 envelope: str | None = None):
+                 envelope: str | None = None, helix: bool = False):
         if objective not in OBJECTIVES:
             raise ValueError(f"objective must be one of {OBJECTIVES}, got {objective!r}")
         if correction not in CORRECTIONS:
@@ -433,6 +436,13 @@ class SpringGP:
         #: the compression spring's free-length limit (``free_length=True``), see
         #: :meth:`_free_length`; its values are given to :meth:`solve` as keywords
         self.free_length_params = {k: cp.Parameter(pos=True, name=k) for k in FREE_LENGTH_KEYS}
+        #: the wire's length with the helix rise in the mass (:meth:`_helix`): the active
+        #: coils' pitch ``p``, the length ``w`` of an active coil and ``w_end`` of an end coil;
+        #: a drawn spring's solid length (:meth:`_drawn_objective`)
+        self.helix = bool(helix) and objective in ("mass", "mass per energy")
+        self.drawn = bool(helix) and objective in ("mass", "mass per energy", "solid length")
+        self.helix_vars = ([cp.Variable(pos=True, name=k) for k in ("p", "w", "w_end")]
+                           if self.helix else [])
         #: the constraints beyond the table, by name (listed in ``active`` when they bind)
         self.named = {**({"free length (buckling)": self._free_length()[0]} if free_length
                          else {}),
@@ -452,17 +462,70 @@ class SpringGP:
     # -- building blocks -----------------------------------------------------------------------
 
     def _objective(self, d, r, n, t):
+        if self.drawn:
+            return self._drawn_objective()
         return _objective_expr(self.objective_name, d, r, n, t, self.params, self.correction,
                                self.end_coils)
 
+    def _drawn_objective(self):
+        """The designer's objectives (``helix``): the mass (or mass per energy) with the helix
+        rise (:meth:`_helix_objective`), the solid length ``(n + solid_coils) d_max`` of the
+        end form with the largest wire diameter (EN 13906-1, as :meth:`_working_length`)."""
+        if self.objective_name == "solid length":
+            Q = self.free_length_params
+            return (self.n + Q["solid_coils"]) * (self.d + Q["d_tol"])
+        return self._helix_objective()
+
+    def _helix_objective(self):
+        """The mass with the wire's helix rise (:func:`govopt.springs.helical.helix_mass`):
+        ``rho pi d^2 / 4 (n w + end_coils w_end)``, ``w`` and ``w_end`` the lengths of an
+        active and an end coil (:meth:`_helix`); or that mass over the energy stored at
+        ``F_max``, ``F_max^2 / (2 R)``. Posynomials: the GP stays exact."""
+        d, r, n, P = self.d, self.r, self.n, self.params
+        _, w, w_end = self.helix_vars
+        Q = self.end_coils
+        if self.objective_name == "mass":
+            return P["density"] * np.pi / 4.0 * d**2 * (n * w + Q * w_end if Q else n * w)
+        # m 2 R / F^2, R = G d^4 / (64 r^3 n)
+        return (P["density"] * np.pi * P["G"] / 128.0 * P["F_max"]**-2 * d**6 * r**-3
+                * (w + Q * w_end * n**-1 if Q else w))
+
+    def _pitch(self):
+        """The active coils' free pitch ``m = (L0 - L_c)/n + d`` (m, EN 13906-1's ``s_c / n +
+        d``, :func:`govopt.springs.helical.pitch`), a posynomial: with the least free length
+        ``L0 = L_c + S_a + F_max / R`` it is ``S_a / n + F_max / (R n) + d`` (``pitch_clear``
+        1, ``pitch_L2`` tiny), whatever the solid length; with an installed length ``L2`` at
+        ``F_max`` the pitch ``(L2 - L_c)/n + F_max/(R n) + d`` lies between that (``L2 >=
+        L_n``: a relaxation) and ``L2/n + F_max/(R n) + d`` (``pitch_L2 = L2``, ``pitch_clear``
+        tiny: a restriction). An extension spring's coils touch: ``pitch_F`` and
+        ``pitch_clear`` tiny, the pitch ``d``."""
+        d, r, n, P, Q = self.d, self.r, self.n, self.params, self.free_length_params
+        return (Q["pitch_clear"] * 1.5 * (0.006 * r**2 / d + 0.1 * d) + Q["pitch_L2"] / n
+                + Q["pitch_F"] * 64.0 * P["F_max"] * r**3 / (P["G"] * d**4) + d)
+
+    def _helix(self) -> list:
+        """The coils' lengths with the helix rise: ``p >= m`` (:meth:`_pitch`), an active coil
+        ``w >= sqrt((2 pi r)^2 + p^2)`` and an end coil, wound at the pitch ``d``, ``w_end >=
+        sqrt((2 pi r)^2 + d^2)``, as the posynomials ``((2 pi r)^2 + p^2) / w^2 <= 1``; the
+        objective grows with each, so each holds with equality at the optimum."""
+        if not self.helix:
+            return []
+        p, w, w_end = self.helix_vars
+        ring = 4.0 * np.pi**2 * self.r**2
+        return [self._pitch() <= p, (ring + p**2) / w**2 <= 1.0,
+                (ring + self.d**2) / w_end**2 <= 1.0]
+
     def _internal(self) -> list:
         """Wahl auxiliary ``1/(t C) + 1/C <= 1`` with ``C = 2r/d``, i.e. ``t >= 1/(C - 1)``;
-        Bergstraesser's ``1/(t C) + 0.75/C <= 1``, i.e. ``t >= 1/(C - 0.75)``."""
+        Bergstraesser's ``1/(t C) + 0.75/C <= 1``, i.e. ``t >= 1/(C - 0.75)``; the helix's
+        coil lengths (:meth:`_helix`)."""
         if self.t is None:
-            return []
+            return self._helix()
         if self.correction == "bergstrasser":
-            return [self.d / (2.0 * self.r * self.t) + 0.75 * self.d / (2.0 * self.r) <= 1.0]
-        return [self.d / (2.0 * self.r * self.t) + self.d / (2.0 * self.r) <= 1.0]
+            return [self.d / (2.0 * self.r * self.t) + 0.75 * self.d / (2.0 * self.r) <= 1.0,
+                    *self._helix()]
+        return [self.d / (2.0 * self.r * self.t) + self.d / (2.0 * self.r) <= 1.0,
+                *self._helix()]
 
     def _free_length(self) -> list:
         """``L0 <= L0_over_D_max D`` with ``L0 = (n + solid_coils) d + 1.5 n (0.0015 D^2/d +
@@ -487,9 +550,12 @@ class SpringGP:
                 + 64.0 * P["F_max"] * r**3 * n / (P["G"] * d**4))
 
     def _working_length(self):
-        """The least working length ``L_n = L_c + S_a`` of :meth:`_least_free_length` (m)."""
+        """The least working length ``L_n = L_c + S_a`` of :meth:`_least_free_length` (m), the
+        solid length with the largest wire diameter ``d + d_tol`` (EN 13906-1; ``d_tol`` the
+        wire's tolerance, a constant over a row of the wire standard's table)."""
         d, r, n, Q = self.d, self.r, self.n, self.free_length_params
-        return (n + Q["solid_coils"]) * d + 1.5 * n * (0.006 * r**2 / d + 0.1 * d)
+        return ((n + Q["solid_coils"]) * (d + Q["d_tol"])
+                + 1.5 * n * (0.006 * r**2 / d + 0.1 * d))
 
     def _envelope(self, kind: str) -> dict:
         """The space a spring is built into: inside diameter over a rod ``D - d >= Di_min``
@@ -505,7 +571,7 @@ class SpringGP:
         out = {"inside diameter": (Q["Di_min"] + d) / (2.0 * r) <= 1.0}
         if kind == "compression":
             out["free length"] = self._least_free_length() <= Q["L0_max"]
-            out["solid length"] = (n + Q["solid_coils"]) * d <= Q["Lc_max"]
+            out["solid length"] = (n + Q["solid_coils"]) * (d + Q["d_tol"]) <= Q["Lc_max"]
             out["working length"] = self._working_length() <= Q["Ln_max"]
             # m = (L0 - L_c)/n + d = L0/n - solid_coils d/n <= L0/n: a restriction
             out["free pitch"] = (Q["pitch_on"] * (self._least_free_length() / n + 0.7 * d)
@@ -653,6 +719,13 @@ class SpringGP:
                                  allowable_exponent=self.allowable_exponent)
         sol.active = [k for k, q in ratios.items() if q >= 1.0 - 1e-6] + [
             k for k, c in self.named.items() if float(np.asarray(c.dual_value)) > 1e-6]
+        for name, c in self.named.items():  # lhs <= rhs, the limit in rhs: -dual
+            lam = float(np.asarray(c.dual_value))
+            if name == "inside diameter":  # (Di_min + d) / (2 r) <= 1: the limit in lhs
+                Di = float(self.free_length_params["Di_min"].value)
+                sol.sensitivities[name] = lam * Di / (Di + sol.d)
+            else:
+                sol.sensitivities[name] = -lam
 
     def _solver_certificate(self, raw, status) -> dict[str, Any]:
         cert: dict[str, Any] = {"solver": self.solver, "status": status,
@@ -689,7 +762,8 @@ class SpringGP:
         In ``y = log x`` the GP is convex, so a point with (numerically) zero residuals is a
         global minimum — independent of the solver's self-reported gap.
         """
-        xs = [self.d, self.r, self.n] + ([self.t] if self.t is not None else [])
+        xs = ([self.d, self.r, self.n] + ([self.t] if self.t is not None else [])
+              + self.helix_vars)
         saved = [float(x.value) for x in xs]
         cons = list(self.constraints.values()) + self.internal
         duals = np.array([float(np.asarray(c.dual_value)) for c in cons])
@@ -968,7 +1042,7 @@ _local = threading.local()
 def cached_gp(objective: str, correction: str, stiffness: str = "equality",
                allowable_exponent: float = 0.0, end_coils: float = 0.0,
                free_length: bool = False, solid_exponent: float | None = None,
-               envelope: str | None = None) -> SpringGP:
+               envelope: str | None = None, helix: bool = False) -> SpringGP:
     """One compiled GP per (objective, correction, stiffness mode, allowable exponent) and
     thread (parameters are mutated): every solve sets every parameter, so a shared GP gives the
     same optimum as a fresh one, without the compilation."""
@@ -976,12 +1050,12 @@ def cached_gp(objective: str, correction: str, stiffness: str = "equality",
     if cache is None:
         cache = _local.cache = {}
     key = (objective, correction, stiffness, float(allowable_exponent), float(end_coils),
-           free_length, solid_exponent, envelope)
+           free_length, solid_exponent, envelope, helix)
     if key not in cache:
         cache[key] = SpringGP(objective, correction, stiffness,
                               allowable_exponent=allowable_exponent, end_coils=end_coils,
                               free_length=free_length, solid_exponent=solid_exponent,
-                              envelope=envelope)
+                              envelope=envelope, helix=helix)
     return cache[key]
 
 

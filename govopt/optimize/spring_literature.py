@@ -35,9 +35,10 @@ import numpy as np
 
 from ._cvxpy import cvxpy as cp
 
-__all__ = ["PRINTED_C1", "SANDGREN", "SANDGREN_WIRES", "BelegunduSpring", "SandgrenSpring",
-           "constants", "constraints", "sandgren_constraints", "solve_belegundu",
-           "solve_sandgren"]
+__all__ = ["PRINTED_C1", "SANDGREN", "SANDGREN_DATA", "SANDGREN_ROWS", "SANDGREN_WIRES",
+           "BelegunduSpring", "SandgrenSpring", "constants", "constraints", "sandgren_checks",
+           "sandgren_constraints", "sandgren_diagnosis", "sandgren_free_length",
+           "sandgren_record", "sandgren_sensitivities", "solve_belegundu", "solve_sandgren"]
 
 #: g1's constant as printed in the literature (Belegundu 1982, Arora, and the papers after them)
 PRINTED_C1 = 71785.0
@@ -161,3 +162,150 @@ def solve_sandgren(p=SANDGREN, wires=SANDGREN_WIRES) -> SandgrenSpring:
                 best = SandgrenSpring(N, float(D), d, float(f), best.checked)
             N += 1
     return best
+
+
+# ---------------------------------------------------------------- Sandgren as govopt reports it
+
+#: the spring spec's keys of Sandgren's data (``problem = "sandgren-1990"``) -> the problem's
+SANDGREN_DATA = {"force": "F_max", "min_force": "F_load", "allowable_stress": "S",
+                 "shear_modulus": "G", "max_free_length": "l_max", "min_wire_diameter": "d_min",
+                 "max_outer_diameter": "D_max", "max_preload_deflection": "delta_pm",
+                 "min_working_deflection": "delta_w"}
+#: Sandgren's constraints: (name, the data key of its limit or None, sense, SI unit)
+SANDGREN_ROWS = (
+    ("g1 Wahl-corrected stress at the largest force", "allowable_stress", "<=", "Pa"),
+    ("g2 free length", "max_free_length", "<=", "m"),
+    ("g3 wire diameter", "min_wire_diameter", ">=", "m"),
+    ("g4 outside diameter", "max_outer_diameter", "<=", "m"),
+    ("g5 spring index", None, ">=", ""),
+    ("g6 preload deflection", "max_preload_deflection", "<=", "m"),
+    ("g7 working length (identically met)", None, "<=", "m"),
+    ("g8 working deflection", "min_working_deflection", ">=", "m"),
+)
+_INCH, _LBF = 0.0254, 4.4482216152605
+
+
+def sandgren_free_length(p, best) -> float:
+    """Sandgren's free length ``l_f = F_max / K + 1.05 (N + 2) d`` (in) of the spring found."""
+    K = p["G"] * best.d**4 / (8 * best.N * best.D**3)
+    return p["F_max"] / K + 1.05 * (best.N + 2) * best.d
+
+
+def sandgren_checks(p, best) -> list:
+    """Sandgren's constraints g1..g8 on the spring found, as :class:`govopt.verdict.Check`
+    rows in SI (value against limit: the problem's own requirements)."""
+    from ..verdict import Check
+
+    N, D, d = best.N, best.D, best.d
+    C = D / d
+    Cf = (4 * C - 1) / (4 * C - 4) + 0.615 / C
+    K = p["G"] * d**4 / (8 * N * D**3)
+    lf = sandgren_free_length(p, best)
+    psi = _LBF / _INCH**2
+    pairs = [(8 * Cf * p["F_max"] * D / (np.pi * d**3) * psi, p["S"] * psi),
+             (lf * _INCH, p["l_max"] * _INCH), (d * _INCH, p["d_min"] * _INCH),
+             ((D + d) * _INCH, p["D_max"] * _INCH), (C, 3.0),
+             (p["F_load"] / K * _INCH, p["delta_pm"] * _INCH),
+             ((p["F_load"] / K + (p["F_max"] - p["F_load"]) / K + 1.05 * (N + 2) * d) * _INCH,
+              lf * _INCH),
+             ((p["F_max"] - p["F_load"]) / K * _INCH, p["delta_w"] * _INCH)]
+    return [Check(name, float(v), float(lim), sense, unit,
+                  f"Sandgren (1990), as restated by Deb and Goyal: {name.split()[0]}",
+                  group="spring")
+            for (name, _, sense, unit), (v, lim) in zip(SANDGREN_ROWS, pairs, strict=True)]
+
+
+def _sandgren_gp(p):
+    """Sandgren's problem with a continuous wire and coils (inches): a GP, the relaxation of
+    the mixed-discrete one (every table wire and whole coil count is a point of it); the
+    problem, its variables and the constraints by data key."""
+    N, D, d, t = (cp.Variable(pos=True) for _ in range(4))
+    soft = 1.0 / (p["G"] * d**4) * 8.0 * N * D**3  # 1 / K per lbf
+    cons = {
+        "allowable_stress": 8.0 * p["F_max"] / (np.pi * p["S"])
+        * (D * d**-3 + 0.75 * t * D * d**-3 + 0.615 * d**-2) <= 1.0,
+        "max_free_length": p["F_max"] * soft + 1.05 * (N + 2.0) * d <= p["l_max"],
+        "min_wire_diameter": d >= p["d_min"],
+        "max_outer_diameter": D + d <= p["D_max"],
+        "max_preload_deflection": p["F_load"] * soft <= p["delta_pm"],
+        "min_working_deflection": (p["F_max"] - p["F_load"]) * soft >= p["delta_w"],
+    }
+    fixed = [3.0 * d <= D, d / (t * D) + d / D <= 1.0, N >= 1.0,
+             d >= min(SANDGREN_WIRES), d <= max(SANDGREN_WIRES)]
+    obj = np.pi**2 / 4.0 * D * d**2 * (N + 2.0)
+    return obj, cons, fixed
+
+
+def sandgren_sensitivities(p) -> tuple[dict[str, float], str]:
+    """The dual elasticities ``d ln(volume) / d ln(limit)`` of the continuous relaxation
+    (:func:`_sandgren_gp`) by data key, and the solver's status."""
+    obj, cons, fixed = _sandgren_gp(p)
+    problem = cp.Problem(cp.Minimize(obj), list(cons.values()) + fixed)
+    try:
+        problem.solve(gp=True, solver="CLARABEL")
+    except cp.error.SolverError:
+        return {}, "solver_error"
+    if problem.status != cp.OPTIMAL:
+        return {}, str(problem.status)
+    lower = {"min_wire_diameter", "min_working_deflection"}  # g >= limit: +dual
+    sens = {k: (1.0 if k in lower else -1.0) * float(np.asarray(c.dual_value))
+            for k, c in cons.items()}
+    return {k: v for k, v in sens.items() if abs(v) > 1e-6}, "optimal"
+
+
+def sandgren_record(p, best):
+    """The optimiser's record of Sandgren's problem (:class:`govopt.optimize.record.Record`):
+    the wire volume in m^3, certified by the exhaustive bounded enumeration (its own bound),
+    the constraints that bind on the spring found, the sensitivities of its continuous
+    relaxation by the spec's keys."""
+    from .record import Objective, Record
+
+    sens, status = sandgren_sensitivities(p)
+    notes = [f"the best of Sandgren's {len(SANDGREN_WIRES)} wires and whole coils, by "
+             f"exhaustive bounded enumeration ({best.checked} wire/coil pairs examined, every "
+             "one that could beat it)"]
+    if status != "optimal":
+        notes.append(f"no sensitivities: the continuous relaxation was not solved ({status})")
+    volume = best.objective * _INCH**3
+    active = [c.name for c in sandgren_checks(p, best) if c.active]
+    return Record(status="optimal", objective=Objective("volume pi^2 D d^2 (N + 2) / 4", "m^3"),
+                  value=volume, bound=volume, active=active, sensitivities=sens,
+                  sensitivities_of="the continuous relaxation (any wire, any coils)",
+                  method="exhaustive bounded enumeration of Sandgren's wire table and whole "
+                         "coils", solver="enumeration", search={"pairs examined": best.checked},
+                  notes=notes)
+
+
+def sandgren_diagnosis(p, where) -> str:
+    """Why no spring of Sandgren's table and whole coils meets a variant's data: the spec's
+    keys (``where(key)``: the file and key, or the option) whose limits conflict in the
+    continuous relaxation, each with the factor that alone would make the relaxation
+    feasible; or, where the relaxation is feasible, that only a wire between the table's or a
+    fractional coil count would do."""
+    obj, cons, fixed = _sandgren_gp(p)
+    s = {k: cp.Variable(pos=True) for k in cons}
+    relaxed = []
+    for k, c in cons.items():
+        lhs, rhs = c.args
+        relaxed.append(lhs <= rhs * s[k])
+    prob = cp.Problem(cp.Minimize(cp.prod(cp.hstack(list(s.values())))),
+                      [*(x >= 1.0 for x in s.values()), *relaxed, *fixed])
+    try:
+        prob.solve(gp=True, solver="CLARABEL")
+    except cp.error.SolverError:
+        return "no spring meets these requirements (the relaxation could not be solved)"
+    if prob.status != cp.OPTIMAL:
+        return f"no spring meets these requirements ({prob.status})"
+    moved = {k: float(x.value) for k, x in s.items() if float(x.value) > 1.0 + 1e-6}
+    if not moved:
+        return ("no spring meets these requirements: a spring with a continuous wire and "
+                "coil count would (the continuous relaxation is feasible), but none of "
+                f"Sandgren's {len(SANDGREN_WIRES)} wires with a whole number of coils does; "
+                f"loosen a limit a little ({', '.join(where(k) for k in cons)})")
+    lower = {"min_wire_diameter", "min_working_deflection"}
+    parts = [f"{where(k)} x{(1 / f if k in lower else f):.4g}"
+             for k, f in sorted(moved.items(), key=lambda kv: -kv[1])]
+    return ("no spring meets these requirements: " + " and ".join(where(k) for k in moved)
+            + (" conflict" if len(moved) > 1 else " cannot be met") + " (Sandgren's g1..g8 "
+            "with any wire and coils); the least change that admits a spring: "
+            + ", ".join(parts))

@@ -35,87 +35,173 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..springs import checks as ck
 from ..springs import helical as hx
 from ..springs import materials as mt
-from .spring_gp import SpringSolution, cached_gp
+from ..springs import tolerances as tl
+from ..springs.assessment import Loads, Rules, Spring, extension_free_length, table
+from .gp_table import DEFAULT_BOUNDS
+from .record import CERTIFIED_GAP, Objective, Record
+from .spring_gp import FREE_LENGTH_KEYS, SpringSolution, cached_gp
 
 KINDS = ("compression", "extension")
-#: Inactive coils of a compression spring: one closed end coil each side, ``n_t = n + 2``
-#: (EN 13906-1:2013, total coils for cold-coiled springs with closed ends; Shigley Table 10-1).
-COMPRESSION_END_COILS = 2.0
 
 
-def end_coils(kind: str, mat=None) -> float:
+def end_coils(kind: str, mat=None, ends: str = "closed_ground") -> float:
     """Coils of wire beyond the ``n`` active ones, counted in the mass (EN 13906-1: the wire
-    length ``pi D n_t`` counts ends and hooks as coils).
+    length ``pi D n_t`` counts ends and loops as coils).
 
-    Compression: :data:`COMPRESSION_END_COILS`. Extension (EN 13906-2:2013, active coils
-    ``n = n_b + G/E``): the body's ``n_b = n - G/E`` coils plus two hooks or loops of one coil
-    each, i.e. ``2 - G/E`` (``2`` without a grade, as ``E`` is then unknown)."""
+    Compression: the end form's inactive coils (:func:`govopt.springs.helical.end_coils`: 2
+    for closed ends, EN 13906-1 ``n_t = n + 2``). Extension (``ends``: its loops,
+    :data:`govopt.springs.helical.HOOKS`; EN 13906-2:2013, active coils ``n = n_b + G/E``):
+    the body's ``n_b = n - G/E`` coils plus the loops' coils of wire, i.e. ``2 h - G/E`` (``h``
+    a loop's coils, 1 for a full loop; ``2 h`` without a grade, as ``E`` is then unknown)."""
     if kind == "compression":
-        return COMPRESSION_END_COILS
+        return hx.end_coils(ends)
+    loops = 2.0 * hx.HOOKS[ends].coils
     if mat is None:
-        return 2.0
-    return 2.0 - float(mat.shear_modulus(1e-3) / mat.elastic_modulus(1e-3))
+        return loops
+    return loops - float(mat.shear_modulus(1e-3) / mat.elastic_modulus(1e-3))
 
 
 @dataclass
 class Sizing:
-    """The GP's spring and, with a grade, the spring engineering checks on it."""
+    """The GP's spring as drawn (:class:`govopt.springs.assessment.Spring`) with its material,
+    loads and rules, the spring kind's checks on it, and the certified lower bound on the
+    objective."""
 
     solution: SpringSolution
     kind: str
     checks: list = field(default_factory=list)
-    free_length: float = math.nan
-    initial_tension: float = math.nan
     allowable_factor: float = 1.0
     notes: list[str] = field(default_factory=list)
-    #: a certified lower bound on the objective (the relaxation's GP optimum; nan: none)
+    #: a certified lower bound on the GP's objective (the relaxation's optimum; nan: none)
     lower_bound: float = math.nan
     #: the required fatigue life (cycles)
     cycles: float = 1e7
     #: why no spring was found (the relaxed GP's diagnosis), empty when one was
     diagnosis: str = ""
-    #: a compression spring's solid length ``L_c`` and least working length ``L_n = L_c +
-    #: S_a`` (m, EN 13906-1; nan for extension), set with the free length by :func:`lengths`
-    solid_length: float = math.nan
-    least_length: float = math.nan
+    #: the spring as drawn, and what :func:`govopt.springs.assessment.assess` needs beside it
+    spring: Spring | None = None
+    mat: mt.Material | None = None
+    loads: Loads | None = None
+    rules: Rules | None = None
+    #: the GP's objective's name (:data:`govopt.optimize.spring_gp.OBJECTIVES`)
+    objective: str = "mass"
+    #: how the design was found (the GP; a catalogue's enumeration, :mod:`.spring_catalogue`)
+    method: str = "geometric programme (cvxpy; exact: convex in the logarithms of d, D, n)"
+    #: counts of a catalogue's enumeration (empty for the continuous GP)
+    search: dict = field(default_factory=dict)
+    #: the GP and its values that relax every row over every wire of the grade (or the plain
+    #: GP's): a catalogue's per-wire bounds (:mod:`govopt.optimize.spring_catalogue`)
+    relaxation: tuple | None = None
+
+    @property
+    def value(self) -> float:
+        """The objective of the spring as drawn (:func:`objective_value`): the GP's, evaluated
+        with the exact formulas (the helix rise, the largest wire's solid length)."""
+        if self.spring is None:
+            return math.nan
+        return float(objective_value(self.objective, self.spring, self.mat, self.loads.F2))
 
     @property
     def gap(self) -> float:
-        """``objective / lower_bound - 1``: how far from optimal the design can be at most."""
-        return self.solution.objective / self.lower_bound - 1.0
+        """``value / lower_bound - 1``: how far from optimal the design can be at most."""
+        return max(0.0, self.value / self.lower_bound - 1.0)
 
     @property
     def certified(self) -> bool:
         """The design is a proven global optimum (within 1e-6 of the certified bound)."""
-        return bool(self.gap <= 1e-6)
+        return bool(self.gap <= CERTIFIED_GAP)
 
     @property
     def passed(self) -> bool:
         return all(c.passed for c in self.checks)
 
+    def record(self) -> Record:
+        """The optimiser's record (:class:`govopt.optimize.record.Record`): the objective as
+        asked (the energy per mass maximised: the reciprocal of the GP's, its sensitivities
+        negated), the certified bound, the active limits and the GP's dual elasticities."""
+        sol = self.solution
+        name, unit, sense = OBJECTIVE_RECORD[self.objective]
+        flip = sense == "maximise"
+        value, bound = self.value, self.lower_bound
+        if flip:
+            value, bound = 1.0 / value, 1.0 / bound
+        sens = {k: (-v if flip else v) for k, v in sol.sensitivities.items()
+                if abs(v) > 1e-6}  # below: a limit that does not bind (the duals' rounding)
+        # a discrete optimum's binding limits are its checks' (the relaxation's are the GP's)
+        active = [c.name for c in self.checks if c.active] if self.search else sol.active
+        return Record(
+            status=sol.status if sol.ok else (sol.status or "infeasible"),
+            objective=Objective(name, unit, sense), value=value, bound=bound,
+            active=list(active), sensitivities=sens,
+            sensitivities_of=("the continuous relaxation (any wire, any coils)" if self.search
+                              else "the last GP solved (the design's)"),
+            method=self.method, solver=str(sol.certificate.get("solver", "")),
+            solve_time_s=sol.solve_time, search=dict(self.search), notes=list(self.notes))
 
-def _kw(kind, mat, d, D, n, F_min, F_max, *, rules, allowable, correction, peened, cycles,
-        index, ends, seating, L2=None):
-    """The library's keywords for one spring (free length, coils and initial tension as the
-    module docstring says; with the installed length ``L2`` at ``F_max`` the free length is
-    ``L2 + F_max / R``)."""
-    kw = dict(mat=mat, d=d, D=D, F1=F_min, F2=F_max, method=rules, allowable=allowable,
-              correction=correction, peened=peened, cycles=cycles, index_min=index[0],
-              index_max=index[1])
-    if kind == "compression":
-        R = float(hx.stiffness(d, D, n, mat.shear_modulus(d)))
-        n_t = n + 2.0
-        L0 = (float(hx.min_working_length(d, D, n, n_t, ends, dynamic=True)) if L2 is None
-              else L2) + F_max / R
-        kw.update(n=n, n_t=n_t, L0=L0, ends=ends, seating=seating)
+
+#: the objectives as the record states them: GP objective -> (name, SI unit, sense)
+OBJECTIVE_RECORD = {"mass": ("mass", "kg", "minimise"),
+                    "volume": ("volume (n + end coils) D d^2", "m^3", "minimise"),
+                    "solid length": ("solid length", "m", "minimise"),
+                    "outer diameter": ("outer diameter", "m", "minimise"),
+                    "mass per energy": ("energy per mass", "J/kg", "maximise")}
+
+
+def objective_value(name: str, spring: Spring, mat, F_max):
+    """The GP objective ``name`` of a drawn spring (its fields may be arrays, broadcast),
+    with the exact formulas: the mass over the wire's length with the helix rise
+    (:func:`govopt.springs.helical.helix_wire_length`), the solid length of the end form with
+    the largest wire diameter (EN 13906-1), the literature's volume ``n_t D d^2``, the outside
+    diameter, the mass over the energy stored at ``F_max``, ``F_max^2 / (2 R)``."""
+    d, D = np.asarray(spring.d, dtype=float), np.asarray(spring.D, dtype=float)
+    G = mat.shear_modulus(d)
+    if spring.kind == "compression":
+        n, Q = spring.coils, spring.end_coils
+        d_max = tl.max_wire_diameter(d, mat.grade)
+        m = hx.pitch(spring.L0, d, n, n + Q, spring.form, d_max)
+        wire = hx.helix_wire_length(D, n, m, Q, d)
     else:
-        lo, hi = hx.initial_tension_range(hx.spring_index(d, D))
-        F0 = float(min(hx.force_at_stress(0.5 * (lo + hi), d, D), F_min))
-        kw.update(n_body=n - float(mat.shear_modulus(d) / mat.elastic_modulus(d)), F0=F0)
-    return kw
+        n = hx.extension_active_coils(spring.coils, G, mat.elastic_modulus(d))
+        Q = spring.coils + 2.0 * hx.HOOKS[spring.form].coils - n
+        wire = hx.helix_wire_length(D, 0.0, 0.0, n + Q, d)
+    mass = mat.density * np.pi * d**2 / 4.0 * wire
+    if name == "mass":
+        return mass
+    if name == "volume":
+        return (n + Q) * D * d**2
+    if name == "solid length":
+        return hx.solid_length(tl.max_wire_diameter(d, mat.grade), n + Q, spring.form)
+    if name == "outer diameter":
+        return D + d
+    if name == "mass per energy":
+        return mass * 2.0 * hx.stiffness(d, D, n, G) / F_max**2
+    raise ValueError(f"objective must be one of {tuple(OBJECTIVE_RECORD)}, got {name!r}")
+
+
+def drawn(kind: str, mat, d, D, n, F_min: float, F_max: float, *, ends: str,
+          L2: float | None = None, dynamic: bool = True) -> Spring:
+    """The spring ``(d, D, n)`` (``n`` its active coils; arrays broadcast) as drawn (SI). A
+    compression spring: ``n_t = n +`` its end form's inactive coils
+    (:func:`govopt.springs.helical.end_coils`) and the least free length that keeps the coils
+    clear at ``F_max``, ``L0 = L_n + F_max / R`` with EN 13906-1's least working length (the
+    solid length with the largest wire diameter; ``S_a`` x1.5 dynamic), or with the installed
+    length ``L2`` at ``F_max``, ``L0 = L2 + F_max / R``. An extension spring (``ends``: its
+    loops): ``n_b = n - G/E`` body coils, the initial tension in the middle of Shigley's
+    preferred range (eq. (10-40)) but at most the least force, the free length inside its
+    loops (:func:`govopt.springs.assessment.extension_free_length`)."""
+    G = mat.shear_modulus(d)
+    if kind == "compression":
+        R = hx.stiffness(d, D, n, G)
+        Q = hx.end_coils(ends)
+        d_max = tl.max_wire_diameter(d, mat.grade)
+        Ln = hx.min_working_length(d, D, n, n + Q, ends, dynamic, ends.startswith("hot"), d_max)
+        return Spring(kind, d, D, n, Q, (Ln if L2 is None else L2) + F_max / R, ends)
+    n_b = n - G / mat.elastic_modulus(d)
+    lo, hi = hx.initial_tension_range(hx.spring_index(d, D))
+    F0 = np.minimum(hx.force_at_stress(0.5 * (lo + hi), d, D), F_min)
+    return Spring(kind, d, D, n_b, 0.0, extension_free_length(d, D, n_b, ends), ends, F0)
 
 
 def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
@@ -123,7 +209,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                 density: float | None = None, tensile_strength: float | None = None,
                 rules: str = "EN13906", correction: str | None = None, F_min: float = 0.0,
                 fatigue: tuple[float, float] | None = None, min_fatigue_safety: float = 1.0,
-                peened: bool = False, cycles: float = 1e7, ends: str = "closed_ground",
+                peened: bool = False, cycles: float = 1e7, ends: str | None = None,
                 seating: str = "fixed-fixed", objective: str = "mass",
                 stiffness_max: float | None = None, L2: float | None = None,
                 **bounds) -> Sizing:
@@ -137,9 +223,25 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     band mode). ``L2``: the installed (working) length at ``F_max`` of a compression spring; the
     coils stay clear there (GP row ``working length``) and the free length is ``L2 + F_max /
     R`` (the solid-length stress row of the GP then takes the least free length: a relaxation,
-    checked exactly afterwards)."""
+    checked exactly afterwards). ``ends``: a compression spring's end form
+    (:data:`~govopt.springs.helical.END_FORMS`, default closed and ground), an extension
+    spring's loops (:data:`~govopt.springs.helical.HOOKS`, default full loops). Any wire and
+    coils: :func:`govopt.optimize.spring_catalogue.size_orderable_spring` takes them from a
+    table of wires and a step of coils."""
+    return _size(F_max, stiffness, grade=grade, kind=kind, k_s=k_s, G=G, density=density,
+                 tensile_strength=tensile_strength, rules=rules, correction=correction,
+                 F_min=F_min, fatigue=fatigue, min_fatigue_safety=min_fatigue_safety,
+                 peened=peened, cycles=cycles, ends=ends, seating=seating, objective=objective,
+                 stiffness_max=stiffness_max, L2=L2, **bounds)
+
+
+def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensile_strength,
+          rules, correction, F_min, fatigue, min_fatigue_safety, peened, cycles, ends, seating,
+          objective, stiffness_max, L2, **bounds) -> Sizing:
+    """:func:`size_spring` on a continuum of wires and coils."""
     if kind not in KINDS:
         raise ValueError(f"spring kind must be one of {KINDS}, got {kind!r}")
+    ends = ends or ("closed_ground" if kind == "compression" else "full_loop")
     space = {k: bounds.pop(k) for k in ("Di_min", "L0_max", "Lc_max")
              if bounds.get(k) is not None}
     for k in ("Di_min", "L0_max", "Lc_max"):
@@ -150,38 +252,41 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         space.update(L2=L2, Ln_max=L2, clear=1e-12)
     envelope = kind if space else None
     if kind == "compression":
-        space["solid_coils"] = end_coils(kind) + hx.END_FORMS[ends][0]
+        space["solid_coils"] = hx.end_coils(ends) + hx.END_FORMS[ends].extra
+    else:  # coils touching: the helix's pitch d (SpringGP._pitch)
+        space.update(pitch_clear=1e-12, pitch_F=1e-12)
     relaxed = dict(space)  # the relaxation gives the bound; with L2 the design's GP restricts
     if L2 is not None:
-        space.update(L2_solid=L2, clear_solid=1e-12, pitch_on=1.0)
+        space.update(L2_solid=L2, clear_solid=1e-12, pitch_on=1.0, pitch_clear=1e-12,
+                     pitch_L2=L2)
     mode, rate = "equality", {"kappa": stiffness}
     if stiffness_max is not None:
         if not stiffness <= stiffness_max:
             raise ValueError(f"stiffness range {stiffness!r} .. {stiffness_max!r} is empty")
         mode, rate = "band", {"kappa_min": stiffness, "kappa_max": stiffness_max}
-    if grade is None:
+    loads = Loads(F_min, F_max, None if fatigue is None else (min(fatigue), max(fatigue)))
+    if grade is None:  # the allowable and modulus given: a stand-in wire (no R_m)
+        mat = mt.given(G, density)
         correction = correction or "wahl"
-        gp = cached_gp(objective, correction, mode, 0.0, end_coils(kind), envelope=envelope)
-        sol = gp.solve(certify=True, **rate, F_max=F_max, k_s=k_s, G=G, density=density,
-                       **space, **bounds)
-        why = "" if sol.ok else sol.status if sol.status != "infeasible" else diagnose(
-            gp, **rate, F_max=F_max, k_s=k_s, G=G, density=density, **space, **bounds)
-        return lengths(Sizing(sol, kind, lower_bound=_bound(sol), diagnosis=why), F_max, ends,
-                       L2)
-    mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
-    if not isinstance(mat.G, float):
-        raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire diameter "
-                         f"({mat.moduli_source}): give it")
-    correction = correction or hx.DEFAULT_CORRECTION[(rules, "static")]
-    bounds = {"C_min": 4.0, "C_max": 20.0, **bounds}
+        bounds = {"C_min": DEFAULT_BOUNDS["C_min"], "C_max": DEFAULT_BOUNDS["C_max"], **bounds}
+    else:
+        mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
+        if not isinstance(mat.G, float):
+            raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire "
+                             f"diameter ({mat.moduli_source}): give it")
+        correction = correction or hx.DEFAULT_CORRECTION[(rules, "static")]
+        bounds = {"C_min": 4.0, "C_max": 20.0, **bounds}
     index = (bounds["C_min"], bounds["C_max"])
+    rule = Rules(method=rules, allowable=k_s, correction=correction, peened=peened,
+                 seating=seating, index=index, fatigue_safety=min_fatigue_safety, cycles=cycles)
     place = "compression" if kind == "compression" else "extension"
     G, density = mat.G, mat.density
     lo, hi = max(mat.d_min, bounds.get("d_min") or 0.0), min(mat.d_max, bounds.get("d_max")
                                                           or math.inf)
     state = {"window": (lo, hi)}
 
-    Q = end_coils(kind, mat)
+    Q = end_coils(kind, mat, ends)
+    stable = math.inf
     if kind == "compression":  # the slenderness that cannot buckle
         stable = float(hx.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
                                                hx.SEATING[seating]))
@@ -197,11 +302,14 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         for _ in range(60):
             k, m = _monomial(mat, place, rules, k_s, *state["window"])
             m_c = None
-            if kind == "compression":  # the stress at solid length, a constraint too
+            dc = math.sqrt(state["window"][0] * state["window"][1])
+            # the wire's tolerance at the window's centre (the table's row the wire settles in)
+            extra["d_tol"] = max(float(tl.max_wire_diameter(dc, grade)) - dc, 1e-12)
+            if kind == "compression" and grade is not None:  # the stress at solid length
                 k_c, m_c = _monomial(mat, "solid", rules, None, *state["window"])
                 extra.update(k_solid=k_c, s_over_D_max=stable)
             gp = cached_gp(objective, correction, mode, m, Q, slender is not None, m_c,
-                            envelope)
+                           envelope, helix=True)
             values = dict(**rate, F_max=F_max, k_s=k * factor, G=G, density=density,
                           **{**bounds, "d_min": lo, "d_max": hi}, **extra)
             sol = gp.solve(**values)
@@ -213,34 +321,56 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
                              "the fatigue or hook rows)")
                 return Sizing(sol, kind, diagnosis=text), 0.0
             new = (max(lo, sol.d / 1.25), min(hi, sol.d * 1.25))
-            if not refit or np.allclose(new, state["window"], rtol=1e-5, atol=0.0):
+            if not refit or (m == 0.0 and m_c is None and grade is None) or np.allclose(
+                    new, state["window"], rtol=1e-5, atol=0.0):  # nothing fitted to re-fit
                 break
             state["window"] = new  # re-fit the allowable about this wire
-        sizing = _checked(sol, kind, mat, F_min, F_max, fatigue, rules=rules, k_s=k_s,
-                          correction=correction, peened=peened, cycles=cycles, index=index,
-                          ends=ends, seating=seating, need=min_fatigue_safety, L2=L2)
+        sizing = _checked(Sizing(sol, kind, mat=mat, loads=loads, rules=rule,
+                                 objective=objective, cycles=cycles), ends, L2)
         sizing.allowable_factor = factor
         return sizing, min((_ratio(c) for c in sizing.checks
                             if (c.unit == "Pa" and c.sense == "<=") or "fatigue" in c.name),
                            default=math.inf)
 
+    def relaxation(values, k, m, m_c) -> dict:
+        """The fitted GP's values that make it a relaxation over every wire in ``[lo, hi]``:
+        the monomial fits raised to lie above the rule over the grade's diameters
+        (:func:`_domination`), the allowable at the rule's own (factor 1), and the largest
+        wire's solid length with the least relative tolerance over them where a length limit
+        reads it."""
+        out = {"k_s": k * _domination(mat, place, rules, k_s, k, m, lo, hi)}
+        if m_c is not None:
+            out["k_solid"] = values["k_solid"] * _domination(mat, "solid", rules, None,
+                                                             values["k_solid"], m_c, lo, hi)
+        if set(space) & {"L0_max", "Lc_max", "L2"}:  # the solid length bounds these
+            out["d_tol"] = min(values["d_tol"], _least_tolerance(grade, lo))
+        return out
+
     def certified_bound(sizing) -> float:
         """The bound of the GP just solved (at the rule's own allowable), made valid for every
-        wire: the monomial fit raised to lie above the rule over the grade's diameters
-        (:func:`_domination`), the GP solved again with it when it had to rise (a step table's
-        rows, an interpolated table's kinks); a concave rule's tangent already lies above."""
+        wire (``relaxation``), the GP solved again where a value had to move (a step
+        table's rows, an interpolated table's kinks); a concave rule's tangent already lies
+        above."""
         gp, values, k, m, m_c = state["fit"]
         if not sizing.solution.ok:
             return math.nan
-        raised = {"k_s": _domination(mat, place, rules, k_s, k, m, lo, hi)}
-        if m_c is not None:
-            raised["k_solid"] = _domination(mat, "solid", rules, None, values["k_solid"], m_c,
-                                            lo, hi)
-        if all(f <= 1.0 + 2e-6 for f in raised.values()):
-            return _bound(sizing.solution)
-        relaxed_sol = gp.solve(**{**values, **{key: values[key] * f
-                                               for key, f in raised.items()}})
-        return _bound(relaxed_sol)
+        moved = relaxation(values, k, m, m_c)
+        if all(abs(x / values[key] - 1.0) <= 2e-6 for key, x in moved.items()):
+            return dual_bound(sizing.solution)
+        return dual_bound(gp.solve(**{**values, **moved}))
+
+    def finish(sizing):
+        """``sizing`` with the relaxation over every wire: the last fit's GP without the
+        buckling slenderness' restriction, at the values of :func:`relaxation` and the
+        relaxed space (a catalogue's per-wire bounds, :mod:`govopt.optimize.spring_catalogue`)."""
+        if sizing.solution.ok:
+            _, values, k, m, m_c = state["fit"]
+            gp = cached_gp(objective, correction, mode, m, Q, False, m_c, envelope, helix=True)
+            keep = {key: x for key, x in values.items()
+                    if key not in FREE_LENGTH_KEYS or key in ("k_solid", "s_over_D_max",
+                                                              "d_tol")}
+            sizing.relaxation = (gp, {**keep, **relaxed, **relaxation(values, k, m, m_c)})
+        return sizing
 
     if L2 is not None:  # there the design's GP restricts; its relaxation bounds: first
         loose, _ = attempt(1.0, relax=True)
@@ -248,10 +378,19 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         if not loose.solution.ok:  # nor can the restriction be met: the relaxation's diagnosis
             return loose
         if loose.passed:  # the relaxation's design passes: optimal
-            loose.lower_bound, loose.cycles = bound, cycles
-            return lengths(loose, F_max, ends, L2)
+            loose.lower_bound = bound
+            return finish(loose)
         state["window"] = (lo, hi)  # the design's GP fitted afresh, as without the relaxation
-    sizing, worst = attempt(1.0)
+        # the force at solid length bounded by F + R (L2 - lam), safe where L_c >= lam: from
+        # the relaxation's solid length (a design near it), else lam = 0 (every design)
+        lam = 0.99 * _solid_length(loose)
+        state["installed"] = {"L2_solid": L2 - lam}
+        sizing, worst = attempt(1.0)
+        if not sizing.solution.ok or _solid_length(sizing) < lam:
+            state["installed"], state["window"] = {}, (lo, hi)
+            sizing, worst = attempt(1.0)
+    else:
+        sizing, worst = attempt(1.0)
     if L2 is None:
         bound = certified_bound(sizing)  # the GP is a relaxation of the rows: a lower bound
     sizing = _stress_search(attempt, sizing, worst)
@@ -259,30 +398,40 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
         sizing = _buckling_search(attempt, sizing, stable)
     if sizing.solution.ok and L2 is not None:
         sizing = _installed_search(attempt, sizing, state, L2, ends)
-    sizing.lower_bound, sizing.cycles = bound, cycles
-    return lengths(sizing, F_max, ends, L2)
+    sizing.lower_bound = bound
+    return finish(sizing)
 
 
-def lengths(sizing: Sizing, F_max: float, ends: str, L2: float | None = None) -> Sizing:
-    """The sized spring's lengths, computed once for every output (text, JSON, workbook and
-    force-length plot read them). A compression spring: its solid length ``L_c``
-    (:func:`govopt.springs.helical.solid_length`, EN 13906-1 by the end form), least working
-    length ``L_n = L_c + S_a`` (EN 13906-1, dynamic) and, where the checks did not set it (no
-    grade), its free length ``L2 + F_max / R`` or ``L_n + F_max / R`` as :func:`_kw`. An
-    extension spring: the free length of its ``n + end coils - 2`` body coils (EN 13906-2,
-    :func:`govopt.springs.helical.extension_free_length`). Lengths in m, ``F_max`` in N."""
+def _solid_length(sizing: Sizing) -> float:
+    """The drawn spring's solid length with the largest wire diameter (EN 13906-1), m."""
+    sp = sizing.spring
+    return float(hx.solid_length(tl.max_wire_diameter(sp.d, sizing.mat.grade), sp.total_coils,
+                                 sp.form))
+
+
+def _least_tolerance(grade, lo: float) -> float:
+    """The least wire tolerance of the grade's wires from ``lo`` (m) up: its tolerance table
+    rises with the diameter (EN 10270), so the least is the thinnest wire's."""
+    return max(float(tl.max_wire_diameter(lo, grade)) - lo, 1e-12)
+
+
+def _draw(sizing: Sizing, ends: str, L2: float | None) -> Sizing:
+    """The sizing's spring as drawn (:func:`drawn`) and the spring kind's checks on it (the
+    plain GP's too, with the given allowable), computed once for every output."""
+    if sizing.solution.ok and sizing.spring is None:
+        sizing = _checked(sizing, ends, L2)
+    return sizing
+
+
+def _checked(sizing: Sizing, ends: str, L2: float | None) -> Sizing:
+    """``sizing`` with its spring drawn and the spring kind's table on it
+    (:func:`govopt.springs.assessment.table`: the fatigue rows at the load cycle)."""
     sol = sizing.solution
-    if not sol.ok:
-        return sizing
-    d, D, n, n_t = sol.d, 2.0 * sol.r, sol.n, sol.n + sol.end_coils
-    if sizing.kind == "compression":
-        sizing.solid_length = float(hx.solid_length(d, n_t, ends))
-        sizing.least_length = float(hx.min_working_length(d, D, n, n_t, ends, dynamic=True))
-        if not math.isfinite(sizing.free_length):
-            sizing.free_length = (sizing.least_length if L2 is None else L2) \
-                + F_max / sol.stiffness
-    elif not math.isfinite(sizing.free_length):
-        sizing.free_length = float(hx.extension_free_length(d, D, n_t - 2.0))
+    sp = drawn(sizing.kind, sizing.mat, sol.d, 2.0 * sol.r, sol.n, sizing.loads.F1,
+               sizing.loads.F2, ends=ends, L2=L2)
+    sizing.spring = Spring(sp.kind, *(float(x) for x in (sp.d, sp.D, sp.coils, sp.end_coils,
+                                                         sp.L0)), sp.form, float(sp.F0))
+    sizing.checks, _ = table(sizing.spring, sizing.mat, sizing.loads, sizing.rules)
     return sizing
 
 
@@ -298,7 +447,7 @@ def diagnose(gp, **values) -> str:
     return why.summary()
 
 
-def _bound(sol) -> float:
+def dual_bound(sol) -> float:
     """The solver's dual objective: a lower bound on the GP's optimum (nan unless optimal)."""
     return float(sol.certificate.get("objective_lower_bound", math.nan))
 
@@ -323,7 +472,7 @@ def _buckling_search(attempt, sizing, stable):
                             "guide it (--seating) or allow a larger diameter")
         return sizing
     sol = sizing.solution
-    good, bad = 1.0, float(sizing.free_length / (2.0 * sol.r) / stable)
+    good, bad = 1.0, float(sizing.spring.L0 / (2.0 * sol.r) / stable)
     while bad / good > 1.001:  # one compiled GP: the allowable's fit is frozen meanwhile
         mid = math.sqrt(good * bad)
         trial, _ = attempt(factor, mid, refit=False)
@@ -351,9 +500,7 @@ def _installed_search(attempt, sizing, state, L2, ends):
     design) always is. Bisection on ``lam = theta L_c`` of the design found keeps the lightest
     design whose solid length is at least its ``lam`` and that passes every check, to 0.1 %;
     the bound stays the relaxation's (:func:`size_spring`)."""
-    def solid(s):
-        sol = s.solution
-        return float(hx.solid_length(sol.d, sol.n + sol.end_coils, ends))
+    solid = _solid_length
 
     factor, best, notes = sizing.allowable_factor, sizing, list(sizing.notes)
     lo, hi = 0.0, 1.0
@@ -439,22 +586,8 @@ def _monomial(mat, place, rules, k_s, lo, hi):
     return float(a * dc**m * (1.0 - 1e-6)), m
 
 
-def _checked(sol, kind, mat, F_min, F_max, fatigue, *, rules, k_s, correction, peened,
-             cycles, index, ends, seating, need, L2=None) -> Sizing:
-    """The spring kind's table on the GP's spring, with the fatigue rows for the cycle."""
-    d, D, n = sol.d, 2.0 * sol.r, sol.n
-    kw = _kw(kind, mat, d, D, n, F_min, F_max, rules=rules, allowable=k_s,
-             correction=correction, peened=peened, cycles=cycles, index=index, ends=ends,
-             seating=seating, L2=L2)
-    rows = [c for c in ck.checks(kind, fatigue_safety=need, **kw) if "fatigue" not in c.name]
-    if fatigue is not None:
-        kw.update(F1=min(fatigue), F2=max(fatigue))
-        rows += [c for c in ck.checks(kind, fatigue_safety=need, **kw) if "fatigue" in c.name]
-    return Sizing(sol, kind, rows, free_length=float(ck.prepare(kind, **kw)["L0"]),
-                  initial_tension=float(kw.get("F0", math.nan)))
-
-
-__all__ = ["KINDS", "Sizing", "diagnose", "end_coils", "lengths", "size_spring"]
+__all__ = ["KINDS", "OBJECTIVE_RECORD", "Sizing", "diagnose", "drawn", "dual_bound",
+           "end_coils", "objective_value", "size_spring"]
 
 
 def _ratio(check) -> float:

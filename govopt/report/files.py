@@ -181,6 +181,20 @@ def check_output(path: str | Path, *, overwrite: bool = False, inputs: Iterable 
     return path
 
 
+def check_planned(planned: Iterable[tuple[str | Path, str]], *, overwrite: bool = False,
+                  inputs: Iterable = ()) -> None:
+    """Every file a run will write (``planned``: ``(path, what)`` in order), each checked by
+    :func:`check_output` before anything is computed or written: against the input and against
+    every *other* planned output by position (two outputs named alike are a collision, however
+    the names are spelt), whatever ``overwrite`` says. Raises :class:`GovoptError` with one
+    line."""
+    planned = list(planned)
+    inputs = list(inputs)
+    for i, (path, what) in enumerate(planned):
+        check_output(path, overwrite=overwrite, inputs=inputs, what=what,
+                     others=[p for j, (p, _) in enumerate(planned) if j != i])
+
+
 @contextlib.contextmanager
 def overwrite_policy(allowed: bool):
     """Within this block, writers called without ``overwrite`` (e.g.

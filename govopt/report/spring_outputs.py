@@ -19,116 +19,119 @@ import numpy as np
 
 from ..springs import fatigue as ft
 from ..springs import helical as hx
-from ..springs import materials as mt
 from ..springs import sheet as sh
 
 #: the plots `govopt spring --plots` writes (``fatigue`` only with a fatigue load cycle)
 PLOTS = ("force-length", "fatigue")
 
 
-def material(v: dict) -> mt.Material | None:
-    """The wire grade of the options (None without ``material``), as the sizing built it."""
-    if v.get("material") is None:
+def maker_sheet(outcome) -> sh.SpringSheet | None:
+    """The spring maker's sheet of the spring (EN 15800 grade 2 tolerances; a grade is needed
+    for the wire standard and its tolerances: None without one)."""
+    a = outcome.assessment
+    if outcome.values.get("material") is None:
         return None
-    return mt.material(v["material"], tensile_strength=v.get("tensile_strength"),
-                       G=v.get("shear_modulus"), density=v.get("density"))
+    sp, mat, loads = a.spring, a.mat, a.loads
+    surface = "shot peened" if a.rules.peened else "not shot peened"
+    if sp.kind == "compression":
+        return sh.compression_sheet(mat, sp.d, sp.D, sp.coils, sp.total_coils, sp.L0,
+                                    loads.F1, loads.F2, ends=sp.form, surface=surface)
+    return sh.extension_sheet(mat, sp.d, sp.D, sp.coils, sp.F0, loads.F1, loads.F2,
+                              hooks=hx.HOOKS[sp.form].source.split(",")[0], surface=surface)
 
 
-def maker_sheet(sizing, v: dict) -> sh.SpringSheet | None:
-    """The spring maker's sheet of the sized spring (EN 15800 grade 2 tolerances; a grade is
-    needed for the wire standard and its tolerances: None without one)."""
-    mat = material(v)
-    if mat is None:
-        return None
-    sol = sizing.solution
-    d, D, n = sol.d, 2.0 * sol.r, sol.n
-    F1, F2 = v.get("min_force") or 0.0, v["force"]
-    surface = "shot peened" if v["peened"] else "not shot peened"
-    if sizing.kind == "compression":
-        return sh.compression_sheet(mat, d, D, n, n + sol.end_coils, sizing.free_length, F1, F2,
-                                    ends=v["ends"], surface=surface)
-    G, E = float(mat.shear_modulus(d)), float(mat.elastic_modulus(d))
-    return sh.extension_sheet(mat, d, D, n - G / E, sizing.initial_tension, F1, F2,
-                              surface=surface)
-
-
-def fatigue_cycle(sizing, v: dict) -> dict | None:
+def fatigue_cycle(outcome) -> dict | None:
     """The fatigue load cycle's corrected (Bergstraesser) stresses and the body's diagram, a
-    record of figures (:func:`govopt.springs.fatigue.cycle_figures`) as a governor's spring
-    report holds it, which :func:`govopt.report.plots.fatigue` reads (None without a cycle or a
-    grade)."""
-    mat = material(v)
-    if mat is None or v.get("fatigue_min_force") is None:
+    record of figures (the assessment's, :func:`govopt.springs.fatigue.cycle_figures`) as a
+    governor's spring report holds it, which :func:`govopt.report.plots.fatigue` reads (None
+    without a cycle or a grade)."""
+    a = outcome.assessment
+    if a.loads.cycle is None or outcome.values.get("material") is None:
         return None
-    sol = sizing.solution
-    d, D = sol.d, 2.0 * sol.r
-    K = hx.bergstrasser_factor(hx.spring_index(d, D))
-    forces = v["fatigue_min_force"], v["fatigue_max_force"]
-    return ft.cycle_figures(*forces, *(float(K * hx.shear_stress(f, d, D)) for f in forces)
-                            ) | {"diagram": ft.body_locus(mat, d, v["rules"], v["peened"])}
+    cycle = {k: f for k, f in a.sections["fatigue"].items()
+             if k not in ("safety factor", "life")}
+    return cycle | {"diagram": ft.body_locus(a.mat, a.spring.d, a.rules.method,
+                                             a.rules.peened)}
 
 
-def force_length(sizing, v: dict, ax, name: str) -> None:
-    """Force against length: the line ``F = R (L0 - L)`` of a compression spring from its free
-    length to its solid length ``L_c``, the working points (L1, F1) and (L2, F2), the least
-    working length ``L_n = L_c + S_a`` (EN 13906-1); an extension spring's ``F = F0 + R (L -
-    L0)`` from its free length (initial tension F0) to past L2. mm and N."""
-    R, F1, F2 = sizing.solution.stiffness, v.get("min_force") or 0.0, v["force"]
-    L0 = sizing.free_length  # the sizing's lengths (spring_sizing.lengths), as the workbook's
-    if sizing.kind == "compression":
-        Lc, Ln = sizing.solid_length, sizing.least_length
-        L = np.array([L0, Lc])
-        ax.plot(L * 1e3, R * (L0 - L), color="tab:blue", lw=2,
-                label=f"F = R (L0 - L), R = {R * 1e-3:.4g} N/mm")
-        ax.axvline(Lc * 1e3, color="k", lw=1, label=f"solid length L_c {Lc * 1e3:.4g} mm")
-        ax.axvline(Ln * 1e3, color="tab:red", ls="--", lw=1,
-                   label=f"least working length L_n {Ln * 1e3:.4g} mm")
-        points = ((L0 - F1 / R, F1, "L1, F1"), (L0 - F2 / R, F2, "L2, F2"))
+def force_length(outcome, ax) -> None:
+    """Force against length from the assessment's working points: a compression spring's line
+    ``F = R (L0 - L)`` from its free length to its solid length ``L_c`` with the least working
+    length ``L_n`` (EN 13906-1); an extension spring's ``F = F0 + R (L - L0)`` from its free
+    length to past L2; the working points L1 (where a least force is given) and L2 marked,
+    not the free length (the spring does not work there). In the units the input used."""
+    a, shown = outcome.assessment, outcome.shown
+    pts = {p["point"].value: p for p in a.points}
+    R = a.value("rate")
+    L0 = a.spring.L0
+    lu, fu = shown(0.0, "m")[1], shown(0.0, "N")[1]
+
+    def L(x):
+        return shown(x, "m")[0]
+
+    def F(x):
+        return shown(x, "N")[0]
+    if a.spring.kind == "compression":
+        Lc, Ln = a.value("solid length"), a.value("least working length")
+        x = np.array([L0, Lc])
+        ax.plot(L(x), F(R * (L0 - x)), color="tab:blue", lw=2,
+                label=f"F = R (L0 - L), R = {shown.text(R, 'N/m', 4)}")
+        ax.axvline(L(Lc), color="k", lw=1, label=f"solid length L_c {shown.text(Lc, 'm', 4)}")
+        ax.axvline(L(Ln), color="tab:red", ls="--", lw=1,
+                   label=f"least working length L_n {shown.text(Ln, 'm', 4)}")
         ax.invert_xaxis()  # compressing: the length falls as the force rises
     else:
-        F0 = _initial_tension(sizing)
-        L2 = L0 + (F2 - F0) / R
-        L = np.array([L0, L0 + 1.1 * (L2 - L0)])
-        ax.plot(L * 1e3, F0 + R * (L - L0), color="tab:blue", lw=2,
-                label=f"F = F0 + R (L - L0), F0 = {F0:.4g} N")
-        points = ((L0 + (F1 - F0) / R, F1, "L1, F1"), (L2, F2, "L2, F2"))
-    for x, f, label in points:
-        ax.plot(x * 1e3, f, "o", color="tab:orange", mec="k",
-                label=f"{label}: {x * 1e3:.4g} mm, {f:.4g} N")
-    ax.set_xlabel("spring length L (mm)")
-    ax.set_ylabel("force F (N)")
+        F0, L2 = a.spring.F0, pts["L2"]["length"].value
+        x = np.array([L0, L0 + 1.1 * (L2 - L0)])
+        ax.plot(L(x), F(F0 + R * (x - L0)), color="tab:blue", lw=2,
+                label=f"F = F0 + R (L - L0), F0 = {shown.text(F0, 'N', 4)}")
+    for key in ("L1", "L2"):
+        if key in pts:
+            p = pts[key]
+            length, force = p["length"].value, p["force"].value
+            ax.plot(L(length), F(force), "o", color="tab:orange", mec="k",
+                    label=f"{key}, F{key[1]}: {shown.text(length, 'm', 4)}, "
+                          f"{shown.text(force, 'N', 4)}")
+    ax.set_xlabel(f"spring length L ({lu})")
+    ax.set_ylabel(f"force F ({fu})")
     ax.set_ylim(bottom=0.0)
-    ax.set_title(f"{name}: force against length")
+    ax.set_title(f"{outcome.name}: force against length")
     ax.legend(loc="best", fontsize=8)
 
 
 def _plot_input(outcome):
     """What :func:`govopt.report.plots.fatigue` reads of a Result: the fatigue load cycle
     (``spring_report.loads``), the checks and the name."""
-    cycle = fatigue_cycle(outcome.sizing, outcome.values)
-    return SimpleNamespace(spring_report=SimpleNamespace(loads={"fatigue": cycle}),
-                           checks=outcome.sizing.checks, spec=SimpleNamespace(name=outcome.name))
+    return SimpleNamespace(spring_report=SimpleNamespace(loads={"fatigue": fatigue_cycle(
+        outcome)}), checks=outcome.checks, spec=SimpleNamespace(name=outcome.name))
 
 
 def plot_names(outcome) -> list[str]:
     """The plots this spring has (the fatigue diagram needs a grade and a load cycle)."""
-    has_cycle = fatigue_cycle(outcome.sizing, outcome.values) is not None
-    return [k for k in PLOTS if k != "fatigue" or has_cycle]
+    return [k for k in PLOTS if k != "fatigue" or fatigue_cycle(outcome) is not None]
 
 
-def check_outputs(xlsx, plots, stem: str, *, replace: bool, inputs=()) -> None:
-    """Before the run: each output can be written, and exists only if ``replace``
-    (:func:`govopt.report.files.check_output`; a folder for the plots is made if only its
-    parent exists). Raises :class:`GovoptError` with one line."""
-    from .files import check_output, output_folder
+def planned(xlsx, plots, stem: str, output=None) -> list[tuple[Path, str]]:
+    """Every file a run may write, with what it is: the design's spec (``-o``), the workbook,
+    each plot in each format (the folder made if only its parent exists)."""
+    from .files import output_folder
 
-    paths = [] if xlsx is None else [(Path(xlsx), "workbook")]
+    paths = [(Path(p), what) for p, what in ((output, "spring spec"), (xlsx, "workbook"))
+             if p is not None]
     if plots is not None:
         folder = output_folder(Path(plots), "plots")
         paths += [(folder / f"{stem}-{k}.{fmt}", "plot") for k in PLOTS for fmt in ("png", "svg")]
-    for path, what in paths:  # in `govopt spring` (--replace: files.overwrite_option)
-        check_output(path, overwrite=replace, inputs=inputs, what=what,
-                     others=[p for p, _ in paths if p != path])
+    return paths
+
+
+def check_outputs(xlsx, plots, stem: str, *, replace: bool, inputs=(), output=None) -> None:
+    """Before the run: every output of it (:func:`planned`) checked against the input and
+    against each other by :func:`govopt.report.files.check_planned` (the rule of `govopt
+    evaluate` and `design`), and it exists only if ``replace``. Raises :class:`GovoptError`
+    with one line."""
+    from .files import check_planned
+
+    check_planned(planned(xlsx, plots, stem, output), overwrite=replace, inputs=inputs)
 
 
 def write_plots(outcome, folder, stem: str, *, replace: bool = True) -> list[Path]:
@@ -144,7 +147,7 @@ def write_plots(outcome, folder, stem: str, *, replace: bool = True) -> list[Pat
         with mpl.rc_context(plots.STYLE):
             ax = plots.new_axes()
             if kind == "force-length":
-                force_length(outcome.sizing, outcome.values, ax, outcome.name)
+                force_length(outcome, ax)
             else:
                 plots.fatigue(_plot_input(outcome), ax)
         written += save_figure(ax.figure, Path(folder) / f"{stem}-{kind}", overwrite=replace)
@@ -153,25 +156,36 @@ def write_plots(outcome, folder, stem: str, *, replace: bool = True) -> list[Pat
 
 def workbook_rows(outcome) -> list[tuple[str, object, str]]:
     """The Spring sheet's rows, answer first: (label, SI value or text, SI unit); a section
-    title has the value None and the unit ``"section"``."""
-    sizing, data = outcome.sizing, outcome.data
-    sol = sizing.solution
-    rows = [("Answer", None, "section"),
-            ("wire diameter d", sol.d, "m"), ("mean coil diameter D", 2.0 * sol.r, "m"),
-            ("active coils n", sol.n, ""), ("end coils", sol.end_coils, ""),
-            ("mass (all coils)", sol.mass, "kg"), ("stiffness R", sol.stiffness, "N/m"),
-            ("shear stress at the force", sol.stress, "Pa"),
-            ("stress correction", sol.correction, ""), ("spring index D/d", sol.index, ""),
-            ("surge frequency", sol.surge_frequency, "Hz"),
-            (f"objective: {outcome.values['objective']}", data["objective_value"], ""),
-            ("certified lower bound", data["lower_bound"], ""),
-            ("claim", outcome.claim, ""),
-            ("active in the last GP", ", ".join(sol.active), "")]
-    life = data.get("fatigue_life_cycles")
-    if life is not None:
-        rows.append(("estimated fatigue life (cycles)", life if math.isfinite(life) else
-                     "at least the data's 1e7 (the body passes there)", ""))
+    title has the value None and the unit ``"section"``: the spring, what it does, the
+    optimiser's record (where one), the load cycle."""
+    a, rec = outcome.assessment, outcome.record
+    rows: list[tuple[str, object, str]] = [("Answer", None, "section")]
+    for section in ("spring", "lengths and energy", "dynamics"):
+        rows += [(_label(f), f.value, f.unit) for f in a.sections[section].values()
+                 if not _missing(f.value)]
+    if rec is not None:
+        obj = rec.objective
+        rows += [("Optimisation", None, "section"),
+                 (f"objective: {obj.name} ({obj.sense})", rec.value, obj.unit),
+                 (f"certified {'lower' if obj.sense == 'minimise' else 'upper'} bound",
+                  rec.bound, obj.unit), ("claim", rec.claim(), ""),
+                 ("method", rec.method, ""),
+                 ("active", ", ".join(rec.active) or "none", "")]
+        rows += [(f"sensitivity: +1 % on {k} (% {obj.name})", v, "")
+                 for k, v in rec.sensitivities.items()]
+    if a.loads.cycle is not None:
+        rows.append(("Fatigue load cycle", None, "section"))
+        rows += [(_label(f), f.value, f.unit) for f in a.sections["fatigue"].values()
+                 if not (isinstance(f.value, float) and math.isnan(f.value))]
     return rows
+
+
+def _missing(value) -> bool:
+    return isinstance(value, float) and math.isnan(value)
+
+
+def _label(f) -> str:
+    return f.name + (f" {f.symbol}" if f.symbol else "")
 
 
 def write_workbook(outcome, path, *, replace: bool = True) -> Path:
@@ -185,7 +199,7 @@ def write_workbook(outcome, path, *, replace: bool = True) -> Path:
     from .excel import engineering, fit_rows, print_setup
     from .files import atomic_write
 
-    sizing = outcome.sizing
+    shown = outcome.shown
     wb = Workbook()
     ws = wb.active
     ws.title = "Spring"
@@ -196,9 +210,10 @@ def write_workbook(outcome, path, *, replace: bool = True) -> Path:
             ws.append([label])
             return
         if isinstance(value, float) and not math.isfinite(value):
-            value = "not bounded" if math.isinf(value) else "none"
+            value, unit = ("infinite" if math.isinf(value) else "none"), ""
         if isinstance(value, int | float) and not isinstance(value, bool):
-            value, unit, fmt = engineering(value, unit)
+            fmt = "0.00" if unit == "%" else engineering(value, unit)[2]
+            value, unit = shown(value, unit)  # the units the input was written in
             ws.append([label, value, unit])
             ws.cell(ws.max_row, 2).number_format = fmt
         else:
@@ -206,7 +221,7 @@ def write_workbook(outcome, path, *, replace: bool = True) -> Path:
 
     for row in workbook_rows(outcome):
         put(*row)
-    sheet = maker_sheet(sizing, outcome.values)
+    sheet = maker_sheet(outcome)
     if sheet is not None:
         put("Specification for the spring maker (EN 15800 grade 2)", None, "section")
         for _, label, x, unit in sh.record_rows(sheet.figures()):
@@ -219,26 +234,25 @@ def write_workbook(outcome, path, *, replace: bool = True) -> Path:
                 put(label, x, unit)
     checks = wb.create_sheet("Checks")
     checks.append(["check", "value", "sense", "limit", "unit", "margin", "result", "source"])
-    for c in sizing.checks:
-        (value, unit, fmt), (limit, _, fmt_lim) = (engineering(x, c.unit)
-                                                   for x in (c.value, c.limit))
+    for c in outcome.checks:
+        (_, _, fmt), (_, _, fmt_lim) = (engineering(x, c.unit) for x in (c.value, c.limit))
+        (value, unit), (limit, _) = shown(c.value, c.unit), shown(c.limit, c.unit)
         checks.append([c.name, value, c.sense, limit, unit, c.margin,
                        "PASS" if c.passed else "FAIL", c.source])
         r = checks.max_row
         checks.cell(r, 2).number_format, checks.cell(r, 4).number_format = fmt, fmt_lim
         checks.cell(r, 6).number_format = "0.00%"
-    if not sizing.checks:
-        checks.append(["no spring engineering checks: they need a wire grade (--material)"])
+    lu, fu = shown(0.0, "m")[1], shown(0.0, "N")[1]
     fl = wb.create_sheet("Force-length")
-    fl.append(["length L (mm)", "force F (N)"])
+    fl.append([f"length L ({lu})", f"force F ({fu})"])
     for length, force in _force_length_points(outcome):
-        fl.append([length * 1e3, force])
+        fl.append([shown(length, "m")[0], shown(force, "N")[0]])
         for cell in fl[fl.max_row]:
             cell.number_format = "0.00"
     fl.column_dimensions["A"].width = fl.column_dimensions["B"].width = 14
     chart = ScatterChart()
-    chart.title, chart.x_axis.title, chart.y_axis.title = ("force against length",
-                                                           "length L (mm)", "force F (N)")
+    chart.title, chart.x_axis.title, chart.y_axis.title = (
+        f"{outcome.name}: force against length", f"length L ({lu})", f"force F ({fu})")
     chart.series.append(Series(Reference(fl, min_col=2, min_row=2, max_row=fl.max_row),
                                Reference(fl, min_col=1, min_row=2, max_row=fl.max_row),
                                title="spring"))
@@ -261,20 +275,63 @@ def write_workbook(outcome, path, *, replace: bool = True) -> Path:
 
 
 def _force_length_points(outcome) -> list[tuple[float, float]]:
-    """(length m, force N) at the free length and the working points, solid length last
-    (compression), from the sizing's lengths as the force-length plot draws them."""
-    sizing, v = outcome.sizing, outcome.values
-    R, F1, F2 = sizing.solution.stiffness, v.get("min_force") or 0.0, v["force"]
-    L0 = sizing.free_length
-    if sizing.kind == "compression":
-        Lc = sizing.solid_length
-        return [(L0 - F / R, F) for F in (0.0, F1, F2)] + [(Lc, R * (L0 - Lc))]
-    F0 = _initial_tension(sizing)
-    return [(L0, F0)] + [(L0 + (F - F0) / R, F) for F in (F1, F2)]
+    """(length m, force N) of the assessment's working points: the free length, L1, L2 and
+    a compression spring's least working and solid lengths."""
+    return [(p["length"].value, p["force"].value) for p in outcome.assessment.points]
 
 
-def _initial_tension(sizing) -> float:
-    """An extension spring's initial tension (N): the sizing's, 0 where none was set (no
-    grade: the GP has no initial-tension rule)."""
-    F0 = sizing.initial_tension
-    return F0 if math.isfinite(F0) else 0.0
+def write_check_spec(outcome, path, *, replace: bool = True) -> Path:
+    """The spring as a spec for `govopt spring check` (its geometry, material, loads and
+    rules), each number at the shortest precision that reads back to the same float, in the
+    units the input was written in: checking it reproduces the design's report (without the
+    optimiser's record)."""
+    from .files import atomic_write
+
+    text = check_spec_text(outcome)
+    return atomic_write(Path(path), lambda tmp: Path(tmp).write_text(text, encoding="utf-8"),
+                        overwrite=replace, what="spring spec")
+
+
+def check_spec_text(outcome) -> str:
+    """The TOML of :func:`write_check_spec`."""
+    a, v, shown = outcome.assessment, outcome.values, outcome.shown
+    sp = a.spring
+
+    def q(value, si):
+        x, unit = shown(value, si)
+        return f'"{x!r} {unit}"'
+
+    name = outcome.name.replace('"', "'")
+    lines = [f'name = "{name}"',
+             'description = "written by govopt spring -o: check it with govopt spring check"',
+             "", "[spring]", f'kind = "{sp.kind}"', f"wire_diameter = {q(sp.d, 'm')}",
+             f"mean_diameter = {q(sp.D, 'm')}"]
+    if sp.kind == "compression":
+        lines += [f"active_coils = {sp.coils!r}", f"total_coils = {sp.total_coils!r}",
+                  f'ends = "{sp.form}"']
+    else:
+        lines += [f"total_coils = {sp.coils!r}  # the body's", f'loops = "{sp.form}"',
+                  f"initial_tension = {q(sp.F0, 'N')}"]
+    lines.append(f"free_length = {q(sp.L0, 'm')}")
+    if v.get("material") is not None:
+        lines.append(f'material = "{v["material"]}"')
+    for key, si in (("tensile_strength", "Pa"), ("shear_modulus", "Pa"),
+                    ("allowable_stress", "Pa")):
+        if v.get(key) is not None:
+            lines.append(f"{key} = {q(v[key], si)}")
+    if v.get("density") is not None or v.get("material") is None:
+        lines.append(f'density = "{a.mat.density!r} kg/m^3"')
+    lines.append(f"force = {q(a.loads.F2, 'N')}")
+    if a.loads.F1 > 0:
+        lines.append(f"min_force = {q(a.loads.F1, 'N')}")
+    if a.loads.cycle is not None:
+        lines += [f"fatigue_min_force = {q(a.loads.cycle[0], 'N')}",
+                  f"fatigue_max_force = {q(a.loads.cycle[1], 'N')}"]
+    r = a.rules
+    lines += [f'rules = "{r.method}"', f"peened = {str(r.peened).lower()}",
+              f'seating = "{r.seating}"', f"index_min = {float(r.index[0])!r}",
+              f"index_max = {float(r.index[1])!r}", f"min_fatigue_safety = {r.fatigue_safety!r}",
+              f"life = {float(r.cycles)!r}"]
+    if v.get("correction") is not None or v.get("material") is None:
+        lines.append(f'correction = "{r.correction}"')
+    return "\n".join(lines) + "\n"

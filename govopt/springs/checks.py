@@ -34,6 +34,7 @@ import numpy as np
 from ..verdict import Check
 from . import fatigue as fat
 from . import helical as hx
+from . import tolerances as tol
 from .materials import allowable_static_stress, static_rule
 
 DEFAULTS = dict(method="EN13906", allowable=None, correction=None, peened=False,
@@ -81,6 +82,8 @@ _COMMON_DERIVED = {
     "Rm": lambda kw: kw["mat"].tensile_strength(kw["d"]),
     "C": lambda kw: hx.spring_index(kw["d"], kw["D"]),
     "f_e": _surge,
+    # the largest wire diameter within tolerance, of the solid length (EN 13906-1)
+    "d_max": lambda kw: tol.max_wire_diameter(kw["d"], kw["mat"].grade),
 }
 _DERIVED = {
     "compression": {
@@ -121,7 +124,7 @@ def _static(place):
         rule = static_rule(kw["mat"], place, kw["method"])
         F = kw["F_max"]
         if place == "solid":
-            F = kw["R"] * (kw["L0"] - hx.solid_length(kw["d"], kw["n_t"], kw["ends"]))
+            F = kw["R"] * (kw["L0"] - hx.solid_length(kw["d_max"], kw["n_t"], kw["ends"]))
         return hx.shear_stress(F, kw["d"], kw["D"], kw["correction"] or rule.correction)
 
     def limit(kw):
@@ -188,6 +191,13 @@ def _hook_fatigue(point):
     return value, source
 
 
+def _over(a, b):
+    """``a / b``, infinite where ``b`` is zero (a buckling deflection lost to rounding on a
+    spring far longer than it is wide: it buckles at once)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.asarray(a, dtype=float) / b
+
+
 def _surge_source(kw):
     return ("EN 13906-1 surge frequency (both ends fixed) kept at least the required relative "
             f"distance from each excitation harmonic present ({len(kw['harmonics_hz'])} given)")
@@ -217,20 +227,22 @@ COMPRESSION = (
     Row("working length >= least length (coil clash)", ">=", "m",
         lambda kw: kw["L0"] - kw["s_max"],
         lambda kw: hx.min_working_length(kw["d"], kw["D"], kw["n"], kw["n_t"], kw["ends"],
-                                         kw["dynamic"], kw["ends"].startswith("hot")),
-        "EN 13906-1: L_n = L_c + S_a, S_a = n (0.0015 D^2/d + 0.1 d) (x1.5 dynamic), at the "
-        "largest deflection including the overspeed margin"),
+                                         kw["dynamic"], kw["ends"].startswith("hot"),
+                                         kw["d_max"]),
+        "EN 13906-1: L_n = L_c + S_a, L_c with the largest wire diameter d_max, S_a = n "
+        "(0.0015 D^2/d + 0.1 d) (x1.5 dynamic), at the largest deflection including the "
+        "overspeed margin"),
     Row("deflection / buckling deflection", "<=", "",
-        lambda kw: kw["s_max"] / hx.buckling_deflection(kw["L0"], kw["D"], kw["G"], kw["E"],
-                                                        hx.SEATING[kw["seating"]]),
+        lambda kw: _over(kw["s_max"], hx.buckling_deflection(kw["L0"], kw["D"], kw["G"], kw["E"],
+                                                             hx.SEATING[kw["seating"]])),
         lambda kw: 1.0,
         lambda kw: f"EN 13906-1, 9.14: buckling deflection s_K, seating {kw['seating']} "
                    f"(nu = {hx.SEATING[kw['seating']]})"),
     Row("free pitch > wire diameter", ">=", "m",
-        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"]),
+        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"], kw["d_max"]),
         lambda kw: kw["d"], "geometry: the free spring must have gaps between active coils"),
     Row(PITCH_MAX, "<=", "m",
-        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"]),
+        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"], kw["d_max"]),
         lambda kw: hx.max_pitch(kw["d"], kw["D"]),
         "Gutekunst Federn ('Spring pitch'): m <= 0.7 D_i, a helix angle atan(m / (pi D)) of at "
         "most 9.5-12.6 deg, where the rate G d^4 / (8 D^3 n) is within 1.5 % of the "

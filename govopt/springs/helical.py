@@ -9,6 +9,8 @@ Design*, 9th ed. (2011), ch. 10 ("Shigley"); A. M. Wahl, *Mechanical Springs* (1
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 #: Stress-correction factors for :func:`correction_factor`.
@@ -20,20 +22,69 @@ DEFAULT_CORRECTION = {("EN13906", "static"): "none", ("EN13906", "fatigue"): "be
                       ("Shigley", "static"): "bergstrasser",
                       ("Shigley", "fatigue"): "bergstrasser"}
 
-#: End forms of compression springs: solid length ``L_c = (n_t + extra) d`` and its source.
+class EndForm(NamedTuple):
+    """A compression spring's end form: its solid length ``L_c = (n_t + extra) d_max``, the
+    inactive coils ``n_t - n`` it takes, and where both come from."""
+
+    extra: float
+    source: str
+    end_coils: float = 2.0
+
+
+#: End forms of compression springs (:class:`EndForm`). EN 13906-1:2013 gives the solid length
+#: of cold-coiled springs with closed ends, ground or not, and of hot-coiled ones, always with
+#: the largest wire diameter ``d_max`` (the nominal one plus its tolerance,
+#: :func:`govopt.springs.tolerances.max_wire_diameter`); open ends are Shigley's (Table 10-1:
+#: plain ends ``N_t = N_a``, ``L_s = d (N_t + 1)``; plain and ground ``N_t = N_a + 1``,
+#: ``L_s = d N_t``). ``plain``, ``plain_ground`` and ``squared`` are the same forms by
+#: Shigley's names (``squared``: his closed-end solid length ``d (N_t + 1)``).
 END_FORMS = {
-    "closed_ground": (0.0, "EN 13906-1:2013 (solid length): cold coiled, ends closed and ground, "
-                           "L_c <= n_t d_max; Shigley Table 10-1 squared and ground L_s = d N_t"),
-    "closed": (1.5, "EN 13906-1:2013 (solid length): cold coiled, ends closed, not ground, "
-                    "L_c <= (n_t + 1.5) d_max"),
-    "hot_closed_ground": (-0.3, "EN 13906-1:2013 (solid length): hot coiled, ends closed and "
-                                "ground, L_c <= (n_t - 0.3) d_max"),
-    "hot_open": (1.1, "EN 13906-1:2013 (solid length): hot coiled, ends open, not ground, "
-                      "L_c <= (n_t + 1.1) d_max"),
-    "squared": (1.0, "Shigley Table 10-1: squared or closed ends, L_s = d (N_t + 1)"),
-    "plain": (1.0, "Shigley Table 10-1: plain ends, L_s = d (N_t + 1)"),
-    "plain_ground": (0.0, "Shigley Table 10-1: plain and ground ends, L_s = d N_t"),
+    "closed_ground": EndForm(0.0, "EN 13906-1:2013 (solid length): cold coiled, ends closed and "
+                                  "ground, L_c <= n_t d_max, n_t = n + 2; Shigley Table 10-1 "
+                                  "squared and ground L_s = d N_t"),
+    "closed": EndForm(1.5, "EN 13906-1:2013 (solid length): cold coiled, ends closed, not ground, "
+                           "L_c <= (n_t + 1.5) d_max, n_t = n + 2"),
+    "open_ground": EndForm(0.0, "Shigley 9th ed. Table 10-1: plain and ground ends, N_t = N_a + "
+                                "1, L_s = d N_t (EN 13906-1 gives closed ends only)", 1.0),
+    "open": EndForm(1.0, "Shigley 9th ed. Table 10-1: plain ends, N_t = N_a, L_s = d (N_t + 1) "
+                         "(EN 13906-1 gives closed ends only)", 0.0),
+    "hot_closed_ground": EndForm(-0.3, "EN 13906-1:2013 (solid length): hot coiled, ends closed "
+                                       "and ground, L_c <= (n_t - 0.3) d_max"),
+    "hot_open": EndForm(1.1, "EN 13906-1:2013 (solid length): hot coiled, ends open, not ground, "
+                             "L_c <= (n_t + 1.1) d_max"),
+    "squared": EndForm(1.0, "Shigley 9th ed. Table 10-1: squared or closed ends, N_t = N_a + 2, "
+                            "L_s = d (N_t + 1)"),
+    "plain": EndForm(1.0, "Shigley 9th ed. Table 10-1: plain ends, N_t = N_a, L_s = d (N_t + 1)",
+                     0.0),
+    "plain_ground": EndForm(0.0, "Shigley 9th ed. Table 10-1: plain and ground ends, N_t = N_a + "
+                                 "1, L_s = d N_t", 1.0),
 }
+
+
+class HookForm(NamedTuple):
+    """An extension spring's loop: its length ``L_H`` from the body's end to the inside of the
+    loop as a multiple of the inside diameter ``D_i = D - d``, the coils of wire it takes, and
+    where the figures come from."""
+
+    length: float
+    coils: float
+    source: str
+
+
+#: Loops of extension springs after EN 13906-2:2013 (as Gutekunst Federn lists them, "Eyelet
+#: shapes extension springs", blog.federnshop.com): the free length inside the loops is
+#: ``L0 = L_K + 2 L_H`` with the body ``L_K = (n_b + 1) d``. Where EN 13906-2 gives a range, the
+#: value used is named in the source; the loops' added flexibility ``G/E`` coil (Shigley 9th
+#: ed. section 10-11, for full loops) is taken for every form.
+HOOKS = {
+    "full_loop": HookForm(1.0, 1.0, "full (German) loop, L_H = 0.8-1.1 D_i (EN 13906-2): "
+                                    "L_H = D_i, Shigley's L0 = 2 (D - d) + (N_b + 1) d"),
+    "half_loop": HookForm(0.675, 0.5, "half (German) loop, L_H = 0.55-0.8 D_i (EN 13906-2): the "
+                                      "middle, 0.675 D_i"),
+    "side_loop": HookForm(1.0, 1.0, "full loop raised at the side, L_H ~ D_i (EN 13906-2)"),
+    "english_loop": HookForm(1.1, 1.0, "English loop, L_H ~ 1.1 D_i (EN 13906-2)"),
+}
+
 
 #: End conditions for buckling: EN 13906-1 seating coefficient nu (= Shigley's alpha, Table 10-2).
 SEATING = {
@@ -109,17 +160,35 @@ def force_at_stress(tau, d, D, correction: str = "none"):
 
 # ---------------------------------------------------------------- compression-spring geometry
 
-def solid_length(d, n_t, ends: str = "closed_ground"):
-    """Solid (block) length ``L_c = (n_t + extra) d`` for the end form ``ends`` (m).
+def solid_length(d_max, n_t, ends: str = "closed_ground"):
+    """Solid (block) length ``L_c = (n_t + extra) d_max`` for the end form ``ends`` (m).
 
-    See :data:`END_FORMS` for the forms and their clauses; ``d`` should be the largest wire
-    diameter within tolerance (EN: ``d_max``) when checking against a working length.
+    See :data:`END_FORMS` for the forms and their clauses. EN 13906-1 writes it with the
+    largest wire diameter within tolerance ``d_max`` (nominal ``d`` plus its tolerance,
+    :func:`govopt.springs.tolerances.max_wire_diameter`): pass that, the nominal ``d`` only
+    where the wire's tolerance is unknown. A hand calculation: 10 total coils of 2.8 mm
+    EN 10270-1 wire (+-0.030 mm) with closed and ground ends, ``L_c = 10 x 2.830 = 28.30 mm``:
+
+    >>> round(float(solid_length(2.8e-3 + 0.030e-3, 10, "closed_ground")) * 1e3, 2)
+    28.3
+    >>> round(float(solid_length(2.83e-3, 10, "closed")) * 1e3, 3)  # (n_t + 1.5) d_max
+    32.545
     """
     try:
-        extra = END_FORMS[ends][0]
+        extra = END_FORMS[ends].extra
     except KeyError:
         raise ValueError(f"end form must be one of {tuple(END_FORMS)}, got {ends!r}") from None
-    return (np.asarray(n_t, dtype=float) + extra) * d
+    return (np.asarray(n_t, dtype=float) + extra) * d_max
+
+
+def end_coils(ends: str) -> float:
+    """Inactive coils ``n_t - n`` of the end form ``ends`` (:data:`END_FORMS`): 2 for closed
+    ends (EN 13906-1, cold coiled), 1 for open and ground, 0 for open ends (Shigley Table
+    10-1)."""
+    try:
+        return END_FORMS[ends].end_coils
+    except KeyError:
+        raise ValueError(f"end form must be one of {tuple(END_FORMS)}, got {ends!r}") from None
 
 
 def sum_of_min_gaps(d, D, n, dynamic: bool = False, hot: bool = False):
@@ -136,18 +205,24 @@ def sum_of_min_gaps(d, D, n, dynamic: bool = False, hot: bool = False):
 
 
 def min_working_length(d, D, n, n_t, ends: str = "closed_ground", dynamic: bool = False,
-                       hot: bool = False):
-    """Least admissible working length ``L_n = L_c + S_a`` (EN 13906-1:2013), m."""
-    return solid_length(d, n_t, ends) + sum_of_min_gaps(d, D, n, dynamic, hot)
+                       hot: bool = False, d_max=None):
+    """Least admissible working length ``L_n = L_c + S_a`` (EN 13906-1:2013), m: the solid
+    length with the largest wire diameter ``d_max`` (default: ``d``, where its tolerance is
+    unknown) and the gaps :func:`sum_of_min_gaps` with the nominal ``d``."""
+    return (solid_length(d if d_max is None else d_max, n_t, ends)
+            + sum_of_min_gaps(d, D, n, dynamic, hot))
 
 
-def pitch(L0, d, n, n_t, ends: str = "closed_ground"):
-    """Pitch of the active coils ``m = (L0 - L_c)/n + d`` (m): the free gap shared by n coils.
+def pitch(L0, d, n, n_t, ends: str = "closed_ground", d_max=None):
+    """Pitch of the active coils ``m = (L0 - L_c)/n + d = s_c/n + d`` (m): the free gap shared
+    by n coils, with EN 13906-1's solid length ``L_c`` (:func:`solid_length` with the largest
+    wire diameter ``d_max``, default ``d``), as SpringONE's EN 13906-1 solver computes it
+    (``SpringLIB/src/EN13906.pas``: pitch ``S_c / n + d``, ``S_c = L0 - L_c``).
 
     Equals Shigley Table 10-1's ``(L0 - 3d)/N_a`` for squared ends and ``(L0 - 2d)/N_a`` for
-    squared and ground ends (with N_t = N_a + 2).
+    squared and ground ends (with N_t = N_a + 2 and ``d_max = d``).
     """
-    return (L0 - solid_length(d, n_t, ends)) / n + d
+    return (L0 - solid_length(d if d_max is None else d_max, n_t, ends)) / n + d
 
 
 def helix_angle(m, D):
@@ -227,11 +302,11 @@ def buckling_deflection(L0, D, G, E, nu):
     return np.where(radicand < 0.0, np.inf, sK)
 
 
-def diameter_increase(d, D, n, L0, n_t, ends: str = "closed_ground"):
+def diameter_increase(d, D, n, L0, n_t, ends: str = "closed_ground", d_max=None):
     """Increase of the outside diameter at solid length, ``Delta D_e`` (m), EN 13906-1:2013:
     ``0.1 (m^2 - 0.8 m d - 0.2 d^2)/D`` with the pitch ``m`` of :func:`pitch` (ends free to turn).
     """
-    m = pitch(L0, d, n, n_t, ends)
+    m = pitch(L0, d, n, n_t, ends, d_max)
     return 0.1 * (m**2 - 0.8 * m * d - 0.2 * np.asarray(d, dtype=float) ** 2) / D
 
 
@@ -339,14 +414,41 @@ def hook_torsion_stress(F, d, D, r2):
 # ---------------------------------------------------------------- mass
 
 def wire_length(D, n_t):
-    """Developed wire length ``pi D n_t`` (m) - EN 13906-1 (ends and hooks as coils)."""
+    """Developed wire length ``pi D n_t`` (m) - EN 13906-1 (ends and hooks as coils), the
+    coils' helix rise left out (:func:`helix_wire_length` includes it)."""
     return np.pi * np.asarray(D, dtype=float) * n_t
+
+
+def helix_wire_length(D, n, m, end_coils, d):
+    """Developed wire length of a helical spring including the helix rise (m): ``n`` active
+    coils of pitch ``m`` and ``end_coils`` inactive ones wound at the pitch ``d`` (closed ends,
+    coils touching; an extension spring's body), each coil a turn of the helix of mean
+    diameter ``D``: ``n sqrt((pi D)^2 + m^2) + end_coils sqrt((pi D)^2 + d^2)``. The active
+    part is Starrett's ``pi D n / cos(alpha)`` (spring catalogue terminology: ``L_d = pi D (2
+    + n_m + n / cos alpha)``, ``alpha`` the helix angle of :func:`helix_angle`), which counts
+    the inactive coils as flat circles; they rise by ``d`` per turn here. Lengths in m.
+
+    >>> D, m = 30e-3, 10e-3  # a 30 mm coil of 10 mm pitch: 0.56 % more than pi D a coil
+    >>> round(float(helix_wire_length(D, 1.0, m, 0.0, 3e-3) / wire_length(D, 1.0)), 5)
+    1.00561
+    """
+    D = np.asarray(D, dtype=float)
+    circle = np.pi * D
+    return n * np.hypot(circle, m) + end_coils * np.hypot(circle, d)
 
 
 def mass(d, D, n_t, density):
     """Wire mass ``rho (pi d^2/4) pi D n_t`` (kg) over ``n_t`` coils (pass the active coils
-    for the vibrating mass of :func:`surge_frequency`)."""
+    for the vibrating mass of :func:`surge_frequency`); the helix rise left out
+    (:func:`helix_mass` includes it)."""
     return density * np.pi * np.asarray(d, dtype=float) ** 2 / 4.0 * wire_length(D, n_t)
+
+
+def helix_mass(d, D, n, m, end_coils, density):
+    """Wire mass ``rho (pi d^2/4) L`` (kg) with the wire length ``L`` of
+    :func:`helix_wire_length` (the helix rise included); m, kg/m^3."""
+    d = np.asarray(d, dtype=float)
+    return density * np.pi * d**2 / 4.0 * helix_wire_length(D, n, m, end_coils, d)
 
 
 # ---------------------------------------------------------------- Hamabe's coil-radius forms

@@ -12,6 +12,7 @@ only reads them and evaluates them vectorised in SI (d in m, stresses in Pa).
 
 from __future__ import annotations
 
+import math
 import tomllib
 from dataclasses import dataclass, field, replace
 from functools import cache
@@ -252,6 +253,48 @@ def material(grade: str, *, tensile_strength: float | None = None, G: float | No
     return replace(mat, **changes) if changes else mat
 
 
+#: where the sizes of a grade no table covers come from (:func:`wire_sizes`)
+R20_SOURCE = ("ISO 3 R20 preferred numbers, 1 to 25 mm (the catalogue govopt design uses): no "
+              "table of the grade's standard's diameters in govopt/data/wire_sizes.toml")
+
+
+@cache
+def _sizes() -> list[dict]:
+    text = resources.files("govopt").joinpath("data/wire_sizes.toml").read_text("utf-8")
+    return tomllib.loads(text)["standard"]
+
+
+def wire_sizes(grade: str | None) -> tuple[tuple[float, ...], str]:
+    """The wire diameters (m, rising) a grade is drawn to by its standard, and their source
+    (``govopt/data/wire_sizes.toml``); for a grade no table covers (or none), the ISO 3 R20
+    preferred numbers of :data:`govopt.inputs.PREFERRED_WIRE` and :data:`R20_SOURCE`.
+
+    >>> sizes, source = wire_sizes("EN10270-1 SH")
+    >>> [round(x * 1e3, 2) for x in sizes if 2.5e-3 <= x <= 3.2e-3], source[:10]
+    ([2.5, 2.6, 2.8, 3.0, 3.2], 'EN 10270-1')
+    """
+    for std in _sizes():
+        if grade is not None and grade.startswith(tuple(std["grades"])):
+            sizes = ([x * MM for x in std["d_mm"]] if "d_mm" in std
+                     else [x * INCH for x in std["d_in"]])
+            return tuple(sorted(sizes)), std["source"]
+    from ..inputs import PREFERRED_WIRE
+
+    return tuple(PREFERRED_WIRE), R20_SOURCE
+
+
+def given(G: float, density: float, E: float | None = None) -> Material:
+    """A wire without a grade: a stand-in carrying the shear modulus ``G`` and ``density``
+    given (SI) and no tensile strength (R_m nan: the rules that read it cannot be applied);
+    its elastic modulus, for buckling and an extension spring's loops, is ``E`` or that of
+    ``custom`` (EN 10270-1 steel's 206 GPa)."""
+    custom = materials()["custom"]
+    return replace(custom, grade="as given (no wire grade)",
+                   standard="shear modulus and allowable stress given",
+                   G=float(G), density=float(density), E=custom.E if E is None else float(E),
+                   rm={"kind": "constant", "MPa": math.nan, "source": "no wire grade"})
+
+
 @dataclass(frozen=True)
 class Allowable:
     """An allowable static stress rule: ``fraction * R_m``, compared with the stress corrected
@@ -312,5 +355,6 @@ def shigley_A_si(A_kpsi: float, m: float) -> float:
     return KSI / MPA * (INCH / MM) ** m * A_kpsi
 
 
-__all__ = ["FatigueDiagram", "Material", "Allowable", "METHODS", "material",
+__all__ = ["FatigueDiagram", "Material", "Allowable", "METHODS", "given", "material",
+           "wire_sizes",
            "materials", "static_rule", "allowable_static_stress", "ksi_to_pa", "shigley_A_si"]

@@ -169,11 +169,8 @@ def _f(x) -> float:
 
 def wire_standard(mat: Material) -> str | None:
     """The wire standard whose diameter tolerances apply to the grade (EN 10270-1 or -2), or
-    None."""
-    for std in tol.WIRE_TOLERANCE:
-        if mat.grade.startswith(std):
-            return std
-    return None
+    None (:func:`govopt.springs.tolerances.wire_standard`)."""
+    return tol.wire_standard(mat.grade)
 
 
 def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "closed_ground",
@@ -181,6 +178,7 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
     """The sheet of a compression spring; working lengths follow from the rate."""
     G = _f(mat.shear_modulus(d))
     R = _f(hx.stiffness(d, D, n, G))
+    d_max = tol.max_wire_diameter(d, mat.grade)
     tols = {"A_D": _f(tol.coil_diameter_tolerance(D, D / d, grade)),
             "A_L0": _f(tol.free_length_tolerance(d, D, n, R, grade)),
             "A_F1": _f(tol.force_tolerance(F1, d, D, n, grade)),
@@ -194,9 +192,12 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
         kind="compression", grade=mat.grade, material_standard=mat.standard, d=_f(d), D=_f(D),
         n=_f(n), coils=_f(n_t), ends=ends.replace("_", " "), L0=_f(L0), R=R, F1=_f(F1),
         L1=_f(L0) - _f(F1) / R, F2=_f(F2), L2=_f(L0) - _f(F2) / R, tolerance_grade=grade,
-        surface=surface, mass=_f(hx.mass(d, D, n_t, mat.density)),
+        surface=surface,
+        mass=_f(hx.helix_mass(d, D, n, hx.pitch(L0, d, n, n_t, ends, d_max), _f(n_t) - _f(n),
+                              mat.density)),
         surge_frequency=_f(hx.surge_frequency(d, D, n, G, mat.density)),
-        solid_length=_f(hx.solid_length(d, n_t, ends)), tolerances=tols, notes=notes)
+        solid_length=_f(hx.solid_length(d_max, n_t, ends)),
+        tolerances=tols, notes=notes)
 
 
 def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,
@@ -218,6 +219,7 @@ def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,
         kind="extension", grade=mat.grade, material_standard=mat.standard, d=_f(d), D=_f(D),
         n=n, coils=_f(n_body), ends=hooks, L0=L0, R=R, F1=_f(F1), L1=L0 + (_f(F1) - F0) / R,
         F2=_f(F2), L2=L0 + (_f(F2) - F0) / R, tolerance_grade=grade, surface=surface, F0=_f(F0),
-        mass=_f(hx.mass(d, D, _f(n_body) + 2.0, mat.density)),
+        # the body's coils touching (pitch d), the two loops counted as two more coils
+        mass=_f(hx.helix_mass(d, D, 0.0, 0.0, _f(n_body) + 2.0, mat.density)),
         surge_frequency=_f(hx.surge_frequency(d, D, n, G, mat.density)),
         tolerances=tols, notes=notes)

@@ -141,6 +141,34 @@ def wire_diameter_tolerance(d, standard: str = "EN10270-1"):
     return np.where(row < len(tol), tol[np.minimum(row, len(tol) - 1)] * 1e-3, np.nan)
 
 
+def wire_standard(grade: str) -> str | None:
+    """The wire standard whose diameter tolerances apply to a grade named ``grade`` (EN
+    10270-1 or -2: :data:`WIRE_TOLERANCE`), or None (a grade without tabulated tolerances)."""
+    for std in WIRE_TOLERANCE:
+        if str(grade).startswith(std):
+            return std
+    return None
+
+
+def max_wire_diameter(d, grade: str | None):
+    """The largest wire diameter within tolerance ``d_max = d + A_d`` (m) of the wire grade
+    named ``grade`` (:func:`wire_diameter_tolerance` of its standard), which EN 13906-1 takes
+    for the solid length; ``d`` itself for a grade without tabulated tolerances (and beyond
+    the table).
+
+    >>> round(float(max_wire_diameter(2.8e-3, "EN10270-1 SH")) * 1e3, 3)  # +-0.030 mm
+    2.83
+    >>> float(max_wire_diameter(2.8e-3, "ASTM A228")) * 1e3
+    2.8
+    """
+    d = np.asarray(d, dtype=float)
+    std = None if grade is None else wire_standard(grade)
+    if std is None:
+        return d
+    tol = wire_diameter_tolerance(d, std)
+    return np.where(np.isfinite(tol), d + tol, d)
+
+
 def rate_spread(d, D, n, G, d_tol, D_tol):
     """Worst-case range of the rate ``R = G d^4 / (8 D^3 n)`` from the wire and coil diameter
     tolerances (exact, not linearised): ``(R(d - d_tol, D + D_tol), R(d + d_tol, D - D_tol))``.
