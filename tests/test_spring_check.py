@@ -281,7 +281,8 @@ def test_sensitivities_are_dual_elasticities_with_the_stated_sign():
      "error: --fatigue-min-force: a load cycle's fatigue needs a wire grade's fatigue data"),
     (["--tensile-strength", "1500 MPa"],
      "error: --tensile-strength: applies to --material custom only"),
-    (["--force", "("], "error: --force: cannot parse '(' as a quantity: expected a number"),
+    (["--force", "("], "error: --force: cannot parse '(' as a quantity: its parentheses do "
+                        "not match"),
     (["--coil-step", "2"], "error: --coil-step: expected a step of coils in (0, 1]"),
 ])
 def test_inputs_once_ignored_or_misread_are_refused_by_name(extra, message):
