@@ -22,7 +22,8 @@ PACKAGE = Path(govopt.__file__).resolve().parent
 #: matching prefix; the seam's modules are named exactly (:data:`SEAM`).
 LAYERS = (
     ("ground", ("govopt.units", "govopt.limits", "govopt.errors", "govopt.inputs",
-                "govopt.stats", "govopt.jsonable", "govopt.examples", "govopt.verdict")),
+                "govopt.stats", "govopt.jsonable", "govopt.examples", "govopt.verdict",
+                "govopt.references")),
     ("springs", ("govopt.springs",)),
     ("seam", ()),
     ("analysis", ("govopt.analysis", "govopt.fidelity")),

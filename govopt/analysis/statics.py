@@ -111,7 +111,7 @@ BAND_INNER = "lowest speed >= speed.inner"
 BAND_OUTER = "highest speed <= speed.outer"
 BAND_SOURCE = ("[speed] inner/outer: the whole operating band inside the spec's; with friction "
                "the governor closes at omega_fall and opens at omega_rise, omega^2 = (Q_s + cf "
-               "-+ F) / (jp - ci) (textbook 3.4(b), 'Friction at the sleeve'; Hamabe eq. 42)")
+               "-+ F) / (jp - ci)")  # the checks add the type's friction source (its method)
 
 
 def band_speeds_squared(spec: Spec, m, kappa, l0, central=None, friction=(0.0, 0.0)):
