@@ -167,9 +167,20 @@ class Method:
         return next((e for e in self.equations if e.name == name), None)
 
     def cite(self, topic: str) -> str:
-        """The distinct citations of a topic's equations, ``"; "``-joined (``""`` for none):
-        what a heading puts in brackets."""
-        return "; ".join(dict.fromkeys(e.cite for e in self.of(topic)))
+        """The citations of a topic's equations, one per source with its places in order,
+        ``"; "``-joined (``""`` for none): what a heading puts in brackets.
+
+        >>> Method("t", (Equation("statics", "", "", "hamabe", "eq. 1"),
+        ...              Equation("statics", "", "", "hamabe", "eq. 12"),
+        ...              Equation("statics", "", "", "rattan"))).cite("statics")
+        'Hamabe eq. 1, eq. 12; Rattan'
+        """
+        places: dict[str, list[str]] = {}
+        for e in self.of(topic):
+            where = places.setdefault(e.source, [])
+            if e.where and e.where not in where:
+                where.append(e.where)
+        return "; ".join(cite(key, ", ".join(where)) for key, where in places.items())
 
     def heading(self, topic: str, text: str) -> str:
         """``text`` with the topic's citations in brackets (none: ``text`` alone)."""

@@ -174,103 +174,31 @@ def workbook_rows(outcome) -> list[tuple[str, object, str]]:
     return rows
 
 
-def write_workbook(outcome, path, *, replace: bool = True) -> Path:
-    """The workbook: sheet "Spring" (the answer, then the spring maker's sheet in engineering
-    units), "Checks" (value, limit, margin, verdict, source) and "Force-length" (a table and
-    its chart), written atomically (an existing file replaced only with ``replace``)."""
-    from openpyxl import Workbook
-    from openpyxl.chart import Reference, ScatterChart, Series
-    from openpyxl.styles import Alignment, Font
+def write_workbook(outcome, path, *, replace: bool = True, command: str = "") -> Path:
+    """The workbook (:func:`govopt.report.excel.spring.spring_workbook`: a Summary with the
+    command, version, date, verdict and the answer, the spring maker's sheet, the checks and
+    the force-length table with its chart), written atomically (an existing file replaced only
+    with ``replace``)."""
+    from .excel.spring import spring_workbook
 
-    from .excel import engineering, fit_rows, print_setup
-    from .files import atomic_write
-
-    sizing = outcome.sizing
-    wb = Workbook()
-    ws = wb.active
-    ws.title = "Spring"
-    ws.append(["quantity", "value", "unit"])
-
-    def put(label, value, unit=""):
-        if unit == "section":
-            ws.append([label])
-            return
-        if isinstance(value, float) and not math.isfinite(value):
-            value = "not bounded" if math.isinf(value) else "none"
-        if isinstance(value, int | float) and not isinstance(value, bool):
-            value, unit, fmt = engineering(value, unit)
-            ws.append([label, value, unit])
-            ws.cell(ws.max_row, 2).number_format = fmt
-        else:
-            ws.append([label, str(value), unit])
-
-    for row in workbook_rows(outcome):
-        put(*row)
-    sheet = maker_sheet(sizing, outcome.values)
-    if sheet is not None:
-        put("Specification for the spring maker (EN 15800 grade 2)", None, "section")
-        for _, label, x, unit in sh.record_rows(sheet.figures()):
-            if x is sh.SECTION:  # the tolerances: their rows follow, in line
-                continue
-            if isinstance(x, list | tuple):
-                for note in x:
-                    put("note", note, "")
-            else:
-                put(label, x, unit)
-    checks = wb.create_sheet("Checks")
-    checks.append(["check", "value", "sense", "limit", "unit", "margin", "result", "source"])
-    for c in sizing.checks:
-        (value, unit, fmt), (limit, _, fmt_lim) = (engineering(x, c.unit)
-                                                   for x in (c.value, c.limit))
-        checks.append([c.name, value, c.sense, limit, unit, c.margin,
-                       "PASS" if c.passed else "FAIL", c.source])
-        r = checks.max_row
-        checks.cell(r, 2).number_format, checks.cell(r, 4).number_format = fmt, fmt_lim
-        checks.cell(r, 6).number_format = "0.00%"
-    if not sizing.checks:
-        checks.append(["no spring engineering checks: they need a wire grade (--material)"])
-    fl = wb.create_sheet("Force-length")
-    fl.append(["length L (mm)", "force F (N)"])
-    for length, force in _force_length_points(outcome):
-        fl.append([length * 1e3, force])
-        for cell in fl[fl.max_row]:
-            cell.number_format = "0.00"
-    fl.column_dimensions["A"].width = fl.column_dimensions["B"].width = 14
-    chart = ScatterChart()
-    chart.title, chart.x_axis.title, chart.y_axis.title = ("force against length",
-                                                           "length L (mm)", "force F (N)")
-    chart.series.append(Series(Reference(fl, min_col=2, min_row=2, max_row=fl.max_row),
-                               Reference(fl, min_col=1, min_row=2, max_row=fl.max_row),
-                               title="spring"))
-    fl.add_chart(chart, "D2")
-    wrap = Alignment(wrap_text=True, vertical="top")
-    for w in (ws, checks):
-        w.column_dimensions["A"].width = 44
-        w.column_dimensions["B"].width = 24 if w is checks else 40
-        for row in w.iter_rows():
-            for cell in row:  # long texts wrap in their column, every label beside its value
-                cell.alignment = wrap if isinstance(cell.value, str) else Alignment(
-                    vertical="top")
-        for cell in w[1]:
-            cell.font = Font(bold=True)
-    checks.column_dimensions["H"].width = 50
-    for w in (ws, checks, fl):  # rows tall enough for their wrapped text; A4, fit to the
-        fit_rows(w)  # page's width, the header on every page
-        print_setup(w)
-    return atomic_write(Path(path), wb.save, overwrite=replace, what="workbook")
+    return spring_workbook(outcome, path, replace=replace, command=command)
 
 
-def _force_length_points(outcome) -> list[tuple[float, float]]:
+def force_length_points(outcome) -> list[tuple[float, float]]:
     """(length m, force N) at the free length and the working points, solid length last
-    (compression), from the sizing's lengths as the force-length plot draws them."""
+    (compression), from the sizing's lengths as the force-length plot draws them; a point
+    equal to the one before it (no least force: the first working point is the free length)
+    once."""
     sizing, v = outcome.sizing, outcome.values
     R, F1, F2 = sizing.solution.stiffness, v.get("min_force") or 0.0, v["force"]
     L0 = sizing.free_length
     if sizing.kind == "compression":
         Lc = sizing.solid_length
-        return [(L0 - F / R, F) for F in (0.0, F1, F2)] + [(Lc, R * (L0 - Lc))]
-    F0 = _initial_tension(sizing)
-    return [(L0, F0)] + [(L0 + (F - F0) / R, F) for F in (F1, F2)]
+        points = [(L0 - F / R, F) for F in (0.0, F1, F2)] + [(Lc, R * (L0 - Lc))]
+    else:
+        F0 = _initial_tension(sizing)
+        points = [(L0, F0)] + [(L0 + (F - F0) / R, F) for F in (F1, F2)]
+    return [p for i, p in enumerate(points) if i == 0 or p != points[i - 1]]
 
 
 def _initial_tension(sizing) -> float:
