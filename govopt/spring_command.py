@@ -243,7 +243,11 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
                          inputs=[] if spec is None else [spec])
         out = _size({**DEFAULTS, **values}, where, name, json_out)
         if xlsx is not None:
-            out.written.append(so.write_workbook(out, xlsx, replace=replace))
+            from .report.excel.book import command_line
+
+            command = command_line(f"govopt spring {spec or ''} --xlsx {xlsx} (through the "
+                                   "Python API)")
+            out.written.append(so.write_workbook(out, xlsx, replace=replace, command=command))
         if plots is not None:
             out.written += so.write_plots(out, plots, stem, replace=replace)
     return out
