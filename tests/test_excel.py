@@ -441,7 +441,7 @@ def test_dynamics_and_optimisation_are_tables(tmp_path, results):
 
     roots = _table_below(dyn, "Roots of the load-change cubic (Hamabe eq. 28): xi ~ exp(s t)")
     assert roots[0] == ["load change", "root", "real part (1/s)", "imaginary part (1/s)",
-                        "time constant -1/Re (s)", "period 2 pi/|Im| (s)", *roots[0][6:]]
+                        "time constant -1/Re (s)", "period 2 pi / |Im| (s)", *roots[0][6:]]
     # openpyxl writes numbers with 16 significant digits ("%.16g")
     assert [r[:2] for r in roots[1:]] == [["unloading", k] for k in (1, 2, 3)] + [
         ["unstable copy", k] for k in (1, 2, 3)]

@@ -97,6 +97,7 @@ def test_every_bundled_spec_has_a_record(records):
             assert "dash-pot f" in first, name
         assert "Checks to watch" in first, name
         pages = [p for p in pages if p.strip()]
+        assert sum("Summary, page" in p for p in pages) == 1, name  # the Summary on one page
         for k, page in enumerate(pages, start=1):
             assert f"govopt {'design' if res.optimisation else 'evaluation'}: {res.spec.name}" \
                 in page, (name, k)

@@ -201,7 +201,7 @@ def load_changes(res) -> list[Table]:
     out.append(Table(f"Roots of the load-change cubic ({cubic.cite}): xi ~ exp(s t)",
                      ["load change", "root", "real part (1/s)",
                      "imaginary part (1/s)", "time constant -1/Re (s)",
-                     "period 2 pi/|Im| (s)"], roots,
+                     "period 2 pi / |Im| (s)"], roots,
                      ["period blank: a real root (no oscillation); a negative time constant "
                       "is a growing mode."]))
     for name, lc in zip(names, changes, strict=True):

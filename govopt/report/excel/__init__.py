@@ -33,6 +33,7 @@ from typing import TYPE_CHECKING
 from openpyxl import Workbook
 
 from .book import (
+    BODY_PT,
     Sheet,
     command_line,
     extent,
@@ -72,6 +73,9 @@ __all__ = ["ENGINEERING", "GOVOPT", "NAME", "NOTE", "RELDIFF", "SHEETS", "SHOWN_
            "SI_UNIT", "UNIT", "VALUE", "build_workbook", "engineering", "extent", "layout",
            "paginate", "print_titles", "printed_font", "sheets", "tables", "write_workbook"]
 
+#: The Summary's body text (pt): 8 pt printed at the least scale, so that its page holds the
+#: answer whole.
+SUMMARY_PT = 10.0
 #: Every sheet a design's workbook can have, in order (``Spring`` only where the governor has
 #: a spring: :func:`sheets`).
 SHEETS = ("Summary", "Design", "Checks", "Characteristic", "Spring", "Dynamics", "Spec",
@@ -107,7 +111,8 @@ def build_workbook(result: Result, *, command: str = "") -> Workbook:
 
     res = result
     wb = new_workbook()
-    made = {name: Sheet(wb.create_sheet(name), one_page=name == "Summary")
+    made = {name: Sheet(wb.create_sheet(name), one_page=name == "Summary",
+                        body_pt=SUMMARY_PT if name == "Summary" else BODY_PT)
             for name in sheets(res)}
     model = FormulaSheet(wb, made["Model"])
     build_design(wb, made["Design"], model, res)

@@ -176,8 +176,9 @@ class PrintedTable:
                                                                             self.header)
 
     def spans(self, breaks: Iterable[int]) -> bool:
-        """Whether a page break (after row ``b``) falls between its header and its last row."""
-        first = max(self.title, self.header)
+        """Whether a page break (after row ``b``) falls between its header and its last row (a
+        section's: between the shared header above it and its last row)."""
+        first = self.header if self.header < self.title else max(self.title, self.header)
         return any(first <= b < self.last for b in breaks)
 
 
@@ -195,8 +196,12 @@ class Sheet:
     tables: list = field(default_factory=list)
     print_cols: int | None = None
     scale: int = 100
-    #: a sheet laid out as one page (the Summary): no page breaks of its own
+    #: a sheet laid out as one page (the Summary): no page breaks of its own, printed at the
+    #: least scale (:data:`MIN_SCALE`), so that as much as can fits
     one_page: bool = False
+    #: the body text's size on this sheet (pt): the Summary's 10 pt prints at 8 pt at
+    #: :data:`MIN_SCALE`; its fonts are scaled to it when the sheet is finished
+    body_pt: float = BODY_PT
 
     def __post_init__(self):
         _LAYOUTS[self.ws] = self
@@ -254,7 +259,17 @@ class Sheet:
         if last > first:
             self.ws.merge_cells(start_row=row, start_column=first, end_row=row, end_column=last)
         width = sum(self.width(j) for j in range(first, last + 1))
-        self.ws.row_dimensions[row].height = 15.0 * _lines(text, width)
+        self.ws.row_dimensions[row].height = self.line_pt * _lines(text, self.chars(width))
+
+    @property
+    def line_pt(self) -> float:
+        """A line of body text's height (pt): :data:`ROW_PT` at 11 pt."""
+        return ROW_PT * self.body_pt / BODY_PT
+
+    def chars(self, width: float) -> float:
+        """``width`` (of a column, in the body font's width units) in 11 pt characters: a
+        smaller body font fits more."""
+        return width * BODY_PT / self.body_pt
 
     def width(self, col: int) -> float:
         """Column ``col``'s width (characters; the default where none is set)."""
@@ -441,9 +456,19 @@ def extent(sheet: Sheet, anchor: str, width_cm: float, height_cm: float) -> tupl
         col += 1
     left = height_cm / 2.54 * 96
     while left > 0:
-        left -= (ws.row_dimensions[row].height or ROW_PT) * 96 / 72
+        left -= (ws.row_dimensions[row].height or sheet.line_pt) * 96 / 72
         row += 1
     return col - 1, row - 1
+
+
+def page_room(sheet: Sheet, first: int, last: int) -> float:
+    """What a one-page sheet's landscape page has left (cm) below rows ``first`` .. ``last``
+    (their heights as set), at :data:`MIN_SCALE`."""
+    ws = sheet.ws
+    used = sum((ws.row_dimensions[r].height or sheet.line_pt) * 96 / 72
+               for r in range(first, last + 1))
+    room = PAGE_PX["landscape"][1] * PAGE_FILL * 100.0 / MIN_SCALE - used
+    return room / 96 * 2.54
 
 
 def printed_font(sheet: Sheet) -> float:
@@ -458,8 +483,25 @@ def finish(sheet: Sheet, header: str, right: str = "") -> None:
     for their wrapped text, the page set up (:func:`print_setup`) with ``header`` (left) and
     ``right`` at the top of every page."""
     _align_top(sheet)
+    _body_size(sheet)
     fit_rows(sheet)
     print_setup(sheet, header, right)
+
+
+def _body_size(sheet: Sheet) -> None:
+    """Every cell's font scaled to the sheet's body size (:attr:`Sheet.body_pt`), where it is
+    not the workbook's; one font object per style."""
+    if sheet.body_pt == BODY_PT:
+        return
+    made: dict[tuple, Font] = {}
+    for c in sheet.cells.values():
+        f = c.font
+        size = round((f.sz or BODY_PT) * sheet.body_pt / BODY_PT, 1)
+        key = (f.name, size, f.b, f.i, f.color.rgb if f.color is not None else None)
+        if key not in made:
+            made[key] = Font(name=f.name or FONT, size=size, bold=f.b, italic=f.i,
+                             color=f.color)
+        c.font = made[key]
 
 
 def _align_top(sheet: Sheet) -> None:
@@ -494,10 +536,11 @@ def fit_rows(sheet: Sheet) -> None:
                 continue
             c.alignment = Alignment(horizontal=c.alignment.horizontal, vertical="top",
                                     wrap_text=True)
-        need[c.row] = max(need.get(c.row, 1), _lines(c.value, width))
+        need[c.row] = max(need.get(c.row, 1), _lines(c.value, sheet.chars(width)))
     for r, lines in need.items():
         if lines > 1:
-            ws.row_dimensions[r].height = max(ws.row_dimensions[r].height or 0, 15.0 * lines)
+            ws.row_dimensions[r].height = max(ws.row_dimensions[r].height or 0,
+                                              sheet.line_pt * lines)
 
 
 def _free_right(sheet: Sheet, cell) -> bool:
@@ -532,9 +575,10 @@ def print_setup(sheet: Sheet, header: str = "", right: str = "") -> None:
     width = SPREADSHEET_WIDTH * sum(px(ws.column_dimensions[get_column_letter(j)].width)
                                     for j in range(1, cols + 1))
     portrait = PAGE_PX["portrait"][0] / width
-    orientation = "portrait" if portrait >= 0.95 else "landscape"
+    orientation = "portrait" if portrait >= 0.95 and not sheet.one_page else "landscape"
     page_w, page_h = PAGE_PX[orientation]
-    sheet.scale = max(MIN_SCALE, min(100, int(100 * page_w / width)))
+    sheet.scale = MIN_SCALE if sheet.one_page else max(MIN_SCALE,
+                                                       min(100, int(100 * page_w / width)))
     ws.page_setup.paperSize = ws.PAPERSIZE_A4
     ws.page_setup.orientation = orientation
     ws.page_setup.scale = sheet.scale

@@ -48,6 +48,19 @@ def columns(res: Result) -> list[tuple[str, np.ndarray, str]]:
     return cols
 
 
+def speed_range(res: Result) -> tuple[float, float]:
+    """The speed axis's ends (rpm): round values just outside the speeds drawn (the
+    characteristic, the friction band's, the required band)."""
+    speeds = [res.statics.omega]
+    speeds += [s for s in res.friction_speeds if s is not None]
+    if res.spec.speed is not None:
+        speeds.append(np.array([res.spec.speed.omega_inner, res.spec.speed.omega_outer]))
+    rpm = np.concatenate([np.asarray(s, dtype=float).ravel() for s in speeds]) * 30 / math.pi
+    lo, hi = float(np.min(rpm)), float(np.max(rpm))
+    pad = 0.05 * (hi - lo) if hi > lo else 1.0
+    return axis_range([lo - pad, hi + pad])
+
+
 def band_column(res: Result) -> int:
     """The first column of the required band's chart data: right of the printed table and
     of the chart under it (cm, at the narrowest a column prints)."""
@@ -93,6 +106,7 @@ def build_characteristic(sheet: Sheet, res: Result) -> None:
     elif res.friction_speeds[0] is None:
         chart.legend = None  # one curve: the axis titles name it
     chart.x_axis.scaling.min, chart.x_axis.scaling.max = axis_range(cols[0][1])
+    chart.y_axis.scaling.min, chart.y_axis.scaling.max = speed_range(res)
     anchor = f"B{n + 3}"
     _, end = sheet.chart(chart, anchor)  # below the table
     sheet.keep_table(1, n + 1, header=1)

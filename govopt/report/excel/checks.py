@@ -37,7 +37,7 @@ SHOWN_IN_CHECKS = tuple(SHOWN)
 HEADERS = ["check", "value", "unit", "sense", "limit", "margin", "result", "binding (active)",
            "source"]
 #: The widths: a declared table under the checks (quantity, unit, value) reads in A-C.
-WIDTHS = {1: 32, 2: 12, 3: 12, 4: 5, 5: 12, 6: 9, 7: 7, 8: 8, 9: 30}
+WIDTHS = {1: 32, 2: 12, 3: 12, 4: 6, 5: 12, 6: 9, 7: 7, 8: 8, 9: 29}
 
 
 def build_checks(sheet: Sheet, res: Result) -> None:

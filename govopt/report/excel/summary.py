@@ -36,6 +36,7 @@ from .book import (
     add_series,
     axis_range,
     fit_rows,
+    page_room,
     scatter,
     sig_format,
     unit_label,
@@ -46,7 +47,7 @@ if TYPE_CHECKING:
 
 #: The left block (label, value, unit, a note across D-F), a gap, the right block (a check's
 #: name, value, unit, margin and result; the charts above and below it).
-WIDTHS = {1: 22, 2: 10, 3: 8, 4: 7, 5: 7, 6: 7, 7: 1, 8: 24, 9: 10, 10: 8, 11: 14, 12: 9}
+WIDTHS = {1: 25, 2: 10, 3: 8, 4: 7, 5: 7, 6: 7, 7: 1, 8: 24, 9: 10, 10: 8, 11: 14, 12: 9}
 LEFT, RIGHT, RIGHT_COL = 6, 8, "H"
 #: The characteristic's and the drawing's size on the page (cm): the right block's width.
 CHART, DRAWING = (12.6, 5.6), (12.6, 7.6)
@@ -102,9 +103,7 @@ def design_rows(res: Result) -> list[tuple[str, object, str, str]]:
         rows.append(("dash-pot f", f.value, f.unit, f.note))
     for name, f in figures.items():
         if (f.group == "speed" and name != "mean speed") or name.startswith("objective"):
-            rows.append((name, f.value, f.unit, f.note if name.startswith(("objective",
-                                                                          "closing",
-                                                                          "opening")) else ""))
+            rows.append((name, f.value, f.unit, f.note if name.startswith("objective") else ""))
     return rows
 
 
@@ -142,8 +141,9 @@ def build_summary(sheet: Sheet, res: Result, *, command: str, characteristic: Sh
     _, end = sheet.chart(_characteristic_chart(res, characteristic), f"{RIGHT_COL}1")
     last = _checks(sheet, end + 2, res)
     fit_rows(sheet)
-    if drawing is not None:
-        sheet.chart(_drawing_chart(res, *drawing), f"{RIGHT_COL}{last + 2}")
+    if drawing is not None:  # as tall as the page has room for (one page), 4 cm at least
+        height = max(4.0, min(DRAWING[1], page_room(sheet, 1, last + 1) - 0.3))
+        sheet.chart(_drawing_chart(res, *drawing, height=height), f"{RIGHT_COL}{last + 2}")
     ws.freeze_panes = None
 
 
@@ -204,12 +204,10 @@ def _tolerances(sheet: Sheet, row: int, res: Result) -> int:
     rpm = 30.0 / math.pi
     (a, b), (c, d) = sp["omega_inner_range_rad_s"], sp["omega_outer_range_rad_s"]
     sheet.paragraph(row, f"Spring tolerances (EN 15800 grade {grade}, worst case): speed at "
-                         f"the inner end {a * rpm:.5g} .. {b * rpm:.5g} rpm, at the "
-                         f"outer end {c * rpm:.5g} .. {d * rpm:.5g} rpm (rate "
+                         f"the inner end {a * rpm:.5g} .. {b * rpm:.5g} rpm, at the outer end "
+                         f"{c * rpm:.5g} .. {d * rpm:.5g} rpm (rate "
                          f"{sp['stiffness_range_N_per_m'][0] / 1e3:.5g} .. "
-                         f"{sp['stiffness_range_N_per_m'][1] / 1e3:.5g} N/mm from the wire "
-                         f"+- {sp['wire_diameter_tolerance_m'] * 1e3:.3g} mm and coil "
-                         f"+- {sp['coil_diameter_tolerance_m'] * 1e3:.3g} mm; free length "
+                         f"{sp['stiffness_range_N_per_m'][1] / 1e3:.5g} N/mm, free length "
                          f"+- {sp['free_length_tolerance_m'] * 1e3:.3g} mm)", 1, LEFT, font=None)
     return row + 1
 
@@ -217,19 +215,17 @@ def _tolerances(sheet: Sheet, row: int, res: Result) -> int:
 def _characteristic_chart(res: Result, char: Sheet):
     """Speed (rpm) against configuration from the Characteristic sheet's columns, the friction
     band's speeds dashed, the required band from its chart data."""
-    from .characteristic import band_column, columns
+    from .characteristic import band_column, columns, speed_range
 
     ws = char.ws
     cols = columns(res)
     n = len(res.statics.alpha)
     chart = scatter(f"Characteristic ({res.method.named('characteristic').cite})",
                     cols[0][0], "speed (rpm)", *CHART)
-    add_series(chart, ws, 1, 3, 1, n + 1, colour=0, title="equilibrium speed")
+    add_series(chart, ws, 1, 3, 1, n + 1, colour=0, title="speed")
     if res.friction_speeds[0] is not None:
-        add_series(chart, ws, 1, 4, 1, n + 1, colour=3, dash=True, width=1.25,
-                   title="opening (rising against friction)")
-        add_series(chart, ws, 1, 5, 1, n + 1, colour=4, dash=True, width=1.25,
-                   title="closing (falling against friction)")
+        add_series(chart, ws, 1, 4, 1, n + 1, colour=3, dash=True, width=1.25, title="opening")
+        add_series(chart, ws, 1, 5, 1, n + 1, colour=4, dash=True, width=1.25, title="closing")
     if res.spec.speed is not None:
         col = band_column(res)
         for k in (1, 2):
@@ -237,6 +233,7 @@ def _characteristic_chart(res: Result, char: Sheet):
                        title="required band" if k == 1 else "required band (outer)")
         chart.legend.legendEntry.append(LegendEntry(idx=len(chart.series) - 1, delete=True))
     chart.x_axis.scaling.min, chart.x_axis.scaling.max = axis_range(cols[0][1])
+    chart.y_axis.scaling.min, chart.y_axis.scaling.max = speed_range(res)
     return chart
 
 
@@ -295,14 +292,15 @@ def drawing_data(sheet: Sheet, res: Result, col: int) -> list | None:
     return out
 
 
-def _drawing_chart(res: Result, sheet: Sheet, series: list):
+def _drawing_chart(res: Result, sheet: Sheet, series: list, height: float = DRAWING[1]):
     """The drawing as a scatter chart on equal scales (the plot area's place fixed, so that a
     millimetre across is a millimetre up): each configuration's bars, balls and sleeve as one
     line in its colour (innermost and outermost dashed), its spring thin, its fulcrums as
-    triangles; the frame grey; one legend entry per configuration."""
+    triangles; the frame grey; the title names the colours."""
     ws = sheet.ws
-    chart = scatter("The governor drawn to scale", *res.spec.governor.drawing(
-        res.spec.governor.x_normal, res.spring).axes, *DRAWING)
+    chart = scatter("Drawn to scale: innermost (blue), normal (grey), outermost (red)",
+                    *res.spec.governor.drawing(
+        res.spec.governor.x_normal, res.spring).axes, DRAWING[0], height)
     chart.x_axis.majorGridlines = None
     chart.y_axis.majorGridlines = None
     xs, ys = [], []
@@ -329,19 +327,19 @@ def _drawing_chart(res: Result, sheet: Sheet, series: list):
             if dash or group == "spring":
                 line.dashStyle = "sysDot" if group == "spring" else "dash"
         chart.series.append(s)
-        if group != "lines":
-            chart.legend.legendEntry.append(LegendEntry(idx=len(chart.series) - 1, delete=True))
+
     chart.display_blanks = "gap"
-    plot_w, plot_h = 0.78, 0.62  # the plot area's share of the chart, fixed below
-    chart.plot_area.layout = Layout(manualLayout=ManualLayout(x=0.17, y=0.1, w=plot_w,
+    chart.legend = None  # the title names the configurations' colours
+    plot_w, plot_h = 0.78, 0.70  # the plot area's share of the chart, fixed below
+    chart.plot_area.layout = Layout(manualLayout=ManualLayout(x=0.17, y=0.11, w=plot_w,
                                                               h=plot_h))
-    width_cm, height_cm = plot_w * DRAWING[0], plot_h * DRAWING[1]
+    width_cm, height_cm = plot_w * DRAWING[0], plot_h * height
     (x0, x1), (y0, y1) = (min(xs), max(xs)), (min(ys), max(ys))
     per_cm = nice(max((x1 - x0) / width_cm, (y1 - y0) / height_cm) * 1.02)  # mm a cm
     while True:  # each axis from a whole tick, as many mm a cm on both, the drawing inside
         step = nice(per_cm * 2.0)  # a tick every 2 cm or so
-        ends = [(math.floor(lo / step) * step, cm) for lo, cm in ((x0, width_cm),
-                                                                    (y0, height_cm))]
+        ends = [(math.floor((0.5 * (lo + hi) - 0.5 * per_cm * cm) / step) * step, cm)
+                for lo, hi, cm in ((x0, x1, width_cm), (y0, y1, height_cm))]  # centred
         if all(start + per_cm * cm >= hi for (start, cm), hi in zip(ends, (x1, y1),
                                                                       strict=True)):
             break
