@@ -108,7 +108,7 @@ def test_no_text_under_8_pt(records):
     """No cell's font prints under 8 pt (its size times its sheet's print scale), and no word
     of the PDF is drawn smaller (its height over the font's line box; words of four letters or
     more set across the page: an axis title set upwards has its length as its height)."""
-    for name, (res, path, _, words) in records.items():
+    for name, (res, _, _, words) in records.items():
         built = excel.build_workbook(res)
         for ws in built.worksheets:
             assert excel.printed_font(excel.layout(ws)) >= 8.0, (name, ws.title)

@@ -181,7 +181,10 @@ def write_workbook(outcome, path, *, replace: bool = True, command: str = "") ->
     with ``replace``)."""
     from .excel.spring import spring_workbook
 
-    return spring_workbook(outcome, path, replace=replace, command=command)
+    return spring_workbook(outcome, path, rows=workbook_rows(outcome),
+                           sheet=maker_sheet(outcome.sizing, outcome.values),
+                           points=force_length_points(outcome), replace=replace,
+                           command=command)
 
 
 def force_length_points(outcome) -> list[tuple[float, float]]:

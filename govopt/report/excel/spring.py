@@ -206,7 +206,7 @@ def build_spring(sheet: Sheet, res: Result) -> None:
     sheet.print_cols = len(WIDTHS)
     sheet.ws.freeze_panes = "A2"
     rep = res.spring_report
-    kind = "leaf" if gov.spring == "leaf" else f"{gov.spring} spring"
+    kind = f"{gov.spring} spring" if gov.spring_kind.helical else gov.spring
     sheet.title(1, f"Spring: the governor's {kind}, as its maker reads it")
     if rep is None:
         _spring_figures(sheet, res)
@@ -259,14 +259,16 @@ def _spring_figures(sheet: Sheet, res: Result) -> None:
 # govopt spring --xlsx
 
 
-def spring_workbook(outcome, path, *, replace: bool = True, command: str = ""):
+def spring_workbook(outcome, path, *, rows, sheet, points, replace: bool = True,
+                    command: str = ""):
     """``govopt spring``'s workbook (see the module's text), saved atomically (an existing
-    file replaced only with ``replace``)."""
+    file replaced only with ``replace``): ``rows`` the answer's ``(label, SI value or text, SI
+    unit)`` (:func:`govopt.report.spring_outputs.workbook_rows`), ``sheet`` the maker's sheet
+    or None, ``points`` the force-length points ``(length m, force N)`` without a sheet."""
     from ... import __version__
-    from .. import spring_outputs as so
     from .book import command_line
 
-    sizing, data, values = outcome.sizing, outcome.data, outcome.values
+    sizing, data = outcome.sizing, outcome.data
     wb = new_workbook()
     header = f"govopt spring: {outcome.name}"
     summary = Sheet(wb.create_sheet("Summary"))
@@ -291,7 +293,7 @@ def spring_workbook(outcome, path, *, replace: bool = True, command: str = ""):
     summary.header(row, ["quantity", "value", "unit", "note"])
     head = row
     bound, objective = data.get("lower_bound"), data.get("objective_value")
-    for label, value, unit in so.workbook_rows(outcome):
+    for label, value, unit in rows:
         row += 1
         if unit == "section":
             summary.title(row, label, font=BOLD)
@@ -320,7 +322,6 @@ def spring_workbook(outcome, path, *, replace: bool = True, command: str = ""):
         summary.paragraph(row, "(objective - bound) / bound, a fraction: how far the answer is "
                                "from the best any spring could do", 4, 4, font=None)
     summary.keep_table(head, row, header=head)
-    sheet = so.maker_sheet(sizing, values)
     if sheet is not None:
         row += 2
         summary.paragraph(row, "Specification for the spring maker (EN 15800 grade 2) on the "
@@ -340,7 +341,7 @@ def spring_workbook(outcome, path, *, replace: bool = True, command: str = ""):
     fl = Sheet(wb.create_sheet("Force-length"))
     fl.set_widths({1: 34, 2: 14, 3: 14, 4: 4})
     points = force_length_points(sheet) if sheet is not None else [
-        (f"point {i}", L, F) for i, (L, F) in enumerate(so.force_length_points(outcome), 1)]
+        (f"point {i}", L, F) for i, (L, F) in enumerate(points, 1)]
     write_force_length(fl, 1, points, f"{outcome.name}: force against length")
     for s in (summary, *([spring] if sheet is not None else []), checks, fl):
         finish(s, header, f"govopt {__version__}")
