@@ -9,8 +9,8 @@ API; the sheets' conventions, :mod:`govopt.report.excel.book`):
   (:mod:`.summary`);
 * **Design** - the design's inputs as yellow cells with defined names and the derived
   quantities as live formulas beside govopt's values (:mod:`.design`);
-* **Checks** - every check with value, limit, margin, verdict and source; the optimiser's
-  record (:mod:`.checks`);
+* **Checks** - every check with value, limit, margin, verdict and source; **Optimisation** -
+  the optimiser's record, for a design (:mod:`.checks`);
 * **Characteristic** - the equilibrium over the range, the friction band's speeds, the chart
   (:mod:`.characteristic`);
 * **Spring** - where the governor has one: the spring as its maker reads it (:mod:`.spring`);
@@ -47,7 +47,7 @@ from .book import (
     tables,
 )
 from .characteristic import build_characteristic
-from .checks import SHOWN_IN_CHECKS, build_checks
+from .checks import SHOWN_IN_CHECKS, build_checks, build_optimisation
 from .design import (
     GOVOPT,
     NAME,
@@ -78,13 +78,16 @@ __all__ = ["ENGINEERING", "GOVOPT", "NAME", "NOTE", "RELDIFF", "SHEETS", "SHOWN_
 SUMMARY_PT = 10.0
 #: Every sheet a design's workbook can have, in order (``Spring`` only where the governor has
 #: a spring: :func:`sheets`).
-SHEETS = ("Summary", "Design", "Checks", "Characteristic", "Spring", "Dynamics", "Spec",
-          "Method", "Model")
+SHEETS = ("Summary", "Design", "Checks", "Optimisation", "Characteristic", "Spring",
+          "Dynamics", "Spec", "Method", "Model")
 
 
 def sheets(result: Result) -> tuple[str, ...]:
-    """The sheets of ``result``'s workbook, in order."""
-    return tuple(s for s in SHEETS if s != "Spring" or result.spec.governor.spring is not None)
+    """The sheets of ``result``'s workbook, in order: ``Optimisation`` only for a design
+    (``govopt design``), ``Spring`` only where the governor has a spring."""
+    return tuple(s for s in SHEETS
+                 if (s != "Spring" or result.spec.governor.spring is not None)
+                 and (s != "Optimisation" or result.optimisation))
 
 
 def write_workbook(result: Result, path: str | os.PathLike, *, command: str | None = None
@@ -120,6 +123,8 @@ def build_workbook(result: Result, *, command: str = "") -> Workbook:
         model_constants(model, res, named=False)
     model.close()
     build_checks(made["Checks"], res)
+    if "Optimisation" in made:
+        build_optimisation(made["Optimisation"], res)
     build_characteristic(made["Characteristic"], res)
     if "Spring" in made:
         build_spring(made["Spring"], res)

@@ -1,7 +1,8 @@
 """The Checks sheet: every check with its value, limit, margin, verdict and source, in the units
 people read (deg or mm, MPa, rpm: :data:`SHOWN_IN_CHECKS`; the margin is the same in any unit),
-words for a value that is not finite, PASS/FAIL coloured; the binding and failed checks; then the
-optimiser's record as declared tables (:func:`govopt.report.sections.optimisation`).
+words for a value that is not finite, PASS/FAIL coloured; the binding and failed checks. The
+Optimisation sheet: the optimiser's record as declared tables
+(:func:`govopt.report.sections.optimisation`).
 
 Every number here is govopt's (no formulas: a reader that does not recalculate sees them all);
 the stress and the irregularity follow an edited design live on the Design sheet
@@ -20,7 +21,6 @@ from .book import (
     FAIL_FILL,
     FAIL_FONT,
     GENERAL_FORMAT,
-    ITALIC,
     PASS_FILL,
     PASS_FONT,
     WRAP,
@@ -83,12 +83,17 @@ def build_checks(sheet: Sheet, res: Result) -> None:
     row += 1
     sheet.paragraph(row, "margin: the distance to the limit as a share of the limit (of the "
                          "check's scale where the limit is 0); the same in any unit.", 1, 9)
-    row += 2
-    tables = sections.optimisation(res)
-    if not tables:
-        sheet.title(row, "Optimisation", font=BOLD)
-        sheet.put(row + 1, 1, "No optimisation in this result: it evaluates a given design "
-                              "(no binding constraints or sensitivities to report).").font = ITALIC
-    for table in tables:
+
+
+def build_optimisation(sheet: Sheet, res: Result) -> None:
+    """The optimiser's record (``govopt design``) as declared tables: status, objective and
+    bound, the search, the chosen design, the bound's design, a robust design's tolerance box
+    and worst cases, the sensitivities (on a sheet of its own: a table that runs onto another
+    page repeats its header there, and a sheet repeats one)."""
+    sheet.set_widths(WIDTHS)
+    sheet.print_cols = len(HEADERS)
+    sheet.title(1, "Optimisation: the design search's record")
+    row = 3
+    for table in sections.optimisation(res):
         row = sheet.write_table(row, table)
 

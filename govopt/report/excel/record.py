@@ -116,7 +116,8 @@ def build_method(sheet: Sheet, res: Result) -> None:
 #: How the workbook is made, for its reader (the Method sheet's last block).
 _WORKBOOK_NOTES = (
     ("sheets", "Summary (the answer: verdict, design, the checks to watch, the characteristic, "
-               "the governor drawn), Design (live formulas), Checks, Characteristic, Spring "
+               "the governor drawn), Design (live formulas), Checks, Optimisation (for a "
+               "design), Characteristic, Spring "
                "(where the governor has one), Dynamics, Spec (the inputs), Method (this sheet), "
                "Model (the model's internals). docs/how-to/read-the-workbook.md tells more."),
     ("units", "Engineering units where a person reads (mm, N/mm, MPa, rpm, deg), each column or "

@@ -335,15 +335,15 @@ def _drawing_chart(res: Result, sheet: Sheet, series: list, height: float = DRAW
                                                               h=plot_h))
     width_cm, height_cm = plot_w * DRAWING[0], plot_h * height
     (x0, x1), (y0, y1) = (min(xs), max(xs)), (min(ys), max(ys))
-    per_cm = nice(max((x1 - x0) / width_cm, (y1 - y0) / height_cm) * 1.02)  # mm a cm
+    per_cm = max((x1 - x0) / width_cm, (y1 - y0) / height_cm) * 1.02  # mm a cm, both axes
     while True:  # each axis from a whole tick, as many mm a cm on both, the drawing inside
-        step = nice(per_cm * 2.0)  # a tick every 2 cm or so
+        step = nice(per_cm * 1.5)  # a tick every 1.5 cm or so
         ends = [(math.floor((0.5 * (lo + hi) - 0.5 * per_cm * cm) / step) * step, cm)
                 for lo, hi, cm in ((x0, x1, width_cm), (y0, y1, height_cm))]  # centred
         if all(start + per_cm * cm >= hi for (start, cm), hi in zip(ends, (x1, y1),
                                                                       strict=True)):
             break
-        per_cm = nice(per_cm * 1.01)
+        per_cm *= 1.03
     for axis, (start, cm) in zip((chart.x_axis, chart.y_axis), ends, strict=True):
         axis.scaling.min, axis.scaling.max = start, start + per_cm * cm
         axis.majorUnit = step
