@@ -44,36 +44,38 @@ def build_spec(sheet: Sheet, res: Result) -> None:
     sheet.print_cols = len(SPEC_HEADERS)
 
 
-METHOD_WIDTHS = {1: 14, 2: 36, 3: 42, 4: 30}
+METHOD_WIDTHS = {1: 22, 2: 22, 3: 44, 4: 32}
 
 
 def build_method(sheet: Sheet, res: Result) -> None:
-    """The type's method (its declaration, :meth:`Governor.method`): the equations by topic
-    with their sources, the fidelity settings that apply with their values, the spring's free
-    length in words, the bibliography (the method's and the checks' sources), and how the
-    workbook is made."""
-    method, spec = res.method, res.spec
+    """The type's method (its declaration, :meth:`Governor.method`): a small table a topic of
+    its equations with their sources, the fidelity settings that apply with their values, the
+    spring's free length in words, how the workbook is made, and last the bibliography (the
+    method's and the checks' sources: the one table that may run onto another page)."""
+    from ...governors.base import TOPICS
+
+    method = res.method
     sheet.set_widths(METHOD_WIDTHS)
     sheet.print_cols = 4
     sheet.title(1, f"Method: {method.title}")
-    sheet.ws.freeze_panes = "A2"
-    row = 3
-    from ...governors.base import TOPICS
-
-    sheet.title(row, "What govopt computes for this governor, and from which source",
-                font=BOLD)
-    sheet.header(row + 1, ["topic", "what", "equation", "source"])
-    first, row = row, row + 2
+    sheet.put(2, 1, "What govopt computes for this governor, and from which source: the "
+                    "type's own declaration, beside its physics.").font = ITALIC
+    row = 4
     for topic, heading in TOPICS.items():
-        for i, e in enumerate(method.of(topic)):
-            sheet.put(row, 1, heading if i == 0 else "").font = BOLD
-            sheet.put(row, 2, e.what).alignment = WRAP
+        equations = method.of(topic)
+        if not equations:
+            continue
+        sheet.title(row, heading, font=BOLD)
+        sheet.header(row + 1, ["what", "", "equation", "source (fidelity settings)"])
+        first, row = row, row + 2
+        for e in equations:
+            sheet.paragraph(row, e.what, 1, 2, font=None)
             sheet.put(row, 3, e.formula).alignment = WRAP
             settings = f" ({', '.join(e.settings)})" if e.settings else ""
             sheet.put(row, 4, e.cite + settings).alignment = WRAP
             row += 1
-    sheet.keep_table(first, row - 1)
-    row += 1
+        sheet.keep_table(first, row - 1)
+        row += 1
     sheet.title(row, "Fidelity settings that apply to this governor", font=BOLD)
     sheet.header(row + 1, ["setting", "what it chooses", "value in this spec", ""])
     first, row = row, row + 2
@@ -84,13 +86,20 @@ def build_method(sheet: Sheet, res: Result) -> None:
                   sig_format(s.value))
         row += 1
     sheet.keep_table(first, row - 1)
+    row += 1
     if method.free_length:
-        row += 1
         sheet.title(row, "The spring's free length in this model", font=BOLD)
         sheet.paragraph(row + 1, method.free_length, 1, 4, font=None)
+        sheet.keep(row, row + 1)
         row += 3
-    else:
+    sheet.title(row, "This workbook", font=BOLD)
+    first, row = row, row + 1
+    for label, text in _WORKBOOK_NOTES:
+        sheet.put(row, 1, label).font = ITALIC
+        sheet.paragraph(row, text, 2, 4, font=None)
         row += 1
+    sheet.keep_table(first, row - 1, header=first)
+    row += 1
     keys = method.sources(tuple(c.source for c in res.checks))
     sheet.title(row, "Sources (of the method and of the checks)", font=BOLD)
     sheet.header(row + 1, ["key", "citation", "", "used for"])
@@ -102,18 +111,9 @@ def build_method(sheet: Sheet, res: Result) -> None:
         sheet.put(row, 4, ref.use).alignment = WRAP
         row += 1
     sheet.keep_table(first, row - 1)
-    row += 1
-    sheet.title(row, "This workbook", font=BOLD)
-    first, row = row, row + 1
-    for label, text in _WORKBOOK_NOTES:
-        sheet.put(row, 1, label).font = ITALIC
-        sheet.paragraph(row, text, 2, 4, font=None)
-        row += 1
-    sheet.keep_table(first, row - 1, header=first)
-    del spec
 
 
-#: How the workbook is made, for its reader (the Method sheet's last block).
+#: How the workbook is made, for its reader (on the Method sheet).
 _WORKBOOK_NOTES = (
     ("sheets", "Summary (the answer: verdict, design, the checks to watch, the characteristic, "
                "the governor drawn), Design (live formulas), Checks, Optimisation (for a "
