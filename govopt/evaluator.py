@@ -376,7 +376,7 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         # needs no wire grade
         from .analysis import spring_engineering
 
-        checks.add_row(stress_row(mat), {"stress": stress.max(axis=1)}, where=helical)
+        checks.add_row(stress_row(mat, spec), {"stress": stress.max(axis=1)}, where=helical)
         for row, value, limit, source in spring_engineering.geometry_table(
                 spec, cols["wire_diameter"], 2.0 * cols["coil_radius"],
                 cols["active_turns"], kappa[:, 0], l0[:, 0], F.min(axis=1), F.max(axis=1)):

@@ -295,7 +295,11 @@ def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool) -> Outco
     if output is not None:
         out.written.append(so.write_check_spec(out, output, replace=replace))
     if xlsx is not None:
-        out.written.append(so.write_workbook(out, xlsx, replace=replace))
+        from .report.excel.book import command_line
+
+        command = command_line(f"govopt spring {out.command} --xlsx {xlsx} (through the "
+                               "Python API)")
+        out.written.append(so.write_workbook(out, xlsx, replace=replace, command=command))
     if plots is not None:
         out.written += so.write_plots(out, plots, stem, replace=replace)
     return out

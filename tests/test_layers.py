@@ -23,7 +23,7 @@ PACKAGE = Path(govopt.__file__).resolve().parent
 LAYERS = (
     ("ground", ("govopt.units", "govopt.limits", "govopt.errors", "govopt.inputs",
                 "govopt.stats", "govopt.jsonable", "govopt.examples", "govopt.verdict",
-                "govopt.keys")),
+                "govopt.keys", "govopt.references")),
     ("springs", ("govopt.springs",)),
     ("seam", ()),
     ("analysis", ("govopt.analysis", "govopt.fidelity")),
