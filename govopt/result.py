@@ -169,9 +169,9 @@ class Result:
                     Figure(gov.free_length_key.replace("_", " "), sd.l0, "m", "spring",
                            symbol="l0", json=f"{gov.free_length_key}_m")]
             if not gov.spring_kind.helical:  # the section the design sizes (a leaf's)
-                out += [Figure(key.replace("_", " "), getattr(self.design, key), "m", "spring")
-                        for key, dimension in gov.spring_kind.section
-                        if dimension == "length" and getattr(self.design, key, None) is not None]
+                out += [Figure(k.name.replace("_", " "), getattr(self.design, k.name), "m",
+                               "spring") for k in gov.spring_kind.section
+                        if k.kind == "length" and getattr(self.design, k.name, None) is not None]
         if sp:
             out += [Figure("wire diameter", sd.d, "m", "spring", symbol="d"),
                     Figure("mean coil radius", sd.r, "m", "spring", symbol="r",
