@@ -6,7 +6,7 @@ from typing import Annotated
 import typer
 
 from . import common
-from .common import FORCE_HELP, Command, echo, guarded
+from .common import FORCE_HELP, echo, guarded
 
 EXAMPLES_SHORT = "List the bundled example specs."
 EXAMPLES_HELP = "List the bundled example specs. `govopt init NAME` copies one to start from."
@@ -18,7 +18,7 @@ examples_app = typer.Typer(add_completion=False)
 init_app = typer.Typer(add_completion=False)
 
 
-@examples_app.command("examples", cls=Command, help=EXAMPLES_HELP, short_help=EXAMPLES_SHORT)
+@examples_app.command("examples", help=EXAMPLES_HELP, short_help=EXAMPLES_SHORT)
 @guarded
 def examples_command() -> None:
     """List the bundled example specs.
@@ -32,7 +32,7 @@ def examples_command() -> None:
         echo(f"{name:<{width}}  {description(path)}")
 
 
-@init_app.command("init", cls=Command, help=INIT_HELP, short_help=INIT_SHORT)
+@init_app.command("init", help=INIT_HELP, short_help=INIT_SHORT)
 @guarded
 def init_command(
         name: Annotated[str, typer.Argument(

@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from . import common
-from .common import JSON_HELP, ChecksFailed, Command, echo, guarded
+from .common import JSON_HELP, ChecksFailed, echo, guarded
 
 SPRING_SHORT = ("Least-mass helical spring for a force and stiffness (an exact GP, certified "
                 "global).")
@@ -27,7 +27,7 @@ def _o(name: str, help: str, metavar: str = "<str>"):
     return common.option(name, help=help, metavar=metavar)
 
 
-@app.command("spring", cls=Command, help=SPRING_HELP, short_help=SPRING_SHORT)
+@app.command("spring", help=SPRING_HELP, short_help=SPRING_SHORT)
 @guarded
 def spring(
         spec: Annotated[Path | None, typer.Argument(
