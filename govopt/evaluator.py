@@ -1,15 +1,15 @@
 """The one evaluator: every figure and check of N designs of a spec, over arrays.
 
-:func:`core` computes, for designs given as arrays (:func:`govopt.bulk.design_arrays`), the
-statics (Hamabe eqs. 1, 2, 11, 12), ``k^2`` (eqs. 18-20), the load-change model (eqs. 24-32,
-:func:`govopt.analysis.transient.analyse_many`) and the classic measures (textbook ch. 3) in a
-few numpy operations, and evaluates every requirement row of :mod:`govopt.requirements` on them
-in one :class:`~govopt.requirements.CheckTable`. The parts that have no vectorised form run
-inside it design by design, into the same table: a type's periodic forcing
-(:meth:`Governor.vibration`, Hamabe Part II), Hamabe's friction transient (eqs. 42-46, a
-sequence of strokes), and the spring's own checks where the type or a wire grade supplies them
-(:meth:`Governor.spring_checks`). A design no spring can realise gets the one-line diagnosis
-:func:`diagnose` (the ``DesignError`` :func:`govopt.evaluate` raises for it) instead of figures.
+:func:`core` computes, for designs given as arrays (:func:`govopt.bulk.design_arrays`), the statics
+(Hamabe eqs. 1, 2, 11, 12), ``k^2`` (eqs. 18-20), the load-change model (eqs. 24-32,
+:func:`govopt.analysis.transient_events.analyse_many`) and the classic measures (textbook ch. 3) in
+a few numpy operations, and evaluates every requirement row of :mod:`govopt.requirements` on them in
+one :class:`~govopt.requirements.CheckTable`. The parts that have no vectorised form run inside it
+design by design, into the same table: a type's periodic forcing (:meth:`Governor.vibration`, Hamabe
+Part II), Hamabe's friction transient (eqs. 42-46, a sequence of strokes), and the spring's own
+checks where the type or a wire grade supplies them (:meth:`Governor.spring_checks`). A design no
+spring can realise gets the one-line diagnosis :func:`diagnose` (the ``DesignError``
+:func:`govopt.evaluate` raises for it) instead of figures.
 
 :func:`govopt.evaluate` is this core with one design (plus the report's tables);
 :func:`govopt.bulk.evaluate_many` is it over chunks, as a pandas frame. There is no other
@@ -24,9 +24,11 @@ from dataclasses import dataclass, field, fields, replace
 import numpy as np
 
 from .analysis import loadchange, statics
-from .analysis import transient as tr
 from .analysis.classic import CLASSIC_FIGURES, classic_measures
 from .analysis.classic import report as classic_report
+from .analysis.over_regulation import over_regulates
+from .analysis.transient_cubic import hamabe_initial_conditions
+from .analysis.transient_events import TransientSummary, analyse_many
 from .errors import DesignError, located
 from .governors import Governor
 from .requirements import (
@@ -179,7 +181,7 @@ def spring_design_of(sd: statics.SpringDesign, i: int, given: bool) -> statics.S
     return statics.SpringDesign(**{**vals, "inertia_given": given})
 
 
-def _pick(s: tr.TransientSummary, j: int) -> tr.TransientSummary:
+def _pick(s: TransientSummary, j: int) -> TransientSummary:
     """Design ``j`` of a :class:`TransientSummary` of many."""
     return replace(s, **{f.name: np.asarray(getattr(s, f.name))[j] for f in fields(s)})
 
@@ -521,9 +523,9 @@ def _friction_figures(lc, run) -> tuple[str, dict]:
 def _load_change_many(spec, lc, m, kappa, l0, central, I_given, dashpot, run):
     """:func:`govopt.analysis.loadchange.analyse` for many designs: Hamabe eqs. (24)-(32) with
     the coefficients of :func:`loadchange.load_change_model`, events by
-    :func:`transient.analyse_many`. Returns (Hurwitz margin, over-regulation, over-regulates,
-    settling time, xi0, finite, (coefficients, initial state, k^2, summary of the designs
-    run))."""
+    :func:`~govopt.analysis.transient_events.analyse_many`. Returns (Hurwitz margin,
+    over-regulation, over-regulates, settling time, xi0, finite, (coefficients, initial state, k^2,
+    summary of the designs run))."""
     gov = spec.governor
     n = m.shape[0]
     a0x, a1x = lc.alpha_to, lc.alpha_from
@@ -540,18 +542,18 @@ def _load_change_many(spec, lc, m, kappa, l0, central, I_given, dashpot, run):
         xi0 = np.full(n, a1x - a0x)
         eta0 = w1 * (1.0 + spec.engine.insensibility) - w0
         a = (I, np.where(np.isfinite(dashpot), dashpot, 0.0) / 3.0, I * k2 / 3.0, C * R)
-        x = tr.hamabe_initial_conditions(a[0], a[2], a[3], R, xi0, eta0)
+        x = hamabe_initial_conditions(a[0], a[2], a[3], R, xi0, eta0)
     good = np.all([np.isfinite(v) for v in (*a, *x)], axis=0) & (a[0] != 0)
     hur, over, overs, st = (np.full(n, np.nan) for _ in range(4))
     overs = np.zeros(n, bool)
     sel = np.nonzero(run & good)[0]
     s = None
     if sel.size:
-        s = tr.analyse_many(*(v[sel] for v in a), *(v[sel] for v in x),
+        s = analyse_many(*(v[sel] for v in a), *(v[sel] for v in x),
                             band=spec.analysis.settling_band)
         hur[sel] = s.hurwitz_margin
         over[sel] = np.where(s.stable, s.over_regulation, np.inf)
-        overs[sel] = ~s.stable | tr.over_regulates(s.over_regulation_scaled, x[0][sel])
+        overs[sel] = ~s.stable | over_regulates(s.over_regulation_scaled, x[0][sel])
         st[sel] = s.settling_time
     return hur, over, overs, st, x[0], good, (a, x, k2, s)
 

@@ -261,7 +261,7 @@ def load_change_rows(spec, name: str) -> list[Row]:
                 "Hamabe eq. (32): 9 a1 a2 / (a0 a3) - 1", group="dynamics",
                 scale=_const(1.0)),
             Row(f"no over-regulation: {name}", "<=", unit, lambda ev: ev["over"],
-                _const(0.0), "Hamabe Part III; all t >= 0 (transient.over_regulates)",
+                _const(0.0), "Hamabe Part III; all t >= 0 (over_regulation.over_regulates)",
                 group="dynamics", scale=lambda ev: np.abs(ev["xi0"]),
                 verdict=lambda ev: ~np.asarray(ev["over_regulates"], dtype=bool))]
     if req is not None and req.max_settling_time is not None:

@@ -269,7 +269,7 @@ def test_huge_flywheel_design_agrees_with_evaluate(tmp_path, inertia):
     assert f_lo <= d["dashpot_N_m_s_per_rad"] <= f_hi
     lc = res.dynamics["load_changes"][0]
     assert not lc["over_regulates"] and lc["hurwitz_margin"] >= 0.1
-    # settling past the time grid comes from the modes' envelope (transient._envelope_settling:
+    # settling past the time grid comes from the modes' envelope (settling.envelope_settling:
     # ~3e5 s at 4e7 kg m^2, 7.7e6 s at 1e9, checked against mpmath in test_transient.py), so a
     # 10 s limit is infeasible, naming the fastest admissible settling (exit 2, not a 'bug')
     assert 1e5 < lc["settling_time_s"] < 1e8
