@@ -57,7 +57,7 @@ def test_evaluate_exit_codes(tmp_path):
     that loaded `govopt evaluate`'s modules once."""
     from forkcli import Server
 
-    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluation",
+    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluator",
                  "govopt.units:ureg"), cwd=tmp_path) as server:
         p = server.run("evaluate", SPECS / "hamabe-b.toml")
         assert p.returncode == 0, p.stderr

@@ -297,18 +297,18 @@ def test_a_design_the_evaluator_fails_is_diagnosed_not_returned(monkeypatch):
     """The final verdict is the evaluator's: a chosen design it fails (forced here by a check
     the search never saw) is no design, and the message is a diagnosis naming the requirement,
     its value, limit and margin, and what to change - not a request to report a bug."""
-    from govopt import evaluation
+    from govopt import evaluator
     from govopt.errors import DesignError
     from govopt.verdict import Check
 
-    real = evaluation.evaluate
+    real = evaluator.evaluate
 
     def failing(spec, design=None):
         res = real(spec, design)
         res.checks.append(Check("irregularity (tightened)", 0.05, 0.04, "<=", "", ""))
         return res
 
-    monkeypatch.setattr(evaluation, "evaluate", failing)
+    monkeypatch.setattr(evaluator, "evaluate", failing)
     spec = govopt.load_spec(Path(govopt.__file__).parent / "specs" / "porter-design.toml")
     with pytest.raises(DesignError) as err:
         govopt.design(spec)

@@ -87,7 +87,7 @@ def test_import_govopt_loads_no_numerics():
 
 def test_lazy_exports_are_the_modules_objects():
     import govopt
-    from govopt.evaluation import evaluate
+    from govopt.evaluator import evaluate
     from govopt.optimize.search import design
 
     assert govopt.evaluate is evaluate and govopt.design is design
@@ -98,7 +98,7 @@ def test_lazy_exports_are_the_modules_objects():
 
 def test_evaluate_loads_no_cvxpy():
     loaded = modules_after("evaluate", "--json")
-    assert "govopt.evaluation" in loaded and "cvxpy" not in loaded
+    assert "govopt.evaluator" in loaded and "cvxpy" not in loaded
 
 
 #: What `govopt evaluate` used to import and no longer may. Where dask is installed, pint

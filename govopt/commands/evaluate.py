@@ -62,7 +62,7 @@ def evaluate(spec: Spec = None,
              json_out: Json = False, xlsx: Xlsx = None, force: Force = False,
              plots: Plots = None, full: Full = False, section: Section = None,
              speed_change: Change = None) -> None:
-    from ..evaluation import evaluate as run
+    from ..evaluator import evaluate as run
 
     if geometry is not None and geometry not in ("exact", "series"):
         fail(f"--geometry: expected 'exact' or 'series', got {geometry!r}")

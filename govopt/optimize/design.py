@@ -813,7 +813,7 @@ def check_grids(spec: Spec, req: Requirements) -> None:
 def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: dict | None):
     """The chosen candidate re-evaluated by :func:`govopt.evaluate`, with the optimiser's
     record: objective, continuous bound and gap, search statistics, sensitivities."""
-    from ..evaluation import evaluate
+    from ..evaluator import evaluate
 
     gov = spec.governor
     chosen = Design(flying_mass=cand.m, **cand.spring, free_half_length=cand.l0,
