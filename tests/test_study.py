@@ -183,12 +183,11 @@ def test_example1_study_reproduces_evaluate(tmp_path):
 
 @pytest.fixture(scope="module")
 def cli():
-    """``cli(*args)``: ``govopt ARGS`` in a process of its own, forked from one interpreter
-    that loaded govopt once (tests/forkcli.py), a ``Popen``-like handle."""
-    from forkcli import Server
+    """``cli(*args)``: ``govopt ARGS`` in a process of its own (tests/cliproc.py), a
+    ``Popen``."""
+    import cliproc
 
-    with Server() as server:
-        yield server.start
+    return cliproc.start
 
 
 def _rows(db: Path) -> int:
