@@ -37,7 +37,7 @@ from dataclasses import dataclass, field
 from functools import cache, partial
 from pathlib import Path
 
-import cliproc
+import forkcli
 from clirun import invoke
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -828,10 +828,12 @@ def run(case: Case, folder: Path, limit: float = 10.0, json_out: bool = False) -
     return classify(out, str(spec) if written else None, json_out)
 
 
-def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = False) -> Outcome:
-    """Run ``case`` through the real command line in a process of its own: ``python -m
-    govopt.cli`` (:mod:`cliproc`: the console entry point, its catch-all, its signal handling
-    and its imports on demand)."""
+def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = False,
+            fresh: bool = False) -> Outcome:
+    """Run ``case`` through the real command line in a process of its own: ``govopt.cli`` run
+    as ``__main__`` (the console entry point, its catch-all and its signal handling included),
+    forked from a server that has imported govopt already (:mod:`forkcli`), or with ``fresh``
+    a new interpreter (``python -m govopt.cli``: its imports on demand too)."""
     import subprocess
 
     spec, written = _write(case, folder)
@@ -841,7 +843,12 @@ def run_cli(case: Case, folder: Path, limit: float = 60.0, json_out: bool = Fals
     args = _args(case, spec, json_out)
     t0 = time.perf_counter()
     try:
-        p = cliproc.run(args, folder, timeout=limit)
+        if fresh:
+            p = subprocess.run([sys.executable, "-m", "govopt.cli", *args], capture_output=True,
+                               text=True, errors="replace", timeout=limit, cwd=folder,
+                               stdin=subprocess.DEVNULL)
+        else:
+            p = forkcli.run(args, folder, timeout=limit)
     except subprocess.TimeoutExpired:
         return Outcome(case, "hang", None, "", "", time.perf_counter() - t0)
     out = Outcome(case, "", p.returncode, p.stdout, p.stderr, time.perf_counter() - t0)

@@ -53,21 +53,24 @@ def test_version(tmp_path):
 
 def test_evaluate_exit_codes(tmp_path):
     """0: every check passed; 1: the report is printed and some check failed (named on
-    stderr); 2: bad input (one line). Each a process of its own."""
-    from cliproc import run
+    stderr); 2: bad input (one line). Each a process of its own, forked from one interpreter
+    that loaded `govopt evaluate`'s modules once."""
+    from forkcli import Server
 
-    p = run(["evaluate", SPECS / "hamabe-b.toml"], tmp_path)
-    assert p.returncode == 0, p.stderr
-    assert "FAIL" not in p.stdout and p.stderr == ""
-    p = run(["evaluate", SPECS / "hamabe-a.toml", "--json"], tmp_path)
-    assert p.returncode == 1, p.stderr
-    checks = json.loads(p.stdout)["checks"]  # stdout is the JSON alone
-    assert [c["name"] for c in checks if not c["passed"]] == ["irregularity"]  # > 0.12
-    p = run(["evaluate", SPECS / "hamabe-a.toml"], tmp_path)
-    assert p.returncode == 1 and "FAIL" in p.stdout
-    assert p.stderr == f"1 of {len(checks)} checks failed: irregularity\n"
-    p = run(["evaluate", tmp_path / "absent.toml"], tmp_path)
-    assert p.returncode == 2 and p.stderr.startswith("error: ") and p.stdout == ""
+    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluator",
+                 "govopt.units:ureg"), cwd=tmp_path) as server:
+        p = server.run("evaluate", SPECS / "hamabe-b.toml")
+        assert p.returncode == 0, p.stderr
+        assert "FAIL" not in p.stdout and p.stderr == ""
+        p = server.run("evaluate", SPECS / "hamabe-a.toml", "--json")
+        assert p.returncode == 1, p.stderr
+        checks = json.loads(p.stdout)["checks"]  # stdout is the JSON alone
+        assert [c["name"] for c in checks if not c["passed"]] == ["irregularity"]  # > 0.12
+        p = server.run("evaluate", SPECS / "hamabe-a.toml")
+        assert p.returncode == 1 and "FAIL" in p.stdout
+        assert p.stderr == f"1 of {len(checks)} checks failed: irregularity\n"
+        p = server.run("evaluate", tmp_path / "absent.toml")
+        assert p.returncode == 2 and p.stderr.startswith("error: ") and p.stdout == ""
 
 
 def test_no_command_prints_the_help():
@@ -223,15 +226,17 @@ def test_non_editable_install_ships_the_specs(tmp_path):
     assert Path(where.stdout.strip()).parent == site / "govopt"
     assert sorted(p.name for p in (site / "govopt" / "specs").glob("*.toml")) == sorted(
         p.name for p in SPECS.glob("*.toml"))
-    from cliproc import run
+    from forkcli import Server
 
-    # the installed copy's commands, each a process of its own in that environment and folder
-    listed = run(["examples"], work, env=env).stdout
-    assert [line.split()[0] for line in listed.splitlines()] == list(examples())
-    p = run(["evaluate", "--json"], work, env=env)
-    assert p.returncode == 1, p.stderr  # case a's irregularity check fails
-    assert json.loads(p.stdout)["name"] == "hamabe-a"
-    assert run(["init", "porter-design"], work, env=env).returncode == 0
+    # the installed copy's commands, each a process forked from one interpreter in that
+    # environment and folder which imported that copy's govopt.cli
+    with Server(("govopt.cli", "govopt.units:ureg"), cwd=work, env=env) as server:
+        listed = server.run("examples").stdout
+        assert [line.split()[0] for line in listed.splitlines()] == list(examples())
+        p = server.run("evaluate", "--json")
+        assert p.returncode == 1, p.stderr  # case a's irregularity check fails
+        assert json.loads(p.stdout)["name"] == "hamabe-a"
+        assert server.run("init", "porter-design").returncode == 0
     assert os.listdir(work) == ["porter-design.toml"]
 
 

@@ -31,6 +31,8 @@ SAMPLE = (
     "hamabe-study/option/sweep of 1e8 points", "hamabe-study/option/sweep of 9**9**9",
     "traction-leaf-assembly/material/missing", "textbook-ex1-porter/name/text_control",
 )
+#: run in a new interpreter too (a design: the optimiser is imported on demand)
+FRESH = ("hamabe-design/analysis.points/size_limit",)
 
 
 def _report(outcomes, what: str) -> str:
@@ -64,11 +66,18 @@ def test_hostile_corpus(tmp_path):
 
 
 def test_hostile_sample_through_the_real_cli(tmp_path):
-    """Each case of :data:`SAMPLE` in a process of its own, as a user starts it
-    (``python -m govopt.cli``, :mod:`cliproc`: the console entry point, its imports on
-    demand)."""
+    """Each case of :data:`SAMPLE` in a process of its own, forked from a server that has
+    imported govopt (:mod:`forkcli`); and :data:`FRESH` in a new interpreter as well, with
+    the imports on demand of ``python -m govopt.cli`` (the same answer both ways)."""
     cases = {c.id: c for c in hostile.corpus()}
+    # one after the other: a forked process takes ~0.05 s here
     outcomes = [hostile.run_cli(cases[i], tmp_path, 60.0) for i in SAMPLE]
-    text = _report(outcomes, "through the real command line")
-    assert all(o.klass in ("ok", "error") for o in outcomes), text
+    fresh = [hostile.run_cli(cases[i], tmp_path, 60.0, fresh=True) for i in FRESH]
+    text = _report(outcomes + fresh, "through the real command line")
+    assert all(o.klass in ("ok", "error") for o in outcomes + fresh), text
     assert sum(o.klass == "error" for o in outcomes) >= len(SAMPLE) - 2
+    forked = {o.case.id: o for o in outcomes}
+    for o in fresh:
+        assert (o.code, o.stdout, o.stderr) == (forked[o.case.id].code,
+                                                forked[o.case.id].stdout,
+                                                forked[o.case.id].stderr), o.case.id

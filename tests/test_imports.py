@@ -1,6 +1,8 @@
 """Imports on demand (issue 14, item 2): a command loads what it uses when it uses it.
 
-Each command runs in a fresh interpreter of its own and reports its ``sys.modules``:
+Each command runs in an interpreter of its own that starts as a fresh one (forked from one
+that did only what a fresh interpreter running the command does before it) and reports its
+``sys.modules``:
 ``govopt --help`` loads neither scipy, pint nor cvxpy; ``govopt evaluate`` no cvxpy (the GP
 earns its place in ``design`` and ``spring``, for the certificate, duals and diagnosis) and none
 of scipy's numerics (the valve table's PCHIP and the root finder are govopt's own, equal to
@@ -25,14 +27,30 @@ HEAVY = ("cvxpy", "scipy", "scipy.optimize", "pint", "numpy")
 FRAMEWORKS = ("click", "pydantic")
 
 
+#: Each command's interpreter: forked from one that ran what a fresh ``python -c`` running the
+#: command runs before it (``import json, sys``, ``from govopt.cli import main``; nothing more
+#: preloaded), so it starts in that state without paying Python's start-up and govopt.cli's
+#: imports again (tests/forkcli.py); it runs ``main()`` and reports its ``sys.modules``.
+_server: list = []  # started on first use
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _stop_the_forking_interpreter():
+    yield
+    while _server:
+        _server.pop().close()
+
+
 @functools.cache
 def modules_after(*args: str, cwd=None) -> frozenset[str]:
-    """The modules loaded by ``govopt ARGS`` run through the console entry point in a fresh
-    interpreter (tests/cliproc.py); each command once per test process (the same command, the
-    same modules)."""
-    import cliproc
+    """The modules loaded by ``govopt ARGS`` run through the console entry point, in an
+    interpreter of its own that starts as a fresh one; each command once per test process (the
+    same command, the same modules)."""
+    from forkcli import Server
 
-    proc = cliproc.start(*args, cwd=cwd, modules=True)
+    if not _server:
+        _server.append(Server(()))
+    proc = _server[0].start(*args, cwd=cwd, modules=True)
     _, err = proc.communicate(timeout=120)
     assert "Traceback" not in err, err
     return proc.modules()

@@ -15,7 +15,7 @@ import zipfile
 from pathlib import Path
 from xml.etree import ElementTree
 
-import cliproc
+import forkcli
 import openpyxl
 import pytest
 from clirun import invoke
@@ -350,10 +350,11 @@ def test_utf8_bom_is_accepted(tmp_path):
 
 
 def _kill(args, cwd: Path, sig, delay: float | None):
-    """Run ``govopt ARGS`` in a process of its own (:mod:`cliproc`), send ``sig`` after
-    ``delay`` s (None: as soon as a temporary file is written); return
+    """Run ``govopt ARGS`` in a process of its own (:mod:`forkcli`: forked, not a new
+    interpreter, so that the moments fall in govopt's work rather than in Python's start-up),
+    send ``sig`` after ``delay`` s (None: as soon as a temporary file is written); return
     (returncode, stderr, whether a temporary file was seen)."""
-    p = cliproc.start(*args, cwd=cwd)
+    p = forkcli.shared().start(*args, cwd=cwd)
     seen = False
     if delay is None:
         while p.poll() is None and not seen:
@@ -416,7 +417,7 @@ def durations(tmp_path_factory):
                       ("design", ["design", SPEC_DESIGN, "--xlsx", "out.xlsx", "-o", "out.toml"])):
         _prepare(d, existing=False)
         t0 = time.perf_counter()
-        p = cliproc.run(args, d)
+        p = forkcli.run(args, d)
         out[cmd] = time.perf_counter() - t0
         assert p.returncode == 0, p.stderr
         _check_outputs(d, {})
@@ -465,7 +466,7 @@ def test_kill_while_writing(tmp_path, durations, sig, command):
     # (after the evaluate, a new interpreter: `python -m govopt.cli`, its imports on demand)
     args = ["evaluate", SPEC_PASS, "--xlsx", "out.xlsx", "--force"]
     p = (subprocess.run(CLI + [str(a) for a in args], cwd=tmp_path, capture_output=True,
-                        text=True) if command == "evaluate" else cliproc.run(args, tmp_path))
+                        text=True) if command == "evaluate" else forkcli.run(args, tmp_path))
     assert p.returncode == 0, p.stderr
     assert _temps(tmp_path) == []
     _assert_valid_xlsx(tmp_path / "out.xlsx")

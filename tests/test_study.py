@@ -183,11 +183,12 @@ def test_example1_study_reproduces_evaluate(tmp_path):
 
 @pytest.fixture(scope="module")
 def cli():
-    """``cli(*args)``: ``govopt ARGS`` in a process of its own (tests/cliproc.py), a
-    ``Popen``."""
-    import cliproc
+    """``cli(*args)``: ``govopt ARGS`` in a process of its own, forked from one interpreter
+    that loaded govopt once (tests/forkcli.py), a ``Popen``-like handle."""
+    from forkcli import Server
 
-    return cliproc.start
+    with Server() as server:
+        yield server.start
 
 
 def _rows(db: Path) -> int:
