@@ -127,7 +127,7 @@ def _command_path(argv: list[str]) -> str:
     return "govopt"
 
 
-def _on_sigterm(signum, frame) -> None:
+def on_sigterm(signum, frame) -> None:
     """SIGTERM unwinds like an exception, so every ``finally`` runs (temporary files are
     removed); a second SIGTERM during that clean-up is ignored."""
     signal.signal(signal.SIGTERM, signal.SIG_IGN)
@@ -144,7 +144,7 @@ def main(argv: list[str] | None = None) -> None:
     # third of `govopt evaluate`'s CPU); studies run processes in parallel anyway.
     os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     if argv is None:
-        signal.signal(signal.SIGTERM, _on_sigterm)
+        signal.signal(signal.SIGTERM, on_sigterm)
     argv = sys.argv[1:] if argv is None else [str(a) for a in argv]
     try:
         _run(argv)

@@ -538,7 +538,7 @@ def test_sigterm_inside_a_bare_except_still_exits_as_sigterm(monkeypatch):
 
     class Interrupted:
         def __float__(self):  # the signal arriving during float(): the handler runs here
-            cli._on_sigterm(signal.SIGTERM, None)
+            cli.on_sigterm(signal.SIGTERM, None)
 
     @guarded
     def command():
