@@ -29,6 +29,7 @@ from .reader import Entry, Reader, SpecError, read_spec_data
 from .spec_keys import (
     ANALYSIS,
     SPEED,
+    analysis_table,
     bounds_table,
     catalogue_table,
     design_table,
@@ -152,7 +153,7 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
                                        alpha_to=_configuration(lc, "to", governor)))
         lc.finish()
 
-    analysis = _analysis(top.sub("analysis", required=False, declared=ANALYSIS))
+    analysis = _analysis(top.sub("analysis", required=False, declared=analysis_table(governor)))
     if speed is not None:
         analysis = replace(analysis, omega_mean=speed.omega_mean)
     requirements = _requirements(top, governor)
@@ -356,7 +357,7 @@ def _design(ds: Reader | None, governor: Governor, material: Material | None,
 def _analysis(an: Reader | None) -> Analysis:
     if an is None:
         return Analysis()
-    out = Analysis(**an.read_all(ANALYSIS))
+    out = Analysis(**an.read_all(an.declared))
     an.finish()
     return out
 

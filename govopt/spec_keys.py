@@ -196,23 +196,11 @@ def load_change_table(gov) -> Table:
     ), array=True, when="read with [engine]")
 
 
+#: ``[analysis]``'s keys of every type; a type adds its own (:attr:`Governor.analysis_keys`:
+#: the shaft governor's linkage series and valve-gear settings) in :func:`analysis_table`
 ANALYSIS = Table("analysis", "fidelity settings (every default is the exact model)", (
-    Key("geometry", "choice", "the shaft governor's spring linkage: \"exact\" (Hamabe eq. 2) "
-                              "or \"series\" (eq. 3)", default=_AN.geometry,
-        choices=("exact", "series")),
-    Key("reaction_speed", "choice", "the valve gear's inertia reaction at the \"local\" speed "
-                                    "or at the \"mean\" speed (the paper's)",
-        default=_AN.reaction_speed, choices=("local", "mean"), source="Hamabe eq. 11"),
-    Key("reaction_slope", "flag", "the valve gear reaction's slope in k^2 (the paper leaves "
-                                  "it out)", default=_AN.reaction_slope),
-    Key("valve_table", "choice", "the valve-gear table's interpolant: \"pchip\" (monotone), "
-                                 "\"cubic\" (spline) or \"linear\" (the paper's)",
-        default=_AN.valve_table, choices=("pchip", "cubic", "linear")),
     Key("points", "count", "configurations over the range", default=_AN.points, low=2,
         high=limits.MAX_POINTS + 1, range_text=f"[3, {limits.MAX_POINTS}] (govopt's limit)"),
-    Key("harmonics", "count", "harmonics of the periodic forcing (Hamabe Part II)",
-        default=_AN.harmonics, low=0, high=limits.MAX_HARMONICS + 1,
-        range_text=f"[1, {limits.MAX_HARMONICS}] (govopt's limit)"),
     Key("settling_band", "number", "the band, a fraction of the load change, within which "
                                    "the governor has settled", default=_AN.settling_band,
         high=1.0),
@@ -227,6 +215,13 @@ ANALYSIS = Table("analysis", "fidelity settings (every default is the exact mode
         range_text="(0, 1) (a fraction of the speed, e.g. 0.01), or \"range\"",
         source="textbook 3.2"),
 ))
+
+
+def analysis_table(gov) -> Table:
+    """``[analysis]`` of governor type ``gov``: the shared settings and the type's own."""
+    if not gov.analysis_keys:
+        return ANALYSIS
+    return Table(ANALYSIS.name, ANALYSIS.meaning, gov.analysis_keys + ANALYSIS.keys)
 
 
 def requirements_table(kind) -> Table:
@@ -348,14 +343,15 @@ def spec_tables(type_name: str) -> dict[str, Table]:
     gov = governor_class(type_name)
     kind = gov.declared_spring_kind()
     tables = [governor_table(gov), *gov.tables, SPEED, material_table(),
-              design_table(gov, kind), engine_table(gov), load_change_table(gov), ANALYSIS,
-              requirements_table(kind), bounds_table(gov, kind), catalogue_table(kind)]
+              design_table(gov, kind), engine_table(gov), load_change_table(gov),
+              analysis_table(gov), requirements_table(kind), bounds_table(gov, kind),
+              catalogue_table(kind)]
     if kind is None or kind.helical:
         tables.append(FORM)
     tables.append(STUDY)
     return {"": top_table(tables), **{t.name: t for t in tables}}
 
 
-__all__ = ["ANALYSIS", "SPEED", "STUDY", "TYPE", "bounds_table", "catalogue_table",
-           "design_table", "engine_table", "governor_table", "load_change_table",
+__all__ = ["ANALYSIS", "SPEED", "STUDY", "TYPE", "analysis_table", "bounds_table",
+           "catalogue_table", "design_table", "engine_table", "governor_table", "load_change_table",
            "material_table", "requirements_table", "spec_tables", "top_table"]

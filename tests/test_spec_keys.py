@@ -327,3 +327,23 @@ def test_porter_without_bounds_is_told_its_central_load_bound(tmp_path):
     data["bounds"] = {"central_mass": ["0 kg", f"{upper - 0.5} kg"]}
     with pytest.raises(InfeasibleError):
         design(parse_spec(data, "porter.toml"))
+
+
+def test_the_shaft_governors_analysis_settings_are_its_own():
+    """The valve gear's and the linkage series' settings belong to the shaft governor: a
+    Hartnell's template and reference do not offer them, its spec refuses them by name, and
+    ``--geometry`` on it says the type has no such setting (exit 2)."""
+    from govopt.spec_docs import template
+    from govopt.spec_keys import analysis_table, spec_tables
+
+    shaft_only = {"geometry", "reaction_speed", "reaction_slope", "valve_table", "harmonics"}
+    assert shaft_only <= set(spec_tables("shaft")["analysis"].names)
+    for name in ("hartnell", "porter", "traction_leaf"):
+        assert not shaft_only & set(spec_tables(name)["analysis"].names)
+        assert "valve" not in template(name).split("[analysis]")[-1].split("[requirements]")[0]
+    from govopt.governors import governor_class
+
+    assert "points" in analysis_table(governor_class("watt")).names
+    run = invoke(["evaluate", "govopt/specs/textbook-ex4-hartnell.toml", "--geometry", "series"])
+    assert run.exit_code == 2
+    assert "the hartnell governor has no [analysis] geometry" in run.output

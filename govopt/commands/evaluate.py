@@ -48,9 +48,14 @@ def _load(spec: Path | None, default: Path, **analysis):
     """The spec with the command's ``[analysis]`` options set as if written in it (re-read:
     ``design -o`` writes them into the design's spec, which then reproduces the report)."""
     from ..spec import load_spec, with_values
+    from ..spec_keys import analysis_table
 
     s = load_spec(spec or default)
     changes = {f"analysis.{k}": v for k, v in analysis.items() if v is not None}
+    own = analysis_table(s.governor).names
+    for key in (k for k, v in analysis.items() if v is not None and k not in own):
+        fail(f"--{key.replace('_', '-')}: the {s.governor.type_name} governor has no "
+             f"[analysis] {key} (docs/reference/spec.md)")
     return with_values(s, changes) if changes else s
 
 
@@ -59,7 +64,8 @@ def _load(spec: Path | None, default: Path, **analysis):
 def evaluate(spec: Spec = None,
              geometry: Annotated[str | None, typer.Option(
                  "--geometry", metavar="<str>",
-                 help="Linkage geometry: 'exact' (default) or 'series' (the paper's eq. 3).")]
+                 help="The shaft governor's linkage geometry: 'exact' (default) or "
+                      "'series' (Hamabe eq. 3).")]
              = None,
              json_out: Json = False, xlsx: Xlsx = None, force: Force = False,
              plots: Plots = None, full: Full = False, section: Section = None,

@@ -324,6 +324,9 @@ class Governor(ABC):
     force_names: ClassVar[tuple[str, str, str]] = ("F_c", "F_s", "F_d")
     keys: ClassVar[tuple[Key, ...]] = ()
     tables: ClassVar[tuple[Table, ...]] = ()
+    #: the type's own ``[analysis]`` settings, beside the shared ones
+    #: (:func:`govopt.spec_keys.analysis_table`)
+    analysis_keys: ClassVar[tuple[Key, ...]] = ()
     example: ClassVar[str] = ""
     #: a spring the type may have, where ``spring`` is decided by its spec (a Porter's
     #: auxiliary spring): the kind whose keys its spec may hold (:meth:`declared_spring_kind`)

@@ -24,6 +24,8 @@ from typing import ClassVar
 
 import numpy as np
 
+from ... import limits
+from ...inputs import Analysis
 from ...keys import Key, Table
 from ...springs import helical as hx
 from ...units import G_STANDARD
@@ -55,6 +57,26 @@ KEYS = (
 )
 
 #: ``[valve_gear]``: the valve gear the pendulums drive (Hamabe Part I, eqs. 4-11)
+_AN = Analysis()
+
+#: the shaft governor's own ``[analysis]`` settings: its linkage's series form and its valve
+#: gear's reaction (the keys of every type are :data:`govopt.spec_keys.ANALYSIS`)
+ANALYSIS_KEYS = (
+    Key("geometry", "choice", "the spring linkage: \"exact\" (Hamabe eq. 2) or \"series\" "
+                              "(eq. 3)", default=_AN.geometry, choices=("exact", "series")),
+    Key("reaction_speed", "choice", "the valve gear's inertia reaction at the \"local\" speed "
+                                    "or at the \"mean\" speed (the paper's)",
+        default=_AN.reaction_speed, choices=("local", "mean"), source="Hamabe eq. 11"),
+    Key("reaction_slope", "flag", "the valve gear reaction's slope in k^2 (the paper leaves "
+                                  "it out)", default=_AN.reaction_slope),
+    Key("valve_table", "choice", "the valve-gear table's interpolant: \"pchip\" (monotone), "
+                                 "\"cubic\" (spline) or \"linear\" (the paper's)",
+        default=_AN.valve_table, choices=("pchip", "cubic", "linear")),
+    Key("harmonics", "count", "harmonics of the valve gear's periodic forcing (Hamabe Part II)",
+        default=_AN.harmonics, low=0, high=limits.MAX_HARMONICS + 1,
+        range_text=f"[1, {limits.MAX_HARMONICS}] (govopt's limit)"),
+)
+
 VALVE_GEAR = Table("valve_gear", "the valve gear the pendulums drive, whose mean reaction "
                                  "loads them (Hamabe Part I, eqs. 4-11, Fig. 6)", (
     Key("eccentricity", "length", "the eccentric's eccentricity e", source="Hamabe Figs. 3-4"),
@@ -122,6 +144,7 @@ class ShaftGovernor(Governor):
                                           "the two pendulums' attachments G through the axis)")
     keys: ClassVar[tuple[Key, ...]] = KEYS
     tables: ClassVar[tuple[Table, ...]] = (VALVE_GEAR, VALVE_TABLE)
+    analysis_keys: ClassVar[tuple[Key, ...]] = ANALYSIS_KEYS
     example: ClassVar[str] = "hamabe-design"
     spring_length_factor: ClassVar[float] = 2.0
     force_names: ClassVar[tuple[str, str, str]] = ("M_z", "M_f", "M_r0")
