@@ -375,6 +375,18 @@ class Reader:
             self.fail(unknown[0], f"unknown key ({hint}{listed})")
 
 
+def _bundled_hint(path) -> str:
+    """Where a missing spec file bears a bundled example's name, how to get that example."""
+    from .examples import examples
+
+    p = Path(path)
+    if p.exists() or p.parent != Path() or (p.stem if p.suffix == ".toml" else p.name) not in \
+            examples():
+        return ""
+    name = p.stem if p.suffix == ".toml" else p.name
+    return f"; {name!r} is a bundled example: `govopt init {name}` copies it here"
+
+
 def read_spec_data(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int = 32) -> dict:
     """A spec file's TOML as a dict, read safely (see :func:`load_spec`), not yet validated."""
     import os
@@ -396,7 +408,8 @@ def read_spec_data(path: str | Path, *, max_bytes: int = 1 << 20, max_depth: int
         finally:
             os.close(fd)
     except OSError as exc:
-        raise SpecError(f"{path}: cannot read spec file ({exc.strerror or exc})") from None
+        raise SpecError(f"{path}: cannot read spec file ({exc.strerror or exc})"
+                        f"{_bundled_hint(path)}") from None
     if len(raw) > max_bytes:
         raise SpecError(f"{path}: spec file larger than {max_bytes} bytes (a spec is a few KiB)")
     bom = 3 if raw.startswith(b"\xef\xbb\xbf") else 0

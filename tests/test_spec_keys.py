@@ -347,3 +347,13 @@ def test_the_shaft_governors_analysis_settings_are_its_own():
     run = invoke(["evaluate", "govopt/specs/textbook-ex4-hartnell.toml", "--geometry", "series"])
     assert run.exit_code == 2
     assert "the hartnell governor has no [analysis] geometry" in run.output
+
+
+def test_a_missing_spec_named_like_a_bundled_example_says_how_to_get_it(tmp_path):
+    """A spec file that does not exist but bears a bundled example's name (as a README writes
+    ``govopt design hartnell-design.toml``): the one-line error says how to copy it here."""
+    run = invoke(["evaluate", "hartnell-design.toml"], cwd=tmp_path)
+    assert run.exit_code == 2
+    assert "`govopt init hartnell-design` copies it here" in run.output
+    other = invoke(["evaluate", "no-such-spec.toml"], cwd=tmp_path)
+    assert other.exit_code == 2 and "bundled example" not in other.output
