@@ -450,8 +450,15 @@ class Store:
             for p, v in zip(rows.points, values, strict=True):
                 s = stored[name].get(int(p)) if name in stored else None
                 if not _same(s, v):
-                    return f"point {int(p)}, {name}: {s!r} stored, {v!r} now"
+                    unit = self._unit(name)
+                    return (f"point {int(p)}, {name}: {_shown(s)}{unit} stored, "
+                            f"{_shown(v)}{unit} now")
         return ""
+
+    def _unit(self, name: str) -> str:
+        """`` UNIT`` of column ``name`` (SI, as stored), ``""`` where it has none."""
+        row = self.conn.execute("SELECT unit FROM columns WHERE name = ?", (name,)).fetchone()
+        return f" {row[0]}" if row and row[0] else ""
 
     # -- rows --
 
@@ -618,3 +625,13 @@ def _same(stored, now) -> bool:
             return False
         return a == b or abs(a - b) <= 1e-9 * max(abs(a), abs(b))
     return stored == now or str(stored) == str(now)
+
+
+def _shown(value) -> str:
+    """A stored or computed value as a person reads it: numbers to 10 significant digits
+    (numpy's scalars as plain numbers), text quoted, a missing value as "none"."""
+    if value is None or (isinstance(value, float | np.floating) and np.isnan(value)):
+        return "none"
+    if isinstance(value, int | float | np.integer | np.floating) and not isinstance(value, bool):
+        return f"{float(value):.10g}"
+    return repr(str(value)) if isinstance(value, str | np.str_) else repr(value)
