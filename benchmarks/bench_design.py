@@ -1,4 +1,4 @@
-"""Speed targets of issue 14, items 1-3, beside what is measured in this run.
+"""The design's speed targets, beside what is measured in this run.
 
 1. ``design()`` in process on the bundled spec: median CPU (target <= 0.1 s), its stages, and
    the pruned continuous bound checked against the bound solved at every mass;

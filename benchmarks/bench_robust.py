@@ -1,4 +1,4 @@
-"""Time a robust design against the nominal design of the same spec (issue 24: at most 10x).
+"""Time a robust design against the nominal design of the same spec (at most 10x).
 
 Usage: ``PYTHONPATH=. python benchmarks/bench_robust.py`` - CPU and wall time of ``design()``
 on each bundled robust spec, with its robust keys and without them (the nominal design), warm

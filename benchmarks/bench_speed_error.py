@@ -1,4 +1,4 @@
-"""Speed against error of every analysis: one point per method and setting (issue 14, item 5).
+"""Speed against error of every analysis: one point per method and setting.
 
 Writes ``speed-vs-error.md``, ``speed-vs-error.csv`` and ``speed-vs-error.png`` (log-log: CPU
 time per evaluation against relative error, one panel per analysis, the Pareto front dotted and

@@ -1,5 +1,4 @@
-"""`govopt evaluate SPEC --json` for every bundled spec, saved and compared (issue 14, target 2:
-the faster start must not move a number).
+"""`govopt evaluate SPEC --json` for every bundled spec, saved and compared.
 
     python benchmarks/evaluate_json.py save DIR [--scipy]
     python benchmarks/evaluate_json.py compare DIR_A DIR_B [--rtol 1e-14]

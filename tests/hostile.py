@@ -1,4 +1,4 @@
-"""A corpus of hostile inputs for the CLI (issue 15, item 4), and its runner.
+"""A corpus of hostile inputs for the CLI, and its runner.
 
 :func:`corpus` mutates every bundled spec key by key (missing, wrong type, wrong dimension, a
 bare number, negative, zero, huge and tiny magnitudes, NaN and infinities, 200 kB strings,
@@ -385,7 +385,7 @@ def _spec_mutations(data: dict) -> Iterator[tuple[str, str, object]]:
 
 def _size_mutations(data: dict) -> Iterator[tuple[str, str, object]]:
     """Sizes past the limits: grid points, harmonics, load changes, catalogue lists and
-    steps, design bounds (issue 15, item 2); as :func:`_spec_mutations`."""
+    steps, design bounds; as :func:`_spec_mutations`."""
     def table(name: str, **changes):
         return lambda: {**data, name: {**data.get(name, {}), **changes}}
 
@@ -625,7 +625,7 @@ def _existing(spec: Path) -> None:
     (out / "speed-vs-error.csv").write_text("keep")
 
 
-#: study databases and outputs of ``study``, ``init`` and ``bench`` (issue 21): each case
+#: study databases and outputs of ``study``, ``init`` and ``bench``: each case
 #: (label, command, arguments, what to prepare); ``{db}`` is a database beside the spec
 OUTPUT_CASES = (
     ("study/--db is the spec, --force", "study",
@@ -686,7 +686,7 @@ OUTPUT_CASES = (
 
 def _output_cases() -> Iterator[Case]:
     """Study databases (another study's, a damaged one, an empty file, foreign files) and the
-    outputs of ``study``, ``init`` and ``bench``: one line each, nothing lost (issue 21)."""
+    outputs of ``study``, ``init`` and ``bench``: one line each, nothing lost."""
     text = study_specs()[0].read_text()
     for label, command, args, prepare in OUTPUT_CASES:
         args = tuple(a.replace("{db}", "{spec}.db") if a.startswith("{db}") else a
@@ -695,7 +695,7 @@ def _output_cases() -> Iterator[Case]:
                    names_key=False, prepare=prepare)
 
 
-#: degenerate designs and geometries (issue 21): a length of the governor a thousand times
+#: degenerate designs and geometries: a length of the governor a thousand times
 #: over, or just below the largest other; a wire as thick as its coil's radius, 0.01 active
 #: turns, a free length a thousand times over: a result, or one line naming the keys
 def _degenerate_mutations(data: dict) -> Iterator[tuple[str, str, object]]:

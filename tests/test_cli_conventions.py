@@ -1,4 +1,4 @@
-"""What an engineer sees (issue 13, items 4, 5, 7): a CLI with the conventions of the tools
+"""What an engineer sees: a CLI with the conventions of the tools
 engineers use (version, exit codes, plain flags, outputs where asked or here, bundled specs that
 ship in a non-editable install), the units people type, and round trips that keep the
 engineer's file. CLI points about the process itself (its exit status, a closed pipe, the
@@ -440,7 +440,7 @@ def test_design_o_writes_the_runs_analysis_options(tmp_path):
 
 
 # ------------------------------------------------------------------------------------------
-# issue 23: numbers an engineer can draw
+# numbers an engineer can draw
 
 
 def test_design_o_writes_the_design_as_drawn_and_that_design_passes(tmp_path):
@@ -481,7 +481,7 @@ def test_a_rounding_that_breaks_a_check_is_not_written(monkeypatch):
 
 
 def test_shell_completion_completes_commands_and_options(tmp_path):
-    """typer's shell completion (issue 23): the commands, and a command's options, which it
+    """typer's shell completion: the commands, and a command's options, which it
     builds on demand like any other use of that command."""
     env = {**os.environ, "_GOVOPT_COMPLETE": "complete_bash", "COMP_WORDS": "govopt ev",
            "COMP_CWORD": "1"}

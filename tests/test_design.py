@@ -115,7 +115,7 @@ def test_written_design_reproduces(tmp_path, result):
     out = tmp_path / "design.toml"
     r = invoke(["design", SPEC, "-o", str(out), "--json"])
     assert r.exit_code == 0, r.output
-    designed = json.loads(r.stdout)  # "wrote ..." goes to stderr with --json (issue 13)
+    designed = json.loads(r.stdout)  # "wrote ..." goes to stderr with --json
     ev = json.loads(invoke(["evaluate", str(out), "--json"]).output)
     for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s", "pendulum_mass_kg"):
         assert ev[key] == pytest.approx(designed[key], rel=1e-9)
@@ -125,7 +125,7 @@ def test_written_design_reproduces(tmp_path, result):
         designed["load_changes"][0]["settling_time_s"], rel=1e-9)
     for key in ("design", "objective", "continuous_bound", "sensitivities", "status"):
         assert key in designed
-    # one section each: the checks are the design's constraints, not written twice (issue 13)
+    # one section each: the checks are the design's constraints, not written twice
     assert "constraints" not in designed and len(designed["checks"]) >= 10
     d = designed["design"]
     for key in ("pendulum_weight_N", "wire_diameter_m", "coil_radius_m", "active_turns",

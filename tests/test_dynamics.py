@@ -54,7 +54,7 @@ def test_d_prime_paper_slip():
     lc = paper_result("d-prime").dynamics["load_changes"][0]
     assert lc["k2_rad2_s2"] == pytest.approx(311.4, rel=0.002)
     assert lc["over_regulation_rad"] == 0.0 and lc["kind"] == "real"
-    # eq. (28)'s coefficients with their SI units in the keys (issue 13, item 8)
+    # eq. (28)'s coefficients with their SI units in the keys
     c = {k.split("_")[0]: v for k, v in lc["coefficients"].items()}
     x = lc["initial_state"]
     R = 300 / 43  # same in any units: kgf m / (kgf m s^2)
@@ -94,7 +94,7 @@ def test_dynamics_json_keys():
                 "settling_time_s"):
         assert key in lc
     assert len(lc["roots_per_s"]) == 3 and all(len(r) == 2 for r in lc["roots_per_s"])
-    c = lc["coefficients"]  # eq. (28)'s coefficients, each key with its SI unit (issue 13)
+    c = lc["coefficients"]  # eq. (28)'s coefficients, each key with its SI unit
     assert set(c) == {"a0_kg_m2", "a1_N_m_s_per_rad", "a2_N_m_per_rad", "a3_N_m_per_rad_s"}
     assert lc["hurwitz_margin"] == pytest.approx(
         9 * c["a1_N_m_s_per_rad"] * c["a2_N_m_per_rad"]

@@ -405,7 +405,7 @@ def _title_text(title) -> str:
 
 
 def test_dynamics_and_optimisation_are_tables(tmp_path, results):
-    """Issue 13, item 2: the Dynamics sheet and the Checks sheet's optimisation block are tables
+    """The Dynamics sheet and the Checks sheet's optimisation block are tables
     with named columns and units (they were a raw dump of dicts: JSON keys as headers, roots as
     Python complex text, 'stable' as 1, 'inf'): roots in real and imaginary columns, words for
     booleans and infinities, charts with unit-bearing axis titles and distinct colours. (This
@@ -752,7 +752,7 @@ def test_spring_sheet_reads_in_engineering_units(tmp_path):
 
 
 def test_page_breaks_keep_blocks_together():
-    """Printing (issue 23): a break never splits a kept block that fits on a page (it moves up
+    """Printing: a break never splits a kept block that fits on a page (it moves up
     to the block's first row); a block longer than a page is split; the repeated first row is
     counted on every page after the first."""
     from govopt.report.excel.book import PAGE_FILL

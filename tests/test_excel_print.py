@@ -1,8 +1,8 @@
-"""The workbook as printed (issue 23): LibreOffice turns several types' workbooks into PDF (one
+"""The workbook as printed: LibreOffice turns several types' workbooks into PDF (one
 soffice call), and every page is read back with ``pdftotext``: a page that carries a table's
 rows carries that table's header line, and a table that runs onto another page leaves at least
 three of its rows on each side of the break; the bundled design's workbook prints in about a
-dozen pages (issue 13)."""
+dozen pages."""
 from __future__ import annotations
 
 import re

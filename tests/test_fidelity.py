@@ -1,4 +1,4 @@
-"""Fidelity by use case (issue 14, item 6): a use case runs only its analyses, each at the
+"""Fidelity by use case: a use case runs only its analyses, each at the
 cheapest setting whose measured error fits the tolerance, and says which models it used."""
 
 import dataclasses

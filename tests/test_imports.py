@@ -1,4 +1,4 @@
-"""Imports on demand (issue 14, item 2): a command loads what it uses when it uses it.
+"""Imports on demand: a command loads what it uses when it uses it.
 
 Each command runs in an interpreter of its own that starts as a fresh one (forked from one
 that did only what a fresh interpreter running the command does before it) and reports its

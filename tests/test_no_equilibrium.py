@@ -1,5 +1,5 @@
 """'No equilibrium speed' names the spec keys that decide it and which way to move them
-(issue 21): a spring too stiff for the range (its largest rate is then enough), a free length
+: a spring too stiff for the range (its largest rate is then enough), a free length
 too long, the regulating gear's inertia above the flying masses'."""
 
 import re

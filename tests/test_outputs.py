@@ -1,6 +1,6 @@
 """Outputs never destroy anything, spec files are read safely, the CLI never shows a traceback;
 and govopt killed (SIGTERM, SIGKILL) at many moments never leaves a corrupt output or a stray
-temporary file (issue 15)."""
+temporary file."""
 
 import os
 import signal
@@ -215,7 +215,7 @@ def test_cli_existing_output_needs_force(tmp_path):
     assert line == f"error: {out}: workbook already exists; use --force to replace it"
     assert out.read_bytes() == b"precious"
     run = _run(["evaluate", SPEC_A, "--xlsx", out, "--force"])
-    # exit 1: case a misses its irregularity 0.12 (issue 13 changes the contract: was 0); the
+    # exit 1: case a misses its irregularity 0.12 (a failed check exits 1); the
     # workbook is written all the same
     assert run.exit_code == 1, run.output
     _assert_valid_xlsx(out)
@@ -286,7 +286,7 @@ def test_cli_warnings_shown_one_line_each_on_success_only(monkeypatch):
 
     monkeypatch.setattr(govopt.evaluator, "evaluate", noisy)
     result = _run(["evaluate"])
-    # the run completes (exit 1: case a's irregularity check fails; issue 13, was 0): warnings
+    # the run completes (exit 1: case a's irregularity check fails): warnings
     # are shown after a completed run whatever its checks say
     assert result.exit_code == 1 and "warning: something odd" in result.stderr
     assert "UserWarning" not in result.output and "stacklevel" not in result.output
@@ -299,7 +299,7 @@ def test_control_characters_in_names_give_a_valid_workbook(tmp_path):
     spec.write_text(text)
     out = tmp_path / "ctl.xlsx"
     result = _run(["evaluate", spec, "--xlsx", out])
-    assert result.exit_code == 1, result.output  # case a's failed check (issue 13; was 0)
+    assert result.exit_code == 1, result.output  # case a's failed check
     _assert_valid_xlsx(out)
     assert "\\x07bell\\x1b[31m" in openpyxl.load_workbook(out).properties.title
 
@@ -489,7 +489,7 @@ def test_kill_design_late(tmp_path, durations, sig):
 
 
 # ---------------------------------------------------------------------------------------------
-# a trailing '/' names a folder; bench checks its outputs first (issue 21)
+# a trailing '/' names a folder; bench checks its outputs first
 
 
 def test_trailing_slash_names_a_folder(tmp_path, monkeypatch):

@@ -1,4 +1,4 @@
-"""Over-regulation decided for all t >= 0 (Hamabe, Part III; issue 8, item 1).
+"""Over-regulation decided for all t >= 0 (Hamabe, Part III).
 
 The reference here is independent of govopt's method: the roots of the cubic (29) by mpmath's
 ``polyroots`` at 50 digits, the exact modal coefficients (Vandermonde solve at 50 digits), the

@@ -1,5 +1,4 @@
-"""The valve table's numpy interpolants equal scipy's (issue 14, target 2: ``evaluate`` no longer
-imports ``scipy.interpolate``, so its numbers must not move).
+"""The valve table's numpy interpolants equal scipy's.
 
 scipy is the reference and is imported here only. PCHIP (slopes by
 ``PchipInterpolator._find_derivatives``, end formula included; Hermite coefficients; the

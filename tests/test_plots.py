@@ -1,4 +1,4 @@
-"""Plots (issue 13, item 1): every plot of every governor type is drawn from the Result, the files
+"""Plots: every plot of every governor type is drawn from the Result, the files
 exist and are not blank, the CLI writes them through the no-clobber policy, and the numbers a
 plot shows are the Result's (the diagram's curves checked against their defining equations)."""
 
@@ -257,7 +257,7 @@ def test_fatigue_diagram_reads_the_checks_safety_factor(tmp_path, rules):
 
 
 def test_fatigue_diagram_draws_the_hooks_at_their_checks_safety_factors(tmp_path):
-    """An extension spring's hooks (issue 23: the binding hook A was only in the legend): the
+    """An extension spring's hooks (the binding hook A was only in the legend): the
     inset's load lines meet the Goodman line (x + y = 1 in the hooks' normalised coordinates)
     at each hook check's safety factor times its cycle, and the governing hook is red."""
     res = evaluate(load_spec(_graded(tmp_path, "hamabe-d")))
@@ -312,7 +312,7 @@ def test_help_does_not_import_matplotlib():
 
 def test_cli_plots_written_refused_and_forced(tmp_path):
     # the book's answer (3.572 kgf/cm) spans 0.002 % more than its 240-256.8 rpm band, which
-    # evaluate requires (issue 20): a passing copy with the band's top at 257 rpm
+    # evaluate requires: a passing copy with the band's top at 257 rpm
     text = (SPECS / "textbook-ex4-hartnell.toml").read_text()
     assert 'outer = "256.8 rpm"' in text
     (tmp_path / "spec").mkdir()
@@ -341,7 +341,7 @@ def test_cli_plots_written_refused_and_forced(tmp_path):
     assert bad.exit_code == 2 and "not a folder" in bad.stderr
 
 
-# ---------------------------------------------------------------------------- issue 23
+# ---------------------------------------------------------------- plots not misread
 
 
 def test_k2_axis_is_the_datas_where_the_ceiling_is_far():

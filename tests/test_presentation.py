@@ -1,4 +1,4 @@
-"""What an engineer sees (issue 13): the text report (items 3: every value with its unit, the same
+"""What an engineer sees: the text report (items 3: every value with its unit, the same
 unit for the same quantity, margins in words, "never", the objective's unit, colour on a
 terminal and plain text when piped) and the JSON (item 8: no section twice, infinities as null
 with a flag, units in the keys). The workbook's tables, print setup and cached values are tested
@@ -211,7 +211,7 @@ def test_length_coordinate_in_mm_everywhere(porter):
 
 
 # ------------------------------------------------------------------------------------------
-# the plain renderer (issue 14): rich's text without importing rich when colour is off
+# the plain renderer: rich's text without importing rich when colour is off
 
 
 def _both(draw):
@@ -364,7 +364,7 @@ def test_json_writes_each_section_once(designed):
 
 
 # ------------------------------------------------------------------------------------------
-# the answer first (issue 23)
+# the answer first
 
 
 @pytest.mark.parametrize("which", ["shaft", "designed", "porter"])

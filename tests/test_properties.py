@@ -1,4 +1,4 @@
-"""Property-based tests (issue 15, item 4): valid specs generated across the physical range of
+"""Property-based tests: valid specs generated across the physical range of
 every governor type either evaluate or fail with a classified diagnosis (a GovoptError: exit
 2), never another exception; and invariants that hold for every input:
 

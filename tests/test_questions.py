@@ -1,4 +1,4 @@
-"""Questions the textbook asks, answered directly (issue 23): which spring floats a governor
+"""Questions the textbook asks, answered directly: which spring floats a governor
 between two speeds (a spec with a speed band and no spring), effort and power over a chosen speed
 change, and the type's geometry (h, the arm ratio k, the sleeve lift) in the JSON and text."""
 

@@ -1,4 +1,4 @@
-"""Requirements that mean the same on every path (issue 20): evaluate, bulk (evaluate_many),
+"""Requirements that mean the same on every path: evaluate, bulk (evaluate_many),
 design and studies read one rule for each requirement."""
 
 from pathlib import Path

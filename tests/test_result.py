@@ -1,4 +1,4 @@
-"""The typed result (issue 20): checks and figures carry value, unit, group and source as fields;
+"""The typed result: checks and figures carry value, unit, group and source as fields;
 ``Result.summary()``, ``to_frame()``, ``plot()`` and a notebook's ``_repr_html_`` read them; the
 checks live on the ground floor (``govopt.verdict``) and nothing imports the result back."""
 

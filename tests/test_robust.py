@@ -1,4 +1,4 @@
-"""Issue 24: a design that holds in the shop - the dash-pot in the middle of its window, robust
+"""a design that holds in the shop - the dash-pot in the middle of its window, robust
 requirements over a tolerance box, verified independently of the optimiser's worst-case code."""
 
 import dataclasses

@@ -1,4 +1,4 @@
-"""Issue 24: the worst case over a tolerance box where a check is not monotone in a tolerance -
+"""the worst case over a tolerance box where a check is not monotone in a tolerance -
 an inner maximisation, checked against a dense grid and the ordinary evaluator."""
 
 import dataclasses

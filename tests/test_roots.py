@@ -1,4 +1,4 @@
-"""govopt's Brent root finder is scipy's ``brentq`` without its import (issue 14, target 2).
+"""govopt's Brent root finder is scipy's ``brentq`` without its import.
 
 scipy is the reference, imported here only: the same roots to the last bit (the same operations
 in the same order), the same number of function calls, the same errors.

@@ -43,7 +43,7 @@ CASES = {
     "table length mismatch": (_edit('"84 deg", "96 deg"]', '"84 deg"]'),
                               r"valve_gear\.table\.delta: expected 5 values"),
     "list item wrong dimension": (_edit('"58 deg"', '"58 cm"'),
-                                  # issue 13, item 5: grammatical ("not an angle")
+                                  # grammatical ("not an angle")
                                   r"valve_gear\.table\.delta\[1\]: .*not an angle"),
     "irregularity not a number": (_edit("irregularity = 0.12", 'irregularity = "a lot"'),
                                   r"speed\.irregularity: expected a finite number"),
@@ -55,7 +55,7 @@ CASES = {
     "unknown top-level table": (BASE + '\n[extras]\nx = 1\n', r"extras: unknown key"),
     "bad fidelity choice": (BASE + '\n[analysis]\ngeometry = "approximate"\n',
                             r"analysis\.geometry: expected one of"),
-    # inputs pint would silently reinterpret (issue 8, item 6)
+    # inputs pint would silently reinterpret
     "bare number added to an angle": (_edit('alpha_normal = "64 deg + 40 arcmin"',
                                             'alpha_normal = "64 deg + 0.01"'),
                                       r"governor\.alpha_normal: .*0\.01 has no unit"),
@@ -77,7 +77,7 @@ CASES = {
     "load change to outside the range": (_edit('to = "64 deg + 40 arcmin"', 'to = "85 deg"'),
                                          r"load_change\[0\]\.to: expected a configuration "
                                          r"within .*85 deg"),
-    # issue 23: what an engineer writes for the spec's keys is pointed to them
+    # what an engineer writes for the spec's keys is pointed to them
     "coil diameter for the radius": (_edit('coil_radius = "6 cm"', 'coil_diameter = "12 cm"'),
                                      r"design\.coil_radius: missing .*'coil_diameter': did you "
                                      r"mean 'coil_radius'\? \(the mean coil radius, half"),

@@ -68,7 +68,7 @@ SH_ANY = [*SH, "--wire-sizes", "continuous"]
     (["--min-force", "600 N"], "--min-force"),
 ])
 def test_bad_spring_options_are_refused_in_one_line(extra, option):
-    """Issue 21: exit 2, one line naming the option and what is expected."""
+    """Exit 2, one line naming the option and what is expected."""
     result = invoke([*SH, *extra])
     assert result.exit_code == 2
     lines = result.output.strip().splitlines()
@@ -98,7 +98,7 @@ def _checks_pass(out):
 
 
 def test_buckling_is_a_constraint_and_the_claim_is_honest():
-    """Issue 22 acceptance: the 20 N/mm SH spring no longer fails buckling after claiming a
+    """The 20 N/mm SH spring no longer fails buckling after claiming a
     certified optimum. Between fixed plates it does not bind (the stress at solid length, now
     a GP constraint, does): a certified optimum that passes every check. Hinged, buckling
     binds: every check passes and the claim is 'within X % of a certified bound'."""
@@ -184,7 +184,7 @@ def test_fatigue_past_the_data_says_so_in_the_verdict():
      "minimum active turns x"),
 ])
 def test_infeasible_spring_names_the_limit_and_the_factor(extra, limit):
-    """Issue 21: not only 'no spring meets these requirements'."""
+    """Not only 'no spring meets these requirements'."""
     result = invoke(["spring", "--force", "500 N", "--stiffness", "20 N/mm", *extra])
     assert result.exit_code == 2, result.output
     assert "no spring meets these requirements: infeasible: conflicting" in result.output

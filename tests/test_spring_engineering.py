@@ -1,4 +1,4 @@
-"""Spring engineering wired into govopt (issue 11): wire grades with allowables per diameter, the
+"""Spring engineering wired into govopt: wire grades with allowables per diameter, the
 spring kinds' own checks, fatigue from the mechanism's own vibration, surge clear of the
 forcing's harmonics, EN 15800 tolerance spread of the speed range, the spring maker's sheet, and
 the optimiser and `govopt spring` using them.
@@ -45,7 +45,7 @@ def rm_dh(d):
 @pytest.fixture(scope="module")
 def old():
     """The bundled design (`govopt design` on hamabe-design.toml) with its dash-pot at the upper
-    end of its feasible window, where the search put it before issue 24 (it now takes the
+    end of its feasible window, where an earlier search put it (it now takes the
     window's centre on a log scale): the design these figures were worked for."""
     res = govopt.design(govopt.load_spec(SPECS / "hamabe-design.toml"))
     f_hi = res.optimisation["design"]["dashpot_feasible_range_N_m_s_per_rad"][1]

@@ -1,4 +1,4 @@
-"""`govopt spring SPEC.toml` (issue 22): spring spec files with units and the spec error
+"""`govopt spring SPEC.toml`: spring spec files with units and the spec error
 conventions, options overriding the file, the bundled literature problems, installed lengths
 and stroke, the stored-energy objective."""
 

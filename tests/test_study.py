@@ -81,7 +81,7 @@ def test_sweep_forms():
 def _wide(tmp_path) -> Path:
     """textbook-ex4-hartnell with a 200-300 rpm band. The studies below sweep its design over
     weights and free lengths whose operating bands the book's 240-256.8 rpm refuses: the band
-    is a requirement of every path (issue 20), and the book's own rounded spring (3.572 kgf/cm)
+    is a requirement of every path, and the book's own rounded spring (3.572 kgf/cm)
     spans 0.002 % more than it."""
     text = HARTNELL.read_text(encoding="utf-8")
     for old, new in (('inner = "240 rpm"', 'inner = "200 rpm"'),
@@ -494,7 +494,7 @@ def test_cli_study_exit_codes(tmp_path, monkeypatch):
 
 
 # ------------------------------------------------------------------------------------------
-# issue 23: plots a reader does not misread
+# plots a reader does not misread
 
 
 def test_zipped_study_is_one_plot_and_pareto_says_minimise(tmp_path):
@@ -575,7 +575,7 @@ def test_study_show_gives_speeds_in_the_specs_own_unit(tmp_path):
 
 
 # ---------------------------------------------------------------------------------------------
-# databases that must not lose anything (issue 21)
+# databases that must not lose anything
 
 
 def test_db_never_replaces_the_spec_nor_a_foreign_file(tmp_path, monkeypatch):

@@ -585,7 +585,7 @@ def test_coil_design_is_buildable():
     spec, res = _design("traction-coil-design.toml")
     sd, gov = res.spring, spec.governor
     # was 0.6127 m: 6 times the installed length; 0.1397 m until the whole operating band,
-    # friction band included, had to lie in 220-250 rpm (issue 20): 0.2092 m now
+    # friction band included, had to lie in 220-250 rpm: 0.2092 m now
     assert sd.l0 < 2.1 * gov.spring_length
     F = np.asarray(res.statics.spring_force)
     s = (F.max() + 0.1 * (F.max() - F.min())) / sd.kappa

@@ -1,4 +1,4 @@
-"""Results to trust (issue 8, items 4-7): one definition of the irregularity everywhere, no
+"""Results to trust: one definition of the irregularity everywhere, no
 impossible design passes, no input silently reinterpreted, friction that holds the pendulum."""
 
 from __future__ import annotations
@@ -65,7 +65,7 @@ def test_irregularity_agrees_in_json_text_and_excel(tmp_path):
                                  'active_turns = 8\nfree_half_length = "12 cm"'))
     book = tmp_path / "book.xlsx"
     out = invoke(["evaluate", str(path), "--json", "--xlsx", str(book)])
-    # exit 1: this off-centre design over-stresses its spring; issue 13 changes the contract
+    # exit 1: this off-centre design over-stresses its spring; a failed check exits 1
     # (a failed check exited 0)
     assert out.exit_code == 1, out.output
     assert [c["name"] for c in json.loads(out.stdout)["checks"] if not c["passed"]] == [
@@ -125,7 +125,7 @@ def test_falling_characteristic_fails_where_the_papers_k2_passes(tmp_path):
     path.write_text(path.read_text() + '\n[analysis]\ngeometry = "series"\n'
                     'reaction_speed = "mean"\nreaction_slope = false\n')
     out = invoke(["evaluate", str(path), "--json"])
-    assert out.exit_code == 1, out.output  # a failing design exits 1 (issue 13; was 0)
+    assert out.exit_code == 1, out.output  # a failing design exits 1
     js = json.loads(out.stdout)
     checks = {c["name"]: c for c in js["checks"]}
     assert js["irregularity"] == pytest.approx(-0.0024, abs=1e-4)
@@ -162,7 +162,7 @@ def test_free_length_not_positive_is_an_error_with_the_least_stiffness(tmp_path)
 def test_impossible_designs_exit_2(tmp_path, edits):
     out = invoke(["evaluate", str(_spec_file(tmp_path, *edits))])
     assert out.exit_code == 2, out.output
-    # since the limits of issue 15 (govopt/limits.py) these magnitudes are refused when the spec
+    # since govopt's limits (govopt/limits.py) these magnitudes are refused when the spec
     # is read, naming the key, before any figure can overflow; either way no result is reported
     assert ("impossible design" in out.output
             or re.search(r"design\.\w+: .* outside govopt's range", out.output)), out.output
@@ -272,7 +272,7 @@ def test_evaluate_reports_a_stuck_pendulum(tmp_path):
     path = _spec_file(tmp_path, ('dashpot_a1 = "24 kgf*cm*s/rad"',
                                  'dashpot_a1 = "24 kgf*cm*s/rad"\nfriction_moment = "5000 kgf*cm"'))
     out = invoke(["evaluate", str(path), "--json"])
-    assert out.exit_code == 1, out.output  # the failed friction check (issue 13; was 0)
+    assert out.exit_code == 1, out.output  # the failed friction check
     js = json.loads(out.stdout)
     assert js["friction"][0]["outcome"] == "stuck" and js["friction"][0]["moved"] is False
     check = next(c for c in js["checks"]

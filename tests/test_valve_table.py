@@ -1,4 +1,4 @@
-"""The valve-gear table's interpolant (issue 8, item 3): k^2 continuous with the default.
+"""The valve-gear table's interpolant: k^2 continuous with the default.
 
 Hamabe's Fig. 6 gives the eccentric's advance delta at five configurations; k^2 (with the
 default ``reaction_slope``) uses d delta/d alpha. The paper's linear interpolation makes that

@@ -379,7 +379,7 @@ def test_undamped_resonance_is_flagged_not_nan(case_a):
         d = v.to_dict()
         json.dumps(d, allow_nan=False)
         assert d["resonance"] is True and d["resonant_orders"] == [n]
-        if excited:  # JSON: an infinity is null with a flag beside it (issue 13, item 8)
+        if excited:  # JSON: an infinity is null with a flag beside it
             assert (d["peak_to_peak_rad"], d["peak_to_peak_rad_infinite"]) == (None, "+inf")
             h = d["harmonics"][n - 1]
             assert (h["amplitude_rad"], h["amplitude_rad_infinite"]) == (None, "+inf")
