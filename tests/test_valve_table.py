@@ -240,3 +240,11 @@ def test_rounding_of_units_is_not_a_gap():
     spec = govopt.load_spec("govopt/specs/hamabe-a-si.toml")  # loads: no SpecError
     assert spec.governor.alpha_inner == pytest.approx(spec.governor.valve_gear.table_alpha[0],
                                                       abs=1e-12)
+
+
+def test_smooth_tables_refuse_a_table_that_is_not_one():
+    """Rows that do not increase, a single row, or an interpolant govopt does not offer."""
+    for rows, kind in (((0.0, 1.0, 1.0), "pchip"), ((1.0,), "cubic"), ((0.0, 1.0), "akima")):
+        x = np.array(rows)
+        with pytest.raises(ValueError):
+            valvegear.advance_angle(0.5, x, x, kind)

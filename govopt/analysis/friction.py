@@ -74,7 +74,6 @@ from ..governors.base import KEY_UNITS
 from ..inputs import LoadChange, Spec
 from . import statics
 from .loadchange import LoadChangeModel, load_change_model  # noqa: F401 (re-exported)
-from .roots import brentq  # scipy's brentq without importing scipy
 
 __all__ = [
     "FrictionResult",
@@ -407,6 +406,8 @@ def _slide(M, z0, s, t_max, h):
     Returns ``(tau, z)``: the stroke's duration (None if it reaches ``t_max``) and the state at
     its end.
     """
+    from scipy.optimize import brentq  # where a stroke's end is refined
+
     def at(tau):
         return expm(M * tau) @ z0
 

@@ -19,134 +19,20 @@ import numpy as np
 VALVE_TABLES = ("pchip", "cubic", "linear")
 
 
-class _PiecewiseCubic:
-    """``f(x) = sum_k c[k, i] (x - x_i)^(3 - k)`` on ``[x_i, x_{i+1}]``, the first and last pieces
-    continued outside: scipy's ``PPoly`` for cubics, evaluated in its order of operations (its
-    ``evaluate_poly1``: ``c[3] + c[2] s + c[1] s^2 + c[0] s^3``, powers by repeated products), so
-    the numbers are scipy's to the last bit without importing scipy (``evaluate`` starts fast:
-    docs/decisions.md, imports on demand). ``x`` and ``f`` in the table's units (here rad)."""
-
-    def __init__(self, x: np.ndarray, c: np.ndarray):
-        self.x, self.c = x, c
-
-    def __call__(self, xv):
-        xv = np.asarray(xv, dtype=float)
-        i = np.clip(np.searchsorted(self.x, xv, side="right") - 1, 0, len(self.x) - 2)
-        s, c = xv - self.x[i], self.c[:, i]
-        res, z = c[-1], 1.0
-        for k in range(len(c) - 2, -1, -1):
-            z = z * s
-            res = res + c[k] * z
-        return res
-
-    def derivative(self) -> _PiecewiseCubic:
-        """The derivative, a piecewise polynomial one degree lower (``k c`` as scipy forms it)."""
-        order = np.arange(len(self.c) - 1, 0, -1, dtype=float)
-        return _PiecewiseCubic(self.x, self.c[:-1] * order[:, None])
-
-
-def _hermite(x: np.ndarray, y: np.ndarray, d: np.ndarray) -> _PiecewiseCubic:
-    """The cubic Hermite interpolant through ``(x_i, y_i)`` with slopes ``d_i`` (de Boor, *A
-    Practical Guide to Splines*, ch. IV, eq. (4)); coefficients formed as scipy's
-    ``CubicHermiteSpline`` forms them. ``y`` in the units of ``x`` times those of ``d``."""
-    h = np.diff(x)
-    m = np.diff(y) / h
-    t = (d[:-1] + d[1:] - 2 * m) / h
-    return _PiecewiseCubic(x, np.stack((t / h, (m - d[:-1]) / h - t, d[:-1], y[:-1])))
-
-
-def _pchip_end_slope(h0, h1, m0, m1):
-    """End slope of PCHIP: the three-point formula ``((2 h0 + h1) m0 - h0 m1)/(h0 + h1)``, set to
-    0 if its sign differs from the end secant ``m0`` and to ``3 m0`` if the secants change sign
-    and it exceeds ``3 |m0|`` (Moler, *Numerical Computing with MATLAB*, sec. 3.6, ``pchiptx``;
-    scipy's ``PchipInterpolator._edge_case``). ``h`` interval widths, ``m`` secant slopes."""
-    d = ((2 * h0 + h1) * m0 - h0 * m1) / (h0 + h1)
-    if np.sign(d) != np.sign(m0):
-        return 0.0
-    if np.sign(m0) != np.sign(m1) and abs(d) > 3.0 * abs(m0):
-        return 3.0 * m0
-    return d
-
-
-def pchip_slopes(x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """Slopes of the monotone piecewise-cubic Hermite interpolant (PCHIP) at the rows ``x``.
-
-    Fritsch & Carlson, SIAM J. Numer. Anal. 17 (1980) 238-246, with Brodlie's weights (Fritsch &
-    Butland, SIAM J. Sci. Stat. Comput. 5 (1984) 300-304): at an inner row, 0 where the secants
-    ``m_{k-1}``, ``m_k`` differ in sign or one is 0, else their weighted harmonic mean
-    ``(w1 + w2) / (w1/m_{k-1} + w2/m_k)``, ``w1 = 2 h_k + h_{k-1}``, ``w2 = h_k + 2 h_{k-1}``;
-    at the ends :func:`_pchip_end_slope`; two rows give the chord. As scipy's
-    ``PchipInterpolator._find_derivatives`` computes them (tests/test_pchip.py). Units of
-    ``y/x``.
-
-    Secants 1.2 and 1.8 over widths 10 and 20: inside ``w1 = 50``, ``w2 = 40``, so
-    ``90/(50/1.2 + 40/1.8)`` = 1.409; the ends ``((2*10 + 20) 1.2 - 10 * 1.8)/30`` = 1.0 and
-    ``((2*20 + 10) 1.8 - 20 * 1.2)/30`` = 2.2:
-
-    >>> [round(float(v), 3) for v in pchip_slopes(np.array([50.0, 60.0, 80.0]),
-    ...                                            np.array([48.0, 60.0, 96.0]))]
-    [1.0, 1.409, 2.2]
-    """
-    h = np.diff(x)
-    m = np.diff(y) / h
-    if len(x) == 2:
-        return np.array([m[0], m[0]])
-    w1, w2 = 2 * h[1:] + h[:-1], h[1:] + 2 * h[:-1]
-    same = (np.sign(m[1:]) == np.sign(m[:-1])) & (m[1:] != 0) & (m[:-1] != 0)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        inner = 1.0 / ((w1 / m[:-1] + w2 / m[1:]) / (w1 + w2))
-    d = np.zeros_like(y)
-    d[1:-1] = np.where(same, inner, 0.0)
-    d[0] = _pchip_end_slope(h[0], h[1], m[0], m[1])
-    d[-1] = _pchip_end_slope(h[-1], h[-2], m[-1], m[-2])
-    return d
-
-
-def not_a_knot_slopes(x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """Slopes at the rows ``x`` of the C^2 cubic spline with not-a-knot ends (the third
-    derivative continuous across the second and the last-but-one row; de Boor, *A Practical
-    Guide to Splines*, ch. IV, eqs. (10) and (39)). Inner rows: ``h_k s_{k-1} + 2 (h_{k-1} +
-    h_k) s_k + h_{k-1} s_{k+1} = 3 (h_k m_{k-1} + h_{k-1} m_k)``; three rows give the parabola,
-    two the chord (as scipy's ``CubicSpline`` does). The tridiagonal system is small (one row
-    per table row): numpy's dense solve. Units of ``y/x``.
-
-    A not-a-knot spline reproduces a cubic exactly, so on ``y = x^3`` the slopes are ``3 x^2``:
-
-    >>> x = np.array([0.0, 1.0, 2.0, 3.0])
-    >>> bool(np.allclose(not_a_knot_slopes(x, x**3), 3.0 * x**2, rtol=0.0, atol=1e-12))
-    True
-    """
-    n, h = len(x), np.diff(x)
-    m = np.diff(y) / h
-    if n == 2:
-        return np.array([m[0], m[0]])
-    A, b = np.zeros((n, n)), np.empty(n)
-    if n == 3:  # both not-a-knot conditions coincide: the parabola through the three rows
-        A[0, :2], A[1], A[2, 1:] = 1.0, (h[1], 2 * (h[0] + h[1]), h[0]), 1.0
-        b[:] = 2 * m[0], 3 * (h[0] * m[1] + h[1] * m[0]), 2 * m[1]
-        return np.linalg.solve(A, b)
-    k = np.arange(1, n - 1)
-    A[k, k - 1], A[k, k], A[k, k + 1] = h[1:], 2 * (h[:-1] + h[1:]), h[:-1]
-    b[1:-1] = 3 * (h[1:] * m[:-1] + h[:-1] * m[1:])
-    d0, d1 = x[2] - x[0], x[-1] - x[-3]
-    A[0, :2], b[0] = (h[1], d0), ((h[0] + 2 * d0) * h[1] * m[0] + h[0] ** 2 * m[1]) / d0
-    A[-1, -2:], b[-1] = (d1, h[-2]), (h[-1] ** 2 * m[-2] + (2 * d1 + h[-1]) * h[-2] * m[-1]) / d1
-    return np.linalg.solve(A, b)
-
-
 @functools.lru_cache(maxsize=64)
 def _smooth_table(table_alpha: tuple, table_delta: tuple, kind: str):
-    """``(delta(alpha), d delta/d alpha)`` as piecewise cubics, built once per table."""
-    x, y = np.array(table_alpha), np.array(table_delta)
-    if kind == "pchip":
-        slopes = pchip_slopes
-    elif kind == "cubic":
-        slopes = not_a_knot_slopes  # the table gives no end slopes or curvatures
-    else:
+    """``(delta(alpha), d delta/d alpha)`` as scipy's piecewise cubics, built once per table:
+    ``PchipInterpolator`` (Fritsch & Carlson 1980, Brodlie's weights) or ``CubicSpline`` with
+    not-a-knot ends (de Boor, ch. IV: the table gives no end slopes or curvatures). scipy is
+    imported here, where a smooth table is first used (a shaft governor's statics)."""
+    from scipy.interpolate import CubicSpline, PchipInterpolator
+
+    if kind not in ("pchip", "cubic"):
         raise ValueError(f"valve_table must be one of {VALVE_TABLES}, got {kind!r}")
+    x, y = np.array(table_alpha), np.array(table_delta)
     if len(x) < 2 or np.any(np.diff(x) <= 0):
         raise ValueError("the valve table needs two or more strictly increasing rows")
-    f = _hermite(x, y, slopes(x, y))
+    f = PchipInterpolator(x, y) if kind == "pchip" else CubicSpline(x, y)
     return f, f.derivative()
 
 
@@ -163,14 +49,14 @@ def advance_angle(alpha, table_alpha, table_delta, kind="pchip"):
     Hamabe, Example 1 / Fig. 6 gives ``delta`` at five configurations only (his statics use
     just those rows). Between rows, ``kind`` (``[analysis] valve_table``):
 
-    - ``"pchip"`` (default): monotone piecewise-cubic Hermite (Fritsch-Carlson,
-      :func:`pchip_slopes`; scipy's ``PchipInterpolator`` to the last bit). C^1, so
+    - ``"pchip"`` (default): monotone piecewise-cubic Hermite (Fritsch-Carlson; scipy's
+      ``PchipInterpolator``). C^1, so
       ``d delta/d alpha`` and with it ``k^2`` are continuous; monotone for any monotone table
       (no overshoot between rows); local (a row changes only its two intervals); its slope at a
       row lies between the two neighbouring secants, so ``k^2`` at a row lies between the
       linear table's two one-sided values.
     - ``"cubic"``: not-a-knot cubic spline (C^2; its slope at a row depends on every row;
-      :func:`not_a_knot_slopes`, scipy's ``CubicSpline`` to rounding).
+      scipy's ``CubicSpline``).
     - ``"linear"``: the paper's "interpolate between rows"; ``d delta/d alpha`` jumps at each
       row. Constant outside the table (as before).
 

@@ -66,7 +66,6 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ...analysis.roots import RTOL_MIN, brentq  # scipy's brentq without importing scipy
 from ...analysis.statics import SpringDesign, restoring_k2
 from ...inputs import Spec
 from ...jsonable import jsonable
@@ -284,6 +283,8 @@ def _peak_to_peak(X, Y):
     N = len(X)
     if N == 0:
         return 0.0, 0.0, 0.0
+    from scipy.optimize import brentq  # here, where the swing's extremes are refined
+
     L = 1 << max(11, int(math.ceil(math.log2(32 * (N + 1)))))
     spec = np.zeros(L // 2 + 1, dtype=complex)
     spec[1:N + 1] = (X - 1j * Y) * (L / 2.0)
@@ -298,7 +299,7 @@ def _peak_to_peak(X, Y):
         lo, hi = tau[i] - 2.0 * np.pi / L, tau[i] + 2.0 * np.pi / L
         try:
             if dx(lo) * dx(hi) < 0:
-                t = brentq(dx, lo, hi, xtol=1e-15, rtol=RTOL_MIN)
+                t = brentq(dx, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)  # rtol: its least
                 v = float(_synthesize(X, Y, np.array([t]))[0])
                 return max(v, x[i]) if sense > 0 else min(v, x[i]), t
         except RuntimeError:  # no convergence: the grid's value stands
