@@ -12,6 +12,8 @@ from clirun import invoke
 import govopt
 from govopt.analysis import statics
 from govopt.optimize import design as dz
+from govopt.optimize import windows as wz
+from govopt.optimize.kappa import KappaModel
 from govopt.springs import helical as hx
 
 SPEC = "govopt/specs/hamabe-design.toml"
@@ -68,7 +70,7 @@ def _brute_force(spec, masses, wires, radii, turns):
     kappa = hx.stiffness_r(D, R, N, G)
     m, k = M[:, None], kappa[:, None]
     l0 = statics.free_half_length(spec, m, k)
-    grid = dz.Grid.build(spec)
+    grid = wz.Grid.build(spec)
     w2 = statics.omega_squared(spec, grid.alpha, m, k, l0)
     sd = statics.SpringDesign(m, spec.governor.rho**2 * m, k, l0)
     k2 = statics.restoring_k2(spec, grid.alpha, sd, w2)
@@ -86,12 +88,12 @@ def _brute_force(spec, masses, wires, radii, turns):
           & (hx.shear_stress_r(F.max(axis=1), D, R) <= spec.material.allowable_shear_stress)
           & (C >= req.spring_index[0]) & (C <= req.spring_index[1]) & ((N + 1) * D <= 2 * l0[:, 0]))
     obj = M + hx.wire_mass(D, R, N, rho_s)
-    km = dz.KappaModel.build(spec, masses, grid.alpha)
+    km = KappaModel.build(spec, masses, grid.alpha)
     for i in np.argsort(np.where(ok, obj, np.inf)):
         if not ok[i]:
             return None
         row = np.array([int(np.argmin(np.abs(masses - M[i])))])
-        if dz.dashpot_window(spec, req, km, grid, row, kappa[[i]])["feasible"][0]:
+        if wz.dashpot_window(spec, req, km, grid, row, kappa[[i]])["feasible"][0]:
             return obj[i], (M[i], D[i], R[i], N[i])
     return None
 
@@ -173,8 +175,8 @@ def test_kappa_model_matches_statics(spec):
     """The optimiser's affine-in-kappa statics equal the evaluator's to rounding."""
     for kw in ({}, {"geometry": "series", "reaction_speed": "mean", "reaction_slope": False}):
         s = spec.with_analysis(**kw)
-        grid = dz.Grid.build(s)
-        km = dz.KappaModel.build(s, [5.0, 9.0], grid.alpha)
+        grid = wz.Grid.build(s)
+        km = KappaModel.build(s, [5.0, 9.0], grid.alpha)
         for i, m in enumerate((5.0, 9.0)):
             kappa = 30000.0
             l0 = statics.free_half_length(s, m, kappa)
@@ -188,14 +190,14 @@ def test_kappa_model_matches_statics(spec):
 def test_dashpot_window_is_bounded_on_both_sides(spec):
     """Too little damping violates eq. (32); too much over-regulates: find both ends."""
     req = dataclasses.replace(spec.requirements, hurwitz_margin=0.0)
-    grid = dz.Grid.build(spec)
-    km = dz.KappaModel.build(spec, [6.0], grid.alpha)
-    lo, hi, _ = km.statics_interval(*dz.k2_limits(spec, req), spec.speed.irregularity)
+    grid = wz.Grid.build(spec)
+    km = KappaModel.build(spec, [6.0], grid.alpha)
+    lo, hi, _ = km.statics_interval(*wz.k2_limits(spec, req), spec.speed.irregularity)
     kappa = 0.5 * (lo[0] + hi[0])
-    win = dz.dashpot_window(spec, req, km, grid, np.array([0]), np.array([kappa]),
+    win = wz.dashpot_window(spec, req, km, grid, np.array([0]), np.array([kappa]),
                             factors=np.geomspace(1.0, 1e4, 60))
     assert win["feasible"][0]
-    a0, a2, a3, _ = dz.load_change_problem(spec, km, grid, np.array([0]), np.array([kappa]))
+    a0, a2, a3, _ = wz.load_change_problem(spec, km, grid, np.array([0]), np.array([kappa]))
     f_hurwitz = float(a0[0, 0] * a3[0, 0] / (3 * a2[0, 0]))
     assert win["f_lo"][0] >= f_hurwitz * (1 - 1e-12)
     assert win["f_hi"][0] < f_hurwitz * 1e4  # an upper end exists inside the scanned range
@@ -208,10 +210,10 @@ def test_vectorised_load_change_matches_the_evaluator(spec, reaction_speed):
     from govopt.analysis import loadchange
 
     s = spec.with_analysis(reaction_speed=reaction_speed)
-    grid = dz.Grid.build(s)
-    km = dz.KappaModel.build(s, [7.0], grid.alpha)
+    grid = wz.Grid.build(s)
+    km = KappaModel.build(s, [7.0], grid.alpha)
     kappa = 30000.0
-    a0, a2, a3, x = dz.load_change_problem(s, km, grid, np.array([0]), np.array([kappa]))
+    a0, a2, a3, x = wz.load_change_problem(s, km, grid, np.array([0]), np.array([kappa]))
     l0 = statics.free_half_length(s, 7.0, kappa)
     sd = statics.SpringDesign(7.0, s.governor.rho**2 * 7.0, kappa, l0)
     (b0, _, b2, b3), y, _ = loadchange.coefficients(s, sd, s.load_changes[0], 1.0)
