@@ -1055,13 +1055,6 @@ def design_bench(spec_path: str | Path) -> dict:
             "screen_vs_evaluate_per_design": one_eval / (screen / stats["combinations"])}
 
 
-def gp_bench(n: int = 30) -> dict:
-    """Re-solving the parameterised spring GP vs building it afresh (same n problems)."""
-    from ..optimize.spring_gp import benchmark_resolve
-
-    return benchmark_resolve(n=n)
-
-
 def _benchmark_module(name: str):
     """The script ``benchmarks/<name>.py`` of a checkout as a module; None where govopt is
     installed without its benchmarks."""
