@@ -31,6 +31,7 @@ Method (each step uses the statics and dynamics modules as evaluators):
 from __future__ import annotations
 
 import math
+import time
 from dataclasses import replace
 
 import numpy as np
@@ -54,6 +55,7 @@ from .design_bound import continuous_bound, gp_values, sensitivities
 from .diagnosis import dead_weight_diagnosis, diagnose, dynamics_conflict, unverified
 from .kappa import Affine, KappaModel
 from .margins import margins_to_ends
+from .record import Objective, Record
 from .windows import (
     Grid,
     dashpot_window,
@@ -110,6 +112,7 @@ def design(spec: Spec):
     :class:`~govopt.errors.DesignError` naming the failed checks when the chosen design fails
     its final re-evaluation (never returns a design that fails a check).
     """
+    start = time.perf_counter()
     spec = validated(spec)
     req = spec.requirements
     if req.robust:
@@ -119,7 +122,8 @@ def design(spec: Spec):
     if spec.governor.spring is None:  # a dead-weight governor: masses only
         with limits.counting(work):
             cand, stats = dead_weight_search(spec, req)
-        return result_of(spec, req, cand, _with_work(stats, work), None)
+        return result_of(spec, req, cand, _with_work(stats, work), None,
+                         time.perf_counter() - start)
     check_grids(spec, req)
     grid, km, lo, hi, parts = statics_window(spec, req)
     if not np.any(lo <= hi):
@@ -132,7 +136,7 @@ def design(spec: Spec):
         raise InfeasibleError(diagnose(spec, req, stage, parts, stats))
     bound = continuous_bound(spec, req, km, lo, hi) \
         if req.objective in ("moving_mass", "spring_mass") and stats.pop("gp") else None
-    return result_of(spec, req, cand, stats, bound)
+    return result_of(spec, req, cand, stats, bound, time.perf_counter() - start)
 
 
 
@@ -141,9 +145,11 @@ def _with_work(stats: dict, work) -> dict:
     return {**stats, "dynamics_work_s": round(work.spent, 3)}
 
 
-def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: dict | None):
+def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: dict | None,
+              seconds: float = math.nan):
     """The chosen candidate re-evaluated by :func:`govopt.evaluate`, with the optimiser's
-    record: objective, continuous bound and gap, search statistics, sensitivities."""
+    record (:class:`~govopt.optimize.record.Record`, as JSON): objective, continuous bound and
+    gap, search statistics, sensitivities; ``seconds``: the search's wall time."""
     from ..evaluator import evaluate
 
     gov = spec.governor
@@ -156,13 +162,31 @@ def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound
         raise DesignError(unverified(spec, cand, failed))
     res.kind = "design"
     searched = search_bounds(spec, req, cand)
-    gap = None if bound is None else (cand.objective - bound["objective"]) / bound["objective"]
     damping = gov.key_unit("damping")
-    unit = objective_unit(req, gov)
-    res.optimisation = {
-        "status": "optimal",
-        # the unit is in the value's key (JSON's rule) and, for writers, a field of its own
-        "objective": {"name": req.objective, "unit": unit, f"value_{unit}": cand.objective},
+    sens = sensitivities(spec, req, None if bound is None else bound["objective"])
+    record = Record(
+        status="optimal", objective=Objective(req.objective, objective_unit(req, gov)),
+        value=cand.objective, bound=math.nan if bound is None else bound["objective"],
+        active=[f"{b['name']} at its {b['at']} search bound" for b in searched
+                if b["at"] in ("lower", "upper")],
+        sensitivities={s["requirement"]: s["objective_change_percent"] for s in sens},
+        sensitivities_of=("the continuous bound (the spring GP at each mass), re-solved with "
+                          "each limit +1 % (a finite difference)"),
+        method=("exhaustive enumeration of the " + ("catalogue's masses and springs, best first"
+                if gov.spring is not None else "weight pairs, least first")
+                + ", each with its dash-pot window" + ("; the bound: the spring GP at each mass"
+                                                       if bound is not None else "")),
+        solver="enumeration", solve_time_s=seconds, search=stats,
+        notes=([] if spec.engine is not None and spec.load_changes else [
+            "no [engine] or [[load_change]] in the spec: the dash-pot and the load-change "
+            "requirements (eq. 32, over-regulation, settling) were not designed for"]) + ([
+            f"the dynamics were checked for {stats.get('dynamics_checked')} candidates, "
+            f"best first, then stopped at govopt's limit of work (~"
+            f"{limits.MAX_DESIGN_DYNAMICS_SECONDS:g} s): the best among them, which a longer "
+            "search might better (fewer load changes, or narrower bounds)"]
+            if stats.get("dynamics_stopped_at_the_work_limit") else [])
+        + bounds_notes(searched))
+    record.sections = {
         "design": {
             f"{gov.mass_key}_weight_N": cand.m * G_STANDARD, f"{gov.mass_key}_mass_kg": cand.m,
             **({"central_mass_kg": cand.central} if cand.central else {}),
@@ -172,23 +196,12 @@ def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound
             f"dashpot_feasible_range_{damping}": [cand.f_lo, cand.f_hi],
             **dashpot_margins(cand),
         },
-        "continuous_bound": None if bound is None else {
-            (f"objective_{unit}" if k == "objective" else k): v for k, v in bound.items()},
-        "gap": gap,
-        "search": stats,
-        "notes": ([] if spec.engine is not None and spec.load_changes else [
-            "no [engine] or [[load_change]] in the spec: the dash-pot and the load-change "
-            "requirements (eq. 32, over-regulation, settling) were not designed for"]) + ([
-            f"the dynamics were checked for {stats.get('dynamics_checked')} candidates, "
-            f"best first, then stopped at govopt's limit of work (~"
-            f"{limits.MAX_DESIGN_DYNAMICS_SECONDS:g} s): the best among them, which a longer "
-            "search might better (fewer load changes, or narrower bounds)"]
-            if stats.get("dynamics_stopped_at_the_work_limit") else [])
-        + bounds_notes(searched),
+        # the continuous bound's own design (its objective is the record's bound)
+        "bound_design": None if bound is None else {
+            k: v for k, v in bound.items() if k != "objective"},
         "search_bounds": searched,
-        "sensitivities": sensitivities(spec, req, None if bound is None
-                                       else bound["objective"]),
     }
+    res.optimisation = record.to_dict()
     return res
 
 

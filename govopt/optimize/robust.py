@@ -585,7 +585,7 @@ def robust_design(spec: Spec):
                                      record["monte_carlo"]["note"]]
     t_robust = time.perf_counter() - t0
     unit = res.optimisation["objective"]["unit"]
-    v_nom = nominal.optimisation["objective"][f"value_{unit}"]
+    v_nom = nominal.optimisation["value"]
     record["cost"] = {f"nominal_objective_{unit}": v_nom,
                       f"robust_objective_{unit}": cand.objective,
                       "increase_percent": 100.0 * (cand.objective / v_nom - 1.0),

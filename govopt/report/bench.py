@@ -597,8 +597,7 @@ def optimiser_suite(quick: bool = False) -> list[Point]:
     req = dz.requirements(spec)
 
     def value(res):
-        v = res.optimisation["objective"]
-        return v.get("value", v.get(f"value_{v.get('unit', '')}"))
+        return res.optimisation["value"]
 
     best = value(dz.design(spec))
     points = []
