@@ -84,8 +84,8 @@ def test_gp_forms_are_the_rows():
 
 
 def test_screen_reads_the_rows():
-    """The design screen's spring test (optimize.catalogue_search.spring_checks) holds exactly where the
-    spring rows hold: narrowing requirements.spring_index moves both the same way."""
+    """The design screen's spring test (optimize.catalogue_search.spring_checks) holds exactly
+    where the spring rows hold: narrowing requirements.spring_index moves both the same way."""
     import numpy as np
 
     from govopt.optimize.catalogue_search import spring_checks
