@@ -160,6 +160,23 @@ def test_infeasible_stress(tmp_path):
     assert "Traceback" not in r.output
 
 
+def test_infeasible_error_carries_its_reason_as_data(tmp_path):
+    """The diagnosis is data, not text to read back: the spec, the conflict, each move that
+    alone makes a design exist; the one line the CLI prints is composed from them."""
+    from govopt.errors import InfeasibleError
+
+    text = open(SPEC).read().replace('"4000 kgf/cm^2"', '"400 kgf/cm^2"', 1)
+    path = tmp_path / "infeasible.toml"
+    path.write_text(text)
+    with pytest.raises(InfeasibleError) as caught:
+        dz.design(govopt.load_spec(path))
+    e = caught.value
+    assert e.file == str(path) and e.reason.startswith("infeasible: ")
+    assert e.moves and any(m.startswith("allowable_shear_stress ") for m in e.moves)
+    assert str(e) == f"{path}: {e.reason}; it becomes feasible if one of these moves: " \
+        + "; ".join(e.moves)
+
+
 def test_infeasible_irregularity_forces_k2_nonpositive(tmp_path):
     r = _infeasible(tmp_path, "irregularity = 0.12", "irregularity = 0.002")
     assert r.exit_code == 2, r.output

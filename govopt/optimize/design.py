@@ -94,12 +94,13 @@ def validated(spec: Spec) -> Spec:
     too_big = design_size_error(req, spec.analysis.points, spec.governor.spring_kind,
                                 spec.governor.mass_key)
     if too_big:  # counted from bounds and steps before any grid is built (govopt.limits)
-        raise InfeasibleError(f"{spec.path}: {too_big[0]}: {too_big[1]}")
+        raise InfeasibleError(too_big[1], file=spec.path, key=too_big[0])
     if spec.governor.spring is not None and spec.material is None:
-        raise InfeasibleError(f"{spec.path}: material: missing: a design chooses the spring, "
-                              "which needs its [material]")
+        raise InfeasibleError("missing: a design chooses the spring, which needs its [material]",
+                              file=spec.path, key="material")
     if spec.speed is None:
-        raise InfeasibleError(f"{spec.path}: speed: missing: a design needs the speed range")
+        raise InfeasibleError("missing: a design needs the speed range", file=spec.path,
+                              key="speed")
     return spec
 
 
@@ -127,13 +128,13 @@ def design(spec: Spec):
     check_grids(spec, req)
     grid, km, lo, hi, parts = statics_window(spec, req)
     if not np.any(lo <= hi):
-        raise InfeasibleError(diagnose(spec, req, "statics", parts))
+        raise diagnose(spec, req, "statics", parts)
     with limits.counting(work):
         cand, stats = best_discrete(spec, req, km, grid, lo, hi)
     stats = _with_work(stats, work)
     if cand is None:
         stage = "spring" if stats["spring_feasible"] == 0 else "dynamics"
-        raise InfeasibleError(diagnose(spec, req, stage, parts, stats))
+        raise diagnose(spec, req, stage, parts, stats)
     bound = continuous_bound(spec, req, km, lo, hi) \
         if req.objective in ("moving_mass", "spring_mass") and stats.pop("gp") else None
     return result_of(spec, req, cand, stats, bound, time.perf_counter() - start)
@@ -320,7 +321,7 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
         except limits.WorkLimit:
             stats["dynamics_checked"] = int(start)
             stats["dynamics_stopped_at_the_work_limit"] = True
-            raise InfeasibleError(dynamics_conflict(spec, req, stats)) from None
+            raise dynamics_conflict(spec, req, stats) from None
         if np.any(win["feasible"]):
             j = int(np.argmax(win["feasible"]))
             i = sel[j]
@@ -329,7 +330,7 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
                              float(m[i] + c[i]), float(win["settling"][j]),
                              float(win["f_lo"][j]), float(win["f_hi"][j]), float(c[i])), stats
     stats["dynamics_checked"] = int(rows.size)
-    raise InfeasibleError(dynamics_conflict(spec, req, stats))
+    raise dynamics_conflict(spec, req, stats)
 
 
 def dead_weight_candidates(spec: Spec, req: Requirements):
@@ -348,7 +349,7 @@ def dead_weight_candidates(spec: Spec, req: Requirements):
     stats = {"masses": int(m.size), "combinations": int(m.size),
              "statics_feasible": int(ok.sum()), "spring_feasible": int(ok.sum())}
     if not ok.any():
-        raise InfeasibleError(dead_weight_diagnosis(spec, req, ok_parts, rise, fall))
+        raise dead_weight_diagnosis(spec, req, ok_parts, rise, fall)
     zero = Affine(0.0 * w2, w2)
 
     km = KappaModel(spec, m[:, None], grid.alpha, zero, Affine(0.0 * k2, k2),

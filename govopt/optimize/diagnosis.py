@@ -13,6 +13,7 @@ import numpy as np
 from .. import limits
 from ..analysis import statics
 from ..analysis.over_regulation import OVER_TOL
+from ..errors import InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS
 from ..spec import Requirements, Spec, Speed
 from .catalogue_search import Candidate, best_discrete
@@ -46,13 +47,14 @@ def _bisect(feasible, lo: float = 1.0, hi: float = 100.0, iters: int = 12) -> fl
     return hi
 
 
-def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall) -> str:
+def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
+                          ) -> InfeasibleError:
     """Which requirement no ball and central-load weight meets, and the requirements that bind:
     each relaxed in turn (the k^2 margin, the band's ends, the weight bounds), with the value
     that makes the search feasible."""
     sp = spec.speed
     failing = [k for k, v in parts.items() if not v.any()]
-    head = (f"{spec.path}: infeasible: no {spec.governor.mass_key} and central-load weight in "
+    head = (f"infeasible: no {spec.governor.mass_key} and central-load weight in "
             f"the bounds meets " + (", ".join(f"'{k}'" for k in failing) if failing else
                                     "all the statics requirements together"))
     grid = Grid.build(spec)
@@ -108,11 +110,10 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
         ratio = np.sqrt(rise[:, -1] / fall[:, 0])
     best = float(np.nanmin(np.where(np.isfinite(ratio), ratio, np.nan))) \
         if np.isfinite(ratio).any() else math.inf
-    tail = ("; it becomes feasible if one of these moves: " + "; ".join(moves)) if moves else (
-        f"; no single requirement within a factor of 100 makes it feasible (the narrowest "
-        f"operating band the geometry and friction allow spans a speed ratio {best:.4g}, the "
-        f"spec's range {sp.omega_outer / sp.omega_inner:.4g})")
-    return head + tail
+    return InfeasibleError(head, file=spec.path, moves=moves, otherwise=(
+        f"{InfeasibleError.NO_MOVE} (the narrowest operating band the geometry and friction "
+        f"allow spans a speed ratio {best:.4g}, the spec's range "
+        f"{sp.omega_outer / sp.omega_inner:.4g})"))
 
 
 def central_move(spec: Spec, req: Requirements, feasible) -> str | None:
@@ -159,8 +160,9 @@ def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, it
     return _bisect(lambda x: _feasible(*make(x), stage), lo, hi, iters)
 
 
-def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> str:
-    """Which requirements conflict, and how far each would have to move (a relaxation)."""
+def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> InfeasibleError:
+    """Which requirements conflict, and how far each would have to move (a relaxation), as the
+    error to raise (its ``moves``: the relaxations)."""
     speed, mat = spec.speed, spec.material
     moves = []
 
@@ -201,21 +203,21 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
         others = [k for k in parts if k != lo_name]
         weight = f"{spec.governor.mass_key} weight"
         if not np.any(lo <= hi) or not others:  # the requirement alone: no stiffness meets it
-            head = (f"{spec.path}: infeasible: no spring stiffness meets the requirement "
+            head = (f"infeasible: no spring stiffness meets the requirement "
                     f"'{lo_name}' by itself at any {weight} in the bounds")
         else:  # never "X conflicts with X"
             hi_name = min(others, key=lambda k: np.median(parts[k][1]))
-            head = (f"{spec.path}: infeasible: the requirement '{lo_name}' needs a stiffer "
+            head = (f"infeasible: the requirement '{lo_name}' needs a stiffer "
                     f"spring than '{hi_name}' allows at every {weight} in the bounds")
         cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin),
                  (f"bounds.{spec.governor.mass_key}_weight", with_mass, "widen x", None)]
     elif stage == "spring" and stats["statics_feasible"] == 0:
-        head = (f"{spec.path}: infeasible: no catalogue spring's stiffness falls in the window "
+        head = (f"infeasible: no catalogue spring's stiffness falls in the window "
                 "the statics allow (the speed band, k^2 margins, free length) at any "
                 f"{spec.governor.mass_key} weight in the bounds")
         cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin)]
     elif stage == "spring":
-        head = (f"{spec.path}: infeasible: no spring in the catalogue and bounds meets the "
+        head = (f"infeasible: no spring in the catalogue and bounds meets the "
                 f"allowable shear stress (with index, envelope and surge limits) at a stiffness "
                 f"the statics allow ({stats['statics_feasible']} mass-spring combinations pass "
                 f"the statics, none the spring checks)")
@@ -239,13 +241,16 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> st
             moves.append(f"{name} {value:g} -> {value / x:.4g}")
         elif how == "widen x":
             moves.append(f"{name} widened x{x:.3g}")
-    tail = ("; it becomes feasible if one of these moves: " + "; ".join(moves)) if moves \
-        else "; no single requirement within a factor of 100 makes it feasible"
-    return head + tail
+    return InfeasibleError(head, file=spec.path, moves=moves)
 
 
-def dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
+def dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> InfeasibleError:
     """Name the dynamic requirement that no admissible dash-pot meets, and how far it is."""
+    return InfeasibleError(_dynamics_reason(spec, req, stats), file=spec.path)
+
+
+def _dynamics_reason(spec: Spec, req: Requirements, stats: dict) -> str:
+    """:func:`dynamics_conflict`'s reason, in words."""
     least = stats.get("least", {})
     where = (f"({stats.get('spring_feasible', 'all')} candidates pass the statics "
              f"and spring checks; {stats['dynamics_checked']} checked best first"
@@ -257,7 +262,7 @@ def dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
             ("requirements.max_vibration", req.max_vibration is not None),
             ("the spring's fatigue safety (requirements.min_fatigue_safety)",
              spec.material is not None and spec.material.grade is not None)) if on)
-        return (f"{spec.path}: infeasible: with no [[load_change]] no dash-pot is designed, and "
+        return (f"infeasible: with no [[load_change]] no dash-pot is designed, and "
                 f"undamped, the forced vibration breaks {broken or 'the requirements'} on every "
                 f"candidate {where}; add the load change (a dash-pot) or relax them")
     over = least.get("over_regulation", np.inf)
@@ -265,12 +270,12 @@ def dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
         text = ("no admissible damping" if not np.isfinite(over) else
                 f"the least over-regulation at any admissible damping is "
                 f"{100 * over:.3g} % of the load change (scaled by the slowest mode's decay)")
-        return (f"{spec.path}: infeasible: Hamabe's eq. (32) with margin {req.hurwitz_margin:g} "
+        return (f"infeasible: Hamabe's eq. (32) with margin {req.hurwitz_margin:g} "
                 f"conflicts with 'no over-regulation' for the load changes: {text} {where}; "
                 f"lower requirements.hurwitz_margin or the load change")
     settle = least.get("settling_time", np.inf)
     if req.max_settling_time is not None and settle > req.max_settling_time:
-        return (f"{spec.path}: infeasible: requirements.max_settling_time "
+        return (f"infeasible: requirements.max_settling_time "
                 f"{req.max_settling_time:g} s conflicts with 'no over-regulation' and eq. (32): "
                 + (f"the fastest admissible settling is {settle:.4g} s {where}"
                    if np.isfinite(settle) else
@@ -279,17 +284,17 @@ def dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> str:
                    f"change's modes are too far apart, as with a very large flywheel) {where}"))
     vib = least.get("vibration", np.inf)
     if req.max_vibration is not None and vib > req.max_vibration:
-        return (f"{spec.path}: infeasible: requirements.max_vibration "
+        return (f"infeasible: requirements.max_vibration "
                 f"{np.degrees(req.max_vibration):.4g} deg conflicts with the load-change "
                 f"requirements: the least peak-to-peak bound at an admissible damping is "
                 f"{np.degrees(vib):.4g} deg {where}")
     if stats.get("lattice_feasible", 0) and spec.material is not None \
             and spec.material.grade is not None:  # the lattice screens all but the spring's life
-        return (f"{spec.path}: infeasible: requirements.min_fatigue_safety "
+        return (f"infeasible: requirements.min_fatigue_safety "
                 f"{req.min_fatigue_safety or 1.0:g}: no candidate's spring reaches it under the "
                 f"vibration at a damping the load changes admit ({stats['lattice_feasible']} "
                 f"mass x stiffness cells meet the load-change requirements alone) {where}")
-    return (f"{spec.path}: infeasible: the dynamic requirements are met only together on no "
+    return (f"infeasible: the dynamic requirements are met only together on no "
             f"candidate {where}")
 
 

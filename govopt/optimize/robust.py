@@ -380,7 +380,7 @@ def spring_batches(spec: Spec, req: Requirements):
     dz.check_grids(spec, req)
     grid, km, lo, hi, parts = dz.statics_window(spec, req)
     if not np.any(lo <= hi):
-        raise InfeasibleError(dz.diagnose(spec, req, "statics", parts))
+        raise dz.diagnose(spec, req, "statics", parts)
     cat = dz.catalogue(spec, req)
     rows, cols, l0, _ = dz.spring_screen(spec, req, km, lo, hi, cat)
     values = dz.objective_values(req, km.m[rows, 0], cat.mass[cols],
