@@ -101,7 +101,7 @@ FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "
 #: their values when not given: far outside any spring (the constraint never binds); ``L2``
 #: (an installed length at ``F_max``) tiny and ``clear`` 1 (the least free length); the solid
 #: length with the nominal wire (``d_tol``, the wire's tolerance, tiny); the helix's pitch that
-#: of the least free length (:meth:`SpringGP._pitch`)
+#: of the least free length (the GP's pitch constraint)
 _FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12, "L2": 1e-12, "clear": 1.0, "L2_solid": 1e-12,
                          "clear_solid": 1.0, "pitch_on": 1e-12, "d_tol": 1e-12,
                          "pitch_clear": 1.0, "pitch_L2": 1e-12, "pitch_F": 1.0}
