@@ -164,13 +164,12 @@ def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound
     res.kind = "design"
     searched = search_bounds(spec, req, cand)
     damping = gov.key_unit("damping")
-    sens = sensitivities(spec, req, None if bound is None else bound["objective"])
     record = Record(
         status="optimal", objective=Objective(req.objective, objective_unit(req, gov)),
         value=cand.objective, bound=math.nan if bound is None else bound["objective"],
         active=[f"{b['name']} at its {b['at']} search bound" for b in searched
                 if b["at"] in ("lower", "upper")],
-        sensitivities={s["requirement"]: s["objective_change_percent"] for s in sens},
+        sensitivities=sensitivities(spec, req, None if bound is None else bound["objective"]),
         sensitivities_of=("the continuous bound (the spring GP at each mass), re-solved with "
                           "each limit +1 % (a finite difference)"),
         method=("exhaustive enumeration of the " + ("catalogue's masses and springs, best first"

@@ -130,11 +130,13 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
 
 
 
-def sensitivities(spec: Spec, req: Requirements, base: float | None) -> list[dict]:
+def sensitivities(spec: Spec, req: Requirements, base: float | None) -> dict[str, float]:
     """Finite-difference sensitivity of the continuous bound ``base`` to each requirement
-    (+1 %): each perturbed bound re-solved exactly by :func:`continuous_bound`, which solves
-    the shared GP only at the masses whose lower bound can beat the best (one or two)."""
-    out = []
+    (+1 %), as the record states them (:data:`govopt.optimize.record.SENSITIVITY_CONVENTION`:
+    requirement -> per cent change of the bound): each perturbed bound re-solved exactly by
+    :func:`continuous_bound`, which solves the shared GP only at the masses whose lower bound
+    can beat the best (one or two)."""
+    out = {}
     speed, mat = spec.speed, spec.material
 
     def bound_of(s, r):
@@ -158,8 +160,5 @@ def sensitivities(spec: Spec, req: Requirements, base: float | None) -> list[dic
         b = bound_of(s, r)
         if b is None:
             continue
-        pct = 100.0 * (b / base - 1.0)
-        out.append({"requirement": name, "change_percent": 1.0,
-                    "objective_change_percent": pct,
-                    "text": f"+1 % on {name} -> {pct:+.2f} % {req.objective.replace('_', ' ')}"})
+        out[name] = 100.0 * (b / base - 1.0)
     return out
