@@ -244,7 +244,7 @@ def count_error(value: float, limit: int, what: str) -> str | None:
 
 def steps(lo: float, hi: float, step: float) -> float:
     """How many points of the grid ``k * step`` lie in ``[lo, hi]``, counted without building
-    it (as :func:`govopt.optimize.design._steps` builds it; ``inf`` when not finite).
+    it (as :func:`govopt.optimize.windows.grid_steps` builds it; ``inf`` when not finite).
 
     >>> steps(4.0, 16.0, 0.25), steps(0.0, 0.0, 0.25), steps(1.0, 1e9, 1e-9)
     (49, 1, 999999999000000001)

@@ -145,7 +145,7 @@ class Result:
             gap = opt.get("gap")
             out.append(Figure(
                 f"objective: {str(obj.get('name', '')).replace('_', ' ')}",
-                obj.get(f"value_{unit}") if unit else obj.get("value"), unit, "design",
+                opt.get("value"), unit, "design",
                 note=f"status {opt.get('status')}" + (
                     "" if gap is None else f"; {100 * gap:.3g} % above the continuous bound")))
         if spec.speed is not None:
@@ -387,5 +387,6 @@ class Result:
                                   "force_inner_N": found["force_inner"],
                                   "force_outer_N": found["force_outer"]}
         out.update(self.dynamics)
-        out.update(self.optimisation)
+        if self.optimisation:  # the optimiser's record (govopt.optimize.record), as spring's
+            out["optimisation"] = self.optimisation
         return jsonable(out)

@@ -455,7 +455,7 @@ def test_design_o_writes_the_design_as_drawn_and_that_design_passes(tmp_path):
     for key in ("free_half_length", "coil_radius", "dashpot_f"):
         number = table[key].split()[0]
         assert len(re.sub(r"[-.]", "", number).strip("0")) <= 4, table[key]
-    assert any("rounded to 4 significant digits" in n for n in designed["notes"])
+    assert any("rounded to 4 significant digits" in n for n in designed["optimisation"]["notes"])
     evaluated = invoke(["evaluate", "d.toml", "--json"], cwd=tmp_path)
     assert evaluated.exit_code == 0, evaluated.stderr
     ev = json.loads(evaluated.stdout)

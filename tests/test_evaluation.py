@@ -84,11 +84,11 @@ def test_gp_forms_are_the_rows():
 
 
 def test_screen_reads_the_rows():
-    """The design screen's spring test (optimize.design.spring_checks) holds exactly where the
-    spring rows hold: narrowing requirements.spring_index moves both the same way."""
+    """The design screen's spring test (optimize.catalogue_search.spring_checks) holds exactly
+    where the spring rows hold: narrowing requirements.spring_index moves both the same way."""
     import numpy as np
 
-    from govopt.optimize.design import spring_checks
+    from govopt.optimize.catalogue_search import spring_checks
     from govopt.requirements import SpringFigures, holds, requirement_rows
 
     spec = govopt.load_spec(SPECS / "hamabe-design.toml")

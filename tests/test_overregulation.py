@@ -26,6 +26,8 @@ from govopt.analysis.over_regulation import OVER_TOL, over_regulates
 from govopt.analysis.transient_cubic import cubic_roots, hamabe_initial_conditions
 from govopt.analysis.transient_events import analyse_many
 from govopt.optimize import design as dz
+from govopt.optimize import windows as wz
+from govopt.optimize.kappa import KappaModel
 from govopt.report import excel
 
 PAPER = {"geometry": "series", "reaction_speed": "mean", "reaction_slope": False}
@@ -183,9 +185,9 @@ def test_evaluate_design_and_excel_agree(tmp_path):
     spec = paper_spec("a")
     sd = statics.spring_design(spec)
     req = dataclasses.replace(dz.requirements(spec), hurwitz_margin=0.0)
-    grid = dz.Grid.build(spec)
-    km = dz.KappaModel.build(spec, [sd.m], grid.alpha)
-    a0, a2, a3, _ = dz.load_change_problem(spec, km, grid, np.array([0]), np.array([sd.kappa]))
+    grid = wz.Grid.build(spec)
+    km = KappaModel.build(spec, [sd.m], grid.alpha)
+    a0, a2, a3, _ = wz.load_change_problem(spec, km, grid, np.array([0]), np.array([sd.kappa]))
     f_min = float(a0[0, 0] * a3[0, 0] / (3 * a2[0, 0]))
     for f, passes in ((0.66, False), (1.0, True)):
         res = govopt.evaluate(spec, dataclasses.replace(spec.design, dashpot=f))
@@ -193,7 +195,7 @@ def test_evaluate_design_and_excel_agree(tmp_path):
         assert check.passed is passes
         if not passes:
             assert check.margin >= -1e-9  # the margin alone would have passed it
-        win = dz.dashpot_window(spec, req, km, grid, np.array([0]), np.array([sd.kappa]),
+        win = wz.dashpot_window(spec, req, km, grid, np.array([0]), np.array([sd.kappa]),
                                 factors=np.array([f / f_min]))
         assert bool(win["feasible"][0]) is passes
         wb = openpyxl.load_workbook(excel.write_workbook(res, tmp_path / f"{f}.xlsx"))
@@ -283,7 +285,7 @@ def test_decisions_against_mpmath_on_random_designs():
 
 
 def test_over_regulates_rule():
-    assert OVER_TOL == 1e-9 and dz.OVER_TOL == OVER_TOL
+    assert OVER_TOL == 1e-9 and wz.OVER_TOL == OVER_TOL
     xi0 = np.array([-0.128, -0.128, -0.128, 0.0, 0.0, -0.128])
     edge = OVER_TOL * 0.128
     d = np.array([0.0, edge, np.nextafter(edge, 1), 0.0, 1e-300, np.nan])

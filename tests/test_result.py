@@ -200,7 +200,7 @@ def test_optimiser_records_are_declared(name):
     units = sections.recorded_units(res)
     opt = res.optimisation
     keys = [k for k, v in opt["design"].items() if v is not None]
-    keys += [k for k in opt["continuous_bound"] or {} if not k.startswith("objective_")]
+    keys += list(opt["bound_design"] or {})
     assert keys and not [k for k in keys if k not in units]
     rows = {r[0]: r for t in sections.optimisation(res) for r in t.rows
             if t.title == "Chosen design"}

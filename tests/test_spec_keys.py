@@ -118,7 +118,7 @@ def test_template_is_complete_and_designs_as_written(tmp_path, gtype):
     assert data == example  # the values: the bundled design example's, nothing else set
     run = invoke(["design", str(path), "--json"], cwd=tmp_path)
     assert run.exit_code == 0, run.output
-    assert json.loads(run.stdout)["status"] == "optimal"
+    assert json.loads(run.stdout)["optimisation"]["status"] == "optimal"
 
 
 def test_init_needs_one_of_name_or_type(tmp_path):

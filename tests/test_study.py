@@ -322,7 +322,7 @@ def test_dask_and_process_pool_give_the_same_table(tmp_path):
     from govopt import design
 
     res = design(load_spec(spec))  # point 1 is the spec's own 190-224 rpm
-    value = res.optimisation["objective"]["value_kg"]
+    value = res.optimisation["value"]
     assert ta["objective_value"][1] == value
     assert ta["moving_mass"][1] == pytest.approx(value, rel=1e-12)
     with Store(tmp_path / "pool.db", create=False) as store:

@@ -7,7 +7,11 @@ the sensitivity of the objective to each limit, the solver and the time it took.
 designer (an exact GP, or a catalogue of wires and coil counts enumerated against the GP's
 bound), the literature's spring problems (Belegundu's GP, Sandgren's enumeration) write one;
 ``govopt spring check`` optimises nothing and writes none (its JSON's ``optimisation`` is
-``null``). Every record renders to the same JSON keys (:meth:`Record.to_dict`), in SI.
+``null``); the governor's design (:mod:`govopt.optimize.design`, a robust one too) writes one
+with its own sections (:attr:`Record.sections`: the chosen design, the bound's design, the
+bounds searched, a robust design's box). Every record renders to the same JSON keys
+(:meth:`Record.to_dict`, then its sections), in SI; the text, the JSON and the workbook read
+it.
 
 Conventions (stated once, here, and in the JSON's ``sensitivity_convention``):
 
@@ -26,7 +30,8 @@ Conventions (stated once, here, and in the JSON's ``sensitivity_convention``):
   costs (a lower limit that binds); zero: the constraint does not bind. An objective that is
   maximised reports the elasticity of the maximised quantity. Where the answer is discrete
   (enumerated), the sensitivities are those of the continuous relaxation that gives the bound,
-  and ``sensitivities_of`` says so.
+  and ``sensitivities_of`` says so; where they are not the solver's duals but a +1 % finite
+  difference of the bound re-solved (the governor's design), ``sensitivities_of`` says that.
 
 >>> r = Record(status="optimal", objective=Objective("mass", "kg"), value=0.151, bound=0.151,
 ...            active=["stiffness", "allowable stress"],
@@ -49,9 +54,10 @@ __all__ = ["CERTIFIED_GAP", "KEYS", "SENSITIVITY_CONVENTION", "Objective", "Reco
 CERTIFIED_GAP = 1e-6
 
 SENSITIVITY_CONVENTION = (
-    "dual-based elasticity d ln(objective) / d ln(limit): per cent change of the objective per "
-    "+1 % on the constraint's limit (negative: raising the limit lowers the objective; zero: "
-    "the constraint does not bind)")
+    "elasticity d ln(objective) / d ln(limit): per cent change of the objective per +1 % on the "
+    "constraint's limit (negative: raising the limit lowers the objective; zero: the constraint "
+    "does not bind); a dual-based elasticity from the solver's Lagrange multipliers, or a +1 % "
+    "finite difference where sensitivities_of says so")
 
 #: the JSON keys of every record (:meth:`Record.to_dict`)
 KEYS = ("status", "objective", "value", "bound", "bound_kind", "gap", "certified", "claim",
@@ -94,6 +100,13 @@ class Record:
     #: counts of the search (pairs examined, wires pruned, ...)
     search: dict[str, int] = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
+    #: what one optimiser adds, each under its own JSON key after :data:`KEYS` (the governor's
+    #: chosen ``design``, the ``bound_design``, the ``search_bounds``, a ``robust`` box)
+    sections: dict[str, object] = field(default_factory=dict)
+
+    def __post_init__(self):
+        if clash := set(self.sections) & set(KEYS):
+            raise ValueError(f"a record's sections may not reuse its keys: {sorted(clash)}")
 
     @property
     def ok(self) -> bool:
@@ -128,7 +141,8 @@ class Record:
         return "no certified bound (the relaxation was not solved to optimality)"
 
     def to_dict(self) -> dict:
-        """The record as JSON (:data:`KEYS`; SI in ``objective.unit``, nan as None)."""
+        """The record as JSON (:data:`KEYS`, then :attr:`sections`; SI in ``objective.unit``,
+        nan as None)."""
         def num(x):
             return float(x) if isinstance(x, int | float) and math.isfinite(x) else None
 
@@ -151,4 +165,5 @@ class Record:
             "solve_time_s": num(self.solve_time_s),
             "search": dict(self.search),
             "notes": list(self.notes),
+            **self.sections,
         }

@@ -380,7 +380,7 @@ def spring_batches(spec: Spec, req: Requirements):
     dz.check_grids(spec, req)
     grid, km, lo, hi, parts = dz.statics_window(spec, req)
     if not np.any(lo <= hi):
-        raise InfeasibleError(dz.diagnose(spec, req, "statics", parts))
+        raise dz.diagnose(spec, req, "statics", parts)
     cat = dz.catalogue(spec, req)
     rows, cols, l0, _ = dz.spring_screen(spec, req, km, lo, hi, cat)
     values = dz.objective_values(req, km.m[rows, 0], cat.mass[cols],
@@ -585,7 +585,7 @@ def robust_design(spec: Spec):
                                      record["monte_carlo"]["note"]]
     t_robust = time.perf_counter() - t0
     unit = res.optimisation["objective"]["unit"]
-    v_nom = nominal.optimisation["objective"][f"value_{unit}"]
+    v_nom = nominal.optimisation["value"]
     record["cost"] = {f"nominal_objective_{unit}": v_nom,
                       f"robust_objective_{unit}": cand.objective,
                       "increase_percent": 100.0 * (cand.objective / v_nom - 1.0),

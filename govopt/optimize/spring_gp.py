@@ -39,7 +39,7 @@ the literature's volume ``(n + Q) 2 r d^2``, the solid length ``(n + Q) d``,
 ``"stress"`` (least corrected stress at ``F_max``), ``"outer diameter"`` and ``"body length"``.
 
 The problem is built once with cvxpy ``Parameter(pos=True)`` for every number (it is DPP), so a
-re-solve with new values skips the compilation. See :func:`benchmark_resolve`.
+re-solve with new values skips the compilation (measured by ``benchmarks/bench_spring_gp.py``).
 
 Main entry points: :class:`SpringGP` (``solve``, ``diagnose``, ``best_discrete``),
 :func:`size_helical_spring`, :func:`best_discrete`, :func:`check_design`.
@@ -78,7 +78,6 @@ __all__ = [
     "Diagnosis",
     "SpringGP",
     "SpringSolution",
-    "benchmark_resolve",
     "best_discrete",
     "check_design",
     "size_helical_spring",
@@ -102,7 +101,7 @@ FREE_LENGTH_KEYS = ("L0_over_D_max", "solid_coils", "k_solid", "s_over_D_max", "
 #: their values when not given: far outside any spring (the constraint never binds); ``L2``
 #: (an installed length at ``F_max``) tiny and ``clear`` 1 (the least free length); the solid
 #: length with the nominal wire (``d_tol``, the wire's tolerance, tiny); the helix's pitch that
-#: of the least free length (:meth:`SpringGP._pitch`)
+#: of the least free length (the GP's pitch constraint)
 _FREE_LENGTH_DEFAULTS = {"Di_min": 1e-12, "L2": 1e-12, "clear": 1.0, "L2_solid": 1e-12,
                          "clear_solid": 1.0, "pitch_on": 1e-12, "d_tol": 1e-12,
                          "pitch_clear": 1.0, "pitch_L2": 1e-12, "pitch_F": 1.0}
@@ -1096,45 +1095,3 @@ def size_helical_spring(F_max: float | None = None, stiffness: float | None = No
                    **bounds)
     sol.extras = extras
     return sol
-
-
-# ----------------------------------------------------------------------------------------------
-# Re-solve benchmark
-# ----------------------------------------------------------------------------------------------
-
-#: Hamabe case a in SI (kgf/cm units converted with 1 kgf = 9.80665 N), spring steel density.
-_EXAMPLE = {
-    "kappa": 59.7 * 9.80665 * 100.0,
-    "F_max": 606.0 * 9.80665,
-    "k_s": 4000.0 * 9.80665e4,
-    "G": 850000.0 * 9.80665e4,
-    "density": 7850.0,
-    "r_max": 0.08,
-    "D_out_max": 0.2,
-    "n_min": 3.0,
-}
-
-
-def benchmark_resolve(n: int = 50, **values) -> dict[str, float]:
-    """Mean wall time of a DPP re-solve vs building and solving a fresh problem.
-
-    Both loops solve the same ``n`` specifications (``k_s`` swept over +-20 %); ``values``
-    override the built-in example (Hamabe case a in SI with Wahl's factor). Returns
-    ``resolve_s``, ``build_s`` (per solve), ``first_solve_s`` (compile + solve), ``ratio``
-    (``build_s / resolve_s``) and ``max_rel_diff`` between the two sets of optima.
-    """
-    base = {**_EXAMPLE, **values}
-    specs = [{**base, "k_s": base["k_s"] * (0.8 + 0.4 * i / max(n - 1, 1))} for i in range(n)]
-    t0 = time.perf_counter()
-    gp = SpringGP()
-    gp.solve(**base)
-    first = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    re = [gp.solve(**s).objective for s in specs]
-    resolve = (time.perf_counter() - t0) / n
-    t0 = time.perf_counter()
-    fresh = [SpringGP().solve(**s).objective for s in specs]
-    build = (time.perf_counter() - t0) / n
-    diff = max(abs(a / b - 1.0) for a, b in zip(re, fresh, strict=True))
-    return {"n": n, "resolve_s": resolve, "build_s": build, "first_solve_s": first,
-            "ratio": build / resolve, "max_rel_diff": diff}

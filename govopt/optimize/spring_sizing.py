@@ -216,7 +216,7 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     """Size a spring (SI): see the module docstring. ``bounds``: the GP's optional limits
     (``n_min``, ``n_max``, ``C_min``, ``C_max``, ``D_out_max``, ``L_body_max``,
     ``f_surge_min``, ``d_min`` ...); with a grade the index defaults to EN 13906-1's 4..20.
-    The space it is built into (GP constraints, :meth:`SpringGP._envelope`): ``Di_min`` (the
+    The space it is built into (the GP's envelope constraints): ``Di_min`` (the
     inside diameter over a rod), and for a compression spring ``L0_max`` (its least free
     length: coils clear at ``F_max``) and ``Lc_max`` (its solid length). With
     ``stiffness_max`` the stiffness may lie anywhere in ``stiffness .. stiffness_max`` (the GP's
@@ -253,7 +253,7 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
     envelope = kind if space else None
     if kind == "compression":
         space["solid_coils"] = hx.end_coils(ends) + hx.END_FORMS[ends].extra
-    else:  # coils touching: the helix's pitch d (SpringGP._pitch)
+    else:  # coils touching: the helix's pitch d (the GP's pitch constraint)
         space.update(pitch_clear=1e-12, pitch_F=1e-12)
     relaxed = dict(space)  # the relaxation gives the bound; with L2 the design's GP restricts
     if L2 is not None:

@@ -597,8 +597,7 @@ def optimiser_suite(quick: bool = False) -> list[Point]:
     req = dz.requirements(spec)
 
     def value(res):
-        v = res.optimisation["objective"]
-        return v.get("value", v.get(f"value_{v.get('unit', '')}"))
+        return res.optimisation["value"]
 
     best = value(dz.design(spec))
     points = []
@@ -1053,13 +1052,6 @@ def design_bench(spec_path: str | Path) -> dict:
             "statics_and_spring_screen_s": screen, "combinations": stats["combinations"],
             "screen_per_combination_s": screen / stats["combinations"],
             "screen_vs_evaluate_per_design": one_eval / (screen / stats["combinations"])}
-
-
-def gp_bench(n: int = 30) -> dict:
-    """Re-solving the parameterised spring GP vs building it afresh (same n problems)."""
-    from ..optimize.spring_gp import benchmark_resolve
-
-    return benchmark_resolve(n=n)
 
 
 def _benchmark_module(name: str):

@@ -451,14 +451,12 @@ def optimisation(res) -> list[Table]:
         return []
     obj = opt.get("objective") or {}
     unit = obj.get("unit", "")
-    value = obj.get(f"value_{unit}") if unit else obj.get("value")
-    bound = opt.get("continuous_bound") or {}
-    v, u = shown(value, unit)
+    v, u = shown(opt.get("value"), unit)
     rows = [["status", "", cell(opt.get("status"))],
             [f"objective: {str(obj.get('name', '')).replace('_', ' ')}", u, cell(v)]]
-    if bound:
+    if opt.get("bound") is not None:
         rows.append(["continuous bound (GP relaxation)", u,
-                     cell(shown(bound.get(f"objective_{unit}"), unit)[0])])
+                     cell(shown(opt["bound"], unit)[0])])
     if opt.get("gap") is not None:
         rows.append(["gap to the bound", "%", cell(100.0 * opt["gap"])])
     rows += [[_SEARCH.get(k, k.replace("_", " ")), "", cell(n)]
@@ -468,17 +466,16 @@ def optimisation(res) -> list[Table]:
     if opt.get("design"):
         out.append(Table("Chosen design", ["quantity", "unit", "value"],
                          _quantities(res, opt["design"]), properties=True))
-    if bound:
+    if opt.get("bound_design"):
         out.append(Table("Continuous bound's design (not buildable: a lower bound)",
                          ["quantity", "unit", "value"],
-                         _quantities(res, bound, skip=(f"objective_{unit}",)), properties=True))
+                         _quantities(res, opt["bound_design"]), properties=True))
     out += robustness(res, opt.get("robust"))
-    sens = [s for s in opt.get("sensitivities") or [] if isinstance(s, Mapping)]
+    sens = opt.get("sensitivities") or {}  # elasticities: % of the objective per +1 %
     if sens:
         out.append(Table("Sensitivities: +1 % on a requirement",
                          ["requirement", "change (%)", "objective change (%)"],
-                         [[s.get("requirement"), cell(s.get("change_percent")),
-                           cell(s.get("objective_change_percent"))] for s in sens]))
+                         [[name, cell(1.0), cell(e)] for name, e in sens.items()]))
     return out
 
 

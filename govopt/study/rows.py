@@ -434,8 +434,7 @@ class _Runner:
             row = result_row(res)
             opt = res.optimisation["objective"]
             row["objective"] = opt["name"]
-            row["objective_value"] = float(next(v for k, v in opt.items()
-                                                if k.startswith("value")))
+            row["objective_value"] = float(res.optimisation["value"])
             row["status"] = res.optimisation["status"]
             if row["status"] == "optimal":
                 row["message"] = ""

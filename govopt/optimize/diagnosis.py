@@ -1,0 +1,319 @@
+"""Why a design search found nothing: which requirements or bounds conflict, and how far each
+would have to move (bisection on a relaxed copy of the spec) for a design to exist; and why a
+chosen design failed its closing evaluation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import fields, replace
+
+import numpy as np
+
+from .. import limits
+from ..analysis import statics
+from ..analysis.over_regulation import OVER_TOL
+from ..errors import InfeasibleError
+from ..limits import MAX_TRANSIENT_POINTS
+from ..spec import Requirements, Spec, Speed
+from .catalogue_search import Candidate, best_discrete
+from .windows import (
+    Grid,
+    dead_weight_arrays,
+    dead_weight_parts,
+    masses,
+    statics_feasible,
+    statics_window,
+)
+
+#: weight pairs per block of the infeasibility diagnosis's wider searches
+_DIAGNOSIS_BLOCK = 4096
+
+
+def _same_terms(a, b) -> bool:
+    """Whether two :class:`govopt.governors.base.Terms` hold the same numbers (NaN never
+    equal: such terms are computed again)."""
+    return all(np.array_equal(getattr(a, f.name), getattr(b, f.name)) for f in fields(a))
+
+
+def _bisect(feasible, lo: float = 1.0, hi: float = 100.0, iters: int = 12) -> float | None:
+    """Smallest factor ``x`` in ``[lo, hi]`` with ``feasible(x)``, by bisection in log space;
+    None if even ``hi`` is not enough."""
+    if not feasible(hi):
+        return None
+    for _ in range(iters):
+        mid = math.sqrt(lo * hi)
+        lo, hi = (lo, mid) if feasible(mid) else (mid, hi)
+    return hi
+
+
+def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
+                          ) -> InfeasibleError:
+    """Which requirement no ball and central-load weight meets, and the requirements that bind:
+    each relaxed in turn (the k^2 margin, the band's ends, the weight bounds), with the value
+    that makes the search feasible."""
+    sp = spec.speed
+    failing = [k for k, v in parts.items() if not v.any()]
+    head = (f"infeasible: no {spec.governor.mass_key} and central-load weight in "
+            f"the bounds meets " + (", ".join(f"'{k}'" for k in failing) if failing else
+                                    "all the statics requirements together"))
+    grid = Grid.build(spec)
+    # the bisections below move a margin or the band, which leave the weights' generalised
+    # forces as they are (the band moves the mean speed, which a governor's forces may use):
+    # the spec's own weights' arrays are computed again only where the forces differ. Wider
+    # weight bounds are taken a block of weights at a time (each row is its own weight pair),
+    # up to the first feasible one.
+    own = masses(req)
+    memo: dict = {}
+
+    def feasible(s, r):
+        m, c = masses(r)
+        keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1])
+        for lo in range(0, m.size, _DIAGNOSIS_BLOCK):
+            mb, cb = m[lo:lo + _DIAGNOSIS_BLOCK], c[lo:lo + _DIAGNOSIS_BLOCK]
+            t = statics.terms(s, grid.alpha, mb[:, None], cb[:, None])
+            hit = memo.get(lo) if keep else None
+            if hit is None or not _same_terms(hit[0], t):
+                hit = t, dead_weight_arrays(s, grid, mb, cb, t)[1:4]
+                if keep:
+                    memo[lo] = hit
+            if np.logical_and.reduce(list(dead_weight_parts(s, r, *hit[1]).values())).any():
+                return True
+        return False
+
+    def band(inner, outer):
+        return replace(spec, speed=Speed((inner + outer) / 2.0, 2.0 * (outer - inner)
+                                         / (outer + inner), band=sp.band))
+
+    rpm = 30.0 / math.pi
+    moves = []
+    central = central_move(spec, req, lambda r: feasible(spec, r))
+    if central:
+        moves.append(central)
+    x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=req.k2_margin / x)))
+    if x is not None and req.k2_margin:
+        moves.append(f"requirements.k2_margin {req.k2_margin:g} -> {req.k2_margin / x:.4g}")
+    x = _bisect(lambda x: feasible(band(sp.omega_inner / x, sp.omega_outer), req))
+    if x is not None:
+        moves.append(f"speed.inner {sp.omega_inner * rpm:.5g} rpm -> "
+                     f"{sp.omega_inner / x * rpm:.5g} rpm")
+    x = _bisect(lambda x: feasible(band(sp.omega_inner, sp.omega_outer * x), req))
+    if x is not None:
+        moves.append(f"speed.outer {sp.omega_outer * rpm:.5g} rpm -> "
+                     f"{sp.omega_outer * x * rpm:.5g} rpm")
+    x = _bisect(lambda x: feasible(spec, replace(
+        req, flying_mass=(req.flying_mass[0] / x, req.flying_mass[1] * x),
+        central_mass=(req.central_mass[0] / x, req.central_mass[1] * x))), hi=4.0)
+    if x is not None:
+        moves.append(f"the weight bounds widened x{x:.3g}")
+    with np.errstate(invalid="ignore"):
+        ratio = np.sqrt(rise[:, -1] / fall[:, 0])
+    best = float(np.nanmin(np.where(np.isfinite(ratio), ratio, np.nan))) \
+        if np.isfinite(ratio).any() else math.inf
+    return InfeasibleError(head, file=spec.path, moves=moves, otherwise=(
+        f"{InfeasibleError.NO_MOVE} (the narrowest operating band the geometry and friction "
+        f"allow spans a speed ratio {best:.4g}, the spec's range "
+        f"{sp.omega_outer / sp.omega_inner:.4g})"))
+
+
+def central_move(spec: Spec, req: Requirements, feasible) -> str | None:
+    """The central load's upper search bound that makes ``feasible(requirements)`` hold, as
+    a diagnosis's move (``bounds.central_weight 0 .. 0 kg (the default: no central load) -> 0
+    .. 21.6 kg``), or None: where the type has a central load and no central load up to 100
+    times the flying mass's upper bound does it. The bound is raised from the spec's (from a
+    hundredth of the flying mass's upper bound where it is 0) by bisection in log space."""
+    gov = spec.governor
+    if not gov.central_load:
+        return None
+    lo, hi = req.central_mass
+    top = 100.0 * max(req.flying_mass[1], hi)
+    base = hi if hi > 0 else req.flying_mass[1] / 100.0
+
+    def widened(x):
+        return replace(req, central_mass=(lo, base * x))
+
+    x = _bisect(lambda x: feasible(widened(x)), lo=1.0, hi=top / base, iters=16)
+    if x is None or (hi > 0 and x == 1.0):
+        return None
+    given = "central_weight" if "central_mass" not in ((spec.data or {}).get("bounds") or {}) \
+        else "central_mass"
+    default = "" if hi > 0 else " (the default: no central load)"
+    return (f"bounds.{given} {lo:.4g} .. {hi:.4g} kg{default} -> {lo:.4g} .. "
+            f"{base * x:.4g} kg")
+
+
+
+def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
+    if stage == "statics":
+        return statics_feasible(spec, req)
+    grid, km, lo, hi, _ = statics_window(spec, req)
+    if not np.any(lo <= hi):
+        return False
+    cand, stats = best_discrete(spec, req, km, grid, lo, hi, dynamics=stage == "dynamics",
+                                max_checked=512)
+    return stats["spring_feasible"] > 0 if stage == "spring" else cand is not None
+
+
+def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, iters=12):
+    """Smallest factor ``x`` in ``[lo, hi]`` with ``make(x) = (spec, req)`` feasible, by
+    bisection in log space; None if even ``hi`` is not enough."""
+    return _bisect(lambda x: _feasible(*make(x), stage), lo, hi, iters)
+
+
+def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> InfeasibleError:
+    """Which requirements conflict, and how far each would have to move (a relaxation), as the
+    error to raise (its ``moves``: the relaxations)."""
+    speed, mat = spec.speed, spec.material
+    moves = []
+
+    def with_irr(x):
+        return replace(spec, speed=replace(speed, irregularity=speed.irregularity * x)), req
+
+    def with_ks(x):
+        return replace(spec, material=replace(mat, allowable_shear_stress=mat
+                                              .allowable_shear_stress * x)), req
+
+    def with_k2(x):
+        return spec, replace(req, k2_margin=req.k2_margin / x)
+
+    def with_hurwitz(x):
+        return spec, replace(req, hurwitz_margin=req.hurwitz_margin / x)
+
+    def with_mass(x):
+        return spec, replace(req, flying_mass=(req.flying_mass[0] / x,
+                                                 req.flying_mass[1] * x))
+
+    def with_band(inner, outer):  # a band stated [speed] inner/outer, re-derived as the parser
+        return replace(spec, speed=Speed((inner + outer) / 2.0, 2.0 * (outer - inner)
+                                         / (outer + inner), band=True)), req
+
+    def with_inner(x):
+        return with_band(speed.omega_inner / x, speed.omega_outer)
+
+    def with_outer(x):
+        return with_band(speed.omega_inner, speed.omega_outer * x)
+
+    # the speed requirement as the spec states it: the band's ends, or the irregularity
+    speed_moves = ([("speed.inner", with_inner, "rpm /", speed.omega_inner),
+                    ("speed.outer", with_outer, "rpm x", speed.omega_outer)] if speed.band
+                   else [("irregularity", with_irr, "x", speed.irregularity)])
+    if stage == "statics":
+        lo_name = max(parts, key=lambda k: np.median(parts[k][0]))
+        lo, hi = parts[lo_name]
+        others = [k for k in parts if k != lo_name]
+        weight = f"{spec.governor.mass_key} weight"
+        if not np.any(lo <= hi) or not others:  # the requirement alone: no stiffness meets it
+            head = (f"infeasible: no spring stiffness meets the requirement "
+                    f"'{lo_name}' by itself at any {weight} in the bounds")
+        else:  # never "X conflicts with X"
+            hi_name = min(others, key=lambda k: np.median(parts[k][1]))
+            head = (f"infeasible: the requirement '{lo_name}' needs a stiffer "
+                    f"spring than '{hi_name}' allows at every {weight} in the bounds")
+        cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin),
+                 (f"bounds.{spec.governor.mass_key}_weight", with_mass, "widen x", None)]
+    elif stage == "spring" and stats["statics_feasible"] == 0:
+        head = (f"infeasible: no catalogue spring's stiffness falls in the window "
+                "the statics allow (the speed band, k^2 margins, free length) at any "
+                f"{spec.governor.mass_key} weight in the bounds")
+        cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin)]
+    elif stage == "spring":
+        head = (f"infeasible: no spring in the catalogue and bounds meets the "
+                f"allowable shear stress (with index, envelope and surge limits) at a stiffness "
+                f"the statics allow ({stats['statics_feasible']} mass-spring combinations pass "
+                f"the statics, none the spring checks)")
+        cands = [("allowable_shear_stress", with_ks, "x", mat.allowable_shear_stress),
+                 *speed_moves]
+        if mat.allowable_shear_stress is None:  # a wire grade's allowables: not one number
+            cands = cands[1:]
+    else:
+        return dynamics_conflict(spec, req, stats)
+    for name, make, how, value in cands:
+        x = _relax(spec, req, stage, make)
+        if x is None:
+            continue
+        if how == "x" and value is not None:
+            moves.append(f"{name} {value:g} -> {value * x:.4g} (x{x:.3g})")
+        elif how.startswith("rpm"):  # a band's end, shown as the spec's speeds are
+            rpm = 30.0 / math.pi
+            to = value / x if how == "rpm /" else value * x
+            moves.append(f"{name} {value * rpm:.5g} rpm -> {to * rpm:.5g} rpm")
+        elif how == "/" and value:
+            moves.append(f"{name} {value:g} -> {value / x:.4g}")
+        elif how == "widen x":
+            moves.append(f"{name} widened x{x:.3g}")
+    return InfeasibleError(head, file=spec.path, moves=moves)
+
+
+def dynamics_conflict(spec: Spec, req: Requirements, stats: dict) -> InfeasibleError:
+    """Name the dynamic requirement that no admissible dash-pot meets, and how far it is."""
+    return InfeasibleError(_dynamics_reason(spec, req, stats), file=spec.path)
+
+
+def _dynamics_reason(spec: Spec, req: Requirements, stats: dict) -> str:
+    """:func:`dynamics_conflict`'s reason, in words."""
+    least = stats.get("least", {})
+    where = (f"({stats.get('spring_feasible', 'all')} candidates pass the statics "
+             f"and spring checks; {stats['dynamics_checked']} checked best first"
+             + (f", stopped at govopt's limit of work (~{limits.MAX_DESIGN_DYNAMICS_SECONDS:g} s)"
+                if stats.get("dynamics_stopped_at_the_work_limit") else "")
+             + f", {stats.get('lattice_cells', 0)} mass x stiffness cells screened)")
+    if spec.engine is None or not spec.load_changes:  # no dash-pot to design: the vibration
+        broken = " and ".join(name for name, on in (
+            ("requirements.max_vibration", req.max_vibration is not None),
+            ("the spring's fatigue safety (requirements.min_fatigue_safety)",
+             spec.material is not None and spec.material.grade is not None)) if on)
+        return (f"infeasible: with no [[load_change]] no dash-pot is designed, and "
+                f"undamped, the forced vibration breaks {broken or 'the requirements'} on every "
+                f"candidate {where}; add the load change (a dash-pot) or relax them")
+    over = least.get("over_regulation", np.inf)
+    if over > OVER_TOL:
+        text = ("no admissible damping" if not np.isfinite(over) else
+                f"the least over-regulation at any admissible damping is "
+                f"{100 * over:.3g} % of the load change (scaled by the slowest mode's decay)")
+        return (f"infeasible: Hamabe's eq. (32) with margin {req.hurwitz_margin:g} "
+                f"conflicts with 'no over-regulation' for the load changes: {text} {where}; "
+                f"lower requirements.hurwitz_margin or the load change")
+    settle = least.get("settling_time", np.inf)
+    if req.max_settling_time is not None and settle > req.max_settling_time:
+        return (f"infeasible: requirements.max_settling_time "
+                f"{req.max_settling_time:g} s conflicts with 'no over-regulation' and eq. (32): "
+                + (f"the fastest admissible settling is {settle:.4g} s {where}"
+                   if np.isfinite(settle) else
+                   f"no admissible dash-pot's settling could be placed (a time grid of at "
+                   f"most {MAX_TRANSIENT_POINTS} points, then the modes' envelope: the load "
+                   f"change's modes are too far apart, as with a very large flywheel) {where}"))
+    vib = least.get("vibration", np.inf)
+    if req.max_vibration is not None and vib > req.max_vibration:
+        return (f"infeasible: requirements.max_vibration "
+                f"{np.degrees(req.max_vibration):.4g} deg conflicts with the load-change "
+                f"requirements: the least peak-to-peak bound at an admissible damping is "
+                f"{np.degrees(vib):.4g} deg {where}")
+    if stats.get("lattice_feasible", 0) and spec.material is not None \
+            and spec.material.grade is not None:  # the lattice screens all but the spring's life
+        return (f"infeasible: requirements.min_fatigue_safety "
+                f"{req.min_fatigue_safety or 1.0:g}: no candidate's spring reaches it under the "
+                f"vibration at a damping the load changes admit ({stats['lattice_feasible']} "
+                f"mass x stiffness cells meet the load-change requirements alone) {where}")
+    return (f"infeasible: the dynamic requirements are met only together on no "
+            f"candidate {where}")
+
+
+
+
+def unverified(spec: Spec, cand: Candidate, failed) -> str:
+    """The diagnosis of a chosen design that fails its final evaluation (``failed``: the
+    :class:`~govopt.verdict.Check` objects that fail). The verdict is the evaluator's
+    (:mod:`govopt.evaluator`); the search held the same requirement rows on its own model (the
+    statics affine in the spring rate at fixed masses, on the catalogue's grid), so a miss is a
+    design on the edge of a requirement, by the rounding between the two: name it, its value,
+    its limit and its margin, and what to change."""
+    gov = spec.governor
+    spring = "".join(f", {k} = {v:.6g}" for k, v in cand.spring.items())
+    names = ", ".join(c.name for c in failed)
+    return (f"{spec.path}: the chosen design ({gov.mass_key} {cand.m:.6g} kg{spring}, dash-pot "
+            f"{cand.f:.6g} SI) fails its final verification by govopt evaluate: "
+            + "; ".join(f"{c.name}: {c.value:.6g} {c.unit}, required {c.sense} {c.limit:.6g} "
+                        f"(margin {c.margin:.3g})" for c in failed)
+            + f". The search's screen passed it on its own model, so it lies on the edge of "
+            f"{names}: no design is returned; ask for a little more margin on {names} (or a "
+            "finer catalogue step) and search again")
