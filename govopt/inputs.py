@@ -193,13 +193,17 @@ class Requirements:
     dashpot_valve: float = 0.0
     robust_samples: int = 2000  # Monte-Carlo verification: samples and seed
     robust_seed: int = 0
+    #: the least yield of made governors (:mod:`govopt.made`): the design search keeps only
+    #: designs whose yield under the stated tolerances is at least this; None: not asked
+    min_yield: float | None = None
 
     @property
     def robust(self) -> bool:
         """Whether the requirements ask for a tolerance box (robust design)."""
         return (self.robust_spring_grade is not None or self.robust_dashpot > 0
                 or self.robust_masses > 0 or self.robust_torque_slope > 0
-                or self.adjusting_nut > 0 or self.dashpot_valve > 0)
+                or self.adjusting_nut > 0 or self.dashpot_valve > 0
+                or self.min_yield is not None)
 
 
 @dataclass(frozen=True)

@@ -53,6 +53,10 @@ class Result:
     #: the helical spring's sheet for the spring maker, fatigue loads and manufacturing spread
     #: (:class:`govopt.analysis.spring_engineering.SpringReport`); None without a wire spring
     spring_report: Any = None
+    #: governors made to the spec's tolerances (:mod:`govopt.made`): the tolerances, the yield
+    #: beside the verdict and the worst-case speed band beside the required one (SI); None
+    #: where the spec states no tolerance (or the yield was not asked for)
+    made: dict | None = None
     #: the one evaluator's record of this design (:class:`govopt.evaluator.Evaluation` of one
     #: design): its figures and check table, the row a study stores (:func:`govopt.bulk.result_row`)
     evaluation: Any = field(default=None, repr=False)
@@ -364,4 +368,6 @@ class Result:
                                   "force_outer_N": found["force_outer"]}
         out.update(self.dynamics)
         out.update(self.optimisation)
+        if self.made is not None:
+            out["made"] = self.made
         return jsonable(out)

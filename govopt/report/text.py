@@ -260,6 +260,40 @@ def verdict(res: Result) -> str:
             + "; ".join(f"{check_name(c, res)} ({margin_words(c)})" for c in failed))
 
 
+def made_lines(res: Result) -> list[str]:
+    """The yield beside the verdict (where the spec states tolerances: ``Result.made``): the
+    share of made governors that pass with its interval and the requirement failing most often,
+    the worst-case speed band beside the required one, and what they were made to."""
+    from ..made import yield_line
+
+    made = res.made
+    if not made:
+        return []
+    nominal = "PASS" if all(c.passed for c in res.checks) else "FAIL"
+    band, tol, y = made["speed_band"], made["tolerances"], made["yield"]
+
+    def rpm(pair) -> str:
+        return f"{pair[0] * RPM:.4g}-{pair[1] * RPM:.4g} rpm"
+
+    st = res.statics
+    besides = (f"the required {rpm(band['required_rad_s'])}" if band.get("required_rad_s")
+               else f"nominal {rpm((float(np.min(st.omega)), float(np.max(st.omega))))}")
+    made_to = [f"EN 15800 grade {tol['spring_grade']}" + (
+        f", wire to {tol['wire_standard']}" if tol.get("wire_standard") else "")
+        if tol.get("spring_grade") is not None else ""]
+    made_to += [f"{what} +-{100 * f:g} %" for what, f in (
+        ("masses", tol.get("masses_fraction", 0.0)), ("dash-pot", tol.get("dashpot_fraction", 0.0)),
+        ("torque slope", tol.get("torque_slope_fraction", 0.0))) if f]
+    if tol.get("adjusting_nut_m"):
+        made_to.append(f"set by the fitter's nut +-{tol['adjusting_nut_m'] * 1e3:.3g} mm")
+    sampled = (f"{y['samples']} samples (Latin hypercube, seed {y['seed']})" if y["samples"]
+               else "worst case")
+    shown = {c.name: check_name(c, res) for c in res.checks}
+    return [f"{nominal} at nominal; {yield_line(made, lambda n: shown.get(n, n))}",
+            f"  worst-case speeds {rpm(band['band_rad_s'])} beside {besides}",
+            "  made to " + ", ".join(m for m in made_to if m) + f"; {sampled}"]
+
+
 def band_spring_note(spec) -> str:
     """What the spring found for the band is (:func:`govopt.spec.band_spring`)."""
     found, gov = spec.band_spring, spec.governor
@@ -280,6 +314,9 @@ def _warnings(res: Result) -> list[str]:
     if res.spring_report is not None:
         d = res.spring_report.to_dict()
         notes += [*d["tolerance_spread"]["notes"], *d["notes"]]
+    if res.made:
+        notes += [*res.made["tolerances"]["notes"], *(
+            [res.made["yield"]["note"]] if res.made["yield"].get("note") else [])]
     return list(dict.fromkeys(notes))
 
 
@@ -295,6 +332,8 @@ def _summary_section(out: TextReport, res: Result, every_check: bool = False) ->
     line = verdict(res)
     out.title("Verdict")
     out.line(line, "green bold" if line.startswith("PASS") else "red bold")
+    for text in made_lines(res):
+        out.line(text)
     _design_section(out, res)
     shown = [] if every_check else watched(res)
     if shown:
