@@ -186,16 +186,25 @@ def draw(cols: dict, bx: tm.Box, n: int, seed: int, i: int = 0):
 
 
 def fit(spec, rows: dict, torque, ok: np.ndarray, nut: float, valve: float,
-        vibration: bool = True) -> tuple[np.ndarray, int, int]:
+        vibration: bool = True, evaluate=None, frame=None):
     """The fitter's adjustment of the made governors ``rows`` that fail (``~ok``): each tried at
     the settings of the adjusting nut (``+-nut``, m) and the dash-pot valve (``+-valve``) in
     :data:`ADJUSTMENT_GROUPS` groups, least change first, holding if some setting makes every
     requirement hold. Returns ``(ok, adjusted, not tried)``: the governors that hold after it,
     how many the fitter's setting made hold, and how many failing ones were not tried at every
-    setting because the running work reached its limit (they count as failing)."""
+    setting because the running work reached its limit (they count as failing). With
+    ``frame`` (the governors' evaluated rows) also that frame with each adjusted governor's row
+    as set (the first setting, least change first, at which it holds). ``evaluate(rows,
+    torque)``: the evaluation (default :func:`evaluate_at`)."""
+    import pandas as pd
+
+    if evaluate is None:
+        def evaluate(r, t):
+            return evaluate_at(spec, r, t, vibration)
     ok = ok.copy()
     nuts, valves = (x[1:] for x in tm.fitter_settings(nut, valve))
-    adjusted = 0
+    adjusted, stopped, set_rows = 0, 0, {}
+    torque = np.zeros(len(ok)) if torque is None else np.asarray(torque)
     for part in [p for p in np.array_split(np.arange(nuts.size), ADJUSTMENT_GROUPS) if p.size]:
         bad = np.nonzero(~ok)[0]
         if bad.size == 0:
@@ -204,13 +213,26 @@ def fit(spec, rows: dict, torque, ok: np.ndarray, nut: float, valve: float,
         rep["free_half_length"] = rep["free_half_length"] + np.tile(nuts[part], bad.size)
         rep["dashpot"] = rep["dashpot"] * np.tile(valves[part], bad.size)
         try:
-            fixed = holds(evaluate_at(spec, rep, np.repeat(np.asarray(torque)[bad], part.size),
-                                      vibration)).reshape(bad.size, part.size).any(axis=1)
+            got = evaluate(rep, np.repeat(torque[bad], part.size))
         except limits.WorkLimit:
-            return ok, adjusted, int(bad.size)
+            stopped = int(bad.size)
+            break
+        good = holds(got).reshape(bad.size, part.size)
+        fixed = good.any(axis=1)
+        if frame is not None:
+            first = np.argmax(good, axis=1)
+            for i in np.nonzero(fixed)[0]:
+                set_rows[int(bad[i])] = got.iloc[[i * part.size + int(first[i])]]
         ok[bad] = fixed
         adjusted += int(fixed.sum())
-    return ok, adjusted, 0
+    if frame is None:
+        return ok, adjusted, stopped
+    if set_rows:  # the adjusted governors' rows as set
+        idx = sorted(set_rows)
+        new = pd.concat([set_rows[i] for i in idx], ignore_index=True)
+        new.index = idx
+        frame = pd.concat([frame.drop(index=idx), new]).sort_index()
+    return ok, adjusted, stopped, frame
 
 
 def resolved_columns(spec, res) -> dict:
@@ -231,25 +253,42 @@ def fitter_of(req) -> tuple[float, float]:
 
 
 def made_yield(spec, cols: dict, bx: tm.Box, n: int, seed: int,
-               fitter: tuple[float, float] = (0.0, 0.0)) -> dict:
+               fitter: tuple[float, float] = (0.0, 0.0), blocks=None, give_up=None) -> dict:
     """The yield of design 0 of ``cols`` made within ``bx``: ``n`` governors (:func:`draw`),
     evaluated and, where the spec has a fitter, adjusted (:func:`fit`): the probability that
-    every requirement holds with its 95 % Wilson interval, the requirements that fail (before
-    the fitter's adjustment) and the sampled speeds' range. A sample the fitter could not try
-    at every setting within the running work's limit counts as failing (then the probability is
-    a lower bound, and a note says so)."""
+    every requirement holds with its 95 % Wilson interval, the requirements that fail (as made)
+    and the sampled speeds' range. A sample the fitter could not try at every setting within the
+    running work's limit counts as failing (then the probability is a lower bound, and a note
+    says so).
+
+    ``blocks``: the samples are evaluated in blocks of these sizes (the last repeated; None: at
+    once), and after each block ``give_up(failures, samples so far)`` may stop them (the record
+    then says how many were evaluated, ``samples``, of ``of``)."""
+    import pandas as pd
+
     rows, torque = draw(cols, bx, n, seed)
-    frame = evaluate_at(spec, rows, torque)
-    ok = holds(frame)
-    adjusted = stopped = 0
     nut = fitter[0] if spec.governor.spring is not None else 0.0
-    if nut > 0 or fitter[1] > 0:
-        ok, adjusted, stopped = fit(spec, rows, torque, ok, nut, fitter[1])
-    k = int(ok.sum())
-    lo, hi = wilson(k, n)
+    frames, oks, adjusted, stopped, start, b = [], [], 0, 0, 0, 0
+    while start < n:
+        size = n if not blocks else blocks[min(b, len(blocks) - 1)]
+        sel = np.arange(start, min(n, start + size))
+        start, b = int(sel[-1]) + 1, b + 1
+        part = {k: v[sel] for k, v in rows.items()}
+        frame = evaluate_at(spec, part, torque[sel])
+        ok = holds(frame)
+        if nut > 0 or fitter[1] > 0:
+            ok, a, s_ = fit(spec, part, torque[sel], ok, nut, fitter[1])
+            adjusted, stopped = adjusted + a, stopped + s_
+        frames.append(frame)
+        oks.append(ok)
+        if give_up is not None and give_up(int(sum((~o).sum() for o in oks)), start):
+            break
+    frame, ok = pd.concat(frames, ignore_index=True), np.concatenate(oks)
+    done, k = len(ok), int(ok.sum())
+    lo, hi = wilson(k, done)
     fails = failing(frame.iloc[np.nonzero(~ok)[0]])
-    out = {"probability": k / n, "ci95": [lo, hi], "holds": k, "samples": n, "seed": seed,
-           "sampler": "Latin hypercube", "distribution": tm.DISTRIBUTION,
+    out = {"probability": k / done, "ci95": [lo, hi], "holds": k, "samples": done, "of": n,
+           "seed": seed, "sampler": "Latin hypercube", "distribution": tm.DISTRIBUTION,
            "adjusted_by_the_fitter": adjusted, "failing": fails,
            "most_failing": next(iter(fails), None)}
     for end in ("inner", "outer"):
@@ -265,11 +304,11 @@ def made_yield(spec, cols: dict, bx: tm.Box, n: int, seed: int,
 
 def record(spec, cols: dict, bx: tm.Box, n: int, seed: int, fitter=(0.0, 0.0),
            min_yield: float | None = None, certified: bool = False,
-           spreads: tuple[float, float] = (0.0, 0.0)) -> dict:
+           spreads: tuple[float, float] = (0.0, 0.0), sampled: dict | None = None) -> dict:
     """The made governors' record of design 0 of ``cols``: the tolerances (``spreads``: the
-    masses' and the dash-pot's fractions), the yield (:func:`made_yield`; 1 without samples
-    where the worst case over the box holds, ``certified``) and the worst-case speed band
-    beside the required one, SI."""
+    masses' and the dash-pot's fractions), the yield (:func:`made_yield`, or ``sampled`` where
+    it was found already; 1 without samples where the worst case over the box holds,
+    ``certified``) and the worst-case speed band beside the required one, SI."""
     nut, valve = fitter
     masses, dashpot = spreads
     tol = {"spring_grade": bx.grade, "wire_standard": tm.wire_standard(spec)
@@ -297,6 +336,8 @@ def record(spec, cols: dict, bx: tm.Box, n: int, seed: int, fitter=(0.0, 0.0),
              "note": f"each governor's evaluation costs ~{row_seconds(spec) * 1e3:.2g} ms "
                      f"here: fewer than {MIN_SAMPLES} fit govopt's limit of "
                      f"{limits.MAX_YIELD_SECONDS:g} s for the yield"}
+    elif sampled is not None:
+        y = sampled | {"certified": None}
     else:
         with limits.counting(limits.Work(limits.MAX_MONTE_CARLO_SECONDS)):
             y = made_yield(spec, cols, bx, n, seed, fitter) | {"certified": None}

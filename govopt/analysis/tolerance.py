@@ -55,8 +55,8 @@ from . import statics
 
 #: the design's toleranced quantities (:class:`govopt.inputs.Design` fields), in the order a
 #: sample draws them (the study's grade tolerances keep it: the same points)
-FIELDS = ("wire_diameter", "coil_radius", "free_half_length", "flying_mass", "central_mass",
-          "dashpot")
+FIELDS = ("wire_diameter", "coil_radius", "free_half_length", "dashpot", "flying_mass",
+          "central_mass")
 #: the scatter within the box (:func:`govopt.stats.truncated_normal`)
 DISTRIBUTION = ("normal, each tolerance read as +-3 standard deviations and truncated at it "
                 "(a part outside its tolerance is rejected)")
@@ -314,6 +314,18 @@ def speed_band(spec, cols: dict, bx: Box) -> dict:
             "band_rad_s": [float(fall), float(rise)]}
 
 
+def speed_band_each(spec, cols: dict, bx: Box) -> dict[str, list[float]]:
+    """Per toleranced quantity of design 0, the worst case of its speed band (with friction,
+    ``band_rad_s`` of :func:`speed_band`) over that quantity's tolerance alone: which
+    tolerance spreads the speeds most."""
+    out = {}
+    for name in bx.active():
+        one = Box({k: (v if k == name else np.zeros_like(v)) for k, v in bx.fields.items()})
+        out[name] = speed_band(spec, cols, one)["band_rad_s"]
+    return out
+
+
 __all__ = ["DISTRIBUTION", "FIELDS", "SOURCES", "Box", "at", "box", "corners",
-           "fitter_settings", "kind", "notes", "offsets", "speed_band", "spring_grade",
+           "fitter_settings", "kind", "notes", "offsets", "speed_band", "speed_band_each",
+           "spring_grade",
            "spring_tolerances", "states_tolerances", "stated", "wire_standard"]
