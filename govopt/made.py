@@ -317,15 +317,11 @@ def record(spec, cols: dict, bx: tm.Box, n: int, seed: int, fitter=(0.0, 0.0),
            "dashpot_fraction": dashpot, "torque_slope_fraction": bx.torque,
            "adjusting_nut_m": nut, "dashpot_valve_fraction": valve,
            "distribution": tm.DISTRIBUTION, "notes": list(bx.notes)}
-    wide = bx
-    if nut > 0 and spec.governor.spring is not None:  # as made and as set by the fitter
-        wide = replace(bx, fields={**bx.fields, "free_half_length": bx.fields.get(
-            "free_half_length", np.zeros(1)) + nut})
-    band = tm.speed_band(spec, cols, wide)
+    band = tm.speed_band(spec, cols, bx)  # as made (before any fitter's setting)
     sp = spec.speed
     band["required_rad_s"] = [sp.omega_inner, sp.omega_outer] if sp is not None and sp.band \
         else None
-    band["after_the_fitter"] = wide is not bx
+    band["as_made"] = True
     if certified:
         y = {"probability": 1.0, "ci95": [1.0, 1.0], "holds": None, "samples": 0, "seed": seed,
              "certified": "every requirement holds over the whole box (worst case)",
@@ -376,37 +372,6 @@ def with_yield(res):
     return res if made is None else replace(res, made=made)
 
 
-def yield_line(made: dict, name=str) -> str:
-    """The yield in words: ``"82.8 % of made governors pass (95 %: 79.2-86.0 %); most often
-    failing: lowest speed >= speed.inner"`` (``name``: a check's name as the report shows
-    it)."""
-    y = made["yield"]
-    if y["probability"] is None:
-        return "yield not sampled: " + y["note"]
-    if y.get("certified"):
-        text = "100 % of made governors pass (certified: every requirement holds over the " \
-               "whole tolerance box)"
-    else:
-        lo, hi = y["ci95"]
-        text = (f"{_pct(y['probability'])} of made governors pass (95 %: "
-                f"{_pct(lo, False)}-{_pct(hi)})")
-        if y["most_failing"]:
-            text += f"; most often failing: {name(y['most_failing'])}"
-    if y.get("required") is not None:
-        text += (f"; required >= {_pct(y['required'])}: "
-                 + ("met" if y["meets_required"] else "NOT MET"))
-    return text
-
-
-def _pct(p: float, unit: bool = True) -> str:
-    """A probability as a percentage, one decimal (two where it is within 1 % of 0 or 1, so
-    99.62 % is not shown as 100 %)."""
-    v = 100.0 * p
-    digits = 2 if 0 < p < 1 and min(v, 100 - v) < 1 else 1
-    text = f"{v:.{digits}f}".rstrip("0").rstrip(".") if v in (0.0, 100.0) else f"{v:.{digits}f}"
-    return text + (" %" if unit else "")
-
-
 __all__ = ["BOUND_NAMES", "SAMPLES", "check_margins", "draw", "evaluate_at", "failing", "fit",
            "holds", "made_yield", "record", "requirement_checks", "row_seconds",
-           "sample_count", "stated_record", "with_yield", "yield_line"]
+           "sample_count", "stated_record", "with_yield"]

@@ -657,7 +657,8 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> di
     cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}
     box = candidate_box(spec, req, cols)
     if wc is None:
-        wc = worst_case(spec, req, cols, box)
+        # a design for a yield need not hold over the whole box: its edges show where it fails
+        wc = worst_case(spec, req, cols, box, inner=req.min_yield is None)
     at, dims, pts = wc["frame"], wc["dims"], wc["points"]
     nut, valve = nut_settings(req)
     nominal = at.iloc[:1]  # nominal parts, at the fitter's setting for them
@@ -852,7 +853,7 @@ def inner_minimum(fun, start, step: float = INNER_STEP, iterations: int = INNER_
 
 
 def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
-               stop_on_failure: bool = False) -> dict:
+               stop_on_failure: bool = False, inner: bool = True) -> dict:
     """The worst case of one design (columns of length 1) over its box, after the fitter's
     adjustment.
 
@@ -861,7 +862,8 @@ def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
     check that is not monotone in some tolerances is minimised over those (an inner
     maximisation of its violation, :func:`inner_minimum`), from its worst probed point, the
     tolerances it is monotone in held at that point's faces. ``stop_on_failure``: return at the
-    first point where a check fails (a search's candidate is then rejected).
+    first point where a check fails (a search's candidate is then rejected); not ``inner``: the
+    edges only (a design for a yield, which fails somewhere in its box: where, on its edges).
 
     Returns ``dims``; every evaluated ``points`` (half-widths; the first, 0, nominal parts) with
     its ``frame`` row (at the fitter's setting), ``margins`` (:func:`check_margins`),
@@ -890,7 +892,7 @@ def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
 
     not_monotone: dict[str, list[str]] = {}
     ok = bool(np.all(seen["margins"][0] >= PASS_TOL))  # nominal parts and the edges
-    if k == 0 or (stop_on_failure and not ok):
+    if k == 0 or (stop_on_failure and not ok) or not inner:
         return result(ok)
     names = robust_checks(frame)
     for c, name in enumerate(names):
