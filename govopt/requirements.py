@@ -274,7 +274,7 @@ def load_change_rows(spec, name: str) -> list[Row]:
                 spec.governor.method(spec).text("hurwitz"), group="dynamics",
                 scale=_const(1.0)),
             Row(f"no over-regulation: {name}", "<=", unit, lambda ev: ev["over"],
-                _const(0.0), f"{cubic.cite}; all t >= 0 (transient.over_regulates)",
+                _const(0.0), f"{cubic.cite}; all t >= 0 (over_regulation.over_regulates)",
                 group="dynamics", scale=lambda ev: np.abs(ev["xi0"]),
                 verdict=lambda ev: ~np.asarray(ev["over_regulates"], dtype=bool))]
     if req is not None and req.max_settling_time is not None:

@@ -108,6 +108,29 @@ class Result:
             return None, None
         return rise, fall
 
+    @property
+    def band_extremes(self) -> tuple[tuple[float, str], tuple[float, str]]:
+        """``((lowest closing speed, where), (highest opening speed, where))`` (rad/s, and the
+        configuration in words: "the inner end", "the outer end" or "ball radius 120.5 mm"):
+        the operating band's ends over the whole range, as the band checks read them
+        (:func:`govopt.analysis.statics.band_extremes`); without friction the characteristic's
+        own lowest and highest speeds."""
+        rise, fall = self.friction_speeds
+        if rise is None:
+            rise = fall = np.asarray(self.statics.omega, dtype=float)
+        gov, x = self.spec.governor, np.asarray(self.statics.alpha, dtype=float)
+
+        def where(i: int) -> str:
+            if i == 0:
+                return "the inner end"
+            if i == x.size - 1:
+                return "the outer end"
+            value, unit = gov.shown(x[i])
+            return f"{gov.coordinate_name} {float(value):.4g} {unit}"
+
+        i, j = int(np.argmin(fall)), int(np.argmax(rise))
+        return (float(fall[i]), where(i)), (float(rise[j]), where(j))
+
     def check(self, name: str) -> Check:
         return next(c for c in self.checks if c.name == name)
 
@@ -141,13 +164,14 @@ class Result:
                 Figure("speed at the outer end", float(st.omega[-1]), "rad/s", "speed",
                        symbol="omega_a", note=f"{gov.coordinate_name} at its outer end")]
         rise, fall = self.friction_speeds
-        if rise is not None:  # where friction acts: the speeds the governor moves at
-            out += [Figure("closing speed at the inner end", float(fall[0]), "rad/s", "speed",
-                           symbol="omega_fall,i", note="falling against friction: the lowest "
-                                                       "speed of the band"),
-                    Figure("opening speed at the outer end", float(rise[-1]), "rad/s",
-                           "speed", symbol="omega_rise,a", note="rising against friction: the "
-                                                                "highest speed of the band")]
+        if rise is not None:  # where friction acts: the band's extremes over the whole range
+            (low, at_low), (high, at_high) = self.band_extremes
+            out += [Figure("lowest closing speed", low, "rad/s", "speed", symbol="omega_fall",
+                           note=f"falling against friction, at {at_low}: the band's lowest "
+                                "speed"),
+                    Figure("highest opening speed", high, "rad/s", "speed",
+                           symbol="omega_rise", note=f"rising against friction, at {at_high}: "
+                                                     "the band's highest speed")]
         inertia = "kg*m^2" if gov.coordinate == "angle" else "kg"
         weight = (f"{gov.mass_name}, its weight" if gov.mass_name.endswith("weight")
                   else f"{gov.mass_name} weight")
@@ -173,9 +197,9 @@ class Result:
                     Figure(gov.free_length_key.replace("_", " "), sd.l0, "m", "spring",
                            symbol="l0", json=f"{gov.free_length_key}_m")]
             if not gov.spring_kind.helical:  # the section the design sizes (a leaf's)
-                out += [Figure(key.replace("_", " "), getattr(self.design, key), "m", "spring")
-                        for key, dimension in gov.spring_kind.section
-                        if dimension == "length" and getattr(self.design, key, None) is not None]
+                out += [Figure(k.name.replace("_", " "), getattr(self.design, k.name), "m",
+                               "spring") for k in gov.spring_kind.section
+                        if k.kind == "length" and getattr(self.design, k.name, None) is not None]
         if sp:
             out += [Figure("wire diameter", sd.d, "m", "spring", symbol="d"),
                     Figure("mean coil radius", sd.r, "m", "spring", symbol="r",

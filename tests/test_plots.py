@@ -15,7 +15,7 @@ from clirun import invoke
 
 import govopt
 from govopt.analysis import vyshnegradsky as vy
-from govopt.evaluation import evaluate
+from govopt.evaluator import evaluate
 from govopt.governors import REGISTRY
 from govopt.report import plot_files, plots
 from govopt.spec import load_spec

@@ -164,14 +164,18 @@ def test_friction_shown_where_it_acts(records):
         wb = openpyxl.load_workbook(path)
         rise, fall = res.friction_speeds
         design = {r[0]: r for r in wb["Design"].iter_rows(values_only=True) if r[0]}
-        closing = next(v for k, v in design.items() if k.startswith("closing speed"))
-        assert closing[4] == pytest.approx(fall[0] * 30 / 3.141592653589793, rel=1e-12)
+        closing = design["lowest closing speed"]
+        opening = design["highest opening speed"]
+        assert closing[4] == pytest.approx(fall.min() * 30 / 3.141592653589793, rel=1e-12)
+        assert opening[4] == pytest.approx(rise.max() * 30 / 3.141592653589793, rel=1e-12)
         head = [c.value for c in wb["Characteristic"][1]]
         assert "closing speed (falling against friction) (rpm)" in head, name
-        assert re.search(r"closing speed at the\s", pages[0]), name
-        band = [c for c in res.checks if c.name == "lowest speed >= speed.inner"]
-        if band:  # the check holds the band's lowest speed: the closing speed shown
-            assert band[0].value == pytest.approx(fall[0], rel=1e-12)
+        assert re.search(r"lowest closing\s+speed", pages[0]), name
+        for check, speed in (("lowest speed >= speed.inner", fall.min()),
+                             ("highest speed <= speed.outer", rise.max())):
+            band = [c for c in res.checks if c.name == check]
+            if band:  # the check holds the band's end over the whole range: the speed shown
+                assert band[0].value == pytest.approx(speed, rel=1e-12), (name, check)
 
 
 def test_spring_page_only_with_a_spring(records):

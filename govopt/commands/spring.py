@@ -10,7 +10,7 @@ from typing import Annotated
 import typer
 
 from . import common
-from .common import JSON_HELP, ChecksFailed, Command, echo, guarded, rich_text
+from .common import JSON_HELP, ChecksFailed, echo, guarded, rich_text
 
 SPRING_SHORT = ("Least-mass helical spring for a force and stiffness (an exact GP, certified "
                 "global), or check one you have.")
@@ -31,7 +31,7 @@ WIRE_SIZES_HELP = ("Wires to order from: 'preferred' (the grade's standard's dia
                    "design uses), a list ('2.5 mm, 2.8 mm, 3 mm') or 'continuous' (any wire "
                    "and coils). Default: 'preferred' with --material, else 'continuous'.")
 
-app = typer.Typer(cls=common.Group, add_completion=False, help=SPRING_HELP,
+app = typer.Typer(name="spring", add_completion=False, help=SPRING_HELP,
                   short_help=SPRING_SHORT, invoke_without_command=True)
 
 Text = str | None
@@ -109,7 +109,7 @@ def _finish(out, json_out: bool) -> None:
         raise ChecksFailed
 
 
-@app.command("design", cls=Command, help=DESIGN_HELP, short_help="Design a spring (default).")
+@app.command("design", help=DESIGN_HELP, short_help="Design a spring (default).")
 @guarded
 def design(
         spec: Annotated[Path | None, typer.Argument(
@@ -199,7 +199,7 @@ def design(
                 replace=replace, **options), json_out)
 
 
-@app.command("check", cls=Command, help=CHECK_HELP, short_help="Check a spring you have.")
+@app.command("check", help=CHECK_HELP, short_help="Check a spring you have.")
 @guarded
 def check(
         spec: Annotated[Path | None, typer.Argument(

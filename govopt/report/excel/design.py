@@ -191,14 +191,14 @@ def build_design(wb: Workbook, design: Sheet, model: FormulaSheet, res: Result) 
         generic_design(s, res)
     rise, fall = res.friction_speeds
     if rise is not None:
-        gov = res.spec.governor
         band = res.method.named("band")
         s.section("With friction: the speeds the governor moves at (govopt's values)")
-        s.value(f"closing speed at {gov.coordinate_name}_i", "omega_fall,i", float(fall[0]),
-                "rad/s", "falling against friction: the band's lowest speed"
+        (low, at_low), (high, at_high) = res.band_extremes
+        s.value("lowest closing speed", "omega_fall", low, "rad/s",
+                f"falling against friction, at {at_low}: the band's lowest speed"
                 + (f" ({band.cite})" if band else ""))
-        s.value(f"opening speed at {gov.coordinate_name}_a", "omega_rise,a", float(rise[-1]),
-                "rad/s", "rising against friction: the band's highest speed")
+        s.value("highest opening speed", "omega_rise", high, "rad/s",
+                f"rising against friction, at {at_high}: the band's highest speed")
     s.row += 1
     s.text("Yellow cells are inputs, in the units beside them (mm, N/mm, MPa, rpm, deg); blue "
            "cells are formulas. The formulas work in SI on the defined names (column "

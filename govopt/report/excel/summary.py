@@ -89,10 +89,10 @@ def design_rows(res: Result) -> list[tuple[str, object, str, str]]:
             rows.append(("initial tension F0", sh.F0, "N", ""))
     elif gov.spring is not None:
         rows.append((f"Spring ({gov.spring})", None, "section", ""))
-        for key, _ in gov.spring_kind.section:  # the section the spec gives
-            value = getattr(ds, key, None)
+        for k in gov.spring_kind.section:  # the section the spec gives
+            value = getattr(ds, k.name, None)
             if value is not None:
-                rows.append((key.replace("_", " "), value, "" if key == "active_turns" else "m",
+                rows.append((k.name.replace("_", " "), value, "m" if k.kind == "length" else "",
                              ""))
         for name in ("spring stiffness", gov.free_length_key.replace("_", " ")):
             if name in figures:
