@@ -268,11 +268,13 @@ def requirements_table(kind) -> Table:
         Key("robust_torque_slope", "number", "robust design: the engine's torque slope +- "
                                              "this fraction",
             default=_REQ.robust_torque_slope, nonnegative=True, high=0.5),
-        Key("adjusting_nut", "length", "robust design: the fitter adjusts the spring's free "
-                                       "length by a nut, +- this", default=_REQ.adjusting_nut,
+        Key("adjusting_nut", "length", "made governors: the fitter adjusts the spring's free "
+                                       "length by a nut, +- this (read by robust design and "
+                                       "the yield)", default=_REQ.adjusting_nut,
             nonnegative=True),
-        Key("dashpot_valve", "number", "robust design: the fitter sets the dash-pot valve "
-                                       "within +- this fraction", default=_REQ.dashpot_valve,
+        Key("dashpot_valve", "number", "made governors: the fitter sets the dash-pot valve "
+                                       "within +- this fraction (read by robust design and "
+                                       "the yield)", default=_REQ.dashpot_valve,
             nonnegative=True, high=0.9),
         Key("robust_samples", "count", "robust design: Monte-Carlo verification samples",
             default=_REQ.robust_samples, low=9, high=limits.MAX_ROBUST_SAMPLES + 1,

@@ -232,22 +232,20 @@ def supported(spec: Spec, req: Requirements) -> None:
             f"the moving or spring mass, not the {what} (it moves with the dash-pot setting "
             "the box varies): minimise a mass and bound the "
             f"{what} by requirements.max_{req.objective}")
-    if gov.spring is None:
-        for key, on in (("robust_spring_grade", req.robust_spring_grade is not None),
-                        ("adjusting_nut", req.adjusting_nut > 0)):
-            if on:
-                raise InfeasibleError(
-                    f"{spec.path}: requirements.{key}: a {gov.type_name} governor has no spring "
-                    "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
-    elif not gov.spring_kind.helical and req.robust_spring_grade is not None:
+    if gov.spring is None and req.robust_spring_grade is not None:
+        raise InfeasibleError(
+            f"{spec.path}: requirements.robust_spring_grade: a {gov.type_name} governor has no "
+            "spring (dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+    if gov.spring is not None and not gov.spring_kind.helical and \
+            req.robust_spring_grade is not None:
         raise InfeasibleError(
             f"{spec.path}: requirements.robust_spring_grade: EN 15800 tolerances are for "
             "helical springs, not a leaf spring: tolerance the masses and the dash-pot instead")
-    if (req.dashpot_valve > 0 or req.robust_dashpot > 0) and (
-            spec.engine is None or not spec.load_changes):
-        key = "dashpot_valve" if req.dashpot_valve > 0 else "robust_dashpot"
-        raise InfeasibleError(f"{spec.path}: requirements.{key}: no dash-pot is designed "
-                              "without [engine] and [[load_change]]: drop the key or add them")
+    if req.robust_dashpot > 0 and (spec.engine is None or not spec.load_changes):
+        raise InfeasibleError(f"{spec.path}: requirements.robust_dashpot: no dash-pot is "
+                              "designed without [engine] and [[load_change]]: drop the key or "
+                              "add them")
+    fitter_supported(spec, req)
     if req.min_yield is not None:
         if not tm.states_tolerances(spec, req):
             raise InfeasibleError(
@@ -267,13 +265,27 @@ def supported(spec: Spec, req: Requirements) -> None:
         raise InfeasibleError(f"{spec.path}: {too_much[0]}: {too_much[1]}")
 
 
+def fitter_supported(spec: Spec, req: Requirements) -> None:
+    """Raise a one-line :class:`InfeasibleError` for a fitter's range the governor cannot have:
+    an adjusting nut without a spring, a dash-pot valve without a dash-pot."""
+    gov = spec.governor
+    if gov.spring is None and req.adjusting_nut > 0:
+        raise InfeasibleError(
+            f"{spec.path}: requirements.adjusting_nut: a {gov.type_name} governor has no spring "
+            "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+    if req.dashpot_valve > 0 and (spec.engine is None or not spec.load_changes):
+        raise InfeasibleError(f"{spec.path}: requirements.dashpot_valve: no dash-pot is "
+                              "designed without [engine] and [[load_change]]: drop the key or "
+                              "add them")
+
+
 def yield_allowance(n: int, min_yield: float) -> int:
     """The most of ``n`` sampled governors that may fail while the yield's 95 % Wilson lower
     bound stays at least ``min_yield`` (:func:`govopt.stats.wilson`); -1 where even none
     failing is not enough.
 
     >>> yield_allowance(2000, 0.99), yield_allowance(500, 0.99), yield_allowance(300, 0.99)
-    (10, 0, -1)
+    (11, 0, -1)
     """
     f = -1
     while f + 1 <= n and wilson(n - (f + 1), n)[0] >= min_yield:
