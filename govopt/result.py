@@ -136,7 +136,8 @@ class Result:
 
     def figures(self) -> list[Figure]:
         """The design's reported figures, typed: each a :class:`~govopt.verdict.Figure` with
-        its SI value, unit, group (``"design"``, ``"speed"``, ``"spring"``, ``"classic"``),
+        its SI value, unit, group (``"design"``, ``"speed"``, ``"spring"``, ``"classic"``,
+        ``"made"``: governors made to the spec's tolerances, :func:`govopt.made.figures`),
         symbol and a note (what it means, its source). The text's Design section, the
         notebook's display and :meth:`to_frame` read these fields."""
         st, sd, sp, spec = self.statics, self.spring, self.spring_properties, self.spec
@@ -246,6 +247,10 @@ class Result:
                                note="generalised force"),
                         Figure("coefficient of insensitiveness", cm["insensitiveness"], "",
                                "classic")]
+        if self.made:  # governors made to the spec's tolerances: the yield beside the verdict
+            from .made import figures as made_figures
+
+            out += made_figures(self.made)
         return out
 
     def figure(self, name: str) -> Figure:

@@ -451,7 +451,7 @@ def drawn_design(res: Result) -> tuple[str, Result, str]:
 
             drawn = with_yield(drawn)
             if not _meets(drawn):
-                broken = [f"the yield ({yield_line(drawn.made)})"]
+                broken = [f"the yield ({yield_line(drawn)})"]
         if not broken:
             break
         first_broken = first_broken or broken

@@ -264,11 +264,13 @@ def made_lines(res: Result) -> list[str]:
     """The yield beside the verdict (where the spec states tolerances: ``Result.made``): the
     share of made governors that pass with its interval and the requirement failing most often,
     the worst-case speed band beside the required one, and what they were made to."""
+    from ..made import sampled_words
+
     made = res.made
     if not made:
         return []
     nominal = "PASS" if all(c.passed for c in res.checks) else "FAIL"
-    band, tol, y = made["speed_band"], made["tolerances"], made["yield"]
+    band, tol = made["speed_band"], made["tolerances"]
 
     def rpm(pair) -> str:
         return f"{pair[0] * RPM:.4g}-{pair[1] * RPM:.4g} rpm"
@@ -286,44 +288,19 @@ def made_lines(res: Result) -> list[str]:
         made_to.append(f"set by the fitter's nut +-{tol['adjusting_nut_m'] * 1e3:.3g} mm")
     if tol.get("dashpot_valve_fraction"):
         made_to.append(f"dash-pot valve set +-{100 * tol['dashpot_valve_fraction']:g} %")
-    sampled = (f"{y['samples']} samples (Latin hypercube, seed {y['seed']})" if y["samples"]
-               else "worst case")
-    shown = {c.name: check_name(c, res) for c in res.checks}
     made_as = " as made (before the fitter's setting)" if tol.get("adjusting_nut_m") else ""
-    return [f"{nominal} at nominal; {yield_line(made, lambda n: shown.get(n, n))}",
+    return [f"{nominal} at nominal; {yield_line(res)}",
             f"  worst-case speeds {rpm(band['band_rad_s'])}{made_as} beside {besides}",
-            "  made to " + ", ".join(m for m in made_to if m) + f"; {sampled}"]
+            "  made to " + ", ".join(m for m in made_to if m) + f"; {sampled_words(made)}"]
 
 
-def yield_line(made: dict, name=str) -> str:
-    """The yield in words: ``"82.8 % of made governors pass (95 %: 79.2-86.0 %); most often
-    failing: lowest speed >= speed.inner"`` (``name``: a check's name as the report shows
-    it)."""
-    y = made["yield"]
-    if y["probability"] is None:
-        return "yield not sampled: " + y["note"]
-    if y.get("certified"):
-        text = "100 % of made governors pass (certified: every requirement holds over the " \
-               "whole tolerance box)"
-    else:
-        lo, hi = y["ci95"]
-        text = (f"{_pct(y['probability'])} of made governors pass (95 %: "
-                f"{_pct(lo, False)}-{_pct(hi)})")
-        if y["most_failing"]:
-            text += f"; most often failing: {name(y['most_failing'])}"
-    if y.get("required") is not None:
-        text += (f"; required >= {_pct(y['required'])}: "
-                 + ("met" if y["meets_required"] else "NOT MET"))
-    return text
+def yield_line(res: Result) -> str:
+    """The yield in words (:func:`govopt.made.yield_words`), the checks named as the report
+    names them."""
+    from ..made import yield_words
 
-
-def _pct(p: float, unit: bool = True) -> str:
-    """A probability as a percentage, one decimal (two where it is within 1 % of 0 or 1, so
-    99.62 % is not shown as 100 %)."""
-    v = 100.0 * p
-    digits = 2 if 0 < p < 1 and min(v, 100 - v) < 1 else 1
-    text = f"{v:.{digits}f}".rstrip("0").rstrip(".") if v in (0.0, 100.0) else f"{v:.{digits}f}"
-    return text + (" %" if unit else "")
+    shown = {c.name: check_name(c, res) for c in res.checks}
+    return yield_words(res.made, lambda n: shown.get(n, n))
 
 
 def band_spring_note(spec) -> str:
