@@ -248,7 +248,7 @@ class Result:
                         Figure("coefficient of insensitiveness", cm["insensitiveness"], "",
                                "classic")]
         if self.made:  # governors made to the spec's tolerances: the yield beside the verdict
-            from .made import figures as made_figures
+            from .made_words import figures as made_figures
 
             out += made_figures(self.made)
         return out

@@ -282,6 +282,19 @@ def at(cols: dict, bx: Box, points, i: int = 0) -> dict:
     return rows
 
 
+def made_spring(spec, design: Design) -> tuple[float, float, float, float]:
+    """A made governor's flying and central masses and its spring's rate and free length
+    ``(m, central, kappa, l0)`` (SI): the rate from its section (the type's
+    :meth:`~govopt.governors.base.Governor.spring_rate`) or as the design states it, the free
+    length as made (a number: the design gives it)."""
+    gov = spec.governor
+    if gov.spring is None:
+        return design.flying_mass, design.central_mass or 0.0, 0.0, 0.0
+    kappa = design.spring_stiffness if design.spring_stiffness is not None else \
+        gov.spring_rate(design, spec.material)
+    return design.flying_mass, design.central_mass or 0.0, kappa, design.free_half_length
+
+
 def speed_band(spec, cols: dict, bx: Box) -> dict:
     """The worst case of design 0's equilibrium speeds over its box, exact (at the corners: see
     the module's text), SI: per configuration its least and largest speed (``lowest_rad_s``,
@@ -296,11 +309,11 @@ def speed_band(spec, cols: dict, bx: Box) -> dict:
     for i in range(len(pts["flying_mass"])):
         design = Design(**{f: (None if not np.isfinite(v[i]) else float(v[i]))
                            for f, v in pts.items()})
-        sd = statics.spring_design(spec, design)
-        t = statics.terms(spec, x, sd.m, sd.central)
+        m, central, kappa, l0 = made_spring(spec, design)
+        t = statics.terms(spec, x, m, central)
         with np.errstate(invalid="ignore"):
-            w = np.sqrt(t.omega_squared(sd.kappa, sd.l0))
-            f2, r2 = statics.band_speeds_squared(t, sd.kappa, sd.l0, gov.friction(x, design))
+            w = np.sqrt(t.omega_squared(kappa, l0))
+            f2, r2 = statics.band_speeds_squared(t, kappa, l0, gov.friction(x, design))
             f1, r1 = statics.band_extremes(f2, r2)
         lo = w if lo is None else np.fmin(lo, w)
         hi = w if hi is None else np.fmax(hi, w)
@@ -326,6 +339,6 @@ def speed_band_each(spec, cols: dict, bx: Box) -> dict[str, list[float]]:
 
 
 __all__ = ["DISTRIBUTION", "FIELDS", "SOURCES", "Box", "at", "box", "corners",
-           "fitter_settings", "kind", "notes", "offsets", "speed_band", "speed_band_each",
-           "spring_grade",
-           "spring_tolerances", "states_tolerances", "stated", "wire_standard"]
+           "fitter_settings", "kind", "made_spring", "notes", "offsets", "speed_band",
+           "speed_band_each", "spring_grade", "spring_tolerances", "states_tolerances", "stated",
+           "wire_standard"]

@@ -217,7 +217,7 @@ def made_yield(res, ax) -> None:
     (exact, at the box's corners), the sampled governors' speeds at both ends of the range, and
     the required band; the title gives the yield in the reports' words
     (:func:`govopt.made.yield_words`)."""
-    from ..made import yield_words
+    from ..made_words import yield_words
 
     made, st, spec = res.made, res.statics, res.spec
     band, y = made["speed_band"], made["yield"]

@@ -264,7 +264,7 @@ def made_lines(res: Result) -> list[str]:
     """The yield beside the verdict (where the spec states tolerances: ``Result.made``): the
     share of made governors that pass with its interval and the requirement failing most often,
     the worst-case speed band beside the required one, and what they were made to."""
-    from ..made import sampled_words
+    from ..made_words import sampled_words
 
     made = res.made
     if not made:
@@ -297,7 +297,7 @@ def made_lines(res: Result) -> list[str]:
 def yield_line(res: Result) -> str:
     """The yield in words (:func:`govopt.made.yield_words`), the checks named as the report
     names them."""
-    from ..made import yield_words
+    from ..made_words import yield_words
 
     shown = {c.name: check_name(c, res) for c in res.checks}
     return yield_words(res.made, lambda n: shown.get(n, n))

@@ -125,9 +125,12 @@ def grade_tolerances(spec, grade: int) -> list[Tolerance]:
     ds = spec.design
     if ds is None or tm.kind(spec) is None or ds.wire_diameter is None or \
             ds.coil_radius is None or ds.active_turns is None:
-        raise StudyError("needs a helical spring given by its section in [design] "
+        designed = "" if ds is not None or tm.kind(spec) is None else (
+            "; a spec to design: design it first (govopt design SPEC -o designed.toml) and "
+            "study the design")
+        raise StudyError("needs a helical spring in [design], given by its section "
                          "(wire_diameter, coil_radius, active_turns): EN 15800's tolerances "
-                         "follow from it", where="tolerance grade")
+                         "follow from it" + designed, where="tolerance grade")
     req = spec.requirements
     cols = design_arrays(spec, [ds])
     bx = tm.box(spec, cols, grade, 0.0 if req is None else req.robust_masses,
