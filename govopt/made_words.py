@@ -15,7 +15,7 @@ def percent(p: float, unit: bool = True) -> str:
     """A probability as a percentage, one decimal (two where it is within 1 % of 0 or 1, so
     99.62 % is not shown as 100 %).
 
-    >>> percent(0.828), percent(0.99615), percent(1.0), percent(0.7923, False)
+    >>> percent(0.828), percent(0.9962), percent(1.0), percent(0.7923, False)
     ('82.8 %', '99.62 %', '100 %', '79.2')
     """
     v = 100.0 * p
