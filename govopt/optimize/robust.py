@@ -389,24 +389,30 @@ def robust_search(spec: Spec, req: Requirements):
         + "or widen the bounds (or the speed range)")
 
 
-def _search(spec: Spec, req: Requirements, stats: dict, failing: dict):
-    """:func:`robust_search`'s loop: the candidate found with its stats and worst case, else
-    None (``stats`` and ``failing`` filled in)."""
-    if req.min_yield is not None:
-        return _yield_search(spec, req, stats, failing)
+def _candidates(spec: Spec, req: Requirements, stats: dict):
+    """The searches' batches of candidates feasible at nominal values, in objective order, at
+    most :data:`MAX_CHECKED` of them (counted in ``stats``): ``(design columns, candidates,
+    candidates visited, their tolerance box)``."""
     batches = spring_batches if spec.governor.spring is not None else dead_weight_batches
     for dcols, cands, visited in batches(spec, req):
         if stats["nominal_feasible_checked"] >= MAX_CHECKED:
             break
         if not cands:
             continue
-        n = len(cands)
         if spec.engine is None or not spec.load_changes:
-            dcols["dashpot"] = np.full(n, np.nan)
-        box = candidate_box(spec, req, dcols)
-        finite = np.all([np.isfinite(v) for v in box.fields.values()], axis=0) \
-            if box.fields else np.ones(n, bool)
-        stats["nominal_feasible_checked"] += n
+            dcols["dashpot"] = np.full(len(cands), np.nan)
+        stats["nominal_feasible_checked"] += len(cands)
+        yield dcols, cands, visited, candidate_box(spec, req, dcols)
+
+
+def _search(spec: Spec, req: Requirements, stats: dict, failing: dict):
+    """:func:`robust_search`'s loop: the candidate found with its stats and worst case, else
+    None (``stats`` and ``failing`` filled in)."""
+    if req.min_yield is not None:
+        return _yield_search(spec, req, stats, failing)
+    for dcols, cands, visited, box in _candidates(spec, req, stats):
+        n = len(cands)
+        finite = box.finite()
         if not finite.any():  # outside the tolerance tables: not certifiable
             continue
         frame, *_, signs, _ = corners(spec, req, {k: v[finite] for k, v in dcols.items()},
@@ -448,7 +454,6 @@ def _yield_search(spec: Spec, req: Requirements, stats: dict, failing: dict):
     yield at 95 % confidence, is chosen: ``(Candidate, stats, worst case or None)``, the yield
     in ``stats["_yield"]``; None when none is (``failing``: the requirements failing in the
     samples; ``stats["_best"]``: the best candidate seen)."""
-    batches = spring_batches if spec.governor.spring is not None else dead_weight_batches
     n, seed, fitter = req.robust_samples, req.robust_seed, mk.fitter_of(req)
     allowance = yield_allowance(n, req.min_yield)
     stats.update(candidates_sampled=0, dropped_early=0, certified_by_the_worst_case=0)
@@ -456,16 +461,7 @@ def _yield_search(spec: Spec, req: Requirements, stats: dict, failing: dict):
     def give_up(fails: int, done: int) -> bool:
         return fails > allowance or (done < n and wilson(fails, done)[0] > 1.0 - req.min_yield)
 
-    for dcols, cands, visited in batches(spec, req):
-        if stats["nominal_feasible_checked"] >= MAX_CHECKED:
-            break
-        if not cands:
-            continue
-        m = len(cands)
-        if spec.engine is None or not spec.load_changes:
-            dcols["dashpot"] = np.full(m, np.nan)
-        box = candidate_box(spec, req, dcols)
-        stats["nominal_feasible_checked"] += m
+    for dcols, cands, visited, box in _candidates(spec, req, stats):
         for j in np.nonzero(box.finite())[0]:  # outside the tolerance tables: not made
             cols, bx = {k: v[j:j + 1] for k, v in dcols.items()}, box.take(slice(j, j + 1))
             stats["candidates_sampled"] += 1
@@ -569,25 +565,10 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     work = Work(limits.MAX_MONTE_CARLO_SECONDS)
     with counting(work):  # the samples (within half the limit: work_errors)
         frame = _evaluate(spec, req, rows, torque)
-    ok = holds(frame)
-    adjusted, stopped = 0, 0
-    nut, valve = (x[1:] for x in nut_settings(req))
-    for part in [p for p in np.array_split(np.arange(nut.size), ADJUSTMENT_GROUPS) if p.size]:
-        bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones, least change first
-        if bad.size == 0:
-            break
-        rep = {k: np.repeat(v[bad], part.size) for k, v in rows.items()}
-        rep["free_half_length"] = rep["free_half_length"] + np.tile(nut[part], bad.size)
-        rep["dashpot"] = rep["dashpot"] * np.tile(valve[part], bad.size)
-        try:
-            with counting(work):
-                fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], part.size))) \
-                    .reshape(bad.size, part.size).any(axis=1)
-        except WorkLimit:  # not tried at the other settings: they count as failing
-            stopped = int(bad.size)
-            break
-        ok[bad] = fixed
-        adjusted += int(fixed.sum())
+    with counting(work):  # the fitter adjusts the failing ones, least change first; those
+        # not tried at every setting within the limit count as failing
+        ok, adjusted, stopped = mk.fit(spec, rows, torque, holds(frame), req.adjusting_nut,
+                                       req.dashpot_valve, _vibration(spec, req))
     k = int(ok.sum())
     lo, hi = wilson(k, n)
     # the checks that fail in the sample before any adjustment (a failure inside a box whose

@@ -182,20 +182,9 @@ def characteristic(res, ax) -> None:
         ax.legend(loc="upper left")
 
 
-def speed_band(res, ax) -> None:
-    """A robust design's speed band under its tolerances: the equilibrium speed at
-    nominal values, and the least and largest over the points of the tolerance box evaluated
-    (each at the fitter's setting), against the configuration, with the required band; the
-    title gives what robustness cost in the objective."""
-    band = res.optimisation["robust"]["speed_band"]
-    st, spec = res.statics, res.spec
-    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
-    x, _ = _shown(res, xs)
-    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
-    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
-                    label="over the tolerance box (after the fitter's setting)")
-    xn, _ = _shown(res, st.alpha)
-    ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
+def _speed_axes(res, ax) -> None:
+    """A speed band plot's required band (dashed green), axis labels and rad/s axis."""
+    spec = res.spec
     if spec.speed is not None:
         a, b = spec.speed.omega_inner * RPM, spec.speed.omega_outer * RPM
         ax.axhline(a, color="tab:green", ls="--", lw=1)
@@ -204,6 +193,23 @@ def speed_band(res, ax) -> None:
     ax.set_xlabel(_config_label(res))
     ax.set_ylabel("speed (rpm)")
     _rad_s_axis(ax)
+
+
+def speed_band(res, ax) -> None:
+    """A robust design's speed band under its tolerances: the equilibrium speed at
+    nominal values, and the least and largest over the points of the tolerance box evaluated
+    (each at the fitter's setting), against the configuration, with the required band; the
+    title gives what robustness cost in the objective."""
+    band = res.optimisation["robust"]["speed_band"]
+    st = res.statics
+    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
+    x, _ = _shown(res, xs)
+    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
+    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
+                    label="over the tolerance box (after the fitter's setting)")
+    xn, _ = _shown(res, st.alpha)
+    ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
+    _speed_axes(res, ax)
     cost = res.optimisation["robust"].get("cost") or {}
     more = cost.get("increase_percent")
     _title(res, ax, "speed band under the tolerances" + (
@@ -232,14 +238,7 @@ def made_yield(res, ax) -> None:
     for i, (at, w) in enumerate(e for e in ends if e[1]):
         ax.plot([at, at], [w[0] * RPM, w[1] * RPM], color="k", lw=3, solid_capstyle="butt",
                 label=f"{y['samples']} sampled governors (as made)" if i == 0 else None)
-    if spec.speed is not None:
-        a, b = spec.speed.omega_inner * RPM, spec.speed.omega_outer * RPM
-        ax.axhline(a, color="tab:green", ls="--", lw=1)
-        ax.axhline(b, color="tab:green", ls="--", lw=1,
-                   label=f"spec's speed range {a:.4g}-{b:.4g} rpm")
-    ax.set_xlabel(_config_label(res))
-    ax.set_ylabel("speed (rpm)")
-    _rad_s_axis(ax)
+    _speed_axes(res, ax)
     words = yield_words(made)
     ax.set_title(f"{spec.name}: made to its tolerances\n{_wrapped(words, 90)}", fontsize=9)
     ax.legend(loc="upper left", fontsize=8)
