@@ -269,7 +269,7 @@ def load_change_rows(spec, name: str) -> list[Row]:
     req = spec.requirements
     unit = SI_UNITS[spec.governor.coordinate]
     cubic = spec.governor.method(spec).named("cubic")  # the type's own load-change model
-    rows = [Row(f"Hurwitz margin eq. (32): {name}", ">=", "", lambda ev: ev["hurwitz"],
+    rows = [Row(f"Hurwitz margin: {name}", ">=", "", lambda ev: ev["hurwitz"],
                 _const(req.hurwitz_margin if req else 0.0),
                 spec.governor.method(spec).text("hurwitz"), group="dynamics",
                 scale=_const(1.0)),

@@ -233,7 +233,7 @@ class Result:
                     Figure("effort", cm["effort"], str(cm.get("effort_unit", "N*m")), "classic",
                            note=cm.get("effort_note") or change),
                     Figure("power", cm["power"], str(cm.get("power_unit", "J")), "classic",
-                           note=cm.get("effort_note") or change)]
+                           note=cm.get("power_note") or cm.get("effort_note") or change)]
             for key, (label, unit) in GEOMETRY.items():  # the type's own geometry
                 g = (cm.get("geometry") or {}).get(key)
                 if g:
