@@ -193,13 +193,19 @@ class Requirements:
     dashpot_valve: float = 0.0
     robust_samples: int = 2000  # Monte-Carlo verification: samples and seed
     robust_seed: int = 0
+    #: the least yield of made governors (:mod:`govopt.made`): the design search keeps only
+    #: designs whose yield under the stated tolerances is at least this; None: not asked
+    min_yield: float | None = None
 
     @property
     def robust(self) -> bool:
-        """Whether the requirements ask for a tolerance box (robust design)."""
+        """Whether the requirements ask for a design over a tolerance box (robust design: a
+        ``robust_*`` spread, every check over the box) or for a yield (``min_yield``). The
+        fitter's ranges alone (``adjusting_nut``, ``dashpot_valve``) ask for neither: they say
+        how a made governor is set, which the yield beside the verdict counts."""
         return (self.robust_spring_grade is not None or self.robust_dashpot > 0
                 or self.robust_masses > 0 or self.robust_torque_slope > 0
-                or self.adjusting_nut > 0 or self.dashpot_valve > 0)
+                or self.min_yield is not None)
 
 
 @dataclass(frozen=True)

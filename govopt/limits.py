@@ -87,6 +87,9 @@ VIBRATION_SECONDS, VIBRATION_SECONDS_PER_POINT = 4e-3, 1.5e-6
 #: a spring's own checks, design by design (a leaf's over the configurations: 9 ms at 31, 99 ms
 #: at 1001; a wire grade's fatigue and the spring maker's checks: ~1.5 ms)
 SPRING_CHECK_SECONDS, SPRING_CHECK_SECONDS_PER_POINT = 6e-3, 1e-4
+#: a wire grade's checks of a helical spring, design by design (the static table, fatigue and
+#: the spring maker's checks): 0.9-1.1 ms
+WIRE_CHECK_SECONDS = 1.5e-3
 #: Hamabe's friction strokes (eqs. 42-46) of one load change of one design with a friction band:
 #: 15-20 ms
 FRICTION_RUN_SECONDS = 2.5e-2
@@ -96,6 +99,11 @@ MAX_ROBUST_SEARCH_SECONDS = 30.0
 #: the robust design's Monte-Carlo verification (its samples, then the fitter's adjustment of
 #: those that fail), estimated CPU seconds at most; the samples alone at most half of it
 MAX_MONTE_CARLO_SECONDS = 20.0
+
+
+#: the yield beside the verdict (:mod:`govopt.made`: its samples of made governors), estimated
+#: CPU seconds at most: fewer samples where each costs more
+MAX_YIELD_SECONDS = 2.0
 
 
 #: one candidate's dash-pot window in ``govopt design``'s search
@@ -155,10 +163,11 @@ def charge(seconds: float, items: int = 0) -> None:
 
 
 def evaluation_seconds(points: int, *, vibration: bool = False, spring_checks: bool = False,
-                       friction_runs: int = 0) -> float:
+                       friction_runs: int = 0, wire_checks: bool = False) -> float:
     """Estimated CPU seconds of one design's evaluation in a bulk frame at ``points``
     configurations, with the parts that run design by design: a forced ``vibration``, the
-    spring's own checks (``spring_checks``), and ``friction_runs`` (load changes run with
+    spring's own checks (``spring_checks``: a type's own spring, a leaf), a wire grade's checks
+    of a helical spring (``wire_checks``), and ``friction_runs`` (load changes run with
     Hamabe's friction strokes). See the constants above for what each was measured at.
 
     >>> round(evaluation_seconds(31) * 1e3, 3), round(evaluation_seconds(31, vibration=True), 4)
@@ -168,6 +177,7 @@ def evaluation_seconds(points: int, *, vibration: bool = False, spring_checks: b
             + (VIBRATION_SECONDS + VIBRATION_SECONDS_PER_POINT * points if vibration else 0.0)
             + (SPRING_CHECK_SECONDS + SPRING_CHECK_SECONDS_PER_POINT * points
                if spring_checks else 0.0)
+            + (WIRE_CHECK_SECONDS if wire_checks else 0.0)
             + FRICTION_RUN_SECONDS * friction_runs)
 
 

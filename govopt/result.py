@@ -53,6 +53,10 @@ class Result:
     #: the helical spring's sheet for the spring maker, fatigue loads and manufacturing spread
     #: (:class:`govopt.analysis.spring_engineering.SpringReport`); None without a wire spring
     spring_report: Any = None
+    #: governors made to the spec's tolerances (:mod:`govopt.made`): the tolerances, the yield
+    #: beside the verdict and the worst-case speed band beside the required one (SI); None
+    #: where the spec states no tolerance (or the yield was not asked for)
+    made: dict | None = None
     #: the one evaluator's record of this design (:class:`govopt.evaluator.Evaluation` of one
     #: design): its figures and check table, the row a study stores (:func:`govopt.bulk.result_row`)
     evaluation: Any = field(default=None, repr=False)
@@ -132,7 +136,8 @@ class Result:
 
     def figures(self) -> list[Figure]:
         """The design's reported figures, typed: each a :class:`~govopt.verdict.Figure` with
-        its SI value, unit, group (``"design"``, ``"speed"``, ``"spring"``, ``"classic"``),
+        its SI value, unit, group (``"design"``, ``"speed"``, ``"spring"``, ``"classic"``,
+        ``"made"``: governors made to the spec's tolerances, :func:`govopt.made.figures`),
         symbol and a note (what it means, its source). The text's Design section, the
         notebook's display and :meth:`to_frame` read these fields."""
         st, sd, sp, spec = self.statics, self.spring, self.spring_properties, self.spec
@@ -242,6 +247,10 @@ class Result:
                                note="generalised force"),
                         Figure("coefficient of insensitiveness", cm["insensitiveness"], "",
                                "classic")]
+        if self.made:  # governors made to the spec's tolerances: the yield beside the verdict
+            from .made_words import figures as made_figures
+
+            out += made_figures(self.made)
         return out
 
     def figure(self, name: str) -> Figure:
@@ -389,4 +398,6 @@ class Result:
         out.update(self.dynamics)
         if self.optimisation:  # the optimiser's record (govopt.optimize.record), as spring's
             out["optimisation"] = self.optimisation
+        if self.made is not None:
+            out["made"] = self.made
         return jsonable(out)

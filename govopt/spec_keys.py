@@ -263,17 +263,27 @@ def requirements_table(kind) -> Table:
         Key("robust_torque_slope", "number", "robust design: the engine's torque slope +- "
                                              "this fraction",
             default=_REQ.robust_torque_slope, nonnegative=True, high=0.5),
-        Key("adjusting_nut", "length", "robust design: the fitter adjusts the spring's free "
-                                       "length by a nut, +- this", default=_REQ.adjusting_nut,
+        Key("adjusting_nut", "length", "made governors: the fitter adjusts the spring's free "
+                                       "length by a nut, +- this (read by robust design and "
+                                       "the yield)", default=_REQ.adjusting_nut,
             nonnegative=True),
-        Key("dashpot_valve", "number", "robust design: the fitter sets the dash-pot valve "
-                                       "within +- this fraction", default=_REQ.dashpot_valve,
+        Key("dashpot_valve", "number", "made governors: the fitter sets the dash-pot valve "
+                                       "within +- this fraction (read by robust design and "
+                                       "the yield)", default=_REQ.dashpot_valve,
             nonnegative=True, high=0.9),
         Key("robust_samples", "count", "robust design: Monte-Carlo verification samples",
             default=_REQ.robust_samples, low=9, high=limits.MAX_ROBUST_SAMPLES + 1,
             range_text=f"[10, {limits.MAX_ROBUST_SAMPLES}]"),
-        Key("robust_seed", "count", "robust design: the Monte-Carlo seed",
+        Key("robust_seed", "count", "robust design: the Monte-Carlo seed (and the seed of the "
+                                   "yield's samples)",
             default=_REQ.robust_seed, nonnegative=True),
+        Key("min_yield", "number", "the least yield: the share of governors made to the stated "
+                                   "tolerances (the wire grade's tolerance_grade, or "
+                                   "robust_spring_grade, and the robust_* spreads) that meet "
+                                   "every requirement; the design search keeps only designs "
+                                   "whose yield is at least this at 95 % confidence",
+            default=None, high=1.0, example=0.99, range_text="(0, 1), e.g. 0.99",
+            source="the yield's Wilson interval (Wilson 1927)"),
         *(kind.requirements if kind is not None else ()),
     ), when="read by govopt design")
 

@@ -45,7 +45,6 @@ from ..springs import fatigue as ft
 from ..springs import helical as hx
 from ..springs import materials as mt
 from ..springs import sheet as sh
-from ..springs import tolerances as tl
 from ..verdict import Check, Figure
 from . import statics
 
@@ -250,40 +249,28 @@ class Spread:
 
 
 def spread(spec, sd, sheet: sh.SpringSheet) -> Spread:
-    """The rate from the wire and coil tolerances (exact worst case, EN 15800 coil diameter,
-    EN 10270 wire), the free length's tolerance (EN 15800 ``A_L0`` for a compression spring),
-    and the equilibrium speeds at both ends of the range at the four corners (``kappa`` low/high
-    x ``l0`` -+ tolerance): the spread of the governed speed range."""
-    t, notes = sheet.tolerances, []
-    d_tol, D_tol = t.get("A_d", 0.0), t.get("A_D", math.nan)
-    if "A_d" not in t:
-        notes.append("no wire standard with tolerances for this material: wire diameter "
-                     "taken exact")
-    if not math.isfinite(D_tol):
-        notes.append("coil diameter or index outside EN 15800 Table 1: coil diameter taken "
-                     "exact")
-        D_tol = 0.0
-    d, D = sd.d, 2.0 * sd.r
-    lo, hi = tl.rate_spread(d, D, sd.n, 1.0, d_tol, D_tol)
-    nominal = hx.stiffness(d, D, sd.n, 1.0)
-    kappa = (float(sd.kappa * lo / nominal), float(sd.kappa * hi / nominal))
-    if sheet.kind == "compression" and math.isfinite(t.get("A_L0", math.nan)):
-        l0_tol = t["A_L0"] / spec.governor.spring_length_factor
-    else:
-        l0_tol = 0.0
-        notes.append("free length (or initial tension) tolerance of an extension spring by "
-                     "agreement with the maker (EN 15800 covers compression springs): not "
-                     "included")
-    gov = spec.governor
-    K = np.array(kappa)[:, None]
-    L0 = sd.l0 + np.array([-l0_tol, l0_tol])[None, :]
-    out = []
-    for x in (gov.x_inner, gov.x_outer):
-        with np.errstate(invalid="ignore"):
-            w = np.sqrt(statics.omega_squared(spec, x, sd.m, K, L0, sd.central))
-        w = w[np.isfinite(w)]  # no equilibrium at some corner of the spread: left out
-        out.append((float(w.min()), float(w.max())) if w.size else (math.nan, math.nan))
-    return Spread(float(d_tol), float(D_tol), kappa, float(l0_tol), out[0], out[1], tuple(notes))
+    """The spring's spread under the tolerance model of a made governor
+    (:mod:`govopt.analysis.tolerance`) at the sheet's EN 15800 grade: the wire (EN 10270), coil
+    diameter (EN 15800 Table 1) and free length (EN 15800 ``A_L0`` of a compression spring)
+    tolerances, the rate's range over them, and the equilibrium speeds' worst case at both ends
+    of the range (at the box's corners, exact: :func:`govopt.analysis.tolerance.speed_band`):
+    the spread of the governed speed range."""
+    from . import tolerance as tm
+
+    cols = {"flying_mass": np.array([sd.m]), "wire_diameter": np.array([sd.d]),
+            "coil_radius": np.array([sd.r]), "active_turns": np.array([sd.n]),
+            "free_half_length": np.array([sd.l0]), "central_mass": np.array([sd.central]),
+            "flying_inertia": np.array([sd.inertia if sd.inertia_given else np.nan])}
+    bx = tm.box(spec, cols, sheet.tolerance_grade).known()
+    half = {k: float(bx.fields[k][0]) for k in ("wire_diameter", "coil_radius",
+                                                  "free_half_length")}
+    d = sd.d + np.array([-1.0, 1.0]) * half["wire_diameter"]
+    r = sd.r - np.array([-1.0, 1.0]) * half["coil_radius"]
+    kappa = hx.stiffness_r(d, r, sd.n, spec.material.shear_modulus)
+    band = tm.speed_band(spec, cols, bx)
+    return Spread(half["wire_diameter"], 2.0 * half["coil_radius"],
+                  (float(kappa[0]), float(kappa[1])), half["free_half_length"],
+                  tuple(band["inner_rad_s"]), tuple(band["outer_rad_s"]), bx.notes)
 
 
 # ---------------------------------------------------------------- the report

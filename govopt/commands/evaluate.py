@@ -160,10 +160,13 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
 
         check_plot_dir(plots, spec.stem, overwrite=force, inputs=[spec],
                        others=[p for p, _ in outputs])
+    from ..made import with_yield
+
     res = compute()
     if output is not None:  # rounded as drawn, and evaluated again: the report is its
         text, res, _ = drawn_design(res)
         write_design_spec(res, output, overwrite=force, text=text)
+    res = with_yield(res)  # governors made to the spec's tolerances: the yield
     if xlsx is not None:
         from ..report.excel import write_workbook
 

@@ -56,115 +56,63 @@ from __future__ import annotations
 import itertools
 import math
 import time
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
 from .. import limits
+from .. import made as mk
+from ..analysis import tolerance as tm
+from ..analysis.tolerance import Box
 from ..bulk import margin_column, passed_column, value_column
 from ..errors import InfeasibleError
+from ..made import (  # noqa: F401 (BOUND_NAMES: the search bounds, for its readers)
+    ADJUSTMENT_GROUPS,
+    BOUND_NAMES,
+    TORQUE_LEVELS,
+    check_margins,
+    holds,
+)
 from ..requirements import PASS_TOL
 from ..spec import Design, Requirements, Spec
 from ..stats import wilson
 from . import design as dz
 
+#: the checks a made governor must meet (all but the search bounds')
+robust_checks = mk.requirement_checks
+
 #: the fitter's settings of the adjusting nut and of the dash-pot valve tried over each one's
 #: range (odd: the nominal setting included)
 NUT_SETTINGS = 9
-#: the torque slope's levels in the Monte-Carlo sample (the slope is a spec value, not a design
-#: column: each level is one bulk evaluation)
-TORQUE_LEVELS = 11
 #: batches of candidates evaluated at their corners, and the most checked before giving up
 BATCHES = (8, 64, 256)
-#: the Monte-Carlo's failing samples are adjusted by the fitter in this many groups of settings,
-#: least change first (a sample fixed by a small change is not tried at the others)
-ADJUSTMENT_GROUPS = 3
 MAX_CHECKED = 1024
-#: the search bounds' rows (limits of the catalogue search, not of a made part)
-BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diameter <= max",
-               "coil radius >= min", "coil radius <= max", "active turns >= min",
-               "active turns <= max", "leaf width", "leaf thickness")
+#: the yield's samples of a candidate (``requirements.min_yield``) are evaluated in blocks of
+#: these sizes (the last repeated), and the candidate is dropped after a block where its yield
+#: cannot reach the requirement (:func:`yield_search`)
+YIELD_BLOCKS = (16, 48, 192, 448)
 
 
 def nominal_requirements(req: Requirements) -> Requirements:
     """The requirements without the tolerance box (the nominal design's)."""
     return replace(req, robust_spring_grade=None, robust_dashpot=0.0, robust_masses=0.0,
-                   robust_torque_slope=0.0, adjusting_nut=0.0, dashpot_valve=0.0)
-
-
-def spring_tolerances(spec: Spec, grade: int, d, r, n):
-    """The spring maker's tolerances of helical springs ``(d, r, n)`` (m, m, -; arrays), as the
-    spring sheet states them: ``(d_tol, r_tol, l0_tol)``, +- m, on the wire diameter (EN 10270
-    per the wire grade's standard; 0 without one), the mean coil radius (``A_D / 2``, EN 15800
-    Table 1; NaN outside the table) and the free length in the type's form (``A_L0`` of a
-    compression spring, EN 15800, over ``spring_length_factor``; 0 for an extension spring)."""
-    from ..analysis import spring_engineering as se
-    from ..springs import helical as hx
-    from ..springs import sheet
-    from ..springs import tolerances as tl
-
-    d, r, n = (np.asarray(v, dtype=float) for v in (d, r, n))
-    mat = se.wire(spec.material)
-    D = 2.0 * r
-    r_tol = tl.coil_diameter_tolerance(D, D / d, grade) / 2.0
-    std = sheet.wire_standard(mat)
-    d_tol = tl.wire_diameter_tolerance(d, std) if std else np.zeros_like(d)
-    if se.KINDS[spec.governor.spring] == "compression":
-        rate = hx.stiffness(d, D, n, np.asarray(mat.shear_modulus(d), dtype=float))
-        l0_tol = tl.free_length_tolerance(d, D, n, rate, grade) \
-            / spec.governor.spring_length_factor
-    else:
-        l0_tol = np.zeros_like(d)
-    return d_tol + 0.0 * d, r_tol + 0.0 * d, l0_tol + 0.0 * d
+                   robust_torque_slope=0.0, adjusting_nut=0.0, dashpot_valve=0.0,
+                   min_yield=None)
 
 
 def box_notes(spec: Spec, req: Requirements) -> list[str]:
-    """What the tolerance box leaves out, in words."""
-    from ..analysis import spring_engineering as se
-    from ..springs import sheet
-
-    notes = []
-    if req.robust_spring_grade is not None:
-        if sheet.wire_standard(se.wire(spec.material)) is None:
-            notes.append("no wire standard with tolerances for this material: wire diameter "
-                         "taken exact")
-        if se.KINDS[spec.governor.spring] != "compression":
-            notes.append("free length of an extension spring by agreement with the maker "
-                         "(EN 15800 covers compression springs): not toleranced")
-    return notes
-
-
-@dataclass
-class Box:
-    """Tolerance half-widths of candidates (arrays, SI): the design columns ``fields`` (name ->
-    half-width, absolute) and the torque slope's relative half-width."""
-
-    fields: dict
-    torque: float
-
-    def active(self) -> list[str]:
-        return [k for k, v in self.fields.items() if np.any(v > 0)]
+    """What the tolerance box leaves out, in words (:func:`govopt.analysis.tolerance.notes`)."""
+    return tm.notes(spec, tm.spring_grade(spec, req))
 
 
 def candidate_box(spec: Spec, req: Requirements, cols: dict) -> Box:
-    """The tolerance box of candidates given as design columns ``cols`` (arrays)."""
-    n = len(cols["flying_mass"])
-    out = {}
-    if req.robust_spring_grade is not None:
-        if spec.governor.spring_kind is None or not spec.governor.spring_kind.helical:
-            raise InfeasibleError(f"{spec.path}: requirements.robust_spring_grade: EN 15800 "
-                                  "tolerances are for helical springs")
-        d_tol, r_tol, l0_tol = spring_tolerances(spec, req.robust_spring_grade,
-                                                 cols["wire_diameter"], cols["coil_radius"],
-                                                 cols["active_turns"])
-        out.update(wire_diameter=d_tol, coil_radius=r_tol, free_half_length=l0_tol)
-    if req.robust_dashpot > 0:
-        out["dashpot"] = req.robust_dashpot * np.nan_to_num(cols["dashpot"])
-    if req.robust_masses > 0:
-        out["flying_mass"] = req.robust_masses * cols["flying_mass"]
-        out["central_mass"] = req.robust_masses * np.nan_to_num(cols["central_mass"])
-    return Box({k: np.broadcast_to(v, (n,)).astype(float) for k, v in out.items()},
-               req.robust_torque_slope)
+    """The tolerance box of candidates given as design columns ``cols`` (arrays): the tolerance
+    model's (:func:`govopt.analysis.tolerance.stated`)."""
+    grade = tm.spring_grade(spec, req)
+    if grade is not None and tm.kind(spec) is None:
+        raise InfeasibleError(f"{spec.path}: requirements.robust_spring_grade: EN 15800 "
+                              "tolerances are for helical springs")
+    return tm.stated(spec, cols, req)
 
 
 WorkLimit, Work, counting = limits.WorkLimit, limits.Work, limits.counting
@@ -179,32 +127,15 @@ def _vibration(spec: Spec, req: Requirements) -> bool:
 
 def row_seconds(spec: Spec, req: Requirements) -> float:
     """Estimated CPU seconds of one robust evaluation of a design of ``spec``
-    (:func:`govopt.limits.evaluation_seconds`): the parts that run design by design where the
-    evaluator runs them (:func:`govopt.evaluator.core`)."""
-    from ..analysis import statics
-    from ..evaluator import overridden
-
-    gov = spec.governor
-    checks = gov.spring is not None and (overridden(gov, "spring_checks") or (
-        spec.material is not None and getattr(spec.material, "grade", None) is not None))
-    vibration = (_vibration(spec, req) or checks) and overridden(gov, "vibration")
-    friction = 0
-    if spec.engine is not None and spec.load_changes:
-        to = np.array([lc.alpha_to for lc in spec.load_changes])
-        friction = int(np.count_nonzero(np.asarray(gov.friction(to)) > 0))
-    return limits.evaluation_seconds(statics.configurations(spec).size, vibration=vibration,
-                                     spring_checks=checks, friction_runs=friction)
+    (:func:`govopt.made.row_seconds`, the forced vibration where :func:`_vibration` asks it)."""
+    return mk.row_seconds(spec, _vibration(spec, req))
 
 
 def _dimensions_at_most(spec: Spec, req: Requirements) -> int:
     """How many quantities a candidate's box tolerances at most (:func:`candidate_box`)."""
-    from ..analysis import spring_engineering as se
-    from ..springs import sheet
-
     k = 0
-    if req.robust_spring_grade is not None and spec.governor.spring is not None:
-        k += 1 + (sheet.wire_standard(se.wire(spec.material)) is not None) + (
-            se.KINDS[spec.governor.spring] == "compression")
+    if tm.spring_grade(spec, req) is not None and tm.kind(spec) is not None:
+        k += 1 + (tm.wire_standard(spec) is not None) + (tm.kind(spec) == "compression")
     if req.robust_dashpot > 0:
         k += 1
     if req.robust_masses > 0:
@@ -242,55 +173,15 @@ def work_errors(spec: Spec, req: Requirements):
 
 def _evaluate(spec: Spec, req: Requirements, cols: dict, torque: np.ndarray):
     """Bulk evaluation of design columns, each row at its relative torque-slope change
-    ``torque`` (a few levels, one evaluation each): the frame, rows in order. The running
-    :class:`Work` (:func:`counting`) is charged first."""
-    import pandas as pd
-
-    from ..bulk import evaluate_many
-
-    limits.charge(len(torque) * row_seconds(spec, req), len(torque))
-    vibration = _vibration(spec, req)
-    frames, index = [], []
-    for level in np.unique(torque):
-        sel = np.nonzero(torque == level)[0]
-        s = spec if level == 0 else replace(spec, engine=replace(
-            spec.engine, torque_slope=spec.engine.torque_slope * (1.0 + level)))
-        frames.append(evaluate_many(s, {k: v[sel] for k, v in cols.items()},
-                                    vibration=vibration))
-        index.append(sel)
-    frame = pd.concat(frames, ignore_index=True)
-    return frame.iloc[np.argsort(np.concatenate(index), kind="stable")].reset_index(drop=True)
-
-
-def robust_checks(frame) -> list[str]:
-    """The checks of a bulk frame that the tolerance box must keep (all but the bounds')."""
-    from ..bulk import check_names
-
-    return [c for c in check_names(frame.columns) if not any(b in c for b in BOUND_NAMES)]
-
-
-def holds(frame) -> np.ndarray:
-    """Rows where every robust check holds (a check that does not apply holds; an error row
-    does not)."""
-    error = (frame["status"] == "error").to_numpy(dtype=bool)
-    return ~error & np.all(check_margins(frame) >= PASS_TOL, axis=1)
+    ``torque`` (:func:`govopt.made.evaluate_at`; the running :class:`Work` is charged first)."""
+    return mk.evaluate_at(spec, cols, torque, _vibration(spec, req))
 
 
 def nut_settings(req: Requirements):
     """The fitter's settings tried: ``(nut, valve)``, the nut's free-length change (m) and the
-    valve's factor on the dash-pot, arrays over the grid of both ranges, least change first
-    (the nominal setting, 0 and 1, first)."""
-    nut = np.linspace(-req.adjusting_nut, req.adjusting_nut, NUT_SETTINGS) \
-        if req.adjusting_nut > 0 else np.zeros(1)
-    half = NUT_SETTINGS // 2 + 1  # each side of the nominal 1, on a log scale
-    valve = np.concatenate([np.geomspace(1.0 - req.dashpot_valve, 1.0, half),
-                            np.geomspace(1.0, 1.0 + req.dashpot_valve, half)[1:]]) \
-        if req.dashpot_valve > 0 else np.ones(1)
-    a, v = (x.ravel() for x in np.meshgrid(nut, valve, indexing="ij"))
-    change = (np.abs(a) / max(req.adjusting_nut, 1e-300)
-              + np.abs(np.log(v)) / max(math.log1p(req.dashpot_valve), 1e-300))
-    o = np.argsort(np.round(change, 12), kind="stable")
-    return a[o], v[o]
+    valve's factor on the dash-pot, least change first
+    (:func:`govopt.analysis.tolerance.fitter_settings`)."""
+    return tm.fitter_settings(req.adjusting_nut, req.dashpot_valve, NUT_SETTINGS)
 
 
 def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
@@ -341,25 +232,65 @@ def supported(spec: Spec, req: Requirements) -> None:
             f"the moving or spring mass, not the {what} (it moves with the dash-pot setting "
             "the box varies): minimise a mass and bound the "
             f"{what} by requirements.max_{req.objective}")
-    if gov.spring is None:
-        for key, on in (("robust_spring_grade", req.robust_spring_grade is not None),
-                        ("adjusting_nut", req.adjusting_nut > 0)):
-            if on:
-                raise InfeasibleError(
-                    f"{spec.path}: requirements.{key}: a {gov.type_name} governor has no spring "
-                    "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
-    elif not gov.spring_kind.helical and req.robust_spring_grade is not None:
+    if gov.spring is None and req.robust_spring_grade is not None:
+        raise InfeasibleError(
+            f"{spec.path}: requirements.robust_spring_grade: a {gov.type_name} governor has no "
+            "spring (dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+    if gov.spring is not None and not gov.spring_kind.helical and \
+            req.robust_spring_grade is not None:
         raise InfeasibleError(
             f"{spec.path}: requirements.robust_spring_grade: EN 15800 tolerances are for "
             "helical springs, not a leaf spring: tolerance the masses and the dash-pot instead")
-    if (req.dashpot_valve > 0 or req.robust_dashpot > 0) and (
-            spec.engine is None or not spec.load_changes):
-        key = "dashpot_valve" if req.dashpot_valve > 0 else "robust_dashpot"
-        raise InfeasibleError(f"{spec.path}: requirements.{key}: no dash-pot is designed "
-                              "without [engine] and [[load_change]]: drop the key or add them")
+    if req.robust_dashpot > 0 and (spec.engine is None or not spec.load_changes):
+        raise InfeasibleError(f"{spec.path}: requirements.robust_dashpot: no dash-pot is "
+                              "designed without [engine] and [[load_change]]: drop the key or "
+                              "add them")
+    fitter_supported(spec, req)
+    if req.min_yield is not None:
+        if not tm.states_tolerances(spec, req):
+            raise InfeasibleError(
+                f"{spec.path}: requirements.min_yield: the spec states no tolerance to make the "
+                "governor to: name the spring's wire grade (material.grade, made to its "
+                "tolerance_grade) or robust_spring_grade, or spread the masses or the dash-pot "
+                "(robust_masses, robust_dashpot)")
+        n = req.robust_samples
+        if yield_allowance(n, req.min_yield) < 0:
+            need = next(k for k in itertools.count(n) if wilson(k, k)[0] >= req.min_yield)
+            raise InfeasibleError(
+                f"{spec.path}: requirements.robust_samples: {n} samples cannot show a yield "
+                f"of {req.min_yield:g} at 95 % confidence (even all {n} holding, its Wilson "
+                f"lower bound is {wilson(n, n)[0]:.4g}): at least {need}")
     too_much = work_errors(spec, req)
     if too_much:  # counted before anything runs
         raise InfeasibleError(f"{spec.path}: {too_much[0]}: {too_much[1]}")
+
+
+def fitter_supported(spec: Spec, req: Requirements) -> None:
+    """Raise a one-line :class:`InfeasibleError` for a fitter's range the governor cannot have:
+    an adjusting nut without a spring, a dash-pot valve without a dash-pot."""
+    gov = spec.governor
+    if gov.spring is None and req.adjusting_nut > 0:
+        raise InfeasibleError(
+            f"{spec.path}: requirements.adjusting_nut: a {gov.type_name} governor has no spring "
+            "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+    if req.dashpot_valve > 0 and (spec.engine is None or not spec.load_changes):
+        raise InfeasibleError(f"{spec.path}: requirements.dashpot_valve: no dash-pot is "
+                              "designed without [engine] and [[load_change]]: drop the key or "
+                              "add them")
+
+
+def yield_allowance(n: int, min_yield: float) -> int:
+    """The most of ``n`` sampled governors that may fail while the yield's 95 % Wilson lower
+    bound stays at least ``min_yield`` (:func:`govopt.stats.wilson`); -1 where even none
+    failing is not enough.
+
+    >>> yield_allowance(2000, 0.99), yield_allowance(500, 0.99), yield_allowance(300, 0.99)
+    (11, 0, -1)
+    """
+    f = -1
+    while f + 1 <= n and wilson(n - (f + 1), n)[0] >= min_yield:
+        f += 1
+    return f
 
 
 def _slices(order):
@@ -439,6 +370,8 @@ def robust_search(spec: Spec, req: Requirements):
     stats["evaluations"], stats["work_s"] = work.items, round(work.spent, 3)
     if found is not None:
         return found
+    if req.min_yield is not None:
+        raise InfeasibleError(yield_diagnosis(spec, req, stats, failing))
     worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
     which = "; ".join(f"'{k}' fails {where} for {v}" for (k, where), v in worst) or (
         "at some corner no setting of the fitter's makes every check hold at once"
@@ -456,22 +389,30 @@ def robust_search(spec: Spec, req: Requirements):
         + "or widen the bounds (or the speed range)")
 
 
-def _search(spec: Spec, req: Requirements, stats: dict, failing: dict):
-    """:func:`robust_search`'s loop: the candidate found with its stats and worst case, else
-    None (``stats`` and ``failing`` filled in)."""
+def _candidates(spec: Spec, req: Requirements, stats: dict):
+    """The searches' batches of candidates feasible at nominal values, in objective order, at
+    most :data:`MAX_CHECKED` of them (counted in ``stats``): ``(design columns, candidates,
+    candidates visited, their tolerance box)``."""
     batches = spring_batches if spec.governor.spring is not None else dead_weight_batches
     for dcols, cands, visited in batches(spec, req):
         if stats["nominal_feasible_checked"] >= MAX_CHECKED:
             break
         if not cands:
             continue
-        n = len(cands)
         if spec.engine is None or not spec.load_changes:
-            dcols["dashpot"] = np.full(n, np.nan)
-        box = candidate_box(spec, req, dcols)
-        finite = np.all([np.isfinite(v) for v in box.fields.values()], axis=0) \
-            if box.fields else np.ones(n, bool)
-        stats["nominal_feasible_checked"] += n
+            dcols["dashpot"] = np.full(len(cands), np.nan)
+        stats["nominal_feasible_checked"] += len(cands)
+        yield dcols, cands, visited, candidate_box(spec, req, dcols)
+
+
+def _search(spec: Spec, req: Requirements, stats: dict, failing: dict):
+    """:func:`robust_search`'s loop: the candidate found with its stats and worst case, else
+    None (``stats`` and ``failing`` filled in)."""
+    if req.min_yield is not None:
+        return _yield_search(spec, req, stats, failing)
+    for dcols, cands, visited, box in _candidates(spec, req, stats):
+        n = len(cands)
+        finite = box.finite()
         if not finite.any():  # outside the tolerance tables: not certifiable
             continue
         frame, *_, signs, _ = corners(spec, req, {k: v[finite] for k, v in dcols.items()},
@@ -498,6 +439,102 @@ def _search(spec: Spec, req: Requirements, stats: dict, failing: dict):
             stats["candidates_visited"] = visited[j]
             return cands[j], stats, wc
     return None
+
+
+def _yield_search(spec: Spec, req: Requirements, stats: dict, failing: dict):
+    """The search for a yield (``requirements.min_yield``): the candidates feasible at nominal
+    values, in objective order, each made ``robust_samples`` times within its box
+    (:func:`govopt.made.made_yield`, the same samples as its reported yield) in blocks
+    (:data:`YIELD_BLOCKS`). A candidate is dropped after a block where its yield cannot reach
+    the requirement: more failures than the whole sample may have
+    (:func:`yield_allowance`), or so many that even the Wilson interval of its failure rate so
+    far lies wholly above ``1 - min_yield``. A candidate whose first block holds is tried over
+    its whole box first (its corners, then :func:`worst_case`): holding there, its yield is 1,
+    certified without samples. The first that is certified, or whose whole sample shows the
+    yield at 95 % confidence, is chosen: ``(Candidate, stats, worst case or None)``, the yield
+    in ``stats["_yield"]``; None when none is (``failing``: the requirements failing in the
+    samples; ``stats["_best"]``: the best candidate seen)."""
+    n, seed, fitter = req.robust_samples, req.robust_seed, mk.fitter_of(req)
+    allowance = yield_allowance(n, req.min_yield)
+    stats.update(candidates_sampled=0, dropped_early=0, certified_by_the_worst_case=0)
+
+    def give_up(fails: int, done: int) -> bool:
+        return fails > allowance or (done < n and wilson(fails, done)[0] > 1.0 - req.min_yield)
+
+    for dcols, cands, visited, box in _candidates(spec, req, stats):
+        for j in np.nonzero(box.finite())[0]:  # outside the tolerance tables: not made
+            cols, bx = {k: v[j:j + 1] for k, v in dcols.items()}, box.take(slice(j, j + 1))
+            stats["candidates_sampled"] += 1
+            first = mk.made_yield(spec, cols, bx, n, seed, fitter, blocks=YIELD_BLOCKS[:1],
+                                  give_up=lambda fails, done: True)
+            if first["holds"] == first["samples"] and _holds_at_corners(spec, req, cols, bx):
+                wc = worst_case(spec, req, cols, bx, stop_on_failure=True)
+                if wc["holds"]:
+                    stats["certified_by_the_worst_case"] += 1
+                    stats["candidates_visited"] = visited[j]
+                    return cands[j], stats, wc
+            y = first if give_up(first["samples"] - first["holds"], first["samples"]) else \
+                mk.made_yield(spec, cols, bx, n, seed, fitter, blocks=YIELD_BLOCKS,
+                              give_up=give_up)
+            for name, count in y["failing"].items():
+                failing[(name, "in the samples")] = failing.get(
+                    (name, "in the samples"), 0) + count
+            best = stats.get("_best")
+            if best is None or y["probability"] > best[0]["probability"]:
+                stats["_best"] = (y, cands[j], cols, bx)
+            if y["samples"] == n and y["ci95"][0] >= req.min_yield:
+                stats["candidates_visited"] = visited[j]
+                stats["_yield"] = y
+                return cands[j], stats, None
+            stats["dropped_early"] += int(y["samples"] < n)
+    return None
+
+
+def _holds_at_corners(spec: Spec, req: Requirements, cols: dict, bx: Box) -> bool:
+    """Whether one candidate holds every check at every corner of its box (at some setting of
+    the fitter's)."""
+    frame, *_, signs, _ = corners(spec, req, cols, bx)
+    ok, _ = corner_verdict(frame, 1, len(signs), nut_settings(req)[0].size)
+    return bool(ok[0])
+
+
+def yield_diagnosis(spec: Spec, req: Requirements, stats: dict, failing: dict) -> str:
+    """Why no candidate reaches ``requirements.min_yield``: the best yield seen and where, the
+    requirements failing most often in the samples, and the tolerance that spreads the best
+    candidate's speeds most (:func:`govopt.analysis.tolerance.speed_band_each`) against the
+    required band."""
+    checked = stats["nominal_feasible_checked"]
+    stopped = stats.get("stopped_at_the_work_limit")
+    head = (f"{spec.path}: infeasible: requirements.min_yield: no candidate's yield reaches "
+            f"{100 * req.min_yield:g} % at 95 % confidence ({checked} candidates feasible at "
+            "nominal values, sampled best first"
+            + (f", stopped at govopt's limit of work (~{limits.MAX_ROBUST_SEARCH_SECONDS:g} s)"
+               if stopped else "") + ")")
+    best = stats.get("_best")
+    if best is None:
+        return head + ": none is within the EN 15800 / EN 10270 tables; widen the bounds"
+    y, cand, cols, bx = best
+    gov, rpm = spec.governor, 30.0 / math.pi
+    spring = ", ".join(f"{k.replace('_', ' ')} {v * 1e3:.4g} mm" if k != "active_turns"
+                       else f"{v:g} active turns" for k, v in cand.spring.items())
+    worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
+    text = (f"{head}: the best, {gov.mass_name} mass {cand.m:.4g} kg"
+            + (f" with {spring}" if spring else "")
+            + f", holds in {100 * y['probability']:.3g} % of its {y['samples']} samples; most "
+            "often failing: " + ", ".join(f"'{k}' ({v} times)" for (k, _), v in worst))
+    each = tm.speed_band_each(spec, cols, bx)
+    if each and spec.speed is not None and spec.speed.band:
+        name, (lo, hi) = max(each.items(), key=lambda kv: kv[1][1] - kv[1][0])
+        half = bx.fields[name][0]
+        shown = f"+-{half * 1e3:.3g} mm" if name in ("wire_diameter", "coil_radius",
+                                                      "free_half_length") else f"+-{half:.3g}"
+        text += (f"; its {name.replace('_', ' ').replace('free half length', 'free length')} "
+                 f"tolerance alone ({shown}, {tm.SOURCES[name]}) spreads its speed band over "
+                 f"{lo * rpm:.4g}-{hi * rpm:.4g} rpm against the required "
+                 f"{spec.speed.omega_inner * rpm:.4g}-{spec.speed.omega_outer * rpm:.4g} rpm")
+    return text + ("; add requirements.adjusting_nut (the fitter sets the spring on assembly), "
+                   if gov.spring is not None and req.adjusting_nut <= 0 else "; ") + (
+        "make to a finer grade, lower min_yield, or widen the speed band or the bounds")
 
 
 def failures(frame, n: int, n_corners: int, n_nut: int) -> dict:
@@ -528,25 +565,10 @@ def monte_carlo(spec: Spec, req: Requirements, design: Design) -> dict:
     work = Work(limits.MAX_MONTE_CARLO_SECONDS)
     with counting(work):  # the samples (within half the limit: work_errors)
         frame = _evaluate(spec, req, rows, torque)
-    ok = holds(frame)
-    adjusted, stopped = 0, 0
-    nut, valve = (x[1:] for x in nut_settings(req))
-    for part in [p for p in np.array_split(np.arange(nut.size), ADJUSTMENT_GROUPS) if p.size]:
-        bad = np.nonzero(~ok)[0]  # the fitter adjusts the failing ones, least change first
-        if bad.size == 0:
-            break
-        rep = {k: np.repeat(v[bad], part.size) for k, v in rows.items()}
-        rep["free_half_length"] = rep["free_half_length"] + np.tile(nut[part], bad.size)
-        rep["dashpot"] = rep["dashpot"] * np.tile(valve[part], bad.size)
-        try:
-            with counting(work):
-                fixed = holds(_evaluate(spec, req, rep, np.repeat(torque[bad], part.size))) \
-                    .reshape(bad.size, part.size).any(axis=1)
-        except WorkLimit:  # not tried at the other settings: they count as failing
-            stopped = int(bad.size)
-            break
-        ok[bad] = fixed
-        adjusted += int(fixed.sum())
+    with counting(work):  # the fitter adjusts the failing ones, least change first; those
+        # not tried at every setting within the limit count as failing
+        ok, adjusted, stopped = mk.fit(spec, rows, torque, holds(frame), req.adjusting_nut,
+                                       req.dashpot_valve, _vibration(spec, req))
     k = int(ok.sum())
     lo, hi = wilson(k, n)
     # the checks that fail in the sample before any adjustment (a failure inside a box whose
@@ -577,12 +599,16 @@ def robust_design(spec: Spec):
     t_nominal = time.perf_counter() - t0
     t0 = time.perf_counter()
     cand, stats, wc = robust_search(spec, req)
+    picked = stats.pop("_yield", None)
+    stats.pop("_best", None)
     res = dz.result_of(spec, req, cand, stats, None)
     record = robust_record(spec, req, cand, res.checks, wc)
-    record["monte_carlo"] = monte_carlo(spec, req, design_of(spec, cand))
-    if record["monte_carlo"].get("note"):
-        res.optimisation["notes"] = [*res.optimisation.get("notes", []),
-                                     record["monte_carlo"]["note"]]
+    if req.min_yield is None:  # the worst case, verified by a uniform sample of the box
+        record["monte_carlo"] = monte_carlo(spec, req, design_of(spec, cand))
+        if record["monte_carlo"].get("note"):
+            res.optimisation["notes"] = [*res.optimisation.get("notes", []),
+                                         record["monte_carlo"]["note"]]
+    res.made = made_record(spec, req, res, picked)
     t_robust = time.perf_counter() - t0
     unit = res.optimisation["objective"]["unit"]
     v_nom = nominal.optimisation["value"]
@@ -593,6 +619,17 @@ def robust_design(spec: Spec):
     record["time_s"] = {"nominal_design": t_nominal, "robust_search_and_verification": t_robust}
     res.optimisation["robust"] = record
     return res
+
+
+def made_record(spec: Spec, req: Requirements, res, picked: dict | None) -> dict:
+    """The made governors' record of the chosen design (:func:`govopt.made.record`): its yield
+    as the search found it (``picked``, sampled), else 1, certified by the worst case over its
+    box."""
+    cols = mk.resolved_columns(spec, res)
+    bx = candidate_box(spec, req, cols).known()
+    return mk.record(spec, cols, bx, req.robust_samples if picked else 0, req.robust_seed,
+                     mk.fitter_of(req), req.min_yield, certified=picked is None,
+                     spreads=mk.spreads_of(req), sampled=picked)
 
 
 def design_of(spec: Spec, cand) -> Design:
@@ -613,7 +650,8 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> di
     cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}
     box = candidate_box(spec, req, cols)
     if wc is None:
-        wc = worst_case(spec, req, cols, box)
+        # a design for a yield need not hold over the whole box: its edges show where it fails
+        wc = worst_case(spec, req, cols, box, inner=req.min_yield is None)
     at, dims, pts = wc["frame"], wc["dims"], wc["points"]
     nut, valve = nut_settings(req)
     nominal = at.iloc[:1]  # nominal parts, at the fitter's setting for them
@@ -755,24 +793,6 @@ def at_points(spec: Spec, req: Requirements, cols: dict, box: Box, points):
     return frame.iloc[pick].reset_index(drop=True), margins[pick], use
 
 
-def check_margins(frame) -> np.ndarray:
-    """The robust checks' relative margins (rows x :func:`robust_checks`), for the worst case:
-    -inf on an error row and where a check fails by its own verdict at a margin >= 0 (so a
-    row holds exactly where every entry is >= :data:`PASS_TOL`), +inf where a check does not
-    apply."""
-    names = robust_checks(frame)
-    out = np.empty((len(frame), len(names)))
-    error = (frame["status"] == "error").to_numpy(dtype=bool)
-    for j, c in enumerate(names):
-        m = frame[margin_column(c)].to_numpy(dtype=float)
-        p = frame[passed_column(c)].to_numpy(dtype=float, na_value=np.nan)  # 1, 0, NaN: n/a
-        m = np.where((p == 0) & ~(m < PASS_TOL), -np.inf,
-                     np.where(p == 1, np.maximum(m, PASS_TOL), m))  # its verdict rules
-        m = np.where(np.isnan(p), np.inf, m)
-        out[:, j] = np.where(error, -np.inf, m)
-    return out
-
-
 def edges(k: int) -> tuple[np.ndarray, np.ndarray]:
     """Every edge of a k-dimensional box of half-widths, probed at :data:`EDGE_POINTS`:
     ``(points, dim)``, points (edges x len(EDGE_POINTS) x k) and the dimension each edge runs
@@ -826,7 +846,7 @@ def inner_minimum(fun, start, step: float = INNER_STEP, iterations: int = INNER_
 
 
 def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
-               stop_on_failure: bool = False) -> dict:
+               stop_on_failure: bool = False, inner: bool = True) -> dict:
     """The worst case of one design (columns of length 1) over its box, after the fitter's
     adjustment.
 
@@ -835,7 +855,8 @@ def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
     check that is not monotone in some tolerances is minimised over those (an inner
     maximisation of its violation, :func:`inner_minimum`), from its worst probed point, the
     tolerances it is monotone in held at that point's faces. ``stop_on_failure``: return at the
-    first point where a check fails (a search's candidate is then rejected).
+    first point where a check fails (a search's candidate is then rejected); not ``inner``: the
+    edges only (a design for a yield, which fails somewhere in its box: where, on its edges).
 
     Returns ``dims``; every evaluated ``points`` (half-widths; the first, 0, nominal parts) with
     its ``frame`` row (at the fitter's setting), ``margins`` (:func:`check_margins`),
@@ -864,7 +885,7 @@ def worst_case(spec: Spec, req: Requirements, cols: dict, box: Box,
 
     not_monotone: dict[str, list[str]] = {}
     ok = bool(np.all(seen["margins"][0] >= PASS_TOL))  # nominal parts and the edges
-    if k == 0 or (stop_on_failure and not ok):
+    if k == 0 or (stop_on_failure and not ok) or not inner:
         return result(ok)
     names = robust_checks(frame)
     for c, name in enumerate(names):

@@ -20,8 +20,13 @@ def design(spec):
     its final re-evaluation (never returns a design that fails a check).
     """
     spec = dz.validated(spec)
-    if spec.requirements.robust:
+    req = spec.requirements
+    if req.robust:
         from .robust import robust_design  # the bulk evaluator and pandas: only when asked
 
         return robust_design(spec)
+    if req.adjusting_nut > 0 or req.dashpot_valve > 0:
+        from .robust import fitter_supported
+
+        fitter_supported(spec, req)
     return dz.design(spec)

@@ -417,10 +417,11 @@ def drawn_design(res: Result) -> tuple[str, Result, str]:
 
     Each new number of ``[design]`` is rounded to the fewest of :data:`DRAWING_DIGITS`
     significant digits (catalogue sizes kept) at which the rounded design, read back from the
-    text and evaluated again, passes every check the exact design passes; where none does, the
-    exact design is written. The result is the rounded design's evaluation, with the optimiser's
-    record of ``res``; the note says what was rounded, or which check rounding breaks and what
-    to do.
+    text and evaluated again, passes every check the exact design passes (and keeps a yield
+    the exact design meets, ``requirements.min_yield``: :mod:`govopt.made`); where none does,
+    the exact design is written. The result is the rounded design's evaluation, with the
+    optimiser's record of ``res``; the note says what was rounded, or which check rounding
+    breaks and what to do.
     """
     import dataclasses
     import tomllib
@@ -444,6 +445,13 @@ def drawn_design(res: Result) -> tuple[str, Result, str]:
         drawn = evaluate(res.spec.with_design(design))  # the friction run reads spec.design
         broken = [f"{check_name(c, drawn)} ({margin_words(c)})" for c in drawn.checks
                   if c.name in passed and not c.passed]
+        if not broken and _meets(res):  # a yield the exact design meets: kept too
+            from ..made import with_yield
+            from .text import yield_line
+
+            drawn = with_yield(drawn)
+            if not _meets(drawn):
+                broken = [f"the yield ({yield_line(drawn)})"]
         if not broken:
             break
         first_broken = first_broken or broken
@@ -468,6 +476,12 @@ def drawn_design(res: Result) -> tuple[str, Result, str]:
         drawn = dataclasses.replace(res, optimisation={
             **res.optimisation, "notes": [*(res.optimisation or {}).get("notes", []), note]})
     return text, drawn, note
+
+
+def _meets(res: Result) -> bool:
+    """Whether the result's made governors meet a yield the spec asks for."""
+    y = (res.made or {}).get("yield") or {}
+    return bool(y.get("meets_required"))
 
 
 def _design_values(res: Result, old: dict, bounds: dict) -> dict[str, tuple[str, float, float]]:

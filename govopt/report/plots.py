@@ -26,7 +26,9 @@ on the right-hand axis. The plots, each named by its *kind*:
 * ``fatigue``: the spring's fatigue diagram with its load cycle under that vibration (EN 13906-1
   Annex A or Shigley §10-9), where the spec names a wire grade (the spring report).
 * ``speed-band``: a robust design's equilibrium speed at nominal values and its least and largest
-  over the tolerance box (:mod:`govopt.optimize.robust`).
+  over the tolerance box (:mod:`govopt.optimize.robust`);
+* ``yield``: governors made to the spec's tolerances (:mod:`govopt.made`): the worst-case speeds
+  over the tolerance box as made, the sampled governors' speeds and the yield in the title.
 
 matplotlib is imported only when a plot is drawn (``govopt --help`` never loads it); figures are
 :class:`matplotlib.figure.Figure` objects on the Agg canvas, so no GUI backend or pyplot state is
@@ -49,7 +51,7 @@ FORMATS = ("png", "svg")
 SIZE, DPI = (7.0, 4.5), 150
 #: the kinds in the order they are drawn; ``load-change`` stands for ``load-change-1``, ...
 KINDS = ("characteristic", "linkage", "controlling-force", "k2", "load-change", "vyshnegradsky",
-         "vibration-spectrum", "vibration-trace", "fatigue")
+         "vibration-spectrum", "vibration-trace", "fatigue", "speed-band", "yield")
 STYLE = {"font.size": 10, "axes.titlesize": 11, "axes.labelsize": 10, "legend.fontsize": 9,
          "axes.grid": True, "grid.alpha": 0.35, "svg.hashsalt": "govopt"}
 RPM = 30.0 / math.pi  # rpm per rad/s
@@ -72,6 +74,7 @@ def kinds(res) -> list[str]:
         ("vibration-trace", bool(vib) and "response" in vib),
         ("fatigue", "diagram" in (_fatigue_loads(res) or {})),
         ("speed-band", "speed_band" in ((res.optimisation or {}).get("robust") or {})),
+        ("yield", bool(res.made)),
     ) if present]
 
 
@@ -179,20 +182,9 @@ def characteristic(res, ax) -> None:
         ax.legend(loc="upper left")
 
 
-def speed_band(res, ax) -> None:
-    """A robust design's speed band under its tolerances: the equilibrium speed at
-    nominal values, and the least and largest over the points of the tolerance box evaluated
-    (each at the fitter's setting), against the configuration, with the required band; the
-    title gives what robustness cost in the objective."""
-    band = res.optimisation["robust"]["speed_band"]
-    st, spec = res.statics, res.spec
-    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
-    x, _ = _shown(res, xs)
-    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
-    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
-                    label="over the tolerance box (after the fitter's setting)")
-    xn, _ = _shown(res, st.alpha)
-    ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
+def _speed_axes(res, ax) -> None:
+    """A speed band plot's required band (dashed green), axis labels and rad/s axis."""
+    spec = res.spec
     if spec.speed is not None:
         a, b = spec.speed.omega_inner * RPM, spec.speed.omega_outer * RPM
         ax.axhline(a, color="tab:green", ls="--", lw=1)
@@ -201,11 +193,62 @@ def speed_band(res, ax) -> None:
     ax.set_xlabel(_config_label(res))
     ax.set_ylabel("speed (rpm)")
     _rad_s_axis(ax)
+
+
+def speed_band(res, ax) -> None:
+    """A robust design's speed band under its tolerances: the equilibrium speed at
+    nominal values, and the least and largest over the points of the tolerance box evaluated
+    (each at the fitter's setting), against the configuration, with the required band; the
+    title gives what robustness cost in the objective."""
+    band = res.optimisation["robust"]["speed_band"]
+    st = res.statics
+    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
+    x, _ = _shown(res, xs)
+    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
+    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
+                    label="over the tolerance box (after the fitter's setting)")
+    xn, _ = _shown(res, st.alpha)
+    ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
+    _speed_axes(res, ax)
     cost = res.optimisation["robust"].get("cost") or {}
     more = cost.get("increase_percent")
     _title(res, ax, "speed band under the tolerances" + (
         "" if more is None else f" (robustness cost {more:+.3g} %)"))
     ax.legend(loc="upper left")
+
+
+def made_yield(res, ax) -> None:
+    """Governors made to the spec's tolerances (``Result.made``, :mod:`govopt.made`): the
+    equilibrium speed at nominal values, its least and largest over the tolerance box as made
+    (exact, at the box's corners), the sampled governors' speeds at both ends of the range, and
+    the required band; the title gives the yield in the reports' words
+    (:func:`govopt.made.yield_words`)."""
+    from ..made_words import yield_words
+
+    made, st, spec = res.made, res.statics, res.spec
+    band, y = made["speed_band"], made["yield"]
+    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
+    x, _ = _shown(res, xs)
+    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
+    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
+                    label="worst case over the tolerance box (as made)")
+    xn, _ = _shown(res, st.alpha)
+    ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
+    ends = [(x[0], y.get("sampled_inner_rad_s")), (x[-1], y.get("sampled_outer_rad_s"))]
+    for i, (at, w) in enumerate(e for e in ends if e[1]):
+        ax.plot([at, at], [w[0] * RPM, w[1] * RPM], color="k", lw=3, solid_capstyle="butt",
+                label=f"{y['samples']} sampled governors (as made)" if i == 0 else None)
+    _speed_axes(res, ax)
+    words = yield_words(made)
+    ax.set_title(f"{spec.name}: made to its tolerances\n{_wrapped(words, 90)}", fontsize=9)
+    ax.legend(loc="upper left", fontsize=8)
+
+
+def _wrapped(text: str, width: int) -> str:
+    """``text`` broken into lines of at most ``width`` characters."""
+    import textwrap
+
+    return "\n".join(textwrap.wrap(text, width))
 
 
 def controlling_force(res, ax) -> None:
@@ -564,7 +607,8 @@ def linkage(res, ax) -> None:
 DRAW = {"characteristic": characteristic, "linkage": linkage,
         "controlling-force": controlling_force, "k2": k2,
         "vyshnegradsky": vyshnegradsky, "vibration-spectrum": vibration_spectrum,
-        "vibration-trace": vibration_trace, "fatigue": fatigue, "speed-band": speed_band}
+        "vibration-trace": vibration_trace, "fatigue": fatigue, "speed-band": speed_band,
+        "yield": made_yield}
 
 
 # --------------------------------------------------------------------------------------------

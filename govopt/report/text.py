@@ -260,6 +260,49 @@ def verdict(res: Result) -> str:
             + "; ".join(f"{check_name(c, res)} ({margin_words(c)})" for c in failed))
 
 
+def made_lines(res: Result) -> list[str]:
+    """The yield beside the verdict (where the spec states tolerances: ``Result.made``): the
+    share of made governors that pass with its interval and the requirement failing most often,
+    the worst-case speed band beside the required one, and what they were made to."""
+    from ..made_words import sampled_words
+
+    made = res.made
+    if not made:
+        return []
+    nominal = "PASS" if all(c.passed for c in res.checks) else "FAIL"
+    band, tol = made["speed_band"], made["tolerances"]
+
+    def rpm(pair) -> str:
+        return f"{pair[0] * RPM:.4g}-{pair[1] * RPM:.4g} rpm"
+
+    st = res.statics
+    besides = (f"the required {rpm(band['required_rad_s'])}" if band.get("required_rad_s")
+               else f"nominal {rpm((float(np.min(st.omega)), float(np.max(st.omega))))}")
+    made_to = [f"EN 15800 grade {tol['spring_grade']}" + (
+        f", wire to {tol['wire_standard']}" if tol.get("wire_standard") else "")
+        if tol.get("spring_grade") is not None else ""]
+    made_to += [f"{what} +-{100 * f:g} %" for what, f in (
+        ("masses", tol.get("masses_fraction", 0.0)), ("dash-pot", tol.get("dashpot_fraction", 0.0)),
+        ("torque slope", tol.get("torque_slope_fraction", 0.0))) if f]
+    if tol.get("adjusting_nut_m"):
+        made_to.append(f"set by the fitter's nut +-{tol['adjusting_nut_m'] * 1e3:.3g} mm")
+    if tol.get("dashpot_valve_fraction"):
+        made_to.append(f"dash-pot valve set +-{100 * tol['dashpot_valve_fraction']:g} %")
+    made_as = " as made (before the fitter's setting)" if tol.get("adjusting_nut_m") else ""
+    return [f"{nominal} at nominal; {yield_line(res)}",
+            f"  worst-case speeds {rpm(band['band_rad_s'])}{made_as} beside {besides}",
+            "  made to " + ", ".join(m for m in made_to if m) + f"; {sampled_words(made)}"]
+
+
+def yield_line(res: Result) -> str:
+    """The yield in words (:func:`govopt.made.yield_words`), the checks named as the report
+    names them."""
+    from ..made_words import yield_words
+
+    shown = {c.name: check_name(c, res) for c in res.checks}
+    return yield_words(res.made, lambda n: shown.get(n, n))
+
+
 def band_spring_note(spec) -> str:
     """What the spring found for the band is (:func:`govopt.spec.band_spring`)."""
     found, gov = spec.band_spring, spec.governor
@@ -280,6 +323,9 @@ def _warnings(res: Result) -> list[str]:
     if res.spring_report is not None:
         d = res.spring_report.to_dict()
         notes += [*d["tolerance_spread"]["notes"], *d["notes"]]
+    if res.made:
+        notes += [*res.made["tolerances"]["notes"], *(
+            [res.made["yield"]["note"]] if res.made["yield"].get("note") else [])]
     return list(dict.fromkeys(notes))
 
 
@@ -295,6 +341,8 @@ def _summary_section(out: TextReport, res: Result, every_check: bool = False) ->
     line = verdict(res)
     out.title("Verdict")
     out.line(line, "green bold" if line.startswith("PASS") else "red bold")
+    for text in made_lines(res):
+        out.line(text)
     _design_section(out, res)
     shown = [] if every_check else watched(res)
     if shown:

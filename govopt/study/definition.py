@@ -33,7 +33,7 @@ from ..spec import Spec, parse_spec
 from .errors import StudyError
 from .quantities import number_text, quantity
 from .sampling import SAMPLERS, check_seed, unit_cube
-from .tolerances import Tolerance, grade_tolerances, nominal
+from .tolerances import Tolerance, fixed_free_length, grade_tolerances, nominal
 
 MODES = ("evaluate", "design")
 COMBINE = ("grid", "zip", *SAMPLERS)
@@ -561,6 +561,8 @@ def _load_study(path, *, sweeps, tolerances, **options) -> Study:
             with_values(spec, {key: s.toml(s.take([0])[0])})  # the parser's one line
     tol_texts = list(dict(table.get("tolerance", {})).items())
     tol_texts += _pairs(tolerances, "--tolerance", "KEY=±X%")
+    if any(key == "grade" for key, _ in tol_texts):  # made governors: the spring's free length
+        data, spec = fixed_free_length(data, spec)
     tols: dict[str, Tolerance] = {}
     for key, value in sorted(tol_texts, key=lambda kv: kv[0] != "grade"):  # a key given
         if key == "grade":                                               # replaces the grade's

@@ -288,11 +288,28 @@ class _Runner:
             arrays, bad = fields
             good = np.array([e is None for e in bad], dtype=bool)
             if good.any():
-                frame, units = evaluate_rows(spec, {f: a[good] for f, a in arrays.items()},
-                                             **self.kw)
-                self.put_frame(b, pos[good], frame, spec, units)
+                cols = {f: a[good] for f, a in arrays.items()}
+                frame, units = evaluate_rows(spec, cols, **self.kw)
+                self.put_frame(b, pos[good], self._set_by_the_fitter(spec, cols, frame),
+                               spec, units)
             for j in np.nonzero(~good)[0]:
                 b.error([pos[j]], bad[j])
+
+    def _set_by_the_fitter(self, spec, cols: dict, frame):
+        """A tolerance study's made governors as the fitter sets them, where the spec has one
+        (``requirements.adjusting_nut``, ``dashpot_valve``): each that fails as made is tried at
+        the fitter's settings, least change first, and its row is the governor as set at the
+        first that makes every requirement hold (:func:`govopt.made.fit`, as the yield beside
+        the verdict counts it); the others as made."""
+        from ..bulk import evaluate_rows
+        from ..made import fit, fitter_of, holds
+
+        nut, valve = fitter_of(spec.requirements)
+        nut = nut if spec.governor.spring is not None else 0.0
+        if not self.study.tolerances or not (nut > 0 or valve > 0):
+            return frame
+        return fit(spec, cols, None, holds(frame), nut, valve, frame=frame,
+                   evaluate=lambda rows, _: evaluate_rows(spec, rows, **self.kw)[0])[3]
 
     def _refused_together(self, assigned: dict, design_keys: list, values: dict, i) -> bool:
         """Whether the design keys' values of point ``i`` are each accepted alone but refused

@@ -5,15 +5,11 @@ or :meth:`govopt.study.tolerances.Tolerance.draw`."""
 
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 
+from ..stats import SAMPLERS, unit_cube
 from .errors import StudyError
 
-#: the samplers: Latin hypercube (McKay, Beckman and Conover 1979) and Sobol' points with Owen
-#: scrambling, as scipy.stats.qmc implements them
-SAMPLERS = ("lhs", "sobol")
 #: the largest seed (numpy's SeedSequence takes any non-negative integer; 64 bits keep it exact
 #: in JSON readers that hold numbers as doubles up to 2^53 ... and as integers beyond)
 MAX_SEED = 2**64 - 1
@@ -39,15 +35,6 @@ def check_seed(seed, where: str = "seed") -> int:
     return int(seed)
 
 
-@lru_cache(maxsize=2)
-def unit_cube(kind: str, n: int, dim: int, seed: int) -> np.ndarray:
-    """``n`` points in the unit cube of ``dim`` dimensions (an ``(n, dim)`` array, read-only):
-    ``kind`` ``"sobol"`` (scrambled) or ``"lhs"``. Cached by its arguments: each process makes
-    a study's points once (8 bytes a coordinate: 24 MB for a million points in three keys)."""
-    from scipy.stats import qmc
 
-    engine = (qmc.Sobol(d=dim, scramble=True, seed=seed) if kind == "sobol"
-              else qmc.LatinHypercube(d=dim, seed=seed))
-    u = engine.random(n)
-    u.flags.writeable = False
-    return u
+
+__all__ = ["MAX_SEED", "SAMPLERS", "check_seed", "unit_cube"]

@@ -1,11 +1,12 @@
 """Manufacturing tolerances of a tolerance study: each sampled input's scatter around the
-spec's nominal value, and the spring maker's tolerances of a quality grade.
+spec's nominal value, and the tolerances of a governor made to a quality grade.
 
 The interface the study reads: :class:`Tolerance` (a key, its band and distribution) with
-:meth:`Tolerance.draw` (values at uniform fractions), :func:`grade_tolerances` (a spec's
-helical spring under EN 15800 / EN 10270-1) and :func:`nominal` (the spec's value of each
-toleranced key, in SI). A study samples the unit cube (:mod:`govopt.study.sampling`) and
-draws each key's column from it; nothing else in the study knows how a tolerance is read.
+:meth:`Tolerance.draw` (values at uniform fractions), :func:`grade_tolerances` (the tolerance
+model of a made governor, :mod:`govopt.analysis.tolerance`, on the spec's keys) and
+:func:`nominal` (the spec's value of each toleranced key, in SI). A study samples the unit cube
+(:mod:`govopt.study.sampling`) and draws each key's column from it; nothing else in the study
+knows how a tolerance is read.
 """
 
 from __future__ import annotations
@@ -18,17 +19,17 @@ import numpy as np
 from .errors import StudyError
 from .quantities import quantity
 
-#: a tolerance band ``+-X`` is read as +-3 standard deviations of a normal scatter (the usual
-#: reading of a manufacturing tolerance: 99.73 % of the parts within it), unless ``uniform``
-TOLERANCE_SIGMAS = 3.0
+#: a tolerance band ``+-X`` is read as +-3 standard deviations of a normal scatter truncated at
+#: the band (the usual reading of a manufacturing tolerance, a part outside it rejected:
+#: :func:`govopt.stats.truncated_normal`), unless ``uniform``
 DISTRIBUTIONS = ("normal", "uniform")
 
 
 @dataclass(frozen=True)
 class Tolerance:
     """Manufacturing scatter of one input around the spec's nominal value: a band ``+-half``
-    (relative when ``relative``; else in ``unit``), read as +-3 sigma of a normal scatter or
-    as uniform."""
+    (relative when ``relative``; else in ``unit``), read as +-3 sigma of a normal scatter
+    truncated at the band (a part outside its tolerance is rejected) or as uniform."""
 
     key: str
     half: float
@@ -86,11 +87,12 @@ class Tolerance:
 
     def draw(self, nominal_si: float, si_unit: str, u: np.ndarray) -> np.ndarray:
         """Values (SI) at uniform fractions ``u``: ``nominal + band * z`` with ``z`` normal with
-        sigma 1/3 (by the inverse normal CDF) or uniform in [-1, 1]."""
-        from scipy.special import ndtri
+        sigma 1/3 truncated at +-1 (:func:`govopt.stats.truncated_normal`, by the inverse of its
+        distribution function) or uniform in [-1, 1]."""
+        from ..stats import truncated_normal
 
-        z = (ndtri(np.clip(u, 1e-12, 1 - 1e-12)) / TOLERANCE_SIGMAS
-             if self.distribution == "normal" else 2.0 * np.asarray(u) - 1.0)
+        z = (truncated_normal(u) if self.distribution == "normal"
+             else 2.0 * np.asarray(u) - 1.0)
         return nominal_si + self.half_si(nominal_si, si_unit) * z
 
 
@@ -109,21 +111,64 @@ def nominal(spec, tolerances) -> dict[str, tuple[float, str]]:
 
 
 def grade_tolerances(spec, grade: int) -> list[Tolerance]:
-    """The spring maker's tolerances of the spec's helical spring for EN 15800 quality grade
-    ``grade``: the mean coil diameter ``+-A_D`` (Table 1; on the radius ``+-A_D/2``) and the
-    wire diameter after EN 10270-1 (:mod:`govopt.springs.tolerances`)."""
-    from ..springs import tolerances as tol
+    """The tolerances of a governor made to EN 15800 quality grade ``grade``, as the tolerance
+    model of a made governor states them (:mod:`govopt.analysis.tolerance`: the wire diameter
+    after its wire's EN 10270 standard, the mean coil radius ``+-A_D / 2``, a compression
+    spring's free length ``+-A_L0``; the masses and the dash-pot where ``[requirements]``
+    spreads them), each on the spec's ``[design]`` key, in the model's order: the same points
+    as the yield beside the verdict (:mod:`govopt.made`) draws. The spec's design must give its
+    free length (:func:`fixed_free_length` writes it where it does not)."""
+    from ..analysis import statics
+    from ..analysis import tolerance as tm
+    from ..bulk import design_arrays
 
     ds = spec.design
-    if ds is None or ds.wire_diameter is None or ds.coil_radius is None:
-        raise StudyError("needs a helical spring in [design] (wire_diameter, coil_radius)",
-                         where="tolerance grade")
-    D = 2.0 * ds.coil_radius
-    a_d = float(tol.coil_diameter_tolerance(D, D / ds.wire_diameter, grade))
-    a_w = float(tol.wire_diameter_tolerance(ds.wire_diameter))
-    if not (math.isfinite(a_d) and math.isfinite(a_w)):
+    if ds is None or tm.kind(spec) is None or ds.wire_diameter is None or \
+            ds.coil_radius is None or ds.active_turns is None:
+        designed = "" if ds is not None or tm.kind(spec) is None else (
+            "; a spec to design: design it first (govopt design SPEC -o designed.toml) and "
+            "study the design")
+        raise StudyError("needs a helical spring in [design], given by its section "
+                         "(wire_diameter, coil_radius, active_turns): EN 15800's tolerances "
+                         "follow from it" + designed, where="tolerance grade")
+    req = spec.requirements
+    cols = design_arrays(spec, [ds])
+    bx = tm.box(spec, cols, grade, 0.0 if req is None else req.robust_masses,
+                0.0 if req is None else req.robust_dashpot)
+    if not np.all(bx.finite()):
+        D = 2.0 * ds.coil_radius
         raise StudyError(f"the spring (d = {ds.wire_diameter:.4g} m, D = {D:.4g} m) is "
-                         "outside the EN 15800 / EN 10270-1 tables",
-                         where=f"tolerance grade {grade}")
-    return [Tolerance("design.coil_radius", a_d / 2.0, False, "m"),
-            Tolerance("design.wire_diameter", a_w, False, "m")]
+                         "outside the EN 15800 / EN 10270 tables", where=f"tolerance grade {grade}")
+    out = []
+    for name in bx.active():
+        key = statics.design_key(spec, name)
+        if key is None:
+            raise StudyError(f"the spec's [design] does not give its {name.replace('_', ' ')}",
+                             where=f"tolerance grade {grade}")
+        if name in ("flying_mass", "central_mass", "dashpot"):  # a spread: relative
+            frac = req.robust_masses if name != "dashpot" else req.robust_dashpot
+            out.append(Tolerance(key, frac, True))
+        else:
+            out.append(Tolerance(key, float(bx.fields[name][0]), False, "m"))
+    return out
+
+
+def fixed_free_length(data: dict, spec):
+    """``(data, spec)`` with the design's free length written where its ``[design]`` leaves it
+    out (the one that holds the normal configuration at the mean speed, as evaluated): a made
+    spring's free length is a number, the same in every sample of a tolerance study."""
+    from ..analysis import statics
+    from ..errors import GovoptError
+    from ..spec import parse_spec
+
+    gov = spec.governor
+    design = data.get("design")
+    if gov.spring is None or spec.design is None or not isinstance(design, dict) or \
+            gov.free_length_key in design or spec.design.free_half_length is not None:
+        return data, spec
+    try:
+        l0 = float(statics.spring_design(spec, spec.design).l0)
+    except GovoptError:
+        return data, spec
+    data = {**data, "design": {**design, gov.free_length_key: f"{l0!r} m"}}
+    return data, parse_spec(data, spec.path)

@@ -23,7 +23,7 @@ from openpyxl.chart.legend import LegendEntry
 from openpyxl.styles import Font, PatternFill
 
 from ...verdict import shown
-from ..text import check_name, margin_words, verdict, watched
+from ..text import check_name, made_lines, margin_words, verdict, watched
 from .book import (
     BODY_PT,
     BOLD,
@@ -104,6 +104,11 @@ def design_rows(res: Result) -> list[tuple[str, object, str, str]]:
     for name, f in figures.items():
         if (f.group == "speed" and name != "mean speed") or name.startswith("objective"):
             rows.append((name, f.value, f.unit, f.note if name.startswith("objective") else ""))
+    made = [f for f in figures.values() if f.group == "made"]
+    if made:  # governors made to the spec's tolerances (:func:`govopt.made.figures`)
+        rows.append(("Made to the tolerances", None, "section", ""))
+        rows += [(f.name, f.value, f.unit, f.note if f.unit else "") for f in made]  # the
+        # yield's interval and samples: in the lines under the verdict
     return rows
 
 
@@ -135,6 +140,9 @@ def build_summary(sheet: Sheet, res: Result, *, command: str, characteristic: Sh
     passed = line.startswith("PASS")
     sheet.paragraph(row, line, 1, LEFT, font=_VERDICT_FONT[passed])
     ws.cell(row, 1).fill = _VERDICT_FILL[passed]
+    for text in made_lines(res):  # the yield beside the verdict
+        row += 1
+        sheet.paragraph(row, text.strip(), 1, LEFT, font=None)
     row = _design(sheet, row + 1, res)
     _tolerances(sheet, row + 1, res)
     fit_rows(sheet)  # the rows' heights: the right column's charts sit by them
