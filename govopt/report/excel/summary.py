@@ -104,11 +104,6 @@ def design_rows(res: Result) -> list[tuple[str, object, str, str]]:
     for name, f in figures.items():
         if (f.group == "speed" and name != "mean speed") or name.startswith("objective"):
             rows.append((name, f.value, f.unit, f.note if name.startswith("objective") else ""))
-    made = [f for f in figures.values() if f.group == "made"]
-    if made:  # governors made to the spec's tolerances (:func:`govopt.made.figures`)
-        rows.append(("Made to the tolerances", None, "section", ""))
-        rows += [(f.name, f.value, f.unit, f.note if f.unit else "") for f in made]  # the
-        # yield's interval and samples: in the lines under the verdict
     return rows
 
 
