@@ -1,7 +1,7 @@
 """The documentation pages generated from the code, never typed twice:
 
 * :func:`commands_page`: ``docs/reference/commands.md``, every command and option of the CLI,
-  read from the typer app (:func:`govopt.cli.app`) through click's public API;
+  read from the typer app (:func:`govopt.cli.app`) through typer's public API;
 * :func:`bibliography_page`: ``docs/references.md``, every key of
   :data:`govopt.references.REFERENCES` with its citation, what govopt takes from it and the
   governor types whose method cites it;
@@ -32,13 +32,13 @@ def _cell(text) -> str:
 
 def commands_page() -> str:
     """Every command of ``govopt`` with its usage, help and options, from the typer app."""
-    import click
+    import typer
     import typer.main
 
     from .cli import COMMANDS, DEFAULT_SUBCOMMANDS, app
 
     root = typer.main.get_command(app(COMMANDS))
-    top = click.Context(root, info_name="govopt")
+    top = typer.Context(root, info_name="govopt")
     out = ["# Commands", "",
            "Generated from the command line's declarations (`python -m govopt.doc_pages` "
            "writes this file; a test fails when it is stale): do not edit it by hand. "
@@ -48,7 +48,7 @@ def commands_page() -> str:
     out += _options(root, top)
     defaults = {group: sub for group, (sub, _) in DEFAULT_SUBCOMMANDS.items()}
     for name, command in root.commands.items():
-        ctx = click.Context(command, info_name=name, parent=top)
+        ctx = typer.Context(command, info_name=name, parent=top)
         subs = getattr(command, "commands", None)
         if not subs:
             out += _command(command, ctx, f"govopt {name}")
@@ -57,7 +57,7 @@ def commands_page() -> str:
                 f"`govopt {name} ...` without a subcommand is `govopt {name} "
                 f"{defaults[name]} ...`."]
         for sub_name, sub in subs.items():
-            out += _command(sub, click.Context(sub, info_name=sub_name, parent=ctx),
+            out += _command(sub, typer.Context(sub, info_name=sub_name, parent=ctx),
                             f"govopt {name} {sub_name}", level="###")
     return "\n".join(out).rstrip() + "\n"
 
