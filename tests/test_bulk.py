@@ -112,8 +112,8 @@ def test_speed_change_is_the_specs_on_every_path(name, change):
 
 def test_hamabe_case_a_row():
     """Hamabe case a as one row: the check columns carry evaluate's numbers; the irregularity
-    misses 0.12 (the paper rounds its stiffness; exact geometry gives 0.1243, see the README's
-    sources), so the row fails on that check alone."""
+    misses 0.12 (the paper rounds its stiffness; exact geometry gives 0.1243: see
+    docs/theory/shaft.md, where the paper is wrong), so the row fails on that check alone."""
     spec = load_spec(SPECS / "hamabe-a.toml")
     row = evaluate_many(spec, [spec.design]).iloc[0]
     res = evaluate(spec)

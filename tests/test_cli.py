@@ -8,8 +8,8 @@ from clirun import invoke
 
 def test_evaluate_default_prints_report():
     result = invoke(["evaluate", "--full"])
-    # exit 1: case a misses its own irregularity 0.12 (0.123, README "Sources")
-    # changes the contract (a failed check exited 0)
+    # exit 1: case a misses its own irregularity 0.12 (0.123, docs/theory/shaft.md); a failed
+    # check exits 1
     assert result.exit_code == 1, result.output
     assert "1 of 8 checks failed: irregularity" in result.stderr
     assert "hamabe-a" in result.output

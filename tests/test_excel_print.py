@@ -24,7 +24,7 @@ PDFTOTEXT = shutil.which("pdftotext")
 #: Types whose workbooks print long tables: the shaft's Design and Spring sheets and its three
 #: Dynamics pages, a Hartnell design (an optimiser's record on the Checks sheet, a coil
 #: spring's sheet), a Porter with an engine (Dynamics), a textbook Hartnell (Characteristic),
-#: the bundled (shaft) design (`govopt design`'s first README example).
+#: the bundled (shaft) design (`govopt design`, the README's Quick start).
 CASES = {"hamabe-a": govopt.evaluate, "hartnell-design": govopt.design,
          "porter-engine": govopt.evaluate, "textbook-ex4-hartnell": govopt.evaluate,
          "hamabe-design": govopt.design}

@@ -155,7 +155,8 @@ def test_design_that_needs_the_gp_loads_cvxpy(tmp_path):
 
 @pytest.mark.parametrize("preset, expect", [(None, "1"), ("2", "2")])
 def test_cli_runs_one_blas_thread_unless_told(preset, expect):
-    """OpenBLAS's idle threads spin: a third of `govopt evaluate`'s CPU (README, Speed)."""
+    """OpenBLAS's idle threads spin: a third of `govopt evaluate`'s CPU
+    (benchmarks/bench_startup.py measures it)."""
     import os
 
     env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}

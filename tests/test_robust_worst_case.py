@@ -15,7 +15,7 @@ from govopt.optimize import robust as rb
 from govopt.spec import Design
 
 ROBUST = "govopt/specs/hamabe-design-robust.toml"
-#: the robust optimum of hamabe-design-robust (d 10 mm, r 39 mm, n 10; its README row)
+#: the robust optimum of hamabe-design-robust (d 10 mm, r 39 mm, n 10; docs/theory/design-search.md)
 DESIGN = Design(flying_mass=4.0, wire_diameter=0.01, coil_radius=0.039, active_turns=10.0,
                 free_half_length=0.1335489367461029, dashpot=0.9435718922634899)
 

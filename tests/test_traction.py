@@ -301,7 +301,8 @@ def test_elastica_against_a_shooting_solution(load):
                                                                          rel=1e-8)
 
 
-#: the README's table, straight line (eq. 8) against the elastica: x/L -> error of l, %
+#: docs/theory/traction_leaf.md's table, straight line (eq. 8) against the elastica:
+#: x/L -> error of l, %
 README_STRAIGHT = {0.02: 0.02, 0.05: 0.10, 0.10: 0.42, 0.15: 1.03, 0.20: 2.05, 0.25: 3.77,
                    0.30: 6.83}
 README_ARC = {0.02: -0.01, 0.05: -0.07, 0.10: -0.29, 0.15: -0.74, 0.20: -1.59, 0.25: -3.28,
@@ -314,8 +315,8 @@ README_BOW = {"straight": [9.5, 9.6, 9.6, 9.8, 9.9, 10.2, 10.5],
 
 def test_chord_models_error_table_and_the_article_claim():
     """The straight line overstates the chord ("the calculated value is more than actual"); its
-    error over x = 0-20 % of L is 0-2.05 %: the article's "0-2.5 %" holds. The README's table is
-    what the models give (to its two decimals)."""
+    error over x = 0-20 % of L is 0-2.05 %: the article's "0-2.5 %" holds. The table of
+    docs/theory/traction_leaf.md is what the models give (to its two decimals)."""
     X = np.array(sorted(README_STRAIGHT))
     exact = leaf.chord(X, 1.0)[0]
     err_s = 100 * (leaf.chord(X, 1.0, "straight")[0] / exact - 1)
