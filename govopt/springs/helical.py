@@ -98,6 +98,18 @@ SEATING = {
 def spring_index(d, D):
     """Spring index ``w = C = D/d`` (EN 13906-1 symbol w; Shigley eq. (10-1) C).
 
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+
+    References
+    ----------
+    [en13906-1] symbol w; [shigley] eq. (10-1). Example: Shigley Problem 10-3 (d = 2.5 mm,
+    D = 28.5 mm).
+
     >>> float(spring_index(2.5e-3, 28.5e-3))
     11.4
     """
@@ -109,6 +121,16 @@ def bergstrasser_factor(C):
 
     EN 13906-1:2013 eq. for k; Shigley eq. (10-5) K_B. Differs from Wahl's by under 1.4 % for
     4 <= C <= 12 (10th ed. solutions manual, Problem 10-1).
+
+    Parameters
+    ----------
+    C : float or array [-]
+        Spring index ``D/d``, dimensionless.
+
+    References
+    ----------
+    [en13906-1] factor k; [shigley] eq. (10-5). Example: Shigley Problem 10-3 (rounded to
+    three places as printed).
 
     >>> round(float(bergstrasser_factor(11.4)), 3)  # 10th ed. Problem 10-3
     1.117
@@ -131,6 +153,22 @@ def correction_factor(C, correction: str):
 def stiffness(d, D, n, G):
     """Spring rate ``R = G d^4 / (8 D^3 n)`` (N/m), EN 13906-1 eq. for R; Shigley eq. (10-9).
 
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    G : float [Pa]
+        Shear modulus of the wire.
+
+    References
+    ----------
+    [en13906-1] rate R; [shigley] eq. (10-9). Example: Shigley Problem 10-3 (printed in N/mm,
+    rounded to three places).
+
     >>> round(float(stiffness(2.5e-3, 28.5e-3, 13, 81e9)) / 1e3, 3)  # N/mm, Problem 10-3
     1.314
     """
@@ -149,6 +187,21 @@ def shear_stress(F, d, D, correction: str = "none"):
 
 def force_at_stress(tau, d, D, correction: str = "none"):
     """Force that raises the stress to ``tau``: ``F = pi d^3 tau / (8 K D)`` (Shigley (10-7)).
+
+    Parameters
+    ----------
+    tau : float or array [Pa]
+        Shear stress to reach.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    correction : str [-]
+        ``"none"``, ``"wahl"`` or ``"bergstrasser"`` (the factor K).
+
+    References
+    ----------
+    [shigley] eq. (10-7) with K_B. Example: Shigley Problem 10-3 (force rounded to 0.1 N).
 
     >>> round(float(force_at_stress(871.2e6, 2.5e-3, 28.5e-3, "bergstrasser")), 1)  # N
     167.9
