@@ -179,6 +179,26 @@ def shear_stress(F, d, D, correction: str = "none"):
     """Torsional shear stress ``tau = K 8 F D / (pi d^3)`` (Pa); K by ``correction``.
 
     EN 13906-1 eq. for tau (uncorrected) and tau_k = k tau; Shigley eq. (10-7) with K_B.
+
+    Parameters
+    ----------
+    F : float or array [N]
+        Axial spring force (its magnitude is used).
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    correction : str [-]
+        ``"none"``, ``"wahl"`` or ``"bergstrasser"`` (the factor K).
+
+    References
+    ----------
+    [en13906-1] stresses tau and tau_k; [shigley] eq. (10-7). Example: Shigley Problem 10-3
+    backwards, the force :func:`force_at_stress` gives back the stress (MPa, rounded to 0.1).
+
+    >>> F = force_at_stress(871.2e6, 2.5e-3, 28.5e-3, "bergstrasser")
+    >>> round(float(shear_stress(F, 2.5e-3, 28.5e-3, "bergstrasser")) / 1e6, 1)
+    871.2
     """
     d = np.asarray(d, dtype=float)
     K = correction_factor(spring_index(d, D), correction)
@@ -220,7 +240,22 @@ def solid_length(d_max, n_t, ends: str = "closed_ground"):
     largest wire diameter within tolerance ``d_max`` (nominal ``d`` plus its tolerance,
     :func:`govopt.springs.tolerances.max_wire_diameter`): pass that, the nominal ``d`` only
     where the wire's tolerance is unknown. A hand calculation: 10 total coils of 2.8 mm
-    EN 10270-1 wire (+-0.030 mm) with closed and ground ends, ``L_c = 10 x 2.830 = 28.30 mm``:
+    EN 10270-1 wire (+-0.030 mm) with closed and ground ends, ``L_c = 10 x 2.830 = 28.30 mm``
+    (rounded to 0.01 mm as written by hand).
+
+    Parameters
+    ----------
+    d_max : float or array [m]
+        Largest wire diameter within tolerance (nominal where the tolerance is unknown).
+    n_t : float or array [-]
+        Total number of coils.
+    ends : str [-]
+        End form, a key of :data:`END_FORMS`.
+
+    References
+    ----------
+    [en13906-1] solid length L_c; [en10270-1] wire tolerance of the example.
+
 
     >>> round(float(solid_length(2.8e-3 + 0.030e-3, 10, "closed_ground")) * 1e3, 2)
     28.3
@@ -371,6 +406,24 @@ def surge_frequency(d, D, n, G, density):
     ``f_e = d / (2 pi n D^2) sqrt(G / (2 rho))`` - EN 13906-1:2013 (natural frequency)
     (``f_e = 3.56e5 d/(n D^2)`` in mm for steel) and Shigley eq. (10-25) ``f = 1/2 sqrt(k g/W)``
     with the active-coil weight ``W = pi^2 d^2 D N_a gamma / 4``: the same formula.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    G : float [Pa]
+        Shear modulus of the wire.
+    density : float [kg/m^3]
+        Density of the wire.
+
+    References
+    ----------
+    [en13906-1] natural frequency f_e; [shigley] eq. (10-25). Example: Shigley Example 10-4,
+    which prints 281 Hz from k and W rounded (here rounded to 0.1 Hz).
 
     >>> inch, psi = 0.0254, 6894.757  # Shigley Example 10-4 prints 281 Hz (from k and W rounded)
     >>> round(float(surge_frequency(0.092 * inch, 0.4705 * inch, 21, 11.75e6 * psi, 7861)), 1)
