@@ -587,6 +587,15 @@ def wahl_factor(C):
     A. M. Wahl, *Mechanical Springs* (1944), eq. (2-12): curvature and direct shear at the inner
     fibre of the coil. ``K -> 1`` as ``C -> inf``; undefined for ``C <= 1``.
 
+    Parameters
+    ----------
+    C : float or array [-]
+        Spring index ``D/d``, dimensionless.
+
+    References
+    ----------
+    [wahl] eq. (2-12); value at C = 7 rounded to four places.
+
     >>> round(float(wahl_factor(7.0)), 4)
     1.2129
     """
