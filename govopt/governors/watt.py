@@ -63,8 +63,9 @@ def height_for_speed(omega, g=9.80665):
 
     References
     ----------
-    [textbook-ch3] section 3.4(a) eq. (i); the book's worked figure for 60 rpm (rounded to 0.01
-    cm).
+    [textbook-ch3] section 3.4(a) eq. (i). The section has no worked speed: the example is a hand
+    calculation at 60 rpm with standard gravity (rounded to 0.01 cm; the book's ``89560 / N^2``
+    with g = 981 cm/s^2 gives 24.88 cm).
 
     >>> round(height_for_speed(math.pi * 60 / 30) * 100, 2)  # 60 rpm: 24.84 cm
     24.84
