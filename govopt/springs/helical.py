@@ -476,6 +476,15 @@ def initial_tension_range(C):
     Shigley 9th ed. eq. (10-40), fitted by Shigley to the SMI chart in psi:
     ``tau_i = 33500 / exp(0.105 C) +- 1000 (4 - (C - 3)/6.5)`` psi. Returns ``(low, high)``.
 
+    Parameters
+    ----------
+    C : float or array [-]
+        Spring index ``D/d``, dimensionless.
+
+    References
+    ----------
+    [shigley] eq. (10-40); Shigley Example 10-6 (printed in kpsi, rounded to 0.1 kpsi).
+
     >>> lo, hi = initial_tension_range(6.086)  # Shigley Example 10-6: 14.2 to 21.2 kpsi
     >>> round(float(lo) / 6894.757e3, 1), round(float(hi) / 6894.757e3, 1)
     (14.2, 21.2)
