@@ -81,6 +81,20 @@ def centrifugal_force(m, r, omega):
     """Centrifugal force on a fly weight of mass ``m`` (kg) at radius ``r`` (m) turning at
     ``omega`` (rad/s): ``F = m r omega^2`` (N). The article's eq. 6 (and inside eq. 1).
 
+    Parameters
+    ----------
+    m : float or array [kg]
+        Mass of the fly weight.
+    r : float or array [m]
+        Radius of its centre of mass.
+    omega : float or array [rad/s]
+        Angular speed.
+
+    References
+    ----------
+    [traction-article] eq. 6; the example below is the article's 8 lbf weight at 2.5 in and
+    250 rpm (force rounded to 0.001 lbf).
+
     The article writes ``F = W r N^2 / 2933`` (W in lbf, r in inches, N in rpm, "the constant 2933
     has dimensions of inches"). With ``W = m g``, ``F = (W/g) r (2 pi N / 60)^2``, so the
     constant is ``g / (2 pi / 60 rad/s per rpm)^2`` = 2933.9 *feet* (g = 32.174 ft/s^2) and, with

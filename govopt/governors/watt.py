@@ -54,6 +54,19 @@ def height_for_speed(omega, g=9.80665):
     """Height of a Watt governor with the sleeve neglected, ``h = g / omega^2`` (m; ``omega`` in
     rad/s, ``g`` in m/s^2), textbook section 3.4(a) eq. (i).
 
+    Parameters
+    ----------
+    omega : float [rad/s]
+        Angular speed of the spindle.
+    g : float [m/s^2]
+        Acceleration of gravity.
+
+    References
+    ----------
+    [textbook-ch3] section 3.4(a) eq. (i). The section has no worked speed: the example is a hand
+    calculation at 60 rpm with standard gravity (rounded to 0.01 cm; the book's ``89560 / N^2``
+    with g = 981 cm/s^2 gives 24.88 cm).
+
     >>> round(height_for_speed(math.pi * 60 / 30) * 100, 2)  # 60 rpm: 24.84 cm
     24.84
     """
@@ -63,6 +76,15 @@ def height_for_speed(omega, g=9.80665):
 def height_constant(g):
     """``C`` in ``h = C / N^2`` (N in rpm): ``900 g / pi^2``, in the units of ``g`` times rpm^2
     (section 3.4(a)). The book prints 89560 cm rpm^2 for g = 981 cm/s^2; it is 89 456.
+
+    Parameters
+    ----------
+    g : float [length/s^2]
+        Acceleration of gravity, in the length unit wanted for ``h``.
+
+    References
+    ----------
+    [textbook-ch3] section 3.4(a), the constant of ``h = C / N^2``.
 
     >>> round(height_constant(981.0)), round(height_constant(980.665))
     (89456, 89426)

@@ -98,6 +98,18 @@ SEATING = {
 def spring_index(d, D):
     """Spring index ``w = C = D/d`` (EN 13906-1 symbol w; Shigley eq. (10-1) C).
 
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+
+    References
+    ----------
+    [en13906-1] symbol w; [shigley] eq. (10-1). Example: Shigley Problem 10-3 (d = 2.5 mm,
+    D = 28.5 mm).
+
     >>> float(spring_index(2.5e-3, 28.5e-3))
     11.4
     """
@@ -109,6 +121,16 @@ def bergstrasser_factor(C):
 
     EN 13906-1:2013 eq. for k; Shigley eq. (10-5) K_B. Differs from Wahl's by under 1.4 % for
     4 <= C <= 12 (10th ed. solutions manual, Problem 10-1).
+
+    Parameters
+    ----------
+    C : float or array [-]
+        Spring index ``D/d``, dimensionless.
+
+    References
+    ----------
+    [en13906-1] factor k; [shigley] eq. (10-5). Example: Shigley Problem 10-3 (rounded to
+    three places as printed).
 
     >>> round(float(bergstrasser_factor(11.4)), 3)  # 10th ed. Problem 10-3
     1.117
@@ -131,6 +153,22 @@ def correction_factor(C, correction: str):
 def stiffness(d, D, n, G):
     """Spring rate ``R = G d^4 / (8 D^3 n)`` (N/m), EN 13906-1 eq. for R; Shigley eq. (10-9).
 
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    G : float [Pa]
+        Shear modulus of the wire.
+
+    References
+    ----------
+    [en13906-1] rate R; [shigley] eq. (10-9). Example: Shigley Problem 10-3 (printed in N/mm,
+    rounded to three places).
+
     >>> round(float(stiffness(2.5e-3, 28.5e-3, 13, 81e9)) / 1e3, 3)  # N/mm, Problem 10-3
     1.314
     """
@@ -141,6 +179,26 @@ def shear_stress(F, d, D, correction: str = "none"):
     """Torsional shear stress ``tau = K 8 F D / (pi d^3)`` (Pa); K by ``correction``.
 
     EN 13906-1 eq. for tau (uncorrected) and tau_k = k tau; Shigley eq. (10-7) with K_B.
+
+    Parameters
+    ----------
+    F : float or array [N]
+        Axial spring force (its magnitude is used).
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    correction : str [-]
+        ``"none"``, ``"wahl"`` or ``"bergstrasser"`` (the factor K).
+
+    References
+    ----------
+    [en13906-1] stresses tau and tau_k; [shigley] eq. (10-7). Example: Shigley Problem 10-3
+    backwards, the force :func:`force_at_stress` gives back the stress (MPa, rounded to 0.1).
+
+    >>> F = force_at_stress(871.2e6, 2.5e-3, 28.5e-3, "bergstrasser")
+    >>> round(float(shear_stress(F, 2.5e-3, 28.5e-3, "bergstrasser")) / 1e6, 1)
+    871.2
     """
     d = np.asarray(d, dtype=float)
     K = correction_factor(spring_index(d, D), correction)
@@ -149,6 +207,21 @@ def shear_stress(F, d, D, correction: str = "none"):
 
 def force_at_stress(tau, d, D, correction: str = "none"):
     """Force that raises the stress to ``tau``: ``F = pi d^3 tau / (8 K D)`` (Shigley (10-7)).
+
+    Parameters
+    ----------
+    tau : float or array [Pa]
+        Shear stress to reach.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    correction : str [-]
+        ``"none"``, ``"wahl"`` or ``"bergstrasser"`` (the factor K).
+
+    References
+    ----------
+    [shigley] eq. (10-7) with K_B. Example: Shigley Problem 10-3 (force rounded to 0.1 N).
 
     >>> round(float(force_at_stress(871.2e6, 2.5e-3, 28.5e-3, "bergstrasser")), 1)  # N
     167.9
@@ -167,7 +240,22 @@ def solid_length(d_max, n_t, ends: str = "closed_ground"):
     largest wire diameter within tolerance ``d_max`` (nominal ``d`` plus its tolerance,
     :func:`govopt.springs.tolerances.max_wire_diameter`): pass that, the nominal ``d`` only
     where the wire's tolerance is unknown. A hand calculation: 10 total coils of 2.8 mm
-    EN 10270-1 wire (+-0.030 mm) with closed and ground ends, ``L_c = 10 x 2.830 = 28.30 mm``:
+    EN 10270-1 wire (+-0.030 mm) with closed and ground ends, ``L_c = 10 x 2.830 = 28.30 mm``
+    (rounded to 0.01 mm as written by hand).
+
+    Parameters
+    ----------
+    d_max : float or array [m]
+        Largest wire diameter within tolerance (nominal where the tolerance is unknown).
+    n_t : float or array [-]
+        Total number of coils.
+    ends : str [-]
+        End form, a key of :data:`END_FORMS`.
+
+    References
+    ----------
+    [en13906-1] solid length L_c; [en10270-1] wire tolerance of the example.
+
 
     >>> round(float(solid_length(2.8e-3 + 0.030e-3, 10, "closed_ground")) * 1e3, 2)
     28.3
@@ -319,6 +407,24 @@ def surge_frequency(d, D, n, G, density):
     (``f_e = 3.56e5 d/(n D^2)`` in mm for steel) and Shigley eq. (10-25) ``f = 1/2 sqrt(k g/W)``
     with the active-coil weight ``W = pi^2 d^2 D N_a gamma / 4``: the same formula.
 
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    G : float [Pa]
+        Shear modulus of the wire.
+    density : float [kg/m^3]
+        Density of the wire.
+
+    References
+    ----------
+    [en13906-1] natural frequency f_e; [shigley] eq. (10-25). Example: Shigley Example 10-4,
+    which prints 281 Hz from k and W rounded (here rounded to 0.1 Hz).
+
     >>> inch, psi = 0.0254, 6894.757  # Shigley Example 10-4 prints 281 Hz (from k and W rounded)
     >>> round(float(surge_frequency(0.092 * inch, 0.4705 * inch, 21, 11.75e6 * psi, 7861)), 1)
     281.5
@@ -369,6 +475,15 @@ def initial_tension_range(C):
 
     Shigley 9th ed. eq. (10-40), fitted by Shigley to the SMI chart in psi:
     ``tau_i = 33500 / exp(0.105 C) +- 1000 (4 - (C - 3)/6.5)`` psi. Returns ``(low, high)``.
+
+    Parameters
+    ----------
+    C : float or array [-]
+        Spring index ``D/d``, dimensionless.
+
+    References
+    ----------
+    [shigley] eq. (10-40); Shigley Example 10-6 (printed in kpsi, rounded to 0.1 kpsi).
 
     >>> lo, hi = initial_tension_range(6.086)  # Shigley Example 10-6: 14.2 to 21.2 kpsi
     >>> round(float(lo) / 6894.757e3, 1), round(float(hi) / 6894.757e3, 1)
@@ -480,6 +595,15 @@ def wahl_factor(C):
 
     A. M. Wahl, *Mechanical Springs* (1944), eq. (2-12): curvature and direct shear at the inner
     fibre of the coil. ``K -> 1`` as ``C -> inf``; undefined for ``C <= 1``.
+
+    Parameters
+    ----------
+    C : float or array [-]
+        Spring index ``D/d``, dimensionless.
+
+    References
+    ----------
+    [wahl] eq. (2-12); value at C = 7 rounded to four places.
 
     >>> round(float(wahl_factor(7.0)), 4)
     1.2129

@@ -76,6 +76,17 @@ def second_moment(w, t):
     """Second moment of area of the strip about its neutral axis, ``I = w t^3 / 12`` (m^4) for
     width ``w`` and thickness ``t`` (m); the article's eq. 7.
 
+    Parameters
+    ----------
+    w : float or array [m]
+        Width of the strip.
+    t : float or array [m]
+        Thickness of the strip.
+
+    References
+    ----------
+    [traction-article] eq. 7; a 1 in x 1/32 in strip (rounded to 0.0001 mm^4).
+
     >>> round(float(second_moment(0.0254, 0.0254 / 32)) * 1e12, 4)  # 1 in x 1/32 in, mm^4
     1.0585
     """
@@ -85,6 +96,24 @@ def second_moment(w, t):
 def stiffness(w, t, L, E, ends="hinged"):
     """Small-deflection stiffness at the middle, ``kappa = c E I / L^3`` (N/m), ``c`` = 48 hinged
     or 192 clamped (:data:`ENDS`; article eq. 5); ``w``, ``t``, ``L`` in m, ``E`` in Pa.
+
+    Parameters
+    ----------
+    w : float or array [m]
+        Width of the leaf.
+    t : float or array [m]
+        Thickness of the leaf.
+    L : float or array [m]
+        Length (span) of the leaf.
+    E : float [Pa]
+        Young's modulus.
+    ends : str [-]
+        ``"hinged"`` or ``"clamped"`` (:data:`ENDS`).
+
+    References
+    ----------
+    [traction-article] eq. 5; a 1 in x 0.025 in steel leaf over 8 in, a hand calculation in the
+    article's units (rounded to 0.0001 lbf/in).
 
     >>> from govopt.units import parse_quantity as q
     >>> k = stiffness(q("1 in", "length"), q("0.025 in", "length"), q("8 in", "length"),
