@@ -22,8 +22,6 @@ import inspect
 import pkgutil
 import re
 
-import pytest
-
 from govopt.references import REFERENCES, found_in
 
 PACKAGES = ("govopt.springs", "govopt.analysis", "govopt.governors")
@@ -77,11 +75,17 @@ def test_reference_keys_exist():
     assert not unknown, unknown
 
 
-@pytest.mark.xfail(strict=True, reason="docstrings being written")
-def test_half_documented():
+#: documented functions so far: the count may only grow (raise it with each function written);
+#: the aim is half of the public functions
+DOCUMENTED_AT_LEAST = 14
+
+
+def test_documented_functions_only_grow():
+    """The functions with units per argument, a cited source and a doctest: never fewer than
+    :data:`DOCUMENTED_AT_LEAST` (a docstring losing one of the three fails); prints the rest."""
     functions = list(_functions())
     missing = [name for name, doc in functions if not _documented(doc)]
-    fraction = 1 - len(missing) / len(functions)
-    print(f"documented {len(functions) - len(missing)} of {len(functions)} ({fraction:.1%});"
+    done = len(functions) - len(missing)
+    print(f"documented {done} of {len(functions)} ({done / len(functions):.1%}); aim: half;"
           " missing:\n" + "\n".join(missing))
-    assert fraction >= 0.5
+    assert done >= DOCUMENTED_AT_LEAST
