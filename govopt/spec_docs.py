@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import sys
 import textwrap
 import tomllib
@@ -204,6 +205,53 @@ def describe(key: Key) -> str:
     return (key.meaning[0].upper() + key.meaning[1:] + ". " + "; ".join(f for f in facts if f)
             + (f"; applies {key.when}" if key.when else "")
             + (f" ({key.source})" if key.source else "") + ".")
+
+
+def option_help(key: Key, table: Table) -> str:
+    """The help of the command-line option of ``key`` of ``table`` (``--max-outer-diameter``
+    for ``max_outer_diameter``: a spring spec's keys are `govopt spring`'s options): its meaning
+    and unit (an example in the unit), its choices where they are known without loading
+    anything, its default or that it is required, and when it applies; the table's keys it
+    names written as options. Loads nothing (a command's ``--help`` builds it).
+
+    >>> from govopt.spring_keys import DESIGN
+    >>> option_help(DESIGN.key("max_outer_diameter"), DESIGN)
+    "The largest outside diameter D + d (the bore it works in): a length, e.g. '40 mm'."
+    >>> option_help(DESIGN.key("length_1"), DESIGN)
+    "The working (installed) length L1 at --min-force: a length, e.g. '80 mm'. Applies to \
+compression springs."
+    """
+    dim = key.dimension
+    example = key.example if key.example is not None else EXAMPLES.get(dim or "")
+    if key.shape == "list":
+        what = (" or ".join(f"'{c}'" for c in key.options()) + f", or {dim}s as one text, "
+                f"e.g. '{', '.join(example)}'")
+    elif key.quantity:
+        what = f"a {dim.replace('_', ' ')}, e.g. '{example}'"
+    elif key.kind == "choice" and isinstance(key.choices, tuple):
+        what = "one of " + ", ".join(f"'{c}'" if isinstance(c, str) else str(c)
+                                     for c in key.choices)
+    elif key.kind == "choice":  # loaded on first use: where they are listed
+        what = "a name listed in docs/reference/" + ("spring-spec.md" if table.name == "spring"
+                                                     else "spec.md")
+        what += f", e.g. '{example}'" if example else ""
+    elif key.kind in ("number", "count"):
+        words = key.range_words()
+        what = f"a number in {words}" if words not in ("> 0", ">= 0") else ""
+    else:
+        what = ""
+    text = key.meaning[0].upper() + key.meaning[1:] + (f": {what}." if what else ".")
+    if key.required:
+        text += " Required (here or in the spec)."
+    elif key.default is not None or key.default_text:
+        text += f" Default: {key.default_words()}."
+    if key.when:
+        text += f" Applies {key.when}."
+    names = sorted((n for n in table.names if "_" in n), key=len, reverse=True)
+    if names:
+        text = re.sub(r"(?<![\w/.])(" + "|".join(names) + r")(?!\w|\.\w)",
+                      lambda m: "--" + m[1].replace("_", "-"), text)
+    return text
 
 
 def _comment(key: Key) -> list[str]:
