@@ -152,7 +152,7 @@ def merged(spec: str | Path | None, options: dict, command: str = "design"
         raw = data.get("spring")
         if command == "design" and isinstance(raw, dict):
             table = FORMS[form(raw)][0]
-        top = Reader(str(spec), data, "", entries, top_table(table))
+        top = Reader(str(spec), data, "", entries, top_table(table.meaning))
         top.guide = f"{GUIDE} {'check' if table is CHECK else form(raw or {})}:"
         written = top.read(NAME) or Path(spec).stem
         name = name or written  # --name over the spec's
@@ -168,6 +168,7 @@ def merged(spec: str | Path | None, options: dict, command: str = "design"
             geometry = next(k.name for k in GEOMETRY if sp.has(k.name))
             sp.fail(geometry, f"a spring's geometry: check it with 'govopt spring check {spec}' "
                               "(a design spec states forces and limits)")
+        _another_forms_key(sp, table)
         sp.used.update(table.names)  # read below, where no option overrides it
         sp.finish()
     keys = [k for k in table.keys if k.name != "problem"]
@@ -186,6 +187,21 @@ def merged(spec: str | Path | None, options: dict, command: str = "design"
     if isinstance(values.get("wire_sizes"), tuple):
         values["wire_sizes"] = tuple(sorted(values["wire_sizes"]))
     return values, where, problem, name, entries
+
+
+def _another_forms_key(sp: Reader, table) -> None:
+    """A key of another form of ``[spring]`` (:data:`govopt.spring_keys.FORMS`: ``stiffness``
+    in a spring to check) named as such, not as an unknown key."""
+    def what(name: str) -> str:
+        spring, command = FORMS[name]
+        also = f', with problem = "{name}"' if spring is SANDGREN else ""
+        return f"{spring.meaning.split(':')[0]} ({command}{also})"
+
+    here = next(name for name, (spring, _) in FORMS.items() if spring is table)
+    for key in map(str, sp.table):
+        other = next((n for n, (spring, _) in FORMS.items() if key in spring.names), None)
+        if key not in table.names and other is not None:
+            sp.fail(key, f"not a key of {what(here)}; it is one of {what(other)}")
 
 
 def _outputs(xlsx, plots, output, stem: str, replace: bool, inputs) -> None:

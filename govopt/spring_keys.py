@@ -65,7 +65,7 @@ MATERIAL = Key("material", "choice", "the wire grade (govopt/data/spring_materia
                default=None, choices=_grades, example="EN10270-1 SH",
                default_text="none (give allowable_stress and shear_modulus)")
 TENSILE_STRENGTH = Key("tensile_strength", "stress", "the wire's tensile strength R_m",
-                       default=None, when="with material \"custom\" (required there)",
+                       default=None, when="with material \"custom\", where it is required",
                        example="1600 MPa")
 SHEAR_MODULUS = Key("shear_modulus", "stress", "the shear modulus G (required without a "
                                                "material, and with a grade whose G varies with "
@@ -215,7 +215,8 @@ GEOMETRY = (
         default=None, default_text="an extension spring's from total_coils", example=9.5),
     Key("total_coils", "number", "the total coils n_t (an extension spring's: its body "
                                  "coils)", default=None,
-        default_text="n + the end form's inactive coils (an extension spring's from n)"),
+        default_text="n + the end form's inactive coils (an extension spring's from n)",
+        example=11.5),
     Key("free_length", "length", "the free length L0 (required for a compression spring; an "
                                  "extension spring's is inside its loops)",
         default=None, default_text="an extension spring's from its loops", example="60 mm"),
@@ -251,11 +252,22 @@ DESCRIPTION = Key("description", "text", "one line saying what the spec is", def
 FORMS = {"design": (DESIGN, "govopt spring"), "sandgren-1990": (SANDGREN, "govopt spring"),
          "check": (CHECK, "govopt spring check")}
 
+#: the templates ``govopt init --type NAME`` writes of a spring spec: NAME -> (the form of its
+#: ``[spring]``, the values it starts from: a bundled example's name, or the values, and its
+#: description); each runs as written
+TEMPLATES = {
+    "spring": ("design", "spring-500n", "a spring to design"),
+    # the spring of docs/how-to/spring.md, checked without its load cycle: every check passes
+    "spring-check": ("check", {"wire_diameter": "3 mm", "mean_diameter": "16 mm",
+                               "active_coils": 9.5, "free_length": "60 mm",
+                               "material": "EN10270-1 SH", "force": "400 N",
+                               "min_force": "100 N"}, "a spring you have, to check"),
+}
 
-def top_table(spring: Table) -> Table:
-    """The top level of a spring spec whose ``[spring]`` is ``spring``."""
-    return Table("", "the spring spec file", (NAME, DESCRIPTION,
-                                              Key("spring", "table", spring.meaning)))
+
+def top_table(spring: str) -> Table:
+    """The top level of a spring spec whose ``[spring]`` is ``spring`` (its meaning)."""
+    return Table("", "the spring spec file", (NAME, DESCRIPTION, Key("spring", "table", spring)))
 
 
 def form(spring: dict) -> str:
@@ -270,7 +282,7 @@ def tables(name: str) -> dict[str, Table]:
     """The tables of a spring spec of form ``name`` (:data:`FORMS`) by path, the top level
     (``""``) first, as :func:`govopt.spec_keys.spec_tables` gives a governor spec's."""
     spring = FORMS[name][0]
-    return {"": top_table(spring), "spring": spring}
+    return {"": top_table(spring.meaning), "spring": spring}
 
 
 def defaults(table: Table) -> dict:
@@ -280,5 +292,5 @@ def defaults(table: Table) -> dict:
             if not k.required and k.default is not None and not callable(k.default)}
 
 
-__all__ = ["CHECK", "DESIGN", "DESCRIPTION", "FORMS", "GEOMETRY", "NAME", "OBJECTIVES",
-           "PROBLEMS", "SANDGREN", "defaults", "form", "tables", "top_table"]
+__all__ = ["CHECK", "DESCRIPTION", "DESIGN", "FORMS", "GEOMETRY", "NAME", "OBJECTIVES",
+           "PROBLEMS", "SANDGREN", "TEMPLATES", "defaults", "form", "tables", "top_table"]
