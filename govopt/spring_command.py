@@ -9,6 +9,9 @@ options with underscores (``force = "500 N"``, ``max_outer_diameter = "40 mm"``,
 (:func:`govopt.optimize.spring_literature.solve_sandgren`) with its data as keys. A spec whose
 ``[spring]`` gives a spring's geometry (``wire_diameter``, ``mean_diameter`` ...) is checked
 (`govopt spring check SPEC`), and `govopt spring -o SPEC` writes one of the designed spring.
+Every key, and so every option, is declared once in :mod:`govopt.spring_keys` (meaning, unit,
+default, range) and read by its declaration (:func:`merged`); the options' help, the reference
+``docs/reference/spring-spec.md``, the templates and the JSON Schema are generated from it.
 
 The design's problem statements beyond a force and a stiffness:
 
@@ -143,17 +146,18 @@ def merged(spec: str | Path | None, options: dict, command: str = "design"
     entries: list = []
     given = {k: v for k, v in options.items() if v is not None}
     opts, sp, problem, name = _option_reader(given, entries), None, None, ""
-    table = CHECK if command == "check" else DESIGN
     if "name" in given:
         name = opts.read(NAME)
         del given["name"]
+    shape = command  # the form of [spring] read: "design", "check" or a problem's name
     if spec is not None:
         data = read_spec_data(spec)
-        raw = data.get("spring")
-        if command == "design" and isinstance(raw, dict):
-            table = FORMS[form(raw)][0]
+        if command == "design" and isinstance(data.get("spring"), dict):
+            shape = form(data["spring"])  # a problem's; a spring's geometry is refused below
+    table = FORMS[shape][0]
+    if spec is not None:
         top = Reader(str(spec), data, "", entries, top_table(table.meaning))
-        top.guide = f"{GUIDE} {'check' if table is CHECK else form(raw or {})}:"
+        top.guide = f"{GUIDE} {shape}:"
         written = top.read(NAME) or Path(spec).stem
         name = name or written  # --name over the spec's
         top.read(DESCRIPTION)
@@ -161,14 +165,14 @@ def merged(spec: str | Path | None, options: dict, command: str = "design"
             top.fail("spring", "missing (required: a [spring] table)")
         sp = top.sub("spring", declared=table)
         top.finish()
-        _listed(sp.table)
-        if table is SANDGREN:
-            problem = sp.read(SANDGREN.key("problem"))
-        elif command == "design" and form(sp.table) == "check":
+        if command == "design" and shape == "check":
             geometry = next(k.name for k in GEOMETRY if sp.has(k.name))
             sp.fail(geometry, f"a spring's geometry: check it with 'govopt spring check {spec}' "
                               "(a design spec states forces and limits)")
-        _another_forms_key(sp, table)
+        _listed(sp.table)
+        if table is SANDGREN:
+            problem = sp.read(SANDGREN.key("problem"))
+        _another_forms_key(sp, shape)
         sp.used.update(table.names)  # read below, where no option overrides it
         sp.finish()
     keys = [k for k in table.keys if k.name != "problem"]
@@ -189,19 +193,18 @@ def merged(spec: str | Path | None, options: dict, command: str = "design"
     return values, where, problem, name, entries
 
 
-def _another_forms_key(sp: Reader, table) -> None:
-    """A key of another form of ``[spring]`` (:data:`govopt.spring_keys.FORMS`: ``stiffness``
-    in a spring to check) named as such, not as an unknown key."""
+def _another_forms_key(sp: Reader, shape: str) -> None:
+    """A key of another form of ``[spring]`` than ``shape`` (:data:`govopt.spring_keys.FORMS`:
+    ``stiffness`` in a spring to check) named as such, not as an unknown key."""
     def what(name: str) -> str:
         spring, command = FORMS[name]
         also = f', with problem = "{name}"' if spring is SANDGREN else ""
         return f"{spring.meaning.split(':')[0]} ({command}{also})"
 
-    here = next(name for name, (spring, _) in FORMS.items() if spring is table)
     for key in map(str, sp.table):
         other = next((n for n, (spring, _) in FORMS.items() if key in spring.names), None)
-        if key not in table.names and other is not None:
-            sp.fail(key, f"not a key of {what(here)}; it is one of {what(other)}")
+        if key not in FORMS[shape][0].names and other is not None:
+            sp.fail(key, f"not a key of {what(shape)}; it is one of {what(other)}")
 
 
 def _outputs(xlsx, plots, output, stem: str, replace: bool, inputs) -> None:

@@ -169,16 +169,6 @@ def test_a_key_commented_out_takes_its_default(tmp_path, name):
 # -- the schema ---------------------------------------------------------------------------------
 
 
-@pytest.fixture(scope="module")
-def validator():
-    jsonschema = pytest.importorskip("jsonschema")
-    from govopt.spec_schema import schema
-
-    found = schema()
-    jsonschema.Draft7Validator.check_schema(found)
-    return jsonschema.Draft7Validator(found)
-
-
 def _errors(validator, data) -> list[str]:
     return [e.message for e in validator.iter_errors(data)]
 
