@@ -18,7 +18,8 @@ import mpmath as mp
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from govopt.analysis.transient import analyse_many, transient
+from govopt.analysis.transient import transient
+from govopt.analysis.transient_events import analyse_many
 
 #: solve_ivp baselines: label -> keyword arguments
 BASELINES = {

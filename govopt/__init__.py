@@ -15,7 +15,7 @@ _EXPORTS = {
     "Check": ".result", "Result": ".result",
     "DesignError": ".errors", "GovoptError": ".errors", "InfeasibleError": ".errors",
     "Spec": ".spec", "SpecError": ".spec", "load_spec": ".spec", "parse_spec": ".spec",
-    "design": ".optimize.search", "evaluate": ".evaluation", "transient": ".analysis.transient",
+    "design": ".optimize.search", "evaluate": ".evaluator", "transient": ".analysis.transient",
     "evaluate_many": ".bulk", "Study": ".study", "load_study": ".study", "run_study": ".study",
 }
 

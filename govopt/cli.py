@@ -1,27 +1,26 @@
 """Command-line interface: typer parses, each command's module (:mod:`govopt.commands`) calls
 the API and prints. No physics here.
 
-Start-up (docs/decisions.md: imports on demand): the root knows its commands by name and one
-line of help; a command's module is imported when it runs or shows its help, and a command
-imports what it uses when it runs (numpy with the evaluator, rich only for the help, the report
-on a terminal and the study's progress bar). typer's pydantic path is not taken: the commands'
-options are converted by :class:`govopt.commands.common.Command`. `benchmarks/bench_startup.py`
-measures `govopt --help` and `govopt evaluate` against ``python -c "import numpy"``.
+Start-up (docs/decisions.md: imports on demand): the root is built for the command a run names
+(:func:`app`): that command's module is imported, and the others are there by name and one
+line of help (:data:`COMMANDS`), enough for the root's help and its errors; a command imports
+what it uses when it runs (numpy with the evaluator, rich only for the help, the report on a
+terminal and the study's progress bar). `benchmarks/bench_startup.py` measures the commands'
+start-up against ``python -c "import numpy"`` and ``python -c "import cvxpy"``.
 """
 
 from __future__ import annotations
 
-import functools
 import importlib
 import os
 import signal
 import sys
+from collections.abc import Collection
 from typing import Annotated
 
 import typer
-import typer.core
 
-from .commands.common import Group, PipeClosed, State, UsageError, echo, fail, internal
+from .commands.common import PipeClosed, State, echo, fail, internal
 
 #: command -> (module in govopt.commands, its typer app, the one line of the root's help)
 COMMANDS = {
@@ -48,45 +47,6 @@ DESCRIPTION = ("Design and evaluate speed governors and their springs: Hamabe's 
                "governors (`govopt examples` lists a spec of each).")
 
 
-@functools.cache
-def command(name: str):
-    """The click command of ``govopt NAME``, built from its module (imported now), once per
-    process (typer builds it from the functions' signatures: ~5 ms, paid again by every run of
-    an embedding's or a test's ``main(argv)`` otherwise)."""
-    module, attribute, _ = COMMANDS[name]
-    app = getattr(importlib.import_module(f"govopt.commands.{module}"), attribute)
-    return typer.main.get_command(app)
-
-
-class _Root(Group):
-    """The root: its commands by name, each built when it is asked for; the root's help lists
-    them from :data:`COMMANDS` without importing one."""
-
-    listing = False  # while the root's help is drawn
-
-    def list_commands(self, ctx) -> list[str]:
-        return list(COMMANDS)
-
-    def get_command(self, ctx, name: str):
-        if name not in COMMANDS:
-            return None
-        if self.listing:  # the line of the root's help, not the command
-            return typer.core.TyperCommand(name, short_help=COMMANDS[name][2],
-                                           rich_markup_mode=self.rich_markup_mode)
-        return command(name)
-
-    def format_help(self, ctx, formatter) -> None:
-        self.listing = True
-        try:
-            super().format_help(ctx, formatter)
-        finally:
-            self.listing = False
-
-
-app = typer.Typer(cls=_Root, help=DESCRIPTION, invoke_without_command=True,
-                  context_settings={"help_option_names": ["-h", "--help"]})
-
-
 def _version(value: bool) -> None:
     if value:
         from . import __version__
@@ -95,13 +55,13 @@ def _version(value: bool) -> None:
         raise typer.Exit()
 
 
-@app.callback()
 def _root(ctx: typer.Context,
           debug: Annotated[bool, typer.Option(
-              "--debug", help="Show the traceback of an unexpected error, and warnings as they "
-                              "come. \\[env var: GOVOPT_DEBUG]")] = False,
+              "--debug", metavar="", help="Show the traceback of an unexpected error, and "
+                                          "warnings as they come. \\[env var: GOVOPT_DEBUG]")]
+          = False,
           version: Annotated[bool, typer.Option(
-              "--version", callback=_version, is_eager=True,
+              "--version", metavar="", callback=_version, is_eager=True,
               help="Print govopt's version and exit.")] = False) -> None:
     State.debug = debug or _debug_env()
     if ctx.invoked_subcommand is None:  # no command: the help, and exit code 2 (nothing ran)
@@ -109,11 +69,25 @@ def _root(ctx: typer.Context,
         raise SystemExit(2)
 
 
-@functools.cache
-def root():
-    """govopt's command line as a click group (its commands built on demand), built once per
-    process."""
-    return typer.main.get_command(app)
+def _listed() -> None:
+    """A command this run does not name: its line in the root's help."""
+
+
+def app(loaded: Collection[str] = ()) -> typer.Typer:
+    """govopt's command line with the commands ``loaded`` (their modules imported now); the
+    others are there by name and one line of help (:data:`COMMANDS`), in that order."""
+    root = typer.Typer(help=DESCRIPTION, invoke_without_command=True,
+                       context_settings={"help_option_names": ["-h", "--help"]},
+                       pretty_exceptions_enable=False)
+    root.callback()(_root)
+    for name, (module, attribute, short) in COMMANDS.items():
+        if name in loaded:
+            sub = getattr(importlib.import_module(f"govopt.commands.{module}"), attribute)
+        else:
+            sub = typer.Typer()
+            sub.command(name, help=short, short_help=short)(_listed)
+        root.add_typer(sub)
+    return root
 
 
 def _debug_env() -> bool:
@@ -143,13 +117,16 @@ def _run(argv: list[str]) -> None:
         default, subcommands = DEFAULT_SUBCOMMANDS[group]
         if argv[at + 1:at + 2] not in ([], *([c] for c in subcommands), ["-h"], ["--help"]):
             argv = [*argv[:at + 1], default, *argv[at + 1:]]
+    # shell completion (typer's, asked through this variable) may complete any command's words
+    loaded = COMMANDS if "_GOVOPT_COMPLETE" in os.environ else argv[at:at + 1]
     try:
-        code = root().main(args=argv, prog_name="govopt", standalone_mode=False)
-    except UsageError as exc:
-        where = exc.ctx.command_path if exc.ctx is not None else _command_path(argv)
-        fail(f"{exc.format_message()} (see '{where} --help')")
+        code = app(loaded)(args=argv, prog_name="govopt", standalone_mode=False)
     except typer.Abort:
         raise SystemExit(1) from None
+    except typer.TyperException as exc:  # a bad command line: typer's usage errors
+        context = getattr(exc, "ctx", None)
+        where = context.command_path if context is not None else _command_path(argv)
+        fail(f"{exc.format_message().rstrip('.')} (see '{where} --help')")
     if isinstance(code, int) and code:
         raise SystemExit(code)
 
@@ -162,7 +139,7 @@ def _command_path(argv: list[str]) -> str:
     return "govopt"
 
 
-def _on_sigterm(signum, frame) -> None:
+def on_sigterm(signum, frame) -> None:
     """SIGTERM unwinds like an exception, so every ``finally`` runs (temporary files are
     removed); a second SIGTERM during that clean-up is ignored."""
     signal.signal(signal.SIGTERM, signal.SIG_IGN)
@@ -179,7 +156,7 @@ def main(argv: list[str] | None = None) -> None:
     # third of `govopt evaluate`'s CPU); studies run processes in parallel anyway.
     os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     if argv is None:
-        signal.signal(signal.SIGTERM, _on_sigterm)
+        signal.signal(signal.SIGTERM, on_sigterm)
     argv = sys.argv[1:] if argv is None else [str(a) for a in argv]
     try:
         _run(argv)

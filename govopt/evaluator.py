@@ -1,19 +1,22 @@
-"""The one evaluator: every figure and check of N designs of a spec, over arrays.
+"""The one evaluator: every figure and check of N designs of a spec, over arrays, and one
+design's evaluation as a :class:`~govopt.result.Result`.
 
-:func:`core` computes, for designs given as arrays (:func:`govopt.bulk.design_arrays`), the
-statics (Hamabe eqs. 1, 2, 11, 12), ``k^2`` (eqs. 18-20), the load-change model (eqs. 24-32,
-:func:`govopt.analysis.transient.analyse_many`) and the classic measures (textbook ch. 3) in a
-few numpy operations, and evaluates every requirement row of :mod:`govopt.requirements` on them
-in one :class:`~govopt.requirements.CheckTable`. The parts that have no vectorised form run
-inside it design by design, into the same table: a type's periodic forcing
-(:meth:`Governor.vibration`, Hamabe Part II), Hamabe's friction transient (eqs. 42-46, a
-sequence of strokes), and the spring's own checks where the type or a wire grade supplies them
-(:meth:`Governor.spring_checks`). A design no spring can realise gets the one-line diagnosis
-:func:`diagnose` (the ``DesignError`` :func:`govopt.evaluate` raises for it) instead of figures.
+:func:`core` computes, for designs given as arrays (:func:`govopt.bulk.design_arrays`), the statics
+(Hamabe eqs. 1, 2, 11, 12), ``k^2`` (eqs. 18-20), the load-change model (eqs. 24-32,
+:func:`govopt.analysis.transient_events.analyse_many`) and the classic measures (textbook ch. 3) in
+a few numpy operations, and evaluates every requirement row of :mod:`govopt.requirements` on them in
+one :class:`~govopt.requirements.CheckTable`. The parts that have no vectorised form run inside it
+design by design, into the same table: a type's periodic forcing (:meth:`Governor.vibration`, Hamabe
+Part II), Hamabe's friction transient (eqs. 42-46, a sequence of strokes), and the spring's own
+checks where the type or a wire grade supplies them (:meth:`Governor.spring_checks`). A design no
+spring can realise gets the one-line diagnosis :func:`diagnose` (the ``DesignError``
+:func:`govopt.evaluate` raises for it) instead of figures.
 
-:func:`govopt.evaluate` is this core with one design (plus the report's tables);
+:func:`evaluate` (``govopt.evaluate``) is this core with one design, plus what only a report
+needs (the characteristic table, the load changes' responses, the spring maker's sheet);
 :func:`govopt.bulk.evaluate_many` is it over chunks, as a pandas frame. There is no other
-computation of a check.
+computation of a check. Only what the spec asks for is modelled: dynamics run when the spec has
+engine data, friction only when the design has a friction moment.
 """
 
 from __future__ import annotations
@@ -24,11 +27,14 @@ from dataclasses import dataclass, field, fields, replace
 import numpy as np
 
 from .analysis import loadchange, statics
-from .analysis import transient as tr
 from .analysis.classic import CLASSIC_FIGURES, classic_measures
 from .analysis.classic import report as classic_report
+from .analysis.over_regulation import over_regulates
+from .analysis.transient_cubic import hamabe_initial_conditions
+from .analysis.transient_events import TransientSummary, analyse_many
 from .errors import DesignError, located
 from .governors import Governor
+from .governors.base import Terms
 from .requirements import (
     CheckTable,
     friction_rows,
@@ -39,6 +45,7 @@ from .requirements import (
     stress_row,
     vibration_rows,
 )
+from .result import Result
 from .spec import Design, Spec
 from .springs import helical as hx
 
@@ -182,7 +189,7 @@ def spring_design_of(sd: statics.SpringDesign, i: int, given: bool) -> statics.S
     return statics.SpringDesign(**{**vals, "inertia_given": given})
 
 
-def _pick(s: tr.TransientSummary, j: int) -> tr.TransientSummary:
+def _pick(s: TransientSummary, j: int) -> TransientSummary:
     """Design ``j`` of a :class:`TransientSummary` of many."""
     return replace(s, **{f.name: np.asarray(getattr(s, f.name))[j] for f in fields(s)})
 
@@ -241,6 +248,96 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         dynamics = dynamics and plan.runs("load_change")
         vibration = vibration and plan.runs("vibration")
         friction_on = friction_on and plan.runs("friction")
+    s = _statics(spec, cols)
+    out = _figures(spec, cols, s)
+    per_design = _PerDesign(spec, s.impossible)
+    own = _own_spring_checks(spec)
+    vibs = _vibrations(spec, s, per_design, vibration or own)
+    # the checks, in this order: the spring's, statics, load changes, vibration, friction, the
+    # design requirements
+    checks = CheckTable(s.n)
+    _spring_checks(spec, cols, s, per_design, vibs, checks, own)
+    _statics_checks(spec, cols, s, out["irregularity"], checks)
+    dyn: dict = {}
+    if dynamics and spec.engine is not None and spec.load_changes:
+        reports = _load_changes(spec, s, out, checks, report)
+        if reports:
+            dyn["load_changes"] = reports
+    if vibration:
+        _vibration_checks(spec, s, vibs, out, checks)
+    if friction_on and spec.engine is not None and spec.load_changes:
+        runs_of = _friction(spec, cols, s, per_design, checks)
+        if report and 0 in runs_of:
+            dyn["friction"] = [run.to_dict() for run in runs_of[0]]
+    _requirement_checks(spec, cols, s, out, checks)
+    measures = None
+    if classic:  # the textbook's measures (ch. 3) over the range, the friction band included
+        measures = classic_measures(spec, s.sd, s.x, s.omega, s.t,
+                                    friction_at(spec.governor, cols, s.x), ~s.impossible)
+        out.update({k: measures[k] for k in CLASSIC_FIGURES})
+    error = np.full(s.n, None, dtype=object)
+    for i in np.nonzero(s.impossible)[0]:
+        error[i] = per_design.said.get(int(i)) or diagnose(spec, design_of(cols, i))
+    ev = Evaluation(s.n, spec, out, checks, error, plan=plan)
+    if report and not s.impossible[0]:
+        _report(ev, s, vibs[0], vibration, measures, dyn)
+    return ev
+
+
+@dataclass
+class _Statics:
+    """The statics of N designs (:func:`_statics`): arrays of shape ``(N, K)`` over the
+    configurations ``x`` (``(N, 1)`` per design), SI, and ``impossible``, the designs found
+    impossible so far (every later step that finds one marks it here)."""
+
+    x: np.ndarray
+    i_n: int  # the normal configuration's index in x
+    t: Terms  # the statics' terms at x
+    m: np.ndarray
+    central: np.ndarray
+    I_given: np.ndarray  # the designs' own inertia, NaN where the type's
+    dashpot: np.ndarray  # (N,), NaN for none
+    kappa: np.ndarray
+    l0: np.ndarray
+    w2: np.ndarray  # omega^2 of the characteristic
+    omega: np.ndarray
+    k2: np.ndarray
+    F: np.ndarray  # spring force
+    M_f: np.ndarray
+    M_z: np.ndarray
+    stress: np.ndarray
+    rise: np.ndarray  # (N,): the least slope of the characteristic
+    sd: statics.SpringDesign
+    helical: np.ndarray  # (N,): a wire spring of a known material
+    impossible: np.ndarray  # (N,)
+
+    @property
+    def n(self) -> int:
+        return self.impossible.size
+
+    def spring_of(self, i: int) -> statics.SpringDesign:
+        """Design ``i``'s :class:`SpringDesign` (scalars; as :func:`statics.spring_design`)."""
+        return spring_design_of(self.sd, i, bool(np.isfinite(self.I_given[i, 0])))
+
+    def char_of(self, spec: Spec, i: int) -> statics.Characteristic:
+        """Design ``i``'s characteristic (:func:`statics.characteristic`, from the arrays)."""
+        t, K = self.t, self.x.size
+        return statics.Characteristic(
+            alpha=self.x, omega=self.omega[i], M_z=self.M_z[i], M_f=self.M_f[i],
+            M_r0=np.broadcast_to(t.cf + self.w2 * t.ci, (self.n, K))[i],
+            spring_force=self.F[i], stress=self.stress[i], extra=spec.governor.columns(self.x),
+            omega_mean=_omega_mean(spec))
+
+
+def _omega_mean(spec: Spec) -> float:
+    return spec.speed.omega_mean if spec.speed is not None else math.nan
+
+
+def _statics(spec: Spec, cols: dict) -> _Statics:
+    """The statics of every design over the configurations, vectorised: the spring (rate and
+    free length), the characteristic (Hamabe eqs. 1, 2, 11, 12), ``k^2`` (eqs. 18-20), the
+    spring's force and stress, the characteristic's least slope; and the designs they show
+    impossible (no spring, a free length <= 0, no equilibrium speed, a figure not finite)."""
     gov = spec.governor
     n = len(cols["flying_mass"])
     col = {k: v[:, None] for k, v in cols.items()}  # (N, 1) against configurations (K,)
@@ -268,7 +365,6 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         impossible |= ~(w2 > 0).all(axis=1)
         omega = np.sqrt(w2)
         w2c = omega**2  # as the characteristic: k^2 at its omega^2
-        wi, wa, wn = omega[:, 0], omega[:, -1], omega[:, i_n]
         I_x = np.where(np.isnan(I_given), gov.inertia(x, m, central), I_given)
         stiff = t.stiffness(kappa, l0, w2c)
         k2 = np.broadcast_to(stiff / I_x, (n, K))
@@ -292,18 +388,30 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         slope = np.broadcast_to(slope, (n, K))
         secant = np.diff(omega, axis=1) / np.diff(x)
         rise = np.minimum(slope.min(axis=1), secant.min(axis=1, initial=np.inf))
-    omega_mean = spec.speed.omega_mean if spec.speed is not None else math.nan
-    out = {f"{gov.mass_key}_mass_kg": cols["flying_mass"], "central_mass_kg": central[:, 0]}
+    return _Statics(x=x, i_n=i_n, t=t, m=m, central=central, I_given=I_given,
+                    dashpot=cols["dashpot"], kappa=kappa, l0=l0, w2=w2, omega=omega, k2=k2,
+                    F=F, M_f=M_f, M_z=M_z, stress=stress, rise=rise, sd=sd, helical=helical,
+                    impossible=impossible)
+
+
+def _figures(spec: Spec, cols: dict, s: _Statics) -> dict:
+    """The per-design figures of the statics and the spring (name -> array of N, SI): the
+    columns of a bulk row before its checks."""
+    gov, mat, n = spec.governor, spec.material, s.n
+    omega_mean = _omega_mean(spec)
+    wi, wa, wn = s.omega[:, 0], s.omega[:, -1], s.omega[:, s.i_n]
+    helical = s.helical
+    out = {f"{gov.mass_key}_mass_kg": cols["flying_mass"], "central_mass_kg": s.central[:, 0]}
     if gov.spring is not None:
         out.update({"wire_diameter_m": cols["wire_diameter"],
                     "coil_radius_m": cols["coil_radius"], "active_turns": cols["active_turns"],
-                    "stiffness_N_per_m": kappa[:, 0], f"{gov.free_length_key}_m": l0[:, 0]})
+                    "stiffness_N_per_m": s.kappa[:, 0], f"{gov.free_length_key}_m": s.l0[:, 0]})
     out[dashpot_column(gov)] = cols["dashpot"]
     out.update({"irregularity": (wa - wi) / omega_mean, "omega_inner_rad_s": wi,
                 "omega_outer_rad_s": wa, "omega_normal_rad_s": wn})
     if gov.spring is not None:
-        out.update({"min_spring_force_N": F.min(axis=1), "max_spring_force_N": F.max(axis=1),
-                    "max_stress_Pa": stress.max(axis=1)})
+        out.update({"min_spring_force_N": s.F.min(axis=1), "max_spring_force_N": s.F.max(axis=1),
+                    "max_stress_Pa": s.stress.max(axis=1)})
     smass = np.zeros(n)
     if mat is not None and mat.shear_modulus is not None:
         dd, rr, nn = cols["wire_diameter"], cols["coil_radius"], cols["active_turns"]
@@ -317,157 +425,195 @@ def core(spec: Spec, cols: dict, *, dynamics: bool = True, vibration: bool = Tru
         for k, v in props.items():
             out[k] = np.where(helical, v, np.nan)
     out["spring_mass_kg"] = np.where(helical, smass, np.nan)
-    out["moving_mass_kg"] = cols["flying_mass"] + central[:, 0] + np.where(helical, smass, 0.0)
-    out.update({"k2_min_rad2_s2": k2.min(axis=1), "k2_max_rad2_s2": k2.max(axis=1),
-                "k2_normal_rad2_s2": k2[:, i_n]})
+    out["moving_mass_kg"] = cols["flying_mass"] + s.central[:, 0] + np.where(helical, smass, 0.0)
+    out.update({"k2_min_rad2_s2": s.k2.min(axis=1), "k2_max_rad2_s2": s.k2.max(axis=1),
+                "k2_normal_rad2_s2": s.k2[:, s.i_n]})
+    return out
 
-    dashpot = cols["dashpot"]
-    has_dashpot = np.isfinite(dashpot)
-    own_checks = gov.spring is not None and (overridden(gov, "spring_checks") or (
-        mat is not None and getattr(mat, "grade", None) is not None))
-    # -- the type's forced vibration, design by design (also the spring's load cycle) --
-    def sd_of(i: int) -> statics.SpringDesign:
-        """Design ``i``'s :class:`SpringDesign` (scalars; as :func:`statics.spring_design`)."""
-        return spring_design_of(sd, i, bool(np.isfinite(I_given[i, 0])))
 
-    said: dict[int, str] = {}  # a per-design part's own diagnosis, by design
+class _PerDesign:
+    """Runs a part that has no vectorised form for one design (``self(i, part)``): its
+    DesignError (or an overflow) makes design ``i`` impossible with that diagnosis (``said``:
+    what evaluate raises for it)."""
 
-    def per_design(i: int, part):
-        """``part()`` for design ``i``; its DesignError (or an overflow) makes ``i``
-        impossible with that diagnosis (what evaluate raises for it)."""
+    def __init__(self, spec: Spec, impossible: np.ndarray):
+        self.spec, self.impossible, self.said = spec, impossible, {}
+
+    def __call__(self, i: int, part):
         try:
             return part()
         except DesignError as exc:
-            said[i] = located(spec.path, str(exc))
+            self.said[i] = located(self.spec.path, str(exc))
         except OverflowError:
-            said[i] = overflow_message(spec)
-        impossible[i] = True
+            self.said[i] = overflow_message(self.spec)
+        self.impossible[i] = True
         return None
 
-    vibs = [None] * n
-    if (vibration or own_checks) and overridden(gov, "vibration"):
-        for i in np.nonzero(~impossible & (has_dashpot | (spec.engine is not None)))[0]:
+
+def _own_spring_checks(spec: Spec) -> bool:
+    """Whether the spring brings checks of its own (:meth:`Governor.spring_checks`): the type's
+    own spring (a leaf), or a wire of a grade."""
+    gov, mat = spec.governor, spec.material
+    return gov.spring is not None and (overridden(gov, "spring_checks") or (
+        mat is not None and getattr(mat, "grade", None) is not None))
+
+
+def _engine_or_dashpot(spec: Spec, s: _Statics) -> np.ndarray:
+    """The designs that are possible so far and have a dash-pot, or an engine to drive them."""
+    return ~s.impossible & (np.isfinite(s.dashpot) | (spec.engine is not None))
+
+
+def _vibrations(spec: Spec, s: _Statics, per_design: _PerDesign, wanted: bool) -> list:
+    """The type's forced vibration (:meth:`Governor.vibration`, Hamabe Part II) of each design
+    with a dash-pot or an engine, design by design (also the spring's load cycle); None where
+    not ``wanted`` or the type has none."""
+    gov = spec.governor
+    vibs = [None] * s.n
+    if wanted and overridden(gov, "vibration"):
+        has_dashpot = np.isfinite(s.dashpot)
+        for i in np.nonzero(_engine_or_dashpot(spec, s))[0]:
             vibs[i] = per_design(i, lambda i=i: gov.vibration(
-                spec, sd_of(i), float(k2[i, i_n]), float(dashpot[i]) if has_dashpot[i] else 0.0))
+                spec, s.spring_of(i), float(s.k2[i, s.i_n]),
+                float(s.dashpot[i]) if has_dashpot[i] else 0.0))
+    return vibs
 
-    # -- checks, in this order: the spring's own, statics, load changes, vibration, friction,
-    # the design requirements --
-    checks = CheckTable(n)
-    w0sq = np.full(n, omega_mean**2) if spec.speed is not None else wn**2
 
-    def char_of(i: int) -> statics.Characteristic:
-        """Design ``i``'s characteristic (:func:`statics.characteristic`, from the arrays)."""
-        return statics.Characteristic(
-            alpha=x, omega=omega[i], M_z=M_z[i], M_f=M_f[i],
-            M_r0=np.broadcast_to(t.cf + w2 * t.ci, (n, K))[i], spring_force=F[i],
-            stress=stress[i], extra=gov.columns(x), omega_mean=omega_mean)
-
-    if own_checks:  # the type's own spring (a leaf) or a graded wire: its own checks
-        for i in np.nonzero(~impossible)[0]:
-            own = per_design(i, lambda i=i: gov.spring_checks(spec, sd_of(i), char_of(i),
-                                                              vibs[i]))
-            for c in own or []:
+def _spring_checks(spec: Spec, cols: dict, s: _Statics, per_design: _PerDesign, vibs: list,
+                   checks: CheckTable, own: bool) -> None:
+    """The spring's checks: its own (``own``: a leaf's, a graded wire's), design by design, or
+    a helical spring's stress and geometry (coil clash, buckling, pitch), which need no wire
+    grade."""
+    gov, mat, n = spec.governor, spec.material, s.n
+    if own:
+        for i in np.nonzero(~s.impossible)[0]:
+            found = per_design(i, lambda i=i: gov.spring_checks(spec, s.spring_of(i),
+                                                                s.char_of(spec, i), vibs[i]))
+            for c in found or []:
                 on = np.zeros(n, bool)
                 on[i] = True
                 checks.add(c.name, c.value, c.limit, c.sense, scale=c.scale, verdict=c.verdict,
                            where=on, unit=c.unit, source=c.source, group=c.group)
-    elif gov.spring is not None and mat is not None and helical.any():
-        # a helical spring: its stress, and its geometry (coil clash, buckling, pitch), which
-        # needs no wire grade
+    elif gov.spring is not None and mat is not None and s.helical.any():
         from .analysis import spring_engineering
 
-        checks.add_row(stress_row(mat), {"stress": stress.max(axis=1)}, where=helical)
+        checks.add_row(stress_row(mat, spec), {"stress": s.stress.max(axis=1)}, where=s.helical)
         for row, value, limit, source in spring_engineering.geometry_table(
                 spec, cols["wire_diameter"], 2.0 * cols["coil_radius"],
-                cols["active_turns"], kappa[:, 0], l0[:, 0], F.min(axis=1), F.max(axis=1)):
-            checks.add(row.name, value, limit, row.sense, where=helical, unit=row.unit,
+                cols["active_turns"], s.kappa[:, 0], s.l0[:, 0], s.F.min(axis=1),
+                s.F.max(axis=1)):
+            checks.add(row.name, value, limit, row.sense, where=s.helical, unit=row.unit,
                        source=source, group="spring")
+
+
+def _statics_checks(spec: Spec, cols: dict, s: _Statics, irregularity: np.ndarray,
+                    checks: CheckTable) -> None:
+    """The statics' rows (:func:`govopt.requirements.statics_rows`): the speed range over the
+    whole operating band (with friction) where the spec asks for it, the characteristic's
+    rise, the spring force and ``k^2``."""
+    gov, n = spec.governor, s.n
     band = (None, None)
-    friction_x = friction_at(gov, cols, x)  # the friction band at every configuration
     if spec.speed is not None and spec.speed.band:  # the whole operating band, with friction,
-        with np.errstate(all="ignore"):  # over the whole range
-            band = statics.band_extremes(*(np.broadcast_to(b2, (n, K)) for b2 in
-                                           statics.band_speeds_squared(t, kappa, l0,
+        friction_x = friction_at(gov, cols, s.x)  # over the whole range
+        with np.errstate(all="ignore"):
+            band = statics.band_extremes(*(np.broadcast_to(b2, (n, s.x.size)) for b2 in
+                                           statics.band_speeds_squared(s.t, s.kappa, s.l0,
                                                                        friction_x)))
-    checks.add_rows(statics_rows(spec), statics_figures(out["irregularity"], *band, rise, w0sq,
-                                                        F, k2))
-    dyn: dict = {}
-    if dynamics and spec.engine is not None and spec.load_changes:
-        settle = np.full(n, -np.inf)
-        run = ~impossible & has_dashpot
-        reports = []
-        for lc in spec.load_changes:
-            hur, over, overs, st_time, xi0, good, detail = _load_change_many(
-                spec, lc, m, kappa, l0, central, I_given, dashpot, run)
-            impossible |= run & ~good
-            on = run & good
-            out[f"hurwitz_margin: {lc.name}"] = np.where(on, hur, np.nan)
-            out[f"over_regulation: {lc.name}"] = np.where(on, over, np.nan)
-            out[f"settling_time_s: {lc.name}"] = np.where(on, st_time, np.nan)
-            settle = np.where(on, np.maximum(settle, st_time), settle)
-            checks.add_rows(load_change_rows(spec, lc.name), {
-                "hurwitz": hur, "over": over, "over_regulates": overs, "xi0": xi0,
-                "settling": st_time}, where=on)
-            if report and on[0]:
-                a, xs, k2_0, s = detail
-                reports.append(loadchange.summary(spec, lc, tuple(float(v[0]) for v in a),
-                                                  tuple(float(v[0]) for v in xs),
-                                                  float(k2_0[0]), _pick(s, 0)))
-        out["settling_time_s"] = np.where(settle > -np.inf, settle, np.nan)
-        if reports:
-            dyn["load_changes"] = reports
-    # the report's dict of design 0 only (its trace and JSON cost far more than the one number)
-    vib_dicts = ([None if v is None else v.to_dict() for v in vibs[:1]]
-                 if report and vibration else [])
-    p2p = np.array([np.nan if v is None else float(v.peak_to_peak_rad) for v in vibs]
-                   if vibration else [], dtype=float)
-    if vibration and overridden(gov, "vibration"):
-        if (~impossible & (has_dashpot | (spec.engine is not None))).any():
-            out["vibration_p2p_rad"] = p2p
-            checks.add_rows(vibration_rows(spec), {"p2p": p2p}, where=~np.isnan(p2p))
-    if friction_on and spec.engine is not None and spec.load_changes:
-        moves = np.zeros(n, bool)
-        for lc in spec.load_changes:
-            moves |= friction_at(gov, cols, np.array([lc.alpha_to]))[:, 0] > 0
-        runs_of = {}  # Hamabe's friction strokes (eqs. 42-46), design by design
-        for i in np.nonzero(moves & ~impossible)[0]:
-            runs = per_design(i, lambda i=i: _friction_runs(spec, design_of(cols, i), sd_of(i)))
-            if runs is not None:
-                runs_of[i] = runs
-        for j, lc in enumerate(spec.load_changes):
-            rows = friction_rows(spec, lc.name)
-            for i, runs in runs_of.items():
-                row, ev_ = _friction_figures(lc, runs[j])
-                on = np.zeros(n, bool)
-                on[i] = True
-                checks.add_row(rows[row], ev_, where=on)
-        if report and 0 in runs_of:
-            dyn["friction"] = [r_.to_dict() for r_ in runs_of[0]]
+    w0sq = (np.full(n, _omega_mean(spec)**2) if spec.speed is not None
+            else s.omega[:, s.i_n]**2)
+    checks.add_rows(statics_rows(spec), statics_figures(irregularity, *band, s.rise, w0sq,
+                                                        s.F, s.k2))
+
+
+def _load_changes(spec: Spec, s: _Statics, out: dict, checks: CheckTable,
+                  report: bool) -> list:
+    """Every load change of the designs with a dash-pot (Hamabe Part III): their figures into
+    ``out``, their rows into ``checks``; design 0's summaries with ``report``."""
+    n = s.n
+    settle = np.full(n, -np.inf)
+    run = ~s.impossible & np.isfinite(s.dashpot)
+    reports = []
+    for lc in spec.load_changes:
+        hur, over, overs, st_time, xi0, good, detail = _load_change_many(
+            spec, lc, s.m, s.kappa, s.l0, s.central, s.I_given, s.dashpot, run)
+        s.impossible |= run & ~good
+        on = run & good
+        out[f"hurwitz_margin: {lc.name}"] = np.where(on, hur, np.nan)
+        out[f"over_regulation: {lc.name}"] = np.where(on, over, np.nan)
+        out[f"settling_time_s: {lc.name}"] = np.where(on, st_time, np.nan)
+        settle = np.where(on, np.maximum(settle, st_time), settle)
+        checks.add_rows(load_change_rows(spec, lc.name), {
+            "hurwitz": hur, "over": over, "over_regulates": overs, "xi0": xi0,
+            "settling": st_time}, where=on)
+        if report and on[0]:
+            a, xs, k2_0, summary = detail
+            reports.append(loadchange.summary(spec, lc, tuple(float(v[0]) for v in a),
+                                              tuple(float(v[0]) for v in xs),
+                                              float(k2_0[0]), _pick(summary, 0)))
+    out["settling_time_s"] = np.where(settle > -np.inf, settle, np.nan)
+    return reports
+
+
+def _vibration_checks(spec: Spec, s: _Statics, vibs: list, out: dict,
+                      checks: CheckTable) -> None:
+    """The forced vibration's figure and rows (:func:`govopt.requirements.vibration_rows`),
+    where the type has a forcing and some design is driven."""
+    p2p = np.array([np.nan if v is None else float(v.peak_to_peak_rad) for v in vibs],
+                   dtype=float)
+    if overridden(spec.governor, "vibration") and _engine_or_dashpot(spec, s).any():
+        out["vibration_p2p_rad"] = p2p
+        checks.add_rows(vibration_rows(spec), {"p2p": p2p}, where=~np.isnan(p2p))
+
+
+def _friction(spec: Spec, cols: dict, s: _Statics, per_design: _PerDesign,
+              checks: CheckTable) -> dict:
+    """Hamabe's friction strokes (eqs. 42-46) of the designs whose friction band moves at a
+    load change's end, design by design, and their rows; returns each design's runs."""
+    gov, n = spec.governor, s.n
+    moves = np.zeros(n, bool)
+    for lc in spec.load_changes:
+        moves |= friction_at(gov, cols, np.array([lc.alpha_to]))[:, 0] > 0
+    runs_of = {}
+    for i in np.nonzero(moves & ~s.impossible)[0]:
+        runs = per_design(i, lambda i=i: _friction_runs(spec, design_of(cols, i),
+                                                        s.spring_of(i)))
+        if runs is not None:
+            runs_of[i] = runs
+    for j, lc in enumerate(spec.load_changes):
+        rows = friction_rows(spec, lc.name)
+        for i, runs in runs_of.items():
+            row, figures = _friction_figures(lc, runs[j])
+            on = np.zeros(n, bool)
+            on[i] = True
+            checks.add_row(rows[row], figures, where=on)
+    return runs_of
+
+
+def _requirement_checks(spec: Spec, cols: dict, s: _Statics, out: dict,
+                        checks: CheckTable) -> None:
+    """The design requirements' rows (:func:`govopt.requirements.requirement_rows`) of the
+    wire springs."""
     req = spec.requirements
-    if req is not None and helical.any():
+    if req is not None and s.helical.any():
         checks.add_rows(requirement_rows(spec, req), {
             "d": cols["wire_diameter"], "r": cols["coil_radius"], "n": cols["active_turns"],
-            "m": cols["flying_mass"], "l0": l0[:, 0], "C": out["spring_index"],
-            "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}, where=helical)
-    measures = None
-    if classic:  # the textbook's measures (ch. 3) over the range, the friction band included
-        measures = classic_measures(spec, sd, x, omega, t, friction_x, ~impossible)
-        out.update({k: measures[k] for k in CLASSIC_FIGURES})
-    error = np.full(n, None, dtype=object)
-    for i in np.nonzero(impossible)[0]:
-        error[i] = said.get(int(i)) or diagnose(spec, design_of(cols, i))
-    ev = Evaluation(n, spec, out, checks, error, plan=plan)
-    if report and not impossible[0]:
-        ev.spring = sd_of(0)
-        ev.char = char_of(0)
-        ev.k2 = np.array(k2[0])
-        ev.vib = vibs[0]
-        if measures is not None:
-            ev.classic = classic_report(spec, measures, 0)
-        if vib_dicts and vib_dicts[0] is not None:
-            dyn["vibration"] = vib_dicts[0]
-        ev.dynamics = dyn
-    return ev
+            "m": cols["flying_mass"], "l0": s.l0[:, 0], "C": out["spring_index"],
+            "body": out["body_length_m"], "surge": out["surge_frequency_Hz"]}, where=s.helical)
+
+
+def _report(ev: Evaluation, s: _Statics, vib, vibration: bool, measures, dyn: dict) -> None:
+    """What only a report of design 0 needs (:func:`evaluate`): its spring, characteristic,
+    ``k^2``, forced vibration (``vib``; its dict where ``vibration`` was asked for), classic
+    measures and the dynamics' dicts."""
+    spec = ev.spec
+    ev.spring = s.spring_of(0)
+    ev.char = s.char_of(spec, 0)
+    ev.k2 = np.array(s.k2[0])
+    ev.vib = vib
+    if measures is not None:
+        ev.classic = classic_report(spec, measures, 0)
+    if vibration and vib is not None:
+        dyn["vibration"] = vib.to_dict()
+    ev.dynamics = dyn
 
 
 def _spring(spec: Spec, cols: dict, col: dict, central) -> tuple[np.ndarray, np.ndarray]:
@@ -523,9 +669,9 @@ def _friction_figures(lc, run) -> tuple[str, dict]:
 def _load_change_many(spec, lc, m, kappa, l0, central, I_given, dashpot, run):
     """:func:`govopt.analysis.loadchange.analyse` for many designs: Hamabe eqs. (24)-(32) with
     the coefficients of :func:`loadchange.load_change_model`, events by
-    :func:`transient.analyse_many`. Returns (Hurwitz margin, over-regulation, over-regulates,
-    settling time, xi0, finite, (coefficients, initial state, k^2, summary of the designs
-    run))."""
+    :func:`~govopt.analysis.transient_events.analyse_many`. Returns (Hurwitz margin,
+    over-regulation, over-regulates, settling time, xi0, finite, (coefficients, initial state, k^2,
+    summary of the designs run))."""
     gov = spec.governor
     n = m.shape[0]
     a0x, a1x = lc.alpha_to, lc.alpha_from
@@ -542,21 +688,81 @@ def _load_change_many(spec, lc, m, kappa, l0, central, I_given, dashpot, run):
         xi0 = np.full(n, a1x - a0x)
         eta0 = w1 * (1.0 + spec.engine.insensibility) - w0
         a = (I, np.where(np.isfinite(dashpot), dashpot, 0.0) / 3.0, I * k2 / 3.0, C * R)
-        x = tr.hamabe_initial_conditions(a[0], a[2], a[3], R, xi0, eta0)
+        x = hamabe_initial_conditions(a[0], a[2], a[3], R, xi0, eta0)
     good = np.all([np.isfinite(v) for v in (*a, *x)], axis=0) & (a[0] != 0)
     hur, over, overs, st = (np.full(n, np.nan) for _ in range(4))
     overs = np.zeros(n, bool)
     sel = np.nonzero(run & good)[0]
     s = None
     if sel.size:
-        s = tr.analyse_many(*(v[sel] for v in a), *(v[sel] for v in x),
-                            band=spec.analysis.settling_band)
+        s = analyse_many(*(v[sel] for v in a), *(v[sel] for v in x),
+                         band=spec.analysis.settling_band)
         hur[sel] = s.hurwitz_margin
         over[sel] = np.where(s.stable, s.over_regulation, np.inf)
-        overs[sel] = ~s.stable | tr.over_regulates(s.over_regulation_scaled, x[0][sel])
+        overs[sel] = ~s.stable | over_regulates(s.over_regulation_scaled, x[0][sel])
         st[sel] = s.settling_time
     return hur, over, overs, st, x[0], good, (a, x, k2, s)
 
 
+# ---------------------------------------------------------------------------------------------
+# One design, as a Result
+# ---------------------------------------------------------------------------------------------
+
+#: the spring's report figures (:attr:`Result.spring_properties`, SI) and the evaluator's names
+SPRING_PROPERTIES = (("spring_index", "spring_index"), ("wahl_factor", "wahl_factor"),
+                     ("mass_kg", "spring_mass_kg"), ("surge_frequency_Hz", "surge_frequency_Hz"),
+                     ("body_length_m", "body_length_m"))
+
+
+def evaluate(spec: Spec, design: Design | None = None) -> Result:
+    """Evaluate ``design`` (default: the spec's own ``[design]``) against the spec: :func:`core`
+    with one design, and what a :class:`~govopt.result.Result` reports beside its checks and
+    figures (the characteristic table, ``k^2`` over the range, the load changes' responses, the
+    spring maker's sheet, the classic measures).
+
+    Statics always; the load-change transient (Hamabe Part III) when the spec has engine data,
+    load changes and the design a dash-pot; friction only when the design has a friction moment;
+    design-requirement checks (margins, spring index, envelope, surge, bounds) when the spec has
+    ``[requirements]`` or ``[bounds]``.
+    """
+    design = design or spec.design
+    if design is not spec.design:  # every analysis reads the design evaluated, never the spec's
+        spec = spec.with_design(design)
+    try:
+        return _evaluate(spec, design)
+    except OverflowError:  # Python floats raise where numpy gives inf
+        raise DesignError(overflow_message(spec)) from None
+
+
+def _evaluate(spec: Spec, design: Design) -> Result:
+    if design is None:  # the parser's diagnosis: no design to evaluate
+        try:
+            statics.spring_design(spec, design)
+        except DesignError as exc:
+            raise DesignError(located(spec.path, str(exc))) from None
+    ev = core(spec, design_columns([design]), report=True)
+    if ev.error[0] is not None:
+        raise DesignError(ev.error[0])
+    spec, sd, char, k2 = ev.spec, ev.spring, ev.char, ev.k2  # spec: with the use case's plan
+    gov = spec.governor
+    helical = spec.material is not None and np.isfinite(sd.d)  # a wire spring
+    i_n = int(np.searchsorted(char.alpha, gov.x_normal))  # the normal configuration is on the grid
+    dynamics = dict(ev.dynamics)
+    if design.dashpot is not None or spec.engine is not None:
+        dynamics["k2_normal_rad2_s2"] = float(k2[i_n])
+    for key in ("vibration", "friction"):  # the report's order: the forcing, then friction
+        if key in dynamics:
+            dynamics[key] = dynamics.pop(key)
+    if ev.plan is not None:
+        dynamics["use_case"] = ev.plan.to_dict()
+    return Result(spec=spec, design=design, spring=sd, statics=char,
+                  spring_properties={k: float(ev.figures[f][0]) for k, f in SPRING_PROPERTIES}
+                  if helical else {},
+                  checks=ev.table.checks(), k2=k2, dynamics=dynamics,
+                  classic=ev.classic,
+                  spring_report=gov.spring_report(spec, sd, char, ev.vib)
+                  if gov.spring is not None else None, evaluation=ev)
+
+
 __all__ = ["DESIGN_FIELDS", "Evaluation", "core", "dashpot_column", "design_columns", "diagnose",
-           "finite", "invalid", "possible"]
+           "evaluate", "finite", "invalid", "possible"]

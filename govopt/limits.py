@@ -46,7 +46,7 @@ MAX_LOAD_CHANGES = 20
 #: uniform points of a load change's time grid (24 a period of its fastest oscillation): the
 #: bundled specs use at most ~600; a flywheel 1e5 times Hamabe's would need millions and take
 #: minutes. Past it the grid is cut: the settling time is then found on the modes' envelope
-#: (transient._envelope_settling), or reported inf with ``truncated`` ("not decided"), never
+#: (settling.envelope_settling), or reported inf with ``truncated`` ("not decided"), never
 #: silently
 MAX_TRANSIENT_POINTS = 20_000
 #: (flying mass, central load) pairs on the design's weight grid (``bounds.*_weight`` on

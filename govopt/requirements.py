@@ -124,34 +124,37 @@ def statics_rows(spec) -> list[Row]:
     gov, sp, req = spec.governor, spec.speed, spec.requirements
     margin = req.k2_margin if req else 0.0
     unit = SI_UNITS[gov.coordinate]
+    method = gov.method(spec)  # the type's own sources (governors.base.Method)
     rows = []
     if sp is not None:
         rows.append(Row("irregularity", "<=", "", lambda ev: ev["irregularity"],
-                        _const(sp.irregularity),
-                        "Hamabe Part I: (omega_a - omega_i) / omega0, omega0 the spec's mean "
-                        "speed", group="statics"))
+                        _const(sp.irregularity), method.text("irregularity"), group="statics"))
         if sp.band:
+            friction = method.named("band")
+            band = statics.BAND_SOURCE + (f" ({friction.cite})" if friction else "")
             rows += [Row(statics.BAND_INNER, ">=", "rad/s", lambda ev: ev["band_low"],
-                         _const(sp.omega_inner), statics.BAND_SOURCE, group="statics"),
+                         _const(sp.omega_inner), band, group="statics"),
                      Row(statics.BAND_OUTER, "<=", "rad/s", lambda ev: ev["band_high"],
-                         _const(sp.omega_outer), statics.BAND_SOURCE, group="statics")]
+                         _const(sp.omega_outer), band, group="statics")]
     rows.append(Row("characteristic rises (stable)", ">=", f"rad/s/{unit}", lambda ev: ev["rise"],
                     _const(0.0),
-                    "d omega/dx > 0 over the range: the equilibrium (eq. 12) differentiated; "
-                    "Hamabe Part III, stable by the characteristic curve; margin on omega0 / "
+                    "d omega/dx > 0 over the range: the characteristic "
+                    f"({method.named('characteristic').cite}) differentiated, stable by the "
+                    f"characteristic curve ({method.named('stable').cite}); margin on omega0 / "
                     "(x_outer - x_inner) (statics.stability)", group="statics",
                     scale=lambda ev: statics.slope_scale(spec, np.sqrt(ev["w0sq"]))))
     if gov.spring is not None:
         rows.append(Row(gov.spring_loaded_check, ">=", "N", lambda ev: ev["F_min"], _const(0.0),
-                        "the spring stays loaded over the range (Hamabe eq. 2: F = 2 kappa "
-                        "(l - l0) > 0)", group="statics", scale=lambda ev: ev["F_top"]))
+                        "the spring stays loaded over the range: its force > 0 ("
+                        f"{method.named('spring force').cite})", group="statics",
+                        scale=lambda ev: ev["F_top"]))
     rows.append(Row("k^2 > 0 (stability)", ">=", "rad^2/s^2", lambda ev: ev["k2_min"],
-                    lambda ev: margin * ev["w0sq"], "Hamabe Part II, case 3", group="statics",
+                    lambda ev: margin * ev["w0sq"], method.text("stable"), group="statics",
                     scale=lambda ev: ev["w0sq"]))
     if gov.resonance_ceiling:
         rows.append(Row("k^2 < omega0^2 (no resonance)", "<=", "rad^2/s^2",
                         lambda ev: ev["k2_max"], lambda ev: (1.0 - margin) * ev["w0sq"],
-                        "Hamabe Part II, case 2", group="statics"))
+                        method.text("resonance"), group="statics"))
     return rows
 
 
@@ -215,12 +218,15 @@ def search_bound_rows(req) -> list[Row]:
 STRESS_SOURCE = "Hamabe Ex. 1: 16 F r / (pi d^3) <= k_s"
 
 
-def stress_row(material) -> Row:
+def stress_row(material, spec=None) -> Row:
     """The largest shear stress of a helical spring (``ev["stress"]``, Pa) within the spec's
     allowable ``material.allowable_shear_stress`` (group ``"spring"``; without a wire grade,
-    whose table has its own stress rows: :meth:`Governor.spring_checks`)."""
+    whose table has its own stress rows: :meth:`Governor.spring_checks`); its source the
+    type's stress equation (its method) where ``spec`` is given."""
+    source = STRESS_SOURCE if spec is None else \
+        spec.governor.method(spec).text("stress", STRESS_SOURCE) + " <= k_s"
     return Row("shear stress", "<=", "Pa", lambda ev: ev["stress"],
-               _const(material.allowable_shear_stress), STRESS_SOURCE, group="spring")
+               _const(material.allowable_shear_stress), source, group="spring")
 
 
 class SpringFigures(dict):
@@ -262,17 +268,18 @@ def load_change_rows(spec, name: str) -> list[Row]:
     ``xi0`` (the initial offset), ``settling`` (s), each of the load change ``name``."""
     req = spec.requirements
     unit = SI_UNITS[spec.governor.coordinate]
-    rows = [Row(f"Hurwitz margin eq. (32): {name}", ">=", "", lambda ev: ev["hurwitz"],
+    cubic = spec.governor.method(spec).named("cubic")  # the type's own load-change model
+    rows = [Row(f"Hurwitz margin: {name}", ">=", "", lambda ev: ev["hurwitz"],
                 _const(req.hurwitz_margin if req else 0.0),
-                "Hamabe eq. (32): 9 a1 a2 / (a0 a3) - 1", group="dynamics",
+                spec.governor.method(spec).text("hurwitz"), group="dynamics",
                 scale=_const(1.0)),
             Row(f"no over-regulation: {name}", "<=", unit, lambda ev: ev["over"],
-                _const(0.0), "Hamabe Part III; all t >= 0 (transient.over_regulates)",
+                _const(0.0), f"{cubic.cite}; all t >= 0 (over_regulation.over_regulates)",
                 group="dynamics", scale=lambda ev: np.abs(ev["xi0"]),
                 verdict=lambda ev: ~np.asarray(ev["over_regulates"], dtype=bool))]
     if req is not None and req.max_settling_time is not None:
         rows.append(Row(f"settling time: {name}", "<=", "s", lambda ev: ev["settling"],
-                        _const(req.max_settling_time), "Hamabe Part III", group="dynamics"))
+                        _const(req.max_settling_time), cubic.cite, group="dynamics"))
     return rows
 
 

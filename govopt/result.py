@@ -23,6 +23,7 @@ import numpy as np
 from .analysis.statics import Characteristic, SpringDesign, classify_k2
 from .inputs import Design, Spec
 from .jsonable import jsonable
+from .references import reference
 from .units import G_STANDARD
 from .verdict import ACTIVE_TOL, Check, Figure, shown
 
@@ -85,6 +86,47 @@ class Result:
     def max_stress(self) -> float:
         return float(np.max(self.statics.stress))
 
+    @property
+    def method(self):
+        """The governor type's method for this spec (:class:`govopt.governors.base.Method`):
+        its equations, sources and fidelity settings, which every writer reads."""
+        return self.spec.governor.method(self.spec)
+
+    @property
+    def friction_speeds(self) -> tuple[np.ndarray | None, np.ndarray | None]:
+        """``(omega_rise, omega_fall)`` over the characteristic's configurations (rad/s): the
+        speeds at which the governor opens and closes against its friction band (the classic
+        measures'); ``(None, None)`` where the design has no friction."""
+        cm = self.classic or {}
+        rise, fall = (np.asarray(cm.get(k, []), dtype=float)
+                      for k in ("omega_rise_rad_s", "omega_fall_rad_s"))
+        if rise.size != self.statics.alpha.size or not np.any(rise > fall):
+            return None, None
+        return rise, fall
+
+    @property
+    def band_extremes(self) -> tuple[tuple[float, str], tuple[float, str]]:
+        """``((lowest closing speed, where), (highest opening speed, where))`` (rad/s, and the
+        configuration in words: "the inner end", "the outer end" or "ball radius 120.5 mm"):
+        the operating band's ends over the whole range, as the band checks read them
+        (:func:`govopt.analysis.statics.band_extremes`); without friction the characteristic's
+        own lowest and highest speeds."""
+        rise, fall = self.friction_speeds
+        if rise is None:
+            rise = fall = np.asarray(self.statics.omega, dtype=float)
+        gov, x = self.spec.governor, np.asarray(self.statics.alpha, dtype=float)
+
+        def where(i: int) -> str:
+            if i == 0:
+                return "the inner end"
+            if i == x.size - 1:
+                return "the outer end"
+            value, unit = gov.shown(x[i])
+            return f"{gov.coordinate_name} {float(value):.4g} {unit}"
+
+        i, j = int(np.argmin(fall)), int(np.argmax(rise))
+        return (float(fall[i]), where(i)), (float(rise[j]), where(j))
+
     def check(self, name: str) -> Check:
         return next(c for c in self.checks if c.name == name)
 
@@ -107,15 +149,25 @@ class Result:
                 note=f"status {opt.get('status')}" + (
                     "" if gap is None else f"; {100 * gap:.3g} % above the continuous bound")))
         if spec.speed is not None:
+            eq = self.method.named("irregularity")
             out.append(Figure("irregularity", self.irregularity, "", "speed", symbol="delta",
                               note=f"required <= {spec.speed.irregularity:g}; (omega_a - "
-                                   "omega_i) / omega0, omega0 the mean speed (Hamabe Part I)"))
+                                   f"omega_i) / omega0, omega0 the mean speed ({eq.cite})"))
             out.append(Figure("mean speed", spec.speed.omega_mean, "rad/s", "speed",
                               symbol="omega0", note="the spec's"))
         out += [Figure("speed at the inner end", float(st.omega[0]), "rad/s", "speed",
                        symbol="omega_i", note=f"{gov.coordinate_name} at its inner end"),
                 Figure("speed at the outer end", float(st.omega[-1]), "rad/s", "speed",
                        symbol="omega_a", note=f"{gov.coordinate_name} at its outer end")]
+        rise, fall = self.friction_speeds
+        if rise is not None:  # where friction acts: the band's extremes over the whole range
+            (low, at_low), (high, at_high) = self.band_extremes
+            out += [Figure("lowest closing speed", low, "rad/s", "speed", symbol="omega_fall",
+                           note=f"falling against friction, at {at_low}: the band's lowest "
+                                "speed"),
+                    Figure("highest opening speed", high, "rad/s", "speed",
+                           symbol="omega_rise", note=f"rising against friction, at {at_high}: "
+                                                     "the band's highest speed")]
         inertia = "kg*m^2" if gov.coordinate == "angle" else "kg"
         weight = (f"{gov.mass_name}, its weight" if gov.mass_name.endswith("weight")
                   else f"{gov.mass_name} weight")
@@ -131,11 +183,19 @@ class Result:
                            json="central_mass_kg"),
                     Figure("central load weight", sd.central * G_STANDARD, "N", "design",
                            note=f"{sd.central:.4g} kgf")]
+        if self.design is not None and self.design.dashpot is not None:
+            damping = "N*m*s/rad" if gov.coordinate == "angle" else "N*s/m"
+            out.append(Figure("dash-pot", self.design.dashpot, damping, "design", symbol="f",
+                              note=f"damps the {gov.coordinate_name}; a1 = f/3"))
         if gov.spring is not None:
             out += [Figure("spring stiffness", sd.kappa, "N/m", "spring", symbol="kappa",
                            note=f"{gov.spring} spring", json="stiffness_N_per_m"),
                     Figure(gov.free_length_key.replace("_", " "), sd.l0, "m", "spring",
                            symbol="l0", json=f"{gov.free_length_key}_m")]
+            if not gov.spring_kind.helical:  # the section the design sizes (a leaf's)
+                out += [Figure(k.name.replace("_", " "), getattr(self.design, k.name), "m",
+                               "spring") for k in gov.spring_kind.section
+                        if k.kind == "length" and getattr(self.design, k.name, None) is not None]
         if sp:
             out += [Figure("wire diameter", sd.d, "m", "spring", symbol="d"),
                     Figure("mean coil radius", sd.r, "m", "spring", symbol="r",
@@ -168,7 +228,7 @@ class Result:
                     Figure("effort", cm["effort"], str(cm.get("effort_unit", "N*m")), "classic",
                            note=cm.get("effort_note") or change),
                     Figure("power", cm["power"], str(cm.get("power_unit", "J")), "classic",
-                           note=cm.get("effort_note") or change)]
+                           note=cm.get("power_note") or cm.get("effort_note") or change)]
             for key, (label, unit) in GEOMETRY.items():  # the type's own geometry
                 g = (cm.get("geometry") or {}).get(key)
                 if g:
@@ -281,14 +341,14 @@ class Result:
             "name": spec.name,
             "kind": self.kind,
             "governor_type": spec.governor_type,
-            "fidelity": {
-                "geometry": spec.analysis.geometry,
-                "reaction_speed": spec.analysis.reaction_speed,
-                "reaction_slope": spec.analysis.reaction_slope,
-                "valve_table": spec.analysis.valve_table,
-                **({"stress_correction": spec.material.stress_correction}
-                   if spec.material is not None else {}),
-            },
+            "fidelity": {s.key.split(".")[-1]: s.value for s in self.method.settings
+                         if s.key.startswith(("analysis.", "material."))
+                         and s.key.split(".")[-1] not in ("points", "speed_change",
+                                                          "settling_band", "use_case",
+                                                          "tolerance", "harmonics")},
+            "method": {**self.method.to_dict(), "sources": [
+                {"key": k, "citation": reference(k).citation}
+                for k in self.method.sources(tuple(c.source for c in self.checks))]},
             "irregularity": self.irregularity,
             "irregularity_required": spec.speed.irregularity if spec.speed else None,
             "omega_mean_rad_s": spec.speed.omega_mean if spec.speed else None,

@@ -215,13 +215,17 @@ def _outputs(xlsx, plots, output, stem: str, replace: bool, inputs) -> None:
     so.check_outputs(xlsx, plots, stem, replace=replace, inputs=inputs, output=output)
 
 
-def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool) -> Outcome:
+def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool, spec=None) -> Outcome:
     from .report import spring_outputs as so
 
     if output is not None:
         out.written.append(so.write_check_spec(out, output, replace=replace))
     if xlsx is not None:
-        out.written.append(so.write_workbook(out, xlsx, replace=replace))
+        from .report.excel.book import command_line
+
+        command = command_line(f"govopt spring {out.command} {spec or ''} --xlsx {xlsx} "
+                               "(through the Python API)")
+        out.written.append(so.write_workbook(out, xlsx, replace=replace, command=command))
     if plots is not None:
         out.written += so.write_plots(out, plots, stem, replace=replace)
     return out
@@ -248,7 +252,7 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
         _outputs(xlsx, plots, output, stem, replace, [] if spec is None else [spec])
         out = _design({**defaults(DESIGN), **values}, where, name, entries)
         _render(out, json_out)
-        return _write(out, xlsx, plots, output, stem, replace)
+        return _write(out, xlsx, plots, output, stem, replace, spec)
 
 
 def check(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
@@ -263,7 +267,7 @@ def check(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, 
         _outputs(xlsx, plots, None, stem, replace, [] if spec is None else [spec])
         out = _check({**defaults(CHECK), **values}, where, name, entries)
         _render(out, json_out)
-        return _write(out, xlsx, plots, None, stem, replace)
+        return _write(out, xlsx, plots, None, stem, replace, spec)
 
 
 def _render(out: Outcome, json_out: bool) -> Outcome:

@@ -27,7 +27,8 @@ def registry():
     reads no quantity should not pay. pint's own disk cache of the parsed definitions
     (``cache_folder=":auto:"``) makes later builds fast; without a usable cache folder the
     definitions are parsed afresh."""
-    pint = _import_pint()
+    import pint
+
     try:
         ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
     except Exception:  # an unwritable or damaged cache folder
@@ -35,25 +36,6 @@ def registry():
     ureg.define("@alias revolution = rev = r")  # "300 rev/min", "300 r/min" (DIN 1301)
     ureg.define("@alias revolutions_per_minute = RPM")  # as on rating plates
     return ureg
-
-
-def _import_pint():
-    """``import pint``, without the dask that pint imports when installed, for dask arrays of
-    quantities (0.1-0.2 s; govopt never makes one). Only if dask is not imported yet, and
-    only while pint is imported: a later ``import dask`` works as usual."""
-    import sys
-
-    if "pint" in sys.modules or "dask" in sys.modules:
-        import pint
-
-        return pint
-    sys.modules["dask"] = None  # makes "import dask" raise ImportError, as if absent
-    try:
-        import pint
-    finally:
-        if sys.modules.get("dask", 0) is None:
-            del sys.modules["dask"]
-    return pint
 
 
 def __getattr__(name: str):
@@ -199,7 +181,8 @@ def parse_with_pint(text: str, dimension: str) -> float:
     """:func:`_parse` of a string through pint."""
     si = SI_UNITS[dimension]
     name = dimension.replace("_", " ")
-    pint = _import_pint()
+    import pint
+
     Q_ = registry().Quantity
     typed = normalise(text)
     try:

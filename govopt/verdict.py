@@ -84,7 +84,7 @@ class Check:
     unit: str = ""
     source: str = ""
     scale: float | None = None
-    #: Pass/fail decided elsewhere (e.g. :func:`govopt.analysis.transient.over_regulates`)
+    #: Pass/fail decided elsewhere (e.g. :func:`govopt.analysis.over_regulation.over_regulates`)
     #: where the margin alone cannot decide it; None: from the margin.
     verdict: bool | None = None
     #: what the check belongs to (:data:`GROUPS`), e.g. ``"spring"`` for the spring tables

@@ -135,7 +135,7 @@ STUDY = ("numpy", "pandas", "govopt.cli", "govopt.study", "govopt.commands.study
 EVERY = ("numpy", "numpy.fft", "numpy.ma", "numpy.polynomial", "pint", "openpyxl",
          "xml.sax.saxutils", "tomlkit", "pandas", "govopt.commands.common",
          "govopt.commands.evaluate", "govopt.commands.spring", "govopt.commands.study",
-         "govopt.spec", "govopt.fidelity", "govopt.evaluation", "govopt.optimize.search",
+         "govopt.spec", "govopt.fidelity", "govopt.evaluator", "govopt.optimize.search",
          "govopt.report.text", "govopt.report.files", "govopt.report.excel", "govopt.study",
          "govopt.spring_command", "govopt.units:ureg")
 

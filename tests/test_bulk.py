@@ -209,7 +209,7 @@ def test_one_evaluator_no_fallback(name, borrow, monkeypatch):
     used to be handed to govopt.evaluate one by one (friction in a spec with load changes, a
     graded wire, a leaf spring, an impossible design) are rows of the core, equal to evaluate's
     results, and evaluate is never called."""
-    from govopt import evaluation
+    from govopt import evaluator
 
     spec = load_spec(SPECS / name)
     if borrow:
@@ -231,7 +231,7 @@ def test_one_evaluator_no_fallback(name, borrow, monkeypatch):
     def no_fallback(*args, **kwargs):
         raise AssertionError("evaluate_many called govopt.evaluate")
 
-    monkeypatch.setattr(evaluation, "evaluate", no_fallback)
+    monkeypatch.setattr(evaluator, "evaluate", no_fallback)
     frame = evaluate_many(spec, cols)
     for i, ref in enumerate(refs):
         _assert_row_is(frame.iloc[i].to_dict(), ref, i)

@@ -121,3 +121,22 @@ def test_no_effort_over_a_range_whose_speed_falls():
     assert res.to_dict()["classic"]["effort_N"] is None
     rising = govopt.evaluate(with_values(base, {"analysis.speed_change": "range"})).classic
     assert rising["effort"] > 0 and rising["power"] > 0 and not rising["effort_note"]
+
+
+def test_power_to_the_stop_when_the_speed_change_passes_the_outermost():
+    """A speed change whose equilibrium lies past the outermost configuration moves the member
+    to its stop: the power is the effort times the travel to the stop (finite, and less than
+    the work over a longer travel), and the report says so; a small change stays inside."""
+    from govopt.analysis.classic import travel_between
+    from govopt.spec import load_spec, with_values
+
+    base = load_spec("govopt/specs/textbook-ex4-hartnell.toml")
+    far = govopt.evaluate(with_values(base, {"analysis.speed_change": 0.5}))
+    cm, gov = far.classic, far.spec.governor
+    x_n = gov.x_normal  # the textbook's Hartnell: normal configuration at mid-range
+    assert cm["power_note"].startswith("to the stop: a 50 % speed change")
+    assert far.figure("power").note == cm["power_note"]
+    assert cm["power"] == pytest.approx(cm["effort"] * travel_between(far.spec, x_n, gov.x_outer),
+                                        rel=1e-12)
+    near = govopt.evaluate(with_values(base, {"analysis.speed_change": 0.001})).classic
+    assert near["power_note"] == "" and math.isfinite(near["power"])

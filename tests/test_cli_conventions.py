@@ -57,7 +57,7 @@ def test_evaluate_exit_codes(tmp_path):
     that loaded `govopt evaluate`'s modules once."""
     from forkcli import Server
 
-    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluation",
+    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluator",
                  "govopt.units:ureg"), cwd=tmp_path) as server:
         p = server.run("evaluate", SPECS / "hamabe-b.toml")
         assert p.returncode == 0, p.stderr
@@ -136,25 +136,33 @@ def test_the_reference_documents_exit_codes_and_every_limit():
 
 
 def _commands():
-    """Every command of the CLI, as the words that name it (``("study", "run")``)."""
+    """Every command of the CLI, as the words that name it (``("study", "run")``), as the
+    helps list them (a group's help has a Commands panel)."""
     for name in cli.COMMANDS:
-        built = cli.command(name)
-        subcommands = getattr(built, "commands", {})
+        shown = invoke([name, "--help"]).stdout
+        panel = shown.split("─ Commands ─", 1)[1] if "─ Commands ─" in shown else ""
+        subcommands = re.findall(r"^│ (\w+)\s", panel, re.M)
         yield from ((name, sub) for sub in subcommands) if subcommands else [(name,)]
 
 
+#: typer's own flags, which typer shows with their type
+TYPERS_FLAGS = ("--help", "--install-completion", "--show-completion")
+
+
 def test_flags_shown_without_a_type(tmp_path):
-    """Flags read `--json  Print ...`, as in git or pip, not `--json <bool>`; options that take
-    a value name it (`--xlsx <path>`)."""
+    """govopt's flags read `--json  Print ...`, as in git or pip, not `--json <bool>`; options
+    that take a value name it (`--xlsx <path>`)."""
     run = _govopt("evaluate", "--help", cwd=tmp_path)
     assert run.returncode == 0 and re.search(r"^[\s│]+--json\s+Print", run.stdout, re.M)
-    assert "<bool>" not in run.stdout and re.search(r"--xlsx\s+<path>", run.stdout)
+    assert re.search(r"--xlsx\s+<path>", run.stdout)
     commands = list(_commands())
-    assert {("evaluate",), ("design",), ("examples",), ("init",), ("study", "run")} <= set(
-        commands)
+    assert {("evaluate",), ("design",), ("examples",), ("init",), ("study", "run"),
+            ("study", "export"), ("study", "show")} <= set(commands)
     for command in [(), *commands]:
         shown = invoke([*command, "--help"])
-        assert shown.exit_code == 0 and "<bool>" not in shown.output, command
+        typed = [line for line in shown.output.splitlines() if "<bool>" in line]
+        assert shown.exit_code == 0 and typed, command  # --help itself
+        assert all(line.split()[1] in TYPERS_FLAGS for line in typed), (command, typed)
 
 
 def test_outputs_go_here_never_into_the_package(tmp_path):

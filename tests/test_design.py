@@ -269,7 +269,7 @@ def test_huge_flywheel_design_agrees_with_evaluate(tmp_path, inertia):
     assert f_lo <= d["dashpot_N_m_s_per_rad"] <= f_hi
     lc = res.dynamics["load_changes"][0]
     assert not lc["over_regulates"] and lc["hurwitz_margin"] >= 0.1
-    # settling past the time grid comes from the modes' envelope (transient._envelope_settling:
+    # settling past the time grid comes from the modes' envelope (settling.envelope_settling:
     # ~3e5 s at 4e7 kg m^2, 7.7e6 s at 1e9, checked against mpmath in test_transient.py), so a
     # 10 s limit is infeasible, naming the fastest admissible settling (exit 2, not a 'bug')
     assert 1e5 < lc["settling_time_s"] < 1e8
@@ -297,18 +297,18 @@ def test_a_design_the_evaluator_fails_is_diagnosed_not_returned(monkeypatch):
     """The final verdict is the evaluator's: a chosen design it fails (forced here by a check
     the search never saw) is no design, and the message is a diagnosis naming the requirement,
     its value, limit and margin, and what to change - not a request to report a bug."""
-    from govopt import evaluation
+    from govopt import evaluator
     from govopt.errors import DesignError
     from govopt.verdict import Check
 
-    real = evaluation.evaluate
+    real = evaluator.evaluate
 
     def failing(spec, design=None):
         res = real(spec, design)
         res.checks.append(Check("irregularity (tightened)", 0.05, 0.04, "<=", "", ""))
         return res
 
-    monkeypatch.setattr(evaluation, "evaluate", failing)
+    monkeypatch.setattr(evaluator, "evaluate", failing)
     spec = govopt.load_spec(Path(govopt.__file__).parent / "specs" / "porter-design.toml")
     with pytest.raises(DesignError) as err:
         govopt.design(spec)

@@ -9,7 +9,7 @@ from clirun import invoke
 from transient_one import analyse_one
 
 import govopt
-from govopt.analysis import transient as tr
+from govopt.analysis.transient_cubic import hamabe_initial_conditions
 
 PAPER = {"geometry": "series", "reaction_speed": "mean", "reaction_slope": False}
 
@@ -60,7 +60,7 @@ def test_d_prime_paper_slip():
     R = 300 / 43  # same in any units: kgf m / (kgf m s^2)
     eta0 = (c["a0"] * x["xi_ddot_rad_s2"] + 3 * c["a2"] * x["xi_rad"]) * R / c["a3"]
     a2_slip = c["a0"] * 233.0 / 3
-    ic = tr.hamabe_initial_conditions(c["a0"], a2_slip, c["a3"], R, x["xi_rad"], eta0)
+    ic = hamabe_initial_conditions(c["a0"], a2_slip, c["a3"], R, x["xi_rad"], eta0)
     res = analyse_one(c["a0"], c["a1"], a2_slip, c["a3"], *ic)
     roots = sorted(np.asarray(res.roots), key=lambda z: z.real)
     assert roots[0].real == pytest.approx(-46.28, rel=0.01)

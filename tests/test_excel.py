@@ -1,5 +1,7 @@
 """The Excel workbook: structure, text safety, atomic write, and live formulas recalculated by
-LibreOffice headless and compared with govopt's own numbers."""
+LibreOffice headless and compared with govopt's own numbers (the shaft governor's Design sheet,
+cell by cell; every other type's in test_excel_types.py; the record's pages in
+test_workbook_record.py)."""
 
 from __future__ import annotations
 
@@ -22,20 +24,13 @@ import pytest
 import govopt
 from govopt.errors import GovoptError
 from govopt.report import excel
+from govopt.report.excel.book import ROW_PT, Sheet, paginate, unit_label
 from govopt.verdict import SHOWN, Check
 
 ROOT = Path(__file__).resolve().parent.parent
 SPECS = ROOT / "govopt" / "specs"
 #: The bundled shaft-governor specs with a given design to evaluate (the shaft's Design sheet has
 #: its own named geometry cells; every other type's sheet is tested in test_excel_types.py).
-def _in_checks(value: float, check: Check) -> float:
-    """A check's value or limit as the Checks sheet shows it (MPa, mm, deg: the units people
-    read; the same product the sheet's formula takes)."""
-    from govopt.report import sections
-
-    return sections.shown(value, check.unit, only=excel.SHOWN_IN_CHECKS)[0]
-
-
 BUNDLED = sorted(p.stem for p in SPECS.glob("*.toml")
                  if "design" in (d := tomllib.loads(p.read_text(encoding="utf-8")))
                  and d["governor"]["type"] == "shaft")
@@ -107,8 +102,8 @@ def _expected(res) -> dict[str, float]:
 def _factor(design, row: int) -> float:
     """The factor from the Design sheet's SI value of ``row`` to the value shown beside it
     (govopt.verdict.SHOWN by the row's SI unit; 1 where it is shown in SI)."""
-    label = design.cell(row, excel._SI_UNIT).value
-    return next((f for unit, (_, f) in SHOWN.items() if excel._unit_label(unit) == label), 1.0)
+    label = design.cell(row, excel.SI_UNIT).value
+    return next((f for unit, (_, f) in SHOWN.items() if unit_label(unit) == label), 1.0)
 
 
 def _named_cells(wb) -> dict[str, tuple[str, str]]:
@@ -133,7 +128,8 @@ def _formula_cells(ws):
 def _recalculate(files: list[Path], outdir: Path, profile: Path,
                  sheet: str | None = None, pdf: bool = False) -> dict[Path, Path]:
     """Convert ``files`` with LibreOffice headless (one process), recalculating every formula
-    on load: xlsx -> xlsx, or with ``sheet`` (one of excel.SHEETS) that sheet's recalculated
+    on load: xlsx -> xlsx, or with ``sheet`` (``(name, number)``: a sheet's name and its place
+    in the workbook, from 1) that sheet's recalculated
     values alone as CSV (``<stem>-<sheet>.csv``, read by :func:`_csv_values`; LibreOffice
     writes no workbook, a third of the time), or with ``pdf`` the workbooks as printed
     (``<stem>.pdf``); returns {input: output}."""
@@ -145,8 +141,8 @@ def _recalculate(files: list[Path], outdir: Path, profile: Path,
         target, out = "xlsx:Calc MS Excel 2007 XML", {f: outdir / f.name for f in files}
     else:  # UTF-8, values not as shown (all 15 digits LibreOffice keeps), the sheet's number
         target = ("csv:Text - txt - csv (StarCalc):44,34,76,1,,0,false,true,false,false,false,"
-                  f"{excel.SHEETS.index(sheet) + 1}")
-        out = {f: outdir / f"{f.stem}-{sheet}.csv" for f in files}
+                  f"{sheet[1]}")
+        out = {f: outdir / f"{f.stem}-{sheet[0]}.csv" for f in files}
     cmd = [SOFFICE, f"-env:UserInstallation={profile.as_uri()}", "--headless", "--norestore",
            "--nologo", "--convert-to", target, "--outdir", str(outdir), *map(str, files)]
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=240,
@@ -236,7 +232,7 @@ def recalculated(results, workbooks, tmp_path_factory):
     # the design edited in the workbook: wire diameter 17 mm -> 16 mm
     wb = openpyxl.load_workbook(workbooks["hamabe-a"])
     sheet, ref = _named_cells(wb)["wire_diameter"]
-    shown = wb[sheet].cell(wb[sheet][ref].row, excel._VALUE)  # the input, in mm
+    shown = wb[sheet].cell(wb[sheet][ref].row, excel.VALUE)  # the input, in mm
     assert shown.value == pytest.approx(17.0)
     shown.value = 16.0
     files["edited"] = d / "hamabe-a-d16.xlsx"
@@ -244,12 +240,6 @@ def recalculated(results, workbooks, tmp_path_factory):
     files["text"] = excel.write_workbook(_text_result(d), d / "text.xlsx")
     files["dynamics"] = excel.write_workbook(_fake_dynamics(results["hamabe-a"]),
                                              d / "dynamics.xlsx")
-    # cached results twice govopt's: LibreOffice must recompute every formula, not show these
-    wb = excel.build_workbook(results["hamabe-a"])
-    wb._govopt_cached = {k: 2.0 * v if isinstance(v, float) and v else 7.0
-                         for k, v in wb._govopt_cached.items()}
-    files["poisoned"] = d / "poisoned.xlsx"
-    excel._atomic_save(wb, files["poisoned"])
     out = _recalculate(list(files.values()), d / "out", d / "profile")
     return {k: (f, out[f]) for k, f in files.items()}
 
@@ -274,11 +264,15 @@ def _text_result(d: Path):
 def test_sheets_charts_and_names(workbooks, results, name):
     res = results[name]
     wb = _read(workbooks[name])
-    assert tuple(wb.sheetnames) == excel.SHEETS
-    for ws in wb.worksheets:
-        assert ws.freeze_panes, ws.title
-    assert len(wb["Characteristic"]._charts) == 1
-    assert len(wb["Dynamics"]._charts) >= 1  # k^2 against omega0^2
+    # a shaft has a spring; an evaluation has no optimiser's record
+    assert tuple(wb.sheetnames) == excel.sheets(res) == tuple(
+        s for s in excel.SHEETS if s != "Optimisation")
+    built = excel.build_workbook(res)
+    charts = {ws.title: len(excel.layout(ws).charts) for ws in built.worksheets}
+    assert charts["Characteristic"] == 1 and charts["Dynamics"] >= 1  # k^2 against omega0^2
+    assert charts["Summary"] == 2  # the characteristic and the governor drawn
+    for title in ("Design", "Checks", "Characteristic", "Model"):
+        assert wb[title].freeze_panes, title
 
     names = _named_cells(wb)
     inputs = {"wire_diameter", "coil_radius", "turns", "free_half_length", "pendulum_weight",
@@ -295,55 +289,64 @@ def test_sheets_charts_and_names(workbooks, results, name):
         sheet, ref = names[n]
         assert sheet == "Design"
         cell = design[ref]
-        shown = design.cell(cell.row, excel._VALUE)
-        assert cell.column == excel._SI and cell.data_type == "f", n
+        shown = design.cell(cell.row, excel.VALUE)
+        assert cell.column == excel.SI and cell.data_type == "f", n
         assert cell.value.startswith(f"={shown.coordinate}"), n
         assert shown.data_type == "n", n
         assert shown.fill.fgColor.rgb.endswith("FFF2CC"), n
-    for n in formulas:
+    expected = _expected(res)
+    for n in formulas:  # a formula beside govopt's own value, in the unit shown
         cell = design[names[n][1]]
         assert cell.data_type == "f" and cell.value.startswith("="), n
+        govopt_value = design.cell(cell.row, excel.GOVOPT).value
+        assert govopt_value == pytest.approx(expected[n] * _factor(design, cell.row),
+                                             rel=1e-15), n
     sd = res.spring
     for n, v, unit in (("wire_diameter", sd.d, "mm"), ("coil_radius", sd.r, "mm"),
                        ("turns", sd.n, "-"), ("free_half_length", sd.l0, "mm"),
                        ("pendulum_weight", sd.m * 9.80665, "N")):
         row = design[names[n][1]].row
-        assert design.cell(row, excel._UNIT).value == unit
-        assert design.cell(row, excel._VALUE).value == pytest.approx(
+        assert design.cell(row, excel.UNIT).value == unit
+        assert design.cell(row, excel.VALUE).value == pytest.approx(
             v * _factor(design, row), rel=1e-15)
-    dashpot = design.cell(design[names["dashpot"][1]].row, excel._VALUE)
+    dashpot = design.cell(design[names["dashpot"][1]].row, excel.VALUE)
     assert (dashpot.value is None) == (res.design.dashpot is None)
     # a person reads engineering units: no Pa, m or rad/s in the value column's units
-    units = {design.cell(r, excel._UNIT).value for r in range(2, design.max_row + 1)}
+    units = {design.cell(r, excel.UNIT).value for r in range(2, design.max_row + 1)}
     assert not units & {"Pa", "m", "rad/s", "N/m", "rad"}, units
     assert {"MPa", "mm", "rpm"} <= units
-
-    # every formula cell carries govopt's value as its cached result (issue 13, item 2: was
-    # empty; test_formula_cells_carry_govopts_values checks the values): the recalculation
-    # tests below make LibreOffice recompute, and the poisoned cache proves that it does
-    values = _read(workbooks[name], data_only=True)
-    for ws in wb.worksheets:
-        for c in _formula_cells(ws):
-            if c.column == 8 and ws.title == "Checks":
-                continue  # 'binding': an empty text when not binding
-            assert values[ws.title][c.coordinate].value is not None, (ws.title, c.coordinate)
 
     checks = wb["Checks"]
     rules = [r for cf in checks.conditional_formatting for r in cf.rules]
     assert len(rules) >= 2
     assert [checks.cell(i + 2, 1).value for i in range(len(res.checks))] == \
         [c.name for c in res.checks]
+    # the checks are govopt's numbers (a reader that does not recalculate sees them all)
+    assert not _formula_cells(checks)
+    for i, c in enumerate(res.checks, start=2):
+        assert checks.cell(i, 7).value == ("PASS" if c.passed else "FAIL")
+        assert checks.cell(i, 6).value == pytest.approx(c.margin, rel=1e-15)
+        assert checks.cell(i, 9).value == c.source
 
-    notes = {r[0]: r[1] for r in wb["Notes"].iter_rows(values_only=True) if r[0]}
-    assert notes["govopt version"] == govopt.__version__
-    assert notes["analysis.geometry"] == res.spec.analysis.geometry
-    assert notes["material.stress_correction"] == res.spec.material.stress_correction
-    assert {"Hamabe eq. 1", "Hamabe eq. 12", "Hamabe eqs. 18-20", "Hamabe eq. 28",
-            "Hamabe eq. 32", "Hamabe eqs. 16-23", "Wahl 1944"} <= set(notes)
+    method = [[c.value for c in r] for r in wb["Method"].iter_rows()]
+    cited = {r[3] for r in method if isinstance(r[3], str)}
+    dynamic = ("Hamabe eq. 28", "Hamabe eq. 32", "Hamabe eqs. 13-22")
+    for where in ("Hamabe eq. 1", "Hamabe eq. 12", "Hamabe eqs. 18-20", *dynamic):
+        # the load change and the forced vibration only with the engine's data
+        assert any(c.startswith(where) for c in cited) == (
+            where not in dynamic or res.spec.engine is not None), where
+    settings = {r[0]: r[2] for r in method if isinstance(r[0], str) and r[0].startswith(
+        ("analysis.", "material."))}
+    assert settings["analysis.geometry"] == res.spec.analysis.geometry
+    assert settings["material.stress_correction"] == res.spec.material.stress_correction
+    keys = {r[0] for r in method}
+    assert {"hamabe", "wahl", "en15800"} <= keys
+    assert any(r[0] == "hamabe" and "Disturbing Actions of a Shaft Governor" in str(r[1])
+               for r in method)
 
-    spec_rows = list(wb["Spec"].iter_rows(min_row=2, max_row=len(res.spec.entries) + 1,
+    spec_rows = list(wb["Spec"].iter_rows(min_row=3, max_row=len(res.spec.entries) + 2,
                                           values_only=True))
-    assert [(r[0], r[1]) for r in spec_rows] == [(e.key, e.written) for e in res.spec.entries]
+    assert [(r[0], r[2]) for r in spec_rows] == [(e.key, e.written) for e in res.spec.entries]
 
     text = [c.value for r in wb["Dynamics"].iter_rows() for c in r if isinstance(c.value, str)]
     if not res.dynamics:
@@ -372,18 +375,21 @@ def test_characteristic_table_matches_result(workbooks, results):
 def test_formula_like_text_stays_text(tmp_path):
     path = excel.write_workbook(_text_result(tmp_path), tmp_path / "t.xlsx")
     wb = openpyxl.load_workbook(path)
-    spec = {r[0].value: r[1] for r in wb["Spec"].iter_rows(min_row=2) if r[0].value}
+    spec = {r[0].value: r[2] for r in wb["Spec"].iter_rows(min_row=3) if r[0].value}
     for key, text in (("name", "=SUM(2,3)"), ("description", "=1+1")):
         assert spec[key].value == text and spec[key].data_type == "s"
-    notes = {r[0].value: r[1] for r in wb["Notes"].iter_rows() if r[0].value}
-    assert notes["spec name"].value == "=SUM(2,3)" and notes["spec name"].data_type == "s"
-    assert wb["Notes"]["A1"].data_type == "s"
+    title = wb["Summary"]["A1"]
+    assert title.value == "govopt evaluation: =SUM(2,3)" and title.data_type == "s"
+    assert wb["Method"]["A1"].data_type == "s"
 
 
 def _table_below(ws, title: str) -> list[list]:
     """The rows (header first) of the table titled ``title`` in column A, up to a blank row;
-    its notes (text in column A alone) left out; the printed columns A-L only."""
-    rows = [[c.value for c in r] for r in ws.iter_rows(max_col=12)]
+    its notes (text in column A alone) left out; the printed columns only (a chart's data
+    beside them are not the table's)."""
+    last = openpyxl.utils.column_index_from_string(
+        re.search(r":\$?([A-Z]+)", ws.print_area).group(1))
+    rows = [[c.value for c in r] for r in ws.iter_rows(max_col=last)]
     i = next(k for k, r in enumerate(rows) if r[0] == title)
     out = []
     for r in rows[i + 1:]:
@@ -407,20 +413,20 @@ def test_dynamics_and_optimisation_are_tables(tmp_path, results):
     res = _fake_dynamics(results["hamabe-a"])
     real, unstable = res.dynamics["load_changes"]
     built = excel.build_workbook(res)
-    charts = built["Dynamics"]._charts
-    # k^2, the two load changes' responses and the forced vibration over one revolution
+    charts = [c for c, _ in excel.layout(built["Dynamics"]).charts]
+    # the two load changes' responses, the forced vibration over one revolution, k^2 (last)
     assert len(charts) == 4
     for chart in charts:
         for axis in (chart.x_axis, chart.y_axis):
             assert re.search(r"\(.+\)$", _title_text(axis.title)), _title_text(axis.title)
             assert axis.tickLblPos == "low"  # the labels off the curve when an axis crosses it
-    k2 = charts[0].series
+    k2 = charts[-1].series
     colours = [s.graphicalProperties.line.solidFill.srgbClr for s in k2]
     assert len(colours) == 2 and colours[0] != colours[1]  # k^2 and omega0^2 told apart
 
     wb = openpyxl.load_workbook(excel.write_workbook(res, tmp_path / "d.xlsx"))
     dyn = wb["Dynamics"]
-    lc = _table_below(dyn, "Load changes (Hamabe Part III, eq. 28; Hurwitz eq. 32)")
+    lc = _table_below(dyn, "Load changes (Hamabe eq. 28, eq. 32; Vyshnegradsky 1877)")
     assert lc[0][:4] == ["quantity", "unit", "unloading", "unstable copy"]
     row = {r[0]: r[1:4] for r in lc[1:]}
     assert row["stable"] == ["", "yes", "no"] or row["stable"] == [None, "yes", "no"]
@@ -432,12 +438,12 @@ def test_dynamics_and_optimisation_are_tables(tmp_path, results):
                                                               rel=1e-15)
     assert row["settling time (2 % band)"][2] == "never"
     assert row["alpha after (new equilibrium)"][1] == pytest.approx(real["alpha_to_deg"])
-    assert row["Hurwitz margin 9 a1 a2 / (a0 a3) - 1 (eq. 32)"][1] == pytest.approx(
+    assert row["Hurwitz margin 9 a1 a2 / (a0 a3) - 1 (Hamabe eq. 32)"][1] == pytest.approx(
         real["hurwitz_margin"], rel=1e-15)
 
-    roots = _table_below(dyn, "Roots of eq. 28: xi ~ exp(s t)")
+    roots = _table_below(dyn, "Roots of the load-change cubic (Hamabe eq. 28): xi ~ exp(s t)")
     assert roots[0] == ["load change", "root", "real part (1/s)", "imaginary part (1/s)",
-                        "time constant -1/Re (s)", "period 2 pi/|Im| (s)", *roots[0][6:]]
+                        "time constant -1/Re (s)", "period 2 pi / |Im| (s)", *roots[0][6:]]
     # openpyxl writes numbers with 16 significant digits ("%.16g")
     assert [r[:2] for r in roots[1:]] == [["unloading", k] for k in (1, 2, 3)] + [
         ["unstable copy", k] for k in (1, 2, 3)]
@@ -447,7 +453,7 @@ def test_dynamics_and_optimisation_are_tables(tmp_path, results):
     assert growing[4] == pytest.approx(-1 / 0.75) and growing[5] == pytest.approx(math.pi / 2)
     assert roots[1][5] is None  # a real root has no period
 
-    vib = _table_below(dyn, "Forced vibration under the valve gear (Hamabe Part II, eqs. 16-23)")
+    vib = _table_below(dyn, "Forced vibration (Hamabe eqs. 13-22, eq. 23)")
     v = {r[0]: r[1:3] for r in vib[1:]}
     assert v["peak-to-peak swing"] == ["deg", pytest.approx(
         math.degrees(res.dynamics["vibration"]["peak_to_peak_rad"]), rel=1e-14)]
@@ -463,7 +469,7 @@ def test_dynamics_and_optimisation_are_tables(tmp_path, results):
         for c in r:
             assert not isinstance(c.value, bool), c.coordinate  # words, not 1/0 or TRUE
 
-    checks = wb["Checks"]
+    checks = wb["Optimisation"]  # the optimiser's record on a sheet of its own
     opt = {r[0]: r[1:3] for r in _table_below(checks, "Optimisation (govopt design)")[1:]}
     assert opt["objective: moving mass"] == ["kg", 2.5]
     assert opt["continuous bound (GP relaxation)"] == ["kg", 2.4]
@@ -480,7 +486,7 @@ def test_dynamics_and_optimisation_are_tables(tmp_path, results):
     # no '###' and no cut-off labels: every column is wider than what it shows
     width = {k: d.width for k, d in checks.column_dimensions.items()}
     for c in cells:
-        if isinstance(c.value, float) and c.row > len(res.checks) + 1:
+        if isinstance(c.value, float):
             assert width[c.column_letter] >= len(f"{c.value:.5g}") + 2, c.coordinate
     labels = [r[0] for r in _table_below(checks, "Optimisation (govopt design)")]
     assert width["A"] >= max(len(s) for s in labels)
@@ -488,69 +494,62 @@ def test_dynamics_and_optimisation_are_tables(tmp_path, results):
 
 @pytest.mark.parametrize("name", ["hamabe-a", "alt"])
 def test_every_sheet_has_a_print_setup(workbooks, results, name):
-    """Issue 13, item 2: every sheet prints to the page width (as many pages down as needed),
-    landscape where wide, within a print area that holds its charts; issue 23: the rows repeated
-    on each page are the header of the table that runs onto another page (the Spring sheet's
-    list: its title and header, rows 1-2), the sheet's title where no table does and row 1 is a
-    title, none where row 1 is the header of a table that ends on the first page (Checks)."""
+    """Every sheet prints at a fixed scale of at least 80 % (its text never under 8 pt: the
+    smallest font times the scale), landscape where wide, within a print area that holds its
+    charts, the design named at the top of every page and "page x of y" at the foot; the rows
+    repeated on each page are the header of the table that runs onto another page (the
+    Spring sheet's record: its header row), none where no table does (Checks)."""
     wb = _read(workbooks[name])
     for ws in wb.worksheets:
         ps = ws.page_setup
-        assert ws.sheet_properties.pageSetUpPr.fitToPage, ws.title
-        assert (ps.fitToWidth, ps.fitToHeight) == (1, 0), ws.title
-    titles = {ws.title: ws.print_title_rows for ws in wb.worksheets}
-    assert titles["Spring"] == "$1:$2" and titles["Characteristic"] == "$1:$1"
-    assert titles["Dynamics"] == titles["Notes"] == "$1:$1"  # a title row, no table's header
-    assert len(wb["Checks"].row_breaks.brk) == 0 and titles["Checks"] is None
-    for ws in wb.worksheets:
+        assert not ws.sheet_properties.pageSetUpPr.fitToPage, ws.title
+        assert excel.book.MIN_SCALE <= ps.scale <= 100, ws.title
+        assert ws.oddHeader.left.text == f"govopt evaluation: {results[name].spec.name}"
+        assert ws.oddFooter.center.text == "&A, page &P of &N"
         assert ws.print_area.startswith(f"'{ws.title}'!$A$1:"), ws.title
-    assert wb["Design"].page_setup.orientation == "landscape"  # eight columns with notes
-    assert wb["Spec"].page_setup.orientation == "portrait"  # four columns
-    # every chart lies inside its sheet's print area
+    titles = {ws.title: ws.print_title_rows for ws in wb.worksheets}
+    assert len(wb["Checks"].row_breaks.brk) == 0 and titles["Checks"] is None
+    assert wb["Design"].page_setup.orientation == "landscape"  # seven columns with notes
+    # every chart lies inside its sheet's print area; no cell prints under 8 pt
     built = excel.build_workbook(results[name])
     for ws in built.worksheets:
+        sheet = excel.layout(ws)
+        assert excel.printed_font(sheet) >= 8.0, ws.title
         cols, rows = re.search(r"\$([A-Z]+)\$(\d+)$", ws.print_area).groups()
-        for chart in ws._charts:
-            c, r = excel._extent(ws, chart.anchor, chart.width, chart.height)
+        for chart, anchor in sheet.charts:
+            c, r = excel.extent(sheet, anchor, chart.width, chart.height)
             assert c <= openpyxl.utils.column_index_from_string(cols) and r <= int(rows)
 
 
-def test_formula_cells_carry_govopts_values(workbooks, results):
-    """Issue 13, item 2: readers that do not recalculate (pandas, previewers) see govopt's value
-    of every formula: it is stored as the formula's cached result."""
+def test_formulas_sit_beside_govopts_values(workbooks, results):
+    """The workbook is written through openpyxl's public API, which stores a formula without
+    a cached result: a reader that does not recalculate (pandas, a previewer) reads govopt's
+    value of each live formula in the Design sheet's 'govopt value' column beside it, and
+    every other sheet holds govopt's numbers, not formulas."""
     import pandas as pd
 
     res = results["hamabe-a"]
     path = workbooks["hamabe-a"]
     wf = _read(path)
-    wv = _read(path, data_only=True)
     names = {ref: n for n, (sheet, ref) in _named_cells(wf).items() if sheet == "Design"}
     expected = _expected(res)
     n = 0
     for c in _formula_cells(wf["Design"]):
-        got = wv["Design"][c.coordinate].value
-        name = names.get(wf["Design"].cell(c.row, excel._SI).coordinate)
-        if c.column == excel._SI and name in expected:
-            assert got == expected[name], name  # exactly
-        elif c.column == excel._SI:  # an input's SI value
-            shown = wv["Design"].cell(c.row, excel._VALUE).value or 0.0  # blank: 0
-            assert got == pytest.approx(shown / _factor(wf["Design"], c.row), rel=1e-15), name
-        elif c.column == excel._VALUE:  # the formula's value as shown
-            assert got == expected[name] * _factor(wf["Design"], c.row), name
-        else:  # the relative difference to govopt's value beside it
-            assert got == 0.0
-        n += 1
-    for c in _formula_cells(wf["Checks"]):
-        check = res.checks[c.row - 2]
-        want = {2: _in_checks(check.value, check), 4: _in_checks(check.limit, check),
-                6: check.margin, 7: "PASS" if check.passed else "FAIL",
-                8: "yes" if check.active else None}
-        assert wv["Checks"][c.coordinate].value == want[c.column], (check.name, c.column)
-        n += 1
-    assert n > 40
+        if c.column != excel.VALUE:
+            continue
+        name = names.get(wf["Design"].cell(c.row, excel.SI).coordinate)
+        beside = wf["Design"].cell(c.row, excel.GOVOPT).value
+        if name in expected:
+            assert beside == pytest.approx(expected[name] * _factor(wf["Design"], c.row),
+                                           rel=1e-15), name
+            n += 1
+    assert n == len(expected)
+    for ws in wf.worksheets:
+        if ws.title not in ("Design", "Model"):
+            assert not _formula_cells(ws), ws.title
     design = pd.read_excel(path, sheet_name="Design", header=0)
     row = design.index[design["defined name"] == "stiffness"][0]
-    assert design.loc[row, "value (SI)"] == pytest.approx(res.spring.kappa, rel=1e-15)
+    assert design.loc[row, "govopt value"] == pytest.approx(res.spring.kappa / 1e3, rel=1e-15)
 
 
 def test_cli_writes_workbook(tmp_path):
@@ -560,8 +559,11 @@ def test_cli_writes_workbook(tmp_path):
     out = tmp_path / "cli.xlsx"
     run = invoke(["evaluate", str(SPECS / "hamabe-b.toml"), "--xlsx", str(out)])
     assert run.exit_code == 0, run.output
-    assert tuple(openpyxl.load_workbook(out).sheetnames) == excel.SHEETS
+    assert tuple(openpyxl.load_workbook(out).sheetnames) == tuple(
+        s for s in excel.SHEETS if s != "Optimisation")
     assert os.listdir(tmp_path) == ["cli.xlsx"]
+    command = openpyxl.load_workbook(out)["Summary"]["B3"].value  # the record says who wrote it
+    assert "hamabe-b.toml" in command and str(out) in command
 
 
 # ------------------------------------------------------------------------------------------
@@ -577,7 +579,7 @@ def test_atomic_write_builder_failure(tmp_path, results, monkeypatch, existing):
     def boom(*args, **kwargs):
         raise RuntimeError("builder failed midway")
 
-    monkeypatch.setattr(excel, "_build_checks", boom)
+    monkeypatch.setattr(excel, "build_checks", boom)
     with pytest.raises(RuntimeError, match="midway"):
         excel.write_workbook(results["hamabe-a"], target)
     assert os.listdir(tmp_path) == (["w.xlsx"] if existing else [])
@@ -608,7 +610,7 @@ def test_atomic_write_replaces_and_reports_bad_directory(tmp_path, results):
     target.write_bytes(b"previous")
     target.chmod(0o640)
     assert excel.write_workbook(results["hamabe-a"], str(target)) == target
-    assert openpyxl.load_workbook(target).sheetnames[0] == "Spec"
+    assert openpyxl.load_workbook(target).sheetnames[0] == "Summary"
     assert os.listdir(tmp_path) == ["w.xlsx"]
     assert stat.S_IMODE(target.stat().st_mode) == 0o640  # the replaced file's permissions
     umask = os.umask(0o022)
@@ -623,10 +625,10 @@ def test_atomic_write_replaces_and_reports_bad_directory(tmp_path, results):
 # recalculation by a real spreadsheet engine
 
 
-def _compare_all_formulas(written: Path, recalculated: Path, res, *, design_only=False,
+def _compare_all_formulas(written: Path, recalculated: Path, res, *,
                           check_reldiff=True) -> float:
-    """Compare every formula cell's recalculated value with govopt; returns the worst
-    relative difference."""
+    """Compare every formula cell of the Design sheet (the workbook's only live cells) as
+    LibreOffice recalculated it with govopt; returns the worst relative difference."""
     wf = _read(written)
     wv = _read(recalculated, data_only=True)
     expected = _expected(res)
@@ -637,34 +639,19 @@ def _compare_all_formulas(written: Path, recalculated: Path, res, *, design_only
         total += 1
         got = wv["Design"][c.coordinate].value
         assert isinstance(got, float | int) and not isinstance(got, bool), (c.coordinate, got)
-        name = names.get(design.cell(c.row, excel._SI).coordinate)
-        if c.column == excel._SI and name not in expected:  # an input, converted to SI
-            shown = wv["Design"].cell(c.row, excel._VALUE).value or 0.0
+        name = names.get(design.cell(c.row, excel.SI).coordinate)
+        if c.column == excel.SI and name not in expected:  # an input, converted to SI
+            shown = wv["Design"].cell(c.row, excel.VALUE).value or 0.0
             assert got == pytest.approx(shown / _factor(design, c.row), rel=1e-14), name
             compared += 1
-        elif c.column in (excel._SI, excel._VALUE):  # a named formula, in SI and shown
-            want = expected[name] * (_factor(design, c.row) if c.column == excel._VALUE else 1)
+        elif c.column in (excel.SI, excel.VALUE):  # a named formula, in SI and shown
+            want = expected[name] * (_factor(design, c.row) if c.column == excel.VALUE else 1)
             worst = max(worst, _rel(got, want))
             assert got == pytest.approx(want, rel=RTOL, abs=0), name
             compared += 1
-        elif c.column == excel._RELDIFF:  # relative difference to govopt's value beside it
+        elif c.column == excel.RELDIFF:  # relative difference to govopt's value beside it
             if check_reldiff:
                 assert abs(got) <= RTOL, c.coordinate
-            compared += 1
-    if not design_only:
-        checks = wf["Checks"]
-        for c in _formula_cells(checks):
-            total += 1
-            check = res.checks[c.row - 2]
-            got = wv["Checks"][c.coordinate].value
-            want = {2: _in_checks(check.value, check), 4: _in_checks(check.limit, check),
-                    6: check.margin, 7: "PASS" if check.passed else "FAIL",
-                    8: "yes" if check.active else None}[c.column]
-            if isinstance(want, float):
-                worst = max(worst, _rel(got, want))
-                assert got == pytest.approx(want, rel=RTOL, abs=1e-12), (check.name, c.column)
-            else:
-                assert got == want, (check.name, c.column)
             compared += 1
     assert compared == total and total > 0
     return worst
@@ -682,6 +669,8 @@ def test_libreoffice_recalculation_matches_govopt(recalculated, results, name):
 @pytest.mark.libreoffice
 @needs_libreoffice
 def test_libreoffice_recalculates_edited_input(recalculated, results):
+    """An edited input (the wire diameter) moves every live formula to govopt's numbers for the
+    edited design, the stress and irregularity utilisations (the live checks) with them."""
     res = results["hamabe-a"]
     written, out = recalculated["edited"]
     # govopt for the changed design, with the workbook's free half length (an input cell)
@@ -689,7 +678,7 @@ def test_libreoffice_recalculates_edited_input(recalculated, results):
                                  free_half_length=res.spring.l0)
     new = govopt.evaluate(res.spec, design)
     assert new.spring.kappa < 0.8 * res.spring.kappa
-    worst = _compare_all_formulas(written, out, new, design_only=True, check_reldiff=False)
+    worst = _compare_all_formulas(written, out, new, check_reldiff=False)
     print(f"edited: worst relative difference LibreOffice vs govopt {worst:.2e}")
     wv = _read(out, data_only=True)
     names = _named_cells(wv)
@@ -701,12 +690,11 @@ def test_libreoffice_recalculates_edited_input(recalculated, results):
     assert value("stiffness") == pytest.approx(new.spring.kappa, rel=RTOL)
     assert value("max_shear_stress") == pytest.approx(new.max_stress, rel=RTOL)
     assert value("irregularity") == pytest.approx(new.irregularity, rel=RTOL)
-    # the live checks follow the edit too
-    checks = wv["Checks"]
-    for i, c in enumerate(new.checks, start=2):
-        if c.name in ("shear stress", "irregularity"):
-            assert checks.cell(i, 6).value == pytest.approx(c.margin, rel=RTOL, abs=1e-12)
-            assert checks.cell(i, 7).value == ("PASS" if c.passed else "FAIL")
+    stress, irregularity = new.check("shear stress"), new.check("irregularity")
+    assert value("stress_utilisation") == pytest.approx(stress.value / stress.limit, rel=RTOL)
+    assert value("irregularity_utilisation") == pytest.approx(
+        irregularity.value / irregularity.limit, rel=RTOL)
+    assert (value("stress_utilisation") <= 1) == stress.passed
 
 
 @pytest.mark.libreoffice
@@ -715,11 +703,11 @@ def test_libreoffice_keeps_formula_like_text(recalculated):
     written, out = recalculated["text"]
     for path in (written, out):
         wb = _read(path)
-        spec = {r[0].value: r[1] for r in wb["Spec"].iter_rows(min_row=2) if r[0].value}
+        spec = {r[0].value: r[2] for r in wb["Spec"].iter_rows(min_row=3) if r[0].value}
         assert spec["description"].value == "=1+1" and spec["description"].data_type == "s"
         assert spec["name"].value == "=SUM(2,3)" and spec["name"].data_type == "s"
     values = _read(out, data_only=True)["Spec"]
-    assert [r[1] for r in values.iter_rows(min_row=2, max_row=3, values_only=True)] == \
+    assert [r[2] for r in values.iter_rows(min_row=3, max_row=4, values_only=True)] == \
         ["=SUM(2,3)", "=1+1"]
 
 
@@ -731,32 +719,18 @@ def test_libreoffice_dynamics_and_optimiser_checks(recalculated, results):
     wb = _read(out, data_only=True)
     assert tuple(wb.sheetnames) == excel.SHEETS
     cells = [c.value for r in wb["Dynamics"].iter_rows() for c in r if c.value is not None]
-    # the Hurwitz margin under its name in the load changes' table (was the JSON key
-    # 'hurwitz_margin' of the raw dump, issue 13 item 2), with LibreOffice's words intact
-    assert {"Hurwitz margin 9 a1 a2 / (a0 a3) - 1 (eq. 32)", "never", "unbounded"} <= set(cells)
-    # a check limit that is not the spec's own is written as a number, not linked to the input
-    checks = _read(written)["Checks"]
-    assert checks["B2"].value == "=max_shear_stress" and checks["D2"].data_type == "n"
-    assert checks["D4"].data_type == "n"
+    # the Hurwitz margin under its name in the load changes' table, with LibreOffice's words
+    # intact
+    assert {"Hurwitz margin 9 a1 a2 / (a0 a3) - 1 (Hamabe eq. 32)", "never",
+            "unbounded"} <= set(cells)
     worst = _compare_all_formulas(written, out, res)
+    # the optimiser's checks as govopt decided them: its own limits, numbers not links
     assert [r[6] for r in wb["Checks"].iter_rows(min_row=2, max_row=5, values_only=True)] == \
         ["FAIL", "FAIL", "PASS", "PASS"]
+    assert wb["Checks"]["E2"].value == pytest.approx(  # a check without a unit: as it is
+        0.9 * res.spec.material.allowable_shear_stress, rel=1e-12)
     assert wb["Checks"]["H5"].value == "yes"
     print(f"dynamics: worst relative difference LibreOffice vs govopt {worst:.2e}")
-
-
-@pytest.mark.libreoffice
-@needs_libreoffice
-def test_libreoffice_recomputes_cached_values(recalculated, results):
-    """The cached results written with the formulas are readers' convenience, never the numbers
-    the recalculation tests compare: written twice govopt's value (7 for a zero or a word),
-    LibreOffice's recalculation still gives govopt's."""
-    written, out = recalculated["poisoned"]
-    cached = _read(written, data_only=True)
-    sheet, ref = _named_cells(cached)["stiffness"]
-    assert cached[sheet][ref].value == 2 * results["hamabe-a"].spring.kappa  # poisoned
-    worst = _compare_all_formulas(written, out, results["hamabe-a"])
-    print(f"poisoned: worst relative difference LibreOffice vs govopt {worst:.2e}")
 
 
 def test_spring_sheet_reads_in_engineering_units(tmp_path):
@@ -781,19 +755,26 @@ def test_page_breaks_keep_blocks_together():
     """Printing (issue 23): a break never splits a kept block that fits on a page (it moves up
     to the block's first row); a block longer than a page is split; the repeated first row is
     counted on every page after the first."""
-    ws = openpyxl.Workbook().active
+    from govopt.report.excel.book import PAGE_FILL
+
+    sheet = Sheet(openpyxl.Workbook().active)
     for r in range(1, 121):
-        ws.cell(r, 1, r)
-    height = 50 * excel._ROW_PT * 96 / 72 / excel._PAGE_FILL  # 50 default rows a page
-    excel._keep(ws, 40, 70)  # 31 rows: would straddle the first page's end (row 50)
-    excel._paginate(ws, 120, height)
-    breaks = [b.id for b in ws.row_breaks.brk]
+        sheet.put(r, 1, r)
+    height = 50 * ROW_PT * 96 / 72 / PAGE_FILL  # 50 default rows a page
+    sheet.keep(40, 70)  # 31 rows: would straddle the first page's end (row 50)
+    paginate(sheet, 120, height)
+    breaks = [b.id for b in sheet.ws.row_breaks.brk]
     assert breaks[0] == 39  # the block starts the second page
-    assert breaks[1] == 39 + 49  # 49 rows under the repeated first row
-    ws2 = openpyxl.Workbook().active
-    excel._keep(ws2, 10, 80)  # longer than a page: split where the page ends
-    excel._paginate(ws2, 120, height)
-    assert [b.id for b in ws2.row_breaks.brk][0] == 50
+    assert breaks[1] == 39 + 50  # no table repeats its header: 50 rows
+    sheet.keep_table(91, 95)  # a table from row 91: its title and header repeat after it
+    sheet.ws.row_breaks.brk = []
+    paginate(sheet, 120, height)
+    # 48 rows under its title and header
+    assert [b.id for b in sheet.ws.row_breaks.brk][:2] == [39, 39 + 48]
+    other = Sheet(openpyxl.Workbook().active)
+    other.keep(10, 80)  # longer than a page: split where the page ends
+    paginate(other, 120, height)
+    assert [b.id for b in other.ws.row_breaks.brk][0] == 50
 
 
 def test_characteristic_chart_shares_its_page(results):
@@ -803,6 +784,6 @@ def test_characteristic_chart_shares_its_page(results):
         wb = excel.build_workbook(results[name])
         ws = wb["Characteristic"]
         n = len(results[name].statics.alpha)
-        (chart,) = ws._charts
-        assert chart.anchor == f"B{n + 3}"  # under the table
+        ((chart, anchor),) = excel.layout(ws).charts
+        assert anchor == f"B{n + 3}"  # under the table
         assert all(b.id <= n + 1 - 5 for b in ws.row_breaks.brk), [b.id for b in ws.row_breaks.brk]

@@ -1,6 +1,7 @@
-"""Every governor type's workbook: the generic Design sheet (the seam's constants at the range's
-ends, live formulas in the masses and the spring) recalculated by LibreOffice agrees with
-govopt's own values to 1e-9, for each bundled evaluate spec and each type's optimised design."""
+"""Every governor type's workbook: the generic Design sheet (live formulas in the masses and the
+spring on the Model sheet's constants of the linkage at the range's ends) recalculated by
+LibreOffice agrees with govopt's own values to 1e-9, for each bundled evaluate spec and each
+type's optimised design."""
 
 import tomllib
 from pathlib import Path
@@ -54,7 +55,8 @@ def recalculated(written, tmp_path_factory):
     if needs_libreoffice.args[0]:  # no soffice: the written workbooks only
         return None
     d = tmp_path_factory.mktemp("types-lo")
-    out = _recalculate(list(written.values()), d / "out", d / "profile", sheet="Design")
+    out = _recalculate(list(written.values()), d / "out", d / "profile",
+                       sheet=("Design", excel.SHEETS.index("Design") + 1))
     return {n: _csv_values(out[p]) for n, p in written.items()}
 
 
@@ -72,17 +74,17 @@ def test_design_sheet_is_live(opened, recalculated, name):
     """Every formula of the Design sheet has govopt's value beside it; after LibreOffice
     recalculates, each equals it to RTOL (1e-9)."""
     ws = opened(name)["Design"]
-    cells = [c for c in _formula_cells(ws) if c.column == excel._VALUE]
+    cells = [c for c in _formula_cells(ws) if c.column == excel.VALUE]
     assert len(cells) >= 5  # masses, speeds at both ends, rpm (and the spring's figures)
-    assert any("omega_inner" in (ws.cell(c.row, excel._NAME).value or "") for c in cells)
+    assert any("omega_inner" in (ws.cell(c.row, excel.NAME).value or "") for c in cells)
     if recalculated is None:
         pytest.skip("LibreOffice not available")
     values = recalculated[name]
     for c in cells:
-        want = ws.cell(c.row, excel._GOVOPT).value
+        want = ws.cell(c.row, excel.GOVOPT).value
         got = values.get((c.row, c.column))
         assert isinstance(got, float | int), (c.coordinate, got)
-        assert got == pytest.approx(want, rel=RTOL, abs=1e-12), ws.cell(c.row, excel._NAME).value
+        assert got == pytest.approx(want, rel=RTOL, abs=1e-12), ws.cell(c.row, excel.NAME).value
 
 
 @pytest.mark.parametrize("name", DESIGN)
@@ -100,10 +102,11 @@ def test_designs_pass_every_check(results, name):
 
 @pytest.mark.parametrize("name", EVALUATE + DESIGN)
 def test_workbook_reads_in_engineering_units(opened, results, name):
-    """Issue 23: every number a person reads on the Design, Characteristic and Checks sheets has
-    a display format and an engineering unit (mm, MPa, N/mm, rpm, deg: no Pa, m, rad/s); the
-    seam's spring terms only where the type has a spring; every cell aligned at the top; the
-    characteristic's chart draws the spec's required band."""
+    """Every number a person reads on the Design, Characteristic and Checks sheets has a
+    display format and an engineering unit (mm, MPa, N/mm, rpm, deg: no Pa, m, rad/s); the
+    seam's constants on the Model sheet, labelled in words, its spring terms only where the type
+    has a spring; every cell aligned at the top; the characteristic's chart draws the spec's
+    required band and, where friction acts, the opening and closing speeds."""
     res = results[name]
     wb = opened(name)
     for ws in (wb["Design"], wb["Characteristic"], wb["Checks"]):
@@ -113,19 +116,23 @@ def test_workbook_reads_in_engineering_units(opened, results, name):
                     assert c.number_format != "General", (ws.title, c.coordinate)
     design = wb["Design"]
     rows = range(2, design.max_row + 1)
-    units = {design.cell(r, excel._UNIT).value for r in rows} - {None}
+    units = {design.cell(r, excel.UNIT).value for r in rows} - {None}
     assert not units & {"Pa", "m", "rad/s", "N/m", "rad"}, units
     assert "rpm" in units
-    symbols = {design.cell(r, 2).value for r in rows}
+    model = wb["Model"]
+    symbols = {model.cell(r, 2).value for r in range(2, model.max_row + 1)}
     assert ("A_F_i" in symbols) == (res.spec.governor.spring is not None)
     assert {"cf_m_i", "lv_m_a"} <= symbols
-    labels = {design.cell(r, 2).value: design.cell(r, 1).value for r in rows}
+    assert not {"cf_m_i", "lv_m_a"} & {design.cell(r, 2).value for r in rows}  # internals apart
+    labels = {model.cell(r, 2).value: model.cell(r, 1).value for r in range(2, model.max_row)}
     assert labels["cf_m_i"].startswith("dead loads' pull per kg of")
     assert all(c.alignment.vertical == "top" for row in design.iter_rows(min_row=2) for c in row
                if c.value is not None)
-    spec_units = {r[3] for r in wb["Spec"].iter_rows(min_row=2, values_only=True)} - {None, ""}
+    spec_units = {r[4] for r in wb["Spec"].iter_rows(min_row=3, values_only=True)} - {None, ""}
     assert not spec_units & {"Pa", "m", "rad/s", "N/m", "rad"}, spec_units
     head = [c.value for c in wb["Characteristic"][1]]
     assert not any(h and ("(m)" in h or "(Pa)" in h or "(rad)" in h) for h in head), head
-    (chart,) = wb["Characteristic"]._charts
-    assert len(chart.series) == (3 if res.spec.speed is not None else 1)
+    ((chart, _),) = excel.layout(excel.build_workbook(res)["Characteristic"]).charts
+    friction = res.friction_speeds[0] is not None
+    assert ("opening speed (rising against friction) (rpm)" in head) == friction
+    assert len(chart.series) == (3 if res.spec.speed is not None else 1) + 2 * friction

@@ -22,7 +22,9 @@ from transient_one import analyse_one
 
 import govopt
 from govopt.analysis import loadchange, statics
-from govopt.analysis import transient as tr
+from govopt.analysis.over_regulation import OVER_TOL, over_regulates
+from govopt.analysis.transient_cubic import cubic_roots, hamabe_initial_conditions
+from govopt.analysis.transient_events import analyse_many
 from govopt.optimize import design as dz
 from govopt.report import excel
 
@@ -38,7 +40,7 @@ def problem(spec):
     """(a0, a2, a3) and the initial state of eq. (28): neither depends on the dash-pot."""
     m = loadchange.load_change_model(spec)
     a0, _, a2, a3 = m.cubic
-    x = tr.hamabe_initial_conditions(a0, a2, a3, m.R, m.xi0, m.eta0)
+    x = hamabe_initial_conditions(a0, a2, a3, m.R, m.xi0, m.eta0)
     return (a0, a2, a3), tuple(float(v) for v in x)
 
 
@@ -145,10 +147,10 @@ def test_late_crossing_missed_by_a_horizon():
     f = 0.66
     coeffs = (a0, f / 3, a2, a3)
     res = analyse_one(*coeffs, *x)
-    s = tr.analyse_many(*coeffs, *x)
+    s = analyse_many(*coeffs, *x)
     assert res.stable and res.kind == "complex"
-    assert tr.over_regulates(res.over_regulation_scaled, x[0])
-    assert tr.over_regulates(s.over_regulation_scaled, x[0])
+    assert over_regulates(res.over_regulation_scaled, x[0])
+    assert over_regulates(s.over_regulation_scaled, x[0])
     decay = -max(r.real for r in res.roots)
     old_horizon = (math.log(50) + 12) / decay
     assert res.first_arrival_time > 1.5 * old_horizon  # 21.8 s against 12.8 s
@@ -215,8 +217,8 @@ def test_three_real_roots_late_sign_change():
     eps = 1e-6
     coeffs = _from_roots([-1.0, -1.2, -10.0])
     x = (1.0 - eps, -1.2 + eps, 1.44 - eps)
-    for res in (analyse_one(*coeffs, *x), tr.analyse_many(*coeffs, *x)):
-        assert tr.over_regulates(res.over_regulation_scaled, x[0])
+    for res in (analyse_one(*coeffs, *x), analyse_many(*coeffs, *x)):
+        assert over_regulates(res.over_regulation_scaled, x[0])
         assert float(res.over_regulation_scaled) == pytest.approx(eps, rel=1e-6)
         assert float(res.first_arrival_time) == pytest.approx(math.log(1 / eps) / 0.2, rel=1e-6)
         assert float(res.over_regulation) == pytest.approx(
@@ -232,7 +234,7 @@ def test_three_real_roots_late_sign_change():
     # no crossing when the slow mode is on the start side
     y = (1.0 + eps, -1.2 - eps, 1.44 + eps)
     res = analyse_one(*coeffs, *y)
-    assert res.over_regulation == 0.0 and not tr.over_regulates(res.over_regulation_scaled, 1.0)
+    assert res.over_regulation == 0.0 and not over_regulates(res.over_regulation_scaled, 1.0)
 
 
 def test_pair_coefficient_zero_to_the_tolerance():
@@ -240,14 +242,14 @@ def test_pair_coefficient_zero_to_the_tolerance():
     pair part, i.e. x0 = (1, r, r^2) up to rounding (then xi = e^{r t}, no crossing).  A pair
     part of 1e-6 relative crosses; the rule's tolerance is relative to |xi0|."""
     coeffs = _from_roots([-3.0, complex(-0.5, 4.0), complex(-0.5, -4.0)])
-    r = float(tr.cubic_roots(*coeffs)[0].real)
+    r = float(cubic_roots(*coeffs)[0].real)
     assert r == pytest.approx(-3.0, rel=1e-14)
     res = analyse_one(*coeffs, 1.0, r, r * r)
-    assert not tr.over_regulates(res.over_regulation_scaled, 1.0)
+    assert not over_regulates(res.over_regulation_scaled, 1.0)
     # what is left of the pair is rounding: far-side excursions of that size only
     assert res.over_regulation_scaled < 1e-15 and res.over_regulation < 1e-15
     kicked = analyse_one(*coeffs, 1.0, r, r * r * (1 + 1e-6))
-    assert tr.over_regulates(kicked.over_regulation_scaled, 1.0)
+    assert over_regulates(kicked.over_regulation_scaled, 1.0)
     assert kicked.first_arrival_time < math.inf
     crosses, _, late = mp_far_side(coeffs, (1.0, r, r * r * (1 + 1e-6)))
     assert crosses and late
@@ -268,21 +270,21 @@ def test_decisions_against_mpmath_on_random_designs():
     xi0 = rng.uniform(-0.2, -0.05, n)
     xdd = rng.uniform(-40.0, 60.0, n)
     pick = np.concatenate([[106, 241, 259, 432, 524, 762, 789, 975], np.arange(0, 4000, 200)])
-    s = tr.analyse_many(a0[pick], a1[pick], a2[pick], a3[pick], xi0[pick], 0.0, xdd[pick])
-    dec = tr.over_regulates(s.over_regulation_scaled, xi0[pick])
+    s = analyse_many(a0[pick], a1[pick], a2[pick], a3[pick], xi0[pick], 0.0, xdd[pick])
+    dec = over_regulates(s.over_regulation_scaled, xi0[pick])
     assert dec[:8].all()
     for k, i in enumerate(pick):
         coeffs, x = (a0[i], a1[i], a2[i], a3[i]), (xi0[i], 0.0, xdd[i])
         r = analyse_one(*coeffs, *x)
-        assert tr.over_regulates(r.over_regulation_scaled, x[0]) == dec[k]
+        assert over_regulates(r.over_regulation_scaled, x[0]) == dec[k]
         assert float(s.over_regulation_scaled[k]) == pytest.approx(r.over_regulation_scaled,
                                                                    rel=1e-9, abs=1e-300)
         assert mp_far_side(coeffs, x)[0] == dec[k], i
 
 
 def test_over_regulates_rule():
-    assert tr.OVER_TOL == 1e-9 and dz.OVER_TOL == tr.OVER_TOL
+    assert OVER_TOL == 1e-9 and dz.OVER_TOL == OVER_TOL
     xi0 = np.array([-0.128, -0.128, -0.128, 0.0, 0.0, -0.128])
-    edge = tr.OVER_TOL * 0.128
+    edge = OVER_TOL * 0.128
     d = np.array([0.0, edge, np.nextafter(edge, 1), 0.0, 1e-300, np.nan])
-    assert tr.over_regulates(d, xi0).tolist() == [False, False, True, False, True, True]
+    assert over_regulates(d, xi0).tolist() == [False, False, True, False, True, True]

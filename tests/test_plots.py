@@ -15,7 +15,7 @@ from clirun import invoke
 
 import govopt
 from govopt.analysis import vyshnegradsky as vy
-from govopt.evaluation import evaluate
+from govopt.evaluator import evaluate
 from govopt.governors import REGISTRY
 from govopt.report import plot_files, plots
 from govopt.spec import load_spec
@@ -57,9 +57,9 @@ def _check_svg(path: Path) -> None:
 
 
 @pytest.mark.parametrize("name, expected", [
-    ("hamabe-a-graded", ["characteristic", "k2", "load-change-1", "vyshnegradsky",
+    ("hamabe-a-graded", ["characteristic", "linkage", "k2", "load-change-1", "vyshnegradsky",
                          "vibration-spectrum", "vibration-trace", "fatigue"]),
-    ("porter-engine", ["characteristic", "controlling-force", "k2", "load-change-1",
+    ("porter-engine", ["characteristic", "linkage", "controlling-force", "k2", "load-change-1",
                        "vyshnegradsky"]),
 ])
 def test_write_plots_png_and_svg_not_blank(tmp_path, name, expected):
@@ -87,7 +87,7 @@ def test_files_are_reproducible_and_never_clobbered(tmp_path):
     replaced only with overwrite (the CLI's --force)."""
     res = _result("textbook-ex1-porter")
     first = plot_files.write_plots(res, tmp_path, formats=("svg",))
-    assert sorted(tmp_path.iterdir()) == sorted(first) and len(first) == 3
+    assert sorted(tmp_path.iterdir()) == sorted(first) and len(first) == 4
     before = {p: p.read_bytes() for p in first}
     inode = {p: p.stat().st_ino for p in first}
     with pytest.raises(govopt.errors.GovoptError, match="already exists"):
@@ -293,7 +293,7 @@ def test_result_plot_api():
     overview = res.plot()
     assert isinstance(overview, Figure)
     assert sum(1 for a in overview.axes if a.get_title()) == len(plots.kinds(res))
-    with pytest.raises(ValueError, match="it has: characteristic, controlling-force"):
+    with pytest.raises(ValueError, match="it has: characteristic, linkage, controlling-force"):
         res.plot("vibration-trace")
     with pytest.raises(ValueError, match="name a kind"):
         res.plot(ax=ax)
@@ -321,8 +321,9 @@ def test_cli_plots_written_refused_and_forced(tmp_path):
     out = tmp_path / "plots"  # made by the run (its parent exists)
     run = invoke(["evaluate", spec, "--plots", out], cwd=tmp_path)
     assert run.exit_code == 0, run.output
-    names = [f"textbook-ex4-hartnell-{k}.{f}" for k in ("characteristic", "controlling-force",
-                                                         "k2") for f in ("png", "svg")]
+    names = [f"textbook-ex4-hartnell-{k}.{f}" for k in ("characteristic", "linkage",
+                                                         "controlling-force", "k2")
+             for f in ("png", "svg")]
     assert sorted(p.name for p in out.iterdir()) == sorted(names)
     assert [ln for ln in run.stdout.splitlines() if ln.startswith("wrote")] == \
         [f"wrote {out / n}" for n in names]

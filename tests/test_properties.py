@@ -20,7 +20,7 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 from govopt.errors import GovoptError
-from govopt.evaluation import evaluate
+from govopt.evaluator import evaluate
 from govopt.governors import REGISTRY
 from govopt.spec import parse_spec
 from govopt.springs import helical as hx

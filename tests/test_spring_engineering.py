@@ -158,7 +158,7 @@ def test_every_new_check_in_json_text_and_excel(old_graded, tmp_path):
         # ... and its source under the spring's sheet
         assert f"  {name}: {c.source}" in text.splitlines()
         row = checks_ws[name]
-        assert row[8].value == pytest.approx(c.margin) and row[9].value == c.source
+        assert row[5].value == pytest.approx(c.margin) and row[8].value == c.source
         s = spring_ws[name]  # in the units a spring maker reads (MPa, mm)
         assert s[1].value == pytest.approx(excel.engineering(c.value, c.unit)[0])
         assert s[3].value == pytest.approx(excel.engineering(c.limit, c.unit)[0])

@@ -219,9 +219,10 @@ def test_fatigue_below_the_endurance_gives_a_finite_life():
 
 
 def test_workbook_and_plots(tmp_path):
-    """--xlsx: the answer and the spring maker's sheet in engineering units, every check, the
-    force-length table; --plots: force-length and the fatigue diagram; an existing file is
-    refused before the run without --replace, and a failed run writes nothing."""
+    """--xlsx: a Summary with the answer, the spring maker's sheet in engineering units, every
+    check, the force-length table at the maker's working points; --plots: force-length and the
+    fatigue diagram; an existing file is refused before the run without --replace, and a
+    failed run writes nothing."""
     import openpyxl
 
     args = ["--force", "500 N", "--stiffness", "20 N/mm", "--material", "EN10270-1 SH",
@@ -231,17 +232,18 @@ def test_workbook_and_plots(tmp_path):
     assert run.exit_code == 0, run.output  # the wire table's best spring passes fatigue too
     out = json.loads(invoke(["spring", *args, "--json"]).stdout)
     wb = openpyxl.load_workbook(book)
-    assert wb.sheetnames == ["Spring", "Checks", "Force-length"]
-    rows = {r[0]: r[1:3] for r in wb["Spring"].iter_rows(values_only=True) if r[0]}
-    assert rows["wire diameter d"] == (pytest.approx(fig(out, "wire_diameter_m") * 1e3), "mm")
-    assert rows["free length L0"] == (pytest.approx(fig(out, "free_length_m") * 1e3), "mm")
-    assert rows["claim"][0] == out["optimisation"]["claim"]
-    checks = [r for r in wb["Checks"].iter_rows(min_row=2, values_only=True) if r[0]]
+    assert wb.sheetnames == ["Summary", "Spring", "Checks", "Force-length"]
+    answer = {r[0]: r[1:3] for r in wb["Summary"].iter_rows(values_only=True) if r[0]}
+    assert answer["wire diameter d"] == (pytest.approx(fig(out, "wire_diameter_m") * 1e3), "mm")
+    assert answer["free length L0"] == (pytest.approx(fig(out, "free_length_m") * 1e3), "mm")
+    assert answer["claim"][0] == out["optimisation"]["claim"]
+    checks = [r for r in wb["Checks"].iter_rows(min_row=3, values_only=True) if r[0]]
     assert [r[0] for r in checks] == [c["name"] for c in out["checks"]]
-    table = [r for r in wb["Force-length"].iter_rows(min_row=2, values_only=True)]
+    table = [r[1:3] for r in wb["Force-length"].iter_rows(min_row=3, values_only=True)
+             if isinstance(r[1], float)]
     R = fig(out, "rate_N_per_m")
-    assert all(f == pytest.approx(R * (fig(out, "free_length_m") - L / 1e3), abs=1e-6)
-               for L, f in table)
+    assert len(table) >= 3 and all(
+        f == pytest.approx(R * (fig(out, "free_length_m") - L / 1e3), abs=1e-6) for L, f in table)
     assert sorted(p.name for p in folder.iterdir()) == [
         f"spring-{k}.{x}" for k in ("fatigue", "force-length") for x in ("png", "svg")]
     again = invoke(["spring", *args, "--xlsx", str(book)])
@@ -294,7 +296,7 @@ def test_force_length_plot_and_table_read_one_computation(extra):
                 shear_modulus="81.5 GPa", name="valve spring",
                 **{extra[i][2:].replace("-", "_"): extra[i + 1] for i in range(0, len(extra), 2)})
     out = spring_command.run(**args)
-    table = so._force_length_points(out)
+    table = so.force_length_points(out)
     fig_, ax = plt.subplots()
     so.force_length(out, ax)
     line = ax.lines[0].get_xdata()  # the spring's line in mm
@@ -302,12 +304,12 @@ def test_force_length_plot_and_table_read_one_computation(extra):
     title = ax.get_title()
     plt.close(fig_)
     L0 = out.data["spring"]["free_length_m"]
-    assert table[0][0] == L0 and line[0] == pytest.approx(L0 * 1e3, rel=1e-15)
+    assert table[0][1] == L0 and line[0] == pytest.approx(L0 * 1e3, rel=1e-15)
     assert title == "valve spring: force against length"
     assert [m.split(",")[0] for m in marked] == ["L2"]  # no least force: L2 only, not L0
     if out.assessment.spring.kind == "compression":
         Lc = out.data["lengths_and_energy"]["solid_length_m"]
-        assert table[-1][0] == Lc and line[-1] == pytest.approx(Lc * 1e3, rel=1e-15)
+        assert table[-1][1] == Lc and line[-1] == pytest.approx(Lc * 1e3, rel=1e-15)
         assert Lc < out.data["lengths_and_energy"]["least_working_length_m"] < L0
     if "--length-2" in extra:
         R = out.data["lengths_and_energy"]["rate_N_per_m"]

@@ -17,7 +17,8 @@ import numpy as np
 import pytest
 from transient_one import analyse_one
 
-from govopt.analysis.transient import analyse_many, cubic_roots
+from govopt.analysis.transient_cubic import cubic_roots
+from govopt.analysis.transient_events import analyse_many
 
 
 def _polyroots(coeffs):

@@ -16,7 +16,7 @@ from clirun import invoke
 from test_excel import SOFFICE, _named_cells, _recalculate  # the suite's LibreOffice helpers
 
 import govopt
-import govopt.evaluation
+import govopt.evaluator
 from govopt.analysis import friction, statics
 from govopt.result import Check
 from govopt.units import UnitError, parse_quantity
@@ -181,14 +181,14 @@ def test_impossible_design_within_the_limits_exit_2(tmp_path):
 def test_design_exits_2_when_its_final_verification_fails(monkeypatch):
     """`govopt design` re-evaluates its choice; a failing check there is an error (exit 2)
     naming the check, never an "optimal" design."""
-    real = govopt.evaluation.evaluate
+    real = govopt.evaluator.evaluate
 
     def failing(spec, design=None):
         res = real(spec, design)
         res.checks.append(Check("injected check", 2.0, 1.0, "<=", "m"))
         return res
 
-    monkeypatch.setattr(govopt.evaluation, "evaluate", failing)
+    monkeypatch.setattr(govopt.evaluator, "evaluate", failing)
     out = invoke(["design", "govopt/specs/hamabe-design.toml", "--json"])
     assert out.exit_code == 2, out.output
     assert "final verification" in out.output and "injected check: 2 m" in out.output

@@ -27,7 +27,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy import integrate
 
-from govopt.evaluation import evaluate
+from govopt.evaluator import evaluate
 from govopt.governors.shaft import valvegear as vg
 from govopt.governors.shaft import vibration as V
 from govopt.spec import load_spec

@@ -1,12 +1,12 @@
-"""One design through :func:`govopt.analysis.transient.analyse_many` (the one transient analysis;
-:func:`govopt.evaluate` calls it so), its figures as Python scalars for the tests."""
+"""One design through :func:`govopt.analysis.transient_events.analyse_many` (the one transient
+analysis; :func:`govopt.evaluate` calls it so), its figures as Python scalars for the tests."""
 
 from dataclasses import fields
 from types import SimpleNamespace
 
 import numpy as np
 
-from govopt.analysis.transient import analyse_many
+from govopt.analysis.transient_events import analyse_many
 
 
 def analyse_one(*args, **kw) -> SimpleNamespace:

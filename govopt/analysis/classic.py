@@ -30,7 +30,8 @@ All are computed from the characteristic, written once on the seam
   Porter with equal arms this is the book's ``P = c (w + W)`` to first order in ``c``;
 * **power** (Rattan): effort times the member's travel for the same speed change: the
   configuration ``x'`` in equilibrium at ``(1 + c) omega`` (a root of the characteristic; over
-  the range, the outermost configuration: the whole travel) and
+  the range, the outermost configuration: the whole travel; where ``x'`` lies past the
+  outermost configuration, the member stops there and the travel is to the stop) and
   ``Delta s = int_x^x' s'(u) du`` (Gauss-Legendre, exact to rounding for these smooth
   linkages);
 * **friction band** (textbook 3.4(b), "Friction at the sleeve"; Hamabe eq. 42): the speeds at
@@ -94,6 +95,11 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
         else:
             target = (1.0 + c) ** 2 * w2[:, i_n]
             travel = _travel(spec, sd, float(x[i_n]), float(x[-1]), target, ok)
+        # a speed change whose equilibrium lies past the outermost configuration moves the
+        # member to its stop: the work is done over the travel to the stop (Rattan: power
+        # is the work done at the member for the speed change)
+        at_stop = np.asarray(ok & np.isinf(travel) & (not over_range))
+        travel = np.where(at_stop, travel_between(spec, float(x[i_n]), float(x[-1])), travel)
         if over_range:  # a speed that does not rise over the range has no effort to move it
             effort = np.where((c > 0.0)[:, None], effort, np.nan)
         return {"range_rad_s": wa - wi, "sensitiveness": 2.0 * (wa - wi) / (wa + wi),
@@ -101,6 +107,7 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
                 "power": effort[:, at] * travel, "friction_band": band[:, i_n],
                 "insensitiveness": ((rise - fall) / omega).max(axis=1),
                 "rise": rise, "fall": fall, "change": c, "over_range": over_range,
+                "at_stop": at_stop,
                 "x_normal": float(x[i_n])}
 
 
@@ -120,6 +127,9 @@ def report(spec, measures: dict, i: int) -> dict:
         "effort_unit": "N*m" if gov.travel == "angle" else "N",
         "power": float(measures["power"][i]),
         "power_unit": "J",
+        "power_note": (f"to the stop: a {100.0 * float(measures['change'][i]):.4g} % speed change "
+                       "from the normal configuration has its equilibrium past the outermost"
+                       if measures["at_stop"][i] else ""),
         "friction_band": float(measures["friction_band"][i]),
         "omega_rise_rad_s": measures["rise"][i].tolist(),
         "omega_fall_rad_s": measures["fall"][i].tolist(),

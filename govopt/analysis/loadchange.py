@@ -2,7 +2,7 @@
 
 Builds eq. (28)'s coefficients and initial conditions for a load change ``alpha1 -> alpha0`` from
 the characteristic curve and the engine data, and analyses the response with the robust solver
-of :mod:`govopt.analysis.transient`.
+of :mod:`govopt.analysis.transient_events`.
 """
 
 from __future__ import annotations
@@ -16,7 +16,10 @@ from ..governors.base import KEY_UNITS
 from ..inputs import LoadChange, Spec
 from ..jsonable import number
 from . import statics, vyshnegradsky
-from . import transient as tr
+from .over_regulation import over_regulates
+from .transient import transient
+from .transient_cubic import hamabe_initial_conditions
+from .transient_events import analyse_many
 
 
 def speed_lever(spec: Spec, alpha0, m, central=None):
@@ -133,7 +136,7 @@ def coefficients(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float)
     """
     model = load_change_model(spec, sd, lc, dashpot=f)
     a = model.cubic
-    x = tr.hamabe_initial_conditions(a[0], a[2], a[3], model.R, model.xi0, model.eta0)
+    x = hamabe_initial_conditions(a[0], a[2], a[3], model.R, model.xi0, model.eta0)
     return tuple(float(v) for v in a), tuple(float(v) for v in x), model.k2
 
 
@@ -167,13 +170,13 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
     ``xi_u``, ``xi_dot_u_s``, ``xi_ddot_u_s2``, ``response`` ``xi_u``, and eq. (28)'s
     coefficients (:func:`coefficient_keys`)."""
     a, x, k2 = coefficients(spec, sd, lc, f)
-    res = tr.analyse_many(*a, *x, band=spec.analysis.settling_band)  # one design: scalars
+    res = analyse_many(*a, *x, band=spec.analysis.settling_band)  # one design: scalars
     return summary(spec, lc, a, x, k2, res, samples)
 
 
 def summary(spec: Spec, lc: LoadChange, a, x, k2: float, res, samples: int = 200) -> dict:
     """The dict of :func:`analyse` from one design's coefficients ``a`` (eq. 28), initial state
-    ``x``, ``k^2`` and its :class:`~govopt.analysis.transient.TransientSummary` ``res``: the
+    ``x``, ``k^2`` and its :class:`~govopt.analysis.transient_events.TransientSummary` ``res``: the
     numbers the evaluator computed (:mod:`govopt.evaluator`), with the response table."""
     u = coordinate_unit(spec.governor)
     roots = np.asarray(res.roots, dtype=complex)
@@ -181,7 +184,7 @@ def summary(spec: Spec, lc: LoadChange, a, x, k2: float, res, samples: int = 200
     horizon = res.settling_time if np.isfinite(res.settling_time) else (
         10.0 / slowest if slowest > 0 else 10.0 * 2 * np.pi / max(float(np.max(roots.imag)), 1e-9))
     t = np.linspace(0.0, 1.5 * horizon, samples)
-    xi = tr.transient(*a, *x, t)
+    xi = transient(*a, *x, t)
     return {
         "name": lc.name,
         # configurations under the type's own name and unit (the shaft: alpha_from_deg ...)
@@ -199,14 +202,14 @@ def summary(spec: Spec, lc: LoadChange, a, x, k2: float, res, samples: int = 200
         "stable": bool(res.stable),
         # an unstable transient passes its equilibrium without bound
         f"over_regulation_{u}": float(res.over_regulation) if res.stable else float("inf"),
-        # decided for all t >= 0 by the one rule (transient.over_regulates)
+        # decided for all t >= 0 by the one rule (over_regulation.over_regulates)
         "over_regulates": bool(not res.stable
-                               or tr.over_regulates(res.over_regulation_scaled, x[0])),
+                               or over_regulates(res.over_regulation_scaled, x[0])),
         f"over_regulation_scaled_{u}": float(res.over_regulation_scaled),
         "first_arrival_time_s": float(res.first_arrival_time),
         "settling_time_s": float(res.settling_time),
         # inf with this set: a stable response whose settling the solver could not place
-        # (transient.TransientSummary.truncated), not one that never settles
+        # (TransientSummary.truncated), not one that never settles
         "settling_not_decided": bool(res.truncated),
         "settling_band": spec.analysis.settling_band,
         "response": {"t_s": t.tolist(), f"xi_{u}": np.asarray(xi).tolist()},
@@ -220,24 +223,24 @@ def no_overregulation_window(spec: Spec, sd: statics.SpringDesign | None = None,
     over-regulates, at any ``t >= 0``: ``(f_lo, f_hi)``, or None if there are none.
 
     Hamabe, Disturbing Actions of a Shaft Governor, Part III, eqs. (28), (32): ``a0``, ``a2``,
-    ``a3`` and the initial state do not depend on ``f``.  Eq. (32) needs
-    ``f > a0 a3 / (3 a2)``; for large ``f`` the slow roots of ``3 a1 s^2 + 3 a2 s + a3`` form a
-    complex pair (from ``f > 9 a2^2 / (4 a3)``), which oscillates for ever.  ``points``
-    log-spaced values from the first to 100 times the larger of these are decided with
-    :func:`transient.over_regulates` (the same rule as :func:`govopt.evaluate` and the design
-    search), the widest run of admissible values is taken, and each end is bisected on the
-    same rule to ``rtol`` relative (``f_hi = inf`` if the run reaches the scan's end).  For
-    Hamabe's cases a and d with the paper's model the ends agree with a 50-digit reference to
-    ~1e-9 (tests/test_overregulation.py).
+    ``a3`` and the initial state do not depend on ``f``.  Eq. (32) needs ``f > a0 a3 / (3 a2)``; for
+    large ``f`` the slow roots of ``3 a1 s^2 + 3 a2 s + a3`` form a complex pair (from ``f > 9 a2^2
+    / (4 a3)``), which oscillates for ever.  ``points`` log-spaced values from the first to 100
+    times the larger of these are decided with
+    :func:`~govopt.analysis.over_regulation.over_regulates` (the same rule as
+    :func:`govopt.evaluate` and the design search), the widest run of admissible values is taken,
+    and each end is bisected on the same rule to ``rtol`` relative (``f_hi = inf`` if the run
+    reaches the scan's end).  For Hamabe's cases a and d with the paper's model the ends agree with
+    a 50-digit reference to ~1e-9 (tests/test_overregulation.py).
     """
     model = load_change_model(spec, sd, load_change)
     a0, _, a2, a3 = model.cubic
-    x = tr.hamabe_initial_conditions(a0, a2, a3, model.R, model.xi0, model.eta0)
+    x = hamabe_initial_conditions(a0, a2, a3, model.R, model.xi0, model.eta0)
 
     def admissible(f):
         f = np.asarray(f, dtype=float)
-        s = tr.analyse_many(a0, f / 3.0, a2, a3, *x, band=spec.analysis.settling_band)
-        return s.stable & ~tr.over_regulates(s.over_regulation_scaled, model.xi0)
+        s = analyse_many(a0, f / 3.0, a2, a3, *x, band=spec.analysis.settling_band)
+        return s.stable & ~over_regulates(s.over_regulation_scaled, model.xi0)
 
     f_h = a0 * a3 / (3.0 * a2)
     f = np.geomspace(f_h, 100.0 * max(f_h, 9.0 * a2 * a2 / (4.0 * a3)), points)

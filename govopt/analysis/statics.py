@@ -111,8 +111,7 @@ BAND_INNER = "lowest speed >= speed.inner"
 BAND_OUTER = "highest speed <= speed.outer"
 BAND_SOURCE = ("[speed] inner/outer: the whole operating band inside the spec's, over the whole "
                "range; with friction the governor closes at omega_fall and opens at omega_rise, "
-               "omega^2 = (Q_s + cf -+ F) / (jp - ci) (textbook 3.4(b), 'Friction at the "
-               "sleeve'; Hamabe eq. 42)")
+               "omega^2 = (Q_s + cf -+ F) / (jp - ci)")  # the checks add the type's friction source
 
 
 def band_speeds_squared(t, kappa, l0, friction=0.0):

@@ -7,7 +7,7 @@ from typing import Annotated
 import typer
 
 from . import common
-from .common import FORCE_HELP, Command, echo, guarded
+from .common import FORCE_HELP, echo, guarded
 
 BENCH_HELP = ("Speed against error of every analysis (one point per method and setting, errors "
               "against high-precision references) and the speed targets beside what was "
@@ -18,7 +18,7 @@ BENCH_SHORT = ("Speed against error of every analysis and the speed targets besi
 app = typer.Typer(add_completion=False)
 
 
-@app.command("bench", cls=Command, help=BENCH_HELP, short_help=BENCH_SHORT)
+@app.command("bench", help=BENCH_HELP, short_help=BENCH_SHORT)
 @guarded
 def bench(quick: Annotated[bool, common.flag(
               "--quick/--no-quick",

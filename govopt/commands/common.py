@@ -1,32 +1,19 @@
 """What every command of the CLI shares: output, the one-line error convention and exit codes
-(0 ok, 1 a check failed, 2 a user's error, 3 a bug), held warnings, and :class:`Command`, the
-typer command class whose options are converted here instead of through pydantic.
-
-typer 0.29 builds a pydantic ``TypeAdapter`` for every option that is not a flag the first time
-it reads it (pydantic's import and the adapters: ~0.1 s of CPU at every start of a command;
-docs/decisions.md: imports on demand); govopt's options are text, numbers, paths and lists of
-text, converted by :func:`convert` with govopt's own messages.
-"""
+(0 ok, 1 a check failed, 2 a user's error, 3 a bug), held warnings, and the help's options and
+flags. The commands are ordinary typer commands: typer parses and converts their options."""
 
 from __future__ import annotations
 
 import functools
-import inspect
 import re
 import sys
-import types
 import typing
 import warnings
-from pathlib import Path
 
 import typer
-import typer.core
 
 from ..errors import GovoptError
 from ..limits import printable, shorten_values
-
-#: typer's (vendored) click: its usage error, the base of every bad-command-line exception
-UsageError = typer.BadParameter.__mro__[1]
 
 _ANSI = re.compile(r"\033\[[;?0-9]*[a-zA-Z]")  # an escape sequence, stripped when not a terminal
 
@@ -114,101 +101,12 @@ def rich_text(text: str) -> str:
     return text.replace("[", r"\[")
 
 
-# ------------------------------------------------------------------------------------------
-# options converted without pydantic
-
-_WHAT = {int: "an integer", float: "a number"}
-
-
-def _base(annotation):
-    """The type an option's annotation declares, without ``Annotated`` and ``| None``."""
-    while typing.get_origin(annotation) is typing.Annotated:
-        annotation = typing.get_args(annotation)[0]
-    args = [a for a in typing.get_args(annotation) if a is not type(None)]
-    if typing.get_origin(annotation) in (typing.Union, types.UnionType):
-        annotation = args[0]
-    return annotation
-
-
-def convert(kind, value, option: str):
-    """``value`` (the words typed, or the default) as ``kind`` (str, int, float, Path, or a
-    list of str); a word that is not a ``kind`` is a bad command line (typer's usage error:
-    one line, exit 2)."""
-    if value is None:
-        return [] if typing.get_origin(kind) is list else None
-    if kind is bool and not isinstance(value, bool):  # an environment variable's text
-        return str(value).strip().lower() in ("1", "true", "t", "yes", "y", "on")
-    if typing.get_origin(kind) is list:
-        return [str(v) for v in value]
-    if kind in (int, float) and not isinstance(value, kind):
-        try:
-            return kind(value)
-        except ValueError:
-            raise typer.BadParameter(f"expected {_WHAT[kind]}, got {value!r}") from None
-    if kind is Path and not isinstance(value, Path):
-        return Path(value)
-    return value
-
-
-class _Plain:
-    """A command or group whose parameters are converted by :func:`convert` (no pydantic),
-    each as the declared type of the function's argument (``kinds``), and whose flags read
-    ``--json  Print ...`` in the help, as in git or pip, not ``--json <bool>`` (typer's rich
-    help shows every option's type, the help and completion flags too)."""
-
-    kinds: dict = {}
-
-    def get_params(self, ctx):
-        params = super().get_params(ctx)
-        for param in params:
-            flag = getattr(param, "is_flag", False)
-            if flag:
-                param.display_type_rich = _no_type
-            if "process_value" not in vars(param):
-                kind = self.kinds.get(param.name, bool if flag else str)
-                param.process_value = functools.partial(_process, param, kind)
-        return params
-
-
-def _no_type(ctx) -> None:
-    return None
-
-
-class Group(_Plain, typer.core.TyperGroup):
-    """A typer group: its options converted without pydantic, its flags shown without a type."""
-
-
-class Command(_Plain, typer.core.TyperCommand):
-    """A typer command whose options are converted by :func:`convert` (no pydantic): each
-    option's value, as the declared type of the function's argument."""
-
-    def __init__(self, *args, **kwargs):
-        super().__init__(*args, **kwargs)
-        hints = typing.get_type_hints(inspect.unwrap(self.callback), include_extras=True)
-        self.kinds = {name: _base(hint) for name, hint in hints.items()}
-
-
-def _process(param, kind, ctx, value):
-    """click's ``Parameter.process_value`` with :func:`convert` for the conversion."""
-    value = convert(kind, value, param.opts[0])
-    if param.required and param.value_is_missing(value):
-        raise _missing(ctx, param)
-    if param.callback is not None:
-        value = param.callback(ctx, param, value)
-    return value
-
-
-def _missing(ctx, param):
-    """click's missing-parameter error (``Missing option '--force'``)."""
-    names = " / ".join(f"'{name}'" for name in param.opts)
-    return UsageError(f"Missing {param.param_type_name} {names}", ctx=ctx)
-
-
 def option(*names: str, help: str, metavar: str = "<str>", **kw):
     """A typer option that takes a value (shown as ``metavar``), its help printed as written."""
     return typer.Option(*names, metavar=metavar, help=rich_text(help), **kw)
 
 
 def flag(*names: str, help: str, **kw):
-    """A typer flag (``--json``; ``--x/--no-x`` for a switch), its help printed as written."""
-    return typer.Option(*names, help=rich_text(help), **kw)
+    """A typer flag (``--json``; ``--x/--no-x`` for a switch), its help printed as written and
+    no value shown (``--json  Print ...``, as in git or pip, not ``--json <bool>``)."""
+    return typer.Option(*names, metavar="", help=rich_text(help), **kw)

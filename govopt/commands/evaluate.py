@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from ..examples import SPECS
-from .common import FORCE_HELP, JSON_HELP, ChecksFailed, Command, echo, fail, guarded, option
+from .common import FORCE_HELP, JSON_HELP, ChecksFailed, echo, fail, flag, guarded, option
 
 DEFAULT_EVALUATE = SPECS / "hamabe-a.toml"
 DEFAULT_DESIGN = SPECS / "hamabe-design.toml"
@@ -23,15 +23,14 @@ DESIGN_SHORT = "Find the best design for the spec's requirements (default: bundl
 
 Spec = Annotated[Path | None, typer.Argument(help="Spec file (TOML with units).",
                                              metavar="spec", show_default=False)]
-Json = Annotated[bool, typer.Option("--json", help=JSON_HELP)]
+Json = Annotated[bool, flag("--json", help=JSON_HELP)]
 Xlsx = Annotated[str | None, typer.Option("--xlsx", metavar="<path>",
                                           help="Write an Excel design sheet.")]
-Force = Annotated[bool, typer.Option("--force", help=FORCE_HELP)]
+Force = Annotated[bool, flag("--force", help=FORCE_HELP)]
 Plots = Annotated[Path | None, typer.Option(
     "--plots", metavar="<path>", help="Write the plots (PNG and SVG) into this folder.")]
-Full = Annotated[bool, typer.Option("--full", help="Print the whole report (the default is the "
-                                                   "answer: verdict, design, the checks to "
-                                                   "watch, notes).")]
+Full = Annotated[bool, flag("--full", help="Print the whole report (the default is the answer: "
+                                      "verdict, design, the checks to watch, notes).")]
 Section = Annotated[list[str] | None, typer.Option(
     "--section", metavar="<str>",
     help="Print these sections of the report (repeat, or comma-separated): summary, "
@@ -55,7 +54,7 @@ def _load(spec: Path | None, default: Path, **analysis):
     return with_values(s, changes) if changes else s
 
 
-@evaluate_app.command("evaluate", cls=Command, help=EVALUATE_HELP, short_help=EVALUATE_SHORT)
+@evaluate_app.command("evaluate", help=EVALUATE_HELP, short_help=EVALUATE_SHORT)
 @guarded
 def evaluate(spec: Spec = None,
              geometry: Annotated[str | None, typer.Option(
@@ -65,7 +64,7 @@ def evaluate(spec: Spec = None,
              json_out: Json = False, xlsx: Xlsx = None, force: Force = False,
              plots: Plots = None, full: Full = False, section: Section = None,
              speed_change: Change = None) -> None:
-    from ..evaluation import evaluate as run
+    from ..evaluator import evaluate as run
 
     if geometry is not None and geometry not in ("exact", "series"):
         fail(f"--geometry: expected 'exact' or 'series', got {geometry!r}")
@@ -76,7 +75,7 @@ def evaluate(spec: Spec = None,
                    sections=_sections(full, section))
 
 
-@design_app.command("design", cls=Command, help=DESIGN_HELP, short_help=DESIGN_SHORT)
+@design_app.command("design", help=DESIGN_HELP, short_help=DESIGN_SHORT)
 @guarded
 def design(spec: Spec = None, json_out: Json = False,
            output: Annotated[str | None, typer.Option(

@@ -11,7 +11,7 @@ import typer
 
 from ..errors import GovoptError
 from . import common
-from .common import FORCE_HELP, Command, echo, guarded
+from .common import FORCE_HELP, echo, guarded
 
 EXAMPLES_SHORT = "List the bundled example specs."
 EXAMPLES_HELP = "List the bundled example specs. `govopt init NAME` copies one to start from."
@@ -32,7 +32,7 @@ init_app = typer.Typer(add_completion=False)
 schema_app = typer.Typer(add_completion=False)
 
 
-@examples_app.command("examples", cls=Command, help=EXAMPLES_HELP, short_help=EXAMPLES_SHORT)
+@examples_app.command("examples", help=EXAMPLES_HELP, short_help=EXAMPLES_SHORT)
 @guarded
 def examples_command() -> None:
     """List the bundled example specs.
@@ -46,7 +46,7 @@ def examples_command() -> None:
         echo(f"{name:<{width}}  {description(path)}")
 
 
-@init_app.command("init", cls=Command, help=INIT_HELP, short_help=INIT_SHORT)
+@init_app.command("init", help=INIT_HELP, short_help=INIT_SHORT)
 @guarded
 def init_command(
         name: Annotated[str | None, typer.Argument(
@@ -106,7 +106,7 @@ def init_command(
     echo(f"wrote {target.absolute()} ({what}); edit it, then: govopt {command} {target}")
 
 
-@schema_app.command("schema", cls=Command, help=SCHEMA_HELP, short_help=SCHEMA_SHORT)
+@schema_app.command("schema", help=SCHEMA_HELP, short_help=SCHEMA_SHORT)
 @guarded
 def schema_command(
         output: Annotated[str | None, common.option(

@@ -13,7 +13,7 @@ from ..keys import Key, Table
 from ..spec_docs import option_help
 from ..spring_keys import CHECK, DESIGN, NAME
 from . import common
-from .common import JSON_HELP, ChecksFailed, Command, echo, guarded, rich_text
+from .common import JSON_HELP, ChecksFailed, echo, guarded, rich_text
 
 SPRING_SHORT = ("Least-mass helical spring for a force and stiffness (an exact GP, certified "
                 "global), or check one you have.")
@@ -28,7 +28,7 @@ CHECK_HELP = ("Check a helical spring you have: its wire, coil diameter, coils a
               "spring's (rate, forces and stresses at each length and at solid, EN 13906-1's "
               "checks, buckling, surge, fatigue and life, EN 15800 tolerances), in the units "
               "the input is written in; exit code 1 when a check fails.")
-app = typer.Typer(cls=common.Group, add_completion=False, help=SPRING_HELP,
+app = typer.Typer(name="spring", add_completion=False, help=SPRING_HELP,
                   short_help=SPRING_SHORT, invoke_without_command=True)
 
 
@@ -85,7 +85,7 @@ def _finish(out, json_out: bool) -> None:
         raise ChecksFailed
 
 
-@app.command("design", cls=Command, help=DESIGN_HELP, short_help="Design a spring (default).")
+@app.command("design", help=DESIGN_HELP, short_help="Design a spring (default).")
 @guarded
 def design(
         spec: Annotated[Path | None, typer.Argument(
@@ -148,7 +148,7 @@ def design(
                 replace=replace, **options), json_out)
 
 
-@app.command("check", cls=Command, help=CHECK_HELP, short_help="Check a spring you have.")
+@app.command("check", help=CHECK_HELP, short_help="Check a spring you have.")
 @guarded
 def check(
         spec: Annotated[Path | None, typer.Argument(

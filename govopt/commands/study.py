@@ -8,7 +8,7 @@ from typing import Annotated
 import typer
 
 from . import common
-from .common import FORCE_HELP, ChecksFailed, Command, echo, fail, guarded, rich_text
+from .common import FORCE_HELP, ChecksFailed, echo, fail, guarded, rich_text
 
 STUDY_SHORT = ("Batch trade studies: sweep a spec's inputs, one row per point in an SQLite "
                "database; export, plot and summarise it.")
@@ -18,7 +18,7 @@ EXPORT_HELP = "Export a study's table from its database (CSV, Parquet or xlsx)."
 SHOW_HELP = ("Summarise a study: progress, status counts, the best points in the spec's units, "
              "Pareto front, tolerances.")
 
-app = typer.Typer(cls=common.Group, add_completion=False, help=STUDY_HELP, short_help=STUDY_SHORT,
+app = typer.Typer(name="study", add_completion=False, help=STUDY_HELP, short_help=STUDY_SHORT,
                   invoke_without_command=True)
 
 
@@ -29,7 +29,7 @@ def study(ctx: typer.Context) -> None:
         raise SystemExit(2)
 
 
-@app.command("run", cls=Command, help=RUN_HELP, short_help=RUN_HELP)
+@app.command("run", help=RUN_HELP, short_help=RUN_HELP)
 @guarded
 def study_run(
         spec: Annotated[Path, typer.Argument(
@@ -196,7 +196,7 @@ def progress_bar():
     return Bar()
 
 
-@app.command("export", cls=Command, help=EXPORT_HELP, short_help=EXPORT_HELP)
+@app.command("export", help=EXPORT_HELP, short_help=EXPORT_HELP)
 @guarded
 def study_export(
         db: Annotated[Path, typer.Argument(metavar="db", show_default=False,
@@ -216,7 +216,7 @@ def study_export(
         write_outputs(store, out, plot, force)
 
 
-@app.command("show", cls=Command, help=SHOW_HELP, short_help=SHOW_HELP)
+@app.command("show", help=SHOW_HELP, short_help=SHOW_HELP)
 @guarded
 def study_show(db: Annotated[Path, typer.Argument(metavar="db", show_default=False,
                                                   help="The study's database.")]) -> None:

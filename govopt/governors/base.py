@@ -35,12 +35,13 @@ load-change model and k^2 are invariant under scaling every generalised force an
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from dataclasses import dataclass
-from typing import ClassVar
+from dataclasses import dataclass, field
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ..keys import Key, Table
+from ..references import cite, found_in
 from ..springs.kinds import KINDS, SpringKind
 
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
@@ -97,6 +98,184 @@ class Terms:
         """``I k^2 = kappa (A_x - B_x l0) + cf_x - omega^2 (jpp - ci_x)`` at ``omega^2``
         (Hamabe eqs. 18-20 in general form); divide by :meth:`Governor.inertia` for k^2."""
         return kappa * (self.A_x - self.B_x * l0) + self.cf_x - omega2 * (self.jpp - self.ci_x)
+
+
+# -- what a reader is told: a type's method and its drawing, declared beside its physics ------
+
+#: The topics of a method in the order a reader meets them, and their headings.
+TOPICS = {"statics": "Statics", "speed": "Speed band", "spring": "Spring",
+          "stability": "Stability", "friction": "Friction", "vibration": "Forced vibration",
+          "load change": "Load change", "classic": "Classic measures"}
+
+
+@dataclass(frozen=True)
+class Equation:
+    """One equation a type uses: ``what`` it gives (in words), its ``formula`` (symbols as the
+    source writes them, plain text), the ``source`` (a key of :data:`govopt.references.
+    REFERENCES`) and ``where`` in it (an equation, a section, a clause), and the fidelity
+    settings that choose its form (``settings``: ``"analysis.geometry"``, ``"governor.k"``).
+    ``name``: the handle a writer or a check asks for (``"irregularity"``, ``"hurwitz"``)."""
+
+    topic: str
+    what: str
+    formula: str
+    source: str
+    where: str = ""
+    settings: tuple[str, ...] = ()
+    name: str = ""
+
+    @property
+    def cite(self) -> str:
+        """The citation in running text: ``"Hamabe eq. 12"``."""
+        return cite(self.source, self.where)
+
+    @property
+    def text(self) -> str:
+        """``"<citation>: <formula>"``, as a check's source reads it."""
+        return f"{self.cite}: {self.formula}"
+
+
+@dataclass(frozen=True)
+class Setting:
+    """A fidelity setting that applies to the type: its key as the spec writes it
+    (``"analysis.geometry"``), its value in this spec and what it chooses."""
+
+    key: str
+    value: Any
+    meaning: str
+
+
+@dataclass(frozen=True)
+class Method:
+    """What a governor type computes and from which sources, for one spec: its equations by
+    topic (:data:`TOPICS`), the fidelity settings that apply to it, and what the spring's free
+    length ``l0`` is in this type (``free_length``, words; empty without a spring). Every writer
+    reads it: the workbook's Method sheet, the text report's headings, the plots' titles, the
+    JSON's ``method``; the checks read their sources from it (:meth:`text`)."""
+
+    title: str
+    equations: tuple[Equation, ...]
+    settings: tuple[Setting, ...] = ()
+    free_length: str = ""
+    notes: tuple[str, ...] = field(default=())
+
+    def of(self, topic: str) -> tuple[Equation, ...]:
+        """The equations of ``topic``, in order."""
+        return tuple(e for e in self.equations if e.topic == topic)
+
+    def named(self, name: str) -> Equation | None:
+        """The equation called ``name`` (:attr:`Equation.name`), or None."""
+        return next((e for e in self.equations if e.name == name), None)
+
+    def cite(self, topic: str) -> str:
+        """The citations of a topic's equations, one per source with its places in order,
+        ``"; "``-joined (``""`` for none): what a heading puts in brackets.
+
+        >>> Method("t", (Equation("statics", "", "", "hamabe", "eq. 1"),
+        ...              Equation("statics", "", "", "hamabe", "eq. 12"),
+        ...              Equation("statics", "", "", "rattan"))).cite("statics")
+        'Hamabe eq. 1, eq. 12; Rattan'
+        """
+        places: dict[str, list[str]] = {}
+        for e in self.of(topic):
+            where = places.setdefault(e.source, [])
+            if e.where and e.where not in where:
+                where.append(e.where)
+        return "; ".join(cite(key, ", ".join(where)) for key, where in places.items())
+
+    def heading(self, topic: str, text: str) -> str:
+        """``text`` with the topic's citations in brackets (none: ``text`` alone)."""
+        sources = self.cite(topic)
+        return f"{text} ({sources})" if sources else text
+
+    def text(self, name: str, default: str = "") -> str:
+        """A check's source from the equation ``name`` (:attr:`Equation.text`), else
+        ``default``."""
+        eq = self.named(name)
+        return default if eq is None else eq.text
+
+    def sources(self, also: tuple[str, ...] = ()) -> list[str]:
+        """The bibliography keys the method cites, in order of first use, then those the texts
+        ``also`` (the checks' own sources) name (:func:`govopt.references.found_in`)."""
+        keys = [e.source for e in self.equations]
+        keys += [k for text in also for k in found_in(text)]
+        return list(dict.fromkeys(keys))
+
+    def to_dict(self) -> dict:
+        """The method as JSON: equations (topic, what, formula, source key, citation,
+        settings), the fidelity settings with values and the free length's meaning."""
+        return {"title": self.title,
+                "equations": [{"topic": e.topic, "what": e.what, "formula": e.formula,
+                               "source": e.source, "cite": e.cite,
+                               **({"settings": list(e.settings)} if e.settings else {})}
+                              for e in self.equations],
+                "settings": {s.key: s.value for s in self.settings},
+                **({"free_length": self.free_length} if self.free_length else {}),
+                **({"notes": list(self.notes)} if self.notes else {})}
+
+
+@dataclass(frozen=True)
+class Part:
+    """One part of a governor's drawing in its own plane (SI, m): ``kind`` is ``"link"``
+    (a polyline of bars or arms), ``"mass"`` (a ball or pendulum: a circle of ``size`` radius
+    at the one point), ``"pivot"`` (a fulcrum or hinge: a point), ``"sleeve"`` (a closed
+    polyline), ``"spring"`` (a coil's zigzag polyline) or ``"frame"`` (the spindle, the shaft,
+    fixed collars and caps)."""
+
+    kind: str
+    points: tuple[tuple[float, float], ...]
+    size: float = 0.0
+
+
+@dataclass(frozen=True)
+class Drawing:
+    """A governor drawn to scale at one configuration: its parts in the plane the type states
+    (``plane``: the meridian plane of the spindle, ``r`` across and height up, or the shaft
+    governor's plane of rotation), with axis titles ``axes``."""
+
+    parts: tuple[Part, ...]
+    plane: str = "meridian plane: radius from the spindle's axis, height"
+    axes: tuple[str, str] = ("radius (mm)", "height (mm)")
+
+
+def zigzag(start, end, width: float, coils: float = 6.0) -> tuple[tuple[float, float], ...]:
+    """A spring drawn from ``start`` to ``end`` (m): a zigzag of ``coils`` turns, ``width``
+    across (its coil diameter), straight ends of a tenth of its length.
+
+    >>> len(zigzag((0.0, 0.0), (0.0, 1.0), 0.1, coils=3))
+    10
+    """
+    p, q = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    axis = q - p
+    length = float(np.hypot(*axis))
+    if length == 0.0:
+        return (tuple(p), tuple(q))
+    across = np.array([-axis[1], axis[0]]) / length * 0.5 * width
+    n = max(1, int(round(2 * coils)))
+    points = [p, p + 0.1 * axis]
+    for k in range(n):
+        points.append(p + (0.1 + 0.8 * (k + 0.5) / n) * axis + (1 if k % 2 == 0 else -1) * across)
+    points += [p + 0.9 * axis, q]
+    return tuple((float(x), float(y)) for x, y in points)
+
+
+def ball_radius(mass: float, density: float = 7850.0) -> float:
+    """The radius (m) of a steel ball of ``mass`` (kg): how the drawings show a flying mass.
+
+    >>> round(ball_radius(4.0) * 1e3, 1)
+    49.5
+    """
+    return float((3.0 * max(mass, 0.0) / (4.0 * np.pi * density)) ** (1.0 / 3.0))
+
+
+def mirrored(parts) -> tuple[Part, ...]:
+    """``parts`` and their mirror images across the spindle's axis (``r -> -r``): the other
+    half of a governor drawn in its meridian plane."""
+    out = list(parts)
+    for p in parts:
+        if p.kind != "frame":
+            out.append(Part(p.kind, tuple((-x, y) for x, y in p.points), p.size))
+    return tuple(out)
 
 
 class Governor(ABC):
@@ -306,3 +485,162 @@ class Governor(ABC):
         stresses; types without a spring return zeros."""
         z = np.zeros_like(np.asarray(x, dtype=float))
         return z, z
+
+    # -- the type's method: what a reader is told (each type states its own) ------------------
+
+    def method(self, spec) -> Method:
+        """What this type computes for ``spec`` and from which sources (:class:`Method`): its
+        statics (:meth:`statics_method`, each type's own), the speed band, its spring, the
+        stability, friction, forced vibration and load change where they apply, and the
+        classic measures; the fidelity settings that apply (:meth:`settings`)."""
+        parts = (self.statics_method(spec), self.speed_method(spec),
+                 self.spring_method(spec) if self.spring is not None else (),
+                 self.stability_method(spec), self.friction_method(spec),
+                 self.vibration_method(spec),
+                 self.load_change_method(spec) if spec.engine is not None else (),
+                 self.classic_method(spec))
+        return Method(self.title, tuple(e for p in parts for e in p), tuple(self.settings(spec)),
+                      self.free_length_words() if self.spring is not None else "")
+
+    def statics_method(self, spec) -> tuple[Equation, ...]:
+        """The type's statics (each type states its own): here the seam's equilibrium by
+        virtual work, the form every type's equations take."""
+        return (Equation("statics", "equilibrium speed over the range (the characteristic), "
+                                    "by virtual work on the one coordinate x",
+                         "omega^2 (J'(x)/2 - C_i(x)) = kappa (A(x) - B(x) l0) + C_f(x)",
+                         "lagrange", name="characteristic"),)
+
+    def speed_method(self, spec) -> tuple[Equation, ...]:
+        """The spec's speed band: the irregularity against the spec's mean speed (the
+        textbook's ratio of the range of speed to the mean speed)."""
+        if spec.speed is None:
+            return ()
+        return (Equation("speed", "irregularity: the range of speed over the mean speed",
+                         "delta = (omega_a - omega_i) / omega0, omega0 the spec's mean speed",
+                         "textbook-ch3", "Problems, 2", name="irregularity"),)
+
+    def spring_method(self, spec) -> tuple[Equation, ...]:
+        """A helical spring's rate, stress (with the material's correction), mass, surge
+        frequency, and the standards its checks and the maker's sheet follow (a type with
+        another spring overrides this)."""
+        mat = spec.material
+        correction = getattr(mat, "stress_correction", "none")
+        stress = {"wahl": ("x K, K = (4C - 1)/(4C - 4) + 0.615/C", "wahl", "eq. 2-12"),
+                  "bergstrasser": ("x k, k = (C + 0.5)/(C - 0.75)", "en13906-1", "")}.get(
+            correction, ("(uncorrected)", "wahl", "ch. 2"))
+        standard = "en13906-2" if self.spring == "tension" else "en13906-1"
+        return (
+            Equation("spring", "rate of the helical spring", "kappa = G d^4 / (64 r^3 n)",
+                     "wahl", "ch. 2", name="rate"),
+            Equation("spring", "index", "C = 2 r / d", "wahl", "ch. 2"),
+            Equation("spring", "shear stress at the force F", f"tau = 16 F r / (pi d^3) "
+                     f"{stress[0]}", stress[1], stress[2], ("material.stress_correction",),
+                     name="stress"),
+            Equation("spring", "mass of the active coils and surge frequency (both ends fixed)",
+                     "m_s = rho_w (pi d^2/4)(2 pi r n), f_s = d/(8 pi r^2 n) sqrt(G/(2 rho_w))",
+                     "wahl", "ch. 25"),
+            Equation("spring", f"the maker's sheet: {self.spring} spring's lengths and "
+                     "stresses", "EN 13906 (solid and least working length; extension: "
+                     "initial tension, loops)", standard),
+            Equation("spring", "manufacturing tolerances and the speeds they spread",
+                     "A_d, A_D, A_L0, A_F (grade 1-3) at the four corners of (kappa, l0)",
+                     "en15800", "", ("material.tolerance_grade",)),
+        )
+
+    def stability_method(self, spec) -> tuple[Equation, ...]:
+        """The restoring stiffness about an equilibrium on the seam, stability by its sign and,
+        where the type keeps it (:attr:`resonance_ceiling`), the ceiling ``omega0^2``."""
+        out = (Equation("stability", "restoring stiffness: the equation of motion linearised "
+                                     "about an equilibrium",
+                        "I k^2 = kappa (A' - B' l0) + C_f' - omega^2 (J''/2 - C_i')",
+                        "lagrange", name="k2"),
+               Equation("stability", "stable where k^2 > 0, i.e. where the characteristic "
+                                     "rises (d omega/dx > 0)",
+                        "I k^2 = 2 omega (J'/2 - C_i) d omega/dx", "rattan",
+                        name="stable"))
+        if self.resonance_ceiling:
+            out += (Equation("stability", "the flying masses' natural frequency kept below the "
+                                          "running speed (clear of resonance)",
+                             "k^2 < omega0^2", "hamabe", "Part II, case 2", name="resonance"),)
+        return out
+
+    def friction_method(self, spec) -> tuple[Equation, ...]:
+        """The type's friction band (default none) and, with an engine, the load change
+        against it."""
+        return ()
+
+    def friction_strokes(self, spec) -> tuple[Equation, ...]:
+        """With an engine and friction: the load change moves in strokes against the friction
+        band (Hamabe's stick-slip solution, which govopt applies to every type on the seam)."""
+        if spec.engine is None:
+            return ()
+        return (Equation("friction", "load change against the friction band: strokes and "
+                                     "rests (stick-slip), each stroke solved exactly",
+                         "I xi'' + f xi' + I k^2 xi + F_r sign(xi') = C eta, "
+                         "eta' = -R xi", "hamabe", "eqs. 42-46", name="strokes"),)
+
+    def vibration_method(self, spec) -> tuple[Equation, ...]:
+        """The forced vibration under a periodic forcing (default: none modelled)."""
+        return ()
+
+    def load_change_method(self, spec) -> tuple[Equation, ...]:
+        """A load change of the governed engine: the third-order model on the seam, its
+        stability (Hurwitz), its response (with the spec's engine data)."""
+        return (Equation("load change", "governor and engine after a load change: the "
+                                        "third-order equation of the governed engine",
+                         "a0 xi''' + 3 a1 xi'' + 3 a2 xi' + a3 xi = 0, a0 = I, a1 = f/3, "
+                         "a2 = I k^2/3, a3 = C R", "vyshnegradsky", name="cubic"),
+                Equation("load change", "stable where the cubic's roots have negative real "
+                                        "parts", "9 a1 a2 > a0 a3, margin 9 a1 a2 / (a0 a3) - 1",
+                         "hurwitz", name="hurwitz"),
+                Equation("load change", "Vyshnegradsky's diagram: the normal form and its "
+                                        "regions", "lambda^3 + A lambda^2 + B lambda + 1 = 0, "
+                                                   "stable for A B > 1", "vyshnegradsky"))
+
+    def classic_method(self, spec) -> tuple[Equation, ...]:
+        """The classic measures every type reports from its characteristic (and, for a flying
+        mass on a radius, the controlling-force diagram)."""
+        diagram = (Equation("classic", "controlling-force diagram: the controlling force per "
+                            "flying mass against its radius, lines of constant speed through "
+                            "the origin", "F_c(r) = m omega^2 r at equilibrium", "textbook-ch3",
+                            "3.3"),) if self.coordinate == "length" else ()
+        return diagram + (Equation("classic", "sensitiveness, stability, effort and power of the "
+                                    "governor", "sensitiveness = 2 (omega_a - omega_i) / "
+                                                "(omega_a + omega_i); effort P = n ((1 + c)^2 "
+                                                "- 1) omega^2 (J'/2 - C_i) / (2 s')", "rattan",
+                         settings=("analysis.speed_change",)),)
+
+    def settings(self, spec) -> list[Setting]:
+        """The fidelity settings that apply to this type (the seam's; a type adds its own)."""
+        an = spec.analysis
+        out = [Setting("analysis.points", an.points,
+                       "configurations over the range: the characteristic's resolution"),
+               Setting("analysis.speed_change", an.speed_change,
+                       "the speed change of the classic effort and power")]
+        if spec.engine is not None and spec.load_changes:
+            out.append(Setting("analysis.settling_band", an.settling_band,
+                               "the band a load change's response settles in"))
+        if an.use_case is not None:
+            out += [Setting("analysis.use_case", an.use_case, "the analyses run"),
+                    Setting("analysis.tolerance", an.tolerance,
+                            "the error each analysis stays within")]
+        if self.spring_kind is not None and self.spring_kind.helical and spec.material is not None:
+            out.append(Setting("material.stress_correction", spec.material.stress_correction,
+                               "the factor on the spring's shear stress"))
+        return out
+
+    def free_length_words(self) -> str:
+        """What the spring's free length ``l0`` is in this type, in words (the design's
+        ``free_length_key``; a type whose ``l0`` is not the spring's own length says so)."""
+        return (f"{self.free_length_key.replace('_', ' ')} l0: the spring's own free length, "
+                "unloaded")
+
+    # -- the type's drawing (each type draws its own linkage) ---------------------------------
+
+    def drawing(self, x, sd) -> Drawing | None:
+        """The governor drawn to scale at configuration ``x`` (SI) for the design ``sd`` (a
+        :class:`govopt.analysis.statics.SpringDesign`: the flying masses drawn as steel balls
+        of their mass, :func:`ball_radius`; the coil spring at its mean diameter ``2 r``):
+        a :class:`Drawing` from the same geometry the type's statics use. Default: None (the
+        type draws nothing)."""
+        return None

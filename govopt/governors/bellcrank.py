@@ -60,7 +60,7 @@ import numpy as np
 
 from ..keys import Key
 from ..units import G_STANDARD
-from .base import Governor, Terms
+from .base import Drawing, Equation, Governor, Part, Setting, Terms, ball_radius, mirrored, zigzag
 from .porter import RANGE
 
 OBLIQUITIES = ("exact", "small_angle")
@@ -398,3 +398,80 @@ class BellCrankGovernor(Governor):
         L = self.spring_length_at(self.geometry(x))[0]
         sign = 1.0 if self.spring == "tension" else -1.0
         return sign * L, sign + 0.0 * L
+
+    # -- the type's method and drawing: what a reader is told (textbook 3.5) ------------------
+
+    def friction_method(self, spec) -> tuple[Equation, ...]:
+        """Friction at the sleeve (sections 3.4(b), 3.5(a)), where the governor has it."""
+        if not self.sleeve_friction:
+            return ()
+        return (Equation("friction", "friction at the sleeve: a force R opposing its motion, "
+                         "added to the spring force rising and taken off it falling",
+                         "omega_rise,fall^2 m r = F(r) +- (R/2) ds/dr", "textbook-ch3",
+                         "3.4(b), 3.5(a)", name="band"),) + self.friction_strokes(spec)
+
+    def settings(self, spec) -> list[Setting]:
+        """The seam's settings and the book's small-angle simplification."""
+        return [Setting("governor.obliquity", self.crank.obliquity, "the levers' obliquity: "
+                        "exact, or the book's small-angle simplification (arms at right "
+                        "angles to the forces, 90 deg crank)")] + super().settings(spec)
+
+    def lift_equation(self) -> Equation:
+        """The sleeve's lift and the balls' radius (section 3.5(a) eq. vi)."""
+        return Equation("statics", "the sleeve's lift over the ball's travel",
+                        "s = b cos(gamma - theta) - (the same at r_inner); ds/dr = b sin(gamma "
+                        "- theta) / (a cos(theta)), b/a for a 90 deg crank", "textbook-ch3",
+                        "3.5(a) eq. (vi)", ("governor.obliquity",))
+
+    def drawing(self, x, sd) -> Drawing:
+        """Both halves in the meridian plane, from the lever the statics use: the fulcrum at
+        ``fulcrum_radius``, the ball arm ``a`` at ``theta`` to the vertical (up from a fixed
+        fulcrum; down from one riding on the sleeve, Fig. 3.12), the sleeve (roller) arm ``b``
+        at the crank angle to it, the collar or sleeve at the roller's height, and the design
+        spring at its length ``L(x)``: on the spindle over the sleeve (Hartnell, spring and
+        gravity) or between the balls (balls connected by springs)."""
+        cr, x = self.crank, float(x)
+        a, b, gamma, rf = cr.ball_arm, cr.sleeve_arm, cr.crank_angle, cr.fulcrum_radius
+        st = cr.state(x)
+        th = float(st["theta"])
+        lift = float(self.sleeve_lift(x))
+        if self.fulcrum_on_sleeve:  # O rides on the sleeve, the roller held by the cap
+            F = (rf, b * np.cos(gamma - th))
+            ball = (rf + a * np.sin(th), F[1] - a * np.cos(th))
+            roller = (rf - b * np.sin(gamma - th), 0.0)
+            collar = F[1]
+        else:
+            F = (rf, 0.0)
+            ball = (rf + a * np.sin(th), a * np.cos(th))
+            roller = (rf - b * np.sin(gamma - th), b * np.cos(gamma - th))
+            collar = roller[1]
+        half, tall = max(abs(roller[0]), 0.1 * a) if not self.fulcrum_on_sleeve else rf, 0.08 * a
+        parts = [Part("link", (ball, F, roller)), Part("pivot", (F,)),
+                 Part("mass", (ball,), ball_radius(sd.m))]
+        parts = list(mirrored(parts))
+        parts.append(Part("sleeve", ((-half, collar - tall), (half, collar - tall),
+                                     (half, collar), (-half, collar), (-half, collar - tall))))
+        L, _, _, count = self.spring_length_at(self.geometry(x))
+        L = float(L)
+        width = 2.0 * sd.r if np.isfinite(sd.r) else 0.5 * half
+        top = collar + L  # on the spindle over the collar (Hartnell, spring and gravity)
+        if self.spring_between_balls():
+            parts.append(Part("spring", zigzag((-ball[0], ball[1]), (ball[0], ball[1]),
+                                               width)))
+            top = collar
+        else:
+            parts.append(Part("spring", zigzag((0.0, collar), (0.0, top), width)))
+        if self.fulcrum_on_sleeve:  # the cap: its rim over the rollers, its top on the spring
+            cap = collar - lift + float(self.spring_length)
+            parts.append(Part("frame", ((-abs(roller[0]), 0.0), (-abs(roller[0]), cap),
+                                        (abs(roller[0]), cap), (abs(roller[0]), 0.0))))
+        elif not self.spring_between_balls():  # the stop the spring bears on
+            stop = collar - lift + float(self.spring_length)
+            parts.append(Part("frame", ((-width, stop), (width, stop))))
+        low = min(collar - tall, ball[1]) - 0.2 * a
+        parts.append(Part("frame", ((0.0, max(top, ball[1]) + 0.15 * a), (0.0, low))))
+        return Drawing(tuple(parts))
+
+    def spring_between_balls(self) -> bool:
+        """Whether the design spring joins the balls (drawn between them); default not."""
+        return False

@@ -27,6 +27,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from ..keys import Key
+from .base import Equation
 from .bellcrank import BellCrankGovernor, common_keys, spring_length_key
 
 SLEEVE_ARM = Key("sleeve_arm", "length", "the bell crank's sleeve arm b, from the fulcrum to the "
@@ -70,3 +71,18 @@ class HartnellGovernor(BellCrankGovernor):
         gov.check_spring_length(reader)
         reader.finish()
         return gov
+
+    # -- the type's method: what a reader is told (textbook 3.5(a)) ---------------------------
+
+    def statics_method(self, spec) -> tuple[Equation, ...]:
+        """Section 3.5(a): moments about the fulcrum, the spring's force and the lift."""
+        return (Equation("statics", "equilibrium of a bell crank: moments about the fulcrum "
+                         "(by virtual work on the exact lever, per ball: omega^2 m r = m g dy/dr "
+                         "+ (W + S)/2 ds/dr)", "F a cos(theta) + w a sin(theta) = (S + W)/2 b "
+                         "cos(theta); the book: F a = (S/2) b", "textbook-ch3",
+                         "3.5(a) eq. (i)", ("governor.obliquity",), name="characteristic"),
+                Equation("statics", "the compression spring on the sleeve: its force, length "
+                         "and initial compression", "S = kappa (l0 - L), L = spring_length - s; "
+                         "initial compression l0 - spring_length", "textbook-ch3",
+                         "3.5(a) eqs. (vii)-(viii)", name="spring force"),
+                self.lift_equation())

@@ -47,7 +47,7 @@ import numpy as np
 
 from ..keys import Key
 from ..units import G_STANDARD
-from .base import Governor, Terms
+from .base import Drawing, Equation, Governor, Part, Setting, Terms, ball_radius, mirrored, zigzag
 
 K_MODES = ("exact", "unity")
 SPRING_KINDS = ("tension", "compression")
@@ -347,6 +347,91 @@ class BallGovernor(Governor):
         sign = 1.0 if self.spring == "tension" else -1.0
         L = self.spring_length + sign * self.lever_ratio * self.sleeve_lift(x)
         return sign * L, sign + 0.0 * L
+
+    # -- the type's method and drawing: what a reader is told (textbook ch. 3) ---------------
+
+    #: the textbook's section of the type, and whether the spec reads ``governor.k``
+    section: ClassVar[str] = "3.4(b)"
+    k_setting: ClassVar[bool] = True
+
+    def controlling_force(self) -> Equation:
+        """The type's controlling force per ball (the Porter's: section 3.4(b) eq. (i))."""
+        return Equation("statics", "controlling force per ball: the ball's weight and half "
+                        "the central load W through the sleeve's rise (by virtual work; the "
+                        "book's instantaneous centre)", "F = m g dy/dr + (W/2) ds/dr = "
+                        "[W/2 (1 + k) + w] tan(alpha), k = tan(beta) / tan(alpha)",
+                        "textbook-ch3", f"{self.section} eq. (i)",
+                        ("governor.k",) if self.k_setting else (), name="controlling force")
+
+    def statics_method(self, spec) -> tuple[Equation, ...]:
+        """The controlling force, the auxiliary spring where fitted (Example 2) and the
+        equilibrium of section 3.3."""
+        out = (self.controlling_force(),)
+        if self.spring is not None:
+            law = "kappa (L - l0)" if self.spring == "tension" else "kappa (l0 - L)"
+            sign = "+" if self.spring == "tension" else "-"
+            out += (Equation("statics", f"auxiliary {self.spring} spring on the sleeve "
+                             "through a lever: its force P and its share per ball",
+                             f"P = {law}, L = spring_length {sign} (spring_arm / sleeve_arm) s; "
+                             "per ball (spring_arm / sleeve_arm) (P/2) ds/dr", "textbook-ch3",
+                             "3.4(b) Example 2, Fig. 3.7", name="spring force"),)
+        return out + (Equation("statics", "equilibrium: the controlling force balances the "
+                               "centrifugal force (the characteristic)", "m omega^2 r = F(r)",
+                               "textbook-ch3", "3.3", name="characteristic"),)
+
+    def friction_method(self, spec) -> tuple[Equation, ...]:
+        """Friction at the sleeve (section 3.4(b)), where the governor has it."""
+        if not self.sleeve_friction:
+            return ()
+        return (Equation("friction", "friction at the sleeve: a force R opposing its motion, "
+                         "the central load W + R rising and W - R falling",
+                         "omega_rise,fall^2 m r = F(r) +- (R/2) ds/dr", "textbook-ch3",
+                         "3.4(b), friction at the sleeve", name="band"),) + \
+            self.friction_strokes(spec)
+
+    def settings(self, spec) -> list[Setting]:
+        """The seam's settings and the book's ``k = 1`` shortcut."""
+        own = [Setting("governor.k", self.linkage.k, "the sleeve's rise: the exact linkage, or "
+                       "the book's k = 1 (the sleeve rising twice as fast as the ball)")]
+        return (own if self.k_setting else []) + super().settings(spec)
+
+    def drawing(self, x, sd) -> Drawing:
+        """Both halves in the meridian plane, from the linkage the statics use: the upper arm
+        from its pivot (at ``pivot_offset`` from the axis) to the joint B, the link from B to
+        the sleeve's pin C (at ``sleeve_offset``), the ball at B (a Proell's at G, on the link
+        produced), the sleeve at C's height on the spindle; the auxiliary spring, where
+        fitted, hangs on the spindle under the sleeve at its own length (its lever is given
+        as a ratio only, so it is not drawn)."""
+        lk = self.linkage
+        p = float(lk.joint_radius(x))
+        g = lk._at_joint(p)
+        ca = np.sqrt(1.0 - ((p - lk.pivot_offset) / lk.arm) ** 2)
+        cb = np.sqrt(1.0 - ((p - lk.sleeve_offset) / lk.link) ** 2)
+        B = (p, -lk.arm * ca)
+        C = (lk.sleeve_offset, B[1] - lk.link * cb)
+        G = (float(g["r"]), float(g["y"]))
+        half = max(lk.sleeve_offset, 0.06 * lk.arm)
+        tall = 0.12 * lk.arm + (0.1 * lk.arm if sd.central else 0.0)
+        sleeve = ((-half, C[1] - 0.5 * tall), (half, C[1] - 0.5 * tall),
+                  (half, C[1] + 0.5 * tall), (-half, C[1] + 0.5 * tall),
+                  (-half, C[1] - 0.5 * tall))
+        parts = [Part("link", ((lk.pivot_offset, 0.0), B, C)),
+                 Part("pivot", ((lk.pivot_offset, 0.0),)), Part("pivot", (C,)),
+                 Part("mass", (G,), ball_radius(sd.m))]
+        if G != B:
+            parts.append(Part("link", (B, G)))
+        parts = list(mirrored(parts)) + [Part("sleeve", sleeve)]
+        low = float(self.linkage.state(self.x_inner)["z"])  # the sleeve's lowest pin height
+        bottom = min(C[1], low) - 0.5 * tall
+        if self.spring is not None:
+            L = float(self.spring_force_coefficients(x)[0]) * (1 if self.spring == "tension"
+                                                              else -1)
+            top = C[1] - 0.5 * tall
+            width = 2.0 * sd.r if np.isfinite(sd.r) else half
+            parts.append(Part("spring", zigzag((0.0, top), (0.0, top - L), width)))
+            bottom = min(bottom, top - L)
+        parts.append(Part("frame", ((0.0, 0.15 * lk.arm), (0.0, bottom - 0.1 * lk.arm))))
+        return Drawing(tuple(parts))
 
 
 class PorterGovernor(BallGovernor):

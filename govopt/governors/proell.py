@@ -32,6 +32,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..keys import Key
+from .base import Equation
 from .porter import (
     ARM,
     LINK,
@@ -95,3 +96,16 @@ class ProellGovernor(BallGovernor):
         theta = np.arcsin((st["p"] - lk.sleeve_offset) / lk.link)
         bd = lk.link * np.cos(theta)
         return bd / (bd + lk.extension * np.cos(theta - lk.crank))
+
+    # -- the type's method: what a reader is told (textbook 3.4(c)) ---------------------------
+
+    section: ClassVar[str] = "3.4(c)"
+
+    def controlling_force(self) -> Equation:
+        """The Proell's controlling force per ball (section 3.4(c) eqs. i-v)."""
+        return Equation("statics", "controlling force per ball at G on the link produced: "
+                        "moments about the link's instantaneous centre I (by virtual work on "
+                        "the exact linkage)", "F = m g dy_G/dr + (W/2) ds/dr; with BG vertical "
+                        "F = (BD/DG) [W/2 (1 + k) + w] tan(alpha)", "textbook-ch3",
+                        f"{self.section} eqs. (i)-(v)", ("governor.k",),
+                        name="controlling force")

@@ -27,6 +27,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from ..keys import Key
+from .base import Equation
 from .bellcrank import BellCrankGovernor, common_keys, spring_length_key
 
 ROLLER_ARM = Key("roller_arm", "length", "the bell crank's roller arm b, from the fulcrum O on "
@@ -66,3 +67,18 @@ class SpringGravityGovernor(BellCrankGovernor):
         gov.check_spring_length(reader)
         reader.finish()
         return gov
+
+    # -- the type's method: what a reader is told (textbook 3.5(c)) ---------------------------
+
+    def statics_method(self, spec) -> tuple[Equation, ...]:
+        """Section 3.5(c): moments about the lever's instantaneous centre."""
+        return (Equation("statics", "equilibrium of a lever pivoted on the sleeve: moments "
+                         "about its instantaneous centre I (by virtual work, per ball: omega^2 m "
+                         "r = m g dy/dr + (W + S)/2 ds/dr)", "F CK = w KI + (W + S)/2 OI, CK = "
+                         "a cos(theta), OI = b cos(theta), KI = OI + a sin(theta)",
+                         "textbook-ch3", "3.5(c) eq. (i)", ("governor.obliquity",),
+                         name="characteristic"),
+                Equation("statics", "the compression spring between the sleeve and the cap",
+                         "S = kappa (l0 - L), L = spring_length - s", "textbook-ch3",
+                         "3.5(c), Example 8", name="spring force"),
+                self.lift_equation())

@@ -35,6 +35,7 @@ from __future__ import annotations
 from typing import ClassVar
 
 from ..keys import Key
+from .base import Equation
 from .bellcrank import BellCrankGovernor, common_keys, spring_length_key
 
 VARIANTS = ("direct", "lever")
@@ -129,3 +130,33 @@ class SpringLoadedGovernor(BellCrankGovernor):
         n, k = self.ball_springs, self.ball_spring_stiffness
         tension = self.ball_spring_tension + 2.0 * k * (x - self.x_inner)
         return n * tension, 2.0 * n * k + 0.0 * x
+
+    # -- the type's method: what a reader is told (textbook 3.5(b)) ---------------------------
+
+    def statics_method(self, spec) -> tuple[Equation, ...]:
+        """Section 3.5(b): the ball springs (and the lever's spring B, Example 7)."""
+        n = self.ball_springs
+        if self.variant == "direct":
+            out = (Equation("statics", f"equilibrium of a ball pulled in by the {n} springs "
+                            "joining the balls (by virtual work; per ball)", "omega^2 m r = m g "
+                            f"dy/dr + {n} kappa (L - l0) + (W/2) ds/dr", "textbook-ch3",
+                            "3.5(b) eq. (i)", ("governor.obliquity",), name="characteristic"),
+                   Equation("statics", "the ball springs' tension and length",
+                            "T = kappa (L - l0), L = spring_length + 2 (r - r_inner)",
+                            "textbook-ch3", "3.5(b), Fig. 3.11(a)", name="spring force"))
+        else:
+            out = (Equation("statics", "equilibrium with the ball springs A and the "
+                            "supplementary spring B on a lever (by virtual work; per ball)",
+                            f"omega^2 m r = m g dy/dr + {n} T_A(r) + (W + rho P)/2 ds/dr, "
+                            "T_A = T_A,inner + 2 k_A (r - r_inner)", "textbook-ch3",
+                            "3.5(b) Example 7, Fig. 3.11(b)", ("governor.obliquity",),
+                            name="characteristic"),
+                   Equation("statics", "the supplementary spring B through its lever",
+                            "P = kappa (L - l0), L = spring_length + rho s, rho = "
+                            "lever_spring_arm / lever_sleeve_arm", "textbook-ch3",
+                            "3.5(b) Example 7", name="spring force"))
+        return out + (self.lift_equation(),)
+
+    def spring_between_balls(self) -> bool:
+        """The direct variant's springs join the balls (Fig. 3.11(a))."""
+        return self.variant == "direct"

@@ -36,7 +36,7 @@ from typing import ClassVar
 import numpy as np
 
 from ..keys import Key
-from .base import Governor, Terms
+from .base import Drawing, Equation, Governor, Part, Terms, ball_radius, mirrored, zigzag
 
 #: what both traction governors read (:class:`FlyWeights`)
 N_WEIGHTS = Key("n_weights", "count", "the number of fly weights", source="article 003",
@@ -150,6 +150,26 @@ class FlyWeights(Governor):
         """The rod's friction ``R`` (valve and gland) as a band per weight, ``R/n ds/dr``."""
         return self.rod_friction / self.n_weights * self.travel_slope(x)
 
+    # -- the method's parts the two governors share (what a reader is told) ------------------
+
+    def friction_method(self, spec) -> tuple[Equation, ...]:
+        """The rod's friction, where given (the article neglects it; govopt takes it as the
+        textbook's friction at the sleeve, on the rod)."""
+        if not self.rod_friction:
+            return ()
+        return (Equation("friction", "the throttle rod's friction R (valve and gland) opposing "
+                         "its motion, as the textbook's friction at the sleeve (the article "
+                         "neglects friction)", "omega_rise,fall^2 m r = F(r) +- (R/n) ds/dr",
+                         "textbook-ch3", "3.4(b), friction at the sleeve", name="band"),) + \
+            self.friction_strokes(spec)
+
+    def centrifugal(self) -> Equation:
+        """The article's eq. 6 with the constant corrected (:func:`centrifugal_force`)."""
+        return Equation("statics", "centrifugal force on a fly weight (the article's constant "
+                        "2933 is in feet, not inches: F = m r omega^2 in any consistent units)",
+                        "F = m r omega^2 (the article: W r N^2 / 2933)", "traction-article",
+                        "eq. 6")
+
 
 @dataclass(frozen=True)
 class TractionCoilGovernor(FlyWeights):
@@ -248,6 +268,45 @@ class TractionCoilGovernor(FlyWeights):
         """``P = kappa (l0 - d)``: ``(A_F, B_F) = (-d, -1)``."""
         d = self.geometry(x)["d"]
         return -d, -1.0 + 0.0 * d
+
+    # -- the type's method and drawing: what a reader is told (the article, Fig. 1) -----------
+
+    def statics_method(self, spec) -> tuple[Equation, ...]:
+        """The article's eqs. 1-4 and 6 on the toggle of Fig. 1."""
+        return (self.centrifugal(),
+                Equation("statics", "the toggle: the weight's offset y from the hinge axis, the "
+                         "hinge spacing l and the rod's travel s", "y = r - r_h, l = 2 sqrt(a^2 "
+                         "- y^2), s = l_1 - l, ds/dr = 4 y / l", "traction-article", "Fig. 1"),
+                Equation("statics", "the spring's force balancing n fly weights (by virtual "
+                         "work, exact at every rod position): the characteristic",
+                         "P = n F l / (4 y), i.e. omega^2 m r = (P/n) ds/dr", "traction-article",
+                         "eq. 1", name="characteristic"),
+                Equation("statics", "the spring's force and length; the spring through two "
+                         "operating points", "P = kappa (l0 - d), d = spring_length - s; K = "
+                         "P / (L - d)", "traction-article", "eqs. 2-4", name="spring force"))
+
+    def drawing(self, x, sd) -> Drawing:
+        """One toggle each side in the meridian plane (Fig. 1): the fixed collar's hinge at
+        height 0 and the moving collar's ``l`` above it, both at ``hinge_radius``, the arms to
+        the fly weight at the knee, and the spring round the rod at its length ``d`` under the
+        moving collar (its foot fixed: ``l - d`` is the same at every position)."""
+        g = self.geometry(float(x))
+        r, l, d = float(x), float(g["l"]), float(g["d"])
+        rh = self.hinge_radius
+        parts = [Part("link", ((rh, 0.0), (r, 0.5 * l), (rh, l))),
+                 Part("pivot", ((rh, 0.0),)), Part("pivot", ((rh, l),)),
+                 Part("mass", ((r, 0.5 * l),), ball_radius(sd.m))]
+        parts = list(mirrored(parts))
+        tall = 0.1 * self.arm_length
+        for y, kind in ((0.0, "frame"), (l, "sleeve")):  # the fixed and the moving collar
+            parts.append(Part(kind, ((-rh, y - tall / 2), (rh, y - tall / 2), (rh, y + tall / 2),
+                                     (-rh, y + tall / 2), (-rh, y - tall / 2))))
+        width = 2.0 * sd.r if np.isfinite(sd.r) else rh
+        parts.append(Part("spring", zigzag((0.0, l - d), (0.0, l), width)))
+        low = min(0.0, l - d) - tall
+        parts.append(Part("frame", ((0.0, low - 0.2 * self.arm_length),
+                                    (0.0, self.spacing_open + 0.3 * self.arm_length))))
+        return Drawing(tuple(parts))
 
     # -- the article's shop methods -------------------------------------------------------------
 

@@ -56,7 +56,7 @@ import numpy as np
 from ..keys import Key
 from ..springs import leaf
 from ..verdict import Check
-from .base import Terms
+from .base import Drawing, Equation, Part, Setting, Terms, ball_radius, mirrored
 from .traction_coil import HINGE_RADIUS, N_WEIGHTS, ROD_FRICTION, FlyWeights, centrifugal_force
 
 #: the ways a spec gives the range: chords ``l`` (the valve's positions), bows ``x`` (measured
@@ -326,3 +326,80 @@ class TractionLeafGovernor(FlyWeights):
         f = leaf.force_per_stiffness(np.asarray(x, dtype=float) - self.hinge_radius,
                                      self.leaf_length, self.leaf_model)[0]
         return f, 1.0 + 0.0 * f
+
+    # -- the type's method and drawing: what a reader is told (the article, Fig. 2) -----------
+
+    def statics_method(self, spec) -> tuple[Equation, ...]:
+        """The article's eqs. 5, 6 and 8 on the leaf of Fig. 2."""
+        chord = {"straight": ("x = sqrt(L^2 - l^2) / 2 (two straight halves)",
+                              "traction-article", "eq. 8"),
+                 "arc": ("a circular arc of length L: L = 2 R arcsin(l / 2R), R = (l^2 + 4 x^2) "
+                         "/ (8 x)", "traction-article", "eq. 8, note (corrected)"),
+                 "elastica": ("the exact large-deflection shape (each half a cantilever with "
+                              "its tip load)", "bisshopp-drucker", "")}[self.leaf_model]
+        return (self.centrifugal(),
+                Equation("statics", "the leaf's force at its middle balances the centrifugal "
+                         "force (the collars slide freely): the characteristic",
+                         "omega^2 m r = F(x), F = kappa (f(x) - l0), r = r_h + x",
+                         "traction-article", "eqs. 5-6", ("governor.leaf_model",),
+                         name="characteristic"),
+                Equation("statics", "the leaf's bow x and chord l (the rod's travel s = l_1 - "
+                         "l)", chord[0], chord[1], chord[2], ("governor.leaf_model",)),
+                Equation("statics", "the leaf's force at its middle and its set l0",
+                         "F = kappa (f(x) - l0): f = x in the linear theory, the elastica's "
+                         "force otherwise", "traction-article", "eq. 5, note to eq. 8",
+                         name="spring force"))
+
+    def spring_method(self, spec) -> tuple[Equation, ...]:
+        """The leaf: its stiffness, section and bending stress."""
+        c = 48 if self.leaf_ends == "hinged" else 192
+        return (Equation("spring", f"the leaf's stiffness ({self.leaf_ends} ends)",
+                         f"kappa = {c} E I / L^3", "roark", "Table 8.1",
+                         ("governor.leaf_ends",), name="rate"),
+                Equation("spring", "the leaf's section", "I = w t^3 / 12", "traction-article",
+                         "eq. 7"),
+                Equation("spring", "bending stress at the leaf's largest moment",
+                         "sigma = 6 M / (w t^2)", "roark", "Table 8.1", name="stress"),
+                Equation("spring", "the chord models' stated range", "x / L <= 0.2",
+                         "traction-article", "eq. 8"))
+
+    def settings(self, spec) -> list[Setting]:
+        """The seam's settings and the leaf's: its chord model and ends."""
+        return [Setting("governor.leaf_model", self.leaf_model, "the leaf's chord and force: "
+                        "straight (the article's eq. 8), arc, or elastica (exact)"),
+                Setting("governor.leaf_ends", self.leaf_ends, "the leaf's ends: hinged (48) or "
+                        "clamped (192)")] + super().settings(spec)
+
+    def free_length_words(self) -> str:
+        """The leaf's set: its unloaded bow (its length is the governor's ``leaf_length``)."""
+        return ("leaf set l0: the unloaded leaf's bow at its middle from the line of its end "
+                "attachments, outward positive (its length is governor.leaf_length)")
+
+    def drawing(self, x, sd) -> Drawing:
+        """One leaf each side in the meridian plane (Fig. 2): its ends on the collars at
+        ``hinge_radius``, the fixed one at height 0 and the moving one the chord ``l`` above
+        it, the fly weight at its middle ``x`` out; the leaf drawn through its ends and middle
+        (two straight halves for the article's straight model, else the circular arc through
+        them: the chord and bow are the model's own)."""
+        g = self.geometry(float(x))
+        bow, l = float(g["bow"]), float(g["l"])
+        rh = self.hinge_radius
+        if self.leaf_model == "straight" or bow <= 0.0:
+            leaf_line = ((rh, 0.0), (rh + bow, 0.5 * l), (rh, l))
+        else:
+            R = (0.25 * l * l + bow * bow) / (2.0 * bow)
+            half = np.arcsin(min(1.0, 0.5 * l / R))
+            t = np.linspace(-half, half, 25)
+            leaf_line = tuple((float(rh + bow - R + R * np.cos(a)), float(0.5 * l + R * np.sin(a)))
+                              for a in t)
+        parts = [Part("link", leaf_line), Part("pivot", ((rh, 0.0),)),
+                 Part("pivot", ((rh, l),)), Part("mass", ((rh + bow, 0.5 * l),),
+                                                  ball_radius(sd.m))]
+        parts = list(mirrored(parts))
+        tall = 0.05 * self.leaf_length
+        for y, kind in ((0.0, "frame"), (l, "sleeve")):
+            parts.append(Part(kind, ((-rh, y - tall / 2), (rh, y - tall / 2), (rh, y + tall / 2),
+                                     (-rh, y + tall / 2), (-rh, y - tall / 2))))
+        parts.append(Part("frame", ((0.0, -0.15 * self.leaf_length),
+                                    (0.0, self.chord_open + 0.15 * self.leaf_length))))
+        return Drawing(tuple(parts))

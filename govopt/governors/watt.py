@@ -32,6 +32,7 @@ import math
 from typing import ClassVar
 
 from ..keys import Key
+from .base import Equation
 from .porter import ARM, RANGE, SLEEVE_FRICTION, SLEEVE_OFFSET, BallGovernor, Linkage
 
 SUSPENSIONS = ("axis", "collar", "crossed")
@@ -104,3 +105,16 @@ class WattGovernor(BallGovernor):
         gov = cls(linkage, inner, outer, normal, friction)
         gov.suspension = suspension
         return gov
+
+    # -- the type's method: what a reader is told (textbook 3.4(a)) ---------------------------
+
+    section: ClassVar[str] = "3.4(a)"
+    k_setting: ClassVar[bool] = False  # the Watt's spec has no k
+
+    def controlling_force(self) -> Equation:
+        """The Watt's controlling force per ball, and its height with the sleeve neglected."""
+        return Equation("statics", "controlling force per ball: the ball's weight (and the "
+                        "sleeve's, where the design gives one) through the arm's slope, by "
+                        "virtual work; the sleeve neglected, the height h = g / omega^2",
+                        "F = m g dy/dr + (W/2) ds/dr = w tan(alpha) (W = 0); h = g / omega^2",
+                        "textbook-ch3", f"{self.section} eq. (i)", name="controlling force")

@@ -33,7 +33,9 @@ import numpy as np
 
 from .. import limits
 from ..analysis import loadchange, statics
-from ..analysis import transient as tr
+from ..analysis.over_regulation import OVER_TOL, over_regulates
+from ..analysis.transient_cubic import hamabe_initial_conditions
+from ..analysis.transient_events import analyse_many
 from ..errors import DesignError, InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS, design_size_error
 from ..requirements import (
@@ -51,9 +53,6 @@ from .margins import margins_to_ends, window_centre
 
 #: Dash-pot grid, as multiples of the least damping that meets eq. (32) with its margin.
 DASHPOT_FACTORS = np.geomspace(1.0, 200.0, 25)
-#: Over-regulation below this fraction of the load change counts as none (rounding level): the
-#: one tolerance of :func:`govopt.analysis.transient.over_regulates`, which decides it.
-OVER_TOL = tr.OVER_TOL
 
 
 def objective_unit(req: Requirements, gov) -> str:
@@ -200,7 +199,7 @@ def load_change_problem(spec: Spec, km: KappaModel, grid: Grid, rows, kappa):
     a2 = inertia * k2[:, i0] / 3.0
     a3 = 2.0 * omega0 * loadchange.speed_lever(spec, alpha0, m, km.central[rows]) * R
     xi0 = (grid.alpha[i1] - alpha0) + 0.0 * a0
-    x = tr.hamabe_initial_conditions(a0, a2, a3, R, xi0, omega1 - omega0)
+    x = hamabe_initial_conditions(a0, a2, a3, R, xi0, omega1 - omega0)
     return a0, a2, a3, x
 
 
@@ -238,12 +237,12 @@ def dashpot_window(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, ro
     f = f_min[:, None] * factors[None, :]  # (n, F)
     if req.dashpot is not None:
         f = np.clip(f, *req.dashpot)
-    s = tr.analyse_many(a0[:, None, :], np.where(np.isfinite(f), f, 1.0)[:, :, None] / 3.0,
+    s = analyse_many(a0[:, None, :], np.where(np.isfinite(f), f, 1.0)[:, :, None] / 3.0,
                         a2[:, None, :], a3[:, None, :], x0[:, None, :], x1[:, None, :],
                         x2[:, None, :], band=spec.analysis.settling_band)
-    # over-regulation at any t >= 0, by the one rule (transient.over_regulates); its measure
+    # over-regulation at any t >= 0, by the one rule (over_regulation.over_regulates); its measure
     # relative to the load change for the diagnosis
-    no_over = np.all(s.stable & ~tr.over_regulates(s.over_regulation_scaled, x0[:, None, :]),
+    no_over = np.all(s.stable & ~over_regulates(s.over_regulation_scaled, x0[:, None, :]),
                      axis=2)
     over = np.max(np.where(s.stable, np.nan_to_num(s.over_regulation_scaled, nan=np.inf)
                            / np.abs(x0[:, None, :]), np.inf), axis=2)
@@ -892,7 +891,7 @@ def check_grids(spec: Spec, req: Requirements) -> None:
 def _result(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound: dict | None):
     """The chosen candidate re-evaluated by :func:`govopt.evaluate`, with the optimiser's
     record: objective, continuous bound and gap, search statistics, sensitivities."""
-    from ..evaluation import evaluate
+    from ..evaluator import evaluate
 
     gov = spec.governor
     chosen = Design(flying_mass=cand.m, **cand.spring, free_half_length=cand.l0,

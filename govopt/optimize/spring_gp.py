@@ -55,13 +55,12 @@ from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+import cvxpy as cp
 import numpy as np
 
 from govopt.requirements import GPForm
 from govopt.springs import helical as hx
 
-from ._cvxpy import cvxpy as cp  # without scipy.stats nor scipy.optimize
-from ._cvxpy import installed_solvers
 from .gp_table import (
     DEFAULT_BOUNDS,
     MATERIAL_KEYS,
@@ -119,7 +118,7 @@ _SOLVED = ("optimal", "optimal_inaccurate")
 
 
 def _default_solver() -> str | None:
-    installed = installed_solvers()
+    installed = cp.installed_solvers()
     for name in ("CLARABEL", "ECOS", "SCS"):
         if name in installed:
             return name

@@ -31,9 +31,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import cvxpy as cp
 import numpy as np
-
-from ._cvxpy import cvxpy as cp
 
 __all__ = ["PRINTED_C1", "SANDGREN", "SANDGREN_DATA", "SANDGREN_ROWS", "SANDGREN_WIRES",
            "BelegunduSpring", "SandgrenSpring", "constants", "constraints", "sandgren_checks",

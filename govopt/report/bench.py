@@ -1033,7 +1033,7 @@ def read_csv(path: str | Path) -> list[Point]:
 
 def design_bench(spec_path: str | Path) -> dict:
     """One full design of the bundled spec, split into its stages, against one evaluation."""
-    from ..evaluation import evaluate
+    from ..evaluator import evaluate
     from ..optimize import design as dz
     from ..spec import load_spec
 

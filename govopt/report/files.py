@@ -425,7 +425,7 @@ def drawn_design(res: Result) -> tuple[str, Result, str]:
     import dataclasses
     import tomllib
 
-    from ..evaluation import evaluate
+    from ..evaluator import evaluate
     from ..spec import parse_spec
     from .text import check_name, margin_words
 

@@ -6,8 +6,10 @@ them through the seam (``spec.governor.shown``: degrees or millimetres), speeds 
 on the right-hand axis. The plots, each named by its *kind*:
 
 * ``characteristic``: equilibrium speed against configuration, the required speed band
-  (``[speed]``), the friction band where the design has friction, the normal configuration
-  (Hamabe Part I; textbook 3.3, 3.4(b));
+  (``[speed]``), the friction band where the design has friction, the normal configuration;
+  the title cites the type's statics (its method, :meth:`Governor.method`);
+* ``linkage``: the governor drawn to scale at its innermost, normal and outermost
+  configurations, from the geometry its statics use (:meth:`Governor.drawing`);
 * ``controlling-force`` (ball and fly-weight governors, coordinate = the ball's radius): the
   controlling force ``F_c(r)`` per ball with lines of constant speed ``F = m omega^2 r`` through
   the origin (textbook 3.3, the controlling-force diagram); each line joins the origin to a point
@@ -46,7 +48,7 @@ FORMATS = ("png", "svg")
 #: inches and dots per inch of a single plot: 1050 x 675 px, text readable at 100 % zoom
 SIZE, DPI = (7.0, 4.5), 150
 #: the kinds in the order they are drawn; ``load-change`` stands for ``load-change-1``, ...
-KINDS = ("characteristic", "controlling-force", "k2", "load-change", "vyshnegradsky",
+KINDS = ("characteristic", "linkage", "controlling-force", "k2", "load-change", "vyshnegradsky",
          "vibration-spectrum", "vibration-trace", "fatigue")
 STYLE = {"font.size": 10, "axes.titlesize": 11, "axes.labelsize": 10, "legend.fontsize": 9,
          "axes.grid": True, "grid.alpha": 0.35, "svg.hashsalt": "govopt"}
@@ -60,6 +62,8 @@ def kinds(res) -> list[str]:
     vib = dyn.get("vibration")
     return [k for k, present in (
         ("characteristic", True),
+        ("linkage", res.spec.governor.drawing(res.spec.governor.x_normal, res.spring)
+         is not None),
         ("controlling-force", res.spec.governor.coordinate == "length"),
         ("k2", res.k2 is not None),
         *((f"load-change-{i}", True) for i in range(1, len(changes) + 1)),
@@ -166,8 +170,9 @@ def characteristic(res, ax) -> None:
     ax.set_ylabel("speed (rpm)")
     _rad_s_axis(ax)
     delta = _finite(res.irregularity)  # against the spec's mean speed, where it has one
-    _title(res, ax, "characteristic (" + (f"irregularity {delta:.4g})" if delta is not None else
-                                          f"sensitiveness {cl.get('sensitiveness', 0.0):.4g})"))
+    _title(res, ax, f"characteristic, {res.method.named('characteristic').cite} (" + (
+        f"irregularity {delta:.4g})" if delta is not None else
+        f"sensitiveness {cl.get('sensitiveness', 0.0):.4g})"))
     if friction:  # three curves across the axes: the legend below them, covering none
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, fontsize=8.5)
     else:
@@ -281,7 +286,8 @@ def k2(res, ax) -> None:
 
 
 def load_change(res, ax, index: int = 0) -> None:
-    """A load change's response (Hamabe Part III, eq. 28): the configuration against time, the
+    """A load change's response (the type's load-change cubic, its method's ``cubic``: Hamabe
+    eq. 28 for the shaft governor): the configuration against time, the
     new equilibrium, the over-regulation (the largest swing past it) and the settling band
     ``+- band |xi0|`` with the settling time."""
     lc = res.dynamics["load_changes"][index]
@@ -317,12 +323,14 @@ def load_change(res, ax, index: int = 0) -> None:
     ax.margins(y=0.08)
     ax.set_xlabel("time after the load change (s)")
     ax.set_ylabel(_config_label(res))
-    _title(res, ax, f"load change '{lc['name']}' {x0:.4g} \u2192 {x1:.4g} {unit}")
+    _title(res, ax, f"load change '{lc['name']}' {x0:.4g} \u2192 {x1:.4g} {unit} "
+                    f"({res.method.named('cubic').cite})")
     ax.legend(loc="best")
 
 
 def vyshnegradsky(res, ax) -> None:
-    """Vyshnegradsky's diagram (Hamabe eq. 28 in normal form): the regions and the stability,
+    """Vyshnegradsky's diagram (the load-change cubic in normal form): the regions and the
+    stability,
     discriminant and monotonic boundaries of :func:`govopt.analysis.vyshnegradsky.boundaries`,
     with each load change's point ``(A, B)``."""
     from ..analysis import vyshnegradsky as vy
@@ -508,7 +516,53 @@ def _hooks(hooks: dict, checks: dict, ax, governs) -> None:
                   "10-11)", fontsize=7)
 
 
-DRAW = {"characteristic": characteristic, "controlling-force": controlling_force, "k2": k2,
+#: How :func:`linkage` draws the three configurations: (label, colour, line style).
+CONFIGURATIONS = (("innermost", "tab:blue", "--"), ("normal", "k", "-"),
+                  ("outermost", "tab:red", "--"))
+
+
+def linkage(res, ax) -> None:
+    """The governor drawn to scale (:meth:`Governor.drawing`, the geometry its statics use) at
+    its innermost, normal and outermost configurations, one colour each: links and arms as
+    lines, the flying masses as steel balls of their mass, fulcrums and hinges as triangles,
+    the sleeve and the spring; mm on equal axes."""
+    from matplotlib.patches import Circle
+
+    gov, sd = res.spec.governor, res.spring
+    drawing = None
+    for (label, colour, style), x in zip(CONFIGURATIONS, (gov.x_inner, gov.x_normal,
+                                                          gov.x_outer), strict=True):
+        drawing = gov.drawing(x, sd)
+        xs, unit = _shown(res, x)
+        first = True
+        for part in drawing.parts:
+            pts = np.asarray(part.points, dtype=float) * 1e3
+            if part.kind == "frame":
+                if len(pts) == 1:
+                    ax.add_patch(Circle(tuple(pts[0]), part.size * 1e3, color="0.55"))
+                else:
+                    ax.plot(*pts.T, color="0.55", lw=2.5, zorder=1)
+            elif part.kind == "mass":
+                ax.add_patch(Circle(tuple(pts[0]), part.size * 1e3, fill=False, ec=colour,
+                                    ls=style, lw=1.5, zorder=3))
+            elif part.kind == "pivot":
+                ax.plot(*pts.T, "^", color=colour, ms=6, zorder=4)
+            else:
+                ax.plot(*pts.T, color=colour, ls=":" if part.kind == "spring" else style,
+                        lw=1.0 if part.kind == "spring" else 1.6, zorder=2,
+                        label=f"{label}: {gov.coordinate_name} {float(xs):.4g} {unit}"
+                        if first else None)
+                first = False
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.autoscale_view()
+    ax.set_xlabel(drawing.axes[0])
+    ax.set_ylabel(drawing.axes[1])
+    _title(res, ax, "the governor drawn to scale (balls: steel of their mass)")
+    ax.legend(loc="best", fontsize=8)
+
+
+DRAW = {"characteristic": characteristic, "linkage": linkage,
+        "controlling-force": controlling_force, "k2": k2,
         "vyshnegradsky": vyshnegradsky, "vibration-spectrum": vibration_spectrum,
         "vibration-trace": vibration_trace, "fatigue": fatigue, "speed-band": speed_band}
 

@@ -111,14 +111,17 @@ def _roots_text(roots: Sequence) -> str:
 
 
 def load_changes(res) -> list[Table]:
-    """The load changes (Hamabe Part III): one properties table with a column per load change
-    (friction rows where the design has friction), the roots of eq. (28) with real and imaginary
-    parts in columns, and each response as a series with its chart."""
+    """The load changes (the type's load-change model, :meth:`Governor.load_change_method`):
+    one properties table with a column per load change (friction rows where the design has
+    friction), the roots of the load-change cubic with real and imaginary parts in columns, and
+    each response as a series with its chart; headings and labels cite the type's method."""
     changes = [unflag(lc) if isinstance(lc, Mapping) else lc
                for lc in res.dynamics.get("load_changes") or []]
     if not changes:
         return []
-    gov = res.spec.governor
+    gov, method = res.spec.governor, res.method
+    cubic, hurwitz = method.named("cubic"), method.named("hurwitz")
+    strokes = method.named("strokes")
     si, xu = _coordinate(res)
     stem = gov.coordinate_name.split()[-1]
     fric = [unflag(f) if isinstance(f, Mapping) else f
@@ -140,10 +143,10 @@ def load_changes(res) -> list[Table]:
         [f"{gov.coordinate_name} before (old equilibrium)", xu, *(x(lc, "from") for lc in changes)],
         [f"{gov.coordinate_name} after (new equilibrium)", xu, *(x(lc, "to") for lc in changes)],
         ["k^2 at the new equilibrium", "1/s^2", *(get(lc, "k2_rad2_s2") for lc in changes)],
-        ["roots of eq. 28 (table below)", "1/s",
+        ["roots of the load-change cubic (table below)", "1/s",
          *(_roots_text(get(lc, "roots_per_s", [])) for lc in changes)],
         ["response", "", *(get(lc, "kind") for lc in changes)],
-        ["Hurwitz margin 9 a1 a2 / (a0 a3) - 1 (eq. 32)", "",
+        [f"Hurwitz margin 9 a1 a2 / (a0 a3) - 1 ({hurwitz.cite})", "",
          *(get(lc, "hurwitz_margin") for lc in changes)],
         ["stable", "", *(get(lc, "stable") for lc in changes)],
         ["Vyshnegradsky A", "", *(get(lc, "vyshnegradsky", {}).get("A") for lc in changes)],
@@ -176,7 +179,7 @@ def load_changes(res) -> list[Table]:
                      "excursion grows without bound.")
     if fric:
         rows += [
-            ["with friction (eqs. 42-46): outcome", "",
+            [f"with friction ({strokes.cite if strokes else 'strokes'}): outcome", "",
              *(get(f, "outcome") for f in fric)],
             ["with friction: strokes", "", *(get(f, "n_strokes") for f in fric)],
             ["with friction: the first stroke ends from the new equilibrium", xu,
@@ -186,7 +189,7 @@ def load_changes(res) -> list[Table]:
         notes += [f"with friction, {lc.get('name')}: {get(f, 'note')}"
                   for lc, f in zip(changes, fric, strict=False) if get(f, "note")]
     names = [str(get(lc, "name", f"load change {i + 1}")) for i, lc in enumerate(changes)]
-    out = [Table("Load changes (Hamabe Part III, eq. 28; Hurwitz eq. 32)",
+    out = [Table(method.heading("load change", "Load changes"),
                  ["quantity", "unit", *names],
                  [[r[0], r[1], *(cell(v) for v in r[2:])] for r in rows], notes,
                  properties=True)]
@@ -195,9 +198,10 @@ def load_changes(res) -> list[Table]:
               cell(2 * math.pi / abs(im)) if abs(im) > 0 else None]
              for name, lc in zip(names, changes, strict=True)
              for k, (re_, im) in enumerate(get(lc, "roots_per_s", []))]
-    out.append(Table("Roots of eq. 28: xi ~ exp(s t)", ["load change", "root", "real part (1/s)",
+    out.append(Table(f"Roots of the load-change cubic ({cubic.cite}): xi ~ exp(s t)",
+                     ["load change", "root", "real part (1/s)",
                      "imaginary part (1/s)", "time constant -1/Re (s)",
-                     "period 2 pi/|Im| (s)"], roots,
+                     "period 2 pi / |Im| (s)"], roots,
                      ["period blank: a real root (no oscillation); a negative time constant "
                       "is a growing mode."]))
     for name, lc in zip(names, changes, strict=True):
@@ -269,8 +273,9 @@ def _tidy(values: Sequence, scale: float, rel: float = 1e-9) -> list:
 
 
 def vibration(res) -> list[Table]:
-    """The forced vibration under the type's periodic forcing (Hamabe Part II, eqs. 16-23):
-    the figures, the harmonics and one revolution of the steady response."""
+    """The forced vibration under the type's periodic forcing (the shaft governor's valve gear,
+    Hamabe Part II): the figures, the harmonics and one revolution of the steady response; the
+    headings cite the type's method (:meth:`Governor.vibration_method`)."""
     vib = res.dynamics.get("vibration")
     if not isinstance(vib, Mapping):
         return []
@@ -297,7 +302,7 @@ def vibration(res) -> list[Table]:
         ["stable", "", g("stable")],
         ["Hamabe's case (Part II)", "", g("hamabe_case")],
     ]
-    out = [Table("Forced vibration under the valve gear (Hamabe Part II, eqs. 16-23)",
+    out = [Table(res.method.heading("vibration", "Forced vibration"),
                  ["quantity", "unit", "value"], [[a, b, cell(v)] for a, b, v in rows],
                  properties=True)]
     harmonics = [h for h in g("harmonics") or [] if isinstance(h, Mapping)]
@@ -310,7 +315,7 @@ def vibration(res) -> list[Table]:
                                             m_scale)
                                       + _tidy([h.get("amplitude_rad")], a_scale), strict=True))}
                      for h in harmonics]
-        out.append(Table("Harmonics of the forced vibration (eqs. 20-22)",
+        out.append(Table("Harmonics of the forced vibration",
                          ["order", "moment cos (N m)", "moment sin (N m)", "amplitude (deg)",
                           "phase (deg)", "detuning", "resonant"],
                          [[cell(h.get("order")), cell(h.get("moment_cos_N_m")),
@@ -336,14 +341,16 @@ _DYNAMICS_KEYS = {"load_changes", "friction", "vibration", "k2_normal_rad2_s2"}
 
 
 def restoring(res) -> list[Table]:
-    """k^2 at the normal configuration (Hamabe eqs. 18-20), and any dynamics result no table
-    declares (as JSON text, so nothing is silently dropped)."""
+    """k^2 at the normal configuration (the type's restoring stiffness, its method's ``k2``),
+    and any dynamics result no table declares (as JSON text, so nothing is silently
+    dropped)."""
     dyn = res.dynamics or {}
     out = []
     k2n = dyn.get("k2_normal_rad2_s2")
     if k2n is not None:
         w0sq = res.omega_reference ** 2
-        out.append(Table("Restoring stiffness at the normal configuration (Hamabe eqs. 18-20)",
+        k2 = res.method.named("k2")
+        out.append(Table(f"Restoring stiffness at the normal configuration ({k2.cite})",
                          ["quantity", "unit", "value"],
                          [["k^2", "1/s^2", cell(k2n)], ["k^2 / omega0^2", "", cell(k2n / w0sq)]],
                          ["stable and clear of resonance for 0 < k^2 / omega0^2 < 1"

@@ -188,96 +188,30 @@ def _label(f) -> str:
     return f.name + (f" {f.symbol}" if f.symbol else "")
 
 
-def write_workbook(outcome, path, *, replace: bool = True) -> Path:
-    """The workbook: sheet "Spring" (the answer, then the spring maker's sheet in engineering
-    units), "Checks" (value, limit, margin, verdict, source) and "Force-length" (a table and
-    its chart), written atomically (an existing file replaced only with ``replace``)."""
-    from openpyxl import Workbook
-    from openpyxl.chart import Reference, ScatterChart, Series
-    from openpyxl.styles import Alignment, Font
+def write_workbook(outcome, path, *, replace: bool = True, command: str = "") -> Path:
+    """The workbook (:func:`govopt.report.excel.spring.spring_workbook`: a Summary with the
+    command, version, date, verdict and the answer, the spring maker's sheet, the checks and
+    the force-length table with its chart), written atomically (an existing file replaced only
+    with ``replace``)."""
+    from .excel.spring import spring_workbook
 
-    from .excel import engineering, fit_rows, print_setup
-    from .files import atomic_write
-
-    shown = outcome.shown
-    wb = Workbook()
-    ws = wb.active
-    ws.title = "Spring"
-    ws.append(["quantity", "value", "unit"])
-
-    def put(label, value, unit=""):
-        if unit == "section":
-            ws.append([label])
-            return
-        if isinstance(value, float) and not math.isfinite(value):
-            value, unit = ("infinite" if math.isinf(value) else "none"), ""
-        if isinstance(value, int | float) and not isinstance(value, bool):
-            fmt = "0.00" if unit == "%" else engineering(value, unit)[2]
-            value, unit = shown(value, unit)  # the units the input was written in
-            ws.append([label, value, unit])
-            ws.cell(ws.max_row, 2).number_format = fmt
-        else:
-            ws.append([label, str(value), unit])
-
-    for row in workbook_rows(outcome):
-        put(*row)
-    sheet = maker_sheet(outcome)
-    if sheet is not None:
-        put("Specification for the spring maker (EN 15800 grade 2)", None, "section")
-        for _, label, x, unit in sh.record_rows(sheet.figures()):
-            if x is sh.SECTION:  # the tolerances: their rows follow, in line
-                continue
-            if isinstance(x, list | tuple):
-                for note in x:
-                    put("note", note, "")
-            else:
-                put(label, x, unit)
-    checks = wb.create_sheet("Checks")
-    checks.append(["check", "value", "sense", "limit", "unit", "margin", "result", "source"])
-    for c in outcome.checks:
-        (_, _, fmt), (_, _, fmt_lim) = (engineering(x, c.unit) for x in (c.value, c.limit))
-        (value, unit), (limit, _) = shown(c.value, c.unit), shown(c.limit, c.unit)
-        checks.append([c.name, value, c.sense, limit, unit, c.margin,
-                       "PASS" if c.passed else "FAIL", c.source])
-        r = checks.max_row
-        checks.cell(r, 2).number_format, checks.cell(r, 4).number_format = fmt, fmt_lim
-        checks.cell(r, 6).number_format = "0.00%"
-    lu, fu = shown(0.0, "m")[1], shown(0.0, "N")[1]
-    fl = wb.create_sheet("Force-length")
-    fl.append([f"length L ({lu})", f"force F ({fu})"])
-    for length, force in _force_length_points(outcome):
-        fl.append([shown(length, "m")[0], shown(force, "N")[0]])
-        for cell in fl[fl.max_row]:
-            cell.number_format = "0.00"
-    fl.column_dimensions["A"].width = fl.column_dimensions["B"].width = 14
-    chart = ScatterChart()
-    chart.title, chart.x_axis.title, chart.y_axis.title = (
-        f"{outcome.name}: force against length", f"length L ({lu})", f"force F ({fu})")
-    chart.series.append(Series(Reference(fl, min_col=2, min_row=2, max_row=fl.max_row),
-                               Reference(fl, min_col=1, min_row=2, max_row=fl.max_row),
-                               title="spring"))
-    fl.add_chart(chart, "D2")
-    wrap = Alignment(wrap_text=True, vertical="top")
-    for w in (ws, checks):
-        w.column_dimensions["A"].width = 44
-        w.column_dimensions["B"].width = 24 if w is checks else 40
-        for row in w.iter_rows():
-            for cell in row:  # long texts wrap in their column, every label beside its value
-                cell.alignment = wrap if isinstance(cell.value, str) else Alignment(
-                    vertical="top")
-        for cell in w[1]:
-            cell.font = Font(bold=True)
-    checks.column_dimensions["H"].width = 50
-    for w in (ws, checks, fl):  # rows tall enough for their wrapped text; A4, fit to the
-        fit_rows(w)  # page's width, the header on every page
-        print_setup(w)
-    return atomic_write(Path(path), wb.save, overwrite=replace, what="workbook")
+    return spring_workbook(outcome, path, rows=workbook_rows(outcome),
+                           sheet=maker_sheet(outcome), points=force_length_points(outcome),
+                           replace=replace, command=command)
 
 
-def _force_length_points(outcome) -> list[tuple[float, float]]:
-    """(length m, force N) of the assessment's working points: the free length, L1, L2 and
-    a compression spring's least working and solid lengths."""
-    return [(p["length"].value, p["force"].value) for p in outcome.assessment.points]
+def force_length_points(outcome) -> list[tuple[str, float, float]]:
+    """``(name, length m, force N)`` of the assessment's working points: the free length, L1,
+    L2 and a compression spring's least working and solid lengths; a point equal to the one
+    before it (no least force: the first working point is the free length) once."""
+    out: list[tuple[str, float, float]] = []
+    for p in outcome.assessment.points:
+        name, L, F = str(p["point"].value), float(p["length"].value), float(p["force"].value)
+        if out and math.isclose(out[-1][1], L, rel_tol=1e-12) and \
+                math.isclose(out[-1][2], F, rel_tol=1e-12, abs_tol=1e-12):
+            continue
+        out.append((name, L, F))
+    return out
 
 
 def write_check_spec(outcome, path, *, replace: bool = True) -> Path:

@@ -341,8 +341,11 @@ def _characteristic(out: TextReport, res: Result) -> None:
     st, gov = res.statics, res.spec.governor
     q = "N m" if gov.coordinate == "angle" else "N"
     xs, xunit = gov.shown(st.alpha)
+    rise, fall = res.friction_speeds
+    friction = [] if rise is None else [("opening\n(rpm)", rise * RPM, ".2f"),
+                                        ("closing\n(rpm)", fall * RPM, ".2f")]
     cols = [(f"{gov.coordinate_name}\n({xunit})", xs, ".3f"), ("omega\n(rad/s)", st.omega, ".4f"),
-            ("speed\n(rpm)", st.omega * RPM, ".2f"),
+            ("speed\n(rpm)", st.omega * RPM, ".2f"), *friction,
             *((f"{n}\n({q})", v, ".3f") for n, v in zip(gov.force_names,
                                                         (st.M_z, st.M_f, st.M_r0), strict=True))]
     if gov.spring is not None:
@@ -351,7 +354,7 @@ def _characteristic(out: TextReport, res: Result) -> None:
             cols.append(("shear stress\n(MPa)", st.stress / 1e6, ".1f"))
     if res.k2 is not None:
         cols.append(("k^2\n(1/s^2)", res.k2, ".1f"))
-    out.title("Characteristic (equilibrium by virtual work; Hamabe eq. 12, textbook 3.3)")
+    out.title(res.method.heading("statics", "Characteristic"))
     out.table([c[0] for c in cols],
               [[format(float(c[1][i]), c[2]) for c in cols] for i in range(len(st.alpha))],
               right=range(len(cols)))
@@ -387,11 +390,10 @@ def format_result(res: Result, colour: bool | None = None,
     :func:`colour_default` (a terminal)."""
     out = TextReport(colour_default() if colour is None else colour)
     spec = res.spec
-    fid = [f"geometry={spec.analysis.geometry}", f"reaction_speed={spec.analysis.reaction_speed}"]
-    if spec.material is not None:
-        fid.append(f"stress_correction={spec.material.stress_correction}")
+    cited = {k for e in res.method.equations for k in e.settings}  # the settings that choose
+    fid = [f"{s.key.split('.')[-1]}={s.value}" for s in res.method.settings if s.key in cited]
     out.line(f"govopt {res.kind}: {spec.name}  ({spec.path})  [{spec.governor.title}]", "bold")
-    out.line("fidelity: " + ", ".join(fid))
+    out.line("fidelity: " + (", ".join(fid) or "none to choose"))
     wanted = SECTIONS if sections is None else sections
     unknown = [s for s in wanted if s not in _WRITERS]
     if unknown:

@@ -27,7 +27,7 @@ import numpy as np
 from ...keys import Key, Table
 from ...springs import helical as hx
 from ...units import G_STANDARD
-from ..base import Governor, Terms
+from ..base import Drawing, Equation, Governor, Part, Setting, Terms, ball_radius, zigzag
 from . import linkage, valvegear
 
 ANGLE_RANGE = dict(low=0.0, high=np.pi, range_text="(0 deg, 180 deg)")
@@ -359,6 +359,140 @@ class ShaftGovernor(Governor):
         """``F = 2 kappa (l - l0)`` (Hamabe eq. 2): ``A_F = 2 l``, ``B_F = 2``."""
         ell = linkage.half_length(x, self.a, self.b)
         return 2.0 * ell, 2.0 + 0.0 * ell
+
+    # -- the type's method and drawing: what a reader is told (Hamabe's paper) ---------------
+
+    def statics_method(self, spec) -> tuple[Equation, ...]:
+        """Hamabe Part I: eqs. 1, 2 (or 3), 11 and 12."""
+        if spec.analysis.geometry == "series":
+            spring = Equation("statics", "spring moment about the fulcrum, the paper's "
+                              "first-order series", "M_f = kappa (A - B l0), A = 2 a b "
+                              "sin(alpha), B = A/c + (a b)^2 sin(2 alpha)/c^3, c = sqrt(a^2 + "
+                              "b^2)", "hamabe", "eq. 3", ("analysis.geometry",))
+        else:
+            spring = Equation("statics", "spring moment about the fulcrum, exact geometry",
+                              "M_f = F a b sin(alpha) / l", "hamabe", "eq. 2",
+                              ("analysis.geometry",))
+        return (
+            Equation("statics", "centrifugal moment of a pendulum about its fulcrum",
+                     "M_z = omega^2 m a rho sin(alpha)", "hamabe", "eq. 1"),
+            Equation("statics", "the spring's half length and force",
+                     "l = sqrt(a^2 + b^2 - 2 a b cos(alpha)), F = 2 kappa (l - l0)", "hamabe",
+                     "eq. 2", name="spring force"),
+            spring,
+            Equation("statics", "mean reaction of the valve gear through the eccentric's lever "
+                     "q, from the valve-gear table delta(alpha)", "M_r0 = C_f + omega^2 C_i",
+                     "hamabe", "eq. 11", ("analysis.valve_table", "analysis.reaction_speed",
+                                         "analysis.reaction_slope")),
+            Equation("statics", "equilibrium of the pendulum: the characteristic",
+                     "M_f - M_z + M_r0 = 0", "hamabe", "eq. 12", name="characteristic"))
+
+    def speed_method(self, spec) -> tuple[Equation, ...]:
+        """Hamabe Part I: the irregularity."""
+        if spec.speed is None:
+            return ()
+        return (Equation("speed", "irregularity of the governor",
+                         "delta = (omega_a - omega_i) / omega0, omega0 the spec's mean speed",
+                         "hamabe", "Part I", name="irregularity"),)
+
+    def spring_method(self, spec) -> tuple[Equation, ...]:
+        """Hamabe's Example 1 (the free half length from the equilibrium at the normal
+        configuration; the stress uncorrected), then the helical spring's own."""
+        own = super().spring_method(spec)
+        if spec.material is not None and spec.material.stress_correction == "none":
+            own = tuple(Equation(e.topic, e.what, e.formula, "hamabe", "Example 1", e.settings,
+                                 e.name) if e.name in ("rate", "stress") else e for e in own)
+        return (Equation("spring", "free half length from the equilibrium at the normal "
+                         "configuration at the mean speed", "F_n = M_f(alpha_n) / h_n, l0 = "
+                         "l_n - F_n / (2 kappa), h = a b sin(alpha) / l", "hamabe",
+                         "Example 1"),) + own
+
+    def stability_method(self, spec) -> tuple[Equation, ...]:
+        """Hamabe Part II: k^2 (eqs. 18-20) and its three cases."""
+        return (Equation("stability", "restoring stiffness of the pendulum about an "
+                         "equilibrium", "k^2 = (dM_f/dalpha - omega^2 m a rho cos(alpha) + "
+                         "dM_r0/dalpha) / I", "hamabe", "eqs. 18-20",
+                         ("analysis.reaction_slope",), name="k2"),
+                Equation("stability", "stable for k^2 > 0", "k^2 > 0", "hamabe",
+                         "Part II, case 3", name="stable"),
+                Equation("stability", "clear of resonance with the valve gear's forcing",
+                         "k^2 < omega0^2", "hamabe", "Part II, case 2", name="resonance"))
+
+    def friction_method(self, spec) -> tuple[Equation, ...]:
+        """Hamabe eq. 42: Coulomb friction at the fulcrum, where the design has it."""
+        if not (spec.design is not None and spec.design.friction_moment):
+            return ()
+        return (Equation("friction", "Coulomb friction moment at the fulcrum: the pendulum "
+                         "opens at omega_rise and closes at omega_fall",
+                         "omega_rise,fall^2 = (M_f + C_f +- M_0) / (m a rho sin(alpha) - C_i)",
+                         "hamabe", "eq. 42", name="band"),) + self.friction_strokes(spec)
+
+    def vibration_method(self, spec) -> tuple[Equation, ...]:
+        """Hamabe Part II: the forced vibration under the valve gear, with the dash-pot."""
+        if spec.engine is None and not (spec.design is not None and spec.design.dashpot):
+            return ()
+        return (Equation("vibration", "the pendulum's forced vibration by the valve gear's "
+                         "fluctuating reaction: harmonics", "I xi'' + f xi' + I k^2 xi = "
+                         "sum_n (A_n cos n theta + B_n sin n theta)", "hamabe", "eqs. 13-22",
+                         ("analysis.harmonics",), name="vibration"),
+                Equation("vibration", "the dash-pot's damping", "f = 3 a1", "hamabe",
+                         "eq. 23"))
+
+    def load_change_method(self, spec) -> tuple[Equation, ...]:
+        """Hamabe Part III: eqs. 24-28 and the Hurwitz condition, eq. 32."""
+        return (Equation("load change", "governor and engine after a load change",
+                         "a0 xi''' + 3 a1 xi'' + 3 a2 xi' + a3 xi = 0 (from eqs. 24-27)",
+                         "hamabe", "eq. 28", ("analysis.settling_band",), name="cubic"),
+                Equation("load change", "stability of the load change (Hurwitz)",
+                         "9 a1 a2 > a0 a3, margin 9 a1 a2 / (a0 a3) - 1", "hamabe", "eq. 32",
+                         name="hurwitz"),
+                Equation("load change", "Vyshnegradsky's diagram of the same cubic",
+                         "lambda^3 + A lambda^2 + B lambda + 1 = 0, stable for A B > 1",
+                         "vyshnegradsky"))
+
+    def settings(self, spec) -> list[Setting]:
+        """The seam's settings and the paper's: linkage geometry, the valve gear's table and
+        reaction, the harmonics of the forced vibration."""
+        an = spec.analysis
+        own = [Setting("analysis.geometry", an.geometry,
+                       "the linkage: exact (eq. 2) or the paper's series (eq. 3)"),
+               Setting("analysis.reaction_speed", an.reaction_speed,
+                       "the valve gear's inertia reaction at the local or the mean speed"),
+               Setting("analysis.reaction_slope", an.reaction_slope,
+                       "the valve gear's reaction slope in k^2 (the paper leaves it out)"),
+               Setting("analysis.valve_table", an.valve_table,
+                       "how the valve-gear table delta(alpha) is interpolated")]
+        if self.vibration_method(spec):
+            own.append(Setting("analysis.harmonics", an.harmonics,
+                               "harmonics kept in the forced vibration"))
+        return own + super().settings(spec)
+
+    def free_length_words(self) -> str:
+        """The free half length: half the attachments' distance at no force."""
+        return ("free half length l0: half the distance between the spring's attachments G "
+                "and G' (through the shaft's axis O, Hamabe Fig. 1) at which F = 2 kappa "
+                "(l - l0) is zero; the spring's whole length at no force is 2 l0")
+
+    def drawing(self, x, sd) -> Drawing:
+        """The pair of pendulums in their plane of rotation (Hamabe Fig. 1): the shaft O at the
+        origin, each fulcrum S at ``a`` from it, the pendulum's centre of gravity P at ``rho``
+        from S at the angle OSP = alpha, the spring's attachment G at ``b`` on SP, the spring
+        G-G' through O (its half length ``l = OG``), the lever SQ (``q``) to the eccentric."""
+        x = float(x)
+        parts = []
+        for sign in (1.0, -1.0):  # the second pendulum: point-symmetric about O
+            S = np.array([sign * self.a, 0.0])
+            u = sign * np.array([-np.cos(x), np.sin(x)])  # from S along SP
+            P, G, Q = S + self.rho * u, S + self.b * u, S - self.q * u
+            parts += [Part("link", (tuple(Q), tuple(S), tuple(P))),
+                      Part("pivot", (tuple(S),)),
+                      Part("mass", (tuple(P),), ball_radius(sd.m))]
+            if sign > 0:
+                width = 2.0 * sd.r if np.isfinite(sd.r) else 0.1 * self.a
+                parts.append(Part("spring", zigzag(tuple(G), tuple(-G), width, 8)))
+        parts.append(Part("frame", ((0.0, 0.0),), 0.05 * self.a))
+        return Drawing(tuple(parts), "plane of rotation: the shaft O at the origin",
+                       ("across the shaft (mm)", "across the shaft (mm)"))
 
 
 def _parse_valve_gear(vg, geometry) -> ValveGear:
