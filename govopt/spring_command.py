@@ -68,8 +68,9 @@ GUIDE = "docs/reference/spring-spec.md under"
 class Outcome:
     """What `govopt spring` prints (its text, its JSON), the checks the verdict reads (exit
     code 1 when one fails), the spring's assessment and the optimiser's record (None for a
-    check), the problem's values (SI, defaults applied), the units shown and the files
-    written."""
+    check), the problem's values (SI, defaults applied), the units shown, the files written,
+    and the inputs read (:class:`govopt.reader.Entry` s, each with its declared meaning) with
+    the spec file they came from (None: the options alone)."""
 
     name: str
     command: str
@@ -83,6 +84,8 @@ class Outcome:
     data: dict = field(default_factory=dict)
     sizing: Any = None
     written: list = field(default_factory=list)
+    entries: list = field(default_factory=list)
+    spec: str | None = None
 
     @property
     def failed(self) -> list[str]:
@@ -251,6 +254,7 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
     with overwrite_option("--replace"):  # this command's --force is the spring's force
         _outputs(xlsx, plots, output, stem, replace, [] if spec is None else [spec])
         out = _design({**defaults(DESIGN), **values}, where, name, entries)
+        out.spec = where.file
         _render(out, json_out)
         return _write(out, xlsx, plots, output, stem, replace, spec)
 
@@ -266,6 +270,7 @@ def check(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, 
     with overwrite_option("--replace"):
         _outputs(xlsx, plots, None, stem, replace, [] if spec is None else [spec])
         out = _check({**defaults(CHECK), **values}, where, name, entries)
+        out.spec = where.file
         _render(out, json_out)
         return _write(out, xlsx, plots, None, stem, replace, spec)
 
@@ -375,7 +380,7 @@ def _outcome(name, command, assessment, record, entries, v, notes=(), sizing=Non
                     f"{shown.text(sp.D, 'm', 4)}, n {assessment.value('active coils'):.4g}"
                     f"{grade}")
     return Outcome(name, command, assessment, record, list(assessment.checks), shown, v,
-                   [*notes, *assessment.notes], sizing=sizing)
+                   [*notes, *assessment.notes], sizing=sizing, entries=list(entries))
 
 
 # ---------------------------------------------------------------------------- design

@@ -56,6 +56,9 @@ def test_every_option_is_a_declared_key_with_its_help(command, table):
     for param, key in zip(params, [*table.keys, NAME], strict=True):
         assert param.opts[0] == "--" + key.name.replace("_", "-")
         assert param.help == option_help(key, table).replace("[", r"\[")
+    code = getattr(cli, command).__wrapped__.__code__  # the function as written: no key in it
+    written = code.co_varnames[:code.co_argcount + code.co_kwonlyargcount]
+    assert not set(written) & set(table.names) and "options" in code.co_varnames
     help_text = " ".join(invoke(["spring", command, "--help"]).stdout.replace("\u2502", " ")
                          .split())
     assert "a force, e.g. '500 N'" in help_text.replace("'400 N'", "'500 N'")
@@ -116,6 +119,55 @@ def test_every_entry_carries_its_meaning():
     for path in SPRING_SPECS:
         *_, entries = spring_command.merged(path, {"life": 1e6} if "500n" in path.stem else {})
         assert entries and all(e.meaning for e in entries), path.name
+
+
+
+@pytest.mark.parametrize("command, spec, options", [
+    ("design", "spring-500n", ["--max-outer-diameter", "40 mm", "--wire-sizes",
+                               "4 mm, 4.5 mm, 5 mm"]),
+    ("check", None, ["--wire-diameter", "0.125 in", "--mean-diameter", "0.75 in",
+                     "--active-coils", "8", "--free-length", "2.5 in", "--material",
+                     "EN10270-1 SH", "--force", "40 lbf"]),
+])
+def test_workbook_spec_sheet_labels_each_input_with_its_declaration(tmp_path, command, spec,
+                                                                    options):
+    """The spring workbook's Spec sheet lists every input read, from the file and the options,
+    with its declared meaning, as written and in the units the input is written in, and the
+    file it came from (or none: the options alone)."""
+    import openpyxl
+
+    from govopt.spring_keys import FORMS
+
+    table = FORMS[command][0]
+    path = None if spec is None else SPECS / "springs" / f"{spec}.toml"
+    book = tmp_path / "s.xlsx"
+    args = ["spring", command, *([str(path)] if path else []), *options, "--xlsx", str(book)]
+    r = invoke(args)
+    assert r.exit_code in (0, 1), r.output
+    rows = [r for r in openpyxl.load_workbook(book)["Spec"].iter_rows(min_row=3,
+                                                                       values_only=True)]
+    inputs = {key: (meaning, written) for key, meaning, written, *_ in rows if written}
+    data = {} if path is None else tomllib.loads(path.read_text())
+    given = {a[2:].replace("-", "_"): v
+             for a, v in zip(options[::2], options[1::2], strict=True)}
+    for name, written in {**data.get("spring", {}), **given}.items():
+        key = table.key(name)
+        label = ("--" + name.replace("_", "-") if name in given else f"spring.{name}")
+        if key.shape == "list":
+            label, written = f"{label}[0]", written.split(",")[0]
+        meaning, shown = inputs[label]
+        assert meaning == key.meaning, label
+        if key.kind == "number":  # an option's number is the number click read: 8 is 8.0
+            assert float(shown) == float(written), label
+        else:
+            assert shown == str(written), label
+    assert len(inputs) == len(data) - ("spring" in data) + sum(
+        len(str(v).split(",")) if table.key(k).shape == "list" else 1
+        for k, v in {**data.get("spring", {}), **given}.items())
+    units = {r[4] for r in rows if r[0] and r[0].endswith(("diameter", "length", "]"))}
+    assert units == ({"in"} if spec is None else {"mm"})
+    footer = next(r for r in rows if r[0] == "spec file")
+    assert footer[1] == (str(path) if path else "none (the command's options alone)")
 
 
 # -- templates ----------------------------------------------------------------------------------

@@ -2,8 +2,15 @@
 exact GP, certified global; from a wire table with whole or half coils when a grade is given),
 or a given spring checked; from options, a spring spec or both (the work is
 :func:`govopt.spring_command.run`'s and :func:`~govopt.spring_command.check`'s). `govopt spring
-SPEC ...` is `govopt spring design SPEC ...` (:func:`govopt.cli.main`)."""
+SPEC ...` is `govopt spring design SPEC ...` (:func:`govopt.cli.main`).
 
+The options are the keys of the form of ``[spring]`` each command reads, declared once in
+:mod:`govopt.spring_keys`: :func:`keyed` gives a command one option per key (``--max-outer-
+diameter`` for ``max_outer_diameter``), in declared order, with the key's value type and help
+(:func:`govopt.spec_docs.option_help`), through the command's signature (:mod:`inspect`), which
+typer reads; the command's own parameters (the spec, the outputs) are written in it."""
+
+import inspect
 from pathlib import Path
 from typing import Annotated
 
@@ -47,20 +54,27 @@ def _option(key: Key, table: Table):
                                                 metavar=f"<{kind.__name__}>")]
 
 
-def _design(name: str):
-    """The option of ``[spring]``'s key ``name`` of a spring to design."""
-    return _option(DESIGN.key(name), DESIGN)
+def keyed(table: Table):
+    """A command whose options are ``table``'s keys and ``--name`` (each None where not given),
+    after its first parameter (the spec) and before its own others; the function takes them as
+    ``**options``."""
+    def decorate(command):
+        spec, *own, rest = inspect.signature(command).parameters.values()
+        assert rest.kind is inspect.Parameter.VAR_KEYWORD, command
+        keys = [inspect.Parameter(k.name, inspect.Parameter.KEYWORD_ONLY, default=None,
+                                  annotation=_option(k, table)) for k in (*table.keys, NAME)]
+        params = [spec, *(p.replace(kind=inspect.Parameter.KEYWORD_ONLY) for p in own)]
+        command.__signature__ = inspect.Signature([params[0], *keys, *params[1:]])
+        command.__annotations__ = {p.name: p.annotation for p in (*params, *keys)}
+        return command
 
-
-def _check(name: str):
-    """The option of ``[spring]``'s key ``name`` of a spring you have."""
-    return _option(CHECK.key(name), CHECK)
+    return decorate
 
 
 JsonOut = Annotated[bool, common.flag("--json", help=JSON_HELP)]
 Xlsx = Annotated[str | None, common.option(
     "--xlsx", metavar="<path>", help="Write a workbook: the spring maker's sheet, the checks, "
-                                     "the force-length table.")]
+                                     "the force-length table, the inputs.")]
 Plots = Annotated[Path | None, common.option(
     "--plots", metavar="<path>", help="Write the plots (force-length; the fatigue diagram with "
                                       "a load cycle), PNG and SVG, into this folder.")]
@@ -87,50 +101,12 @@ def _finish(out, json_out: bool) -> None:
 
 @app.command("design", help=DESIGN_HELP, short_help="Design a spring (default).")
 @guarded
+@keyed(DESIGN)
 def design(
         spec: Annotated[Path | None, typer.Argument(
             help=rich_text("Spring spec file (TOML with units, a [spring] table of these "
                            "options with underscores); the options override it."),
             metavar="spec", show_default=False)] = None,
-        force: _design("force") = None,
-        stiffness: _design("stiffness") = None,
-        max_stiffness: _design("max_stiffness") = None,
-        allowable_stress: _design("allowable_stress") = None,
-        shear_modulus: _design("shear_modulus") = None,
-        density: _design("density") = None,
-        tensile_strength: _design("tensile_strength") = None,
-        correction: _design("correction") = None,
-        material: _design("material") = None,
-        kind: _design("kind") = None,
-        rules: _design("rules") = None,
-        ends: _design("ends") = None,
-        seating: _design("seating") = None,
-        objective: _design("objective") = None,
-        index_min: _design("index_min") = None,
-        index_max: _design("index_max") = None,
-        turns_min: _design("turns_min") = None,
-        turns_max: _design("turns_max") = None,
-        min_force: _design("min_force") = None,
-        fatigue_min_force: _design("fatigue_min_force") = None,
-        fatigue_max_force: _design("fatigue_max_force") = None,
-        min_fatigue_safety: _design("min_fatigue_safety") = None,
-        life: _design("life") = None,
-        peened: _design("peened") = None,
-        max_outer_diameter: _design("max_outer_diameter") = None,
-        max_body_length: _design("max_body_length") = None,
-        min_surge_frequency: _design("min_surge_frequency") = None,
-        min_wire_diameter: _design("min_wire_diameter") = None,
-        max_wire_diameter: _design("max_wire_diameter") = None,
-        min_inside_diameter: _design("min_inside_diameter") = None,
-        max_free_length: _design("max_free_length") = None,
-        max_solid_length: _design("max_solid_length") = None,
-        length_1: _design("length_1") = None,
-        length_2: _design("length_2") = None,
-        stroke: _design("stroke") = None,
-        wire_sizes: _design("wire_sizes") = None,
-        coil_step: _design("coil_step") = None,
-        loops: _design("loops") = None,
-        name: _option(NAME, DESIGN) = None,
         json_out: JsonOut = False,
         output: Annotated[str | None, common.option(
             "-o", "--output", metavar="<path>",
@@ -139,61 +115,29 @@ def design(
         xlsx: Xlsx = None,
         plots: Plots = None,
         replace: Replace = False,
+        **options,
 ) -> None:
     from ..spring_command import run
 
-    options = {k: v for k, v in locals().items()
-               if k not in ("spec", "json_out", "xlsx", "plots", "replace", "run", "output")}
     _finish(run(spec, json_out=json_out, xlsx=xlsx, plots=plots, output=output,
                 replace=replace, **options), json_out)
 
 
 @app.command("check", help=CHECK_HELP, short_help="Check a spring you have.")
 @guarded
+@keyed(CHECK)
 def check(
         spec: Annotated[Path | None, typer.Argument(
             help=rich_text("Spring spec file whose [spring] gives the spring (these options "
                            "with underscores); the options override it."), metavar="spec",
             show_default=False)] = None,
-        wire_diameter: _check("wire_diameter") = None,
-        mean_diameter: _check("mean_diameter") = None,
-        outer_diameter: _check("outer_diameter") = None,
-        active_coils: _check("active_coils") = None,
-        total_coils: _check("total_coils") = None,
-        free_length: _check("free_length") = None,
-        initial_tension: _check("initial_tension") = None,
-        tolerance_grade: _check("tolerance_grade") = None,
-        kind: _check("kind") = None,
-        material: _check("material") = None,
-        tensile_strength: _check("tensile_strength") = None,
-        shear_modulus: _check("shear_modulus") = None,
-        allowable_stress: _check("allowable_stress") = None,
-        density: _check("density") = None,
-        correction: _check("correction") = None,
-        rules: _check("rules") = None,
-        ends: _check("ends") = None,
-        seating: _check("seating") = None,
-        force: _check("force") = None,
-        min_force: _check("min_force") = None,
-        length_1: _check("length_1") = None,
-        length_2: _check("length_2") = None,
-        fatigue_min_force: _check("fatigue_min_force") = None,
-        fatigue_max_force: _check("fatigue_max_force") = None,
-        min_fatigue_safety: _check("min_fatigue_safety") = None,
-        life: _check("life") = None,
-        peened: _check("peened") = None,
-        index_min: _check("index_min") = None,
-        index_max: _check("index_max") = None,
-        loops: _check("loops") = None,
-        name: _option(NAME, CHECK) = None,
         json_out: JsonOut = False,
         xlsx: Xlsx = None,
         plots: Plots = None,
         replace: Replace = False,
+        **options,
 ) -> None:
     from ..spring_command import check as run_check
 
-    options = {k: v for k, v in locals().items()
-               if k not in ("spec", "json_out", "xlsx", "plots", "replace", "run_check")}
     _finish(run_check(spec, json_out=json_out, xlsx=xlsx, plots=plots, replace=replace,
                       **options), json_out)
