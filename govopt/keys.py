@@ -91,6 +91,7 @@ class Key:
     choices: tuple | Callable[[], tuple] = ()
     low: float | Callable | None = None
     high: float | Callable | None = None
+    high_inclusive: bool = False
     positive: bool = True
     nonnegative: bool = False
     range_text: str = ""
@@ -165,13 +166,15 @@ class Key:
         else:
             lo, hi = self.limit("low", None), self.limit("high", None)
             unit = f" {self.unit}" if self.unit else ""
+            close = "]" if self.high_inclusive else ")"
             if lo is not None and hi is not None:
-                text = f"({lo:g}, {hi:g}){unit}"
+                text = f"({lo:g}, {hi:g}{close}{unit}"
             elif lo is not None:
                 text = f"> {lo:g}{unit}"
             elif hi is not None:
-                text = (f"[0, {hi:g}){unit}" if self.nonnegative
-                        else f"(0, {hi:g}){unit}" if self.positive else f"< {hi:g}{unit}")
+                text = (f"[0, {hi:g}{close}{unit}" if self.nonnegative
+                        else f"(0, {hi:g}{close}{unit}" if self.positive
+                        else f"{'<=' if self.high_inclusive else '<'} {hi:g}{unit}")
             elif self.nonnegative:
                 text = ">= 0"
             elif self.positive:

@@ -113,8 +113,8 @@ class Reader:
     def _read(self, key: Key, values: dict, need: bool, default):
         name, kind = key.name, key.kind
         bounds = dict(low=key.limit("low", values), high=key.limit("high", values),
-                      positive=key.positive, nonnegative=key.nonnegative,
-                      range_text=key.range_text or None)
+                      high_inclusive=key.high_inclusive, positive=key.positive,
+                      nonnegative=key.nonnegative, range_text=key.range_text or None)
         if kind == WEIGHT:
             if key.shape == "pair":
                 return self.weight_pair(name, default, single=key.single,
@@ -127,6 +127,9 @@ class Reader:
             if (value is None and not need) or value in key.options():
                 self.used.add(name)
                 return default if value is None else value
+            if isinstance(value, str) and key.options():  # not one of its words
+                words = " or ".join(map(repr, key.options()))
+                self.fail(name, f"expected {words} or a list of {kind} strings, got {value!r}")
             return tuple(self.quantities(name, kind, **bounds))
         if kind == "choice":
             if need:
@@ -192,7 +195,7 @@ class Reader:
         return f"; the table has {close[0]!r}: did you mean {name!r}?" if close else ""
 
     def quantity(self, name, dimension, *, required=True, default=None, positive=True,
-                 nonnegative=False, low=None, high=None, range_text=None):
+                 nonnegative=False, low=None, high=None, range_text=None, high_inclusive=False):
         value = self.raw(name, required)
         if value is None:
             return default
@@ -200,13 +203,14 @@ class Reader:
             si = parse_quantity(value, dimension)
         except UnitError as exc:
             self.fail(name, str(exc))
-        self._check_range(name, value, si, positive, nonnegative, low, high, range_text)
+        self._check_range(name, value, si, positive, nonnegative, low, high, range_text,
+                          high_inclusive)
         self.entries.append(Entry(self.key(name), str(value), si, SI_UNITS[dimension],
                                   self._meaning))
         return si
 
     def number(self, name, *, required=True, default=None, positive=True, nonnegative=False,
-               low=None, high=None, integer=False, range_text=None):
+               low=None, high=None, integer=False, range_text=None, high_inclusive=False):
         """A bare number; with ``integer``, a whole number returned as ``int`` (2.5 is an error,
         never truncated)."""
         value = self.raw(name, required)
@@ -223,15 +227,17 @@ class Reader:
         if integer and not float(value).is_integer():
             self.fail(name, f"expected a whole number (a count), got {value!r}")
         self._check_range(name, value, float(value), positive, nonnegative, low, high,
-                          range_text)
+                          range_text, high_inclusive)
         self.entries.append(Entry(self.key(name), str(value), float(value), "", self._meaning))
         return int(value) if integer else float(value)
 
     def _check_range(self, name, written, si, positive, nonnegative, low, high,
-                     range_text=None):
-        if (low is not None and si <= low) or (high is not None and si >= high):
+                     range_text=None, high_inclusive=False):
+        above = high is not None and (si > high if high_inclusive else si >= high)
+        if (low is not None and si <= low) or above:
             text = range_text or f"({low if low is not None else '-inf'}, "\
-                                 f"{high if high is not None else 'inf'})"
+                                 f"{high if high is not None else 'inf'}" \
+                                 f"{']' if high_inclusive else ')'}"
             self.fail(name, f"must lie in {text}, got {written!r}")
         if nonnegative and si < 0:
             self.fail(name, f"must not be negative, got {written!r}")
@@ -242,10 +248,11 @@ class Reader:
         value = self.raw(name, False)
         if value is None:
             return default
-        if value not in choices:
+        if value not in choices or isinstance(value, bool):  # true is not the grade 1
             self.fail(name, f"expected one of {', '.join(map(repr, choices))}, got {value!r}")
-        self.entries.append(Entry(self.key(name), str(value), value, "", self._meaning))
-        return value
+        chosen = next(c for c in choices if c == value)  # the choice itself: 2.0 given is 2
+        self.entries.append(Entry(self.key(name), str(value), chosen, "", self._meaning))
+        return chosen
 
     def text(self, name, default=""):
         value = self.raw(name, False)

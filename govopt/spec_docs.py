@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import json
 import math
+import os
+import re
 import sys
 import textwrap
 import tomllib
@@ -41,7 +43,9 @@ INTRO = """\
 Generated from the declarations of the keys in the code (`python -m govopt.spec_docs
 docs/reference/spec.md` writes this file; a test fails when it is stale): do not edit it by
 hand. `govopt init --type TYPE` writes a commented spec of a type with every key;
-`govopt schema` writes the JSON Schema editors read for completion and checking.
+`govopt schema` writes the JSON Schema editors read for completion and checking. The spring
+spec files of `govopt spring` and `govopt spring check` have their own page:
+[spring-spec.md](spring-spec.md).
 
 A spec is a TOML file. A quantity is a string with its unit, in any unit of its dimension
 (`"18 cm"`, `"240 rpm"`, `"4000 kgf/cm^2"`, `"64 deg + 40 arcmin"`); govopt works in SI inside,
@@ -134,6 +138,50 @@ def reference() -> str:
     return "\n".join(out).rstrip() + "\n"
 
 
+SPRING_INTRO = """\
+# Spring spec file reference
+
+Generated from the declarations of the keys in the code (`python -m govopt.spec_docs
+docs/reference/spring-spec.md` writes this file; a test fails when it is stale): do not edit it
+by hand. The governor spec file has its own page: [spec.md](spec.md).
+
+A spring spec is the file `govopt spring` (a spring to design) and `govopt spring check` (a
+spring you have) read: TOML with units, as a governor spec (a quantity is a string with its unit,
+in any unit of its dimension; the columns below give the SI unit). It has a `name`, a
+`description` and a `[spring]` table whose keys are the command's options with underscores:
+`max_outer_diameter = "40 mm"` is `--max-outer-diameter "40 mm"`, and an option given on the
+command line overrides the file's key. The report speaks the units the spring is written in.
+
+`[spring]` takes one of three forms, told apart by its keys: a spring's geometry
+(`wire_diameter`, `mean_diameter` ...) makes it a spring to check, `problem` a problem of the
+literature, anything else a spring to design. `govopt init --type spring` and `govopt init
+--type spring-check` write a commented spec of a spring to design and of one to check, every key
+with its meaning, that run as written; `govopt schema` writes the JSON Schema editors read, which
+covers spring specs too. A key not declared here is an error.
+"""
+
+
+def spring_reference() -> str:
+    """``docs/reference/spring-spec.md``: the top level of a spring spec and each form of its
+    ``[spring]`` (:data:`govopt.spring_keys.FORMS`) with its keys, defaults and ranges."""
+    from .spring_keys import FORMS, TEMPLATES, top_table
+
+    inits = {form: name for name, (form, _, _) in TEMPLATES.items()}
+    out = [SPRING_INTRO, "## Contents", ""]
+    out += [f"- [{name}](#{_anchor(name)}): {table.meaning.split(':')[0]} (`{command} "
+            "SPEC`)" for name, (table, command) in FORMS.items()]
+    out += ["- [top level](#top-level): `name`, `description`, `[spring]`", ""]
+    for name, (table, command) in FORMS.items():
+        init = (f" `govopt init --type {inits[name]}` writes one with every key."
+                if name in inits else "")
+        out += [f"## {name}", "", f"Read by `{command} SPEC`.{init}", ""]
+        out += table_markdown(table, f"### {name}: [spring]")
+    out += ["## top level", ""]
+    out += table_markdown(top_table("the spring: a spring to design, a problem of the "
+                                    "literature or a spring to check (above)"), "### top level")
+    return "\n".join(out).rstrip() + "\n"
+
+
 def _anchor(name: str) -> str:
     """The anchor GitHub gives the heading ``### [name]``."""
     return name.replace(".", "").replace(" ", "-").lower()
@@ -206,6 +254,52 @@ def describe(key: Key) -> str:
             + (f" ({key.source})" if key.source else "") + ".")
 
 
+def option_help(key: Key, table: Table, reference: str = "docs/reference/spring-spec.md") -> str:
+    """The help of the command-line option of ``key`` of ``table`` (``--max-outer-diameter``
+    for ``max_outer_diameter``: a spring spec's keys are `govopt spring`'s options): its meaning
+    and unit (an example in the unit), its choices where they are known without loading
+    anything, its default or that it is required, and when it applies; the table's keys it
+    names written as options; choices loaded on first use are pointed to in ``reference``.
+    Loads nothing (a command's ``--help`` builds it).
+
+    >>> from govopt.spring_keys import DESIGN
+    >>> option_help(DESIGN.key("max_outer_diameter"), DESIGN)
+    "The largest outside diameter D + d (the bore it works in): a length, e.g. '40 mm'."
+    >>> option_help(DESIGN.key("length_1"), DESIGN)
+    "The working (installed) length L1 at --min-force: a length, e.g. '80 mm'. Applies to \
+compression springs."
+    """
+    dim = key.dimension
+    example = key.example if key.example is not None else EXAMPLES.get(dim or "")
+    if key.shape == "list":
+        what = (" or ".join(f"'{c}'" for c in key.options()) + f", or {dim}s as one text, "
+                f"e.g. '{', '.join(example)}'")
+    elif key.quantity:
+        what = f"a {dim.replace('_', ' ')}, e.g. '{example}'"
+    elif key.kind == "choice" and isinstance(key.choices, tuple):
+        what = "one of " + ", ".join(f"'{c}'" if isinstance(c, str) else str(c)
+                                     for c in key.choices)
+    elif key.kind == "choice":  # loaded on first use: where they are listed
+        what = f"a name listed in {reference}" + (f", e.g. '{example}'" if example else "")
+    elif key.kind in ("number", "count"):
+        words = key.range_words()
+        what = f"a number in {words}" if words not in ("> 0", ">= 0") else ""
+    else:
+        what = ""
+    text = key.meaning[0].upper() + key.meaning[1:] + (f": {what}." if what else ".")
+    if key.required:
+        text += " Required (here or in the spec)."
+    elif key.default is not None or key.default_text:
+        text += f" Default: {key.default_words()}."
+    if key.when:
+        text += f" Applies {key.when}."
+    names = sorted((n for n in table.names if "_" in n), key=len, reverse=True)
+    if names:
+        text = re.sub(r"(?<![\w/.])(" + "|".join(names) + r")(?!\w|\.\w)",
+                      lambda m: "--" + m[1].replace("_", "-"), text)
+    return text
+
+
 def _comment(key: Key) -> list[str]:
     """The comment above a key in a template (:func:`describe`)."""
     return ["# " + line for line in textwrap.wrap(describe(key), 96)]
@@ -248,7 +342,10 @@ def template(type_name: str) -> str:
     from .examples import example
     from .governors import governor_class
     from .spec_keys import spec_tables
+    from .spring_keys import TEMPLATES
 
+    if type_name in TEMPLATES:
+        return spring_template(type_name)
     cls = governor_class(type_name)
     source = example(cls.example)
     data = tomllib.loads(source.read_text(encoding="utf-8"))
@@ -285,15 +382,52 @@ def template(type_name: str) -> str:
     return "\n".join(out) + "\n"
 
 
-def main(argv: list[str] | None = None) -> None:
-    """``python -m govopt.spec_docs [PATH]``: the reference, to PATH or stdout."""
-    argv = sys.argv[1:] if argv is None else argv
-    text = reference()
-    if argv:
-        with open(argv[0], "w", encoding="utf-8") as fh:
-            fh.write(text)
+def spring_template(name: str) -> str:
+    """The spring spec ``govopt init --type NAME`` writes (``spring``, ``spring-check``:
+    :data:`govopt.spring_keys.TEMPLATES`): every key of its ``[spring]``, each with its meaning
+    as a comment; the values are a bundled example's or the template's own, the keys they leave
+    out commented, with their defaults or a value to start from; its command runs it as
+    written."""
+    from .examples import example
+    from .spring_keys import FORMS, TEMPLATES, top_table
+
+    form, start, description = TEMPLATES[name]
+    table, command = FORMS[form]
+    if isinstance(start, str):
+        data = tomllib.loads(example(start).read_text(encoding="utf-8"))["spring"]
+        origin = f"the bundled example {start} (`govopt init {start}`)"
     else:
-        sys.stdout.write(text)
+        data, origin = start, "a spring to start from"
+    out = [f"# A spring spec: {description} (`{command}`).",
+           f"# Written by `govopt init --type {name}`: every key of [spring], each with its "
+           "meaning; the values",
+           f"# are {origin}, so `{command} FILE` runs it as written.",
+           "# A key commented out takes its default. Each key is an option too (max_outer_diameter",
+           f"# is --max-outer-diameter), which overrides the file: see `{command} --help`.",
+           "# docs/reference/spring-spec.md lists every key; for completion in an editor,",
+           "# `govopt schema -o govopt.schema.json` and `#:schema ./govopt.schema.json` as this "
+           "file's first line.", ""]
+    top = top_table(table.meaning)
+    for key, value in zip(top.keys, (name, description), strict=False):
+        out += _comment(key) + [f"{key.name} = {_toml(value)}"]
+    return "\n".join(out + [""] + _table_lines(table, data, {})) + "\n"
+
+
+#: the reference pages ``python -m govopt.spec_docs PATH ...`` writes, by file name
+PAGES = {"spec.md": reference, "spring-spec.md": spring_reference}
+
+
+def main(argv: list[str] | None = None) -> None:
+    """``python -m govopt.spec_docs [PATH ...]``: each reference page its file name names
+    (:data:`PAGES`; another name, the governor spec's), to PATH, or the governor spec's to
+    stdout."""
+    argv = sys.argv[1:] if argv is None else argv
+    if not argv:
+        sys.stdout.write(reference())
+    for path in argv:
+        text = PAGES.get(os.path.basename(path), reference)()
+        with open(path, "w", encoding="utf-8") as fh:
+            fh.write(text)
 
 
 if __name__ == "__main__":

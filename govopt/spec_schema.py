@@ -1,13 +1,16 @@
-"""The JSON Schema of a governor spec file, generated from the key declarations
-(:mod:`govopt.keys`, :func:`govopt.spec_keys.spec_tables`): ``govopt schema`` writes it for TOML
-editors (Even Better TOML / taplo: completion, hover text and checking as the file is typed).
+"""The JSON Schema of a spec file, governor or spring, generated from the key declarations
+(:mod:`govopt.keys`; :func:`govopt.spec_keys.spec_tables`, :mod:`govopt.spring_keys`): ``govopt
+schema`` writes it for TOML editors (Even Better TOML / taplo: completion, hover text and
+checking as the file is typed).
 
-Draft-07. The base schema names the governor types; for each type an ``if``/``then`` pair
-closes every table to the type's declared keys (a misspelt key is an error, as in the parser),
-quantities must be strings with a unit (a bare number, or a string of digits, is not a length),
-choices are enumerations and static ranges are limits. What only the parser can check (a
-quantity's dimension, ranges that depend on other keys, keys required in one configuration)
-stays the parser's.
+Draft-07. A file with ``[governor]`` is a governor spec, any other a spring spec (the command
+that reads each refuses the other's keys). The governor branch names the governor types; for
+each type an ``if``/``then`` pair closes every table to the type's declared keys (a misspelt key
+is an error, as in the parser); the spring branch closes ``[spring]`` to the keys of its form
+(:func:`spring_schema`). Quantities must be strings with a unit (a bare number, or a string of
+digits, is not a length), choices are enumerations and static ranges are limits. What only the
+parser can check (a quantity's dimension, ranges that depend on other keys, keys required in one
+configuration) stays the parser's.
 """
 
 from __future__ import annotations
@@ -25,7 +28,7 @@ UNIT_PATTERN = "[A-DF-Za-df-z_°µ'\"%]"
 
 def _limits(key: Key) -> dict:
     """JSON Schema limits of a bare number from the declaration's static range (the reader's:
-    exclusive ``low`` and ``high``, and positive or not negative)."""
+    exclusive ``low`` and ``high`` unless ``high_inclusive``, and positive or not negative)."""
     out = {}
     if key.nonnegative:
         out["minimum"] = 0
@@ -36,7 +39,7 @@ def _limits(key: Key) -> dict:
     if lo is not None and math.isfinite(lo):
         out["exclusiveMinimum"] = max(lo, out.get("exclusiveMinimum", lo))
     if hi is not None and math.isfinite(hi):
-        out["exclusiveMaximum"] = hi
+        out["maximum" if key.high_inclusive else "exclusiveMaximum"] = hi
     return out
 
 
@@ -110,9 +113,9 @@ def table_schema(table: Table, tables: dict[str, Table]) -> dict:
     return out
 
 
-def schema() -> dict:
-    """The JSON Schema (draft-07) of a governor spec file, every type's tables closed to their
-    declared keys."""
+def governor_schema() -> dict:
+    """The schema of a governor spec file: the governor types named, every type's tables closed
+    to their declared keys."""
     from .governors import REGISTRY, governor_class
     from .spec_keys import spec_tables
 
@@ -126,12 +129,8 @@ def schema() -> dict:
             "then": {**table_schema(tables[""], tables),
                      "description": f"{governor_class(name).title}"}})
     return {
-        "$schema": "http://json-schema.org/draft-07/schema#",
-        "title": "govopt governor spec",
-        "description": "A govopt spec file (TOML with units): the governor, the speeds, the "
-                       "spring's material, a design to evaluate or the requirements of one to "
-                       "find. docs/reference/spec.md lists every key.",
-        "type": "object",
+        "description": "a governor spec: the governor, the speeds, the spring's material, a "
+                       "design to evaluate or the requirements of one to find",
         "properties": {"governor": {
             "type": "object", "description": "the governor: its type and geometry",
             "properties": {"type": {"enum": list(REGISTRY),
@@ -139,6 +138,56 @@ def schema() -> dict:
             "required": ["type"]}},
         "required": ["governor"],
         "allOf": branches,
+    }
+
+
+def spring_schema() -> dict:
+    """The schema of a spring spec file (`govopt spring`, `govopt spring check`): its
+    ``[spring]`` closed to the keys of its form, told apart as the parser tells them
+    (:func:`govopt.spring_keys.form`): ``problem`` names a problem of the literature, a
+    spring's geometry makes a spring to check, anything else is a spring to design."""
+    from .spring_keys import FORMS, GEOMETRY, PROBLEMS, tables
+
+    def closed(name: str) -> dict:
+        found = tables(name)
+        return {**table_schema(found[""], found), "description": found["spring"].meaning}
+
+    has = {"problem": {"properties": {"spring": {"required": ["problem"]}}},
+           "geometry": {"properties": {"spring": {"anyOf": [{"required": [k.name]}
+                                                            for k in GEOMETRY]}}}}
+    assert set(FORMS) == {"design", "check", *PROBLEMS}
+    return {
+        "description": "a spring spec: a spring to design (govopt spring), a problem of the "
+                       "literature, or a spring you have (govopt spring check)",
+        "required": ["spring"],
+        "if": has["problem"], "then": closed(PROBLEMS[0]),
+        "else": {"if": has["geometry"], "then": closed("check"), "else": closed("design")},
+    }
+
+
+def schema() -> dict:
+    """The JSON Schema (draft-07) of a spec file: a governor spec where it has ``[governor]``,
+    else a spring spec (a governor spec's ``[spring]`` is its spring's form, so ``[spring]``
+    cannot tell the two apart; ``if``/``then``/``else`` gives an editor the one kind's
+    messages, where ``oneOf`` would report every kind's)."""
+    return {
+        "$schema": "http://json-schema.org/draft-07/schema#",
+        "title": "govopt spec",
+        "description": "A govopt spec file (TOML with units): a governor spec ([governor]: "
+                       "docs/reference/spec.md lists every key) or a spring spec ([spring] "
+                       "without [governor], for govopt spring: docs/reference/spring-spec.md).",
+        "type": "object",
+        "properties": {
+            "name": {"type": "string", "description": "the spec's name in reports"},
+            "description": {"type": "string",
+                            "description": "one line saying what the spec is"},
+            "governor": {"type": "object", "description": "a governor spec's governor: its "
+                                                          "type and geometry"},
+            "spring": {"type": "object", "description": "a spring spec's spring (govopt "
+                                                        "spring), or a governor's spring form"}},
+        "if": {"required": ["governor"]},
+        "then": governor_schema(),
+        "else": spring_schema(),
     }
 
 

@@ -9,6 +9,9 @@ options with underscores (``force = "500 N"``, ``max_outer_diameter = "40 mm"``,
 (:func:`govopt.optimize.spring_literature.solve_sandgren`) with its data as keys. A spec whose
 ``[spring]`` gives a spring's geometry (``wire_diameter``, ``mean_diameter`` ...) is checked
 (`govopt spring check SPEC`), and `govopt spring -o SPEC` writes one of the designed spring.
+Every key, and so every option, is declared once in :mod:`govopt.spring_keys` (meaning, unit,
+default, range) and read by its declaration (:func:`merged`); the options' help, the reference
+``docs/reference/spring-spec.md``, the templates and the JSON Schema are generated from it.
 
 The design's problem statements beyond a force and a stiffness:
 
@@ -43,89 +46,31 @@ from typing import Any
 
 from .errors import GovoptError
 from .reader import Reader, read_spec_data
+from .spring_keys import (
+    CHECK,
+    DESCRIPTION,
+    DESIGN,
+    FORMS,
+    GEOMETRY,
+    NAME,
+    OBJECTIVES,
+    SANDGREN,
+    defaults,
+    form,
+    top_table,
+)
 
-#: option -> (kind, detail): ``quantity`` (its dimension), ``number`` (what it must be: a
-#: positive finite number), ``choice`` (None: the allowed values are looked up), ``flag``,
-#: ``text``. The spec's ``[spring]`` keys are these names.
-OPTIONS: dict[str, tuple[str, Any]] = {
-    "force": ("quantity", "force"), "stiffness": ("quantity", "stiffness"),
-    "max_stiffness": ("quantity", "stiffness"),
-    "allowable_stress": ("quantity", "stress"), "shear_modulus": ("quantity", "stress"),
-    "density": ("quantity", "density"), "tensile_strength": ("quantity", "stress"),
-    "correction": ("choice", ("wahl", "bergstrasser", "none")), "material": ("choice", None),
-    "kind": ("choice", ("compression", "extension")), "rules": ("choice", None),
-    "ends": ("choice", None), "seating": ("choice", None), "objective": ("choice", None),
-    "index_min": ("number", "a positive spring index"),
-    "index_max": ("number", "a positive spring index"),
-    "turns_min": ("number", "a positive number of turns"),
-    "turns_max": ("number", "a positive number of turns"),
-    "min_force": ("quantity", "force"), "fatigue_min_force": ("quantity", "force"),
-    "fatigue_max_force": ("quantity", "force"),
-    "min_fatigue_safety": ("number", "a positive safety factor"),
-    "life": ("number", "a positive number of cycles"), "peened": ("flag", None),
-    "max_outer_diameter": ("quantity", "length"), "max_body_length": ("quantity", "length"),
-    "min_surge_frequency": ("quantity", "frequency"),
-    "min_wire_diameter": ("quantity", "length"), "max_wire_diameter": ("quantity", "length"),
-    "min_inside_diameter": ("quantity", "length"), "max_free_length": ("quantity", "length"),
-    "max_solid_length": ("quantity", "length"), "length_1": ("quantity", "length"),
-    "length_2": ("quantity", "length"), "stroke": ("quantity", "length"),
-}
-
-# ---- keys of springs that can be ordered and of springs checked as they are ---------------
-# (one block: to be declared with the spec keys' declarations; the check's keys are the
-# design's that describe the material, the loads and the rules, and these)
-#: design: ordering and naming
-ORDER_OPTIONS: dict[str, tuple[str, Any]] = {
-    "wire_sizes": ("sizes", None), "coil_step": ("number", "a step of coils in (0, 1]"),
-    "loops": ("choice", None), "name": ("text", None),
-}
-#: check: the spring's geometry, and what it shares with the design
-CHECK_OPTIONS: dict[str, tuple[str, Any]] = {
-    "wire_diameter": ("quantity", "length"), "mean_diameter": ("quantity", "length"),
-    "outer_diameter": ("quantity", "length"), "active_coils": ("number", "a number of coils"),
-    "total_coils": ("number", "a number of coils"), "free_length": ("quantity", "length"),
-    "initial_tension": ("quantity", "force"), "tolerance_grade": ("number", "1, 2 or 3"),
-    **{k: OPTIONS[k] for k in (
-        "kind", "material", "tensile_strength", "shear_modulus", "allowable_stress", "density",
-        "correction", "rules", "ends", "seating", "force", "min_force", "length_1",
-        "length_2", "fatigue_min_force", "fatigue_max_force", "min_fatigue_safety", "life",
-        "peened", "index_min", "index_max")},
-    "loops": ORDER_OPTIONS["loops"], "name": ORDER_OPTIONS["name"],
-}
-#: the geometry a design spec cannot have (it is a check's)
-GEOMETRY_KEYS = ("wire_diameter", "mean_diameter", "outer_diameter", "active_coils",
-                 "total_coils", "free_length", "initial_tension")
-# ---- end of the block ------------------------------------------------------------------------
-
-#: the spec-only keys of Sandgren's problem (``problem = "sandgren-1990"``)
-SANDGREN_KEYS = {"force": "force", "min_force": "force", "allowable_stress": "stress",
-                 "shear_modulus": "stress", "max_free_length": "length",
-                 "min_wire_diameter": "length", "max_outer_diameter": "length",
-                 "max_preload_deflection": "length", "min_working_deflection": "length"}
-PROBLEMS = ("sandgren-1990",)
-
-#: defaults of the options (applied after the spec and the options are merged)
-DEFAULTS = {"kind": "compression", "rules": "EN13906", "index_min": 4.0, "index_max": 12.0,
-            "turns_min": 3.0, "min_fatigue_safety": 1.0, "life": 1e7, "peened": False,
-            "seating": "fixed-fixed", "objective": "mass"}
-#: the check's: EN 13906-1's index range for cold-coiled springs, EN 15800 grade 2
-CHECK_DEFAULTS = {"kind": "compression", "rules": "EN13906", "index_min": 4.0,
-                  "index_max": 20.0, "min_fatigue_safety": 1.0, "life": 1e7, "peened": False,
-                  "seating": "fixed-fixed", "tolerance_grade": 2}
-
-#: ``govopt spring --objective`` choices and the GP objective each minimises
-OBJECTIVES = {"mass": "mass", "volume": "volume", "solid length": "solid length",
-              "outer diameter": "outer diameter", "energy per mass": "mass per energy"}
-#: coil steps a spring maker winds to (any in (0, 1] is accepted)
-COIL_STEPS = (0.25, 0.5, 1.0)
+#: where a person finds the keys of each form of ``[spring]`` (errors on an unknown key)
+GUIDE = "docs/reference/spring-spec.md under"
 
 
 @dataclass
 class Outcome:
     """What `govopt spring` prints (its text, its JSON), the checks the verdict reads (exit
     code 1 when one fails), the spring's assessment and the optimiser's record (None for a
-    check), the problem's values (SI, defaults applied), the units shown and the files
-    written."""
+    check), the problem's values (SI, defaults applied), the units shown, the files written,
+    and the inputs read (:class:`govopt.reader.Entry` s, each with its declared meaning) with
+    the spec file they came from (None: the options alone)."""
 
     name: str
     command: str
@@ -139,6 +84,8 @@ class Outcome:
     data: dict = field(default_factory=dict)
     sizing: Any = None
     written: list = field(default_factory=list)
+    entries: list = field(default_factory=list)
+    spec: str | None = None
 
     @property
     def failed(self) -> list[str]:
@@ -177,108 +124,90 @@ def _option_reader(options: dict, entries: list):
         def key(self, name: str) -> str:
             return "--" + name.replace("_", "-")
 
-    return Options("", options, "", entries)
+    return Options("", _listed(options), "", entries)
 
 
-def _read(rd, key: str, problem: str | None, table: dict):
-    """One value through :class:`govopt.reader.Reader` (units, types, ranges; errors ``FILE:
-    spring.KEY: ...`` or ``--key: ...``), in SI."""
-    if problem:  # the literature problem's data: positive quantities
-        return rd.quantity(key, SANDGREN_KEYS[key], required=False)
-    kind, detail = table[key]
-    if kind == "quantity":  # the lower forces of a cycle may be zero
-        return rd.quantity(key, detail, required=False,
-                           nonnegative=key in ("min_force", "fatigue_min_force",
-                                               "initial_tension"))
-    if key == "tolerance_grade":
-        value = rd.number(key, required=False, integer=True)
-        if value is not None and value not in (1, 2, 3):
-            rd.fail(key, f"expected an EN 15800 quality grade 1, 2 or 3, got {value!r}")
-        return value
-    if kind == "number":
-        value = rd.number(key, required=False)
-        if key == "coil_step" and value is not None and not value <= 1.0:
-            rd.fail(key, f"expected a step of coils in (0, 1] ({', '.join(map(str, COIL_STEPS))}"
-                         f" usual), got {value!r}")
-        return value
-    if kind == "flag":
-        return rd.boolean(key, None)
-    if kind == "text":
-        return rd.text(key, None)
-    if kind == "sizes":
-        return _sizes(rd, key)
-    return rd.choice(key, _choices(key, table), None)
-
-
-def _sizes(rd, key: str):
-    """``wire_sizes``: ``"preferred"``, ``"continuous"``, or wire diameters (a list in a
-    spec, or one text with commas: ``"2.5 mm, 2.8 mm, 3 mm"``), SI, rising."""
-    raw = rd.raw(key, False)
-    if raw is None:
-        return None
-    if isinstance(raw, str) and raw.strip() in ("preferred", "continuous"):
-        return raw.strip()
-    if isinstance(raw, str):
-        items = [x.strip() for x in raw.split(",") if x.strip()]
-        if not items:
-            rd.fail(key, "expected 'preferred', 'continuous' or wire diameters, e.g. '2.5 mm, "
-                         "2.8 mm'")
-        sub = Reader(rd.file, {key: items}, rd.path, rd.entries)
-        sub.key = rd.key  # type: ignore[method-assign]
-        return tuple(sorted(sub.quantities(key, "length")))
-    return tuple(sorted(rd.quantities(key, "length")))
-
-
-def _choices(key: str, table: dict):
-    from .springs import helical, materials
-
-    return {"material": materials.GRADES, "rules": materials.METHODS,
-            "ends": tuple(helical.END_FORMS), "loops": tuple(helical.HOOKS),
-            "seating": tuple(helical.SEATING),
-            "objective": tuple(OBJECTIVES)}.get(key) or table[key][1]
+def _listed(table: dict) -> dict:
+    """``wire_sizes`` written as one text, ``"2.5 mm, 2.8 mm, 3 mm"`` (an option's, or a
+    spec's), as the list it is (a word of its choices stays a word)."""
+    value = table.get("wire_sizes")
+    if isinstance(value, str):
+        words = value.strip()
+        items = [x.strip() for x in words.split(",") if x.strip()]
+        choices = DESIGN.key("wire_sizes").options()
+        table["wire_sizes"] = words if words in choices or not items else items
+    return table
 
 
 def merged(spec: str | Path | None, options: dict, command: str = "design"
            ) -> tuple[dict, _Where, str | None, str, list]:
-    """The spec's values overridden by the options given (not None), read through the
-    governor spec's :class:`govopt.reader.Reader` (unknown keys with a did-you-mean, units,
-    types), in SI; the :class:`_Where` naming each value's origin, the literature problem, the
-    name and the entries read (for the units shown)."""
+    """The spec's values overridden by the options given (not None), each read by its
+    declaration (:mod:`govopt.spring_keys`) through :class:`govopt.reader.Reader` (units,
+    types, ranges; unknown keys with a did-you-mean), in SI; the :class:`_Where` naming each
+    value's origin, the literature problem, the name and the entries read (for the units
+    shown)."""
     entries: list = []
     given = {k: v for k, v in options.items() if v is not None}
-    table = CHECK_OPTIONS if command == "check" else {**OPTIONS, **ORDER_OPTIONS}
     opts, sp, problem, name = _option_reader(given, entries), None, None, ""
+    if "name" in given:
+        name = opts.read(NAME)
+        del given["name"]
+    shape = command  # the form of [spring] read: "design", "check" or a problem's name
     if spec is not None:
-        top = Reader(str(spec), read_spec_data(spec), "", entries)
-        name = top.text("name") or Path(spec).stem
-        top.text("description")
+        data = read_spec_data(spec)
+        if command == "design" and isinstance(data.get("spring"), dict):
+            shape = form(data["spring"])  # a problem's; a spring's geometry is refused below
+    table = FORMS[shape][0]
+    if spec is not None:
+        top = Reader(str(spec), data, "", entries, top_table(table.meaning))
+        top.guide = f"{GUIDE} {shape}:"
+        written = top.read(NAME) or Path(spec).stem
+        name = name or written  # --name over the spec's
+        top.read(DESCRIPTION)
         if not top.has("spring"):
             top.fail("spring", "missing (required: a [spring] table)")
-        sp = top.sub("spring")
+        sp = top.sub("spring", declared=table)
         top.finish()
-        if command == "design":
-            problem = sp.choice("problem", PROBLEMS, None)
-            geometry = [k for k in GEOMETRY_KEYS if sp.has(k)]
-            if geometry and not problem:
-                sp.fail(geometry[0], f"a spring's geometry: check it with 'govopt spring check "
-                                     f"{spec}' (a design spec states forces and limits)")
-        for key in SANDGREN_KEYS if problem else table:
-            sp.raw(key, False)  # the keys allowed here
+        if command == "design" and shape == "check":
+            geometry = next(k.name for k in GEOMETRY if sp.has(k.name))
+            sp.fail(geometry, f"a spring's geometry: check it with 'govopt spring check {spec}' "
+                              "(a design spec states forces and limits)")
+        _listed(sp.table)
+        if table is SANDGREN:
+            problem = sp.read(SANDGREN.key("problem"))
+        _another_forms_key(sp, shape)
+        sp.used.update(table.names)  # read below, where no option overrides it
         sp.finish()
-    allowed = SANDGREN_KEYS if problem else table
-    from_file = set() if sp is None else {k for k in allowed if sp.has(k)} - set(given)
+    keys = [k for k in table.keys if k.name != "problem"]
+    from_file = set() if sp is None else {k.name for k in keys if sp.has(k.name)} - set(given)
     where = _Where(None if spec is None else str(spec), from_file,
                    "spring check" if command == "check" else "spring")
     for key in given:
-        if key not in allowed:
-            where.fail(key, f"not a value of the problem {problem!r} of {spec} (its "
-                            f"values: {', '.join(sorted(SANDGREN_KEYS))})")
+        if key not in table.names:
+            where.fail(key, f"not a value of the problem {problem!r} of {spec} (its values: "
+                            f"{', '.join(sorted(k.name for k in keys))})")
     values = {}
-    for key in allowed:
-        rd = opts if key in given else sp if key in from_file else None
+    for key in keys:
+        rd = opts if key.name in given else sp if key.name in from_file else None
         if rd is not None:
-            values[key] = _read(rd, key, problem, allowed if not problem else SANDGREN_KEYS)
-    return values, where, problem, values.pop("name", None) or name, entries
+            values[key.name] = rd.read(key, required=False)
+    if isinstance(values.get("wire_sizes"), tuple):
+        values["wire_sizes"] = tuple(sorted(values["wire_sizes"]))
+    return values, where, problem, name, entries
+
+
+def _another_forms_key(sp: Reader, shape: str) -> None:
+    """A key of another form of ``[spring]`` than ``shape`` (:data:`govopt.spring_keys.FORMS`:
+    ``stiffness`` in a spring to check) named as such, not as an unknown key."""
+    def what(name: str) -> str:
+        spring, command = FORMS[name]
+        also = f', with problem = "{name}"' if spring is SANDGREN else ""
+        return f"{spring.meaning.split(':')[0]} ({command}{also})"
+
+    for key in map(str, sp.table):
+        other = next((n for n, (spring, _) in FORMS.items() if key in spring.names), None)
+        if key not in FORMS[shape][0].names and other is not None:
+            sp.fail(key, f"not a key of {what(shape)}; it is one of {what(other)}")
 
 
 def _outputs(xlsx, plots, output, stem: str, replace: bool, inputs) -> None:
@@ -324,7 +253,8 @@ def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, pl
 
     with overwrite_option("--replace"):  # this command's --force is the spring's force
         _outputs(xlsx, plots, output, stem, replace, [] if spec is None else [spec])
-        out = _design({**DEFAULTS, **values}, where, name, entries)
+        out = _design({**defaults(DESIGN), **values}, where, name, entries)
+        out.spec = where.file
         _render(out, json_out)
         return _write(out, xlsx, plots, output, stem, replace, spec)
 
@@ -339,7 +269,8 @@ def check(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, 
 
     with overwrite_option("--replace"):
         _outputs(xlsx, plots, None, stem, replace, [] if spec is None else [spec])
-        out = _check({**CHECK_DEFAULTS, **values}, where, name, entries)
+        out = _check({**defaults(CHECK), **values}, where, name, entries)
+        out.spec = where.file
         _render(out, json_out)
         return _write(out, xlsx, plots, None, stem, replace, spec)
 
@@ -449,7 +380,7 @@ def _outcome(name, command, assessment, record, entries, v, notes=(), sizing=Non
                     f"{shown.text(sp.D, 'm', 4)}, n {assessment.value('active coils'):.4g}"
                     f"{grade}")
     return Outcome(name, command, assessment, record, list(assessment.checks), shown, v,
-                   [*notes, *assessment.notes], sizing=sizing)
+                   [*notes, *assessment.notes], sizing=sizing, entries=list(entries))
 
 
 # ---------------------------------------------------------------------------- design
@@ -666,7 +597,7 @@ def _sandgren(raw: dict, where: _Where, name: str) -> Outcome:
     scale = {"length": inch, "force": lbf, "stress": lbf / inch**2}
     p = dict(sl.SANDGREN)
     for key, q in raw.items():  # SI (read by merged) -> the problem's units
-        p[sl.SANDGREN_DATA[key]] = q / scale[SANDGREN_KEYS[key]]
+        p[sl.SANDGREN_DATA[key]] = q / scale[SANDGREN.key(key).kind]
     if not p["F_load"] < p["F_max"]:
         where.fail("min_force", "expected below the force")
     best = sl.solve_sandgren(p)
@@ -689,5 +620,4 @@ def _sandgren(raw: dict, where: _Where, name: str) -> Outcome:
                    notes)
 
 
-__all__ = ["CHECK_OPTIONS", "DEFAULTS", "OBJECTIVES", "OPTIONS", "ORDER_OPTIONS", "Outcome",
-           "check", "merged", "run"]
+__all__ = ["Outcome", "check", "merged", "run"]

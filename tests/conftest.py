@@ -42,3 +42,15 @@ def pytest_collection_modifyitems(items):
     instead of ending the run alone. The sort is stable, so the order is the same in every
     worker, as pytest-xdist requires."""
     items.sort(key=lambda item: item.get_closest_marker("slow") is None)
+
+
+@pytest.fixture(scope="session")
+def validator():
+    """A real JSON Schema validator (the ``jsonschema`` package) of ``govopt schema``'s schema,
+    itself checked against draft-07."""
+    jsonschema = pytest.importorskip("jsonschema")
+    from govopt.spec_schema import schema
+
+    found = schema()
+    jsonschema.Draft7Validator.check_schema(found)
+    return jsonschema.Draft7Validator(found)

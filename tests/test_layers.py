@@ -28,7 +28,7 @@ LAYERS = (
     ("seam", ()),
     ("analysis", ("govopt.analysis", "govopt.fidelity")),
     ("governor types", ("govopt.governors",)),
-    ("parser", ("govopt.reader", "govopt.spec", "govopt.spec_keys")),
+    ("parser", ("govopt.reader", "govopt.spec", "govopt.spec_keys", "govopt.spring_keys")),
     ("evaluator", ("govopt.result", "govopt.requirements", "govopt.evaluator", "govopt.bulk",
                    "govopt.made", "govopt.made_words")),
     ("optimize", ("govopt.optimize",)),

@@ -129,16 +129,6 @@ def test_init_needs_one_of_name_or_type(tmp_path):
     assert run.exit_code == 2 and "--type: expected one of shaft" in run.stderr
 
 
-@pytest.fixture(scope="module")
-def validator():
-    jsonschema = pytest.importorskip("jsonschema")
-    from govopt.spec_schema import schema
-
-    found = schema()
-    jsonschema.Draft7Validator.check_schema(found)
-    return jsonschema.Draft7Validator(found)
-
-
 def test_schema_validates_every_bundled_governor_spec(validator):
     for path in GOVERNOR_SPECS:
         data = tomllib.loads(path.read_text(encoding="utf-8"))

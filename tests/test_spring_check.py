@@ -283,7 +283,7 @@ def test_sensitivities_are_dual_elasticities_with_the_stated_sign():
      "error: --tensile-strength: applies to --material custom only"),
     (["--force", "("], "error: --force: cannot parse '(' as a quantity: its parentheses do "
                         "not match"),
-    (["--coil-step", "2"], "error: --coil-step: expected a step of coils in (0, 1]"),
+    (["--coil-step", "2"], "error: --coil-step: must lie in (0, 1] (0.25, 0.5 or 1 usual)"),
 ])
 def test_inputs_once_ignored_or_misread_are_refused_by_name(extra, message):
     """Inverted ranges name both options (not an infeasibility diagnosis); fatigue forces

@@ -220,9 +220,9 @@ def test_fatigue_below_the_endurance_gives_a_finite_life():
 
 def test_workbook_and_plots(tmp_path):
     """--xlsx: a Summary with the answer, the spring maker's sheet in engineering units, every
-    check, the force-length table at the maker's working points; --plots: force-length and the
-    fatigue diagram; an existing file is refused before the run without --replace, and a
-    failed run writes nothing."""
+    check, the force-length table at the maker's working points, the inputs (Spec); --plots:
+    force-length and the fatigue diagram; an existing file is refused before the run without
+    --replace, and a failed run writes nothing."""
     import openpyxl
 
     args = ["--force", "500 N", "--stiffness", "20 N/mm", "--material", "EN10270-1 SH",
@@ -232,7 +232,7 @@ def test_workbook_and_plots(tmp_path):
     assert run.exit_code == 0, run.output  # the wire table's best spring passes fatigue too
     out = json.loads(invoke(["spring", *args, "--json"]).stdout)
     wb = openpyxl.load_workbook(book)
-    assert wb.sheetnames == ["Summary", "Spring", "Checks", "Force-length"]
+    assert wb.sheetnames == ["Summary", "Spring", "Checks", "Force-length", "Spec"]
     answer = {r[0]: r[1:3] for r in wb["Summary"].iter_rows(values_only=True) if r[0]}
     assert answer["wire diameter d"] == (pytest.approx(fig(out, "wire_diameter_m") * 1e3), "mm")
     assert answer["free length L0"] == (pytest.approx(fig(out, "free_length_m") * 1e3), "mm")

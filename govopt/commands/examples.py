@@ -1,6 +1,7 @@
 """`govopt examples` lists the bundled example specs; `govopt init NAME` copies one here, `govopt
-init --type TYPE` writes a commented spec of a governor type with every key (its template,
-:func:`govopt.spec_docs.template`); `govopt schema` writes the JSON Schema of a spec file."""
+init --type TYPE` writes a commented spec of a governor type, or of a spring spec (``spring``,
+``spring-check``), with every key (its template, :func:`govopt.spec_docs.template`); `govopt
+schema` writes the JSON Schema of a spec file."""
 
 import sys
 from pathlib import Path
@@ -16,14 +17,15 @@ EXAMPLES_SHORT = "List the bundled example specs."
 EXAMPLES_HELP = "List the bundled example specs. `govopt init NAME` copies one to start from."
 INIT_SHORT = "Copy a bundled example spec here, or write a type's template, to start from."
 INIT_HELP = ("Copy a bundled example spec here, to start from, or write the template of a "
-             "governor type: every key, with its meaning. E.g. `govopt init hamabe-a` writes "
-             "hamabe-a.toml in the current folder; `govopt init --type hartnell` writes "
-             "hartnell.toml, which `govopt design` runs as written.")
+             "governor type or of a spring spec: every key, with its meaning. E.g. `govopt init "
+             "hamabe-a` writes hamabe-a.toml in the current folder; `govopt init --type "
+             "hartnell` writes hartnell.toml, which `govopt design` runs as written; `govopt "
+             "init --type spring-check` a spring for `govopt spring check`.")
 SCHEMA_SHORT = "Write the JSON Schema of a spec file, for TOML editors."
-SCHEMA_HELP = ("Write the JSON Schema of a governor spec file (every type's keys, meanings, "
-               "units, defaults and ranges), for the completion and checking of TOML editors "
-               "(Even Better TOML / taplo: put `#:schema ./govopt.schema.json` on a spec's "
-               "first line). Printed, or written with -o.")
+SCHEMA_HELP = ("Write the JSON Schema of a spec file, governor or spring (every type's keys, "
+               "meanings, units, defaults and ranges), for the completion and checking of TOML "
+               "editors (Even Better TOML / taplo: put `#:schema ./govopt.schema.json` on a "
+               "spec's first line). Printed, or written with -o.")
 
 examples_app = typer.Typer(add_completion=False)
 init_app = typer.Typer(add_completion=False)
@@ -53,7 +55,9 @@ def init_command(
         gtype: Annotated[str | None, common.option(
             "--type", metavar="<type>", help="Write the template of this governor type "
             "instead: shaft, watt, porter, proell, hartnell, spring_loaded, spring_gravity, "
-            "traction_coil or traction_leaf.")] = None,
+            "traction_coil or traction_leaf; or of a spring spec: spring (a spring to design, "
+            "`govopt spring`) or spring-check (a spring you have, `govopt spring check`).")]
+        = None,
         output: Annotated[str | None, common.option(
             "-o", "--output", metavar="<path>", help="Where to write it (default: NAME.toml "
             "or TYPE.toml here; a folder: that file in it).")] = None,
@@ -72,9 +76,11 @@ def init_command(
     if gtype is not None:
         from ..governors import REGISTRY
         from ..spec_docs import template
+        from ..spring_keys import TEMPLATES
 
-        if gtype not in REGISTRY:
-            raise GovoptError(f"--type: expected one of {', '.join(REGISTRY)}, got {gtype!r}")
+        if gtype not in (*REGISTRY, *TEMPLATES):
+            raise GovoptError(f"--type: expected one of {', '.join((*REGISTRY, *TEMPLATES))}, "
+                              f"got {gtype!r}")
         data, inputs, stem = template(gtype).encode("utf-8"), [], gtype
         what = f"the {gtype} template"
     else:
@@ -91,8 +97,12 @@ def init_command(
     check_output(target, overwrite=force, inputs=inputs, what="spec")
     atomic_write(target, lambda tmp: tmp.write_bytes(data), overwrite=force, what="spec")
     table = tomllib.loads(data.decode("utf-8"))
-    command = ("study" if "study" in table else "spring" if "spring" in table and
-               "governor" not in table else "evaluate" if "design" in table else "design")
+    if "governor" not in table and isinstance(table.get("spring"), dict):  # a spring spec's
+        from ..spring_keys import FORMS, form
+
+        command = FORMS[form(table["spring"])][1].removeprefix("govopt ")
+    else:
+        command = "study" if "study" in table else "evaluate" if "design" in table else "design"
     echo(f"wrote {target.absolute()} ({what}); edit it, then: govopt {command} {target}")
 
 

@@ -190,9 +190,9 @@ def _label(f) -> str:
 
 def write_workbook(outcome, path, *, replace: bool = True, command: str = "") -> Path:
     """The workbook (:func:`govopt.report.excel.spring.spring_workbook`: a Summary with the
-    command, version, date, verdict and the answer, the spring maker's sheet, the checks and
-    the force-length table with its chart), written atomically (an existing file replaced only
-    with ``replace``)."""
+    command, version, date, verdict and the answer, the spring maker's sheet, the checks, the
+    force-length table with its chart and the inputs with their meanings), written atomically
+    (an existing file replaced only with ``replace``)."""
     from .excel.spring import spring_workbook
 
     return spring_workbook(outcome, path, rows=workbook_rows(outcome),

@@ -20,27 +20,33 @@ SPEC_WIDTHS = {1: 28, 2: 44, 3: 22, 4: 13, 5: 9}
 
 
 def build_spec(sheet: Sheet, res: Result) -> None:
+    """Every input of the governor's spec (:func:`inputs_table`)."""
+    spec = res.spec
+    inputs_table(sheet, f"Spec: the inputs of {spec.name}", spec.entries, str(spec.path))
+
+
+def inputs_table(sheet: Sheet, title: str, entries, path: str | None, show=shown) -> None:
     """Every input: its key, its meaning (the key's declaration, where the reader has it), the
     text as written (always text: a spec string is never a formula) and the value read, in the
-    units people read."""
-    spec = res.spec
+    units people read (``show``: SI value and unit to the value and unit shown); then the spec
+    file (``path``; None: the options alone)."""
     sheet.set_widths(SPEC_WIDTHS)
-    sheet.title(1, f"Spec: the inputs of {spec.name}")
+    sheet.title(1, title)
     sheet.header(2, SPEC_HEADERS)
     sheet.ws.freeze_panes = "A3"
     row = 3
-    for e in spec.entries:
+    for e in entries:
         sheet.put(row, 1, e.key)
         sheet.put(row, 2, getattr(e, "meaning", "") or "").alignment = WRAP
         sheet.put(row, 3, e.written).alignment = WRAP
-        value, unit = shown(e.si, e.unit)  # as read, in the units people read
+        value, unit = show(e.si, e.unit)  # as read, in the units people read
         if value != e.written:  # a word as read is the word as written
             sheet.put(row, 4, value, sig_format(value) or "General")
         sheet.put(row, 5, unit_label(unit) if e.unit else "")
         row += 1
     sheet.keep_table(1, row - 1)
     sheet.put(row + 1, 1, "spec file").font = BOLD
-    sheet.paragraph(row + 1, str(spec.path), 2, 5, font=None)
+    sheet.paragraph(row + 1, path or "none (the command's options alone)", 2, 5, font=None)
     sheet.print_cols = len(SPEC_HEADERS)
 
 

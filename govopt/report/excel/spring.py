@@ -9,7 +9,9 @@ points with its chart, the maker's sheet, the material, the loads and the tolera
 engineering checks; a spring without a maker's sheet (a leaf, a spring given by its rate) shows
 its figures and its force over the range. ``govopt spring --xlsx`` writes the same conventions:
 a Summary (command, version, date, verdict, the answer with the objective and its certified
-bound to enough digits to show the gap), the maker's sheet, the checks, the force-length table.
+bound to enough digits to show the gap), the maker's sheet, the checks, the force-length table
+and the Spec sheet of the governor's workbook (every input with its declared meaning,
+:func:`govopt.report.excel.record.inputs_table`).
 """
 
 from __future__ import annotations
@@ -271,9 +273,11 @@ def spring_workbook(outcome, path, *, rows, sheet, points, replace: bool = True,
     file replaced only with ``replace``): ``rows`` the answer's ``(label, SI value or text, SI
     unit)`` (:func:`govopt.report.spring_outputs.workbook_rows`), shown in the units the input
     was written in (``outcome.shown``); ``sheet`` the maker's sheet or None; ``points`` the
-    force-length points ``(name, length m, force N)`` of the spring's assessment."""
+    force-length points ``(name, length m, force N)`` of the spring's assessment; the inputs
+    (``outcome.entries``, from ``outcome.spec`` or the options) on the Spec sheet."""
     from ... import __version__
     from .book import command_line
+    from .record import inputs_table
 
     checks_, optimum, shown = outcome.checks, outcome.record, outcome.shown
     wb = new_workbook()
@@ -333,7 +337,8 @@ def spring_workbook(outcome, path, *, rows, sheet, points, replace: bool = True,
         row += 2
         summary.paragraph(row, "Specification for the spring maker (EN 15800 grade 2) on the "
                                "Spring sheet; the checks on the Checks sheet; force against "
-                               "length on the Force-length sheet.", 1, 4)
+                               "length on the Force-length sheet; the inputs, each with "
+                               "its meaning, on the Spec sheet.", 1, 4)
         spring = Sheet(wb.create_sheet("Spring"))
         spring.set_widths(WIDTHS)
         spring.print_cols = 3
@@ -348,7 +353,10 @@ def spring_workbook(outcome, path, *, rows, sheet, points, replace: bool = True,
     fl = Sheet(wb.create_sheet("Force-length"))
     fl.set_widths({1: 34, 2: 14, 3: 14, 4: 4})
     write_force_length(fl, 1, points, f"{outcome.name}: force against length", shown=shown)
-    for s in (summary, *([spring] if sheet is not None else []), checks, fl):
+    inputs = Sheet(wb.create_sheet("Spec"))
+    inputs_table(inputs, f"Spec: the inputs of {outcome.name}", outcome.entries, outcome.spec,
+                 show=shown)
+    for s in (summary, *([spring] if sheet is not None else []), checks, fl, inputs):
         finish(s, header, f"govopt {__version__}")
     summary.ws.sheet_view.tabSelected = True
     wb.properties.creator = f"govopt {__version__}"
