@@ -14,13 +14,14 @@ import pytest
 from clirun import invoke
 
 import govopt
+import govopt.examples
 from govopt.analysis import vyshnegradsky as vy
 from govopt.evaluator import evaluate
 from govopt.governors import REGISTRY
 from govopt.report import plot_files, plots
 from govopt.spec import load_spec
 
-SPECS = Path(govopt.__file__).resolve().parent / "specs"
+SPECS = govopt.examples.SPECS
 CLI = [sys.executable, "-m", "govopt.cli"]
 
 

@@ -23,7 +23,7 @@ from govopt.report.text import check_name, format_result, format_summary
 from govopt.result import Check
 
 ROOT = Path(__file__).resolve().parent.parent
-SPECS = ROOT / "govopt" / "specs"
+SPECS = ROOT / "specs"
 ANSI = re.compile(r"\x1b\[")
 
 

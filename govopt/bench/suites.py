@@ -34,11 +34,10 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, replace
-from pathlib import Path
 
 import numpy as np
 
-SPECS = Path(__file__).resolve().parents[1] / "specs"  # the bundled specs (package data)
+from ..examples import SPECS  # the bundled specs
 
 #: The settings govopt uses unless a spec's use case picks others: (analysis, method, setting)
 DEFAULTS = {
@@ -554,7 +553,7 @@ def friction_suite(quick: bool = False) -> list[Point]:
 
 
 def optimiser_suite(quick: bool = False) -> list[Point]:
-    """``design()`` of govopt/specs/hamabe-design.toml on coarser grids (coil radius, turns, weight
+    """``design()`` of specs/hamabe-design.toml on coarser grids (coil radius, turns, weight
     steps x k), and the continuous GP bound, against the exhaustive optimum of the full grid."""
     from ..optimize import design as dz
     from ..spec import load_spec

@@ -111,7 +111,7 @@ def process_times(repeats: int = 5) -> dict:
 
 
 def big_catalogue_spec(folder: Path) -> Path:
-    """govopt/specs/hamabe-design.toml with every catalogue step refined: 193 weights x 249066
+    """specs/hamabe-design.toml with every catalogue step refined: 193 weights x 249066
     springs = 48.1 million mass-spring combinations."""
     text = (SPECS / "hamabe-design.toml").read_text()
     for old, new in (('turn_step = 0.5', 'turn_step = 0.125'),
