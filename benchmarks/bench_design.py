@@ -15,7 +15,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from govopt.report import bench
+from govopt.bench import report, targets
 
 
 def main(argv=None) -> None:
@@ -23,13 +23,13 @@ def main(argv=None) -> None:
     p.add_argument("--quick", action="store_true", help="fewer repeats")
     p.add_argument("--json", action="store_true", help="print the measurements as JSON")
     a = p.parse_args(argv)
-    rows = bench.targets(a.quick, log=lambda m: print(f"  {m}"))
-    stages = bench.design_in_process(3 if a.quick else 7)
+    rows = targets.targets(a.quick, log=lambda m: print(f"  {m}"))
+    stages = targets.design_in_process(3 if a.quick else 7)
     if a.json:
         print(json.dumps({"targets": rows, "design_in_process": stages}, indent=2,
                          default=float))
         return
-    print(bench.summary([], rows).split("\nspeed against error")[0])
+    print(report.summary([], rows).split("\nspeed against error")[0])
     print("design() stages, CPU s per call:")
     for name, t in stages["stages_cpu_s"].items():
         print(f"  {name:32s} {t:.4f}")

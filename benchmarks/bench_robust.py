@@ -16,7 +16,7 @@ from govopt.optimize import design as dz
 from govopt.optimize import robust as rb
 from govopt.optimize import search
 
-SPECS = sorted((Path(__file__).resolve().parent.parent / "govopt" / "specs").glob("*robust*.toml"))
+SPECS = sorted((Path(__file__).resolve().parent.parent / "specs").glob("*robust*.toml"))
 
 
 def best_of(spec, runs: int = 3) -> tuple[float, float]:

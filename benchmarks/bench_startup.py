@@ -34,7 +34,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-SPECS = ROOT / "govopt" / "specs"
+SPECS = ROOT / "specs"
 NUMPY = 'python -c "import numpy"'
 CVXPY = 'python -c "import cvxpy"'
 MAIN = "main's "

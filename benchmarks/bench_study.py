@@ -36,7 +36,7 @@ from pathlib import Path
 
 import numpy as np
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 
 
 def _designs(spec, n: int, seed: int = 0) -> dict:

@@ -48,7 +48,7 @@ def main() -> None:
     ap.add_argument("--spec", default="hamabe-a", help="a bundled spec with a [design]")
     ap.add_argument("--json", action="store_true")
     args = ap.parse_args()
-    spec = str(ROOT / "govopt" / "specs" / f"{args.spec}.toml")
+    spec = str(ROOT / "specs" / f"{args.spec}.toml")
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}

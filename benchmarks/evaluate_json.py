@@ -20,7 +20,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-SPECS = Path(__file__).resolve().parents[1] / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parents[1] / "specs"
 
 RUN = """
 import sys

@@ -1,7 +1,8 @@
-"""The bundled example specs: shipped inside the package (``govopt/specs/``), so that any
-install, editable or not, has them. ``govopt examples`` lists them (the trade studies of
-``specs/studies/`` and the spring specs of ``specs/springs/`` too) and ``govopt init NAME``
-copies one to start from; the CLI's default specs are two of them.
+"""The bundled example specs: the repository's ``specs/`` folder, installed as the package
+``govopt.specs`` (pyproject.toml maps it), so that any install, editable or not, has them.
+``govopt examples`` lists them (the trade studies of ``specs/studies/`` and the spring specs of
+``specs/springs/`` too) and ``govopt init NAME`` copies one to start from; the CLI's default
+specs are two of them.
 
 >>> "hamabe-a" in examples() and example("hamabe-a.toml").name
 'hamabe-a.toml'
@@ -14,12 +15,14 @@ from __future__ import annotations
 
 import difflib
 import tomllib
+from importlib.resources import files
 from pathlib import Path
 
 from .errors import GovoptError
 
-#: The folder of the bundled specs, inside the installed package.
-SPECS = Path(__file__).resolve().parent / "specs"
+#: The folder of the bundled specs (the package ``govopt.specs``: ``specs/`` of a checkout or
+#: an editable install, ``govopt/specs/`` of a plain one).
+SPECS = Path(str(files("govopt.specs")))
 
 
 def examples() -> dict[str, Path]:

@@ -17,7 +17,7 @@ A spec asks for it in ``[analysis]``::
                    case)
 =================  ============================================================================
 
-The errors and costs are the ones ``govopt bench`` measured (:mod:`govopt.report.bench`; the
+The errors and costs are the ones ``govopt bench`` measured (:mod:`govopt.bench`; the
 full run's CSV is shipped as ``govopt/data/speed-vs-error.csv``): the worst relative error over
 the suite's hard cases against high-precision references, and the CPU time per evaluation. Of
 the settings an analysis offers, the cheapest whose measured error is within the tolerance is

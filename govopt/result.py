@@ -5,7 +5,7 @@ checks (:class:`~govopt.verdict.Check`) and figures (:meth:`Result.figures`,
 :class:`~govopt.verdict.Figure`) carry their unit, group and source as fields, which every writer
 reads (none parses a unit back from a name). In a notebook or a script::
 
-    res = govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a.toml"))
+    res = govopt.evaluate(govopt.load_spec("specs/hamabe-a.toml"))
     print(res.summary())      # the answer first: verdict, design, the checks to watch, notes
     res.to_frame()            # checks and figures as a pandas DataFrame, with a unit column
     res.plot("characteristic")  # matplotlib axes (report/plots); res.plot() draws every plot

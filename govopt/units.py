@@ -109,7 +109,6 @@ def _parse_text(text: str, dimension: str) -> float:
 
 def _parse(text, dimension: str) -> float:
     """:func:`parse_quantity` itself."""
-    si = SI_UNITS[dimension]
     name = dimension.replace("_", " ")
     if isinstance(text, bool):
         raise UnitError(f"expected {_a(name)} with units, got {text!r}")
@@ -126,55 +125,7 @@ def _parse(text, dimension: str) -> float:
     if len(text) > MAX_QUANTITY_CHARS:  # before pint, whose parser is super-linear
         raise UnitError(f"{shorten(text)}: a quantity of at most {MAX_QUANTITY_CHARS} "
                         f"characters (govopt's limit), got {len(text)}")
-    plain = plain_si(text, dimension)
-    if plain is not None:
-        return _finite(plain, text, si)
     return parse_with_pint(text, dimension)
-
-
-#: Units written alone after a plain number, as a spring is usually specified ("500 N",
-#: "10 N/mm", "600 MPa"): dimension -> unit -> the factor to SI. Each is a decimal multiple of
-#: an SI unit (or the kilogram-force, 9.80665 N by definition), so the factor is the correctly
-#: rounded value of its definition, which is also pint's, in every pint release tested; and
-#: ``value * factor`` is what pint's conversion computes. tests/test_units_plain.py holds both.
-#: Units whose factor pint rounds from a product (lbf, psi, in, rpm: pint 0.24.4 and 0.25 round
-#: kpsi differently) are left to pint. A string of this form is read without importing pint
-#: (0.15 s of a ``govopt spring`` run); anything else goes through pint.
-PLAIN_UNITS: dict[str, dict[str, float]] = {
-    "force": {"N": 1.0, "kN": 1000.0, "mN": 0.001, "kgf": 9.80665},
-    "length": {"m": 1.0, "cm": 0.01, "mm": 0.001, "um": 1e-06},
-    "stress": {"Pa": 1.0, "kPa": 1000.0, "MPa": 1000000.0, "GPa": 1000000000.0,
-               "N/mm^2": 1000000.0, "N/mm2": 1000000.0},
-    "stiffness": {"N/m": 1.0, "N/mm": 1000.0, "kN/m": 1000.0},
-    "frequency": {"Hz": 1.0},
-    "mass": {"kg": 1.0, "g": 0.001},
-    "time": {"s": 1.0, "ms": 0.001},
-    "angular_velocity": {"rad/s": 1.0},
-}
-#: a number as pint's tokenizer reads one, without Python's underscores, "inf" or "nan"
-_PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
-_LEADING_ZERO = re.compile(r"[+-]?0+[1-9]")
-
-
-def plain_si(text: str, dimension: str) -> float | None:
-    """``text`` in SI when it is a plain number, one space and one of :data:`PLAIN_UNITS` of
-    ``dimension`` (a bare number when dimensionless), else None (pint reads it).
-
-    >>> plain_si("10 N/mm", "stiffness"), plain_si("10 N/mm", "force"), plain_si("1_0 N", "force")
-    (10000.0, None, None)
-    """
-    number, *unit = text.split(" ")  # one space between: pint rejects a leading space or tab
-    if dimension == "dimensionless":
-        factor = None if unit else 1.0
-    else:
-        factor = PLAIN_UNITS.get(dimension, {}).get(unit[0]) if len(unit) == 1 else None
-    if factor is None or not _PLAIN_NUMBER.fullmatch(number):
-        return None
-    integer = not any(c in number for c in ".eE")
-    if integer and _LEADING_ZERO.match(number):  # Python's tokenizer, pint's, rejects "05"
-        return None
-    value = float(number) * factor
-    return value + 0.0 if integer else value  # "-0" is the integer 0 to pint, not -0.0
 
 
 def parse_with_pint(text: str, dimension: str) -> float:
@@ -355,7 +306,7 @@ def _unknown(exc) -> str:
     """"unknown unit 'kfg' (did you mean 'kgf'?)" for pint's UndefinedUnitError."""
     names = exc.unit_names if isinstance(exc.unit_names, tuple | list) else (exc.unit_names,)
     unit = str(names[0]) if names else "?"
-    close = difflib.get_close_matches(unit, list(registry()._units), n=1, cutoff=0.65)
+    close = difflib.get_close_matches(unit, sorted(registry()), n=1, cutoff=0.65)
     return f"unknown unit {unit!r}" + (f" (did you mean {close[0]!r}?)" if close else "")
 
 

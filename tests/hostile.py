@@ -48,12 +48,11 @@ MAX_LINE, MAX_DIAGNOSIS = 300, 600
 
 
 def bundled_specs() -> list[Path]:
-    """The bundled specs, wherever they live now (``govopt/specs/`` or ``specs/``)."""
-    for folder in (ROOT / "govopt" / "specs", ROOT / "specs"):
-        found = sorted(folder.glob("*.toml"))
-        if found:
-            return found
-    raise FileNotFoundError("no bundled specs found")
+    """The bundled specs (``specs/`` of the checkout)."""
+    found = sorted((ROOT / "specs").glob("*.toml"))
+    if not found:
+        raise FileNotFoundError("no bundled specs found")
+    return found
 
 
 # ---------------------------------------------------------------------------------------------
@@ -678,7 +677,7 @@ OUTPUT_CASES = (
     # the package's own files, read by every run: never an output (a new name, so that a
     # regression leaves a stray file, not a replaced bundled spec)
     ("output/-o into the package, --force", "design",
-     ("design", "{spec}", "-o", str(ROOT / "govopt" / "specs" / "hostile-output.toml"),
+     ("design", "{spec}", "-o", str(ROOT / "specs" / "hostile-output.toml"),
       "--force"), None),
     ("init/-o into the package", "init",
      ("init", "hamabe-a", "-o", str(ROOT / "govopt" / "data" / "hostile-output.toml")), None),

@@ -54,7 +54,7 @@ def test_porter_friction_band_matches_the_book():
 
 
 def test_watt_is_stable_and_shaft_classic_present():
-    res = govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a.toml"))
+    res = govopt.evaluate(govopt.load_spec("specs/hamabe-a.toml"))
     assert res.classic["stability"] == "stable"
     assert res.classic["sensitiveness"] == pytest.approx(
         2 * (res.statics.omega[-1] - res.statics.omega[0])
@@ -65,7 +65,7 @@ def test_vyshnegradsky_point_of_the_load_change():
     """A B - 1 is Hamabe's Hurwitz margin (eq. 32), and the region agrees with the roots."""
     import numpy as np
 
-    res = govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a.toml"))
+    res = govopt.evaluate(govopt.load_spec("specs/hamabe-a.toml"))
     lc = res.dynamics["load_changes"][0]
     v = lc["vyshnegradsky"]
     assert v["A"] * v["B"] - 1 == pytest.approx(lc["hurwitz_margin"], rel=1e-12)
@@ -108,7 +108,7 @@ def test_no_effort_over_a_range_whose_speed_falls():
     a negative force. Not computed, and the report says why; at a fraction it is computed."""
     from govopt.spec import load_spec, with_values
 
-    base = load_spec("govopt/specs/textbook-ex4-hartnell.toml")
+    base = load_spec("specs/textbook-ex4-hartnell.toml")
     falling = with_values(base, {"design.spring_stiffness": "0.1 kgf/cm",
                                  "design.free_length": "40 cm",
                                  "analysis.speed_change": "range"})
@@ -130,7 +130,7 @@ def test_power_to_the_stop_when_the_speed_change_passes_the_outermost():
     from govopt.analysis.classic import travel_between
     from govopt.spec import load_spec, with_values
 
-    base = load_spec("govopt/specs/textbook-ex4-hartnell.toml")
+    base = load_spec("specs/textbook-ex4-hartnell.toml")
     far = govopt.evaluate(with_values(base, {"analysis.speed_change": 0.5}))
     cm, gov = far.classic, far.spec.governor
     x_n = gov.x_normal  # the textbook's Hartnell: normal configuration at mid-range

@@ -18,7 +18,7 @@ def test_evaluate_default_prints_report():
 
 
 def test_evaluate_json_keys():
-    result = invoke(["evaluate", "govopt/specs/hamabe-b.toml", "--json"])
+    result = invoke(["evaluate", "specs/hamabe-b.toml", "--json"])
     assert result.exit_code == 0, result.output
     out = json.loads(result.output)
     for key in ("irregularity", "omega_inner_rad_s", "omega_outer_rad_s", "pendulum_mass_kg",

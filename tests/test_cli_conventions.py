@@ -216,6 +216,23 @@ def test_examples_and_init(tmp_path):
     assert sorted(os.listdir(tmp_path)) == ["hamabe-a.toml", "sub"]
 
 
+def test_the_bundled_specs_are_the_checkouts_specs_folder():
+    """The suite runs on an editable install of this checkout: `govopt examples` and `govopt
+    init` read the repository's top-level specs/ (pyproject.toml maps it to govopt.specs)."""
+    assert SPECS.resolve() == ROOT / "specs"
+    assert examples()["hamabe-a"] == SPECS / "hamabe-a.toml"
+
+
+def test_the_listed_packages_are_govopts_folders():
+    """pyproject.toml lists the packages (setuptools' find cannot map specs/ into govopt):
+    every folder of govopt with an ``__init__.py`` is listed, and govopt.specs maps to specs/."""
+    tool = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]
+    folders = {".".join(p.parent.relative_to(ROOT).parts)
+               for p in (ROOT / "govopt").rglob("__init__.py")}
+    assert set(tool["packages"]) == folders | {"govopt.specs"}
+    assert tool["package-dir"] == {"govopt.specs": "specs"}
+
+
 def test_non_editable_install_ships_the_specs(tmp_path):
     """What a wheel installs (setuptools' build_py: the modules and the package data of
     pyproject.toml), imported from another folder: the bundled specs are there, `govopt

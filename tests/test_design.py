@@ -10,13 +10,14 @@ import pytest
 from clirun import invoke
 
 import govopt
+import govopt.examples
 from govopt.analysis import statics
 from govopt.optimize import design as dz
 from govopt.optimize import windows as wz
 from govopt.optimize.kappa import KappaModel
 from govopt.springs import helical as hx
 
-SPEC = "govopt/specs/hamabe-design.toml"
+SPEC = "specs/hamabe-design.toml"
 
 
 @pytest.fixture(scope="module")
@@ -44,7 +45,7 @@ def test_design_beats_the_papers_case_a(spec, result):
     It violates the irregularity requirement (0.1244 > 0.12: the paper rounds kappa up from
     63.3 to 64.2 kgf/cm) so it is not even admissible; by moving mass it is also >3x heavier.
     """
-    paper = govopt.load_spec("govopt/specs/hamabe-a.toml").design
+    paper = govopt.load_spec("specs/hamabe-a.toml").design
     res = govopt.evaluate(spec.with_design(paper))
     assert not res.check("irregularity").passed
     paper_moving = res.spring.m + res.spring_properties["mass_kg"]
@@ -331,7 +332,7 @@ def test_a_design_the_evaluator_fails_is_diagnosed_not_returned(monkeypatch):
         return res
 
     monkeypatch.setattr(evaluator, "evaluate", failing)
-    spec = govopt.load_spec(Path(govopt.__file__).parent / "specs" / "porter-design.toml")
+    spec = govopt.load_spec(govopt.examples.SPECS / "porter-design.toml")
     with pytest.raises(DesignError) as err:
         govopt.design(spec)
     text = str(err.value)
@@ -344,7 +345,7 @@ def test_dead_weight_design_on_an_engine_checks_each_candidates_own_central_load
     """A Porter on an engine whose first candidates fail the dynamics: each batch of candidates
     is checked with its own central loads (the speed lever of eq. 24 reads them), and no
     dash-pot settling in 1 ms gives a diagnosis, not an error of array shapes."""
-    text = (Path("govopt/specs/porter-design.toml").read_text(encoding="utf-8")
+    text = (Path("specs/porter-design.toml").read_text(encoding="utf-8")
             .replace('objective = "moving_mass"',
                      'objective = "moving_mass"\nmax_settling_time = "0.001 s"')
             + '\n[engine]\nflywheel_inertia = "50 kg*m^2"\ntorque_slope = "-1000 N*m/m"\n'
@@ -364,7 +365,7 @@ def test_the_dynamics_stop_at_the_limit_of_work_and_say_so(monkeypatch):
     from govopt import limits
     from govopt.optimize import design as dz
 
-    spec = govopt.load_spec("govopt/specs/hamabe-design.toml")
+    spec = govopt.load_spec("specs/hamabe-design.toml")
     spec = dataclasses.replace(spec, requirements=dataclasses.replace(
         spec.requirements, objective="settling_time"))
     monkeypatch.setattr(limits, "MAX_DESIGN_DYNAMICS_SECONDS", 2.0)

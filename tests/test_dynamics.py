@@ -15,7 +15,7 @@ PAPER = {"geometry": "series", "reaction_speed": "mean", "reaction_slope": False
 
 
 def paper_result(case):
-    spec = govopt.load_spec(f"govopt/specs/hamabe-{case}.toml")
+    spec = govopt.load_spec(f"specs/hamabe-{case}.toml")
     return govopt.evaluate(spec.with_analysis(**PAPER))
 
 
@@ -71,7 +71,7 @@ def test_d_prime_paper_slip():
 
 def test_k2_cases_over_the_range():
     """Hamabe Part II's three cases per configuration, from a stiff to a soft spring."""
-    spec = govopt.load_spec("govopt/specs/hamabe-a.toml")
+    spec = govopt.load_spec("specs/hamabe-a.toml")
     soft = dataclasses.replace(spec.design, active_turns=30.0)
     stiff = dataclasses.replace(spec.design, active_turns=2.0)
     assert govopt.evaluate(spec).to_dict()["k2_cases"]["stable"] == len(
@@ -86,7 +86,7 @@ def test_k2_cases_over_the_range():
 
 def test_dynamics_json_keys():
     out = json.loads(
-        invoke(["evaluate", "govopt/specs/hamabe-c.toml", "--json"]).output)
+        invoke(["evaluate", "specs/hamabe-c.toml", "--json"]).output)
     assert len(out["k2_rad2_s2"]) == len(out["characteristic"])
     assert out["k2_normal_rad2_s2"] > 0
     lc = out["load_changes"][0]
@@ -105,7 +105,7 @@ def test_dynamics_json_keys():
 
 def test_friction_only_when_asked():
     """The friction model runs only for a design with a friction moment."""
-    spec = govopt.load_spec("govopt/specs/hamabe-a.toml")
+    spec = govopt.load_spec("specs/hamabe-a.toml")
     assert "friction" not in govopt.evaluate(spec).dynamics
     d = dataclasses.replace(spec.design, friction_moment=22.6 * 9.80665 * 0.01)
     res = govopt.evaluate(spec, d)

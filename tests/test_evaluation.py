@@ -10,7 +10,7 @@ import pytest
 import govopt
 from govopt.analysis import friction
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 
 
 def _porter_with_friction(tmp_path):

@@ -28,7 +28,7 @@ from govopt.report.excel.book import ROW_PT, Sheet, paginate, unit_label
 from govopt.verdict import SHOWN, Check
 
 ROOT = Path(__file__).resolve().parent.parent
-SPECS = ROOT / "govopt" / "specs"
+SPECS = ROOT / "specs"
 #: The bundled shaft-governor specs with a given design to evaluate (the shaft's Design sheet has
 #: its own named geometry cells; every other type's sheet is tested in test_excel_types.py).
 BUNDLED = sorted(p.stem for p in SPECS.glob("*.toml")

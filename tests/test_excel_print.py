@@ -18,7 +18,7 @@ import govopt
 from govopt.report import excel
 
 ROOT = Path(__file__).resolve().parent.parent
-SPECS = ROOT / "govopt" / "specs"
+SPECS = ROOT / "specs"
 PDFTOTEXT = shutil.which("pdftotext")
 
 #: Types whose workbooks print long tables: the shaft's Design and Spring sheets and its three

@@ -13,7 +13,7 @@ from test_excel import RTOL, _csv_values, _formula_cells, _recalculate, needs_li
 import govopt
 from govopt.report import excel
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 _ALL = {p.stem: tomllib.loads(p.read_text(encoding="utf-8")) for p in sorted(SPECS.glob("*.toml"))}
 #: evaluate specs of every type but the shaft (whose sheet test_excel.py checks cell by cell)
 EVALUATE = [n for n, d in _ALL.items() if "design" in d and d["governor"]["type"] != "shaft"]

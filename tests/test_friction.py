@@ -45,7 +45,7 @@ M0_PAPER = 22.6 * KGFCM
 
 def paper_model(case, M0_kgfcm, dashpot=0.0, consistent=False):
     """The bundled spec with Hamabe's fidelity (or the default, consistent one), no dash-pot."""
-    spec = govopt.load_spec(f"govopt/specs/hamabe-{case}.toml")
+    spec = govopt.load_spec(f"specs/hamabe-{case}.toml")
     if not consistent:
         spec = spec.with_analysis(geometry="series", reaction_speed="mean", reaction_slope=False)
     design = dataclasses.replace(spec.design, dashpot=dashpot, friction_moment=M0_kgfcm * KGFCM)
@@ -320,9 +320,9 @@ def test_friction_with_dashpot():
 
 def test_units_invariance_and_json():
     """Same result from the kgf-cm spec and its SI twin; to_dict is JSON-able."""
-    a = friction.friction_load_change(govopt.load_spec("govopt/specs/hamabe-a.toml"),
+    a = friction.friction_load_change(govopt.load_spec("specs/hamabe-a.toml"),
                                       friction_moment=M0_PAPER, dashpot=0.0, max_strokes=5)
-    b = friction.friction_load_change(govopt.load_spec("govopt/specs/hamabe-a-si.toml"),
+    b = friction.friction_load_change(govopt.load_spec("specs/hamabe-a-si.toml"),
                                       friction_moment=M0_PAPER, dashpot=0.0, max_strokes=5)
     assert [p.kind for p in a.phases] == [p.kind for p in b.phases]
     np.testing.assert_allclose([p.xi_end for p in a.phases], [p.xi_end for p in b.phases],
@@ -330,7 +330,7 @@ def test_units_invariance_and_json():
     d = json.loads(json.dumps(a.to_dict()))
     assert d["n_strokes"] == 5 and d["outcome"] == "max_strokes"
     assert d["phases"][0]["kind"] == "stick"
-    json.dumps(friction.load_change_model(govopt.load_spec("govopt/specs/hamabe-a.toml")).to_dict())
+    json.dumps(friction.load_change_model(govopt.load_spec("specs/hamabe-a.toml")).to_dict())
 
 
 def _keys(obj) -> set[str]:
@@ -346,7 +346,7 @@ def test_friction_keys_follow_the_coordinate(tmp_path):
     every friction figure's key names the length's unit (m, m/s, N, kg, N s/m, N s = N per
     rad/s of speed, rad/(m s^2)), not the shaft's (rad, N m, kg m^2); the speed error stays in
     rad/s. The text report shows the first stroke's end in mm."""
-    text = open("govopt/specs/porter-engine.toml").read().replace(
+    text = open("specs/porter-engine.toml").read().replace(
         'sleeve_offset = "3.76 cm"', 'sleeve_offset = "3.76 cm"\nsleeve_friction = "1 kgf"')
     path = tmp_path / "porter-friction.toml"
     path.write_text(text)
@@ -382,7 +382,7 @@ def test_friction_keys_follow_the_coordinate(tmp_path):
 def test_shaft_friction_keys_are_angular():
     """The shaft governor's friction figures keep the angle's units (rad, N m, kg m^2; the
     dash-pot in N m s/rad as everywhere else)."""
-    spec = govopt.load_spec("govopt/specs/hamabe-a.toml")
+    spec = govopt.load_spec("specs/hamabe-a.toml")
     d = friction.friction_load_change(spec, friction_moment=M0_PAPER, dashpot=0.0,
                                       max_strokes=3).to_dict()
     assert {"I_kg_m2", "f_N_m_s_per_rad", "C_N_m_s", "R_per_s2", "M0_N_m", "xi0_rad",

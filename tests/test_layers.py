@@ -34,6 +34,7 @@ LAYERS = (
     ("optimize", ("govopt.optimize",)),
     ("study", ("govopt.study",)),
     ("report", ("govopt.report",)),
+    ("bench", ("govopt.bench",)),
     ("cli", ("govopt.cli", "govopt.spring_command", "govopt")),
 )
 

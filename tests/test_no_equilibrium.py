@@ -11,7 +11,7 @@ import pytest
 from govopt import evaluate, load_spec
 from govopt.errors import DesignError
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 
 
 def _variant(tmp_path, name: str, key: str, value: str) -> Path:
@@ -79,11 +79,11 @@ def test_messages_name_the_keys_the_spec_writes():
     from govopt.evaluator import invalid
     from govopt.spec import Design, load_spec
 
-    search = load_spec("govopt/specs/hamabe-design.toml")  # no [design]
+    search = load_spec("specs/hamabe-design.toml")  # no [design]
     thick = Design(flying_mass=10.0, wire_diameter=0.1, coil_radius=0.04, active_turns=8.0)
     message = invalid(search, thick)
     assert "design.wire_diameter" not in message and "not thinner than the coil" in message
-    a = load_spec("govopt/specs/hamabe-a.toml")
+    a = load_spec("specs/hamabe-a.toml")
     assert invalid(a, dataclasses.replace(a.design, wire_diameter=1.0)).startswith(
         f"{a.path}: design.wire_diameter: ")
     assert design_key(a, "flying_mass") == "design.pendulum_weight"

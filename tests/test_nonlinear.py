@@ -39,7 +39,7 @@ PAPER = dict(geometry="series", reaction_speed="mean", reaction_slope=False)
 
 
 def spec_a(**analysis):
-    spec = govopt.load_spec("govopt/specs/hamabe-a.toml")
+    spec = govopt.load_spec("specs/hamabe-a.toml")
     return spec.with_analysis(**analysis) if analysis else spec
 
 
@@ -124,7 +124,7 @@ def test_linear_model_is_the_linearisation(analysis):
 def test_final_state_is_new_equilibrium(case, eps):
     """Stable (eq. 32 holds with the design's dash-pot): the nonlinear solution ends at alpha0 and
     at omega0 from the characteristic curve, whatever the insensibility eps of the start."""
-    spec = govopt.load_spec(f"govopt/specs/hamabe-{case}.toml")
+    spec = govopt.load_spec(f"specs/hamabe-{case}.toml")
     spec = dataclasses.replace(spec, engine=dataclasses.replace(spec.engine, insensibility=eps))
     sd = statics.spring_design(spec)
     nl = nonlinear.nonlinear_load_change(spec, sd, t=np.linspace(0.0, 25.0, 51))

@@ -22,10 +22,10 @@ from clirun import invoke
 
 from govopt.errors import GovoptError
 from govopt.report import excel
-from govopt.report.files import atomic_write, check_output, remove_stale_temps
+from govopt.report.files import PACKAGE, atomic_write, check_output, remove_stale_temps
 from govopt.spec import SpecError, load_spec
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 SPEC_A, SPEC_DESIGN = SPECS / "hamabe-a.toml", SPECS / "hamabe-design.toml"
 #: passes every check, so a complete `govopt evaluate` exits 0 (case a misses its irregularity)
 SPEC_PASS = SPECS / "hamabe-b.toml"
@@ -560,10 +560,10 @@ def test_sigterm_inside_a_bare_except_still_exits_as_sigterm(monkeypatch):
 
 
 def _package_files() -> dict:
-    """Every file of the package folder with its size and modification time."""
-    root = SPECS.parent
-    return {p: (p.stat().st_size, p.stat().st_mtime_ns) for p in root.rglob("*") if p.is_file()
-            and "__pycache__" not in p.parts}
+    """Every file of the package folder and of the bundled specs' folder with its size and
+    modification time."""
+    return {p: (p.stat().st_size, p.stat().st_mtime_ns) for root in (PACKAGE, SPECS)
+            for p in root.rglob("*") if p.is_file() and "__pycache__" not in p.parts}
 
 
 def test_no_command_writes_into_the_package(tmp_path):
@@ -577,7 +577,7 @@ def test_no_command_writes_into_the_package(tmp_path):
     runs = [
         ["design", SPEC_DESIGN, "-o", SPEC_A, "--force"],
         ["design", SPEC_DESIGN, "-o", link / "hamabe-a.toml", "--force"],
-        ["evaluate", SPEC_A, "--xlsx", SPECS.parent / "data" / "new.xlsx"],
+        ["evaluate", SPEC_A, "--xlsx", PACKAGE / "data" / "new.xlsx"],
         ["evaluate", SPEC_A, "--plots", SPECS / "plots"],
         ["init", "hamabe-b", "-o", SPEC_A, "--force"],
         ["init", "hamabe-b", "-o", f"{SPECS}/springs/"],

@@ -35,7 +35,7 @@ DPS = 50
 
 
 def paper_spec(case):
-    return govopt.load_spec(f"govopt/specs/hamabe-{case}.toml").with_analysis(**PAPER)
+    return govopt.load_spec(f"specs/hamabe-{case}.toml").with_analysis(**PAPER)
 
 
 def problem(spec):

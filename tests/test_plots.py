@@ -14,13 +14,14 @@ import pytest
 from clirun import invoke
 
 import govopt
+import govopt.examples
 from govopt.analysis import vyshnegradsky as vy
 from govopt.evaluator import evaluate
 from govopt.governors import REGISTRY
 from govopt.report import plot_files, plots
 from govopt.spec import load_spec
 
-SPECS = Path(govopt.__file__).resolve().parent / "specs"
+SPECS = govopt.examples.SPECS
 CLI = [sys.executable, "-m", "govopt.cli"]
 
 
@@ -398,7 +399,7 @@ def test_bench_plot_draws_an_exact_error_on_its_own_line_and_joins_near_labels(t
     point share one label ("grids x2, x4") instead of printing over each other."""
     from matplotlib.figure import Figure
 
-    from govopt.report import bench
+    from govopt.bench import report as bench
 
     assert bench.zero_floor([0.0, 5e-3, 0.17]) == pytest.approx(1e-4)
     assert bench.zero_floor([0.0]) == 1e-3

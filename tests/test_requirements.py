@@ -9,7 +9,7 @@ from clirun import invoke
 from govopt import evaluate, load_spec
 from govopt.bulk import evaluate_many
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 CLASH = "working length >= least length (coil clash)"
 
 #: the issue's case: a Hartnell governor (textbook Example 4's geometry) with a 4 mm wire,
@@ -204,7 +204,7 @@ def test_band_checks_hold_over_the_whole_range():
     from govopt.analysis import statics
     from govopt.spec import load_spec, with_values
 
-    spec = load_spec("govopt/specs/textbook-ex4-hartnell.toml")
+    spec = load_spec("specs/textbook-ex4-hartnell.toml")
     rpm = math.pi / 30
     falling = dataclasses.replace(spec, speed=dataclasses.replace(
         spec.speed, omega_mean=240 * rpm, irregularity=-20 / 240))  # 250 -> 230 rpm

@@ -13,10 +13,11 @@ import numpy as np
 import pytest
 
 import govopt
+import govopt.examples
 from govopt.report.text import format_summary
 from govopt.verdict import SHOWN, Check, Figure, json_key, shown
 
-SPECS = Path("govopt/specs")
+SPECS = Path("specs")
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -118,7 +119,7 @@ def test_spring_checks_carry_their_group(graded, hamabe):
     assert [c["group"] for c in js] == [c.group for c in graded.checks]
 
 
-@pytest.mark.parametrize("path", sorted((Path(govopt.__file__).parent / "specs").glob("*.toml")),
+@pytest.mark.parametrize("path", sorted(govopt.examples.SPECS.glob("*.toml")),
                          ids=lambda p: p.stem)
 def test_every_check_has_its_requirement_group(path):
     """Every check of every bundled spec with a design says which group of requirements it

@@ -18,9 +18,9 @@ from govopt.optimize.margins import window_centre
 from govopt.spec import Design
 from govopt.springs import tolerances as tl
 
-SPEC = "govopt/specs/hamabe-design.toml"
-ROBUST = "govopt/specs/hamabe-design-robust.toml"
-TEXTBOOK = "govopt/specs/spring_loaded-design-robust.toml"
+SPEC = "specs/hamabe-design.toml"
+ROBUST = "specs/hamabe-design-robust.toml"
+TEXTBOOK = "specs/spring_loaded-design-robust.toml"
 
 
 @pytest.fixture(scope="module")

@@ -14,7 +14,7 @@ from govopt.optimize import design as dz
 from govopt.optimize import robust as rb
 from govopt.spec import Design
 
-ROBUST = "govopt/specs/hamabe-design-robust.toml"
+ROBUST = "specs/hamabe-design-robust.toml"
 #: the robust optimum of hamabe-design-robust (d 10 mm, r 39 mm, n 10; docs/theory/design-search.md)
 DESIGN = Design(flying_mass=4.0, wire_diameter=0.01, coil_radius=0.039, active_turns=10.0,
                 free_half_length=0.1335489367461029, dashpot=0.9435718922634899)
@@ -122,7 +122,7 @@ def test_dead_weight_robust_design_holds_at_its_mass_corners(tmp_path):
     """A Porter governor (dead weight: no spring) with its balls and central load +-0.5 %: the
     robust design passes every check at each corner of the masses, by the ordinary evaluator;
     the nominal optimum does not (its band is at the spec's edge), so robustness costs."""
-    path = _robust_copy(tmp_path, "govopt/specs/porter-design.toml", "robust_masses = 0.005\n")
+    path = _robust_copy(tmp_path, "specs/porter-design.toml", "robust_masses = 0.005\n")
     spec = govopt.load_spec(path)
     res = govopt.design(spec)
     rec = res.optimisation["robust"]
@@ -148,13 +148,13 @@ def test_dead_weight_robust_design_holds_at_its_mass_corners(tmp_path):
 @pytest.mark.parametrize("source, lines, key, words", [
     (ROBUST, 'objective = "settling_time"\n', "requirements.objective",
      "requirements.max_settling_time"),
-    ("govopt/specs/porter-design.toml", "robust_spring_grade = 2\n",
+    ("specs/porter-design.toml", "robust_spring_grade = 2\n",
      "requirements.robust_spring_grade", "no spring"),
-    ("govopt/specs/porter-design.toml", 'adjusting_nut = "2 mm"\n', "requirements.adjusting_nut",
+    ("specs/porter-design.toml", 'adjusting_nut = "2 mm"\n', "requirements.adjusting_nut",
      "no spring"),
-    ("govopt/specs/traction-leaf-design.toml", "robust_spring_grade = 2\n",
+    ("specs/traction-leaf-design.toml", "robust_spring_grade = 2\n",
      "requirements.robust_spring_grade", "leaf spring"),
-    ("govopt/specs/spring_loaded-design.toml", "robust_dashpot = 0.1\n",
+    ("specs/spring_loaded-design.toml", "robust_dashpot = 0.1\n",
      "requirements.robust_dashpot", "[[load_change]]"),
 ])
 def test_robust_designs_it_cannot_make_are_one_line_errors(tmp_path, source, lines, key, words):

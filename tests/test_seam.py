@@ -12,7 +12,7 @@ from govopt.analysis import statics
 from govopt.governors import REGISTRY, governor_class
 
 PACKAGE = Path(govopt.__file__).resolve().parent
-SPECS = PACKAGE.parent / "govopt" / "specs"
+SPECS = PACKAGE.parent / "specs"
 
 
 def test_no_type_branches_outside_the_governors():

@@ -6,7 +6,7 @@ from pathlib import Path
 import pytest
 from clirun import invoke
 
-BASE = Path("govopt/specs/hamabe-a.toml").read_text()
+BASE = Path("specs/hamabe-a.toml").read_text()
 
 
 def _edit(old: str, new: str) -> str:

@@ -334,7 +334,7 @@ def test_the_shaft_governors_analysis_settings_are_its_own():
     from govopt.governors import governor_class
 
     assert "points" in analysis_table(governor_class("watt")).names
-    run = invoke(["evaluate", "govopt/specs/textbook-ex4-hartnell.toml", "--geometry", "series"])
+    run = invoke(["evaluate", "specs/textbook-ex4-hartnell.toml", "--geometry", "series"])
     assert run.exit_code == 2
     assert "the hartnell governor has no [analysis] geometry" in run.output
 

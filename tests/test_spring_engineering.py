@@ -15,7 +15,6 @@ import dataclasses
 import json
 import math
 import tomllib
-from pathlib import Path
 
 import numpy as np
 import openpyxl
@@ -23,13 +22,14 @@ import pytest
 from clirun import invoke
 
 import govopt
+import govopt.examples
 from govopt.analysis import spring_engineering as se
 from govopt.reader import SpecError
 from govopt.report import excel
 from govopt.report.text import format_result
 from govopt.spec import parse_spec
 
-SPECS = Path(govopt.__file__).resolve().parent / "specs"
+SPECS = govopt.examples.SPECS
 MPA = 1e6
 
 

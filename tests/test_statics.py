@@ -27,7 +27,7 @@ DELTAS = np.radians([48.5, 58, 69, 84, 96])
 
 def paper_spec(case="a", **analysis):
     """A bundled spec with the paper's omega0^2 = 630."""
-    spec = govopt.load_spec(f"govopt/specs/hamabe-{case}.toml")
+    spec = govopt.load_spec(f"specs/hamabe-{case}.toml")
     spec = dataclasses.replace(spec, speed=dataclasses.replace(spec.speed,
                                                                omega_mean=math.sqrt(630.0)))
     return spec.with_analysis(**analysis) if analysis else spec
@@ -192,7 +192,7 @@ def test_evaluators_vectorise_over_designs():
 
 
 def test_characteristic_rises_and_stress_below_allowable_case_a():
-    res = govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a.toml"))
+    res = govopt.evaluate(govopt.load_spec("specs/hamabe-a.toml"))
     assert np.all(np.diff(res.statics.omega) > 0)
     assert res.check("shear stress").passed
     # irregularity of the paper's rounded spring (kappa 64.2 > 63.3 needed) exceeds 0.12
@@ -220,10 +220,10 @@ def _without_spring(path: str, **speeds):
 @pytest.mark.parametrize(("path", "speeds", "words"), [
     # textbook Example 8's spring-and-gravity governor at 100-120 rpm: the sleeve's weight
     # alone lifts it faster; the compression spring would have to pull (-59.5 N)
-    ("govopt/specs/textbook-ex8-spring_gravity.toml", {"inner": 100.0, "outer": 120.0},
+    ("specs/textbook-ex8-spring_gravity.toml", {"inner": 100.0, "outer": 120.0},
      "a compression spring cannot pull"),
     # a band narrower than double precision resolves: isochronous to rounding
-    ("govopt/specs/textbook-ex4-hartnell.toml", {"inner": 240.0, "outer": 240.00000000000003},
+    ("specs/textbook-ex4-hartnell.toml", {"inner": 240.0, "outer": 240.00000000000003},
      "isochronous to rounding"),
 ])
 def test_no_band_spring_from_a_band_no_spring_can_give(path, speeds, words):
@@ -241,7 +241,7 @@ def test_band_spring_is_found_where_one_gives_the_band():
     """Example 4's band (240-256.8 rpm): the book's spring, 3.572 kgf/cm (the spec's)."""
     from govopt.spec import parse_spec
 
-    path = "govopt/specs/textbook-ex4-hartnell.toml"
+    path = "specs/textbook-ex4-hartnell.toml"
     spec = parse_spec(_without_spring(path, inner=240.0, outer=256.8), path)
     assert spec.band_spring["stiffness"] == pytest.approx(3.572 * 9.80665e2, rel=2e-3)
     assert spec.band_spring["force_inner"] > 0 and spec.band_spring["force_outer"] > 0

@@ -30,7 +30,7 @@ from govopt.study import (
 )
 from govopt.study.summary import check_columns
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 STUDY = SPECS / "studies" / "hamabe-study.toml"
 HARTNELL = SPECS / "textbook-ex4-hartnell.toml"
 RTOL = 1e-12

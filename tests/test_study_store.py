@@ -16,7 +16,7 @@ import pytest
 import govopt
 from govopt.study import FORMAT_VERSION, Store, load_study, run_study
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 STUDY = SPECS / "studies" / "hamabe-study.toml"
 CASE_A = SPECS / "hamabe-a.toml"
 

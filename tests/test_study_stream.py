@@ -21,7 +21,7 @@ from govopt.study import (
     summary_text,
 )
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 
 
 @pytest.mark.parametrize("sweeps, combine", [

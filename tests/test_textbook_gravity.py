@@ -29,7 +29,7 @@ from govopt.units import parse_quantity
 
 CM = 0.01
 RPM = math.pi / 30.0
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 
 
 def build(cls, **table):

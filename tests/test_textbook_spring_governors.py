@@ -32,7 +32,7 @@ CM = 0.01
 KGF = G  # N
 KGF_CM = KGF / CM  # N/m
 RPM = math.pi / 30.0  # rad/s
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 
 
 def build(cls, **table):

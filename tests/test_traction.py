@@ -30,7 +30,7 @@ from govopt.springs import leaf
 from govopt.units import G_STANDARD, Q_
 from govopt.units import parse_quantity as q
 
-SPECS = Path(__file__).resolve().parents[1] / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parents[1] / "specs"
 INCH, LBF = 0.0254, q("1 lbf", "force")
 RPM = q("1 rpm", "angular_velocity")
 #: F = W r N^2 / C with W in lbf, r in inches, N in rpm: C = g / (2 pi / 60)^2 in inches

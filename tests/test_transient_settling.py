@@ -101,7 +101,7 @@ def _from_roots(roots, x0):
     return (1.0, -r.sum().real / 3, e2.real / 3, -r.prod().real), x0
 
 
-# Hamabe's design (govopt/specs/hamabe-design.toml) with a 4e7 kg m^2 flywheel, SI: roots
+# Hamabe's design (specs/hamabe-design.toml) with a 4e7 kg m^2 flywheel, SI: roots
 # -1.26e-5 and a pendulum pair at +-19.57i decaying at 6.2e-7 (f = 8e-7 N m s/rad) or 1.46e-5
 # (f = 2.41e-6, the design's least admissible dash-pot)
 _FLY = (0.0576, 7.353660233596986, 0.0002788278746489902)

@@ -29,10 +29,10 @@ def _numbers(obj, path=""):
 
 
 def test_si_restatement_gives_the_same_results():
-    """govopt/specs/hamabe-a-si.toml (N, mm, MPa, rad/s) equals govopt/specs/hamabe-a.toml
+    """specs/hamabe-a-si.toml (N, mm, MPa, rad/s) equals specs/hamabe-a.toml
     (kgf, cm) to 1e-9."""
-    a = _numbers(govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a.toml")).to_dict())
-    b = _numbers(govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a-si.toml")).to_dict())
+    a = _numbers(govopt.evaluate(govopt.load_spec("specs/hamabe-a.toml")).to_dict())
+    b = _numbers(govopt.evaluate(govopt.load_spec("specs/hamabe-a-si.toml")).to_dict())
     assert a.keys() == b.keys()
     assert len(a) > 100
     for key, va in a.items():
@@ -40,7 +40,7 @@ def test_si_restatement_gives_the_same_results():
 
 
 def test_json_round_trip_is_plain_json():
-    res = govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a.toml"))
+    res = govopt.evaluate(govopt.load_spec("specs/hamabe-a.toml"))
     text = json.dumps(res.to_dict())
     assert "NaN" not in text
 

@@ -32,7 +32,7 @@ H = 1e-5  # rad, > the linear table's difference step 1e-6: each point stays on 
 
 
 def spec_of(case, **analysis):
-    spec = govopt.load_spec(f"govopt/specs/hamabe-{case}.toml")
+    spec = govopt.load_spec(f"specs/hamabe-{case}.toml")
     return spec.with_analysis(**analysis) if analysis else spec
 
 
@@ -202,7 +202,7 @@ def test_smooth_table_removes_the_first_order_floor_at_a_row():
 
 # -- spec ---------------------------------------------------------------------------------------
 
-BASE = Path("govopt/specs/hamabe-a.toml").read_text(encoding="utf-8")
+BASE = Path("specs/hamabe-a.toml").read_text(encoding="utf-8")
 
 
 def _parse(text):
@@ -237,7 +237,7 @@ def test_valve_table_setting():
 
 def test_rounding_of_units_is_not_a_gap():
     """The SI spec writes the rows in radians: alpha_inner equals the first row to rounding."""
-    spec = govopt.load_spec("govopt/specs/hamabe-a-si.toml")  # loads: no SpecError
+    spec = govopt.load_spec("specs/hamabe-a-si.toml")  # loads: no SpecError
     assert spec.governor.alpha_inner == pytest.approx(spec.governor.valve_gear.table_alpha[0],
                                                       abs=1e-12)
 

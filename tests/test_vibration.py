@@ -32,7 +32,7 @@ from govopt.governors.shaft import valvegear as vg
 from govopt.governors.shaft import vibration as V
 from govopt.spec import load_spec
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 KGF, CM = 9.80665, 0.01
 # Example 1's valve gear (kgf, cm -> SI; masses 12 and 6 kgf -> 12 and 6 kg)
 VG = dict(q=5 * CM, e=2.6 * CM, s=0.6 * CM, P1=16 * KGF, P3=12 * KGF, P4=16 * KGF, m_v=12.0,

@@ -22,7 +22,7 @@ from govopt.references import REFERENCES, found_in
 from govopt.report import excel
 
 ROOT = Path(__file__).resolve().parent.parent
-SPECS = ROOT / "govopt" / "specs"
+SPECS = ROOT / "specs"
 ALL = {p.stem: tomllib.loads(p.read_text(encoding="utf-8")) for p in sorted(SPECS.glob("*.toml"))}
 PDFTOTEXT = shutil.which("pdftotext")
 #: The height of a line of text in the PDF per point of font size: LibreOffice draws with

@@ -32,17 +32,18 @@ def bench(quick: Annotated[bool, common.flag(
           = True) -> None:
     """Speed against error of every analysis (one point per method and setting, errors
     against high-precision references) and the speed targets beside what was measured."""
-    from ..report import bench as b
+    from ..bench import report, suites
+    from ..bench import targets as measured
 
     if out is not None:  # before the benchmark: fail in a second, not after it
-        b.check_report(out, overwrite=force)
+        report.check_report(out, overwrite=force)
 
     def log(message: str) -> None:
         echo(f"  {message}", err=True)
 
-    rows = b.targets(quick, log=log) if targets else None
-    points = b.speed_vs_error(quick, log=log)
-    echo(b.summary(points, rows))
+    rows = measured.targets(quick, log=log) if targets else None
+    points = suites.speed_vs_error(quick, log=log)
+    echo(report.summary(points, rows))
     if out is not None:
-        for path in b.write_report(points, out, rows, overwrite=force):
+        for path in report.write_report(points, out, rows, overwrite=force):
             echo(f"wrote {Path(path).absolute()}")

@@ -87,7 +87,8 @@ def names_folder(path: str | Path) -> bool:
     return isinstance(path, str) and path.endswith(tuple(filter(None, (os.sep, os.altsep))))
 
 
-#: the installed package's own folder (its bundled specs and data): govopt writes nothing there
+#: the installed package's own folder (its data; its bundled specs in a plain install) and the
+#: bundled specs' folder (``specs/`` of an editable install): govopt writes nothing there
 PACKAGE = Path(__file__).resolve().parent.parent
 
 
@@ -97,11 +98,14 @@ def refuse_package(path: str | Path, what: str) -> None:
     reads: an ``-o ... --force`` there would replace a bundled spec for every later run. The
     one rule for every output of every command (design specs, workbooks, plots, copies of
     examples, benchmark reports, study databases and tables)."""
+    from ..examples import SPECS
+
     real = Path(os.path.realpath(path))
-    if real == PACKAGE or PACKAGE in real.parents:
-        raise GovoptError(f"{path}: cannot write {what} inside the installed govopt package "
-                          f"({PACKAGE}), whose bundled specs and data it reads; write it "
-                          "elsewhere (govopt init NAME copies a bundled spec to start from)")
+    for folder in (PACKAGE, SPECS.resolve()):
+        if real == folder or folder in real.parents:
+            raise GovoptError(f"{path}: cannot write {what} inside the installed govopt package "
+                              f"({folder}), whose bundled specs and data it reads; write it "
+                              "elsewhere (govopt init NAME copies a bundled spec to start from)")
 
 
 def _file_name(path: str | Path, what: str) -> Path:

@@ -58,52 +58,10 @@ def _plain(text: str) -> bool:
     return text.replace("\n", "").isprintable()
 
 
-def is_narrow(text: str) -> bool:
-    """Whether every character of ``text`` is one cell wide in rich's measure: Latin (up to
-    U+02FF, before the combining marks) and Greek (U+0370-U+03FF), e.g. "deg", "°", "ω"."""
-    return all(ch < "\u0300" or "\u0370" <= ch < "\u0400" for ch in text)
-
-
-def plain_table(headers, rows, *, right=(), show_header=True, width=400) -> list[str] | None:
-    r"""The lines rich prints for :meth:`TextReport.table` without colour (the ASCII box: a rule of
-    dashes under the header only, no edge, one space of padding each side of a column but at
-    the edges, a space between columns), trailing spaces stripped; None where rich could print
-    otherwise: a cell with a character not printable or not :func:`is_narrow` (rich measures wide
-    and zero-width characters, drops control codes, expands tabs), no rows at all, or a table
-    wider than ``width`` (rich wraps the last column).
-
-    >>> plain_table(["n", "x\n(mm)"], [["a", "1.5"], ["bb", ""]], right=(1,))
-    ['        x', 'n    (mm)', '---------', 'a     1.5', 'bb']
-    """
-    rows = [headers, *rows] if show_header else list(rows)
-    if not headers or not rows or not all(is_narrow(c) and _plain(c) for r in rows for c in r):
-        return None
-    cells = [[c.split("\n") for c in r] for r in rows]
-    sizes = [max(len(x) for r in cells for x in r[j]) for j in range(len(headers))]
-    total = max(sum(sizes) + 3 * (len(sizes) - 1), 1)  # rich: a column at least 1 wide
-    if total > width:
-        return None
-    if len(sizes) > 1:  # rich renders no line of a cell with no room inside its padding
-        cells = [[c if size else [] for c, size in zip(r, sizes, strict=True)] for r in cells]
-    lines = []
-    for i, row in enumerate(cells):
-        height = max(1, *map(len, row))
-        if i == 0 and show_header:  # rich aligns the header's cells at the bottom, others top
-            row = [[""] * (height - len(c)) + c for c in row]
-        for k in range(height):
-            words = [c[k] if k < len(c) else "" for c in row]
-            lines.append("   ".join(w.rstrip().rjust(size) if j in right else w.ljust(size)
-                                    for j, (w, size) in enumerate(zip(words, sizes, strict=True)))
-                         .rstrip())
-        if i == 0 and show_header:
-            lines.append("-" * total)
-    return lines
-
-
 class TextReport:
-    """Collects the report: coloured on a terminal (rich, imported then), plain text when not
-    (:func:`plain_table`, the same text as rich's without colour; rich where it could differ).
-    ``plain``: None for not ``colour``; False renders through rich without colour."""
+    """Collects the report: tables through rich, coloured on a terminal, plain text without
+    colour when not. ``plain``: None for not ``colour`` (a line of printable text written as
+    is); False renders every line through rich as well."""
 
     def __init__(self, colour: bool, plain: bool | None = None):
         self.colour = colour
@@ -143,11 +101,6 @@ class TextReport:
         """``rows`` of strings; ``right``: indices of right-justified columns; ``styles``: a
         style per row (or None)."""
         headers, rows = [printable(h) for h in headers], [[printable(c) for c in r] for r in rows]
-        lines = plain_table(headers, rows, right=right,
-                            show_header=show_header) if self.plain else None
-        if lines is not None:
-            self.buf.write("".join(f"{x}\n" for x in lines))
-            return
         from rich.table import Table
         from rich.text import Text
 

@@ -21,7 +21,7 @@ from govopt.bulk import (
 )
 from govopt.spec import Design, with_values
 
-SPECS = Path(__file__).resolve().parent.parent / "govopt" / "specs"
+SPECS = Path(__file__).resolve().parent.parent / "specs"
 WITH_DESIGN = sorted(p.name for p in SPECS.glob("*.toml") if "[design]" in p.read_text())
 
 #: relative agreement of a bulk figure with evaluate's (both are the same formulas in float64;
@@ -243,7 +243,7 @@ def test_more_checks_than_bits_in_an_integer():
     """Twenty load changes (govopt's limit) give a Porter on an engine more than 62 checks: the
     rows' status still names every failing check (the failure bits as Python integers past
     62, not an overflow)."""
-    spec = load_spec("govopt/specs/porter-engine.toml")  # with sleeve friction: its rows too
+    spec = load_spec("specs/porter-engine.toml")  # with sleeve friction: its rows too
     changes = [{"name": f"change {i}", "from": "21 cm", "to": f"{22 + i / 20:.3f} cm"}
                for i in range(20)]
     data = dict(spec.data, load_change=changes,

@@ -1,6 +1,6 @@
 """What an engineer sees: the text report (items 3: every value with its unit, the same
 unit for the same quantity, margins in words, "never", the objective's unit, colour on a
-terminal and plain text when piped) and the JSON (item 8: no section twice, infinities as null
+terminal and plain text when piped) and the JSON (no section twice, infinities as null
 with a flag, units in the keys). The workbook's tables, print setup and cached values are tested
 in test_excel.py."""
 
@@ -23,7 +23,7 @@ from govopt.report.text import check_name, format_result, format_summary
 from govopt.result import Check
 
 ROOT = Path(__file__).resolve().parent.parent
-SPECS = ROOT / "govopt" / "specs"
+SPECS = ROOT / "specs"
 ANSI = re.compile(r"\x1b\[")
 
 
@@ -114,12 +114,12 @@ def test_terminal_report_is_coloured(tmp_path):
 
 @pytest.mark.parametrize("cell", ["a\tb", "a\rb", "a\x1b[31mb"])
 def test_control_codes_in_cells_are_shown_as_escapes(cell):
-    """A tab, carriage return or escape code in a cell is printed as its escape (``\\t``), the
-    same by both renderers."""
-    plain, rich, used_rich = _both(lambda r: r.table(["a", "b"], [["1", cell], [cell, "2"]],
-                                                     right=(0,)))
-    assert plain == rich
-    assert not used_rich
+    """A tab, carriage return or escape code in a cell is printed as its escape (``\\t``)."""
+    from govopt.report.text import TextReport
+
+    report = TextReport(False)
+    report.table(["a", "b"], [["1", cell], [cell, "2"]], right=(0,))
+    plain = report.text()
     assert repr(cell)[1:-1] in plain and cell not in plain
 
 
@@ -208,99 +208,6 @@ def test_length_coordinate_in_mm_everywhere(porter):
     head = text.splitlines()[text.splitlines().index(
         "Characteristic (textbook 3.4(b) eq. (i), 3.3)") + 2]
     assert head.split()[0] == "(mm)"
-
-
-# ------------------------------------------------------------------------------------------
-# the plain renderer: rich's text without importing rich when colour is off
-
-
-def _both(draw):
-    """``draw(report)`` through the plain renderer and through rich without colour: the two
-    texts, and whether the plain report fell back on rich."""
-    from govopt.report.text import TextReport
-
-    plain, rich = TextReport(False), TextReport(False, plain=False)
-    draw(plain)
-    draw(rich)
-    return plain.text(), rich.text(), plain._console is not None
-
-
-TABLES = {  # headers, rows, right-justified columns, show_header
-    "numbers right-justified under two-line headers": (
-        ["alpha\n(deg)", "omega\n(rad/s)", "M_r0\n(N m)", "k^2\n(1/s^2)"],
-        [["50.000", "23.5579", "5.369", "312.5"], ["64.667", "25.1327", "-4.019", "-1.5"]],
-        range(4), True),
-    "empty cells and a long last column": (
-        ["check", "value", "limit", "unit", "margin", "result"],
-        [["shear stress", "372.717", "<= 392.266", "MPa", "4.98 % spare", "PASS"],
-         ["", "", "", "", "", ""],
-         ["k^2 > 0", "", ">= 0", "-", "", "FAIL " + "very long words " * 12]],
-        (1, 2, 4), True),
-    "a header-less property table": (
-        ["quantity", "unit", "value"],
-        [["k^2", "1/s^2", "413.52"], ["k^2 / omega0^2", "-", "0.65466"], ["resonant", "-", ""]],
-        (2,), False),
-    "one-line headers beside a two-line one (rich puts them at the bottom)": (
-        ["n", "x\n(mm)", ""], [["a", "1.5", ""], ["bb", "", ""], ["", "2\n3", "  trailing  "]],
-        (1, 2), True),
-    "an empty column (rich prints no line of its cells)": (
-        ["a", "", "b"], [["3", "\n\n", "4"], ["1", "", "2"]], (2,), True),
-    "Latin and Greek characters, one cell each": (
-        ["omega\n(rad/s)", "unit", "source"],
-        [["25.13", "\u00b0", "Shigley \u00a710-11"], ["1.5", "N\u00b7m", "\u03c9\u00b2 \u00e9"]],
-        (0,), True),
-}
-
-
-@pytest.mark.parametrize("name", TABLES)
-def test_plain_tables_are_rich_text(name):
-    """The plain renderer prints rich's text byte for byte (trailing spaces stripped, as the
-    report does) for the report's kinds of table, without rich."""
-    headers, rows, right, show_header = TABLES[name]
-    plain, rich, used_rich = _both(lambda r: r.table(headers, rows, right=right,
-                                                     show_header=show_header))
-    assert plain == rich
-    assert not used_rich
-
-
-def test_plain_narrow_characters_are_one_cell_in_rich():
-    """The characters the plain renderer counts one column wide are one cell in rich's measure
-    (Latin, Greek); the combining marks between them (U+0300-U+036F) are not."""
-    from rich.cells import cell_len
-
-    from govopt.report.text import is_narrow
-
-    chars = [chr(i) for i in range(0x400) if chr(i).isprintable()]
-    assert {cell_len(ch) for ch in chars if is_narrow(ch)} == {1}
-    assert {cell_len(ch) for ch in chars if not is_narrow(ch)} == {0}
-
-
-@pytest.mark.parametrize("cell", ["e\u0301", "\u6f22\u5b57", "x" * 400])
-def test_plain_tables_leave_rich_what_it_measures_otherwise(cell):
-    """Wide or zero-width characters and a table wider than the report's 400 columns go
-    through rich, so the text is still rich's. (Tabs and control codes never reach either
-    renderer: they are shown as escapes, next test.)"""
-    plain, rich, used_rich = _both(lambda r: r.table(["a", "b"], [["1", cell], [cell, "2"]],
-                                                     right=(1,)))
-    assert plain == rich and used_rich
-
-
-@pytest.mark.parametrize("which", ["shaft", "designed", "porter"])
-def test_piped_reports_are_rich_text_without_rich(which, request, monkeypatch):
-    """Every table of an evaluation (shaft, ball governor) and of a design report: the plain
-    report never needs rich, and equals the report rendered through rich."""
-    from govopt.report import text
-
-    res = request.getfixturevalue(which)
-
-    def no_rich(self):
-        raise AssertionError("the piped report imported rich")
-
-    with monkeypatch.context() as m:
-        m.setattr(text.TextReport, "console", property(no_rich))
-        plain = format_result(res, colour=False)
-    monkeypatch.setattr(text, "plain_table", lambda *args, **kw: None)  # every table by rich
-    assert plain == format_result(res, colour=False)
 
 
 # ------------------------------------------------------------------------------------------

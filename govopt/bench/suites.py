@@ -1,19 +1,11 @@
-"""Benchmarks: speed against error, and the speed targets beside what was measured.
+"""Speed against error: one point (time per evaluation, error) per method and setting over a
+fixed suite with the hard cases, errors against high-precision references, and the Pareto front
+of each analysis.
 
-Run with ``govopt bench [--quick] [--out DIR]`` (or the scripts in ``benchmarks/``). Never used
-as timed assertions in the tests. Two parts:
-
-* :func:`targets`: ``design()`` in process (CPU), whole-process times of ``govopt --help``,
-  ``evaluate`` and ``design`` (CPU, user + system, which is what an idle machine's wall time
-  is; the wall time beside it, and a bare ``python -c pass`` timed in the same run: the machine
-  is shared, so wall times carry its load), the peak RSS of a design over a catalogue of 48
-  million combinations, and (from a checkout: ``benchmarks/bench_study.py``) the designs per
-  second of ``evaluate_many`` with and without the load change against a loop of
-  ``govopt.evaluate`` timed in the same run.
 * :func:`speed_vs_error`: one point (time per evaluation, error) per method and setting over a
   fixed suite with the hard cases, errors against high-precision references:
 
-  =============  ==============================================================================
+=============  ==============================================================================
   statics        exact linkage (eq. 2) vs the paper's series (eq. 3); reference: the linkage
                  and centrifugal terms in mpmath (50 digits; the valve-gear reactions, which
                  both share, in binary64)
@@ -35,44 +27,17 @@ as timed assertions in the tests. Two parts:
                  mpmath (40 digits, expm and findroot) along the same phase sequence
   optimiser      ``design()`` on coarser catalogue grids vs its gap to the exhaustive optimum
                  of the full grid; the GP's continuous bound and its gap below that optimum
-  =============  ==============================================================================
-
-:func:`write_report` writes ``speed-vs-error.md`` (tables, the Pareto front of each analysis,
-the targets), ``speed-vs-error.csv`` and ``speed-vs-error.png`` (log-log, one panel per
-analysis). :mod:`govopt.fidelity` reads the CSV shipped in ``govopt/data``.
 """
 
 from __future__ import annotations
 
-import csv
 import math
-import os
-import resource
-import statistics
-import subprocess
-import sys
-import tempfile
 import time
-from dataclasses import asdict, dataclass, replace
-from pathlib import Path
+from dataclasses import dataclass, replace
 
 import numpy as np
 
-ROOT = Path(__file__).resolve().parents[2]
-SPECS = Path(__file__).resolve().parents[1] / "specs"  # the bundled specs (package data)
-
-#: The speed targets (docs/decisions.md, imports on demand): name -> (limit, unit, what is measured)
-TARGETS = {
-    "design() in process": (0.1, "s CPU", "median CPU of design(), bundled hamabe-design"),
-    "govopt --help": (0.3, "s CPU", "whole process, median user + system time"),
-    "govopt evaluate": (0.5, "s CPU", "whole process, median user + system (bundled hamabe-a)"),
-    "govopt design": (0.6, "s CPU", "whole process, median user + system (hamabe-design)"),
-    "peak RSS, 48 M combinations": (1024.0, "MB", "design() in a child process"),
-    "evaluate_many, statics + k^2": (1e5, "designs/s", "CPU, hamabe-a designs scattered",
-                                     ">="),
-    "evaluate_many, + load change": (3e4, "designs/s", "CPU, the same with the transient",
-                                     ">="),
-}
+from ..examples import SPECS  # the bundled specs
 
 #: The settings govopt uses unless a spec's use case picks others: (analysis, method, setting)
 DEFAULTS = {
@@ -102,7 +67,7 @@ class Point:
     default: bool = False
 
 
-def _cpu_per_call(fn, min_time: float = 0.02, repeats: int = 3) -> float:
+def cpu_per_call(fn, min_time: float = 0.02, repeats: int = 3) -> float:
     """Least CPU time per call of ``fn()`` over ``repeats`` runs of at least ``min_time``."""
     best = math.inf
     for _ in range(repeats):
@@ -225,7 +190,7 @@ def transient_suite(quick: bool = False) -> list[Point]:
                 errs[k] = _rel(np.asarray(y) - refs[k], np.max(np.abs(refs[k])))
             except Exception:  # a method that fails on a case: infinite error
                 errs[k] = math.inf
-            times.append(_cpu_per_call(lambda a=a, x=x, t=t: _try(fn, a, x, t),
+            times.append(cpu_per_call(lambda a=a, x=x, t=t: _try(fn, a, x, t),
                                        0.005 if quick else 0.01, 2 if quick else 3))
         worst = max(errs, key=lambda k: errs[k])
         return Point("transient", label, setting, float(np.mean(times)), errs[worst], worst,
@@ -251,7 +216,7 @@ def transient_suite(quick: bool = False) -> list[Point]:
         for i, k in enumerate(names):
             errs[k] = _rel(y[i] - refs[k], np.max(np.abs(refs[k])))
         worst = max(errs, key=lambda k: errs[k])
-        per = _cpu_per_call(lambda m=method: batched(m), 0.02 if quick else 0.05) / A.shape[1]
+        per = cpu_per_call(lambda m=method: batched(m), 0.02 if quick else 0.05) / A.shape[1]
         points.append(Point("transient", label, f"batched x{A.shape[1]}", per, errs[worst],
                             worst))
 
@@ -370,7 +335,7 @@ def statics_suite(quick: bool = False) -> list[Point]:
             ch = run()
             ref = statics_reference(spec, ch.alpha)
             errs[f"hamabe-{case}"] = _rel(ch.omega - ref, 1.0) / float(np.min(ref))
-            times.append(_cpu_per_call(run, 0.01 if quick else 0.03))
+            times.append(cpu_per_call(run, 0.01 if quick else 0.03))
         worst = max(errs, key=lambda k: errs[k])
         points.append(Point("statics", label, "binary64", float(np.mean(times)), errs[worst],
                             worst, "equilibrium speed over the range"))
@@ -401,7 +366,7 @@ def load_change_suite(quick: bool = False) -> list[Point]:
         m, t = ref.model, ref.t
         scale = abs(m.xi0)
         lin = linear_response(m.I, m.f, m.k2, m.C, m.R, m.xi0, m.eta0, t)[:, 0]
-        per = _cpu_per_call(lambda c=change: loadchange.analyse(spec, sd, c, spec.design.dashpot),
+        per = cpu_per_call(lambda c=change: loadchange.analyse(spec, sd, c, spec.design.dashpot),
                             0.02 if quick else 0.05)
         points.append(Point(f"load change, {name}", "linear eq. 28 (govopt)", "exact solver",
                             per, _rel(lin - ref.xi, scale), f"hamabe-a {name}",
@@ -411,7 +376,7 @@ def load_change_suite(quick: bool = False) -> list[Point]:
                 return nonlinear.nonlinear_load_change(spec, sd, c, t, rtol=rtol,
                                                        atol=rtol * 1e-3)
             y = run()
-            per = _cpu_per_call(run, 0.0, 1 if quick else 2)
+            per = cpu_per_call(run, 0.0, 1 if quick else 2)
             points.append(Point(f"load change, {name}", "nonlinear DOP853", f"rtol={rtol:g}",
                                 per, _rel(y.xi - ref.xi, scale), f"hamabe-a {name}"))
     return points
@@ -446,7 +411,7 @@ def vibration_suite(quick: bool = False) -> list[Point]:
                 return vibration.vibration(spec, sd, a0, n_harmonics=N, **kw)
             r = run()
             errs[k] = abs(r.peak_to_peak_rad / ref[k].peak_to_peak_rad - 1.0)
-            times.append(_cpu_per_call(run, 0.01 if quick else 0.03))
+            times.append(cpu_per_call(run, 0.01 if quick else 0.03))
         worst = max(errs, key=lambda k: errs[k])
         points.append(Point("vibration", "harmonic series", f"N = {N}", float(np.mean(times)),
                             errs[worst], worst, "peak-to-peak"))
@@ -569,7 +534,7 @@ def friction_suite(quick: bool = False) -> list[Point]:
         r = friction_transient(*args, max_strokes=strokes)
         return [(p.t_end, p.xi_end) for p in r.phases if p.kind == "slide" and p.complete]
 
-    points = [Point("friction", "closed form (govopt)", "expm + brentq", _cpu_per_call(closed),
+    points = [Point("friction", "closed form (govopt)", "expm + brentq", cpu_per_call(closed),
                     err(closed()), "hamabe-d Example 4", f"{len(ref)} strokes")]
     tols = (1e-4, 1e-8) if quick else (1e-4, 1e-6, 1e-8, 1e-10)
     for method in ("RK45", "DOP853", "Radau"):
@@ -577,7 +542,7 @@ def friction_suite(quick: bool = False) -> list[Point]:
             def run(method=method, rtol=rtol):
                 return _event_driven(*args, t_end, len(ref), method, rtol)
             points.append(Point("friction", f"event-driven solve_ivp {method}",
-                                f"rtol={rtol:g}", _cpu_per_call(run, 0.0, 1 if quick else 2),
+                                f"rtol={rtol:g}", cpu_per_call(run, 0.0, 1 if quick else 2),
                                 err(run()), "hamabe-d Example 4", f"{len(ref)} strokes"))
     return points
 
@@ -588,7 +553,7 @@ def friction_suite(quick: bool = False) -> list[Point]:
 
 
 def optimiser_suite(quick: bool = False) -> list[Point]:
-    """``design()`` of govopt/specs/hamabe-design.toml on coarser grids (coil radius, turns, weight
+    """``design()`` of specs/hamabe-design.toml on coarser grids (coil radius, turns, weight
     steps x k), and the continuous GP bound, against the exhaustive optimum of the full grid."""
     from ..optimize import design as dz
     from ..spec import load_spec
@@ -610,14 +575,14 @@ def optimiser_suite(quick: bool = False) -> list[Point]:
             obj = value(dz.design(s))
         except Exception:
             obj = math.inf
-        per = _cpu_per_call(lambda s=s: _try(dz.design, s), 0.0, 2 if quick else 3)
+        per = cpu_per_call(lambda s=s: _try(dz.design, s), 0.0, 2 if quick else 3)
         label = "full catalogue" if k == 1 else f"grids x{k}"
         points.append(Point("optimiser", "design() exhaustive", label, per,
                             obj / best - 1.0, "hamabe-design",
                             "gap to the exhaustive optimum of the full grid"))
     grid, km, lo, hi, _ = dz.statics_window(spec, req)
     bound = dz.continuous_bound(spec, req, km, lo, hi)["objective"]
-    per = _cpu_per_call(lambda: dz.continuous_bound(spec, req, km, lo, hi), 0.02)
+    per = cpu_per_call(lambda: dz.continuous_bound(spec, req, km, lo, hi), 0.02)
     points.append(Point("optimiser", "continuous bound (GP)", "pruned masses", per,
                         1.0 - bound / best, "hamabe-design",
                         "a lower bound: its gap below the discrete optimum"))
@@ -654,421 +619,3 @@ def speed_vs_error(quick: bool = False, analyses=None, log=None) -> list[Point]:
             log(f"{name}: {time.perf_counter() - t0:.1f} s")
     pareto(points)
     return points
-
-
-# ---------------------------------------------------------------------------------------------
-# Targets 1-3
-# ---------------------------------------------------------------------------------------------
-
-
-def design_in_process(repeats: int = 7) -> dict:
-    """Median CPU of ``design()`` on the bundled spec (after one warm-up), its stages, and a
-    check that its bound (pruned masses, certified by the energy bound where it is attained)
-    equals the GP solved by cvxpy at every mass."""
-    from ..optimize import design as dz
-    from ..optimize.spring_gp import cached_gp
-    from ..spec import load_spec
-
-    spec = load_spec(SPECS / "hamabe-design.toml")
-    dz.design(spec)
-    times = []
-    for _ in range(repeats):
-        t0 = time.process_time()
-        dz.design(spec)
-        times.append(time.process_time() - t0)
-    req = dz.requirements(spec)
-    grid, km, lo, hi, _ = dz.statics_window(spec, req)
-    stages = {
-        "statics window": _cpu_per_call(lambda: dz.statics_window(spec, req)),
-        "spring screen": _cpu_per_call(lambda: dz.best_discrete(spec, req, km, grid, lo, hi,
-                                                                dynamics=False)),
-        "discrete search with dynamics": _cpu_per_call(
-            lambda: dz.best_discrete(spec, req, km, grid, lo, hi)),
-        "continuous bound": _cpu_per_call(lambda: dz.continuous_bound(spec, req, km, lo, hi)),
-    }
-    pruned = dz.continuous_bound(spec, req, km, lo, hi)["objective"]
-    gp = cached_gp("mass", spec.material.stress_correction, "band")
-    every = []
-    mat = spec.material
-    t0 = time.process_time()
-    for i in np.nonzero(lo <= hi)[0]:
-        k_hi = float(min(hi[i], 1e12))
-        per = float(km.force.x[i, -1])
-        sol = gp.solve(**dz.gp_values(spec, req, km, i, float(max(lo[i], 1e-9)), k_hi, per),
-                       k_s=mat.allowable_shear_stress)
-        if sol.ok:
-            every.append(float(km.m[i, 0] + km.central[i, 0]) + sol.objective)
-    t_every = time.process_time() - t0
-    return {"median_cpu_s": statistics.median(times), "runs": times, "stages_cpu_s": stages,
-            "bound_pruned": pruned, "bound_every_mass": min(every),
-            "bound_every_mass_cpu_s": t_every, "masses": len(every)}
-
-
-def _child_times(args, repeats, env=None):
-    """Median wall and CPU (children's user + system) of running ``args`` ``repeats`` times."""
-    walls, cpus = [], []
-    for _ in range(repeats):
-        before = resource.getrusage(resource.RUSAGE_CHILDREN)
-        t0 = time.perf_counter()
-        subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False,
-                       cwd=ROOT, env=env)
-        walls.append(time.perf_counter() - t0)
-        after = resource.getrusage(resource.RUSAGE_CHILDREN)
-        cpus.append(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime)
-    return statistics.median(walls), statistics.median(cpus)
-
-
-def process_times(repeats: int = 5) -> dict:
-    """Whole-process times of the commands, with ``python -c pass`` as the baseline."""
-    py = [sys.executable]
-    cli = py + ["-m", "govopt.cli"]
-    runs = {
-        "python -c pass": py + ["-c", "pass"],
-        "govopt --help": cli + ["--help"],
-        "govopt evaluate": cli + ["evaluate"],
-        "govopt design": cli + ["design", str(SPECS / "hamabe-design.toml")],
-    }
-    out = {}
-    for name, args in runs.items():
-        wall, cpu = _child_times(args, repeats)
-        out[name] = {"wall_s": wall, "cpu_s": cpu}
-    return out
-
-
-def big_catalogue_spec(folder: Path) -> Path:
-    """govopt/specs/hamabe-design.toml with every catalogue step refined: 193 weights x 249066
-    springs = 48.1 million mass-spring combinations."""
-    text = (SPECS / "hamabe-design.toml").read_text()
-    for old, new in (('turn_step = 0.5', 'turn_step = 0.125'),
-                     ('coil_radius_step = "1 mm"', 'coil_radius_step = "0.5 mm"'),
-                     ('weight_step = "0.25 kgf"', 'weight_step = "0.0625 kgf"')):
-        if old not in text:
-            raise ValueError(f"hamabe-design.toml no longer has {old!r}")
-        text = text.replace(old, new)
-    path = folder / "hamabe-48M.toml"
-    path.write_text(text)
-    return path
-
-
-def peak_memory() -> dict:
-    """Peak RSS (MB) of a child process that designs the 48 M-combination catalogue."""
-    code = ("import resource, sys, time, json\n"
-            "from govopt import load_spec, design\n"
-            "t = time.process_time()\n"
-            "r = design(load_spec(sys.argv[1]))\n"
-            "print(json.dumps({'search': r.optimisation['search'], 'cpu_s': "
-            "time.process_time() - t, 'rss_MB': resource.getrusage(resource.RUSAGE_SELF)"
-            ".ru_maxrss / 1024}))\n")
-    with tempfile.TemporaryDirectory() as tmp:
-        path = big_catalogue_spec(Path(tmp))
-        p = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True,
-                           text=True, cwd=ROOT, check=False)
-    if p.returncode != 0:
-        return {"error": p.stderr.strip().splitlines()[-1:]}
-    import json
-
-    return json.loads(p.stdout.strip().splitlines()[-1])
-
-
-def targets(quick: bool = False, log=None) -> list[dict]:
-    """Every speed target beside what was measured (rows for :func:`write_report`)."""
-    rows = []
-
-    def add(name, value, extra=""):
-        limit, unit, what, *sense = TARGETS[name]
-        sense = sense[0] if sense else "<="
-        rows.append({"target": name, "limit": limit, "unit": unit, "measured": value,
-                     "sense": sense, "met": bool(value <= limit if sense == "<=" else
-                                                 value >= limit),
-                     "what": what, "note": extra})
-
-    d = design_in_process(3 if quick else 7)
-    rel = abs(d["bound_pruned"] / d["bound_every_mass"] - 1.0)
-    add("design() in process", d["median_cpu_s"],
-        f"its bound {d['bound_pruned']:.12g} (pruned masses, energy-certified) = the GP solved "
-        f"at all {d['masses']} masses {d['bound_every_mass']:.12g} to {rel:.1e} "
-        f"({d['bound_every_mass_cpu_s']:.2f} s CPU)")
-    if log:
-        log("design() in process measured")
-    pt = process_times(3 if quick else 5)
-    base = pt["python -c pass"]
-    load = os.getloadavg()[0]
-    for name in ("govopt --help", "govopt evaluate", "govopt design"):
-        add(name, pt[name]["cpu_s"], f"wall {pt[name]['wall_s']:.2f} s at load average "
-            f"{load:.1f} (on an idle machine wall ~ CPU); python -c pass {base['cpu_s']:.2f} s "
-            f"CPU, {base['wall_s']:.2f} s wall")
-    if log:
-        log("whole-process times measured")
-    mem = peak_memory()
-    if "rss_MB" in mem:
-        add("peak RSS, 48 M combinations", mem["rss_MB"],
-            f"{mem['search']['combinations']:,} combinations, "
-            f"{mem['search']['spring_feasible']:,} spring-feasible, {mem['cpu_s']:.1f} s CPU")
-    if log:
-        log("peak memory measured")
-    bulk = _benchmark_module("bench_study")
-    if bulk is not None:  # a checkout: benchmarks/ beside the package
-        b = bulk.bulk_bench(20_000 if quick else 100_000, 50 if quick else 200, 3)
-        loop = f"a loop of govopt.evaluate: {b['evaluate_loop_points_per_s']:.3g} designs/s"
-        add("evaluate_many, statics + k^2", b["statics_k2_vectorised_points_per_s"],
-            f"{b['points']:,} designs; {b['statics_k2_speedup_vs_evaluate_loop']:.0f} x {loop}")
-        add("evaluate_many, + load change", b["with_transient_vectorised_points_per_s"],
-            f"{b['with_transient_points']:,} designs; "
-            f"{b['with_transient_speedup_vs_evaluate_loop']:.0f} x {loop}")
-        if log:
-            log("bulk evaluation measured")
-    return rows
-
-
-# ---------------------------------------------------------------------------------------------
-# Report
-# ---------------------------------------------------------------------------------------------
-
-
-def _fmt(x: float, digits: int = 2) -> str:
-    if x == 0:
-        return "0"
-    if not math.isfinite(x):
-        return "fails" if x > 0 else str(x)
-    return f"{x:.{digits}e}"
-
-
-def markdown(points: list[Point], target_rows: list[dict] | None = None) -> str:
-    """The report: the targets, then one table per analysis (Pareto front and defaults
-    marked)."""
-    lines = ["# Speed against error", ""]
-    if target_rows:
-        lines += ["## Speed targets", "", "| target | limit | measured | met | notes |",
-                  "|---|---|---|---|---|"]
-        for r in target_rows:
-            lines.append(f"| {r['target']} | {r.get('sense', '<=')} {r['limit']:g} {r['unit']} | "
-                         f"{r['measured']:.3g} {r['unit']} | {'yes' if r['met'] else 'NO'} | "
-                         f"{r['note']} |")
-        lines.append("")
-    lines += ["Time: CPU seconds per evaluation (least of repeated runs). Error: relative, worst "
-              "over the suite's cases, against a high-precision reference "
-              "(see govopt/report/bench.py). **P**: on the analysis's speed-error Pareto front; "
-              "**D**: govopt's default.", ""]
-    for analysis in dict.fromkeys(p.analysis for p in points):
-        lines += [f"## {analysis}", "", "| method | setting | time per evaluation (s) | error "
-                  "| worst case | | |", "|---|---|---|---|---|---|---|"]
-        for p in sorted((p for p in points if p.analysis == analysis),
-                        key=lambda p: (p.method, p.time_s)):
-            lines.append(f"| {p.method} | {p.setting} | {_fmt(p.time_s)} | {_fmt(p.error)} | "
-                         f"{p.worst_case} | {'P' if p.pareto else ''} | "
-                         f"{'D' if p.default else ''} |")
-        lines.append("")
-    return "\n".join(lines)
-
-
-def summary(points: list[Point], target_rows: list[dict] | None = None) -> str:
-    """Plain text for the terminal: each target beside what was measured, then per analysis
-    the default setting(s) and the Pareto front."""
-    lines = []
-    if target_rows:
-        lines.append("speed targets                  limit        measured     met")
-        for r in target_rows:
-            lines.append(f"  {r['target']:<28s} {r.get('sense', '<=')} {r['limit']:<6g}"
-                         f"{r['unit']:<5s} {r['measured']:<8.3g}{r['unit']:<5s} "
-                         f"{'yes' if r['met'] else 'NO'}"
-                         f"   {r['note']}")
-    lines.append("speed against error (CPU s per evaluation, relative error; * default)")
-    for analysis in dict.fromkeys(p.analysis for p in points):
-        pts = [p for p in points if p.analysis == analysis]
-        lines.append(f"  {analysis}:")
-        for p in sorted((p for p in pts if p.pareto or p.default), key=lambda p: p.time_s):
-            lines.append(f"    {'*' if p.default else ' '}{'front' if p.pareto else 'OFF  '} "
-                         f"{p.method} [{p.setting}]: {_fmt(p.time_s)} s, error {_fmt(p.error)}")
-    return "\n".join(lines)
-
-
-#: Points nearer than this in log10 of time and of error share one label ("grids x2, x4").
-LABEL_NEAR = (0.08, 0.2)
-
-
-def zero_floor(errors) -> float:
-    """Where a panel draws an error of 0 (exact): a decade below its least nonzero error,
-    never above 1e-3 (a log axis has no 0)."""
-    nonzero = [e for e in errors if math.isfinite(e) and e > 0]
-    return min(10.0 ** (math.floor(math.log10(min(nonzero))) - 1) if nonzero else 1e-3, 1e-3)
-
-
-def label_points(ax, marks: list[tuple[float, float, str]]) -> None:
-    """Annotate points, one label per cluster of points that would overlap (within
-    :data:`LABEL_NEAR` in log space), the cluster's texts joined; a label in the right fifth of
-    the (log) x axis is written to the left of its point, inside the axes."""
-    groups: list[list[tuple[float, float, str]]] = []
-    for x, y, text in marks:
-        for g in groups:
-            gx, gy, _ = g[0]
-            if (abs(math.log10(x / gx)) < LABEL_NEAR[0]
-                    and abs(math.log10(y / gy)) < LABEL_NEAR[1]):
-                g.append((x, y, text))
-                break
-        else:
-            groups.append([(x, y, text)])
-    for g in groups:
-        x, y, _ = g[0]
-        texts = list(dict.fromkeys(t for _, _, t in g))
-        common = os.path.commonprefix(texts).rsplit(" ", 1)[0] + " " if len(texts) > 1 else ""
-        text = (common + ", ".join(t[len(common):] for t in texts)) if common.strip() else \
-            ", ".join(texts)
-        lo, hi = (math.log10(v) for v in ax.get_xlim())
-        left = math.log10(x) > hi - 0.2 * (hi - lo)
-        ax.annotate(text, (x, y), fontsize=6, xytext=(-4 if left else 3, 3),
-                    textcoords="offset points", ha="right" if left else "left")
-
-
-def plot(points: list[Point], path: Path) -> None:
-    """Log-log panels, one per analysis: time per evaluation against error. An error of 0
-    (exact) is drawn on a dashed line a decade below the panel's least nonzero error, and says
-    so; failures at 10 (crosses). Labels of points that would overlap are joined."""
-    from matplotlib.figure import Figure
-    from matplotlib.ticker import NullFormatter
-
-    analyses = list(dict.fromkeys(p.analysis for p in points))
-    cols = 3
-    rows = math.ceil(len(analyses) / cols)
-    fig = Figure(figsize=(5.2 * cols, 4.2 * rows), layout="constrained")
-    axes = fig.subplots(rows, cols, squeeze=False).ravel()
-    for ax, analysis in zip(axes, analyses, strict=False):
-        pts = [p for p in points if p.analysis == analysis]
-        floor = zero_floor(p.error for p in pts)
-
-        def shown(p: Point, floor=floor) -> float:
-            return min(max(p.error, floor), 10.0) if math.isfinite(p.error) else 10.0
-
-        methods = list(dict.fromkeys(p.method for p in pts))
-        marks = []
-        for j, method in enumerate(methods):
-            mp_ = [p for p in pts if p.method == method]
-            x = [p.time_s for p in mp_]
-            y = [shown(p) for p in mp_]
-            ax.plot(x, y, marker="o^sDvP*Xh<>"[j % 11], ls="-" if len(mp_) > 1 else "none",
-                    label=method, ms=5)
-            for p, xi, yi in zip(mp_, x, y, strict=True):
-                if not math.isfinite(p.error):
-                    ax.plot([xi], [yi], "kx", ms=9)
-                if p.default:
-                    ax.plot([xi], [yi], "o", mfc="none", mec="k", ms=12)
-                if len(mp_) > 1:
-                    marks.append((xi, yi, p.setting.split("=")[-1].strip()))
-        if any(p.error == 0 for p in pts):
-            ax.axhline(floor, color="0.5", ls="--", lw=0.8)
-            ax.annotate("error 0 (exact)", (0.01, floor), xycoords=("axes fraction", "data"),
-                        xytext=(0, 3), textcoords="offset points", fontsize=7, color="0.3")
-        front = sorted((p for p in pts if p.pareto), key=lambda p: p.time_s)
-        ax.plot([p.time_s for p in front], [shown(p) for p in front], "k:", lw=1)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        lo, hi = min(p.time_s for p in pts), max(p.time_s for p in pts)
-        span = max(math.sqrt(hi / lo), 4.0)
-        ax.set_xlim(math.sqrt(lo * hi) / span / 1.5, math.sqrt(lo * hi) * span * 1.5)
-        label_points(ax, marks)  # after the limits: a label near the right edge goes left
-        ax.xaxis.set_minor_formatter(NullFormatter())
-        ax.set_title(analysis)
-        ax.set_xlabel("CPU time per evaluation (s)")
-        ax.set_ylabel("relative error")
-        ax.grid(True, which="major", alpha=0.3)
-        ax.legend(fontsize=6, loc="best", framealpha=0.4)
-    for ax in axes[len(analyses):]:
-        ax.set_visible(False)
-    fig.suptitle("govopt: speed against error (circled: default; dotted: Pareto front)")
-    fig.savefig(path, dpi=110, format="png")
-
-
-#: the files of :func:`write_report`, in its folder
-REPORT_FILES = ("speed-vs-error.md", "speed-vs-error.csv", "speed-vs-error.png")
-
-
-def check_report(out: str | Path, *, overwrite: bool = False) -> Path:
-    """Before the benchmark: the folder ``out`` (made if only its parent exists) can take
-    :data:`REPORT_FILES`, none of which exists unless ``overwrite`` (regular files only)."""
-    from .files import check_output, output_folder
-
-    out = output_folder(out, "the benchmark report")
-    for name in REPORT_FILES:
-        check_output(out / name, overwrite=overwrite, what="benchmark report")
-    return out
-
-
-def write_report(points: list[Point], out: str | Path,
-                 target_rows: list[dict] | None = None, *,
-                 overwrite: bool = True) -> list[Path]:
-    """``speed-vs-error.md``, ``.csv`` and ``.png`` in folder ``out`` (:func:`check_report`;
-    an existing file replaced only with ``overwrite``)."""
-    from .files import atomic_write
-
-    out = check_report(out, overwrite=overwrite)
-    md, csv_path, png = (out / name for name in REPORT_FILES)
-    text = markdown(points, target_rows)
-    atomic_write(md, lambda p: p.write_text(text + "\n"), overwrite=overwrite, what="report")
-
-    def write_csv(p):
-        with open(p, "w", newline="") as fh:
-            w = csv.DictWriter(fh, fieldnames=list(asdict(points[0])))
-            w.writeheader()
-            for pt in points:
-                w.writerow({**asdict(pt), "time_s": f"{pt.time_s:.6g}",
-                            "error": f"{pt.error:.6g}"})
-
-    atomic_write(csv_path, write_csv, overwrite=overwrite, what="CSV")
-    atomic_write(png, lambda p: plot(points, p), overwrite=overwrite, what="plot")
-    return [md, csv_path, png]
-
-
-def read_csv(path: str | Path) -> list[Point]:
-    """Points from a CSV written by :func:`write_report`."""
-    with open(path, newline="") as fh:
-        return [Point(r["analysis"], r["method"], r["setting"], float(r["time_s"]),
-                      float(r["error"]), r["worst_case"], r["note"], r["pareto"] == "True",
-                      r["default"] == "True") for r in csv.DictReader(fh)]
-
-
-# ---------------------------------------------------------------------------------------------
-# Earlier benchmarks (ratios against a baseline timed in the same run)
-# ---------------------------------------------------------------------------------------------
-
-
-def design_bench(spec_path: str | Path) -> dict:
-    """One full design of the bundled spec, split into its stages, against one evaluation."""
-    from ..evaluator import evaluate
-    from ..optimize import design as dz
-    from ..spec import load_spec
-
-    spec = load_spec(spec_path)
-    t0 = time.perf_counter()
-    res = dz.design(spec)
-    total = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    evaluate(spec.with_design(res.design))
-    one_eval = time.perf_counter() - t0
-    req = dz.requirements(spec)
-    t0 = time.perf_counter()
-    grid, km, lo, hi, _ = dz.statics_window(spec, req)
-    _, stats = dz.best_discrete(spec, req, km, grid, lo, hi, dynamics=False)
-    screen = time.perf_counter() - t0
-    return {"design_s": total, "evaluate_s": one_eval, "design_over_evaluate": total / one_eval,
-            "statics_and_spring_screen_s": screen, "combinations": stats["combinations"],
-            "screen_per_combination_s": screen / stats["combinations"],
-            "screen_vs_evaluate_per_design": one_eval / (screen / stats["combinations"])}
-
-
-def _benchmark_module(name: str):
-    """The script ``benchmarks/<name>.py`` of a checkout as a module; None where govopt is
-    installed without its benchmarks."""
-    path = ROOT / "benchmarks" / f"{name}.py"
-    if not path.exists():
-        return None
-    import importlib.util
-
-    mod_spec = importlib.util.spec_from_file_location(name, path)
-    mod = importlib.util.module_from_spec(mod_spec)
-    mod_spec.loader.exec_module(mod)
-    return mod
-
-
-def transient_bench(n_designs: int = 100_000, n_baseline: int = 100) -> dict | None:
-    """Vectorised transient for many designs vs per-design solve_ivp (benchmarks/ script)."""
-    mod = _benchmark_module("bench_transient")
-    return None if mod is None else mod.run(n_designs=n_designs, n_baseline=n_baseline)

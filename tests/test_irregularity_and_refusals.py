@@ -21,7 +21,7 @@ from govopt.analysis import friction, statics
 from govopt.result import Check
 from govopt.units import UnitError, parse_quantity
 
-BASE = Path("govopt/specs/hamabe-a.toml").read_text()
+BASE = Path("specs/hamabe-a.toml").read_text()
 KGFCM = 9.80665e-2  # N m
 
 
@@ -43,7 +43,7 @@ def test_irregularity_is_hamabes_definition():
     """Hamabe, Example 1, case a, closing check: "(26.4 - 23.4) / 25.1 = 0.119", the range over
     the spec's mean speed omega0. The range over the mean of the two extreme speeds (kept as
     `sensitiveness`) is 2 x 3.0 / 49.8 = 0.1205 and does not give the paper's 0.119."""
-    res = govopt.evaluate(govopt.load_spec("govopt/specs/hamabe-a.toml"))
+    res = govopt.evaluate(govopt.load_spec("specs/hamabe-a.toml"))
     paper = dataclasses.replace(res.statics, omega=np.array([23.4, 26.4]), omega_mean=25.1)
     assert paper.irregularity == pytest.approx(3.0 / 25.1, rel=1e-12)
     assert abs(paper.irregularity - 0.119) < 6e-4  # the paper truncates 0.1195
@@ -103,7 +103,7 @@ def test_characteristic_slope_is_the_derivative(case, fidelity):
     """d omega/d alpha = I k^2 / (2 omega L) (eq. 12 differentiated) against a central
     difference of the characteristic, between the valve-gear table's rows (where the
     characteristic is smooth): agreement to the difference's own truncation error."""
-    spec = govopt.load_spec(f"govopt/specs/hamabe-{case}.toml").with_analysis(**fidelity)
+    spec = govopt.load_spec(f"specs/hamabe-{case}.toml").with_analysis(**fidelity)
     sd = statics.spring_design(spec)
     gov = spec.governor
     alpha = np.linspace(gov.x_inner + 0.01, gov.x_outer - 0.01, 9)
@@ -189,7 +189,7 @@ def test_design_exits_2_when_its_final_verification_fails(monkeypatch):
         return res
 
     monkeypatch.setattr(govopt.evaluator, "evaluate", failing)
-    out = invoke(["design", "govopt/specs/hamabe-design.toml", "--json"])
+    out = invoke(["design", "specs/hamabe-design.toml", "--json"])
     assert out.exit_code == 2, out.output
     assert "final verification" in out.output and "injected check: 2 m" in out.output
 
@@ -233,7 +233,7 @@ def test_strict_quantities_still_accept_expressions(text, dim, si):
 
 
 def _with_friction(M0):
-    spec = govopt.load_spec("govopt/specs/hamabe-a.toml")
+    spec = govopt.load_spec("specs/hamabe-a.toml")
     return spec.with_design(dataclasses.replace(spec.design, friction_moment=M0))
 
 
