@@ -9,6 +9,7 @@ import pytest
 import govopt
 from govopt import fidelity
 from govopt.analysis import friction, loadchange
+from govopt.examples import SPECS
 from govopt.governors.shaft import vibration
 
 KGFCM = 9.80665 * 0.01
@@ -26,7 +27,7 @@ EXPECTED = {
 @pytest.fixture(scope="module")
 def spec():
     """Hamabe's case a with fulcrum friction (22.6 kgf cm), so every analysis has its data."""
-    s = govopt.load_spec(govopt.__path__[0] + "/specs/hamabe-a.toml")
+    s = govopt.load_spec(str(SPECS / "hamabe-a.toml"))
     return s.with_design(dataclasses.replace(s.design, friction_moment=22.6 * KGFCM))
 
 
@@ -118,7 +119,7 @@ def test_nothing_fits_is_reported(spec):
 
 def test_series_linkage_only_where_the_geometry_matters(spec):
     """The paper's series (eq. 3) is the shaft's linkage: a Porter has no such option."""
-    porter = govopt.load_spec(govopt.__path__[0] + "/specs/porter-design.toml")
+    porter = govopt.load_spec(str(SPECS / "porter-design.toml"))
     assert fidelity.OPTIONS["statics"][1].applies(spec)
     assert not fidelity.OPTIONS["statics"][1].applies(porter)
     for tol in (1.0, 1e-6):
@@ -132,7 +133,7 @@ def test_load_change_reports_the_linear_models_own_error():
 
 
 def test_spec_keys(tmp_path):
-    src = open(govopt.__path__[0] + "/specs/hamabe-a.toml").read()
+    src = open(str(SPECS / "hamabe-a.toml")).read()
     p = tmp_path / "uc.toml"
     p.write_text(src + '\n[analysis]\nuse_case = "vibration"\ntolerance = 1e-4\n')
     s = govopt.load_spec(p)
