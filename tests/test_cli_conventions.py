@@ -270,9 +270,6 @@ def test_non_editable_install_ships_the_specs(tmp_path):
 
 
 #: guides linked by name that other work adds (the tolerance and spring-spec how-tos)
-WRITTEN_ALONGSIDE = {"docs/how-to/tolerances.md", "docs/how-to/spring-spec.md"}
-
-
 def test_readme_and_docs_cite_documents_in_the_repository():
     """Every page the README and docs/ name or link exists; nothing points outside the
     repository."""
@@ -283,8 +280,7 @@ def test_readme_and_docs_cite_documents_in_the_repository():
             assert (ROOT / path).is_file(), (page, path)
         for link in re.findall(r"\]\(([\w./-]+\.md)(?:#[\w-]*)?\)", text):
             target = (page.parent / link).resolve()
-            if str(target.relative_to(ROOT)) not in WRITTEN_ALONGSIDE:
-                assert target.is_file(), (page, link)
+            assert target.is_file(), (page, link)
         assert "../shared/" not in text and "/work/" not in text, page
 
 
