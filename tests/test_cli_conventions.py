@@ -269,7 +269,6 @@ def test_non_editable_install_ships_the_specs(tmp_path):
     assert os.listdir(work) == ["porter-design.toml"]
 
 
-#: guides linked by name that other work adds (the tolerance and spring-spec how-tos)
 def test_readme_and_docs_cite_documents_in_the_repository():
     """Every page the README and docs/ name or link exists; nothing points outside the
     repository."""
