@@ -233,18 +233,14 @@ def supported(spec: Spec, req: Requirements) -> None:
             "the box varies): minimise a mass and bound the "
             f"{what} by requirements.max_{req.objective}")
     if gov.spring is None and req.robust_spring_grade is not None:
-        raise InfeasibleError(
-            f"{spec.path}: requirements.robust_spring_grade: a {gov.type_name} governor has no "
-            "spring (dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+        raise _no_spring(spec, "robust_spring_grade")
     if gov.spring is not None and not gov.spring_kind.helical and \
             req.robust_spring_grade is not None:
         raise InfeasibleError(
             f"{spec.path}: requirements.robust_spring_grade: EN 15800 tolerances are for "
             "helical springs, not a leaf spring: tolerance the masses and the dash-pot instead")
     if req.robust_dashpot > 0 and (spec.engine is None or not spec.load_changes):
-        raise InfeasibleError(f"{spec.path}: requirements.robust_dashpot: no dash-pot is "
-                              "designed without [engine] and [[load_change]]: drop the key or "
-                              "add them")
+        raise _no_dashpot(spec, "robust_dashpot")
     fitter_supported(spec, req)
     if req.min_yield is not None:
         if not tm.states_tolerances(spec, req):
@@ -270,13 +266,22 @@ def fitter_supported(spec: Spec, req: Requirements) -> None:
     an adjusting nut without a spring, a dash-pot valve without a dash-pot."""
     gov = spec.governor
     if gov.spring is None and req.adjusting_nut > 0:
-        raise InfeasibleError(
-            f"{spec.path}: requirements.adjusting_nut: a {gov.type_name} governor has no spring "
-            "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+        raise _no_spring(spec, "adjusting_nut")
     if req.dashpot_valve > 0 and (spec.engine is None or not spec.load_changes):
-        raise InfeasibleError(f"{spec.path}: requirements.dashpot_valve: no dash-pot is "
-                              "designed without [engine] and [[load_change]]: drop the key or "
-                              "add them")
+        raise _no_dashpot(spec, "dashpot_valve")
+
+
+def _no_spring(spec: Spec, key: str) -> InfeasibleError:
+    """``requirements.KEY`` tolerances a spring that a dead-weight governor does not have."""
+    return InfeasibleError(
+        f"{spec.path}: requirements.{key}: a {spec.governor.type_name} governor has no spring "
+        "(dead weight): tolerance its masses (robust_masses) and dash-pot instead")
+
+
+def _no_dashpot(spec: Spec, key: str) -> InfeasibleError:
+    """``requirements.KEY`` tolerances a dash-pot that is not designed without a load change."""
+    return InfeasibleError(f"{spec.path}: requirements.{key}: no dash-pot is designed without "
+                           "[engine] and [[load_change]]: drop the key or add them")
 
 
 def yield_allowance(n: int, min_yield: float) -> int:
