@@ -209,6 +209,18 @@ def test_no_private_name_imported_across_modules():
     assert bad == []
 
 
+#: the longest a govopt module may be: past it, a module is doing several jobs (split it along them)
+MAX_MODULE_LINES = 1000
+
+
+def test_no_module_over_a_thousand_lines():
+    """Every govopt module fits in :data:`MAX_MODULE_LINES` lines."""
+    sizes = {str(p.relative_to(PACKAGE)): len(p.read_text(encoding="utf-8").splitlines())
+             for p in PACKAGE.rglob("*.py")}
+    assert len(sizes) > 100  # the package's modules were all read
+    assert {name: n for name, n in sizes.items() if n > MAX_MODULE_LINES} == {}
+
+
 def test_no_spring_kind_branch_outside_the_spring_plug():
     """No ``== "leaf"`` (or ``!=``, ``in (..., "leaf")``) outside the springs and the leaf's
     governor: the spec parser, the limits and the searches read the kind's declarations

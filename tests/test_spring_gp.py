@@ -14,14 +14,12 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from govopt.optimize.spring_gp import (
+from govopt.optimize.spring_gp import SpringGP, best_discrete, size_helical_spring
+from govopt.optimize.spring_results import (
     Diagnosis,
     DiscreteSolution,
-    SpringGP,
     SpringSolution,
-    best_discrete,
     check_design,
-    size_helical_spring,
 )
 from govopt.springs import helical as hx
 

@@ -41,7 +41,8 @@ from ..springs import tolerances as tl
 from ..springs.assessment import Loads, Rules, Spring, extension_free_length, table
 from .gp_table import DEFAULT_BOUNDS
 from .record import CERTIFIED_GAP, Objective, Record
-from .spring_gp import FREE_LENGTH_KEYS, SpringSolution, cached_gp
+from .spring_gp import FREE_LENGTH_KEYS, cached_gp
+from .spring_results import SpringSolution
 
 KINDS = ("compression", "extension")
 
@@ -85,7 +86,7 @@ class Sizing:
     mat: mt.Material | None = None
     loads: Loads | None = None
     rules: Rules | None = None
-    #: the GP's objective's name (:data:`govopt.optimize.spring_gp.OBJECTIVES`)
+    #: the GP's objective's name (:data:`govopt.optimize.spring_results.OBJECTIVES`)
     objective: str = "mass"
     #: how the design was found (the GP; a catalogue's enumeration, :mod:`.spring_catalogue`)
     method: str = "geometric programme (cvxpy; exact: convex in the logarithms of d, D, n)"
