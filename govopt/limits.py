@@ -155,6 +155,11 @@ def counting(work: Work):
         _WORK.reset(token)
 
 
+def running() -> Work | None:
+    """The :class:`Work` that :func:`counting` is counting against, or None outside it."""
+    return _WORK.get()
+
+
 def charge(seconds: float, items: int = 0) -> None:
     """Count work against the running :class:`Work` (:func:`counting`), if any."""
     work = _WORK.get()

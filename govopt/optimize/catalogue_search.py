@@ -391,7 +391,7 @@ def _affordable_cells(spec, req, rows, kappa, width: float, share: float):
     """:func:`_cells` at ``width``, widened (doubled) until their dash-pot windows take at most
     ``share`` of what the running search has left (:func:`govopt.limits.charge`); ``uniq``
     None where even a cell per mass row would not."""
-    work = limits._WORK.get()
+    work = limits.running()
     budget = math.inf if work is None else share * work.left()
     each = window_seconds(spec, req)
     span = float(np.ptp(np.log(kappa))) if kappa.size else 0.0
