@@ -195,20 +195,26 @@ def _speed_axes(res, ax) -> None:
     _rad_s_axis(ax)
 
 
+def _band_and_nominal(res, ax, band: dict, label: str) -> np.ndarray:
+    """Fill ``band``'s least and largest equilibrium speed against the configuration
+    (``label``) and draw the nominal characteristic over it; returns the band's shown
+    configurations."""
+    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
+    x, _ = _shown(res, xs)
+    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
+    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3, label=label)
+    xn, _ = _shown(res, res.statics.alpha)
+    ax.plot(xn, res.statics.omega * RPM, color="tab:blue", lw=2, label="nominal")
+    return x
+
+
 def speed_band(res, ax) -> None:
     """A robust design's speed band under its tolerances: the equilibrium speed at
     nominal values, and the least and largest over the points of the tolerance box evaluated
     (each at the fitter's setting), against the configuration, with the required band; the
     title gives what robustness cost in the objective."""
-    band = res.optimisation["robust"]["speed_band"]
-    st = res.statics
-    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
-    x, _ = _shown(res, xs)
-    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
-    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
-                    label="over the tolerance box (after the fitter's setting)")
-    xn, _ = _shown(res, st.alpha)
-    ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
+    _band_and_nominal(res, ax, res.optimisation["robust"]["speed_band"],
+                      "over the tolerance box (after the fitter's setting)")
     _speed_axes(res, ax)
     cost = res.optimisation["robust"].get("cost") or {}
     more = cost.get("increase_percent")
@@ -225,15 +231,10 @@ def made_yield(res, ax) -> None:
     (:func:`govopt.made.yield_words`)."""
     from ..made_words import yield_words
 
-    made, st, spec = res.made, res.statics, res.spec
-    band, y = made["speed_band"], made["yield"]
-    xs = np.asarray(next(v for k, v in band.items() if k.startswith("configuration_")))
-    x, _ = _shown(res, xs)
-    lo, hi = (np.asarray(band[k], dtype=float) * RPM for k in ("lowest_rad_s", "highest_rad_s"))
-    ax.fill_between(x, lo, hi, color="tab:orange", alpha=0.3,
-                    label="worst case over the tolerance box (as made)")
-    xn, _ = _shown(res, st.alpha)
-    ax.plot(xn, st.omega * RPM, color="tab:blue", lw=2, label="nominal")
+    made, spec = res.made, res.spec
+    y = made["yield"]
+    x = _band_and_nominal(res, ax, made["speed_band"],
+                          "worst case over the tolerance box (as made)")
     ends = [(x[0], y.get("sampled_inner_rad_s")), (x[-1], y.get("sampled_outer_rad_s"))]
     for i, (at, w) in enumerate(e for e in ends if e[1]):
         ax.plot([at, at], [w[0] * RPM, w[1] * RPM], color="k", lw=3, solid_capstyle="butt",
