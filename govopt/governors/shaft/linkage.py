@@ -131,7 +131,8 @@ def centrifugal_moment(alpha, omega, m, a, rho):
     --------
     Hamabe's Example 1 (a), W = 12 kgf (m = 12 kg), a = 18, rho = 12 cm: the paper prints
     ``M_zi = 1127`` kgf cm at 50 deg with omega^2 = 557 and ``M_zn = 1506`` at 64 deg 40' with
-    omega^2 = 630 (its last digit off by rounding of ``m = 0.01223``):
+    omega^2 = 630. Its mass ``0.01223`` kgf s^2/cm is 12/981 rounded (12 kg is 12/980.665,
+    0.05 % more: 1128), and its own product for the second is 1504, not 1506:
 
     >>> KGF, CM = 9.80665, 0.01
     >>> alpha_i, alpha_n = np.radians(50), np.radians(64 + 40 / 60)
@@ -234,8 +235,8 @@ def spring_moment(alpha, kappa, l0, a, b, geometry: str = "exact"):
     Examples
     --------
     Hamabe's Example 1 (a): kappa = 64.2 kgf/cm, the free length set by ``M_fn = 1465`` kgf cm
-    at 64 deg 40'. The paper's table gives ``M_fa = 1829`` kgf cm at 80 deg (from its rounded
-    force 610.7 kgf times 3.00 cm); the series of eq. (3) is 2.5 % high at the normal
+    at 64 deg 40'. The paper's table gives ``M_fa = 1829`` kgf cm at 80 deg (its spring
+    extensions read to 0.1 cm); the series of eq. (3) is 2.5 % high at the normal
     configuration:
 
     >>> KGF, CM = 9.80665, 0.01

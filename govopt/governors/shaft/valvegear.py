@@ -347,7 +347,7 @@ def table_reaction_slope(alpha, vg, q, kind="pchip", step=1e-6):
     --------
     Example 1 (a) at 54 deg, omega^2 = 630, per degree: the paper's table falls from 59.4 to
     49.7 kgf cm over 50 deg to 57 deg 20', a secant of -1.32 kgf cm/deg from its rounded terms;
-    the linear table's exact secant is -1.30, PCHIP's tangent there -1.32:
+    with the linear table the slope there is -1.30, with PCHIP -1.32:
 
     >>> import govopt, govopt.examples
     >>> g = govopt.load_spec(govopt.examples.example("hamabe-a")).governor
