@@ -242,8 +242,7 @@ def zigzag(start, end, width: float, coils: float = 6.0) -> tuple[tuple[float, f
     """A spring drawn from ``start`` to ``end``: a zigzag of ``coils`` turns, ``width`` across
     (its coil diameter), straight ends of a tenth of its length.
 
-    A drawing convention of govopt's (no source; the figures of the textbook and the article draw
-    springs so).
+    A drawing convention of govopt's (no source).
 
     Parameters
     ----------
