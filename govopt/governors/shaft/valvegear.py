@@ -227,18 +227,8 @@ def mean_reaction_split_slope(delta, q, e, s, P1, m_v, m_e):
     ----------
     delta : float or array [rad]
         Angular advance of the eccentric.
-    q : float [m]
-        Lever SQ of each pendulum, driving the eccentric.
-    e : float [m]
-        Eccentricity (O to the guide line AB).
-    s : float [m]
-        Offset of the eccentric's mass (``y = e cot(delta) - s cos(delta)``).
-    P1 : float [N]
-        Friction force of the valve gear.
-    m_v : float [kg]
-        Reciprocating mass of the valve gear.
-    m_e : float [kg]
-        The eccentric's rotating mass.
+    q, e, s, P1, m_v, m_e : float [m, m, m, N, kg, kg]
+        The valve gear, as in :func:`mean_reaction_split`.
 
     Returns
     -------
@@ -379,18 +369,8 @@ def mean_reaction_moment(delta, omega, q, e, s, P1, m_v, m_e):
         Angular advance of the eccentric.
     omega : float or array [rad/s]
         Shaft speed.
-    q : float [m]
-        Lever SQ of each pendulum, driving the eccentric.
-    e : float [m]
-        Eccentricity (O to the guide line AB).
-    s : float [m]
-        Offset of the eccentric's mass (``y = e cot(delta) - s cos(delta)``).
-    P1 : float [N]
-        Friction force of the valve gear.
-    m_v : float [kg]
-        Reciprocating mass of the valve gear.
-    m_e : float [kg]
-        The eccentric's rotating mass.
+    q, e, s, P1, m_v, m_e : float [m, m, m, N, kg, kg]
+        The valve gear, as in :func:`mean_reaction_split`.
 
     Returns
     -------
@@ -673,22 +653,8 @@ def reaction_harmonics(delta, omega, q, e, s, P1, P3, P4, m_v, m_e, n_harmonics:
         Angular advance of the eccentric.
     omega : float or array [rad/s]
         Shaft speed.
-    q : float [m]
-        Lever SQ of each pendulum, driving the eccentric.
-    e : float [m]
-        Eccentricity (O to the guide line AB).
-    s : float [m]
-        Offset of the eccentric's mass (``y = e cot(delta) - s cos(delta)``).
-    P1 : float [N]
-        Friction force of the valve gear.
-    P3 : float [N]
-        Steam load on the valve.
-    P4 : float [N]
-        Weight of the valve gear.
-    m_v : float [kg]
-        Reciprocating mass of the valve gear.
-    m_e : float [kg]
-        The eccentric's rotating mass.
+    q, e, s, P1, P3, P4, m_v, m_e : float [m, m, m, N, N, N, kg, kg]
+        The valve gear, as in :func:`reaction_moment`.
     n_harmonics : int [-]
         Highest harmonic kept.
     engine : str [-]
@@ -817,22 +783,8 @@ def series_harmonics(delta, omega, q, e, s, P1, P3, P4, m_v, m_e, n_harmonics: i
         Angular advance of the eccentric.
     omega : float or array [rad/s]
         Shaft speed.
-    q : float [m]
-        Lever SQ of each pendulum, driving the eccentric.
-    e : float [m]
-        Eccentricity (O to the guide line AB).
-    s : float [m]
-        Offset of the eccentric's mass (``y = e cot(delta) - s cos(delta)``).
-    P1 : float [N]
-        Friction force of the valve gear.
-    P3 : float [N]
-        Steam load on the valve.
-    P4 : float [N]
-        Weight of the valve gear.
-    m_v : float [kg]
-        Reciprocating mass of the valve gear.
-    m_e : float [kg]
-        The eccentric's rotating mass.
+    q, e, s, P1, P3, P4, m_v, m_e : float [m, m, m, N, N, N, kg, kg]
+        The valve gear, as in :func:`reaction_moment`.
     n_harmonics : int [-]
         Highest harmonic kept.
     engine : str [-]
@@ -907,22 +859,8 @@ def mean_square_reaction(delta, omega, q, e, s, P1, P3, P4, m_v, m_e, engine="ve
         Angular advance of the eccentric.
     omega : float or array [rad/s]
         Shaft speed.
-    q : float [m]
-        Lever SQ of each pendulum, driving the eccentric.
-    e : float [m]
-        Eccentricity (O to the guide line AB).
-    s : float [m]
-        Offset of the eccentric's mass (``y = e cot(delta) - s cos(delta)``).
-    P1 : float [N]
-        Friction force of the valve gear.
-    P3 : float [N]
-        Steam load on the valve.
-    P4 : float [N]
-        Weight of the valve gear.
-    m_v : float [kg]
-        Reciprocating mass of the valve gear.
-    m_e : float [kg]
-        The eccentric's rotating mass.
+    q, e, s, P1, P3, P4, m_v, m_e : float [m, m, m, N, N, N, kg, kg]
+        The valve gear, as in :func:`reaction_moment`.
     engine : str [-]
         "vertical" (eq. 7) or "horizontal" (eq. 8).
 
@@ -976,22 +914,8 @@ def truncation_error(n_harmonics: int, delta, omega, q, e, s, P1, P3, P4, m_v, m
         Angular advance of the eccentric.
     omega : float or array [rad/s]
         Shaft speed.
-    q : float [m]
-        Lever SQ of each pendulum, driving the eccentric.
-    e : float [m]
-        Eccentricity (O to the guide line AB).
-    s : float [m]
-        Offset of the eccentric's mass (``y = e cot(delta) - s cos(delta)``).
-    P1 : float [N]
-        Friction force of the valve gear.
-    P3 : float [N]
-        Steam load on the valve.
-    P4 : float [N]
-        Weight of the valve gear.
-    m_v : float [kg]
-        Reciprocating mass of the valve gear.
-    m_e : float [kg]
-        The eccentric's rotating mass.
+    q, e, s, P1, P3, P4, m_v, m_e : float [m, m, m, N, N, N, kg, kg]
+        The valve gear, as in :func:`reaction_moment`.
     engine : str [-]
         "vertical" (eq. 7) or "horizontal" (eq. 8).
 
