@@ -289,7 +289,8 @@ def harmonic_response(a, b, k2, inertia, omega0, dashpot=None, orders=None):
 
     Examples
     --------
-    The paper prints 8.45 deg for the first harmonic, ``B1 / (I (omega0^2 - k^2))`` with
+    Hamabe's Example 2, case (a): ``k^2 = 360``, ``omega0^2 = 630``, ``I = 0.1728`` kg m^2. The
+    paper prints 8.45 deg for the first harmonic, ``B1 / (I (omega0^2 - k^2))`` with
     ``B1 = (q/2)(P3 + P4) = 70`` kgf cm; its inputs give 8.43 (the paper's k^2 is rounded):
 
     >>> B1 = 0.025 * 28 * 9.80665
