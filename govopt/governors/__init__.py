@@ -26,7 +26,31 @@ REGISTRY: dict[str, str] = {
 
 
 def governor_class(type_name: str) -> type[Governor]:
-    """The class modelling ``type_name`` (a key of :data:`REGISTRY`)."""
+    """The class modelling ``type_name`` (a key of :data:`REGISTRY`), imported when first used.
+
+    Each class states its own method and sources: the shaft governor [hamabe]; the Watt, Porter,
+    Proell, Hartnell, spring-loaded and spring-and-gravity governors [textbook-ch3], sections 3.4
+    and 3.5; the coil- and leaf-spring traction governors [traction-article].
+
+    Parameters
+    ----------
+    type_name : str [-]
+        The spec's ``governor.type``.
+
+    Returns
+    -------
+    type [-]
+        A :class:`~govopt.governors.base.Governor` subclass (SI inside).
+
+    References
+    ----------
+    [textbook-ch3] section 3.4(b) for the example below.
+
+    Examples
+    --------
+    >>> governor_class("porter").title
+    'Porter governor (textbook ch. 3, section 3.4(b), Figs. 3.1(b), 3.4-3.7)'
+    """
     module, cls = REGISTRY[type_name].split(":")
     return getattr(importlib.import_module(f"{__name__}.{module}"), cls)
 

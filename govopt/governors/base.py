@@ -239,8 +239,28 @@ class Drawing:
 
 
 def zigzag(start, end, width: float, coils: float = 6.0) -> tuple[tuple[float, float], ...]:
-    """A spring drawn from ``start`` to ``end`` (m): a zigzag of ``coils`` turns, ``width``
-    across (its coil diameter), straight ends of a tenth of its length.
+    """A spring drawn from ``start`` to ``end``: a zigzag of ``coils`` turns, ``width`` across
+    (its coil diameter), straight ends of a tenth of its length.
+
+    A drawing convention of govopt's (no source).
+
+    Parameters
+    ----------
+    start, end : tuple of float [m]
+        The spring's ends in the drawing's plane.
+    width : float [m]
+        Its coil diameter.
+    coils : float [-]
+        Turns drawn (two zigs each).
+
+    Returns
+    -------
+    tuple of (float, float) [m]
+        The polyline's points.
+
+    Examples
+    --------
+    Three turns: the two ends, two points where the straight ends meet the coil, six zigs:
 
     >>> len(zigzag((0.0, 0.0), (0.0, 1.0), 0.1, coils=3))
     10
@@ -260,7 +280,26 @@ def zigzag(start, end, width: float, coils: float = 6.0) -> tuple[tuple[float, f
 
 
 def ball_radius(mass: float, density: float = 7850.0) -> float:
-    """The radius (m) of a steel ball of ``mass`` (kg): how the drawings show a flying mass.
+    """The radius [m] of a steel ball of ``mass``: how the drawings show a flying mass,
+    ``r = (3 m / (4 pi rho))^(1/3)``.
+
+    A drawing convention of govopt's (the volume of a sphere; no source sizes the balls).
+
+    Parameters
+    ----------
+    mass : float [kg]
+        The flying mass (a negative one is drawn as a point).
+    density : float [kg/m^3]
+        The ball's density (steel, 7850).
+
+    Returns
+    -------
+    float [m]
+        The ball's radius.
+
+    Examples
+    --------
+    By hand: 4 kg of steel gives ``r^3 = 3 x 4 / (4 pi 7850) = 1.2165e-4`` m^3, r = 49.5 mm:
 
     >>> round(ball_radius(4.0) * 1e3, 1)
     49.5
@@ -270,7 +309,26 @@ def ball_radius(mass: float, density: float = 7850.0) -> float:
 
 def mirrored(parts) -> tuple[Part, ...]:
     """``parts`` and their mirror images across the spindle's axis (``r -> -r``): the other
-    half of a governor drawn in its meridian plane."""
+    half of a governor drawn in its meridian plane (the frame is drawn once).
+
+    A drawing convention of govopt's (no source).
+
+    Parameters
+    ----------
+    parts : sequence of Part [m]
+        One half of the drawing, points in metres.
+
+    Returns
+    -------
+    tuple of Part [m]
+        The parts, then the mirror images of those that are not ``"frame"``.
+
+    Examples
+    --------
+    >>> half = (Part("mass", ((0.1, 0.2),), 0.02), Part("frame", ((0.0, 0.0), (0.0, 0.3))))
+    >>> [(p.kind, p.points) for p in mirrored(half)][2]
+    ('mass', ((-0.1, 0.2),))
+    """
     out = list(parts)
     for p in parts:
         if p.kind != "frame":

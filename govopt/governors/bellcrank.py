@@ -99,9 +99,32 @@ SLEEVE_FRICTION = Key("sleeve_friction", "force", "the friction force R at the s
 
 
 def common_keys(arm: Key, fulcrum_at: str) -> tuple[Key, ...]:
-    """The ``[governor]`` keys every bell-crank type reads (:meth:`BellCrankGovernor.read_common`),
-    in order: ``arm`` its second arm's key; the fulcrum's default radius where the ball arm
-    stands vertical, at radius_normal or radius_inner (``fulcrum_at``)."""
+    """The ``[governor]`` keys every bell-crank type reads, in order
+    (:meth:`BellCrankGovernor.read_common`): the lever's dimensions of the textbook's section 3.5.
+
+    Parameters
+    ----------
+    arm : Key [-]
+        The type's second arm's key (sleeve or roller arm, [m]).
+    fulcrum_at : str [-]
+        Where the fulcrum's default radius puts the ball arm vertical: "normal" (at
+        radius_normal, the book's examples) or "inner" (at radius_inner, Fig. 3.13(b)).
+
+    Returns
+    -------
+    tuple of Key [-]
+        The keys (lengths [m], the crank angle [rad], the friction [N], choices).
+
+    References
+    ----------
+    [textbook-ch3] section 3.5, Figs. 3.10-3.13.
+
+    Examples
+    --------
+    >>> from govopt.governors.hartnell import SLEEVE_ARM
+    >>> [k.name for k in common_keys(SLEEVE_ARM, "normal")][:4]
+    ['ball_arm', 'sleeve_arm', 'radius_inner', 'radius_outer']
+    """
     at = "radius_normal" if fulcrum_at == "normal" else "radius_inner"
     fulcrum = Key("fulcrum_radius", "length", "the fulcrum's radius from the spindle's axis",
                   default=lambda v: v[at],
@@ -114,8 +137,32 @@ def common_keys(arm: Key, fulcrum_at: str) -> tuple[Key, ...]:
 
 
 def spring_length_key(meaning: str, **kw) -> Key:
-    """The bell-crank types' ``spring_length``: the design spring's length at radius_inner
-    (``meaning`` says where the spring sits), and how to choose it."""
+    """The bell-crank types' ``spring_length`` key [m]: the design spring's length at
+    radius_inner (``meaning`` says where the spring sits), and how to choose it.
+
+    Parameters
+    ----------
+    meaning : str [-]
+        Where the spring sits and how its length changes with the lift.
+    **kw : Key options [-]
+        Further :class:`~govopt.keys.Key` fields (``source``, ``default``, ``example``).
+
+    Returns
+    -------
+    Key [m]
+        A length key named ``spring_length``.
+
+    References
+    ----------
+    [textbook-ch3] section 3.5 (a)-(c): the springs of Figs. 3.10-3.13, whose installed length
+    each type states.
+
+    Examples
+    --------
+    >>> key = spring_length_key("the spring's length at radius_inner", source="textbook 3.5(a)")
+    >>> key.name, key.kind
+    ('spring_length', 'length')
+    """
     return Key("spring_length", "length", meaning + ". Only the spring's initial compression "
                "or extension enters the statics (the search designs the free length), but the "
                "spring must fit: a longer spring leaves room for more turns of thinner wire, a "
@@ -188,13 +235,46 @@ class BellCrank:
 
 
 def spring_terms(L, L1, L2, count):
-    """Per ball ``(A, B, A_x, B_x)`` of ``count`` springs of length ``L(x)`` (m; ``L1``, ``L2``
-    its x-derivatives) shared by two balls: ``Q = (count/2) kappa (L - l0) L1 = kappa (A - B l0)``
-    by virtual work on their strain energy ``count kappa (L - l0)^2 / 2`` (tension or
-    compression alike).
+    """Per ball ``(A, B, A_x, B_x)`` [m, -, -, 1/m] of ``count`` springs of length ``L(x)``
+    shared by two balls (textbook section 3.5(b), by virtual work).
 
-    >>> spring_terms(0.2, 2.0, 0.0, 2)  # two springs joining the balls (Fig. 3.11(a))
+    ``Q = (count/2) kappa (L - l0) L1 = kappa (A - B l0)`` by virtual work on their strain energy
+    ``count kappa (L - l0)^2 / 2`` (tension or compression alike); ``A_x``, ``B_x`` are the
+    x-derivatives.
+
+    Parameters
+    ----------
+    L : float or array [m]
+        Each spring's length at ball radius ``x``.
+    L1 : float or array [-]
+        ``dL/dx``.
+    L2 : float or array [1/m]
+        ``d2L/dx2``.
+    count : int [-]
+        Number of springs.
+
+    Returns
+    -------
+    tuple [m, -, -, 1/m]
+        ``(A, B, dA/dx, dB/dx)``, with the force per ball ``Q = kappa (A - B l0)`` [N].
+
+    References
+    ----------
+    [textbook-ch3] section 3.5(b), Fig. 3.11(a) (the balls joined by springs).
+
+    Examples
+    --------
+    Two springs joining the balls (Fig. 3.11(a)): ``L = 2 x`` minus the hooks, so ``L1 = 2``:
+
+    >>> spring_terms(0.2, 2.0, 0.0, 2)
     (0.4, 2.0, 4.0, 0.0)
+
+    The textbook's Example 6: 0.9 kgf/cm springs extended 6.5 cm at r = 10 cm (18 cm long, free
+    11.5 cm) pull each ball in with ``2 x 0.9 x 6.5 = 11.7`` kgf:
+
+    >>> A, B, _, _ = spring_terms(0.18, 2.0, 0.0, 2)
+    >>> round(0.9 * 100 * (A - B * 0.115), 6)  # kgf, kappa in kgf/m
+    11.7
     """
     h = 0.5 * count
     return h * L * L1, h * L1, h * (L1 * L1 + L * L2), h * L2

@@ -115,20 +115,90 @@ def centrifugal_force(m, r, omega):
 
 
 def toggle_spring_force(F, l, y, n):
-    """The spring force ``P = n F l / (4 y)`` (N) balancing ``n`` fly weights, each pushed out
-    by ``F`` (N), on toggles with hinge spacing ``l`` and offset ``y`` (m, the article's ``x``):
-    the article's eq. 1, by virtual work (``dl = -(4 y / l) dy``)."""
+    """The spring force ``P = n F l / (4 y)`` [N] balancing ``n`` fly weights on their toggles
+    (the article's eq. 1, by virtual work: ``dl = -(4 y / l) dy``).
+
+    Parameters
+    ----------
+    F : float or array [N]
+        Centrifugal force on each fly weight (:func:`centrifugal_force`).
+    l : float or array [m]
+        Hinge spacing along the spindle.
+    y : float or array [m]
+        The weight's offset from the hinge axis (the article's ``x``).
+    n : int [-]
+        Number of fly weights.
+
+    Returns
+    -------
+    float or array [N]
+        The spring's force on the rod.
+
+    References
+    ----------
+    [traction-article] eq. 1.
+
+    Examples
+    --------
+    The article gives no worked numbers; the bundled case ``traction-coil-replacement`` (two
+    8 lbf weights on 3 in arms, hinges at 0.75 in, spacing 5 in at 220 rpm, 4.75 in at 250 rpm)
+    needs 39.93 and 47.53 lbf, as its test works out in lbf, in and rpm:
+
+    >>> import math
+    >>> LBF, IN, LB = 4.4482216152605, 0.0254, 0.45359237  # lbf [N], in [m], lb [kg]
+    >>> RPM, PSI = 2 * math.pi / 60, 4.4482216152605 / 0.0254**2  # [rad/s], [Pa]
+    >>> for l, N in ((5.0, 220), (4.75, 250)):
+    ...     y = math.sqrt(3.0**2 - (l / 2) ** 2) * IN
+    ...     F = centrifugal_force(8 * LB, 0.75 * IN + y, N * RPM)
+    ...     print(round(toggle_spring_force(F, l * IN, y, 2) / LBF, 2))
+    39.93
+    47.53
+    """
     return n * F * l / (4.0 * y)
 
 
 def spring_rate_and_free_length(P1, d1, P2, d2):
-    """The spring through two operating points, force ``P_i`` (N) at installed length ``d_i``
-    (m): ``K = (P2 - P1)/(d1 - d2)`` and free length ``L = (P2 d1 - P1 d2)/(P2 - P1)`` (m), from
-    ``K = P1/(L - d1) = P2/(L - d2)`` (the article's eqs. 2-4; eq. 4 checked: it solves eq. 3).
+    """The spring through two operating points: rate ``K = (P2 - P1)/(d1 - d2)`` [N/m] and free
+    length ``L = (P2 d1 - P1 d2)/(P2 - P1)`` [m] (the article's eqs. 2-4).
 
-    >>> K, L = spring_rate_and_free_length(10.0, 0.5, 20.0, 0.4)  # 10 N at 0.5 m, 20 N at 0.4 m
+    From ``K = P1/(L - d1) = P2/(L - d2)``; eq. 4 checked: it solves eq. 3.
+
+    Parameters
+    ----------
+    P1 : float [N]
+        Spring force at the first operating point.
+    d1 : float [m]
+        The spring's installed length there.
+    P2 : float [N]
+        Spring force at the second operating point.
+    d2 : float [m]
+        The spring's installed length there.
+
+    Returns
+    -------
+    tuple of float [N/m, m]
+        ``(K, L)``.
+
+    References
+    ----------
+    [traction-article] eqs. 2-4.
+
+    Examples
+    --------
+    A hand check: 10 N at 0.5 m and 20 N at 0.4 m give 100 N/m and 0.6 m:
+
+    >>> K, L = spring_rate_and_free_length(10.0, 0.5, 20.0, 0.4)
     >>> round(K, 9), round(L, 9)
     (100.0, 0.6)
+
+    The bundled case ``traction-coil-replacement`` (the article gives no worked numbers): 39.9293
+    lbf at 4 in, 47.5308 lbf at 3.75 in (:func:`toggle_spring_force`) give 30.406 lbf/in and a
+    free length of 5.3132 in:
+
+    >>> LBF, IN = 4.4482216152605, 0.0254
+    >>> K, L = spring_rate_and_free_length(39.9293 * LBF, 4.0 * IN, 47.5308 * LBF, 3.75 * IN)
+    >>> round(K / (LBF / IN), 3), round(L / IN, 4)
+    (30.406, 5.3132)
     """
     return (P2 - P1) / (d1 - d2), (P2 * d1 - P1 * d2) / (P2 - P1)
 

@@ -118,24 +118,118 @@ KEYS = (
 
 
 def fly_mass_from_deflection(delta, r, omega, w, t, L, E, ends="hinged"):
-    """The article's fly weight for a flat spring (its first procedure): the force of eq. 5 at
-    the measured deflection ``delta`` (m; throttle just closed), ``F = c E I delta / L^3`` with
-    ``I`` from eq. 7 (``w``, ``t``, ``L`` in m, ``E`` in Pa), then eq. 6 solved for the mass
-    (kg) at radius ``r`` (m) and speed ``omega`` (rad/s) -- with ``F = m r omega^2``, not the
-    article's ``W r N^2 / 2933`` (12 times too large with ``r`` in inches:
-    :func:`govopt.governors.traction_coil.centrifugal_force`)."""
+    """The fly weight's mass [kg] for a flat spring from its measured deflection (the article's
+    first procedure, eqs. 5-7).
+
+    The force of eq. 5 at the measured deflection ``delta`` (throttle just closed),
+    ``F = c E I delta / L^3`` with ``I`` from eq. 7, then eq. 6 solved for the mass at radius ``r``
+    and speed ``omega`` -- with ``F = m r omega^2``, not the article's ``W r N^2 / 2933`` (12 times
+    too large with ``r`` in inches: :func:`govopt.governors.traction_coil.centrifugal_force`).
+
+    Parameters
+    ----------
+    delta : float [m]
+        The leaf's deflection at its middle, throttle just closed.
+    r : float [m]
+        The fly weight's radius there.
+    omega : float [rad/s]
+        The speed at which the throttle just closes.
+    w : float [m]
+        Leaf width.
+    t : float [m]
+        Leaf thickness.
+    L : float [m]
+        Leaf length.
+    E : float [Pa]
+        Young's modulus.
+    ends : str [-]
+        "hinged" (48 E I / L^3) or "clamped" (192 E I / L^3).
+
+    Returns
+    -------
+    float [kg]
+        Mass of one fly weight.
+
+    References
+    ----------
+    [traction-article] eqs. 5-7 (the first flat-spring procedure).
+
+    Examples
+    --------
+    The article gives no worked numbers; the bundled case ``traction-leaf-weights``: a 1 x 0.025
+    x 8 in hinged leaf (E = 28.5e6 psi) deflected 1.2 in at 2.45 in and 250 rpm: ``F = 4.1748``
+    lbf and a 0.95989 lbf weight (the article's constant 2933 would give 12 times less):
+
+    >>> import math
+    >>> LBF, IN, LB = 4.4482216152605, 0.0254, 0.45359237  # lbf [N], in [m], lb [kg]
+    >>> RPM, PSI = 2 * math.pi / 60, 4.4482216152605 / 0.0254**2  # [rad/s], [Pa]
+    >>> m = fly_mass_from_deflection(1.2 * IN, 2.45 * IN, 250 * RPM, 1.0 * IN, 0.025 * IN,
+    ...                              8.0 * IN, 28.5e6 * PSI)
+    >>> round(m / LB, 5)  # the weight in lbf
+    0.95989
+    """
     return leaf.stiffness(w, t, L, E, ends) * delta / centrifugal_force(1.0, r, omega)
 
 
 def assembly_from_valve_travel(L, Z, hinge_radius, omega_idle, w, t, E, ends="hinged",
                                model="straight"):
-    """The article's complete flat-spring assembly from the valve's travel ``Z`` (m; its second
-    procedure): no set; the rod travels ``Z`` from rest to fully open and ``Z`` more to closed,
-    so ``l_1 = L - Z`` and ``l_2 = L - 2 Z`` (eq. 9); the bows from the chords (eq. 8 with
-    ``model="straight"``, the article's), ``r = r_h + x``; the fly-weight mass (kg) that holds
-    the throttle just closed at ``omega_idle`` (rad/s) on the leaf ``w x t`` (m) of length ``L``
-    (eqs. 5-7), and the speed at which the throttle is just fully open (rad/s), the lower end of
-    the speed range. Returns a dict of these (SI)."""
+    """The article's complete flat-spring assembly from the valve's travel ``Z`` (its second
+    procedure, eqs. 5-9): a dict of SI quantities.
+
+    No set; the rod travels ``Z`` from rest to fully open and ``Z`` more to closed, so
+    ``l_1 = L - Z`` and ``l_2 = L - 2 Z`` (eq. 9); the bows from the chords (eq. 8 with
+    ``model="straight"``, the article's), ``r = r_h + x``; the fly-weight mass that holds the
+    throttle just closed at ``omega_idle`` on the leaf (eqs. 5-7), and the speed at which the
+    throttle is just fully open, the lower end of the speed range.
+
+    Parameters
+    ----------
+    L : float [m]
+        Leaf length.
+    Z : float [m]
+        The valve's travel from rest to fully open.
+    hinge_radius : float [m]
+        The end attachments' radius from the spindle's centreline.
+    omega_idle : float [rad/s]
+        The speed at which the throttle just closes.
+    w : float [m]
+        Leaf width.
+    t : float [m]
+        Leaf thickness.
+    E : float [Pa]
+        Young's modulus.
+    ends : str [-]
+        "hinged" or "clamped".
+    model : str [-]
+        Chord-bow relation: "straight" (the article's eq. 8), "arc" or "elastica".
+
+    Returns
+    -------
+    dict [-]
+        ``chord_open``, ``chord_closed``, ``bow_open``, ``bow_closed``, ``radius_open``,
+        ``radius_closed`` [m]; ``force_open``, ``force_closed`` [N]; ``fly_mass`` [kg];
+        ``omega_open`` [rad/s].
+
+    References
+    ----------
+    [traction-article] eqs. 5-9 (the second flat-spring procedure).
+
+    Examples
+    --------
+    The article gives no worked numbers; the bundled case ``traction-leaf-assembly``: an 8 in
+    hinged leaf 1 x 0.025 in (E = 28.5e6 psi), Z = 3/16 in, hinges at 1.25 in, closed at 250 rpm:
+    bows 0.8609 and 1.2103 in, a 0.9641 lbf weight, throttle fully open at 227.63 rpm:
+
+    >>> import math
+    >>> LBF, IN, LB = 4.4482216152605, 0.0254, 0.45359237  # lbf [N], in [m], lb [kg]
+    >>> RPM, PSI = 2 * math.pi / 60, 4.4482216152605 / 0.0254**2  # [rad/s], [Pa]
+    >>> a = assembly_from_valve_travel(8 * IN, 0.1875 * IN, 1.25 * IN, 250 * RPM, 1.0 * IN,
+    ...                                0.025 * IN, 28.5e6 * PSI)
+    >>> round(float(a["bow_open"]) / IN, 4), round(float(a["bow_closed"]) / IN, 4)
+    (0.8609, 1.2103)
+    >>> round(float(a["fly_mass"]) / LB, 4), round(a["omega_open"] / RPM, 2)
+    (0.9641, 227.63)
+    """
     chords = np.array([L - Z, L - 2.0 * Z])
     bows = leaf.bow(chords, L, model)
     radii = hinge_radius + bows

@@ -548,12 +548,54 @@ def _parse_valve_gear(vg, geometry) -> ValveGear:
 
 
 def paper_sizing(spec, m: float, r: float) -> dict:
-    """Hamabe's spring-sizing procedure of Example 1, step by step, SI.
+    """Hamabe's spring-sizing procedure of Example 1, step by step (a dict of SI quantities).
 
     ``omega_i = omega0 (1 - delta0/2)``, ``omega_a = omega0 (1 + delta0/2)``;
     ``M_fi = M_zi - M_r0i``, ``M_fa = M_za - M_r0a`` (eq. 12); ``F = M_f / h`` (eq. 2);
     ``kappa = (F_a - F_i) / (2 (l_a - l_i))``; ``d = (16 F_a r / (pi k_s))^(1/3)``;
     ``n = G d^4 / (64 r^3 kappa)``. The reaction is taken at the mean speed, as in the paper.
+    The arms are exact (the paper rounds them to 2.5 and 3.0 cm) and ``d`` is not rounded up.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (its governor's geometry and valve gear, the analysis'
+        ``valve_table``; SI inside).
+    m : float [kg]
+        Mass of one pendulum.
+    r : float [m]
+        Mean coil radius of the spring.
+
+    Returns
+    -------
+    dict [-]
+        ``omega_inner``, ``omega_outer`` [rad/s]; ``M_zi``, ``M_za``, ``M_fi``, ``M_fa`` [N m];
+        ``h_i``, ``h_a``, ``l_i``, ``l_a`` [m]; ``F_i``, ``F_a`` [N]; ``kappa`` [N/m]; ``d`` [m];
+        ``n`` [-].
+
+    References
+    ----------
+    [hamabe] Part I, eqs. (1), (2), (11), (12) and Example 1.
+
+    Examples
+    --------
+    Example 1 (a) with the paper's omega0^2 = 630, W = 12 kgf, r = 6 cm. The paper prints
+    ``M_zi = 1127`` kgf cm, ``F_a = 606`` kgf (607 unrounded: it takes omega_a^2 = 707 and
+    rounds the reaction's terms) and ``d = 1.7`` cm (``1.667`` rounded up); with
+    its arms rounded to 2.5 and 3.0 cm it gets kappa = 59.7 kgf/cm, where the exact arms give
+    63.1:
+
+    >>> import dataclasses, govopt, govopt.examples
+    >>> KGF, CM = 9.80665, 0.01
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> spec = dataclasses.replace(spec, speed=dataclasses.replace(spec.speed,
+    ...                                                            omega_mean=np.sqrt(630.0)))
+    >>> s = paper_sizing(spec, 12.0, 6 * CM)
+    >>> s = {k: float(v) for k, v in s.items()}
+    >>> round(s["M_zi"] / (KGF * CM)), round(s["F_a"] / KGF), round(s["d"] / CM, 3)
+    (1127, 607, 1.668)
+    >>> round(s["kappa"] / (KGF / CM), 1)
+    63.1
     """
     from ...analysis import statics
 
@@ -577,19 +619,124 @@ def paper_sizing(spec, m: float, r: float) -> dict:
 
 
 def reaction(spec, alpha):
-    """``(C_f, C_i)`` with ``M_r0 = C_f + omega^2 C_i`` at configurations ``alpha`` (eq. 11),
-    ``delta`` from the valve-gear table interpolated as ``[analysis] valve_table`` says."""
+    """``(C_f, C_i)`` [N m, kg m^2] with ``M_r0 = C_f + omega^2 C_i`` at configurations
+    ``alpha`` (Hamabe, Part I, eq. 11), ``delta`` from the valve-gear table interpolated as
+    ``[analysis] valve_table`` says.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (its governor's geometry and valve gear, the analysis'
+        ``valve_table``; SI inside).
+    alpha : float or array [rad]
+        Configurations, the angle OSP.
+
+    Returns
+    -------
+    tuple of float or array [N m, kg m^2]
+        ``(C_f, C_i)``.
+
+    References
+    ----------
+    [hamabe] Part I, eq. (11) and Example 1's table of ``M_r0``.
+
+    Examples
+    --------
+    Hamabe's Example 1 (a), the bundled spec:
+
+    >>> import govopt, govopt.examples
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> KGFCM = 9.80665 * 0.01
+
+    At 50 deg and 80 deg (rows of the table) and omega^2 = 630 the paper prints 59.4 and
+    20.8 kgf cm, its terms rounded before adding:
+
+    >>> C_f, C_i = reaction(spec, np.radians([50, 80]))
+    >>> [round(float(x), 1) for x in (C_f + 630 * C_i) / KGFCM]
+    [59.6, 20.7]
+    """
     return spec.governor.reaction(alpha, spec.analysis.valve_table)
 
 
 def reaction_slopes(spec, alpha, step: float = 1e-6):
-    """``(dC_f/dalpha, dC_i/dalpha)`` at configurations ``alpha``: exact for the smooth tables,
-    a difference over ``+-step`` for ``linear`` (:func:`valvegear.table_reaction_slope`)."""
+    """``(dC_f/dalpha, dC_i/dalpha)`` [N m/rad, kg m^2/rad] at configurations ``alpha``
+    (Hamabe, Part I, eq. 11 through the valve-gear table): exact for the smooth tables, a
+    difference over ``+-step`` for ``linear`` (:func:`valvegear.table_reaction_slope`).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (its governor's geometry and valve gear, the analysis'
+        ``valve_table``; SI inside).
+    alpha : float or array [rad]
+        Configurations, the angle OSP.
+    step : float [rad]
+        Half the difference interval for the ``linear`` table.
+
+    Returns
+    -------
+    tuple of float or array [N m/rad, kg m^2/rad]
+        The slopes of ``C_f`` and ``C_i``.
+
+    References
+    ----------
+    [hamabe] Part I, eq. (11) and Example 1's table (the slope is govopt's).
+
+    Examples
+    --------
+    Hamabe's Example 1 (a), the bundled spec:
+
+    >>> import govopt, govopt.examples
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> KGFCM = 9.80665 * 0.01
+
+    Their sum at omega^2 = 630 is :func:`reaction_slope`:
+
+    >>> s_f, s_i = reaction_slopes(spec, np.radians(54))
+    >>> bool(np.isclose(s_f + 630 * s_i, reaction_slope(spec, np.radians(54), 630.0)))
+    True
+    """
     return spec.governor.reaction_slopes(alpha, spec.analysis.valve_table, step)
 
 
 def reaction_slope(spec, alpha, omega2, step: float = 1e-6):
-    """``dM_r0/dalpha = dC_f/dalpha + omega^2 dC_i/dalpha`` at constant speed (Hamabe, eq. 11
-    through the valve-gear table; :func:`reaction_slopes`), N m/rad."""
+    """``dM_r0/dalpha = dC_f/dalpha + omega^2 dC_i/dalpha`` [N m/rad] at constant speed (Hamabe,
+    Part I, eq. 11 through the valve-gear table; :func:`reaction_slopes`).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (its governor's geometry and valve gear, the analysis'
+        ``valve_table``; SI inside).
+    alpha : float or array [rad]
+        Configurations, the angle OSP.
+    omega2 : float or array [1/s^2]
+        Square of the shaft speed.
+    step : float [rad]
+        Half the difference interval for the ``linear`` table.
+
+    Returns
+    -------
+    float or array [N m/rad]
+        The slope of the mean reaction moment.
+
+    References
+    ----------
+    [hamabe] Part I, eq. (11) and Example 1's table (the slope is govopt's).
+
+    Examples
+    --------
+    Hamabe's Example 1 (a), the bundled spec:
+
+    >>> import govopt, govopt.examples
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> KGFCM = 9.80665 * 0.01
+
+    At 54 deg, per degree: the paper's table falls from 59.4 to 49.7 kgf cm over 50 deg to
+    57 deg 20', a secant of -1.32 kgf cm/deg; PCHIP's tangent is the same to 0.01:
+
+    >>> round(float(reaction_slope(spec, np.radians(54), 630.0)) / KGFCM * np.pi / 180, 2)
+    -1.32
+    """
     s_f, s_i = reaction_slopes(spec, alpha, step)
     return s_f + omega2 * s_i

@@ -170,14 +170,61 @@ def _switch_start(p: dict):
 
 def forcing_harmonics(spec: Spec, alpha0, m, inertia, omega0=None, n_harmonics: int | None = None,
                       *, speed_fluctuation=None, tangential_inertia: int = 0):
-    """Harmonics of the forcing moment ``G(tau)``: ``(a, b)`` with ``G = a_0 + sum_n [a_n cos(n
-    tau) + b_n sin(n tau)]``, N m, shape ``broadcast(alpha0, m, inertia, omega0).shape + (N+1,)``.
+    """Harmonics [N m] of the forcing moment ``G(tau)`` (Hamabe, Part II, eqs. 19-21).
+
+    ``(a, b)`` with ``G = a_0 + sum_n [a_n cos(n tau) + b_n sin(n tau)]``, shape
+    ``broadcast(alpha0, m, inertia, omega0).shape + (N+1,)``.
 
     ``a_n, b_n`` are the paper's ``I M_n, I N_n`` (eq. 20, 21); without speed fluctuation
     ``a_n + i b_n = -(reaction harmonic n)`` of
     :func:`govopt.governors.shaft.valvegear.reaction_harmonics`,
     e.g. ``b_1 = -B1``. Exact to rounding for every order (:func:`valvegear.piecewise_fourier`,
     split at the friction switches in ``tau``). Vectorised over designs and configurations.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (its governor, valve gear, speed, engine and analysis;
+        SI inside).
+    alpha0 : float or array [rad]
+        The equilibrium configuration vibrated about.
+    m : float or array [kg]
+        Mass of one pendulum.
+    inertia : float or array [kg m^2]
+        The pendulum's moment of inertia about its fulcrum.
+    omega0 : float or array or None [rad/s]
+        Mean shaft speed (default the spec's mean speed).
+    n_harmonics : int or None [-]
+        Highest harmonic (default the spec's ``analysis.harmonics``).
+    speed_fluctuation : tuple of float or None [rad/s]
+        ``(E2, F2)`` of eq. (19), overriding the spec's engine.
+    tangential_inertia : int [-]
+        -1, 0 or +1: the pendulum's tangential inertia left out (0) or taken
+        with its centre of gravity trailing (-1) or leading (+1).
+
+    Returns
+    -------
+    tuple of arrays [N m]
+        ``(a, b)``, the cosine and sine moments, orders ``0 .. N`` on the last axis.
+
+    References
+    ----------
+    [hamabe] Part II, eqs. (14), (19)-(21).
+
+    Examples
+    --------
+    Hamabe's Example 2, case (a), with the paper's inputs: ``k^2 = 360``, ``omega0^2 = 630``,
+    ``I = rho^2 m = 0.1728`` kg m^2 (12 kgf at 12 cm), no speed fluctuation:
+
+    >>> import govopt, govopt.examples
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> alpha_n, w0 = spec.governor.alpha_normal, np.sqrt(630.0)
+
+    Without speed fluctuation ``b_1 = -B1 = -(q/2)(P3 + P4) = -70`` kgf cm (eq. 14):
+
+    >>> a, b = forcing_harmonics(spec, alpha_n, 12.0, 0.1728, w0, 2, speed_fluctuation=(0, 0))
+    >>> round(float(b[1]) / (9.80665 * 0.01), 6)
+    -70.0
     """
     N = spec.analysis.harmonics if n_harmonics is None else int(n_harmonics)
     p = _setup(spec, alpha0, m, inertia, omega0, tangential_inertia, speed_fluctuation)
@@ -199,13 +246,13 @@ def _f(dashpot):
 
 
 def harmonic_response(a, b, k2, inertia, omega0, dashpot=None, orders=None):
-    """Steady response of ``I xi'' + f xi' + I k^2 xi = a cos(n tau) + b sin(n tau)``.
+    """Steady response [rad] of ``I xi'' + f xi' + I k^2 xi = a cos(n tau) + b sin(n tau)``
+    (Hamabe, Part II, eq. 22, with the dash-pot of eq. 23).
 
-    Hamabe, eq. (22) (``f = 0``) with the dash-pot of eq. (23). ``a, b`` have the orders on the
-    last axis (``orders`` default ``0, 1, ...``); ``k2, inertia, omega0, dashpot`` broadcast with
-    the leading axes. Returns a dict of arrays: ``cos`` and ``sin`` (``X_n, Y_n``, rad),
-    ``amplitude`` (rad), ``phase`` (rad, ``xi_n = amplitude cos(n tau - phase)``), ``detuning``
-    ``(k^2 - n^2 omega0^2) / (n^2 omega0^2)`` and ``resonant`` (bool).
+    ``a, b`` have the orders on the last axis (``orders`` default ``0, 1, ...``); ``k2, inertia,
+    omega0, dashpot`` broadcast with the leading axes. Returns a dict of arrays: ``cos`` and
+    ``sin`` (``X_n, Y_n``, rad), ``amplitude`` (rad), ``phase`` (rad, ``xi_n = amplitude cos(n tau
+    - phase)``), ``detuning`` ``(k^2 - n^2 omega0^2) / (n^2 omega0^2)`` and ``resonant`` (bool).
 
     Exact resonance (``f = 0`` and ``k^2 = n^2 omega0^2`` to :data:`RESONANCE_RTOL`) has no steady
     solution: ``resonant`` is True, the amplitude ``inf`` (0 if that harmonic is not excited, i.e.
@@ -213,6 +260,50 @@ def harmonic_response(a, b, k2, inertia, omega0, dashpot=None, orders=None):
     ``cos``/``sin`` are ``+-inf`` along the secular growth ``t (a sin - b cos) / (2 I n omega0)``
     and ``phase`` its phase. Never NaN, never raises. ``n = 0`` is the static shift ``a_0 / (I
     k^2)`` (resonant when ``k^2 = 0``).
+
+    Parameters
+    ----------
+    a : array [N m]
+        Cosine moments of the forcing, orders on the last axis.
+    b : array [N m]
+        Sine moments of the forcing.
+    k2 : float or array [1/s^2]
+        Restoring stiffness per unit inertia, ``k^2`` (eq. 18).
+    inertia : float or array [kg m^2]
+        The pendulum's moment of inertia about its fulcrum.
+    omega0 : float or array [rad/s]
+        Mean shaft speed (``tau = omega0 t``).
+    dashpot : float or array or None [N m s/rad]
+        Dash-pot coefficient ``f`` (None: undamped, the paper's Part II).
+    orders : array or None [-]
+        The harmonic orders of the last axis (default ``0, 1, ...``).
+
+    Returns
+    -------
+    dict of arrays [rad, -]
+        ``cos``, ``sin``, ``amplitude``, ``phase`` [rad]; ``detuning`` [-]; ``resonant`` [-].
+
+    References
+    ----------
+    [hamabe] Part II, eqs. (22), (23).
+
+    Examples
+    --------
+    Hamabe's Example 2, case (a): ``k^2 = 360``, ``omega0^2 = 630``, ``I = 0.1728`` kg m^2. The
+    paper prints 8.45 deg for the first harmonic, ``B1 / (I (omega0^2 - k^2))`` with
+    ``B1 = (q/2)(P3 + P4) = 70`` kgf cm; its inputs give 8.43 (the paper's k^2 is rounded):
+
+    >>> B1 = 0.025 * 28 * 9.80665
+    >>> r = harmonic_response([0.0, 0.0], [0.0, -B1], 360.0, 0.1728, np.sqrt(630.0))
+    >>> round(float(np.degrees(r["amplitude"][1])), 2), round(float(r["detuning"][1]), 4)
+    (8.43, -0.4286)
+
+    At resonance (``k^2 = omega0^2``) a dash-pot ``f`` leaves ``B1 / (f omega0)``, by hand
+    ``6.8647 / (5 x 25.1) = 0.0547`` rad:
+
+    >>> r = harmonic_response([0.0, 0.0], [0.0, -B1], 630.0, 0.1728, np.sqrt(630.0), 5.0)
+    >>> round(float(r["amplitude"][1]), 4)
+    0.0547
     """
     a = np.asarray(a, dtype=float)
     b = np.asarray(b, dtype=float)
@@ -418,7 +509,8 @@ def vibration(spec: Spec, sd: SpringDesign, alpha0: float, k2: float | None = No
               omega0: float | None = None, n_harmonics: int | None = None, *,
               dashpot: float | None | str = "design", speed_fluctuation=None,
               tangential_inertia: int = 0) -> VibrationResult:
-    """Steady forced vibration of the pendulum about ``alpha0`` (Hamabe, eqs. 18-22, Example 2).
+    """Steady forced vibration of the pendulum about ``alpha0`` (Hamabe, Part II, eqs. 18-22,
+    Example 2).
 
     ``k2`` defaults to :func:`~govopt.analysis.statics.restoring_k2` at ``alpha0`` and
     ``omega0`` (default: the spec's mean speed); ``n_harmonics`` to ``spec.analysis.harmonics``.
@@ -433,6 +525,58 @@ def vibration(spec: Spec, sd: SpringDesign, alpha0: float, k2: float | None = No
     friction jumps' ``1/n`` coefficients (an asymptotically tight estimate, ``~ 1/N^2``); the
     peak-to-peak of the complete response lies within ``+- 2 truncation_error_rad``.
     Exact undamped resonance gives ``inf`` and lists the order in ``resonant_orders``.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (its governor, valve gear, speed, engine and analysis;
+        SI inside).
+    sd : SpringDesign [-]
+        The design (:class:`~govopt.analysis.statics.SpringDesign`: mass [kg], inertia
+        [kg m^2], spring [N/m, m]).
+    alpha0 : float [rad]
+        The equilibrium configuration vibrated about.
+    k2 : float or None [1/s^2]
+        Restoring stiffness per unit inertia (default from the statics).
+    omega0 : float or None [rad/s]
+        Mean shaft speed (default the spec's mean speed).
+    n_harmonics : int or None [-]
+        Highest harmonic (default the spec's ``analysis.harmonics``).
+    dashpot : float or None or str [N m s/rad]
+        ``f``; ``"design"`` (default) takes the spec's; None is undamped.
+    speed_fluctuation : tuple of float or None [rad/s]
+        ``(E2, F2)`` of eq. (19), overriding the spec's engine.
+    tangential_inertia : int [-]
+        -1, 0 or +1: the pendulum's tangential inertia left out (0) or taken
+        with its centre of gravity trailing (-1) or leading (+1).
+
+    Returns
+    -------
+    VibrationResult [rad]
+        Harmonics, peak-to-peak, eccentric travel [m], truncation error [rad].
+
+    References
+    ----------
+    [hamabe] Part II, eqs. (18)-(22), Example 2.
+
+    Examples
+    --------
+    Hamabe's Example 2, case (a), with the paper's inputs: ``k^2 = 360``, ``omega0^2 = 630``,
+    ``I = rho^2 m = 0.1728`` kg m^2 (12 kgf at 12 cm), no speed fluctuation:
+
+    >>> import govopt, govopt.examples
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> alpha_n, w0 = spec.governor.alpha_normal, np.sqrt(630.0)
+
+    >>> from govopt.analysis.statics import spring_design
+    >>> v = vibration(spec, spring_design(spec), alpha_n, 360.0, w0, dashpot=None,
+    ...               speed_fluctuation=(0, 0))
+
+    The paper prints 8.45 deg for the first harmonic, ``B1 / (I (omega0^2 - k^2))`` with
+    ``B1 = (q/2)(P3 + P4) = 70`` kgf cm; its inputs give 8.43 (the paper's k^2 is rounded):
+
+    >>> round(float(np.degrees(v.amplitude(1))), 2)
+    8.43
     """
     g = spec.governor
     omega0 = spec.speed.omega_mean if omega0 is None else float(omega0)
@@ -480,7 +624,8 @@ def vibration(spec: Spec, sd: SpringDesign, alpha0: float, k2: float | None = No
 
 def first_harmonic_amplitude(spec: Spec, alpha0, k2, inertia, dashpot=None, omega0=None, *,
                              speed_fluctuation=None):
-    """Amplitude of the first harmonic of ``xi`` (rad), vectorised over designs/configurations.
+    """Amplitude [rad] of the first harmonic of ``xi``, vectorised over designs/configurations
+    (Hamabe, Part II, eq. 22 and Example 2).
 
     Hamabe, eq. (22) / Example 2: ``N_1 / (k^2 - omega0^2)``, dominated by ``B1 / (I (omega0^2 -
     k^2))``, here with the dash-pot (``dashpot`` = ``f``, None = undamped). The first harmonic
@@ -495,7 +640,50 @@ def first_harmonic_amplitude(spec: Spec, alpha0, k2, inertia, dashpot=None, omeg
     (``beta cos psi = E2 / 2 omega0``, ``beta sin psi = F2 / 2 omega0``; first order: the
     paper's ``(1 + E2/4 omega0) B1`` and ``(F2/4 omega0) B1``). All even-order terms (inertia,
     friction, centrifugal, speed) stay even under the modulation. Undamped exact resonance
-    gives ``inf``.
+    gives ``inf``. The Bessel form is govopt's; the paper keeps first order.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (its governor, valve gear, speed, engine and analysis;
+        SI inside).
+    alpha0 : float or array [rad]
+        The equilibrium configuration vibrated about.
+    k2 : float or array [1/s^2]
+        Restoring stiffness per unit inertia, ``k^2`` (eq. 18).
+    inertia : float or array [kg m^2]
+        The pendulum's moment of inertia about its fulcrum.
+    dashpot : float or array or None [N m s/rad]
+        Dash-pot coefficient ``f`` (None: undamped, the paper's Part II).
+    omega0 : float or array or None [rad/s]
+        Mean shaft speed (default the spec's mean speed).
+    speed_fluctuation : tuple of float or None [rad/s]
+        ``(E2, F2)`` of eq. (19), overriding the spec's engine.
+
+    Returns
+    -------
+    float or array [rad]
+        The first harmonic's amplitude.
+
+    References
+    ----------
+    [hamabe] Part II, eqs. (19), (22), Example 2.
+
+    Examples
+    --------
+    Hamabe's Example 2, case (a), with the paper's inputs: ``k^2 = 360``, ``omega0^2 = 630``,
+    ``I = rho^2 m = 0.1728`` kg m^2 (12 kgf at 12 cm), no speed fluctuation:
+
+    >>> import govopt, govopt.examples
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> alpha_n, w0 = spec.governor.alpha_normal, np.sqrt(630.0)
+
+    The paper prints 8.45 deg for the first harmonic, ``B1 / (I (omega0^2 - k^2))`` with
+    ``B1 = (q/2)(P3 + P4) = 70`` kgf cm; its inputs give 8.43 (the paper's k^2 is rounded):
+
+    >>> amp = first_harmonic_amplitude(spec, alpha_n, 360.0, 0.1728, omega0=w0)
+    >>> round(float(np.degrees(amp)), 2)
+    8.43
     """
     vg, q = spec.governor.valve_gear, spec.governor.q
     omega0 = spec.speed.omega_mean if omega0 is None else omega0
@@ -522,13 +710,66 @@ def first_harmonic_amplitude(spec: Spec, alpha0, k2, inertia, dashpot=None, omeg
 def peak_amplitude_bound(spec: Spec, alpha0, k2, inertia, m, dashpot=None, omega0=None,
                          n_harmonics: int | None = None, *, include_tail: bool = True,
                          speed_fluctuation=None, tangential_inertia: int = 0):
-    """Sum of the harmonic amplitudes ``sum_n |xi_n|`` (rad): an upper bound of the half
-    peak-to-peak (indeed of ``max |xi - mean|``) of the steady vibration, vectorised over
-    designs (``alpha0, k2, inertia, m, dashpot, omega0`` broadcast).
+    """Sum of the harmonic amplitudes ``sum_n |xi_n|`` [rad] (Hamabe, Part II, eq. 22 summed):
+    an upper bound of the half peak-to-peak (indeed of ``max |xi - mean|``) of the steady
+    vibration, vectorised over designs (``alpha0, k2, inertia, m, dashpot, omega0`` broadcast).
 
     Orders ``1..N`` (default ``spec.analysis.harmonics``); with ``include_tail`` the left-out
     orders are added as in :func:`vibration`, so the bound holds for the complete response.
-    ``inf`` at an undamped exact resonance; cost ``O(designs * N^2)``.
+    ``inf`` at an undamped exact resonance; cost ``O(designs * N^2)``. The bound is govopt's.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (its governor, valve gear, speed, engine and analysis;
+        SI inside).
+    alpha0 : float or array [rad]
+        The equilibrium configuration vibrated about.
+    k2 : float or array [1/s^2]
+        Restoring stiffness per unit inertia, ``k^2`` (eq. 18).
+    inertia : float or array [kg m^2]
+        The pendulum's moment of inertia about its fulcrum.
+    m : float or array [kg]
+        Mass of one pendulum.
+    dashpot : float or array or None [N m s/rad]
+        Dash-pot coefficient ``f`` (None: undamped, the paper's Part II).
+    omega0 : float or array or None [rad/s]
+        Mean shaft speed (default the spec's mean speed).
+    n_harmonics : int or None [-]
+        Highest harmonic (default the spec's ``analysis.harmonics``).
+    include_tail : bool [-]
+        Add the left-out orders' estimate.
+    speed_fluctuation : tuple of float or None [rad/s]
+        ``(E2, F2)`` of eq. (19), overriding the spec's engine.
+    tangential_inertia : int [-]
+        -1, 0 or +1: the pendulum's tangential inertia left out (0) or taken
+        with its centre of gravity trailing (-1) or leading (+1).
+
+    Returns
+    -------
+    float or array [rad]
+        The bound on ``max |xi - mean|``.
+
+    References
+    ----------
+    [hamabe] Part II, eq. (22) and Example 2.
+
+    Examples
+    --------
+    Hamabe's Example 2, case (a), with the paper's inputs: ``k^2 = 360``, ``omega0^2 = 630``,
+    ``I = rho^2 m = 0.1728`` kg m^2 (12 kgf at 12 cm), no speed fluctuation:
+
+    >>> import govopt, govopt.examples
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> alpha_n, w0 = spec.governor.alpha_normal, np.sqrt(630.0)
+
+    The bound lies above the first harmonic's 8.43 deg and above half the actual peak-to-peak
+    (8.46 deg, :func:`vibration`):
+
+    >>> bound = peak_amplitude_bound(spec, alpha_n, 360.0, 0.1728, 12.0, omega0=w0,
+    ...                              speed_fluctuation=(0, 0))
+    >>> round(float(np.degrees(bound)), 2)
+    9.03
     """
     N = spec.analysis.harmonics if n_harmonics is None else int(n_harmonics)
     omega0 = spec.speed.omega_mean if omega0 is None else omega0
