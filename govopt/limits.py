@@ -38,7 +38,7 @@ MAX_LIST_ITEMS = 1000
 MAX_POINTS = 1001
 #: ``analysis.harmonics``: Fourier harmonics of a periodic forcing (default 12); past the 50th
 #: the valve gear's reaction is its friction's square wave alone, falling as 1/n
-#: (:func:`govopt.governors.shaft.valvegear.truncation_error`); ``govopt design``'s vibration
+#: (:func:`govopt.governors.shaft.harmonics.truncation_error`); ``govopt design``'s vibration
 #: objective takes ~30 s at 50 harmonics (the bundled design; ~20 s at 12)
 MAX_HARMONICS = 50
 #: ``[[load_change]]`` tables: each is a transient solved for every design candidate

@@ -253,3 +253,24 @@ def test_spring_kinds_declare_their_spec_keys():
         is not None
     assert KINDS["tension"].section_error({"wire_diameter": 0.002, "coil_radius": 0.01}) \
         is None
+
+
+def test_no_private_name_read_across_modules():
+    """No ``module._name`` in govopt where ``module`` is another govopt module imported by name:
+    what one module uses of another is public (the import rule above, for attributes)."""
+    bad = []
+    for path in PACKAGE.rglob("*.py"):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        modules = {a.asname or a.name for node in ast.walk(tree)
+                   if isinstance(node, ast.ImportFrom) and (node.level or (node.module or "")
+                                                            .startswith("govopt"))
+                   for a in node.names}
+        modules |= {(a.asname or a.name).split(".")[0] for node in ast.walk(tree)
+                    if isinstance(node, ast.Import) for a in node.names
+                    if a.name.startswith("govopt")}
+        bad += [f"{path.relative_to(PACKAGE)}:{node.lineno} {node.value.id}.{node.attr}"
+                for node in ast.walk(tree)
+                if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name)
+                and node.value.id in modules and node.attr.startswith("_")
+                and not node.attr.startswith("__")]
+    assert bad == []

@@ -28,6 +28,7 @@ from hypothesis import strategies as st
 from scipy import integrate
 
 from govopt.evaluator import evaluate
+from govopt.governors.shaft import harmonics as hm
 from govopt.governors.shaft import valvegear as vg
 from govopt.governors.shaft import vibration as V
 from govopt.spec import load_spec
@@ -99,7 +100,7 @@ def test_mean_of_reaction_moment_is_eq11(delta, w2, engine):
     ref = vg.mean_reaction_moment(delta, w, VG["q"], VG["e"], VG["s"], VG["P1"], VG["m_v"],
                                   VG["m_e"])
     assert abs(mean - ref) <= 1e-12 * scale
-    a, _ = vg.reaction_harmonics(delta, w, n_harmonics=0, engine=engine, **VG)
+    a, _ = hm.reaction_harmonics(delta, w, n_harmonics=0, engine=engine, **VG)
     assert abs(a[0] - ref) <= 1e-12 * scale
 
 
@@ -114,7 +115,7 @@ def test_paper_coefficients_from_the_model_doc():
     """
     q, P1, mv, e = VG["q"], VG["P1"], VG["m_v"], VG["e"]
     for delta in np.radians([48.5, 58.0, 69.0, 84.0, 96.0]):
-        a, b = vg.reaction_harmonics(delta, W0, n_harmonics=4, **VG)
+        a, b = hm.reaction_harmonics(delta, W0, n_harmonics=4, **VG)
         fr = (q / 2) * (2 * P1 / np.pi)
         inertia = (q / 2) * mv * W0**2 * e / 2
         A2 = fr * (np.sin(delta) + np.sin(3 * delta) / 3) + inertia / np.tan(delta)
@@ -135,9 +136,9 @@ def test_series_equals_numerical_harmonics(engine):
     sin((2j+1)d)/(2j+1)]``, and all the rest of eq. (14), against the numerical harmonics, up to
     order 300 (1e-10 relative to B1; in fact ~1e-13)."""
     deltas = np.radians([10.0, 48.5, 69.0, 96.0, 150.0])
-    a, b = vg.reaction_harmonics(deltas, W0, n_harmonics=300, engine=engine, **VG)
-    A, B = vg.series_harmonics(deltas, W0, n_harmonics=300, engine=engine, **VG)
-    a_s, b_s = vg.paper_to_fourier(A, B)
+    a, b = hm.reaction_harmonics(deltas, W0, n_harmonics=300, engine=engine, **VG)
+    A, B = hm.series_harmonics(deltas, W0, n_harmonics=300, engine=engine, **VG)
+    a_s, b_s = hm.paper_to_fourier(A, B)
     scale = 0.5 * VG["q"] * VG["P3"]
     assert np.max(np.abs(a - a_s)) < 1e-10 * scale
     assert np.max(np.abs(b - b_s)) < 1e-10 * scale
@@ -154,8 +155,8 @@ def test_horizontal_engine_first_harmonic():
     """Horizontal engine (eq. 8): ``P3 sin(theta) - P4 cos(theta)``: A1 = -(q/2) P4 on cos(theta),
     B1 = (q/2) P3; the mean (eq. 11) and every other harmonic are those of the vertical engine."""
     d = np.radians(69.0)
-    a_h, b_h = vg.reaction_harmonics(d, W0, n_harmonics=6, engine="horizontal", **VG)
-    a_v, b_v = vg.reaction_harmonics(d, W0, n_harmonics=6, engine="vertical", **VG)
+    a_h, b_h = hm.reaction_harmonics(d, W0, n_harmonics=6, engine="horizontal", **VG)
+    a_v, b_v = hm.reaction_harmonics(d, W0, n_harmonics=6, engine="vertical", **VG)
     q = VG["q"]
     assert a_h[1] == pytest.approx(-q / 2 * VG["P4"], rel=1e-13)
     assert b_h[1] == pytest.approx(q / 2 * VG["P3"], rel=1e-13)
@@ -170,14 +171,14 @@ def test_truncation_error_parseval():
     remainder M_r - (kept harmonics), integrated piecewise."""
     d = np.radians(69.0)
     Ns = [2, 4, 8, 16, 64, 256, 512]
-    tails = np.array([vg.truncation_error(N, d, W0, **VG) for N in Ns])
+    tails = np.array([hm.truncation_error(N, d, W0, **VG) for N in Ns])
     assert np.all(np.diff(tails) < 0)
     limit = VG["q"] * VG["P1"] * abs(np.cos(d)) / np.pi
     ratio = tails * np.sqrt(Ns) / limit
     assert np.all(np.diff(ratio) > 0) and abs(ratio[-1] - 1) < 2e-3
     # the remainder itself
     N = 6
-    a, b = vg.reaction_harmonics(d, W0, n_harmonics=N, **VG)
+    a, b = hm.reaction_harmonics(d, W0, n_harmonics=N, **VG)
     n = np.arange(N + 1)
 
     def remainder_sq(theta, piece):
@@ -186,8 +187,8 @@ def test_truncation_error_parseval():
         kept = np.cos(theta[..., None] * n) @ a + np.sin(theta[..., None] * n) @ b
         return (full - kept) ** 2
 
-    ms, _ = vg.piecewise_fourier(remainder_sq, np.pi / 2 - d, 0, nodes=200)
-    assert math.sqrt(ms[0]) == pytest.approx(vg.truncation_error(N, d, W0, **VG), rel=1e-10)
+    ms, _ = hm.piecewise_fourier(remainder_sq, np.pi / 2 - d, 0, nodes=200)
+    assert math.sqrt(ms[0]) == pytest.approx(hm.truncation_error(N, d, W0, **VG), rel=1e-10)
 
 
 # ----------------------------------------------------------------------------------------------
@@ -294,7 +295,7 @@ def test_forcing_without_fluctuation_is_minus_the_reaction(case_a):
                                speed_fluctuation=(0.0, 0.0))
     vgear, g = spec.governor.valve_gear, spec.governor
     delta = vg.advance_angle(a0, vgear.table_alpha, vgear.table_delta)
-    ar, br = vg.reaction_harmonics(delta, spec.speed.omega_mean, g.q, vgear.eccentricity,
+    ar, br = hm.reaction_harmonics(delta, spec.speed.omega_mean, g.q, vgear.eccentricity,
                                    vgear.offset, vgear.friction, vgear.steam_load, vgear.weight,
                                    vgear.reciprocating_mass, vgear.eccentric_mass, 20)
     np.testing.assert_allclose(a[1:], -ar[1:], atol=1e-13)

@@ -69,7 +69,7 @@ import numpy as np
 from ...analysis.statics import SpringDesign, restoring_k2
 from ...inputs import Spec
 from ...jsonable import jsonable
-from . import valvegear
+from . import harmonics, valvegear
 
 #: Relative detuning ``|k^2 - n^2 omega0^2| / max(k^2, n^2 omega0^2)`` below which an undamped
 #: harmonic is treated as exactly resonant (amplitude ``inf``).
@@ -145,9 +145,9 @@ def _forcing(spec: Spec, p: dict, tau, friction_factor=None):
         friction_factor = -np.sign(np.cos(theta + x["delta"]))
     reaction = 0.5 * g.q * (
         friction_factor * vg.friction * np.sin(theta)
-        + valvegear._smooth_force(theta, x["delta"], x["omega_r0"] + eta, vg.eccentricity,
-                                  vg.offset, vg.steam_load, vg.weight, vg.reciprocating_mass,
-                                  vg.eccentric_mass, vg.engine, omega_dot=eta_dot))
+        + valvegear.smooth_force(theta, x["delta"], x["omega_r0"] + eta, vg.eccentricity,
+                                 vg.offset, vg.steam_load, vg.weight, vg.reciprocating_mass,
+                                 vg.eccentric_mass, vg.engine, omega_dot=eta_dot))
     return x["lever"] * eta * (2.0 * w0 + eta) - (reaction - x["M_r0"]) + x["euler"] * eta_dot
 
 
@@ -177,8 +177,8 @@ def forcing_harmonics(spec: Spec, alpha0, m, inertia, omega0=None, n_harmonics: 
 
     ``a_n, b_n`` are the paper's ``I M_n, I N_n`` (eq. 20, 21); without speed fluctuation
     ``a_n + i b_n = -(reaction harmonic n)`` of
-    :func:`govopt.governors.shaft.valvegear.reaction_harmonics`,
-    e.g. ``b_1 = -B1``. Exact to rounding for every order (:func:`valvegear.piecewise_fourier`,
+    :func:`govopt.governors.shaft.harmonics.reaction_harmonics`,
+    e.g. ``b_1 = -B1``. Exact to rounding for every order (:func:`.harmonics.piecewise_fourier`,
     split at the friction switches in ``tau``). Vectorised over designs and configurations.
 
     Parameters
@@ -229,12 +229,12 @@ def forcing_harmonics(spec: Spec, alpha0, m, inertia, omega0=None, n_harmonics: 
     N = spec.analysis.harmonics if n_harmonics is None else int(n_harmonics)
     p = _setup(spec, alpha0, m, inertia, omega0, tangential_inertia, speed_fluctuation)
     spread = 2.0 * float(np.max(np.hypot(p["eps_E"], p["eps_F"])))
-    nodes = valvegear.quadrature_nodes(N, spread)
+    nodes = harmonics.quadrature_nodes(N, spread)
 
     def g(tau, piece):
         return _forcing(spec, p, tau, piece)
 
-    return valvegear.piecewise_fourier(g, _switch_start(p), N, nodes)
+    return harmonics.piecewise_fourier(g, _switch_start(p), N, nodes)
 
 
 # ---------------------------------------------------------------------------------------------
