@@ -190,7 +190,7 @@ def load_change_model(spec: Spec, sd: statics.SpringDesign | None = None,
     Examples
     --------
     Example 3, case a, with the paper's model: it states ``k^2 = 360`` (Example 2's table) and
-    R = 300/43; the series spring of the spec gives 362 (the paper's slide rule).
+    R = 300/43; the spec's series spring gives 362, within 1 % of the paper's.
 
     >>> from govopt.examples import SPECS
     >>> from govopt.spec import load_spec

@@ -182,8 +182,8 @@ def nonlinear_load_change(spec: Spec, sd: statics.SpringDesign | None = None,
     Examples
     --------
     Example 3's unloading of case a, 57 deg 20' to 64 deg 40' (``specs/hamabe-a.toml``): the
-    paper prints xi0 = -0.128 rad, matched to rounding; after 3 s the pendulum is within
-    0.003 rad of its new configuration and has not passed it (no over-regulation, as the
+    paper prints xi0 = -0.128 rad, matched to rounding; after 3 s the pendulum is about
+    0.003 rad short of its new configuration and has not passed it (no over-regulation, as the
     paper finds).
 
     >>> from govopt.examples import SPECS

@@ -406,9 +406,9 @@ def transient(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t):
     --------
     Example 3, case a (a0 = 1.76, a1 = 24, a2 = 211.2, a3 = 840, xi0 = -0.128 rad, eta0 = -0.4
     rad/s, so ``xi''(0)`` = 18.716): the paper's curve ``0.0318 e^-29.1t - 0.0814 e^-1.7t -
-    0.0784 e^-10t`` gives -0.0372 at 0.5 s and -0.0164 at 1 s (its roots are from a slide-rule
-    G, see :func:`govopt.analysis.transient_cubic.cubic_roots`); never crossing zero: no
-    over-regulation, as the paper finds.
+    0.0784 e^-10t`` gives -0.0353 at 0.5 s and -0.0149 at 1 s: its slow root -1.7 comes from a
+    slide-rule G 3 % off (see :func:`govopt.analysis.transient_cubic.cubic_roots`; the exact
+    -1.61 decays more slowly). Neither crosses zero: no over-regulation, as the paper finds.
 
     >>> xi = transient(1.76, 24, 211.2, 840, -0.128, 0.0, 18.716, [0.5, 1.0])
     >>> [round(float(v), 4) for v in xi]

@@ -388,8 +388,8 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
 
     A hand-checkable lightly damped case: roots -50 and -0.1 +- 1i
     (``(s + 50)(s^2 + 0.2 s + 1.01)``) from rest at ``xi0 = 1``: the fast mode is spent at
-    once, so the far-side peak is about ``exp(-0.1 pi)`` = 0.7304 near t = pi (the fast mode
-    shifts it slightly).
+    once, so the far-side peak is about ``exp(-0.1 pi)`` = 0.7304 near t = pi (the damping and
+    the fast mode shift both slightly).
 
     >>> s = analyse_many(1.0, 50.2 / 3, 11.01 / 3, 50.5, 1.0, 0.0, 0.0)
     >>> round(float(s.over_regulation), 4), round(float(s.over_regulation_time), 3)
