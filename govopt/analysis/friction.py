@@ -108,6 +108,30 @@ def expm(A) -> np.ndarray:
     :func:`scipy.linalg.expm` to about 1e-14 relative (checked in the tests). Written out
     because scipy's ``expm`` calls its own LAPACK, whose threading costs milliseconds per 4x4
     matrix on a busy machine, and the stroke search evaluates thousands of them.
+
+    Parameters
+    ----------
+    A : array [-]
+        Square matrix or stack of them, shape (..., n, n), in the reciprocal unit of the time
+        it is scaled by (``M t`` is dimensionless).
+
+    Returns
+    -------
+    ndarray [-]
+        ``exp(A)``, the same shape.
+
+    References
+    ----------
+    Scaling and squaring (as :func:`scipy.linalg.expm`), the solution of the strokes of
+    [hamabe] eqs. (42)-(44); govopt's own code.
+
+    Examples
+    --------
+    A quarter turn: ``exp([[0, -pi/2], [pi/2, 0]])`` is the rotation by 90 degrees, by hand.
+
+    >>> E = expm(np.array([[0.0, -math.pi / 2], [math.pi / 2, 0.0]]))
+    >>> [[round(float(v), 12) + 0.0 for v in row] for row in E]
+    [[0.0, -1.0], [1.0, 0.0]]
     """
     A = np.asarray(A, dtype=float)
     eye = np.eye(A.shape[-1])
@@ -138,6 +162,40 @@ def slide_matrix(I, f, k2, C, R, M0=0.0, direction=0) -> np.ndarray:
 
     ``xi'' = (C eta - I k^2 xi - f xi' - direction M0) / I``, ``eta' = -R xi`` (eqs. 26, 42),
     so that ``z(t) = expm(M t) z(0)`` exactly.
+
+    Parameters
+    ----------
+    I : float [kg m^2]
+        Moment of inertia of the pendulum about its fulcrum (kg for a length coordinate).
+    f : float [N m s/rad]
+        Dash-pot coefficient (N s/m for a length coordinate); 0 is Hamabe's friction case.
+    k2 : float [1/s^2]
+        ``k^2`` at the new equilibrium.
+    C : float [N m s]
+        ``dM/domega`` at ``(alpha0, omega0)`` (N s for a length coordinate).
+    R : float [1/s^2]
+        ``-(dT/dalpha) / I_fw`` (eq. 27; 1/(m s^2) for a length coordinate).
+    M0 : float [N m]
+        Friction moment at the fulcrum (N for a length coordinate).
+    direction : int [-]
+        ``sign(xi')`` of the stroke: +1, -1 (0: no friction term).
+
+    Returns
+    -------
+    ndarray [1/s]
+        The 4x4 matrix.
+
+    References
+    ----------
+    [hamabe] eqs. (26), (42).
+
+    Examples
+    --------
+    By hand, ``I = 2, f = 4, k^2 = 9, C = 6, R = 0.5, M0 = 1`` on a rising stroke: the second
+    row is ``(-k^2, -f/I, C/I, -M0/I)``, the third ``(-R, 0, 0, 0)``.
+
+    >>> slide_matrix(2.0, 4.0, 9.0, 6.0, 0.5, 1.0, 1)[1:3].tolist()
+    [[-9.0, -2.0, 3.0, -0.5], [-0.5, 0.0, 0.0, 0.0]]
     """
     M = np.zeros((4, 4))
     M[0, 1] = 1.0
@@ -153,6 +211,57 @@ def linear_response(I, f, k2, C, R, xi0, eta0, t, xi_dot0=0.0) -> np.ndarray:
     """Frictionless response (eq. 28) on the state: array ``(len(t), 3)`` of ``(xi, xi', eta)``.
 
     Exact: ``expm(A t) x0`` for every ``t`` (no closed forms dividing by root differences).
+
+    Parameters
+    ----------
+    I : float [kg m^2]
+        Moment of inertia of the pendulum about its fulcrum (kg for a length coordinate).
+    f : float [N m s/rad]
+        Dash-pot coefficient (N s/m for a length coordinate); 0 is Hamabe's friction case.
+    k2 : float [1/s^2]
+        ``k^2`` at the new equilibrium.
+    C : float [N m s]
+        ``dM/domega`` at ``(alpha0, omega0)`` (N s for a length coordinate).
+    R : float [1/s^2]
+        ``-(dT/dalpha) / I_fw`` (eq. 27; 1/(m s^2) for a length coordinate).
+    xi0 : float [rad]
+        Initial deviation (m for a length coordinate).
+    eta0 : float [rad/s]
+        Initial speed error.
+    t : array [s]
+        Times.
+    xi_dot0 : float [rad/s]
+        Initial velocity of the pendulum.
+
+    Returns
+    -------
+    ndarray [rad, rad/s, rad/s]
+        Shape ``(len(t), 3)``: ``(xi, xi', eta)``.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (24), (26)-(28).
+
+    Examples
+    --------
+    Example 3, case a, with the paper's model and dash-pot (``f = 72 kgf cm s``): the same
+    ``xi`` as the cubic's response
+    (:func:`govopt.analysis.transient.transient`), the two methods agreeing to rounding.
+
+    >>> from govopt.analysis.transient import transient
+    >>> from govopt.analysis.transient_cubic import hamabe_initial_conditions
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> m = load_change_model(spec, dashpot=72 * 0.0980665)
+    >>> y = linear_response(m.I, m.f, m.k2, m.C, m.R, m.xi0, m.eta0, [0.5, 1.0])
+    >>> a0, a1, a2, a3 = m.cubic
+    >>> x = hamabe_initial_conditions(a0, a2, a3, m.R, m.xi0, m.eta0)
+    >>> bool(np.allclose(y[:, 0], transient(a0, a1, a2, a3, *x, [0.5, 1.0]), rtol=1e-12))
+    True
+    >>> [round(float(v), 4) for v in y[:, 0]]
+    [-0.0594, -0.0269]
     """
     t = np.atleast_1d(np.asarray(t, dtype=float))
     A = slide_matrix(I, f, k2, C, R)[:3, :3]
@@ -472,6 +581,60 @@ def friction_transient(I, f, k2, C, R, M0, xi0, eta0, t_end=None, max_strokes=50
     eigenvalues), after ``max_strokes`` strokes, when the pendulum is stuck exactly at
     ``xi = 0``, or once a stuck offset or a stroke's travel is below ``settle_tol * |xi0|``.
     ``f = 0`` is Hamabe's case (no dash-pot); ``M0 = 0`` gives the linear solution of eq. (28).
+
+    Parameters
+    ----------
+    I : float [kg m^2]
+        Moment of inertia of the pendulum about its fulcrum (kg for a length coordinate).
+    f : float [N m s/rad]
+        Dash-pot coefficient (N s/m for a length coordinate); 0 is Hamabe's friction case.
+    k2 : float [1/s^2]
+        ``k^2`` at the new equilibrium.
+    C : float [N m s]
+        ``dM/domega`` at ``(alpha0, omega0)`` (N s for a length coordinate).
+    R : float [1/s^2]
+        ``-(dT/dalpha) / I_fw`` (eq. 27; 1/(m s^2) for a length coordinate).
+    M0 : float [N m]
+        Friction moment at the fulcrum (N for a length coordinate).
+    xi0 : float [rad]
+        Initial deviation (m for a length coordinate).
+    eta0 : float [rad/s]
+        Initial speed error.
+    t_end : float [s], optional
+        Time horizon.
+    max_strokes : int [-]
+        Stroke budget (dimensionless count).
+    xi_dot0 : float [rad/s]
+        Initial velocity of the pendulum.
+    settle_tol : float [-]
+        Offset, relative to ``|xi0|``, below which the run counts as settled.
+
+    Returns
+    -------
+    FrictionResult [-]
+        The phases (stick, slide) and the criteria (over-regulation, hunting).
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (42)-(46).
+
+    Examples
+    --------
+    Hamabe's friction example, case d, with the paper's model and no dash-pot: with
+    ``M0 = 22.6 kgf cm`` the first stroke ends at -0.0286 rad, no over-regulation, as the
+    paper says; with 3 kgf cm (below the threshold of about 5.15 kgf cm found by bisection) it
+    overshoots to +0.018 rad.
+
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-d.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> for M0 in (22.6, 3.0):  # kgf cm
+    ...     m = load_change_model(spec, dashpot=0.0, friction_moment=M0 * 0.0980665)
+    ...     r = friction_transient(m.I, m.f, m.k2, m.C, m.R, m.M0, m.xi0, m.eta0)
+    ...     print(round(r.first_stroke_end, 4), r.over_regulation)
+    -0.0286 False
+    0.0182 True
     """
     I, f, k2, C, R, M0 = (float(x) for x in (I, f, k2, C, R, M0))
     xi, v, eta = float(xi0), float(xi_dot0), float(eta0)
@@ -556,6 +719,45 @@ def stroke_ratio(I, f, k2, C, R) -> float:
     between 0 and 1: the pendulum creeps in from one side by this ratio per stick-slip cycle
     (:attr:`FrictionResult.creep_ratio`). ``nan`` if the stroke never stops (monotonic
     approach within ``30 / min|lambda|``).
+
+    Parameters
+    ----------
+    I : float [kg m^2]
+        Moment of inertia of the pendulum about its fulcrum (kg for a length coordinate).
+    f : float [N m s/rad]
+        Dash-pot coefficient (N s/m for a length coordinate); 0 is Hamabe's friction case.
+    k2 : float [1/s^2]
+        ``k^2`` at the new equilibrium.
+    C : float [N m s]
+        ``dM/domega`` at ``(alpha0, omega0)`` (N s for a length coordinate).
+    R : float [1/s^2]
+        ``-(dT/dalpha) / I_fw`` (eq. 27; 1/(m s^2) for a length coordinate).
+
+    Returns
+    -------
+    float [-]
+        ``xi_end / xi_start``.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (42)-(46); the self-similar creep is govopt's own finding on them.
+
+    Examples
+    --------
+    Hamabe's friction example, case a: ``M0 = 22.6 kgf cm`` (2.216 N m), no dash-pot,
+    Example 3's unloading, with the paper's model. The paper finds no over-regulation; the
+    first stroke ends at -0.0803 rad, still short of the new equilibrium. The pendulum then
+    creeps in by a fixed ratio per stick-slip cycle, which does not depend on ``M0``: the
+    stroke ratio equals the creep ratio of the full run.
+
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> m = load_change_model(spec, dashpot=0.0, friction_moment=22.6 * 0.0980665)
+    >>> r = friction_load_change(spec, dashpot=0.0, friction_moment=22.6 * 0.0980665)
+    >>> round(stroke_ratio(m.I, m.f, m.k2, m.C, m.R), 4), round(r.creep_ratio, 4)
+    (0.6276, 0.6276)
     """
     r = friction_transient(I, f, k2, C, R, 0.0, 1.0, I * k2 / C, max_strokes=1,
                            settle_tol=0.0)
@@ -571,6 +773,44 @@ def friction_load_change(spec: Spec, sd: statics.SpringDesign | None = None,
     Coefficients from :func:`load_change_model`; ``M0`` is the design's ``friction_moment`` and
     ``f`` its dash-pot (0 when absent) unless given. ``kwargs`` go to
     :func:`friction_transient` (``t_end``, ``max_strokes``, ``settle_tol``).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor's spec, with its engine and load change(s).
+    sd : SpringDesign [-]
+        The spring and flying masses; default: the spec's design.
+    load_change : LoadChange [-]
+        The load change; default: the spec's first.
+    dashpot : float [N m s/rad]
+        Dash-pot coefficient (N s/m for a length coordinate).
+    friction_moment : float [N m]
+        Friction moment ``M0`` at the fulcrum (N for a length coordinate).
+    **kwargs : dict [-]
+        Passed to :func:`friction_transient`.
+
+    Returns
+    -------
+    FrictionResult [-]
+        As :func:`friction_transient`, with the type's units for its JSON.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (42)-(46).
+
+    Examples
+    --------
+    Hamabe's friction example, case a: ``M0 = 22.6 kgf cm`` (2.216 N m), no dash-pot,
+    Example 3's unloading, with the paper's model. The paper finds no over-regulation; the
+    first stroke ends at -0.0803 rad, still short of the new equilibrium.
+
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> r = friction_load_change(spec, dashpot=0.0, friction_moment=22.6 * 0.0980665)
+    >>> round(r.first_stroke_end, 4), r.over_regulation, r.hunting
+    (-0.0803, False, False)
     """
     m = load_change_model(spec, sd, load_change, dashpot=dashpot,
                           friction_moment=friction_moment)

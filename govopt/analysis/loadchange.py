@@ -27,13 +27,77 @@ def speed_lever(spec: Spec, alpha0, m, central=None):
     the lever through which a speed error moves the governor (Hamabe eq. 24 has
     ``m a rho sin(alpha0)``). When the valve gear's inertia reactions follow the local speed
     (``reaction_speed="local"``) they take ``C_i(alpha0)`` off it, which keeps eq. (28) the exact
-    linearisation of the full equations; with ``"mean"`` it is the paper's."""
+    linearisation of the full equations; with ``"mean"`` it is the paper's.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor's spec (its type, engine and load changes).
+    alpha0 : float or array [rad]
+        The new equilibrium (m for a length coordinate).
+    m : float [kg]
+        Mass of one flying mass (the pendulum).
+    central : float [kg], optional
+        Central (sleeve) load of a loaded type.
+
+    Returns
+    -------
+    float or ndarray [kg m^2]
+        ``jp - ci`` (kg m for a length coordinate).
+
+    References
+    ----------
+    [hamabe] eq. (24).
+
+    Examples
+    --------
+    Example 1, case a, with the paper's mean-speed reaction at Example 3's 64 deg 40': exactly
+    Hamabe's ``m a rho sin(alpha0)`` = 12 kg x 0.18 m x 0.12 m x sin(64 deg 40').
+
+    >>> import math
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> alpha0 = math.radians(64 + 40 / 60)
+    >>> round(float(speed_lever(spec, alpha0, 12.0)), 6)
+    0.234274
+    >>> round(12 * 0.18 * 0.12 * math.sin(alpha0), 6)
+    0.234274
+    """
     return statics.terms(spec, alpha0, m, central).lever
 
 
 def torque_ratio(spec: Spec, x0):
     """``R = -(dT/dx) / I_fw = -(dT/ds) s'(x0) / I_fw`` (Hamabe eq. 27), 1/s^2 per unit ``x``:
-    the engine's torque follows the regulating member's travel ``s(x)``."""
+    the engine's torque follows the regulating member's travel ``s(x)``.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor's spec (its type, engine and load changes).
+    x0 : float [rad]
+        Configuration at which the travel's slope ``s'(x0)`` is taken (m for a length).
+
+    Returns
+    -------
+    float [1/s^2]
+        ``R`` (1/(m s^2) for a length coordinate).
+
+    References
+    ----------
+    [hamabe] eq. (27).
+
+    Examples
+    --------
+    Example 3: ``dT/dalpha = -300 kgf m/rad``, ``I_fw = 43 kgf m s^2``, so the paper's
+    ``R = 300/43`` = 6.977 1/s^2 (the kgf cancels; the shaft governor's travel is its angle).
+
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> round(torque_ratio(load_spec(SPECS / "hamabe-a.toml"), 1.0), 4), round(300 / 43, 4)
+    (6.9767, 6.9767)
+    """
     eng = spec.engine
     return -eng.torque_slope * float(spec.governor.travel_slope(x0)) / eng.flywheel_inertia
 
@@ -99,6 +163,42 @@ def load_change_model(spec: Spec, sd: statics.SpringDesign | None = None,
     Hamabe's ``a3 / R``. ``R = -(dT/dalpha) / I_fw`` (eq. 27). Initial state: ``xi0 = alpha1 -
     alpha0`` and ``eta0 = omega1 (1 + eps) - omega0`` with the insensibility ``eps``. ``dashpot``
     and ``friction_moment`` default to the design's (0 when absent).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor's spec (its type, engine and load changes).
+    sd : SpringDesign [-]
+        The spring and flying masses; default: the spec's design.
+    load_change : LoadChange [-]
+        From ``alpha1`` to ``alpha0`` (rad, or m); default: the spec's first.
+    dashpot : float [N m s/rad]
+        Dash-pot coefficient ``f`` (N s/m for a length coordinate).
+    friction_moment : float [N m]
+        Friction moment ``M0`` at the fulcrum (N for a length coordinate).
+
+    Returns
+    -------
+    LoadChangeModel [-]
+        ``I`` [kg m^2], ``f``, ``k2`` [1/s^2], ``C`` [N m s], ``R`` [1/s^2], ``M0``, ``xi0``
+        [rad], ``eta0`` [rad/s] and the two equilibria (SI at the type's coordinate).
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (24)-(28), (42).
+
+    Examples
+    --------
+    Example 3, case a, with the paper's model: it states ``k^2 = 360`` (Example 2's table) and
+    R = 300/43; the spec's series spring gives 362, within 1 % of the paper's.
+
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> m = load_change_model(spec)
+    >>> round(m.k2), round(m.R, 3), round(m.xi0, 4)
+    (362, 6.977, -0.128)
     """
     if spec.engine is None:
         raise ValueError("a load change needs [engine] data")
@@ -133,6 +233,44 @@ def coefficients(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float)
     ``C = 2 omega0 m a rho sin(alpha0)`` (see :func:`speed_lever`) and ``R = -(dT/dalpha) / I_fw``
     (eq. 27); ``xi(0) = alpha1 - alpha0``, ``xi'(0) = 0``, ``a0 xi''(0) = (a3 / R) eta0 -
     3 a2 xi(0)`` with ``eta0 = omega1 (1 + eps) - omega0`` (Hamabe, Part III).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor's spec (its type, engine and load changes).
+    sd : SpringDesign [-]
+        The spring and flying masses (:func:`govopt.analysis.statics.spring_design`).
+    lc : LoadChange [-]
+        From ``alpha1`` to ``alpha0`` (rad or m, the type's coordinate).
+    f : float [N m s/rad]
+        Dash-pot coefficient (N s/m for a length coordinate), ``a1 = f/3``.
+
+    Returns
+    -------
+    tuple [-]
+        ``(a0, a1, a2, a3)`` [kg m^2 s^-i], ``(xi, xi', xi'')(0)`` [rad, rad/s, rad/s^2] and
+        ``k^2`` [1/s^2] (for a length coordinate, m and kg in place of rad and kg m^2).
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (27)-(28) and the initial conditions before eq. (38).
+
+    Examples
+    --------
+    Example 3, case a, with the paper's model and its dash-pot ``a1 = 24 kgf cm s``: in the
+    paper's kgf-cm-s units (1 kgf cm = 0.0980665 N m) it prints a0 = 1.76, a1 = 24,
+    a2 = a0 k^2 / 3 = 211.2 (k^2 = 360) and a3 = 840 (slide-rule values; the spec's
+    series spring gives k^2 = 362).
+
+    >>> from govopt.analysis import statics
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> sd = statics.spring_design(spec)
+    >>> a, x, k2 = coefficients(spec, sd, spec.load_changes[0], 3 * 24 * 0.0980665)
+    >>> [round(c / 0.0980665, 2) for c in a]
+    [1.76, 24.0, 212.74, 837.77]
     """
     model = load_change_model(spec, sd, lc, dashpot=f)
     a = model.cubic
@@ -142,7 +280,28 @@ def coefficients(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float)
 
 def coordinate_unit(gov) -> str:
     """The SI unit of a governor's configuration as JSON keys name it: ``"rad"`` for an
-    angle, ``"m"`` for a length (:meth:`govopt.governors.base.Governor.key_unit`)."""
+    angle, ``"m"`` for a length (:meth:`govopt.governors.base.Governor.key_unit`).
+
+    The unit of Hamabe's ``xi`` ([hamabe] Part III) generalised to the type's coordinate (the
+    ball governors' sleeve travel, [textbook-ch3]); a naming helper of govopt's own.
+
+    Parameters
+    ----------
+    gov : Governor [-]
+        A governor type (class or instance).
+
+    Returns
+    -------
+    str [-]
+        ``"rad"`` or ``"m"``.
+
+    Examples
+    --------
+    >>> from govopt.governors.porter import PorterGovernor
+    >>> from govopt.governors.shaft import ShaftGovernor
+    >>> coordinate_unit(ShaftGovernor), coordinate_unit(PorterGovernor)
+    ('rad', 'm')
+    """
     return gov.key_unit("x")
 
 
@@ -151,6 +310,24 @@ def coefficient_keys(gov) -> tuple[str, str, str, str]:
     the configuration (unit ``u``) and ``Q`` its generalised force (N m for an angle, N for a
     length), ``a0 xi''' + 3 a1 xi'' + 3 a2 xi' + a3 xi = 0`` is in ``Q/s``: ``a0 = I`` (kg m^2
     or kg), ``a1 = f/3`` in ``Q s/u``, ``a2 = I k^2/3`` in ``Q/u``, ``a3 = C R`` in ``Q/(u s)``.
+
+    Parameters
+    ----------
+    gov : Governor [-]
+        A governor type (class or instance).
+
+    Returns
+    -------
+    tuple of str [-]
+        The four keys.
+
+    References
+    ----------
+    [hamabe] Part III, eq. (28).
+
+    Examples
+    --------
+    The Porter governor's coordinate is the sleeve's travel (a length, [textbook-ch3]):
 
     >>> from govopt.governors.porter import PorterGovernor
     >>> coefficient_keys(PorterGovernor)
@@ -168,7 +345,46 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
     Every key names its SI unit, the configuration's ``u`` = ``rad`` (an angle) or ``m`` (a
     length) from the seam (:func:`coordinate_unit`): ``over_regulation_u``, ``initial_state``
     ``xi_u``, ``xi_dot_u_s``, ``xi_ddot_u_s2``, ``response`` ``xi_u``, and eq. (28)'s
-    coefficients (:func:`coefficient_keys`)."""
+    coefficients (:func:`coefficient_keys`).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor's spec (its type, engine and load changes).
+    sd : SpringDesign [-]
+        The spring and flying masses (:func:`govopt.analysis.statics.spring_design`).
+    lc : LoadChange [-]
+        From ``alpha1`` to ``alpha0`` (rad or m, the type's coordinate).
+    f : float [N m s/rad]
+        Dash-pot coefficient (N s/m for a length coordinate), ``a1 = f/3``.
+    samples : int [-]
+        Points of the response table (dimensionless count).
+
+    Returns
+    -------
+    dict [-]
+        JSON-ready; each key names its SI unit.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (28), (32), (37); [vyshnegradsky] for the diagram's point.
+
+    Examples
+    --------
+    Example 3, case a, with the paper's model and dash-pot: three real roots near the paper's
+    -29.1, -10, -1.7 (its coefficients are rounded and its slide-rule G is 3 % off, so its slow
+    roots are a few per cent off) and no over-regulation, as the paper finds.
+
+    >>> from govopt.analysis import statics
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> sd = statics.spring_design(spec)
+    >>> d = analyse(spec, sd, spec.load_changes[0], 3 * 24 * 0.0980665)
+    >>> d["kind"], [round(r, 1) for r, _ in d["roots_per_s"]], d["over_regulates"]
+    ('real', [-28.9, -10.4, -1.6], False)
+    """
     a, x, k2 = coefficients(spec, sd, lc, f)
     res = analyse_many(*a, *x, band=spec.analysis.settling_band)  # one design: scalars
     return summary(spec, lc, a, x, k2, res, samples)
@@ -177,7 +393,51 @@ def analyse(spec: Spec, sd: statics.SpringDesign, lc: LoadChange, f: float,
 def summary(spec: Spec, lc: LoadChange, a, x, k2: float, res, samples: int = 200) -> dict:
     """The dict of :func:`analyse` from one design's coefficients ``a`` (eq. 28), initial state
     ``x``, ``k^2`` and its :class:`~govopt.analysis.transient_events.TransientSummary` ``res``: the
-    numbers the evaluator computed (:mod:`govopt.evaluator`), with the response table."""
+    numbers the evaluator computed (:mod:`govopt.evaluator`), with the response table.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor's spec (its type, engine and load changes).
+    lc : LoadChange [-]
+        From ``alpha1`` to ``alpha0`` (rad or m, the type's coordinate).
+    a : tuple of float [kg m^2 s^-i]
+        ``(a0, a1, a2, a3)`` of eq. (28) (kg s^-i for a length coordinate).
+    x : tuple of float [rad, rad/s, rad/s^2]
+        Initial state ``(xi, xi', xi'')(0)`` (m for a length coordinate).
+    k2 : float [1/s^2]
+        ``k^2`` at the new equilibrium.
+    res : TransientSummary [-]
+        The transient's events (:func:`~govopt.analysis.transient_events.analyse_many`).
+    samples : int [-]
+        Points of the response table (dimensionless count).
+
+    Returns
+    -------
+    dict [-]
+        As :func:`analyse`.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (28), (32), (37).
+
+    Examples
+    --------
+    Example 3, case a, with the paper's coefficients (kgf-cm-s): the Hurwitz margin
+    ``9 a1 a2 / (a0 a3) - 1`` = 29.86 by hand, no over-regulation (as the paper finds).
+
+    >>> from govopt.analysis.transient_events import analyse_many
+    >>> from govopt.analysis.transient_cubic import hamabe_initial_conditions
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml")
+    >>> a = (1.76, 24.0, 211.2, 840.0)
+    >>> x = tuple(float(v) for v in hamabe_initial_conditions(1.76, 211.2, 840.0, 300 / 43,
+    ...                                                         -0.128, -0.4))
+    >>> d = summary(spec, spec.load_changes[0], a, x, 360.0, analyse_many(*a, *x))
+    >>> round(d["hurwitz_margin"], 2), d["over_regulates"], d["stable"]
+    (29.86, False, True)
+    """
     u = coordinate_unit(spec.governor)
     roots = np.asarray(res.roots, dtype=complex)
     slowest = float(np.min(np.abs(roots.real)))
@@ -232,6 +492,42 @@ def no_overregulation_window(spec: Spec, sd: statics.SpringDesign | None = None,
     and each end is bisected on the same rule to ``rtol`` relative (``f_hi = inf`` if the run
     reaches the scan's end).  For Hamabe's cases a and d with the paper's model the ends agree with
     a 50-digit reference to ~1e-9 (tests/test_overregulation.py).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor's spec (its type, engine and load changes).
+    sd : SpringDesign [-]
+        The spring and flying masses; default: the spec's design.
+    load_change : LoadChange [-]
+        The load change; default: the spec's first.
+    points : int [-]
+        Values of ``f`` scanned (dimensionless count).
+    rtol : float [-]
+        Relative accuracy of each end.
+
+    Returns
+    -------
+    tuple of float [N m s/rad] or None
+        ``(f_lo, f_hi)`` (N s/m for a length coordinate).
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (28), (32); the window is govopt's own construction on them.
+
+    Examples
+    --------
+    Example 3, case a, with the paper's model: its dash-pot ``f = 3 a1 = 72 kgf cm s``
+    (7.06 N m s) lies inside the window, as the paper's "no over-regulation" says; the lower
+    end lies above the Hurwitz bound ``a0 a3 / (3 a2)``.
+
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml").with_analysis(
+    ...     geometry="series", reaction_speed="mean", reaction_slope=False)
+    >>> lo, hi = no_overregulation_window(spec)
+    >>> round(lo, 3), round(hi, 2), bool(lo < 72 * 0.0980665 < hi)
+    (0.687, 12.38, True)
     """
     model = load_change_model(spec, sd, load_change)
     a0, _, a2, a3 = model.cubic

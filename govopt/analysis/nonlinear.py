@@ -59,6 +59,46 @@ def net_moment(spec: Spec, sd: statics.SpringDesign, alpha, omega, alpha_frozen=
 
     ``alpha_frozen``: evaluate the dead loads (the valve gear's reaction) there instead of at
     ``alpha`` (the paper's constant-reaction assumption).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft governor's (or any type's) spec, with its engine and load change(s).
+    sd : SpringDesign [-]
+        The spring and pendulum (:func:`govopt.analysis.statics.spring_design`).
+    alpha : float or array [rad]
+        Pendulum angle (the regulating member's coordinate for other types).
+    omega : float or array [rad/s]
+        Shaft speed.
+    alpha_frozen : float [rad], optional
+        Where the dead loads are taken instead of at ``alpha``.
+
+    Returns
+    -------
+    float or ndarray [N m]
+        Net moment on one pendulum (generalised force for other types).
+
+    References
+    ----------
+    [hamabe] eqs. (1), (2)/(3), (11), (12).
+
+    Examples
+    --------
+    Example 1, case a (``specs/hamabe-a.toml``) at Example 3's new equilibrium, 64 deg 40', and
+    its equilibrium speed from eq. (12): no net moment (to rounding); 1 % faster, the
+    centrifugal moment, which grows as ``omega^2``, wins.
+
+    >>> import math
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> spec = load_spec(SPECS / "hamabe-a.toml")
+    >>> sd = statics.spring_design(spec)
+    >>> alpha0 = math.radians(64 + 40 / 60)
+    >>> omega0 = math.sqrt(statics.omega_squared(spec, alpha0, sd.m, sd.kappa, sd.l0))
+    >>> abs(float(net_moment(spec, sd, alpha0, omega0))) < 1e-9
+    True
+    >>> round(float(net_moment(spec, sd, alpha0, 1.01 * omega0)), 2)
+    2.94
     """
     t = statics.terms(spec, alpha, sd.m, sd.central)
     dead = t if alpha_frozen is None else statics.terms(spec, alpha_frozen, sd.m, sd.central)
@@ -108,6 +148,49 @@ def nonlinear_load_change(spec: Spec, sd: statics.SpringDesign | None = None,
 
     ``t``: output times (default: 12 time constants of the slowest linear mode, 2001 points).
     ``dashpot`` defaults to the design's (0 when absent). Friction is not modelled here.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft governor's (or any type's) spec, with its engine and load change(s).
+    sd : SpringDesign [-]
+        The spring and pendulum (:func:`govopt.analysis.statics.spring_design`); default: the
+        spec's.
+    load_change : LoadChange [-]
+        From ``alpha1`` to ``alpha0`` (rad); default: the spec's first.
+    t : array [s]
+        Output times.
+    dashpot : float [N m s/rad]
+        Dash-pot coefficient ``f`` (generalised for other types).
+    method : str [-]
+        ``scipy.integrate.solve_ivp``'s method (dimensionless name).
+    rtol : float [-]
+        Relative tolerance of the integration.
+    atol : float [rad]
+        Absolute tolerance of the integration (of each state's own unit).
+
+    Returns
+    -------
+    NonlinearResult [-]
+        ``alpha`` [rad], ``alpha'`` [rad/s], ``omega`` [rad/s] at ``t`` [s].
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (23)-(28) before linearising, with eqs. (1), (2), (11), (12); the
+    nonlinear integration is govopt's own.
+
+    Examples
+    --------
+    Example 3's unloading of case a, 57 deg 20' to 64 deg 40' (``specs/hamabe-a.toml``): the
+    paper prints xi0 = -0.128 rad, matched to rounding; after 3 s the pendulum is about
+    0.003 rad short of its new configuration and has not passed it (no over-regulation, as the
+    paper finds).
+
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> r = nonlinear_load_change(load_spec(SPECS / "hamabe-a.toml"), t=np.linspace(0, 3, 301))
+    >>> round(float(r.xi[0]), 3), round(float(r.xi[-1]), 4), bool((r.xi < 0).all())
+    (-0.128, -0.003, True)
     """
     from scipy.integrate import solve_ivp  # imported when used (docs/decisions.md)
 
@@ -142,6 +225,41 @@ def linearisation_error(spec: Spec, sd: statics.SpringDesign | None = None,
     ``xi0``, the largest ``|xi_nonlinear - xi_linear|`` over ``t`` (absolute and relative to
     ``|xi0|``), the time it occurs, the largest speed error difference (absolute, and relative to
     the largest ``|eta|`` of the linear solution) and the nonlinear final state.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft governor's (or any type's) spec, with its engine and load change(s).
+    sd : SpringDesign [-]
+        The spring and pendulum (:func:`govopt.analysis.statics.spring_design`); default: the
+        spec's.
+    load_change : LoadChange [-]
+        From ``alpha1`` to ``alpha0`` (rad); default: the spec's first.
+    t : array [s]
+        Times compared.
+    **kwargs : dict [-]
+        Passed to :func:`nonlinear_load_change` (``dashpot`` [N m s/rad], tolerances).
+
+    Returns
+    -------
+    dict [-]
+        Keys named with their SI unit (``max_abs_error_rad``, ``t_max_error_s``, ...).
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (23)-(28) (the linearisation being checked).
+
+    Examples
+    --------
+    Example 3's unloading of case a, 7 deg 20' (``specs/hamabe-a.toml``, exact geometry and
+    the smooth valve-gear table): the linear model is within a quarter of a percent of
+    ``|xi0|`` over 3 s; the error is second order in the load change.
+
+    >>> from govopt.examples import SPECS
+    >>> from govopt.spec import load_spec
+    >>> e = linearisation_error(load_spec(SPECS / "hamabe-a.toml"), t=np.linspace(0, 3, 301))
+    >>> f"{e['max_rel_error']:.2g}", round(e["t_max_error_s"], 2)
+    ('0.0024', 0.09)
     """
     nl = nonlinear_load_change(spec, sd, load_change, t, **kwargs)
     m = nl.model

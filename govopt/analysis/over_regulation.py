@@ -43,6 +43,29 @@ def over_regulates(over_regulation_scaled, xi0):
     ``over_regulation_scaled > OVER_TOL |xi0|``, and where it is nan (not decided, e.g. a grid
     truncated before the dominance time): conservative.  ``xi0`` in rad.
 
+    Parameters
+    ----------
+    over_regulation_scaled : float or array [rad]
+        The scaled far-side excursion (see above); nan where undecided.
+    xi0 : float or array [rad]
+        Initial deviation from the new equilibrium, ``alpha1 - alpha0``.
+
+    Returns
+    -------
+    bool or ndarray of bool [-]
+        True where the load change over-regulates (or is undecided).
+
+    References
+    ----------
+    [hamabe] Part III, the definition of over-regulation; the tolerance is govopt's own.
+
+    Examples
+    --------
+    Example 3's unloading (xi0 = -0.128 rad): the tolerance is ``1e-9 * 0.128`` = 1.28e-10 rad,
+    so an excursion of 2e-10 rad counts, 0 does not; undecided counts (conservative).
+
+    >>> over_regulates(float("nan"), -0.128)
+    True
     >>> over_regulates(0.0, -0.128), over_regulates(2e-10, -0.128), over_regulates(1e-6, -0.128)
     (False, True, True)
     """

@@ -321,6 +321,41 @@ def transient_derivatives(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t, order=2):
     initial derivative sequence ``xi^(k)(0)`` continued by the recurrence of (28), so they are
     exact derivatives of the returned ``xi`` (not finite differences).  ``order`` may be any
     integer >= 0 (3 gives ``xi'''`` for checking the ODE).
+
+    Parameters
+    ----------
+    a0, a1, a2, a3 : float or array [kg m^2 s^-i]
+        Coefficients of eq. (28) (``a_i`` in kg m^2 s^-i in SI; any consistent set, the
+        paper's is kgf-cm-s), see :func:`govopt.analysis.transient_cubic.hamabe_coefficients`.
+    xi0 : float or array [rad]
+        Initial deviation from the new equilibrium.
+    xi_dot0 : float or array [rad/s]
+        Initial angular velocity of the pendulum (0 for a sudden load change).
+    xi_ddot0 : float or array [rad/s^2]
+        Initial angular acceleration (see
+        :func:`govopt.analysis.transient_cubic.hamabe_initial_conditions`).
+    t : array [s]
+        Times, 1-D.
+    order : int [-]
+        Highest derivative returned (dimensionless count).
+
+    Returns
+    -------
+    tuple of ndarray [rad/s^j]
+        ``xi^(j)(t)`` for ``j = 0 .. order``.
+
+    References
+    ----------
+    [hamabe] Part III, eq. (28); the Newton-form solution is govopt's own (module docstring).
+
+    Examples
+    --------
+    A triple root s = -1 with ``x0 = (1, 0, 0)``: ``xi = e^-t (1 + t + t^2/2)``, so by hand
+    ``xi(1) = 2.5/e`` and ``xi'(1) = -0.5/e``.
+
+    >>> xi, xd = transient_derivatives(1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, [1.0], order=1)
+    >>> round(float(xi[0]), 6), round(float(xd[0]), 6)
+    (0.919699, -0.18394)
     """
     t = np.atleast_1d(np.asarray(t, dtype=float))
     if t.ndim != 1:
@@ -343,6 +378,44 @@ def transient(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, t):
     its sign where it overflows binary64 (never nan).  Non-finite inputs or ``a0 = 0`` raise
     ValueError naming the argument.  Replaces Hamabe's closed forms (30)-(31) with (38)-(41).
 
+    Parameters
+    ----------
+    a0, a1, a2, a3 : float or array [kg m^2 s^-i]
+        Coefficients of eq. (28) (``a_i`` in kg m^2 s^-i in SI; any consistent set, the
+        paper's is kgf-cm-s), see :func:`govopt.analysis.transient_cubic.hamabe_coefficients`.
+    xi0 : float or array [rad]
+        Initial deviation from the new equilibrium.
+    xi_dot0 : float or array [rad/s]
+        Initial angular velocity of the pendulum (0 for a sudden load change).
+    xi_ddot0 : float or array [rad/s^2]
+        Initial angular acceleration (see
+        :func:`govopt.analysis.transient_cubic.hamabe_initial_conditions`).
+    t : array [s]
+        Times, 1-D.
+
+    Returns
+    -------
+    ndarray [rad]
+        ``xi(t)``, shape ``broadcast(inputs).shape + (len(t),)``.
+
+    References
+    ----------
+    [hamabe] Part III, eq. (28).
+
+    Examples
+    --------
+    Example 3, case a (a0 = 1.76, a1 = 24, a2 = 211.2, a3 = 840, xi0 = -0.128 rad, eta0 = -0.4
+    rad/s, so ``xi''(0)`` = 18.716): the paper's curve ``0.0318 e^-29.1t - 0.0814 e^-1.7t -
+    0.0784 e^-10t`` gives -0.0353 at 0.5 s and -0.0149 at 1 s: its slow root -1.7 comes from a
+    slide-rule G 3 % off (see :func:`govopt.analysis.transient_cubic.cubic_roots`; the exact
+    -1.61 decays more slowly). Neither crosses zero: no over-regulation, as the paper finds.
+
+    >>> xi = transient(1.76, 24, 211.2, 840, -0.128, 0.0, 18.716, [0.5, 1.0])
+    >>> [round(float(v), 4) for v in xi]
+    [-0.037, -0.0163]
+
+    A triple root (hand-checkable: ``e^-t (1 + t + t^2/2)``), and a growing design:
+
     >>> xi = transient(1.0, 1.0, 1.0, 1.0, 1.0, 0.0, 0.0, [0.0, 1.0])   # triple root s = -1
     >>> np.allclose(xi, [1.0, 2.5 * np.exp(-1.0)])
     True
@@ -357,7 +430,35 @@ def modal_amplitudes(l, d):
     """Modal amplitudes ``c_k`` of ``xi(t) = sum_k c_k exp(l_k t)`` for distinct roots ``l``
     (n, 3) and initial state ``d`` (n, >= 3): ``c_k = ((A - l_i)(A - l_j) x0)_0 / ((l_k - l_i)
     (l_k - l_j))`` (partial fractions of eq. (28); Hamabe's constants (38), (40) restated).
-    Complex (n, 3); inf or nan where roots coincide (callers test separation first)."""
+    Complex (n, 3); inf or nan where roots coincide (callers test separation first).
+
+    Parameters
+    ----------
+    l : ndarray [1/s]
+        Distinct roots of the cubic (29), shape (n, 3).
+    d : ndarray [rad/s^k]
+        Initial derivatives ``xi^(k)(0)``, k = 0, 1, 2, ..., shape (n, >= 3).
+
+    Returns
+    -------
+    ndarray [rad]
+        Complex amplitudes, shape (n, 3), in the order of ``l``.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (38), (40) (the constants of the real and complex cases).
+
+    Examples
+    --------
+    Example 3, case a: the paper prints 0.0318 (at -29.1), -0.0784 (at -10) and -0.0814 (at
+    -1.7); ours solve the exact cubic, whose roots differ from the paper's slide-rule ones.
+
+    >>> from govopt.analysis.transient_cubic import cubic_roots
+    >>> l = cubic_roots(1.76, 24, 211.2, 840)[None, :]
+    >>> c = modal_amplitudes(l, np.array([[-0.128, 0.0, 18.716]]))[0]
+    >>> [round(float(v.real), 4) for v in c]
+    [0.032, -0.0784, -0.0816]
+    """
     c = np.empty(l.shape, complex)
     for k, (i, j) in enumerate(((1, 2), (0, 2), (0, 1))):
         li, lj, lk = l[:, i], l[:, j], l[:, k]
@@ -371,6 +472,37 @@ def refine(resp, j, target, lo, hi, iters=100):
     Newton).  A Newton step is taken only if it stays inside the bracket and at least halves
     the step before last; otherwise the bracket is bisected.  Rows stop when the step is at
     rounding level (|dt| <= 4 eps t) or the residual is exactly zero.
+
+    Parameters
+    ----------
+    resp : Response [-]
+        Prepared responses (see :meth:`Response.build`), one per row.
+    j : int [-]
+        Derivative order whose value is sought (0: ``xi``, 1: ``xi'``).
+    target : float or array [rad/s^j]
+        Value sought, per row or common.
+    lo, hi : ndarray [s]
+        Brackets, one per row.
+    iters : int [-]
+        Iterations at most (dimensionless count).
+
+    Returns
+    -------
+    ndarray [s]
+        The times found.
+
+    References
+    ----------
+    Numerical Recipes' ``rtsafe`` on the response of [hamabe] eq. (28) (govopt's own use).
+
+    Examples
+    --------
+    ``a0 = 1, a2 = 1/3, a1 = a3 = 0`` with ``x0 = (0, 1, 0)`` is ``xi = sin t``: its zero in
+    [2, 4] is pi.
+
+    >>> resp, _ = Response.build(1.0, 0.0, 1 / 3, 0.0, 0.0, 1.0, 0.0, order=2)
+    >>> round(float(refine(resp, 0, 0.0, np.array([2.0]), np.array([4.0]))[0]), 12)
+    3.14159265359
     """
     target = np.broadcast_to(np.asarray(target, float), lo.shape)
     lo, hi = lo.astype(float).copy(), hi.astype(float).copy()
@@ -414,7 +546,28 @@ def refine(resp, j, target, lo, hi, iters=100):
 
 def local_max(v):
     """Interior grid local maxima of the rows of v (>= left neighbour, > right neighbour), as
-    index arrays (rows, columns) in row-major order."""
+    index arrays (rows, columns) in row-major order.
+
+    A grid helper of govopt's own for the events of [hamabe] eq. (28) (peaks of ``|xi|``).
+
+    Parameters
+    ----------
+    v : ndarray [-]
+        Values on a grid, shape (n, M), any unit.
+
+    Returns
+    -------
+    tuple of ndarray [-]
+        Row and column indices of the maxima.
+
+    Examples
+    --------
+    A plateau counts at its right end:
+
+    >>> r, k = local_max(np.array([[0, 2, 1, 3, 3, 0.0]]))
+    >>> r.tolist(), k.tolist()
+    ([0, 0], [1, 4])
+    """
     with np.errstate(invalid="ignore"):
         r, k = np.nonzero((v[:, 1:-1] >= v[:, :-2]) & (v[:, 1:-1] > v[:, 2:]))
     return r, k + 1
@@ -424,6 +577,35 @@ def refine_peaks(resp, t, xd, r, k):
     """Exact extrema next to grid points (r, k) (zeros of xi' in [t_k-1, t_k] or [t_k, t_k+1]).
 
     Returns the rows, grid indices, times and xi values of those with a bracket.
+
+    govopt's own event location on the response of [hamabe] eq. (28).
+
+    Parameters
+    ----------
+    resp : Response [-]
+        Prepared responses (see :meth:`Response.build`), one per row.
+    t : ndarray [s]
+        Grid times, shape (n, M).
+    xd : ndarray [rad/s]
+        ``xi'`` on the grid, shape (n, M).
+    r, k : ndarray [-]
+        Rows and grid indices of candidate peaks (e.g. from :func:`local_max`).
+
+    Returns
+    -------
+    tuple of ndarray [-, -, s, rad]
+        Rows, grid indices, times and ``xi`` values of the extrema found.
+
+    Examples
+    --------
+    ``xi = sin t`` (see :func:`refine`) on a grid of 0.5 s: the peak at pi/2, value 1.
+
+    >>> resp, _ = Response.build(1.0, 0.0, 1 / 3, 0.0, 0.0, 1.0, 0.0, order=2)
+    >>> t = np.linspace(0.0, 3.0, 7)[None, :]
+    >>> y = resp(t, nder=1)
+    >>> r, k, te, xe = refine_peaks(resp, t, y[:, 1], *local_max(y[:, 0]))
+    >>> round(float(te[0]), 10), round(float(xe[0]), 10)
+    (1.5707963268, 1.0)
     """
     left = np.sign(xd[r, k - 1]) != np.sign(xd[r, k])
     right = np.sign(xd[r, k]) != np.sign(xd[r, k + 1])

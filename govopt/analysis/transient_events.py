@@ -208,6 +208,33 @@ def grid_values(resp, t):
     grid sign can differ from the Newton form's only where ``|xi|`` is that close to 0 (a lobe
     grazing zero at a grid point; the figure found is then rounding either way).  Other rows use the
     Newton form, bit for bit.
+
+    Parameters
+    ----------
+    resp : Response [-]
+        Prepared responses (:meth:`govopt.analysis.transient.Response.build`), one per row.
+    t : ndarray [s]
+        Grid times, shape (n, T) (or broadcastable to it).
+
+    Returns
+    -------
+    ndarray [rad, rad/s]
+        Shape (n, 2, T): ``xi`` and ``xi'`` (m, m/s for a length coordinate).
+
+    References
+    ----------
+    [hamabe] Part III, eq. (28) and the constants of eqs. (38), (40) (the modal sum).
+
+    Examples
+    --------
+    At ``t = 0`` the grid gives back the initial state (Example 3, case a, paper's
+    coefficients, kgf-cm-s).
+
+    >>> from govopt.analysis.transient import Response
+    >>> resp, _ = Response.build(1.76, 24, 211.2, 840, -0.128, 0.0, 18.716, order=2)
+    >>> y = grid_values(resp, np.array([[0.0, 0.5]]))
+    >>> [round(float(v), 4) for v in y[0, :, 0]], round(float(y[0, 0, 1]), 4)
+    ([-0.128, 0.0], -0.037)
     """
     n, T = resp.n, t.shape[-1]
     t = np.broadcast_to(t, (n, T))
@@ -316,6 +343,57 @@ def analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, band=0.02, horizon=None
     settling comes from the modes' envelope (:func:`~govopt.analysis.settling.envelope_settling`).
     Returns a :class:`TransientSummary`; raises ValueError for non-finite inputs or ``a0 = 0`` (nan
     events only where the roots themselves overflow).
+
+    Parameters
+    ----------
+    a0, a1, a2, a3 : float or array [kg m^2 s^-i]
+        Coefficients of eq. (28) (``a_i`` in kg m^2 s^-i in SI; any consistent set, the
+        paper's is kgf-cm-s), broadcast against each other and the initial state.
+    xi0 : float or array [rad]
+        Initial deviation from the new equilibrium (m for a length coordinate).
+    xi_dot0 : float or array [rad/s]
+        Initial velocity (0 for a sudden load change).
+    xi_ddot0 : float or array [rad/s^2]
+        Initial acceleration
+        (:func:`~govopt.analysis.transient_cubic.hamabe_initial_conditions`).
+    band : float [-]
+        Settling band, relative to ``|xi0|``.
+    horizon : float or array [s], optional
+        Time up to which events are sought (default: from the roots, see above).
+    n_log : int [-]
+        Log-spaced grid points (dimensionless count).
+    per_period : int [-]
+        Uniform grid points per period of the fastest oscillation.
+    max_points : int [-]
+        Cap on a design's uniform grid.
+
+    Returns
+    -------
+    TransientSummary [-]
+        Roots [1/s], kind, stability, Hurwitz margin [-], over-regulation [rad], first arrival,
+        settling and horizon [s], per design.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (28), (32), (37); [hurwitz].
+
+    Examples
+    --------
+    Example 3, case a (the paper's coefficients, kgf-cm-s) with its dash-pot a1 = 24 and with
+    a1 = 15: three real roots, then a complex pair; neither over-regulates, as the paper finds.
+
+    >>> s = analyse_many(1.76, [24, 15], 211.2, 840, -0.128, 0.0, 18.716)
+    >>> s.kind.tolist(), s.over_regulation.tolist(), s.first_arrival_time.tolist()
+    (['real', 'complex'], [0.0, 0.0], [inf, inf])
+
+    A hand-checkable lightly damped case: roots -50 and -0.1 +- 1i
+    (``(s + 50)(s^2 + 0.2 s + 1.01)``) from rest at ``xi0 = 1``: the fast mode is spent at
+    once, so the far-side peak is about ``exp(-0.1 pi)`` = 0.7304 near t = pi (the damping and
+    the fast mode shift both slightly).
+
+    >>> s = analyse_many(1.0, 50.2 / 3, 11.01 / 3, 50.5, 1.0, 0.0, 0.0)
+    >>> round(float(s.over_regulation), 4), round(float(s.over_regulation_time), 3)
+    (0.7303, 3.162)
     """
     if not band > 0:
         raise ValueError("band must be positive")
@@ -463,5 +541,39 @@ def over_regulation_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, horizon=None):
     exponentially small: decide over-regulation with
     :func:`~govopt.analysis.over_regulation.over_regulates` on
     ``analyse_many(...).over_regulation_scaled``.
+
+    Parameters
+    ----------
+    a0, a1, a2, a3 : float or array [kg m^2 s^-i]
+        Coefficients of eq. (28) (``a_i`` in kg m^2 s^-i in SI; any consistent set, the
+        paper's is kgf-cm-s), broadcast against each other and the initial state.
+    xi0 : float or array [rad]
+        Initial deviation from the new equilibrium (m for a length coordinate).
+    xi_dot0 : float or array [rad/s]
+        Initial velocity (0 for a sudden load change).
+    xi_ddot0 : float or array [rad/s^2]
+        Initial acceleration
+        (:func:`~govopt.analysis.transient_cubic.hamabe_initial_conditions`).
+    horizon : float or array [s], optional
+        As :func:`analyse_many`'s.
+
+    Returns
+    -------
+    ndarray [rad]
+        The largest far-side excursion (m for a length coordinate), 0.0 if none.
+
+    References
+    ----------
+    [hamabe] Part III, the definition of over-regulation.
+
+    Examples
+    --------
+    Example 3, case a (paper's coefficients, none, as the paper finds) beside the lightly damped
+    case of :func:`analyse_many` (the far-side peak about ``exp(-0.1 pi)``):
+
+    >>> o = over_regulation_many([1.76, 1.0], [24, 50.2 / 3], [211.2, 11.01 / 3], [840, 50.5],
+    ...                          [-0.128, 1.0], 0.0, [18.716, 0.0])
+    >>> [round(float(v), 4) for v in o]
+    [0.0, 0.7303]
     """
     return analyse_many(a0, a1, a2, a3, xi0, xi_dot0, xi_ddot0, horizon=horizon).over_regulation
