@@ -129,15 +129,19 @@ class Proc:
         return frozenset(json.loads(self.files["modules"].read_text()))
 
 
+#: what every command's start loads: units, the CLI's option conversion (typer's, through
+#: pydantic), the terminal's tables, and the shaft governor's scipy numerics (its valve table)
+COMMON = ("numpy", "pint", "pydantic", "typer", "rich.console", "rich.table",
+          "scipy.interpolate", "govopt.units:ureg")
 #: what ``govopt study`` loads
-STUDY = ("numpy", "pandas", "govopt.cli", "govopt.study", "govopt.commands.study")
+STUDY = (*COMMON, "pandas", "govopt.cli", "govopt.study", "govopt.commands.study")
 #: what every command loads, for :func:`run`'s shared server
-EVERY = ("numpy", "numpy.fft", "numpy.ma", "numpy.polynomial", "pint", "openpyxl",
+EVERY = (*COMMON, "numpy.fft", "numpy.ma", "numpy.polynomial", "openpyxl",
          "xml.sax.saxutils", "tomlkit", "pandas", "govopt.commands.common",
          "govopt.commands.evaluate", "govopt.commands.spring", "govopt.commands.study",
          "govopt.spec", "govopt.fidelity", "govopt.evaluator", "govopt.optimize.search",
          "govopt.report.text", "govopt.report.files", "govopt.report.excel", "govopt.study",
-         "govopt.spring_command", "govopt.units:ureg")
+         "govopt.spring_command", "govopt.made", "govopt.made_words")
 
 
 class Server:

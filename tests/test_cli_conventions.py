@@ -55,10 +55,10 @@ def test_evaluate_exit_codes(tmp_path):
     """0: every check passed; 1: the report is printed and some check failed (named on
     stderr); 2: bad input (one line). Each a process of its own, forked from one interpreter
     that loaded `govopt evaluate`'s modules once."""
-    from forkcli import Server
+    from forkcli import COMMON, Server
 
-    with Server(("numpy", "govopt.cli", "govopt.commands.evaluate", "govopt.evaluator",
-                 "govopt.units:ureg"), cwd=tmp_path) as server:
+    with Server((*COMMON, "govopt.cli", "govopt.commands.evaluate", "govopt.evaluator"),
+                cwd=tmp_path) as server:
         p = server.run("evaluate", SPECS / "hamabe-b.toml")
         assert p.returncode == 0, p.stderr
         assert "FAIL" not in p.stdout and p.stderr == ""
