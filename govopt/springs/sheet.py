@@ -34,6 +34,18 @@ def record_json(record: Mapping) -> dict:
     (written under its :attr:`~govopt.verdict.Figure.key`, which names its unit), a record (a
     section, under its key) or plain data (words, counts, lists: under its key, as it is).
 
+    Parameters
+    ----------
+    record : Mapping [SI]
+        Figures (each carrying its SI unit), records and plain data by key.
+
+    Returns
+    -------
+    dict [SI]
+        The same nesting, each figure's key naming its unit (``rate_N_per_m``).
+
+    Examples
+    --------
     >>> record_json({"rate": Figure("rate", 2e4, "N/m"), "grade": "SH", "x": {"n": 3}})
     {'rate_N_per_m': 20000.0, 'grade': 'SH', 'x': {'n': 3}}
     """
@@ -53,6 +65,20 @@ def record_rows(record: Mapping, depth: int = 0) -> Iterator[tuple[int, str, Any
     unit from its fields, a section's title (value :data:`SECTION`) and a plain entry's key in
     words (no unit).
 
+    Parameters
+    ----------
+    record : Mapping [SI]
+        Figures (each carrying its SI unit), records and plain data by key.
+    depth : int [-]
+        Nesting depth of ``record`` (dimensionless count).
+
+    Yields
+    ------
+    tuple [SI]
+        ``(depth, label, value, unit)``, the value in the figure's SI unit.
+
+    Examples
+    --------
     >>> list(record_rows({"rate": Figure("rate", 2e4, "N/m"), "loads": {"life_cycles": 7}}))[1:]
     [(0, 'loads', <SECTION>, ''), (1, 'life cycles', 7, '')]
     """
