@@ -276,7 +276,8 @@ def en13906_stroke_limit(tau_k_lower, d, diagram):
 
     Examples
     --------
-    Grade DH, not shot peened, d = 3 mm: ``tau_O = 422.5``, ``tau_max = 922.4`` MPa, the knee at
+    Grade DH, not shot peened, d = 3 mm, on the standard's diagram as digitised in SpringONE
+    (the diagram's ``source``): ``tau_O = 422.5``, ``tau_max = 922.4`` MPa, the knee at
     ``tau_U = 678.4`` MPa. At zero lower stress the stroke is ``tau_O``; at 300 MPa it is
     ``422.5 + (922.4 - 422.5) / 678.4 * 300 - 300 = 343.6``; beyond the knee, at 900 MPa,
     ``922.4 - 900 = 22.4`` (checked by hand).
