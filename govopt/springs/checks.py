@@ -124,11 +124,8 @@ def prepare(kind: str, **kw) -> dict:
 
     Examples
     --------
-    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
-    21 active coils, squared and ground, cycled between 5 and 35 lbf. The book prints
-    C = 5.11, k = 48.1 lbf/in and (Gerber) n_f = 1.21; the wire's Zimmerli data are held in SI
-    (241 / 379 MPa, 0.13 % / 0.06 % below 35 / 55 kpsi) and its tensile strength from the SI
-    constant of Table 10-4 (0.19 % below the US one), which gives 1.20.
+    The spring of Shigley's Example 10-4 (its data and what the book prints: :func:`checks`);
+    the book prints C = 5.11 and k = 48.1 lbf/in:
 
     >>> from govopt.springs.materials import material
     >>> inch, lbf = 0.0254, 4.4482216152605
@@ -363,11 +360,7 @@ def rows_over(kind: str, only=None, **kw) -> list[tuple[Row, np.ndarray, np.ndar
 
     Examples
     --------
-    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
-    21 active coils, squared and ground, cycled between 5 and 35 lbf. The book prints
-    C = 5.11, k = 48.1 lbf/in and (Gerber) n_f = 1.21; the wire's Zimmerli data are held in SI
-    (241 / 379 MPa, 0.13 % / 0.06 % below 35 / 55 kpsi) and its tensile strength from the SI
-    constant of Table 10-4 (0.19 % below the US one), which gives 1.20.
+    The spring of Shigley's Example 10-4 (its data and what the book prints: :func:`checks`):
 
     >>> from govopt.springs.materials import material
     >>> inch, lbf = 0.0254, 4.4482216152605
@@ -409,11 +402,7 @@ def evaluate(kind: str, only=None, **kw) -> dict[str, tuple[np.ndarray, np.ndarr
 
     Examples
     --------
-    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
-    21 active coils, squared and ground, cycled between 5 and 35 lbf. The book prints
-    C = 5.11, k = 48.1 lbf/in and (Gerber) n_f = 1.21; the wire's Zimmerli data are held in SI
-    (241 / 379 MPa, 0.13 % / 0.06 % below 35 / 55 kpsi) and its tensile strength from the SI
-    constant of Table 10-4 (0.19 % below the US one), which gives 1.20.
+    The spring of Shigley's Example 10-4 (its data and what the book prints: :func:`checks`):
 
     >>> from govopt.springs.materials import material
     >>> inch, lbf = 0.0254, 4.4482216152605
@@ -452,11 +441,7 @@ def feasible(kind: str, only=None, **kw) -> np.ndarray:
 
     Examples
     --------
-    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
-    21 active coils, squared and ground, cycled between 5 and 35 lbf. The book prints
-    C = 5.11, k = 48.1 lbf/in and (Gerber) n_f = 1.21; the wire's Zimmerli data are held in SI
-    (241 / 379 MPa, 0.13 % / 0.06 % below 35 / 55 kpsi) and its tensile strength from the SI
-    constant of Table 10-4 (0.19 % below the US one), which gives 1.20.
+    The spring of Shigley's Example 10-4 (its data and what the book prints: :func:`checks`):
 
     >>> from govopt.springs.materials import material
     >>> inch, lbf = 0.0254, 4.4482216152605
