@@ -11,7 +11,8 @@
   (Shigley) and the EN 13906-1 Goodman diagrams (shot-peened or not).
 - :mod:`.tolerances` EN 15800 grades 1-3: coil diameter, force and free-length tolerances and the
   resulting spread of the rate from wire and coil tolerances.
-- :mod:`.checks`     every check as a :class:`govopt.result.Check` (value, limit, margin, source).
+- :mod:`.checks`     every check as a :class:`govopt.verdict.Check` (value, limit, margin, source).
+- :mod:`.assessment` one spring assessed: every figure and check of ``govopt spring``.
 - :mod:`.sheet`      :class:`SpringSheet`, the specification an engineer sends to a spring maker.
 - :mod:`.leaf`       leaf springs (width, thickness, length; hinged or clamped) and their table.
 

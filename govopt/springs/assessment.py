@@ -83,6 +83,31 @@ def extension_free_length(d, D, body_coils, loops: str):
     (EN 13906-2; Shigley section 10-11) and each loop ``L_H`` the multiple of the inside
     diameter ``D - d`` that :data:`~govopt.springs.helical.HOOKS` gives.
 
+    Parameters
+    ----------
+    d : float [m]
+        Wire diameter.
+    D : float [m]
+        Mean coil diameter.
+    body_coils : float [-]
+        Body coils ``n_b``.
+    loops : str [-]
+        A key of :data:`~govopt.springs.helical.HOOKS` (e.g. ``"full_loop"``).
+
+    Returns
+    -------
+    float [m]
+        Free length inside the loops.
+
+    References
+    ----------
+    [en13906-2] body length and loop lengths; [shigley] 9th ed. §10-11.
+
+    Examples
+    --------
+    Checked by hand: d = 2 mm, D = 16 mm, 10 body coils, full loops (``L_H = D - d``): body
+    ``11 * 2 = 22`` mm and two loops of 14 mm.
+
     >>> round(float(extension_free_length(2e-3, 16e-3, 10, "full_loop")) * 1e3, 6)  # 22 + 28
     50.0
     """
@@ -170,7 +195,46 @@ def _point(name: str, length: float, force: float, deflection: float, d: float, 
 
 def table_keywords(spring: Spring, mat: Material, loads: Loads, rules: Rules) -> dict:
     """The table's keywords (:mod:`govopt.springs.checks`) for the spring and its working
-    forces."""
+    forces.
+
+    Parameters
+    ----------
+    spring : Spring [m, N]
+        The spring as drawn, SI (lengths in m, initial tension in N).
+    mat : Material [-]
+        The wire grade (:func:`govopt.springs.materials.material`) or a stand-in.
+    loads : Loads [N]
+        The working forces and the load cycle.
+    rules : Rules [-]
+        The standard's choices.
+
+    Returns
+    -------
+    dict [SI: m, N, Pa]
+        The keywords of :func:`govopt.springs.checks.checks`.
+
+    References
+    ----------
+    [en13906-1], [en13906-2] (the figures and checks, each with its own clause as its source);
+    [shigley] 9th ed. ch. 10 where the standards say nothing; [en15800] the tolerances.
+
+    Examples
+    --------
+    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
+    21 active coils, squared and ground (2 end coils), cycled between 5 and 35 lbf.
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> spring = Spring("compression", 0.092 * inch, (9 / 16 - 0.092) * inch, 21, 2,
+    ...                 4.375 * inch, "closed_ground")
+    >>> loads = Loads(5 * lbf, 35 * lbf, cycle=(5 * lbf, 35 * lbf))
+
+    The total coils are the active ones and the end coils, 21 + 2:
+
+    >>> kw = table_keywords(spring, material("Shigley A228"), loads, Rules(method="Shigley"))
+    >>> kw["n_t"], round(kw["F2"] / lbf, 6), kw["ends"]
+    (23, 35.0, 'closed_ground')
+    """
     kw = dict(mat=mat, d=spring.d, D=spring.D, F1=loads.F1, F2=loads.F2, method=rules.method,
               allowable=rules.allowable, correction=rules.correction, peened=rules.peened,
               cycles=rules.cycles, index_min=rules.index[0], index_max=rules.index[1],
@@ -187,7 +251,48 @@ def table(spring: Spring, mat: Material, loads: Loads, rules: Rules
            ) -> tuple[list[Check], list[str]]:
     """The spring kind's checks at the working forces, the fatigue rows at the load cycle;
     rows whose value or limit the material cannot give (no R_m without a grade) left out and
-    named."""
+    named.
+
+    Parameters
+    ----------
+    spring : Spring [m, N]
+        The spring as drawn, SI (lengths in m, initial tension in N).
+    mat : Material [-]
+        The wire grade (:func:`govopt.springs.materials.material`) or a stand-in.
+    loads : Loads [N]
+        The working forces and the load cycle.
+    rules : Rules [-]
+        The standard's choices.
+
+    Returns
+    -------
+    tuple of (list of Check, list of str) [-]
+        The checks (each in its row's unit) and the names of the rows left out.
+
+    References
+    ----------
+    [en13906-1], [en13906-2] (the figures and checks, each with its own clause as its source);
+    [shigley] 9th ed. ch. 10 where the standards say nothing; [en15800] the tolerances.
+
+    Examples
+    --------
+    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
+    21 active coils, squared and ground (2 end coils), cycled between 5 and 35 lbf.
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> spring = Spring("compression", 0.092 * inch, (9 / 16 - 0.092) * inch, 21, 2,
+    ...                 4.375 * inch, "closed_ground")
+    >>> loads = Loads(5 * lbf, 35 * lbf, cycle=(5 * lbf, 35 * lbf))
+
+    The book checks neither the solid length nor buckling; EN 13906-1's rules find the spring
+    overstressed when closed solid and, unguided with fixed ends, buckling before its
+    working deflection:
+
+    >>> rows, left_out = table(spring, material("Shigley A228"), loads, Rules(method="Shigley"))
+    >>> [c.name for c in rows if not c.passed], left_out
+    (['shear stress at solid length', 'deflection / buckling deflection'], [])
+    """
     kw = table_keywords(spring, mat, loads, rules)
     rows = [c for c in ck.checks(spring.kind, **kw) if "fatigue" not in c.name]
     if loads.cycle is not None:
@@ -198,7 +303,50 @@ def table(spring: Spring, mat: Material, loads: Loads, rules: Rules
 
 
 def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) -> Assessment:
-    """Every figure and check of ``spring`` (module docstring)."""
+    """Every figure and check of ``spring`` (module docstring).
+
+    Parameters
+    ----------
+    spring : Spring [m, N]
+        The spring as drawn, SI (lengths in m, initial tension in N).
+    mat : Material [-]
+        The wire grade (:func:`govopt.springs.materials.material`) or a stand-in.
+    loads : Loads [N]
+        The working forces and the load cycle.
+    rules : Rules [-]
+        The standard's choices.
+
+    Returns
+    -------
+    Assessment [SI]
+        The sections of figures (each a :class:`~govopt.verdict.Figure` with its SI unit), the
+        working points, the checks and the load cycle's life (cycles).
+
+    References
+    ----------
+    [en13906-1], [en13906-2] (the figures and checks, each with its own clause as its source);
+    [shigley] 9th ed. ch. 10 where the standards say nothing; [en15800] the tolerances.
+
+    Examples
+    --------
+    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
+    21 active coils, squared and ground (2 end coils), cycled between 5 and 35 lbf.
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> spring = Spring("compression", 0.092 * inch, (9 / 16 - 0.092) * inch, 21, 2,
+    ...                 4.375 * inch, "closed_ground")
+    >>> loads = Loads(5 * lbf, 35 * lbf, cycle=(5 * lbf, 35 * lbf))
+
+    The book prints k = 48.1 lbf/in, f_n = 281 Hz (from k and W rounded; unrounded 281.5) and
+    (Goodman, the default line here) n_f = 1.23:
+
+    >>> a = assess(spring, material("Shigley A228"), loads, Rules(method="Shigley"))
+    >>> round(a.value("rate") / (lbf / inch), 1), round(a.value("surge frequency"), 1)
+    (48.1, 281.5)
+    >>> round(a.sections["fatigue"]["safety factor"].value, 2), a.life
+    (1.23, inf)
+    """
     if spring.kind not in KINDS:
         raise ValueError(f"spring kind must be one of {KINDS}, got {spring.kind!r}")
     d, D, rho = spring.d, spring.D, mat.density

@@ -102,7 +102,40 @@ _DERIVED = {
 
 def prepare(kind: str, **kw) -> dict:
     """Fill defaults and the derived quantities every row needs (moduli, R_m, rate, ...; each
-    computed when first read: :class:`_Prepared`)."""
+    computed when first read: :class:`_Prepared`).
+
+    Parameters
+    ----------
+    kind : str [-]
+        ``"compression"`` or ``"extension"`` (:data:`TABLES`).
+    **kw : dict [SI: m, N, Pa]
+        The design's keywords, SI (see the module): ``mat``, ``d``, ``D`` [m], ``n`` or
+        ``n_body`` [-], ``F1``, ``F2`` [N], ... and the options.
+
+    Returns
+    -------
+    dict [SI]
+        The keywords with defaults and derived quantities: ``G``, ``E``, ``Rm`` [Pa], ``C``
+        [-], ``R`` [N/m], ``f_e`` [Hz], ...
+
+    References
+    ----------
+    [shigley] 9th ed. ch. 10; [en13906-1] (each row names its own clause as its source).
+
+    Examples
+    --------
+    The spring of Shigley's Example 10-4 (its data and what the book prints: :func:`checks`);
+    the book prints C = 5.11 and k = 48.1 lbf/in:
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> kw = dict(mat=material("Shigley A228"), d=0.092 * inch, D=(9 / 16 - 0.092) * inch, n=21,
+    ...           n_t=23, L0=4.375 * inch, F1=5 * lbf, F2=35 * lbf, method="Shigley",
+    ...           criterion="gerber")
+    >>> p = prepare("compression", **kw)
+    >>> round(float(p["C"]), 3), round(float(p["R"]) / (lbf / inch), 1)
+    (5.114, 48.1)
+    """
     kw = _Prepared(COMPRESSION_DEFAULTS if kind == "compression" else EXTENSION_DEFAULTS,
                    **kw, kind=kind)
     d, D = np.asarray(kw["d"], dtype=float), np.asarray(kw["D"], dtype=float)
@@ -304,7 +337,40 @@ def _rows(kind, kw, only=None):
 
 def rows_over(kind: str, only=None, **kw) -> list[tuple[Row, np.ndarray, np.ndarray, str]]:
     """Every row of the ``kind`` table (or the rows named in ``only``) over arrays, in order:
-    ``(row, value, limit, source)`` (value and limit broadcast; the source's text)."""
+    ``(row, value, limit, source)`` (value and limit broadcast; the source's text).
+
+    Parameters
+    ----------
+    kind : str [-]
+        ``"compression"`` or ``"extension"`` (:data:`TABLES`).
+    only : tuple of str or None [-]
+        Names of the rows to take (e.g. :data:`GEOMETRY`); None for all.
+    **kw : dict [SI: m, N, Pa]
+        The design's keywords, SI (see the module): ``mat``, ``d``, ``D`` [m], ``n`` or
+        ``n_body`` [-], ``F1``, ``F2`` [N], ... and the options.
+
+    Returns
+    -------
+    list of tuple [-]
+        ``(Row, value, limit, source)``, value and limit in the row's ``unit``.
+
+    References
+    ----------
+    [shigley] 9th ed. ch. 10; [en13906-1] (each row names its own clause as its source).
+
+    Examples
+    --------
+    The spring of Shigley's Example 10-4 (its data and what the book prints: :func:`checks`):
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> kw = dict(mat=material("Shigley A228"), d=0.092 * inch, D=(9 / 16 - 0.092) * inch, n=21,
+    ...           n_t=23, L0=4.375 * inch, F1=5 * lbf, F2=35 * lbf, method="Shigley",
+    ...           criterion="gerber")
+    >>> row, value, limit, source = rows_over("compression", **kw)[-1]
+    >>> row.name, round(float(value), 2), source[:20]
+    ('body fatigue safety factor', 1.2, "Zimmerli's endurance")
+    """
     kw = prepare(kind, **kw)
     return [(r, *np.broadcast_arrays(np.asarray(r.value(kw), dtype=float),
                                      np.asarray(r.limit(kw), dtype=float)),
@@ -313,13 +379,84 @@ def rows_over(kind: str, only=None, **kw) -> list[tuple[Row, np.ndarray, np.ndar
 
 def evaluate(kind: str, only=None, **kw) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """Every row of the ``kind`` table (or the rows named in ``only``) over arrays:
-    ``{name: (value, limit)}`` (broadcast)."""
+    ``{name: (value, limit)}`` (broadcast).
+
+    Parameters
+    ----------
+    kind : str [-]
+        ``"compression"`` or ``"extension"`` (:data:`TABLES`).
+    only : tuple of str or None [-]
+        Names of the rows to take (e.g. :data:`GEOMETRY`); None for all.
+    **kw : dict [SI: m, N, Pa]
+        The design's keywords, SI (see the module): ``mat``, ``d``, ``D`` [m], ``n`` or
+        ``n_body`` [-], ``F1``, ``F2`` [N], ... and the options.
+
+    Returns
+    -------
+    dict of str to tuple of array [-]
+        ``(value, limit)`` per row name, in the row's ``unit``.
+
+    References
+    ----------
+    [shigley] 9th ed. ch. 10; [en13906-1] (each row names its own clause as its source).
+
+    Examples
+    --------
+    The spring of Shigley's Example 10-4 (its data and what the book prints: :func:`checks`):
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> kw = dict(mat=material("Shigley A228"), d=0.092 * inch, D=(9 / 16 - 0.092) * inch, n=21,
+    ...           n_t=23, L0=4.375 * inch, F1=5 * lbf, F2=35 * lbf, method="Shigley",
+    ...           criterion="gerber")
+    >>> value, limit = evaluate("compression", **kw)["body fatigue safety factor"]
+    >>> round(float(value), 2), float(limit)
+    (1.2, 1.0)
+    """
     return {r.name: (value, limit) for r, value, limit, _ in rows_over(kind, only, **kw)}
 
 
 def feasible(kind: str, only=None, **kw) -> np.ndarray:
     """True where every row (of ``only``, if given) holds (NaN, e.g. a wire outside its grade's
-    range, fails)."""
+    range, fails).
+
+    Parameters
+    ----------
+    kind : str [-]
+        ``"compression"`` or ``"extension"`` (:data:`TABLES`).
+    only : tuple of str or None [-]
+        Names of the rows to take (e.g. :data:`GEOMETRY`); None for all.
+    **kw : dict [SI: m, N, Pa]
+        The design's keywords, SI (see the module): ``mat``, ``d``, ``D`` [m], ``n`` or
+        ``n_body`` [-], ``F1``, ``F2`` [N], ... and the options.
+
+    Returns
+    -------
+    array of bool [-]
+        Feasible designs (broadcast over the keywords' arrays).
+
+    References
+    ----------
+    [shigley] 9th ed. ch. 10; [en13906-1] (each row names its own clause as its source).
+
+    Examples
+    --------
+    The spring of Shigley's Example 10-4 (its data and what the book prints: :func:`checks`):
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> kw = dict(mat=material("Shigley A228"), d=0.092 * inch, D=(9 / 16 - 0.092) * inch, n=21,
+    ...           n_t=23, L0=4.375 * inch, F1=5 * lbf, F2=35 * lbf, method="Shigley",
+    ...           criterion="gerber")
+
+    The book checks no buckling: under EN 13906-1 with hinged ends the unguided spring
+    (free length 9.3 coil diameters) would buckle, so it is infeasible whatever its wire.
+
+    >>> bool(feasible("compression", **kw))
+    False
+    >>> round(float(evaluate("compression", **kw)["deflection / buckling deflection"][0]), 2)
+    5.22
+    """
     kw = prepare(kind, **kw)
     ok = True
     for r in _rows(kind, kw, only):
@@ -334,6 +471,43 @@ def checks(kind: str, only=None, **kw):
 
     Arrays (e.g. forces over the governor's range) are reduced to the worst case: the largest
     value of a ``<=`` row, the smallest of a ``>=`` row (with its own limit).
+
+    Parameters
+    ----------
+    kind : str [-]
+        ``"compression"`` or ``"extension"`` (:data:`TABLES`).
+    only : tuple of str or None [-]
+        Names of the rows to take (e.g. :data:`GEOMETRY`); None for all.
+    **kw : dict [SI: m, N, Pa]
+        The design's keywords, SI (see the module): ``mat``, ``d``, ``D`` [m], ``n`` or
+        ``n_body`` [-], ``F1``, ``F2`` [N], ... and the options.
+
+    Returns
+    -------
+    list of Check [-]
+        One per row: value and limit in the row's ``unit``, margin and source.
+
+    References
+    ----------
+    [shigley] 9th ed. ch. 10; [en13906-1] (each row names its own clause as its source).
+
+    Examples
+    --------
+    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
+    21 active coils, squared and ground, cycled between 5 and 35 lbf. The book prints
+    C = 5.11, k = 48.1 lbf/in and (Gerber) n_f = 1.21; the wire's Zimmerli data are held in SI
+    (241 / 379 MPa, 0.13 % / 0.06 % below 35 / 55 kpsi) and its tensile strength from the SI
+    constant of Table 10-4 (0.19 % below the US one), which gives 1.20.
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> kw = dict(mat=material("Shigley A228"), d=0.092 * inch, D=(9 / 16 - 0.092) * inch, n=21,
+    ...           n_t=23, L0=4.375 * inch, F1=5 * lbf, F2=35 * lbf, method="Shigley",
+    ...           criterion="gerber")
+    >>> got = {c.name: c for c in checks("compression", **kw)}
+    >>> c = got["body fatigue safety factor"]
+    >>> round(c.value, 2), c.sense, c.limit
+    (1.2, '>=', 1.0)
     """
     kw = prepare(kind, **kw)
     out = []

@@ -37,7 +37,30 @@ SHEAR_TO_NORMAL = 0.577
 
 
 def torsional_ultimate(Sut):
-    """Torsional ultimate strength of spring wire ``S_su = 0.67 S_ut`` (Shigley eq. (10-30))."""
+    """Torsional ultimate strength of spring wire ``S_su = 0.67 S_ut`` (Pa) (Shigley eq. (10-30)).
+
+    Parameters
+    ----------
+    Sut : float or array [Pa]
+        Tensile ultimate strength of the wire (any stress unit: the result is in the same).
+
+    Returns
+    -------
+    float or array [Pa]
+        Torsional ultimate ``S_su``.
+
+    References
+    ----------
+    [shigley] 9th ed. eq. (10-30).
+
+    Examples
+    --------
+    Shigley Example 10-4: music wire with ``S_ut = 284.1`` kpsi; the book prints
+    ``S_su = 190.3`` kpsi.
+
+    >>> round(float(torsional_ultimate(284.1)), 1)
+    190.3
+    """
     return 0.67 * np.asarray(Sut, dtype=float)
 
 
@@ -46,8 +69,33 @@ def endurance_intercept(Ssa, Ssm, Ssu, criterion: str = "gerber"):
     and the ultimate ``S_su`` (Shigley §10-9): Goodman ``S_sa / (1 - S_sm/S_su)``, Gerber
     ``S_sa / (1 - (S_sm/S_su)^2)``, Sines ``S_sa``.
 
-    >>> round(float(endurance_intercept(35.0, 55.0, 190.3, "gerber")), 1)  # kpsi, Example 10-4
+    Parameters
+    ----------
+    Ssa, Ssm : float or array [Pa]
+        Zimmerli's strength amplitude and midrange (:data:`ZIMMERLI`).
+    Ssu : float or array [Pa]
+        Torsional ultimate strength (:func:`torsional_ultimate`).
+    criterion : str [-]
+        ``"goodman"``, ``"gerber"`` or ``"sines"``.
+
+    Returns
+    -------
+    float or array [Pa]
+        Fully reversed shear endurance ``S_se`` (same unit as the inputs).
+
+    References
+    ----------
+    [shigley] 9th ed. §10-9, Example 10-4.
+
+    Examples
+    --------
+    Shigley Example 10-4 in kpsi (any one stress unit will do): the book prints
+    ``S_se = 38.2`` (Gerber) and ``49.2`` (Goodman).
+
+    >>> round(float(endurance_intercept(35.0, 55.0, 190.3, "gerber")), 1)
     38.2
+    >>> round(float(endurance_intercept(35.0, 55.0, 190.3, "goodman")), 1)
+    49.2
     """
     Ssa, Ssm, Ssu = (np.asarray(x, dtype=float) for x in (Ssa, Ssm, Ssu))
     if criterion == "goodman":
@@ -66,8 +114,35 @@ def amplitude_strength(r, Sse, Su, criterion: str = "gerber"):
 
     ``r = inf`` (fully reversed) gives ``S_se``.
 
-    >>> round(float(amplitude_strength(0.75, 49.2, 190.3, "goodman")), 1)  # Example 10-4
+    Parameters
+    ----------
+    r : float or array [-]
+        Load-line slope, amplitude over midrange stress (``inf`` for fully reversed).
+    Sse : float or array [Pa]
+        Endurance intercept at zero midrange (:func:`endurance_intercept`).
+    Su : float or array [Pa]
+        Ultimate strength where the locus meets the midrange axis.
+    criterion : str [-]
+        ``"goodman"``, ``"gerber"`` or ``"sines"``.
+
+    Returns
+    -------
+    float or array [Pa]
+        Strength amplitude on the load line (same unit as the inputs).
+
+    References
+    ----------
+    [shigley] 9th ed. Table 6-7, Example 10-4.
+
+    Examples
+    --------
+    Shigley Example 10-4 in kpsi, ``r = 29.7 / 39.6 = 0.75``: the book prints
+    ``S_sa = 36.6`` (Goodman) and ``35.8`` (Gerber).
+
+    >>> round(float(amplitude_strength(0.75, 49.2, 190.3, "goodman")), 1)
     36.6
+    >>> round(float(amplitude_strength(0.75, 38.2, 190.3, "gerber")), 1)
+    35.8
     """
     r, Sse, Su = (np.asarray(x, dtype=float) for x in (r, Sse, Su))
     if criterion == "sines":
@@ -88,7 +163,38 @@ def shigley_fatigue_safety(tau_a, tau_m, Sut, peened: bool = False, criterion: s
     """Fatigue safety factor in torsion ``n_f = S_sa / tau_a`` along the load line (Shigley
     §10-9, Example 10-4): Zimmerli's point, ``S_su = 0.67 S_ut`` and ``criterion``.
 
-    ``tau_a``, ``tau_m`` are the *corrected* (K_B) amplitude and midrange stresses (Pa).
+    Parameters
+    ----------
+    tau_a, tau_m : float or array [Pa]
+        Corrected (Bergstraesser K_B) amplitude and midrange shear stresses.
+    Sut : float or array [Pa]
+        Tensile ultimate strength of the wire.
+    peened : bool [-]
+        Shot-peened wire: Zimmerli's peened data.
+    criterion : str [-]
+        ``"goodman"``, ``"gerber"`` or ``"sines"``.
+
+    Returns
+    -------
+    float or array [-]
+        Fatigue safety factor ``n_f``.
+
+    References
+    ----------
+    [shigley] 9th ed. §10-9, Example 10-4.
+
+    Examples
+    --------
+    Shigley Example 10-4: ``tau_a = 29.7``, ``tau_m = 39.6``, ``S_ut = 284.1`` kpsi. The book
+    prints ``n_f = 1.21`` (Gerber) and ``1.23`` (Goodman); Zimmerli's data are held in SI
+    (241 / 379 MPa, 0.13 % / 0.06 % below 35 / 55 kpsi), which takes the Gerber factor to 1.20.
+
+    >>> ksi = 6.894757e6
+    >>> round(float(shigley_fatigue_safety(29.7 * ksi, 39.6 * ksi, 284.1 * ksi)), 2)
+    1.2
+    >>> round(float(shigley_fatigue_safety(29.7 * ksi, 39.6 * ksi, 284.1 * ksi,
+    ...                                    criterion="goodman")), 2)
+    1.23
     """
     tau_a = np.asarray(tau_a, dtype=float)
     Ssa, Ssm = ZIMMERLI[bool(peened)]
@@ -103,7 +209,38 @@ def shigley_bending_fatigue_safety(sigma_a, sigma_m, Sut, peened: bool = False,
                                    criterion: str = "gerber"):
     """Fatigue safety factor in bending at an extension spring's hook (Shigley Example 10-7):
     Zimmerli's torsional endurance intercept turned into a tensile one, ``S_e = S_se / 0.577``,
-    with the tensile ultimate ``S_ut`` on the same kind of line."""
+    with the tensile ultimate ``S_ut`` on the same kind of line.
+
+    Parameters
+    ----------
+    sigma_a, sigma_m : float or array [Pa]
+        Amplitude and midrange bending stresses at the hook (with its curvature factor).
+    Sut : float or array [Pa]
+        Tensile ultimate strength of the wire.
+    peened : bool [-]
+        Shot-peened wire: Zimmerli's peened data.
+    criterion : str [-]
+        ``"goodman"``, ``"gerber"`` or ``"sines"``.
+
+    Returns
+    -------
+    float or array [-]
+        Fatigue safety factor in bending.
+
+    References
+    ----------
+    [shigley] 9th ed. §10-9, Example 10-7.
+
+    Examples
+    --------
+    The printed factors of Example 10-7 are not in the stored sources; a case checked by hand
+    instead: fully reversed bending (zero midrange) of 400 MPa on wire of ``S_ut = 2000`` MPa
+    gives ``S_e / sigma_a`` with the Gerber intercept
+    ``S_se = 241 / (1 - (379/1340)^2) = 261.96`` MPa, ``S_e = 261.96 / 0.577 = 454.0`` MPa.
+
+    >>> round(float(shigley_bending_fatigue_safety(400e6, 0.0, 2000e6)), 4)
+    1.135
+    """
     sigma_a = np.asarray(sigma_a, dtype=float)
     Ssa, Ssm = ZIMMERLI[bool(peened)]
     Se = endurance_intercept(Ssa, Ssm, torsional_ultimate(Sut), criterion) / SHEAR_TO_NORMAL
@@ -117,6 +254,38 @@ def en13906_stroke_limit(tau_k_lower, d, diagram):
     read off the EN 13906-1 Goodman diagram of wire diameter ``d`` (m): the upper stress rises
     linearly from ``tau_O`` at ``tau_kU = 0`` to the cut-off ``tau_max`` at ``tau_kU = tau_U``,
     and stays at the cut-off beyond.
+
+    Parameters
+    ----------
+    tau_k_lower : float or array [Pa]
+        Corrected lower stress ``tau_kU``.
+    d : float or array [m]
+        Wire diameter.
+    diagram : FatigueDiagram [Pa]
+        The grade's diagram (:meth:`govopt.springs.materials.Material.fatigue_diagram`),
+        whose lines give stresses in Pa.
+
+    Returns
+    -------
+    float or array [Pa]
+        Admissible corrected stroke ``tau_kH``.
+
+    References
+    ----------
+    [en13906-1] Annex A (Goodman diagrams at 1e7 cycles).
+
+    Examples
+    --------
+    Grade DH, not shot peened, d = 3 mm, on the standard's diagram as digitised in SpringONE
+    (the diagram's ``source``): ``tau_O = 422.5``, ``tau_max = 922.4`` MPa, the knee at
+    ``tau_U = 678.4`` MPa. At zero lower stress the stroke is ``tau_O``; at 300 MPa it is
+    ``422.5 + (922.4 - 422.5) / 678.4 * 300 - 300 = 343.6``; beyond the knee, at 900 MPa,
+    ``922.4 - 900 = 22.4`` (checked by hand).
+
+    >>> from govopt.springs.materials import material
+    >>> dh = material("EN10270-1 DH").fatigue_diagram(False)
+    >>> [round(float(x) / 1e6, 1) for x in en13906_stroke_limit([0.0, 300e6, 900e6], 3e-3, dh)]
+    [422.5, 343.6, 22.4]
     """
     lower = np.asarray(tau_k_lower, dtype=float)
     tO, tmax, tU = diagram.upper_at_zero(d), diagram.cutoff(d), diagram.knee(d)
@@ -126,7 +295,39 @@ def en13906_stroke_limit(tau_k_lower, d, diagram):
 
 def en13906_fatigue_safety(F_min, F_max, d, D, diagram):
     """Fatigue safety factor after EN 13906-1: admissible over actual corrected stroke,
-    ``tau_kH,adm(tau_kU) / (tau_k2 - tau_k1)``, with ``tau_k = k tau`` (Bergstraesser's k)."""
+    ``tau_kH,adm(tau_kU) / (tau_k2 - tau_k1)``, with ``tau_k = k tau`` (Bergstraesser's k).
+
+    Parameters
+    ----------
+    F_min, F_max : float or array [N]
+        The two spring forces of the load cycle.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    diagram : FatigueDiagram [Pa]
+        The grade's diagram (:meth:`govopt.springs.materials.Material.fatigue_diagram`).
+
+    Returns
+    -------
+    float or array [-]
+        Fatigue safety factor (below 1: the stroke exceeds the admissible one).
+
+    References
+    ----------
+    [en13906-1] Annex A (the Goodman diagram; the stroke it admits over the actual one).
+
+    Examples
+    --------
+    Grade DH, d = 3 mm, D = 24 mm (w = 8, k = 34/29 = 1.1724) between 100 and 300 N, checked by
+    hand: ``tau_k1 = k 8 F D / (pi d^3) = 265.4`` MPa, ``tau_k2 = 796.1`` MPa; the diagram
+    admits ``422.5 + 0.7369 * 265.4 - 265.4 = 352.7`` MPa of stroke against 530.8 MPa.
+
+    >>> from govopt.springs.materials import material
+    >>> dh = material("EN10270-1 DH").fatigue_diagram(False)
+    >>> round(float(en13906_fatigue_safety(100.0, 300.0, 3e-3, 24e-3, dh)), 4)
+    0.6645
+    """
     t1 = shear_stress(F_min, d, D, "bergstrasser")
     t2 = shear_stress(F_max, d, D, "bergstrasser")
     lower, stroke = np.minimum(t1, t2), np.abs(t2 - t1)
@@ -149,6 +350,32 @@ def reversed_endurance(mat, d, method: str = "EN13906", peened: bool = False,
     (amplitude and midrange ``tau_O / 2``) taken to zero midrange on a Goodman line,
     ``S_se = (tau_O/2) / (1 - tau_O / (2 S_su))`` (Shigley §6-12, the equivalent fully
     reversed stress of Example 6-12).
+
+    Parameters
+    ----------
+    mat : Material [-]
+        The wire grade (:func:`govopt.springs.materials.material`).
+    d : float [m]
+        Wire diameter.
+    method : str [-]
+        ``"EN13906"`` (the grade's diagram where it has one) or ``"Shigley"`` (Zimmerli).
+    peened : bool [-]
+        Shot-peened wire.
+    criterion : str [-]
+        Zimmerli's line: ``"goodman"``, ``"gerber"`` or ``"sines"``.
+
+    Returns
+    -------
+    tuple of float [Pa]
+        ``(S_se, S_su)``.
+
+    References
+    ----------
+    [shigley] 9th ed. eq. (10-30), §10-9, §6-12; [en13906-1] Annex A.
+
+    Examples
+    --------
+    Music wire (A228) of 2 mm, Zimmerli's Goodman line, checked by hand:
 
     >>> from govopt.springs.materials import material
     >>> Sse, Ssu = reversed_endurance(material("Shigley A228"), 2e-3, method="Shigley")
@@ -174,6 +401,31 @@ def finite_life(safety, Sse, Ssu, data_cycles: float = 1e7):
     ``N = data_cycles * safety^(-1/b)``, ``b = log10(S_se / (f S_su)) / log10(data_cycles /
     1e3)``. ``inf`` where ``safety >= 1`` (beyond the data: no estimate, the strength is held
     constant), ``nan`` below :data:`LOW_CYCLES` (quasi-static: the line does not reach).
+
+    Parameters
+    ----------
+    safety : float or array [-]
+        Fatigue safety factor at ``data_cycles``.
+    Sse : float or array [Pa]
+        Fully reversed shear endurance at ``data_cycles`` (:func:`reversed_endurance`).
+    Ssu : float or array [Pa]
+        Torsional ultimate strength.
+    data_cycles : float [-]
+        Cycles at which the endurance data hold (number of cycles).
+
+    Returns
+    -------
+    float or array [-]
+        Estimated life in cycles.
+
+    References
+    ----------
+    [shigley] 9th ed. §6-7, eqs. (6-13)-(6-16).
+
+    Examples
+    --------
+    A hand-checkable case: ``S_se = 300``, ``S_su = 1200`` MPa, safety 0.8; the life read back
+    on the line gives the stress ``300 / 0.8 = 375`` MPa.
 
     >>> N = float(finite_life(0.8, 300e6, 1200e6))  # b = lg(300/1080)/4 = -0.139
     >>> round(N / 1e6, 3), round(float(300e6 * (N / 1e7) ** (np.log10(300 / 1080) / 4)) / 1e6, 6)
@@ -202,6 +454,35 @@ def body_locus(mat, d, method: str = "EN13906", peened: bool = False,
       "locus": {"midrange stress", "amplitude stress"}}``, the strength amplitude against
       the midrange from 0 to ``S_su = 0.67 S_ut`` (Shigley Table 6-7's lines through Zimmerli's
       point, :func:`endurance_intercept`).
+
+    Parameters
+    ----------
+    mat : Material [-]
+        The wire grade (:func:`govopt.springs.materials.material`).
+    d : float [m]
+        Wire diameter.
+    method : str [-]
+        ``"EN13906"`` or ``"Shigley"``.
+    peened : bool [-]
+        Shot-peened wire.
+    criterion : str [-]
+        Zimmerli's line: ``"goodman"``, ``"gerber"`` or ``"sines"``.
+    points : int [-]
+        Points of the Shigley locus (dimensionless count).
+
+    Returns
+    -------
+    dict [Pa]
+        The record above, its stresses as figures in Pa.
+
+    References
+    ----------
+    [en13906-1] Annex A; [shigley] 9th ed. §10-9, Table 6-7.
+
+    Examples
+    --------
+    Music wire (A228) of 2 mm, Zimmerli's Goodman line: it passes through Zimmerli's point
+    (379, 241) MPa by construction.
 
     >>> from govopt.springs.materials import material
     >>> loc = body_locus(material("Shigley A228"), 2e-3, method="Shigley")
@@ -243,6 +524,26 @@ def cycle_figures(force_min: float, force_max: float, stress_min: float,
     corrected shear stresses (Pa): the forces, the stresses, the mean stress ``(min + max)/2``
     and the alternating stress ``(max - min)/2`` (Shigley §10-9's midrange and amplitude;
     EN 13906-1's lower and upper stress are the two ends).
+
+    Parameters
+    ----------
+    force_min, force_max : float [N]
+        The two forces of the cycle.
+    stress_min, stress_max : float [Pa]
+        Their corrected shear stresses.
+
+    Returns
+    -------
+    dict of str to Figure [N, Pa]
+        The six figures keyed by name.
+
+    References
+    ----------
+    [shigley] 9th ed. §10-9; [en13906-1] Annex A.
+
+    Examples
+    --------
+    The mean of 200 and 600 MPa is 400 MPa (by hand):
 
     >>> {k: f.value for k, f in cycle_figures(100.0, 300.0, 2e8, 6e8).items()}["mean stress"]
     400000000.0

@@ -34,6 +34,18 @@ def record_json(record: Mapping) -> dict:
     (written under its :attr:`~govopt.verdict.Figure.key`, which names its unit), a record (a
     section, under its key) or plain data (words, counts, lists: under its key, as it is).
 
+    Parameters
+    ----------
+    record : Mapping [SI]
+        Figures (each carrying its SI unit), records and plain data by key.
+
+    Returns
+    -------
+    dict [SI]
+        The same nesting, each figure's key naming its unit (``rate_N_per_m``).
+
+    Examples
+    --------
     >>> record_json({"rate": Figure("rate", 2e4, "N/m"), "grade": "SH", "x": {"n": 3}})
     {'rate_N_per_m': 20000.0, 'grade': 'SH', 'x': {'n': 3}}
     """
@@ -53,6 +65,20 @@ def record_rows(record: Mapping, depth: int = 0) -> Iterator[tuple[int, str, Any
     unit from its fields, a section's title (value :data:`SECTION`) and a plain entry's key in
     words (no unit).
 
+    Parameters
+    ----------
+    record : Mapping [SI]
+        Figures (each carrying its SI unit), records and plain data by key.
+    depth : int [-]
+        Nesting depth of ``record`` (dimensionless count).
+
+    Yields
+    ------
+    tuple [SI]
+        ``(depth, label, value, unit)``, the value in the figure's SI unit.
+
+    Examples
+    --------
     >>> list(record_rows({"rate": Figure("rate", 2e4, "N/m"), "loads": {"life_cycles": 7}}))[1:]
     [(0, 'loads', <SECTION>, ''), (1, 'life cycles', 7, '')]
     """
@@ -169,13 +195,84 @@ def _f(x) -> float:
 
 def wire_standard(mat: Material) -> str | None:
     """The wire standard whose diameter tolerances apply to the grade (EN 10270-1 or -2), or
-    None (:func:`govopt.springs.tolerances.wire_standard`)."""
+    None (:func:`govopt.springs.tolerances.wire_standard`).
+
+    Parameters
+    ----------
+    mat : Material [-]
+        The wire grade (:func:`govopt.springs.materials.material`).
+
+    Returns
+    -------
+    str or None [-]
+        ``"EN10270-1"``, ``"EN10270-2"`` or None.
+
+    References
+    ----------
+    [en10270-1], [en10270-2].
+
+    Examples
+    --------
+    >>> from govopt.springs.materials import material
+    >>> wire_standard(material("EN10270-1 DH")), wire_standard(material("Shigley A228"))
+    ('EN10270-1', None)
+    """
     return tol.wire_standard(mat.grade)
 
 
 def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "closed_ground",
                       grade: int = 2, surface: str = "none") -> SpringSheet:
-    """The sheet of a compression spring; working lengths follow from the rate."""
+    """The sheet of a compression spring; working lengths follow from the rate.
+
+    ``L_i = L0 - F_i / R`` with ``R = G d^4 / (8 D^3 n)``; the solid length with the largest
+    wire diameter within tolerance; EN 15800 tolerances of grade ``grade``.
+
+    Parameters
+    ----------
+    mat : Material [-]
+        The wire grade (:func:`govopt.springs.materials.material`).
+    d : float [m]
+        Wire diameter.
+    D : float [m]
+        Mean coil diameter.
+    n : float [-]
+        Active coils.
+    n_t : float [-]
+        Total coils.
+    L0 : float [m]
+        Free length.
+    F1, F2 : float [N]
+        The two working forces.
+    ends : str [-]
+        End form, a key of :data:`~govopt.springs.helical.END_FORMS`.
+    grade : int [-]
+        EN 15800 quality grade 1, 2 or 3.
+    surface : str [-]
+        Surface treatment, as written on the sheet (dimensionless text).
+
+    Returns
+    -------
+    SpringSheet [SI]
+        The sheet, SI (m, N, N/m, kg, Hz).
+
+    References
+    ----------
+    [en13906-1] rate and solid length; [en15800] tolerances; [shigley] 9th ed. Example 10-4.
+
+    Examples
+    --------
+    Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
+    21 active and 23 total coils, squared and ground, 5 and 35 lbf. The book prints
+    k = 48.1 lbf/in; by hand, ``L2 = 111.125 - 155.69 / 8.4233 = 92.64`` mm and the solid length
+    ``n_t d = 23 * 0.092 = 2.116`` in (the ASTM wire has no tabulated tolerance here).
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> s = compression_sheet(material("Shigley A228"), 0.092 * inch, (9 / 16 - 0.092) * inch,
+    ...                       21, 23, 4.375 * inch, 5 * lbf, 35 * lbf)
+    >>> round(s.R / (lbf / inch), 1), round(s.L2 * 1e3, 2), round(s.solid_length / inch, 3)
+    (48.1, 92.64, 2.116)
+    """
     G = _f(mat.shear_modulus(d))
     R = _f(hx.stiffness(d, D, n, G))
     d_max = tol.max_wire_diameter(d, mat.grade)
@@ -203,7 +300,54 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
 def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,
                     hooks: str = "full loops (German loops) in line, both ends",
                     grade: int = 2, surface: str = "none") -> SpringSheet:
-    """The sheet of an extension spring with two full loops; lengths inside the loops."""
+    """The sheet of an extension spring with two full loops; lengths inside the loops.
+
+    Active coils ``n = n_b + G/E``, ``L0 = 2 (D - d) + (n_b + 1) d`` and
+    ``L_i = L0 + (F_i - F0) / R``; EN 15800's coil diameter tolerance only (the standard covers
+    compression springs).
+
+    Parameters
+    ----------
+    mat : Material [-]
+        The wire grade (:func:`govopt.springs.materials.material`).
+    d : float [m]
+        Wire diameter.
+    D : float [m]
+        Mean coil diameter.
+    n_body : float [-]
+        Body coils ``n_b``.
+    F0 : float [N]
+        Initial tension.
+    F1, F2 : float [N]
+        The two working forces.
+    hooks : str [-]
+        The loops, as written on the sheet (dimensionless text).
+    grade : int [-]
+        EN 15800 quality grade 1, 2 or 3.
+    surface : str [-]
+        Surface treatment, as written on the sheet (dimensionless text).
+
+    Returns
+    -------
+    SpringSheet [SI]
+        The sheet, SI (m, N, N/m, kg, Hz).
+
+    References
+    ----------
+    [en13906-2] free length and loops; [shigley] 9th ed. §10-11, Example 10-6.
+
+    Examples
+    --------
+    Shigley (9th ed.) Example 10-6: hard-drawn wire d = 0.035 in, OD = 0.248 in, initial tension
+    1.19 lbf, 12.17 body coils. The book prints N_a = 12.57, k = 17.91 lbf/in, L0 = 0.817 in.
+
+    >>> from govopt.springs.materials import material
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> s = extension_sheet(material("Shigley A227"), 0.035 * inch, (0.248 - 0.035) * inch,
+    ...                     12.17, 1.19 * lbf, 1.19 * lbf, 5.25 * lbf)
+    >>> round(s.n, 2), round(s.R / (lbf / inch), 2), round(s.L0 / inch, 3)
+    (12.57, 17.91, 0.817)
+    """
     G, E = _f(mat.shear_modulus(d)), _f(mat.elastic_modulus(d))
     n = _f(hx.extension_active_coils(n_body, G, E))
     R = _f(hx.stiffness(d, D, n, G))

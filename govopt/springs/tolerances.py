@@ -69,6 +69,30 @@ def coil_diameter_tolerance(D, w, grade: int = 2):
 
     ``D`` in m (0.63-200 mm), ``w = D/d`` (4-20); NaN outside the table.
 
+    Parameters
+    ----------
+    D : float or array [m]
+        Mean coil diameter.
+    w : float or array [-]
+        Spring index ``D/d``, dimensionless.
+    grade : int [-]
+        EN 15800 quality grade 1, 2 or 3 (dimensionless).
+
+    Returns
+    -------
+    float or array [m]
+        The +- tolerance ``A_D``.
+
+    References
+    ----------
+    [en15800] Table 1 (as transcribed by Gutekunst and SpringONE; see the module).
+
+    Examples
+    --------
+    The spring of Shigley Problem 10-3 (d = 2.5 mm, D = 28.5 mm, 13 active coils); the standard's
+    own examples are not in the stored sources, so the value is checked by hand.
+    D = 28.5 mm lies in the row 25-31.5 mm, w = 11.4 in the column 8-14 of grade 2: 0.50 mm.
+
     >>> round(float(coil_diameter_tolerance(28.5e-3, 11.4, 2)) * 1e3, 2)  # mm
     0.5
     """
@@ -84,7 +108,34 @@ def coil_diameter_tolerance(D, w, grade: int = 2):
 def alpha_F(d, D):
     """EN 15800 force-tolerance base ``alpha_F`` (N):
     ``65.92 d^3.3 / D^1.6 (-0.84 (w/10)^3 + 3.781 (w/10)^2 - 4.244 (w/10) + 2.274)`` with d, D
-    in mm and ``w = D/d``."""
+    in mm and ``w = D/d``.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+
+    Returns
+    -------
+    float or array [N]
+        The force-tolerance base ``alpha_F``.
+
+    References
+    ----------
+    [en15800] force tolerance (the formula as coded by SpringONE; see the module).
+
+    Examples
+    --------
+    The spring of Shigley Problem 10-3 (d = 2.5 mm, D = 28.5 mm, 13 active coils); the standard's
+    own examples are not in the stored sources, so the value is checked by hand.
+    ``65.92 * 2.5^3.3 / 28.5^1.6 * (-0.84 * 1.14^3 + 3.781 * 1.14^2 - 4.244 * 1.14 + 2.274)
+    = 7.045`` N.
+
+    >>> round(float(alpha_F(2.5e-3, 28.5e-3)), 3)
+    7.045
+    """
     dmm = np.asarray(d, dtype=float) * 1e3
     Dmm = np.asarray(D, dtype=float) * 1e3
     x = Dmm / dmm / 10.0
@@ -94,13 +145,64 @@ def alpha_F(d, D):
 def k_F(n):
     """EN 15800 factor for the number of active coils ``k_F = 1/(3 n^2) + 8/(5 n) + 0.803``
     (as coded in SpringONE; one other public transcription writes the first term with a minus
-    sign and n - 1.75 for n; with the same n the two differ by 2/(3 n^2), under 1 % for n >= 10)."""
+    sign and n - 1.75 for n; with the same n the two differ by 2/(3 n^2), under 1 % for n >= 10).
+
+    Parameters
+    ----------
+    n : float or array [-]
+        Number of active coils.
+
+    Returns
+    -------
+    float or array [-]
+        The factor ``k_F``.
+
+    References
+    ----------
+    [en15800] force tolerance (as coded by SpringONE; see the module).
+
+    Examples
+    --------
+    Checked by hand: ``n = 10`` gives ``1/300 + 0.16 + 0.803 = 0.96633``.
+
+    >>> round(float(k_F(10)), 5)
+    0.96633
+    """
     n = np.asarray(n, dtype=float)
     return 1.0 / (3.0 * n**2) + 8.0 / (5.0 * n) + 0.803
 
 
 def force_tolerance(F, d, D, n, grade: int = 2):
     """+- tolerance of a spring force ``A_F = (alpha_F k_F + 1.5 F / 100) Q`` (N), EN 15800.
+
+    Parameters
+    ----------
+    F : float or array [N]
+        The toleranced spring force.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    grade : int [-]
+        EN 15800 quality grade 1, 2 or 3 (dimensionless).
+
+    Returns
+    -------
+    float or array [N]
+        The +- tolerance ``A_F``.
+
+    References
+    ----------
+    [en15800] force tolerance (as coded by SpringONE; see the module).
+
+    Examples
+    --------
+    The spring of Shigley Problem 10-3 (d = 2.5 mm, D = 28.5 mm, 13 active coils); the standard's
+    own examples are not in the stored sources, so the value is checked by hand.
+    ``alpha_F = 7.045`` N (:func:`alpha_F`), ``k_F(13) = 0.928``, Q = 1 for grade 2: at 100 N,
+    ``7.045 * 0.928 + 1.5 = 8.04`` N.
 
     >>> round(float(force_tolerance(100.0, 2.5e-3, 28.5e-3, 13, 2)), 2)  # N: 7.05 x 0.928 + 1.5
     8.04
@@ -111,27 +213,136 @@ def force_tolerance(F, d, D, n, grade: int = 2):
 
 def free_length_tolerance(d, D, n, R, grade: int = 2):
     """+- tolerance of the free length ``A_L0 = alpha_F k_F Q / R`` (m) when no force is
-    toleranced (EN 15800); ``R`` in N/m."""
+    toleranced (EN 15800); ``R`` in N/m.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    R : float or array [N/m]
+        Spring rate.
+    grade : int [-]
+        EN 15800 quality grade 1, 2 or 3 (dimensionless).
+
+    Returns
+    -------
+    float or array [m]
+        The +- tolerance ``A_L0``.
+
+    References
+    ----------
+    [en15800] free-length tolerance (as coded by SpringONE; see the module).
+
+    Examples
+    --------
+    The spring of Shigley Problem 10-3 (d = 2.5 mm, D = 28.5 mm, 13 active coils); the standard's
+    own examples are not in the stored sources, so the value is checked by hand.
+    With a rate of 1000 N/m (round for the hand check): ``7.045 * 0.928 / 1000`` m = 6.538 mm.
+
+    >>> round(float(free_length_tolerance(2.5e-3, 28.5e-3, 13, 1000.0)) * 1e3, 3)
+    6.538
+    """
     _check_grade(grade)
     return alpha_F(d, D) * k_F(n) * Q_FACTOR[grade] / np.asarray(R, dtype=float)
 
 
 def perpendicularity(L0, grade: int = 2):
     """Permissible deviation of the outer generatrix from the perpendicular, ``e1`` (m):
-    0.030, 0.050, 0.080 times L0 for grades 1, 2, 3 (EN 15800, as coded in SpringONE)."""
+    0.030, 0.050, 0.080 times L0 for grades 1, 2, 3 (EN 15800, as coded in SpringONE).
+
+    Parameters
+    ----------
+    L0 : float or array [m]
+        Free length.
+    grade : int [-]
+        EN 15800 quality grade 1, 2 or 3 (dimensionless).
+
+    Returns
+    -------
+    float or array [m]
+        The deviation ``e1``.
+
+    References
+    ----------
+    [en15800] perpendicularity (as coded by SpringONE; see the module).
+
+    Examples
+    --------
+    Checked by hand: 50 mm free length, grade 2: ``0.05 * 50 = 2.5`` mm.
+
+    >>> round(float(perpendicularity(50e-3)) * 1e3, 6)
+    2.5
+    """
     _check_grade(grade)
     return {1: 0.030, 2: 0.050, 3: 0.080}[grade] * np.asarray(L0, dtype=float)
 
 
 def parallelism(De, grade: int = 2):
     """Permissible deviation of the ground end faces from parallel, ``e2`` (m): 0.015, 0.030,
-    0.060 times the outside diameter for grades 1, 2, 3 (EN 15800, as coded in SpringONE)."""
+    0.060 times the outside diameter for grades 1, 2, 3 (EN 15800, as coded in SpringONE).
+
+    Parameters
+    ----------
+    De : float or array [m]
+        Outside coil diameter.
+    grade : int [-]
+        EN 15800 quality grade 1, 2 or 3 (dimensionless).
+
+    Returns
+    -------
+    float or array [m]
+        The deviation ``e2``.
+
+    References
+    ----------
+    [en15800] parallelism (as coded by SpringONE; see the module).
+
+    Examples
+    --------
+    Checked by hand: 20 mm outside diameter, grade 1: ``0.015 * 20 = 0.3`` mm.
+
+    >>> round(float(parallelism(20e-3, 1)) * 1e3, 6)
+    0.3
+    """
     _check_grade(grade)
     return {1: 0.015, 2: 0.030, 3: 0.060}[grade] * np.asarray(De, dtype=float)
 
 
 def wire_diameter_tolerance(d, standard: str = "EN10270-1"):
-    """+- tolerance of the wire diameter (m) after the wire standard (EN 10270-1 or -2)."""
+    """+- tolerance of the wire diameter (m) after the wire standard (EN 10270-1 or -2).
+
+    NaN beyond the table.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Nominal wire diameter.
+    standard : str [-]
+        ``"EN10270-1"`` or ``"EN10270-2"`` (:data:`WIRE_TOLERANCE`).
+
+    Returns
+    -------
+    float or array [m]
+        The +- tolerance.
+
+    References
+    ----------
+    [en10270-1], [en10270-2] diameter tolerances (as tabulated by SpringONE ``WIRETOL.csv``).
+
+    Examples
+    --------
+    2.8 mm wire lies in the rows 2.6-4.0 mm (EN 10270-1: +-0.030 mm) and 1.7-3.0 mm
+    (EN 10270-2: +-0.025 mm) of :data:`WIRE_TOLERANCE`.
+
+    >>> round(float(wire_diameter_tolerance(2.8e-3)) * 1e3, 6)
+    0.03
+    >>> round(float(wire_diameter_tolerance(2.8e-3, "EN10270-2")) * 1e3, 6)
+    0.025
+    """
     try:
         upper, tol = WIRE_TOLERANCE[standard]
     except KeyError:
@@ -143,7 +354,28 @@ def wire_diameter_tolerance(d, standard: str = "EN10270-1"):
 
 def wire_standard(grade: str) -> str | None:
     """The wire standard whose diameter tolerances apply to a grade named ``grade`` (EN
-    10270-1 or -2: :data:`WIRE_TOLERANCE`), or None (a grade without tabulated tolerances)."""
+    10270-1 or -2: :data:`WIRE_TOLERANCE`), or None (a grade without tabulated tolerances).
+
+    Parameters
+    ----------
+    grade : str [-]
+        A wire grade's name, as :func:`govopt.springs.materials.material` knows it
+        (dimensionless text).
+
+    Returns
+    -------
+    str or None [-]
+        ``"EN10270-1"``, ``"EN10270-2"`` or None.
+
+    References
+    ----------
+    [en10270-1], [en10270-2].
+
+    Examples
+    --------
+    >>> wire_standard("EN10270-1 SH"), wire_standard("ASTM A228")
+    ('EN10270-1', None)
+    """
     for std in WIRE_TOLERANCE:
         if str(grade).startswith(std):
             return std
@@ -155,6 +387,27 @@ def max_wire_diameter(d, grade: str | None):
     named ``grade`` (:func:`wire_diameter_tolerance` of its standard), which EN 13906-1 takes
     for the solid length; ``d`` itself for a grade without tabulated tolerances (and beyond
     the table).
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Nominal wire diameter.
+    grade : str or None [-]
+        The wire grade's name (dimensionless text), or None.
+
+    Returns
+    -------
+    float or array [m]
+        ``d + A_d``, or ``d``.
+
+    References
+    ----------
+    [en13906-1] solid length with the maximum wire diameter; [en10270-1] tolerances.
+
+    Examples
+    --------
+    2.8 mm EN 10270-1 wire is held to +-0.030 mm (:func:`wire_diameter_tolerance`); an ASTM
+    grade has no tabulated tolerance here.
 
     >>> round(float(max_wire_diameter(2.8e-3, "EN10270-1 SH")) * 1e3, 3)  # +-0.030 mm
     2.83
@@ -173,6 +426,39 @@ def rate_spread(d, D, n, G, d_tol, D_tol):
     """Worst-case range of the rate ``R = G d^4 / (8 D^3 n)`` from the wire and coil diameter
     tolerances (exact, not linearised): ``(R(d - d_tol, D + D_tol), R(d + d_tol, D - D_tol))``.
     To first order the relative spread is ``4 d_tol/d + 3 D_tol/D``.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Nominal wire diameter.
+    D : float or array [m]
+        Nominal mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    G : float [Pa]
+        Shear modulus of the wire.
+    d_tol, D_tol : float or array [m]
+        +- tolerances of the wire and coil diameters.
+
+    Returns
+    -------
+    tuple of float or array [N/m]
+        The lowest and the highest rate.
+
+    References
+    ----------
+    [en13906-1] rate R (the formula); [en15800] the tolerances it is fed. The worst-case
+    corners are govopt's own construction.
+
+    Examples
+    --------
+    The spring of Shigley Problem 10-3 (d = 2.5 mm, D = 28.5 mm, 13 coils, G = 79.3 GPa:
+    R = 1286.7 N/m) with +-0.025 mm wire and +-0.5 mm coil: the full width,
+    0.1856 of R, is near the first-order ``2 (4 * 0.025/2.5 + 3 * 0.5/28.5) = 0.1853``.
+
+    >>> lo, hi = rate_spread(2.5e-3, 28.5e-3, 13, 79.3e9, 0.025e-3, 0.5e-3)
+    >>> round(float(lo), 1), round(float(hi), 1), round(float((hi - lo) / 1286.66), 4)
+    (1173.1, 1411.9, 0.1856)
     """
     d, D = np.asarray(d, dtype=float), np.asarray(D, dtype=float)
     lo = G * (d - d_tol) ** 4 / (8.0 * (D + D_tol) ** 3 * n)
