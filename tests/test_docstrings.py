@@ -13,7 +13,7 @@ A function counts as documented when its docstring has all three of:
   mark that :func:`govopt.references.found_in` recognises (``EN 13906-1``);
 - a doctest (a ``>>>`` line).
 
-At least half of the counted functions must be documented; a bracketed word that looks like a
+At least half of the counted functions must be documented, and the count only grows; a bracketed word that looks like a
 key (a ``References`` section line ``[key] ...``) must be a key of the bibliography.
 """
 
@@ -75,17 +75,18 @@ def test_reference_keys_exist():
     assert not unknown, unknown
 
 
-#: documented functions so far: the count may only grow (raise it with each function written);
-#: the aim is half of the public functions
-DOCUMENTED_AT_LEAST = 14
+#: documented functions so far: the count may only grow (raise it with each function written)
+DOCUMENTED_AT_LEAST = 131
 
 
 def test_documented_functions_only_grow():
     """The functions with units per argument, a cited source and a doctest: never fewer than
-    :data:`DOCUMENTED_AT_LEAST` (a docstring losing one of the three fails); prints the rest."""
+    :data:`DOCUMENTED_AT_LEAST` (a docstring losing one of the three fails) and at least half
+    of the counted functions (a new function comes documented); prints the rest."""
     functions = list(_functions())
     missing = [name for name, doc in functions if not _documented(doc)]
     done = len(functions) - len(missing)
-    print(f"documented {done} of {len(functions)} ({done / len(functions):.1%}); aim: half;"
-          " missing:\n" + "\n".join(missing))
+    print(f"documented {done} of {len(functions)} ({done / len(functions):.1%}); missing:\n"
+          + "\n".join(missing))
     assert done >= DOCUMENTED_AT_LEAST
+    assert 2 * done >= len(functions)
