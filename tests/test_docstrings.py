@@ -13,8 +13,9 @@ A function counts as documented when its docstring has all three of:
   mark that :func:`govopt.references.found_in` recognises (``EN 13906-1``);
 - a doctest (a ``>>>`` line).
 
-At least half of the counted functions must be documented, and the count only grows; a bracketed word that looks like a
-key (a ``References`` section line ``[key] ...``) must be a key of the bibliography.
+At least half of the counted functions must be documented, and the count only grows; a
+bracketed word that looks like a key (a ``References`` section line ``[key] ...``) must be a key
+of the bibliography.
 """
 
 import importlib
