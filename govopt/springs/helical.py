@@ -643,8 +643,8 @@ def buckling_deflection(L0, D, G, E, nu):
     Examples
     --------
     Two hand checks, steel (G = 81.5, E = 206 GPa), a 30 mm coil with both ends pivoted
-    (nu = 1): 50 mm free is below the critical 81.0 mm and cannot buckle; 200 mm free buckles
-    after ``0.2 x 0.5/0.6044 x (1 - sqrt(1 - 0.9144 x 0.2221)) = 12.9 mm``.
+    (nu = 1): 50 mm free is below the critical 77.4 mm and cannot buckle; 200 mm free buckles
+    after ``0.2 x 0.5/0.6044 x (1 - sqrt(1 - 0.6748 x 0.2221)) = 12.9 mm``.
 
     >>> float(buckling_deflection(0.05, 0.03, 81.5e9, 206e9, 1.0))
     inf
@@ -1148,7 +1148,7 @@ def mass(d, D, n_t, density):
     Examples
     --------
     Shigley Example 10-4 (9th ed.): 21 active coils of 0.092 in music wire, OD = 9/16 in,
-    prints W = 0.0586 lbf (0.2837 lbf/in^3 there, 7861 kg/m^3 here).
+    prints W = 0.0586 lbf (0.284 lbf/in^3 there, 7861 kg/m^3 here).
 
     >>> inch, lbf = 0.0254, 4.4482216152605
     >>> W = mass(0.092 * inch, (9 / 16 - 0.092) * inch, 21, 7861) * 9.80665 / lbf
