@@ -511,6 +511,22 @@ def max_pitch(d, D):
     rate :func:`stiffness` is then within 1.5 % of :func:`open_coil_stiffness` (steel), against
     6 % at the 25 deg of a 35 mm pitch on a 24 mm coil.
 
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+
+    Returns
+    -------
+    float or array [m]
+        The largest pitch, 0.7 times the inside diameter.
+
+    Examples
+    --------
+    A hand check at the index w = 4: ``atan(0.7 x 3/(4 pi)) = atan(0.1671) = 9.49 deg``.
+
     >>> round(float(np.degrees(helix_angle(max_pitch(1.0, 4.0), 4.0))), 2)  # w = 4
     9.49
     """

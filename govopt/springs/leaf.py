@@ -473,7 +473,21 @@ def article_arc_length(l, x):
 def stock_sections():
     """Stock flat sections ``(widths, thicknesses)`` (m, paired arrays: every width with every
     thickness below a quarter of it) from ``govopt/data/leaf_stock.csv`` (sources in its
-    header)."""
+    header).
+
+    Returns
+    -------
+    tuple of array [m] and array [m]
+        Widths and thicknesses, paired element by element.
+
+    Examples
+    --------
+    Every pair keeps ``t <= w/4``, the strip bending about its weak axis:
+
+    >>> w, t = stock_sections()
+    >>> bool(len(w) == len(t) > 0 and (t <= 0.25 * w).all())
+    True
+    """
     text = resources.files("govopt").joinpath("data/leaf_stock.csv").read_text(encoding="utf-8")
     rows = csv.DictReader(line for line in text.splitlines() if not line.startswith("#"))
     series = {"width": [], "thickness": []}
