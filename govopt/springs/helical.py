@@ -140,7 +140,35 @@ def bergstrasser_factor(C):
 
 
 def correction_factor(C, correction: str):
-    """Stress-correction factor: ``"none"`` (1), ``"wahl"`` or ``"bergstrasser"``."""
+    """Stress-correction factor K (-): ``"none"`` (1), ``"wahl"`` or ``"bergstrasser"``.
+
+    Parameters
+    ----------
+    C : float or array [-]
+        Spring index ``D/d``, dimensionless.
+    correction : str [-]
+        ``"none"``, ``"wahl"`` (:func:`wahl_factor`) or ``"bergstrasser"``
+        (:func:`bergstrasser_factor`); anything else is a ValueError.
+
+    Returns
+    -------
+    float or array [-]
+        The factor K, shaped like ``C``.
+
+    References
+    ----------
+    [en13906-1] factor k; [shigley] eq. (10-5); [wahl] eq. (2-12).
+
+    Examples
+    --------
+    Shigley Problem 10-3 (10th ed. solutions manual) prints K_B = 1.117 at C = 11.4; Wahl's
+    factor at C = 4 by hand is 15/12 + 0.615/4 = 1.40375.
+
+    >>> round(float(correction_factor(11.4, "bergstrasser")), 3)
+    1.117
+    >>> float(correction_factor(4.0, "none")), round(float(correction_factor(4.0, "wahl")), 5)
+    (1.0, 1.40375)
+    """
     if correction == "none":
         return np.ones_like(np.asarray(C, dtype=float))
     if correction == "wahl":
@@ -272,7 +300,30 @@ def solid_length(d_max, n_t, ends: str = "closed_ground"):
 def end_coils(ends: str) -> float:
     """Inactive coils ``n_t - n`` of the end form ``ends`` (:data:`END_FORMS`): 2 for closed
     ends (EN 13906-1, cold coiled), 1 for open and ground, 0 for open ends (Shigley Table
-    10-1)."""
+    10-1).
+
+    Parameters
+    ----------
+    ends : str [-]
+        End form, a key of :data:`END_FORMS`; anything else is a ValueError.
+
+    Returns
+    -------
+    float [-]
+        Inactive coils, ``n_t - n``.
+
+    References
+    ----------
+    [en13906-1] solid length (cold coiled, closed ends: n_t = n + 2); [shigley] Table 10-1.
+
+    Examples
+    --------
+    Shigley Table 10-1: squared ends N_t = N_a + 2, plain and ground N_t = N_a + 1, plain
+    ends N_t = N_a.
+
+    >>> [end_coils(e) for e in ("squared", "plain_ground", "plain")]
+    [2.0, 1.0, 0.0]
+    """
     try:
         return END_FORMS[ends].end_coils
     except KeyError:
@@ -285,6 +336,38 @@ def sum_of_min_gaps(d, D, n, dynamic: bool = False, hot: bool = False):
     EN 13906-1:2013 (least working length): cold coiled ``S_a = n (0.0015 D^2/d + 0.1 d)``,
     hot coiled ``S_a = 0.02 n (D + d)``; under dynamic load multiplied by 1.5 (cold) or 2 (hot). The
     constants are dimensionless (``D^2/d`` is a length), so the formula holds in any unit.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    dynamic : bool [-]
+        The spring works under dynamic load.
+    hot : bool [-]
+        The spring is hot coiled.
+
+    Returns
+    -------
+    float or array [m]
+        The least sum of the gaps, ``S_a``.
+
+    References
+    ----------
+    [en13906-1] least working length, S_a.
+
+    Examples
+    --------
+    A hand calculation: 10 coils of 2 mm wire on a 20 mm coil, cold coiled, static:
+    ``10 (0.0015 x 400/2 + 0.1 x 2) = 10 (0.3 + 0.2) = 5.0 mm``; dynamic 1.5 times that.
+
+    >>> round(float(sum_of_min_gaps(2e-3, 20e-3, 10)) * 1e3, 3)  # mm
+    5.0
+    >>> round(float(sum_of_min_gaps(2e-3, 20e-3, 10, dynamic=True)) * 1e3, 3)  # mm
+    7.5
     """
     d = np.asarray(d, dtype=float)
     if hot:
@@ -296,7 +379,44 @@ def min_working_length(d, D, n, n_t, ends: str = "closed_ground", dynamic: bool 
                        hot: bool = False, d_max=None):
     """Least admissible working length ``L_n = L_c + S_a`` (EN 13906-1:2013), m: the solid
     length with the largest wire diameter ``d_max`` (default: ``d``, where its tolerance is
-    unknown) and the gaps :func:`sum_of_min_gaps` with the nominal ``d``."""
+    unknown) and the gaps :func:`sum_of_min_gaps` with the nominal ``d``.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Nominal wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    n_t : float or array [-]
+        Total number of coils.
+    ends : str [-]
+        End form, a key of :data:`END_FORMS`.
+    dynamic : bool [-]
+        The spring works under dynamic load.
+    hot : bool [-]
+        The spring is hot coiled.
+    d_max : float or array or None [m]
+        Largest wire diameter within tolerance (``None``: ``d``).
+
+    Returns
+    -------
+    float or array [m]
+        The least working length ``L_n``.
+
+    References
+    ----------
+    [en13906-1] least working length L_n = L_c + S_a.
+
+    Examples
+    --------
+    A hand calculation: 12 coils (10 active) of 2 mm wire, closed and ground, on a 20 mm coil:
+    ``L_c = 12 x 2 = 24 mm`` and ``S_a = 5 mm`` (:func:`sum_of_min_gaps`), 29 mm.
+
+    >>> round(float(min_working_length(2e-3, 20e-3, 10, 12)) * 1e3, 3)  # mm
+    29.0
+    """
     return (solid_length(d if d_max is None else d_max, n_t, ends)
             + sum_of_min_gaps(d, D, n, dynamic, hot))
 
@@ -309,6 +429,41 @@ def pitch(L0, d, n, n_t, ends: str = "closed_ground", d_max=None):
 
     Equals Shigley Table 10-1's ``(L0 - 3d)/N_a`` for squared ends and ``(L0 - 2d)/N_a`` for
     squared and ground ends (with N_t = N_a + 2 and ``d_max = d``).
+
+    Parameters
+    ----------
+    L0 : float or array [m]
+        Free length.
+    d : float or array [m]
+        Nominal wire diameter.
+    n : float or array [-]
+        Number of active coils.
+    n_t : float or array [-]
+        Total number of coils.
+    ends : str [-]
+        End form, a key of :data:`END_FORMS`.
+    d_max : float or array or None [m]
+        Largest wire diameter within tolerance (``None``: ``d``).
+
+    Returns
+    -------
+    float or array [m]
+        Pitch of the active coils.
+
+    References
+    ----------
+    [en13906-1] solid length L_c and s_c = L0 - L_c; [shigley] Table 10-1.
+
+    Examples
+    --------
+    A hand calculation: 50 mm free, 12 coils (10 active) of 2 mm wire, closed and ground:
+    ``(50 - 24)/10 + 2 = 4.6 mm``; with squared ends (unground) Shigley's ``(L0 - 3d)/N_a``
+    gives 4.4 mm.
+
+    >>> round(float(pitch(50e-3, 2e-3, 10, 12)) * 1e3, 3)  # mm
+    4.6
+    >>> round(float(pitch(50e-3, 2e-3, 10, 12, "squared")) * 1e3, 3)  # mm, (50 - 6)/10
+    4.4
     """
     return (L0 - solid_length(d if d_max is None else d_max, n_t, ends)) / n + d
 
@@ -317,7 +472,31 @@ def helix_angle(m, D):
     """Pitch (helix) angle of the coils ``alpha = atan(m / (pi D))`` (rad): one turn of mean
     diameter ``D`` (m) advances the pitch ``m`` (m) along the axis.
 
-    >>> round(float(np.degrees(helix_angle(35e-3, 24e-3))), 1)  # 35 mm pitch on a 24 mm coil
+    The geometry of the helix (one coil unrolled is a right triangle of legs ``pi D`` and
+    ``m``); the pitch angle whose effect on the rate :func:`open_coil_stiffness` takes.
+
+    Parameters
+    ----------
+    m : float or array [m]
+        Pitch of the coils.
+    D : float or array [m]
+        Mean coil diameter.
+
+    Returns
+    -------
+    float or array [rad]
+        The helix angle.
+
+    References
+    ----------
+    [wahl] the effect of the pitch angle (the angle's definition).
+
+    Examples
+    --------
+    A hand check: ``atan(35/(24 pi)) = atan(0.4642) = 24.9 deg`` for a 35 mm pitch on a
+    24 mm coil.
+
+    >>> round(float(np.degrees(helix_angle(35e-3, 24e-3))), 1)
     24.9
     """
     return np.arctan(np.asarray(m, dtype=float) / (np.pi * np.asarray(D, dtype=float)))
@@ -331,6 +510,22 @@ def max_pitch(d, D):
     is 9.5 deg at the index w = 4, 11.9 deg at w = 20 and below 12.6 deg at any index: the simple
     rate :func:`stiffness` is then within 1.5 % of :func:`open_coil_stiffness` (steel), against
     6 % at the 25 deg of a 35 mm pitch on a 24 mm coil.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+
+    Returns
+    -------
+    float or array [m]
+        The largest pitch, 0.7 times the inside diameter.
+
+    Examples
+    --------
+    A hand check at the index w = 4: ``atan(0.7 x 3/(4 pi)) = atan(0.1671) = 9.49 deg``.
 
     >>> round(float(np.degrees(helix_angle(max_pitch(1.0, 4.0), 4.0))), 2)  # w = 4
     9.49
@@ -350,6 +545,32 @@ def open_coil_stiffness(d, D, n, G, E, alpha):
     At ``alpha = 0`` it is :func:`stiffness`; like it, it neglects direct shear and the wire's
     curvature, and takes ``alpha`` constant (small deflections).
 
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    G : float or array [Pa]
+        Shear modulus of the wire.
+    E : float or array [Pa]
+        Young's modulus of the wire.
+    alpha : float or array [rad]
+        Helix angle of the coils (:func:`helix_angle`).
+
+    Returns
+    -------
+    float or array [N/m]
+        The axial rate.
+
+    References
+    ----------
+    [wahl] the effect of the pitch angle on the rate; [en13906-1] rate R at ``alpha = 0``.
+
+    Examples
+    --------
     A textbook problem (expertsmind.com, "Open coiled helical spring": alpha = 38 deg,
     E = 200 GPa, G = 80 GPa) prints the extension under-estimated by 14.96 % when alpha is
     neglected, from rounded figures (and cos 38 deg printed as 0.866, which is cos 30 deg);
@@ -370,6 +591,37 @@ def critical_free_length(D, G, E, nu):
     The root of EN 13906-1's buckling formula (:func:`buckling_deflection`): for ``L0 < L0_cr``
     the root is imaginary and the spring is stable at any deflection. For steel
     (G/E = 11.5/30) this is Shigley eq. (10-13), ``L0 < 2.63 D / alpha``.
+
+    Parameters
+    ----------
+    D : float or array [m]
+        Mean coil diameter.
+    G : float or array [Pa]
+        Shear modulus of the wire (only ``G/E`` matters: any common unit).
+    E : float or array [Pa]
+        Young's modulus of the wire.
+    nu : float or array [-]
+        Seating coefficient of the ends (:data:`SEATING`; Shigley's alpha).
+
+    Returns
+    -------
+    float or array [m]
+        The critical free length.
+
+    References
+    ----------
+    [en13906-1] 9.14 (buckling); [shigley] eq. (10-13).
+
+    Examples
+    --------
+    Shigley Problem 10-3 (10th ed. solutions manual): music wire, D = 31 - 2.5 = 28.5 mm,
+    ends between flat plates (alpha = 0.5), prints (L0)_cr = 149.9 mm from 2.63 D/alpha; the
+    root itself is 2.6249 D/alpha (Shigley rounds it up), so 149.6 mm:
+
+    >>> round(float(critical_free_length(1.0, 11.5, 30.0, 1.0)), 4)  # Shigley's 2.63
+    2.6249
+    >>> round(float(critical_free_length(28.5e-3, 11.5, 30.0, 0.5)) * 1e3, 1)  # mm
+    149.6
     """
     ratio = np.asarray(G, dtype=float) / E
     return np.pi * D / nu * np.sqrt((1.0 - ratio) / (0.5 + ratio))
@@ -381,6 +633,39 @@ def buckling_deflection(L0, D, G, E, nu):
     EN 13906-1:2013, 9.14:
     ``s_K = L0 0.5/(1 - G/E) [1 - sqrt(1 - (1 - G/E)/(0.5 + G/E) (pi D/(nu L0))^2)]``,
     with ``nu`` from :data:`SEATING`. The spring is safe when ``s / s_K < 1``.
+
+    Parameters
+    ----------
+    L0 : float or array [m]
+        Free length.
+    D : float or array [m]
+        Mean coil diameter.
+    G : float or array [Pa]
+        Shear modulus of the wire (only ``G/E`` matters).
+    E : float or array [Pa]
+        Young's modulus of the wire.
+    nu : float or array [-]
+        Seating coefficient of the ends (:data:`SEATING`).
+
+    Returns
+    -------
+    float or array [m]
+        The buckling deflection ``s_K``; ``inf`` below :func:`critical_free_length`.
+
+    References
+    ----------
+    [en13906-1] 9.14 (buckling); [shigley] eq. (10-10), the same formula.
+
+    Examples
+    --------
+    Two hand checks, steel (G = 81.5, E = 206 GPa), a 30 mm coil with both ends pivoted
+    (nu = 1): 50 mm free is below the critical 77.4 mm and cannot buckle; 200 mm free buckles
+    after ``0.2 x 0.5/0.6044 x (1 - sqrt(1 - 0.6748 x 0.2221)) = 12.9 mm``.
+
+    >>> float(buckling_deflection(0.05, 0.03, 81.5e9, 206e9, 1.0))
+    inf
+    >>> round(float(buckling_deflection(0.2, 0.03, 81.5e9, 206e9, 1.0)) * 1e3, 1)  # mm
+    12.9
     """
     L0 = np.asarray(L0, dtype=float)
     ratio = np.asarray(G, dtype=float) / E
@@ -393,6 +678,40 @@ def buckling_deflection(L0, D, G, E, nu):
 def diameter_increase(d, D, n, L0, n_t, ends: str = "closed_ground", d_max=None):
     """Increase of the outside diameter at solid length, ``Delta D_e`` (m), EN 13906-1:2013:
     ``0.1 (m^2 - 0.8 m d - 0.2 d^2)/D`` with the pitch ``m`` of :func:`pitch` (ends free to turn).
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Nominal wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    L0 : float or array [m]
+        Free length.
+    n_t : float or array [-]
+        Total number of coils.
+    ends : str [-]
+        End form, a key of :data:`END_FORMS`.
+    d_max : float or array or None [m]
+        Largest wire diameter within tolerance (``None``: ``d``).
+
+    Returns
+    -------
+    float or array [m]
+        The increase of the outside diameter.
+
+    References
+    ----------
+    [en13906-1] increase of the coil diameter on compression.
+
+    Examples
+    --------
+    A hand calculation in mm, the spring of :func:`pitch` (m = 4.6 mm, d = 2 mm, D = 20 mm):
+    ``0.1 (21.16 - 7.36 - 0.8)/20 = 0.065 mm``.
+
+    >>> round(float(diameter_increase(2e-3, 20e-3, 10, 50e-3, 12)) * 1e3, 4)  # mm
+    0.065
     """
     m = pitch(L0, d, n, n_t, ends, d_max)
     return 0.1 * (m**2 - 0.8 * m * d - 0.2 * np.asarray(d, dtype=float) ** 2) / D
@@ -439,10 +758,34 @@ def surge_detuning(f_e, harmonics_hz):
     ``min_i |f_e / f_i - 1|`` over the harmonic frequencies actually present in the excitation
     (last axis of ``harmonics_hz``; a 1-D list of frequencies broadcasts against ``f_e``). A check
     against a band, e.g. ``>= 0.2``, keeps every present harmonic out of +-20 % of ``f_e``.
-    Returns ``inf`` for an empty list (nothing to resonate with).
+    Returns ``inf`` for an empty list (nothing to resonate with). govopt's own measure (no source
+    gives it); the frequency it guards is EN 13906-1's natural frequency (:func:`surge_frequency`).
+
+    Parameters
+    ----------
+    f_e : float or array [Hz]
+        Surge frequency of the spring.
+    harmonics_hz : array [Hz]
+        Frequencies of the excitation's harmonics present (last axis).
+
+    Returns
+    -------
+    float or array [-]
+        The smallest relative detuning, dimensionless.
+
+    References
+    ----------
+    [en13906-1] natural frequency f_e (the frequency compared).
+
+    Examples
+    --------
+    A hand check: the 281 Hz of Shigley Example 10-4 against harmonics at 4, 8 and 250 Hz is
+    nearest to 250 Hz: ``281/250 - 1 = 0.124``.
 
     >>> round(float(surge_detuning(281.0, [4.0, 8.0, 250.0])), 3)
     0.124
+    >>> float(surge_detuning(281.0, []))
+    inf
     """
     f_e = np.asarray(f_e, dtype=float)
     h = np.asarray(harmonics_hz, dtype=float)
@@ -455,18 +798,98 @@ def surge_detuning(f_e, harmonics_hz):
 
 def extension_active_coils(n_body, G, E):
     """Active coils of an extension spring with hooks, ``N_a = N_b + G/E`` (Shigley §10-11):
-    the two end loops add the flexibility of G/E coil."""
+    the two end loops add the flexibility of G/E coil.
+
+    Parameters
+    ----------
+    n_body : float or array [-]
+        Body coils ``N_b``.
+    G : float or array [Pa]
+        Shear modulus of the wire.
+    E : float or array [Pa]
+        Young's modulus of the wire.
+
+    Returns
+    -------
+    float or array [-]
+        Active coils ``N_a``.
+
+    References
+    ----------
+    [shigley] section 10-11 (the loops' added G/E coil).
+
+    Examples
+    --------
+    Shigley Example 10-6 (9th ed.): N_b = 12.17, G = 11.6 and E = 28.7 Mpsi, prints
+    N_a = 12.57.
+
+    >>> round(float(extension_active_coils(12.17, 11.6e6, 28.7e6)), 2)
+    12.57
+    """
     return n_body + np.asarray(G, dtype=float) / E
 
 
 def extension_body_length(d, n_body):
-    """Body length of a close-wound extension spring ``L_b = d (N_b + 1)`` (Shigley §10-11), m."""
+    """Body length of a close-wound extension spring ``L_b = d (N_b + 1)`` (Shigley §10-11), m.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    n_body : float or array [-]
+        Body coils ``N_b``.
+
+    Returns
+    -------
+    float or array [m]
+        Body length ``L_b``.
+
+    References
+    ----------
+    [shigley] section 10-11.
+
+    Examples
+    --------
+    Shigley Example 10-6 (9th ed.): d = 0.035 in, N_b = 12.17; by hand 0.035 x 13.17 =
+    0.461 in.
+
+    >>> round(float(extension_body_length(0.035 * 0.0254, 12.17)) / 0.0254, 3)  # in
+    0.461
+    """
     return np.asarray(d, dtype=float) * (n_body + 1.0)
 
 
 def extension_free_length(d, D, n_body):
     """Free length inside two full loops ``L0 = 2 (D - d) + (N_b + 1) d`` (Shigley §10-11), m:
-    each loop adds its inside diameter ``D - d`` to the body length."""
+    each loop adds its inside diameter ``D - d`` to the body length.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n_body : float or array [-]
+        Body coils ``N_b``.
+
+    Returns
+    -------
+    float or array [m]
+        Free length inside the loops.
+
+    References
+    ----------
+    [shigley] section 10-11.
+
+    Examples
+    --------
+    Shigley Example 10-6 (9th ed.): d = 0.035 in, OD = 0.248 in, N_b = 12.17, prints
+    L0 = 0.817 in.
+
+    >>> inch = 0.0254
+    >>> round(float(extension_free_length(0.035 * inch, 0.213 * inch, 12.17)) / inch, 3)
+    0.817
+    """
     return 2.0 * (D - d) + extension_body_length(d, n_body)
 
 
@@ -498,21 +921,97 @@ def initial_tension_range(C):
 
 def hook_bending_factor(C1):
     """Curvature factor for bending at the hook's inner fibre (point A, Shigley Fig. 10-7a):
-    ``(K)_A = (4 C1^2 - C1 - 1) / (4 C1 (C1 - 1))`` with ``C1 = 2 r1 / d`` (Shigley §10-11)."""
+    ``(K)_A = (4 C1^2 - C1 - 1) / (4 C1 (C1 - 1))`` with ``C1 = 2 r1 / d`` (Shigley §10-11).
+
+    Parameters
+    ----------
+    C1 : float or array [-]
+        Index of the hook's bend, ``2 r1 / d``, dimensionless.
+
+    Returns
+    -------
+    float or array [-]
+        The factor ``(K)_A``.
+
+    References
+    ----------
+    [shigley] section 10-11, Fig. 10-7a (point A).
+
+    Examples
+    --------
+    Shigley Example 10-6 (9th ed.): r1 = 0.106 in, d = 0.035 in, prints (K)_A = 1.140.
+
+    >>> round(float(hook_bending_factor(2 * 0.106 / 0.035)), 3)
+    1.14
+    """
     C1 = np.asarray(C1, dtype=float)
     return (4.0 * C1**2 - C1 - 1.0) / (4.0 * C1 * (C1 - 1.0))
 
 
 def hook_torsion_factor(C2):
     """Curvature factor for torsion at the hook's side bend (point B, Shigley Fig. 10-7b):
-    ``(K)_B = (4 C2 - 1) / (4 C2 - 4)`` with ``C2 = 2 r2 / d`` (Shigley §10-11)."""
+    ``(K)_B = (4 C2 - 1) / (4 C2 - 4)`` with ``C2 = 2 r2 / d`` (Shigley §10-11).
+
+    Parameters
+    ----------
+    C2 : float or array [-]
+        Index of the side bend, ``2 r2 / d``, dimensionless.
+
+    Returns
+    -------
+    float or array [-]
+        The factor ``(K)_B``.
+
+    References
+    ----------
+    [shigley] section 10-11, Fig. 10-7b (point B).
+
+    Examples
+    --------
+    Shigley Example 10-6 (9th ed.): r2 = 0.089 in, d = 0.035 in (C2 = 5.086), prints
+    (K)_B = 1.184.
+
+    >>> round(float(hook_torsion_factor(2 * 0.089 / 0.035)), 3)
+    1.184
+    """
     C2 = np.asarray(C2, dtype=float)
     return (4.0 * C2 - 1.0) / (4.0 * C2 - 4.0)
 
 
 def hook_bending_stress(F, d, D, r1):
     """Normal stress at the hook's point A: bending plus direct tension (Pa), Shigley §10-11:
-    ``sigma_A = F [(K)_A 16 D / (pi d^3) + 4 / (pi d^2)]`` with ``r1`` the hook's mean radius."""
+    ``sigma_A = F [(K)_A 16 D / (pi d^3) + 4 / (pi d^2)]`` with ``r1`` the hook's mean radius.
+
+    Parameters
+    ----------
+    F : float or array [N]
+        Axial force on the spring (its magnitude is used).
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    r1 : float or array [m]
+        Mean radius of the hook (Shigley Fig. 10-7a).
+
+    Returns
+    -------
+    float or array [Pa]
+        The normal stress at A.
+
+    References
+    ----------
+    [shigley] section 10-11, Fig. 10-7a (point A).
+
+    Examples
+    --------
+    Shigley Example 10-6 (9th ed.): 5.25 lbf, d = 0.035 in, D = 0.213 in, r1 = 0.106 in,
+    prints sigma_A = 156.9 kpsi.
+
+    >>> inch, lbf, ksi = 0.0254, 4.4482216152605, 6894757.293168361
+    >>> F, d, D = 5.25 * lbf, 0.035 * inch, 0.213 * inch
+    >>> round(float(hook_bending_stress(F, d, D, 0.106 * inch)) / ksi, 1)  # kpsi
+    156.9
+    """
     d = np.asarray(d, dtype=float)
     KA = hook_bending_factor(2.0 * r1 / d)
     return np.abs(F) * (KA * 16.0 * D / (np.pi * d**3) + 4.0 / (np.pi * d**2))
@@ -521,7 +1020,38 @@ def hook_bending_stress(F, d, D, r1):
 def hook_torsion_stress(F, d, D, r2):
     """Shear stress at the hook's point B (Pa), Shigley §10-11:
     ``tau_B = (K)_B 8 F D / (pi d^3)`` with ``r2`` the bend radius where the hook leaves the
-    body."""
+    body.
+
+    Parameters
+    ----------
+    F : float or array [N]
+        Axial force on the spring (its magnitude is used).
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    r2 : float or array [m]
+        Radius of the side bend (Shigley Fig. 10-7b).
+
+    Returns
+    -------
+    float or array [Pa]
+        The shear stress at B.
+
+    References
+    ----------
+    [shigley] section 10-11, Fig. 10-7b (point B).
+
+    Examples
+    --------
+    Shigley Example 10-6 (9th ed.): 5.25 lbf, d = 0.035 in, D = 0.213 in, r2 = 0.089 in,
+    prints tau_B = 78.6 kpsi.
+
+    >>> inch, lbf, ksi = 0.0254, 4.4482216152605, 6894757.293168361
+    >>> F, d, D = 5.25 * lbf, 0.035 * inch, 0.213 * inch
+    >>> round(float(hook_torsion_stress(F, d, D, 0.089 * inch)) / ksi, 1)  # kpsi
+    78.6
+    """
     d = np.asarray(d, dtype=float)
     return hook_torsion_factor(2.0 * r2 / d) * 8.0 * np.abs(F) * D / (np.pi * d**3)
 
@@ -530,7 +1060,31 @@ def hook_torsion_stress(F, d, D, r2):
 
 def wire_length(D, n_t):
     """Developed wire length ``pi D n_t`` (m) - EN 13906-1 (ends and hooks as coils), the
-    coils' helix rise left out (:func:`helix_wire_length` includes it)."""
+    coils' helix rise left out (:func:`helix_wire_length` includes it).
+
+    Parameters
+    ----------
+    D : float or array [m]
+        Mean coil diameter.
+    n_t : float or array [-]
+        Coils counted (total coils; hooks as coils).
+
+    Returns
+    -------
+    float or array [m]
+        The wire's length.
+
+    References
+    ----------
+    [en13906-1] developed length of the wire (mass of the spring).
+
+    Examples
+    --------
+    A hand check: 10 coils on a 20 mm coil take ``pi x 20 x 10 = 628.3 mm``.
+
+    >>> round(float(wire_length(20e-3, 10)) * 1e3, 1)  # mm
+    628.3
+    """
     return np.pi * np.asarray(D, dtype=float) * n_t
 
 
@@ -543,7 +1097,36 @@ def helix_wire_length(D, n, m, end_coils, d):
     + n_m + n / cos alpha)``, ``alpha`` the helix angle of :func:`helix_angle`), which counts
     the inactive coils as flat circles; they rise by ``d`` per turn here. Lengths in m.
 
-    >>> D, m = 30e-3, 10e-3  # a 30 mm coil of 10 mm pitch: 0.56 % more than pi D a coil
+    govopt's own refinement of EN 13906-1's developed length ``pi D n_t`` (:func:`wire_length`).
+
+    Parameters
+    ----------
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    m : float or array [m]
+        Pitch of the active coils (:func:`pitch`).
+    end_coils : float or array [-]
+        Inactive coils, wound at the pitch ``d``.
+    d : float or array [m]
+        Wire diameter.
+
+    Returns
+    -------
+    float or array [m]
+        The wire's length along the helix.
+
+    References
+    ----------
+    [en13906-1] developed length ``pi D n_t`` (the flat-coil limit).
+
+    Examples
+    --------
+    A hand check: one coil of 10 mm pitch on a 30 mm coil is ``sqrt(1 + (10/(30 pi))^2)`` =
+    1.00561 times ``pi D``:
+
+    >>> D, m = 30e-3, 10e-3
     >>> round(float(helix_wire_length(D, 1.0, m, 0.0, 3e-3) / wire_length(D, 1.0)), 5)
     1.00561
     """
@@ -555,13 +1138,79 @@ def helix_wire_length(D, n, m, end_coils, d):
 def mass(d, D, n_t, density):
     """Wire mass ``rho (pi d^2/4) pi D n_t`` (kg) over ``n_t`` coils (pass the active coils
     for the vibrating mass of :func:`surge_frequency`); the helix rise left out
-    (:func:`helix_mass` includes it)."""
+    (:func:`helix_mass` includes it).
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n_t : float or array [-]
+        Coils counted.
+    density : float or array [kg/m^3]
+        Density of the wire.
+
+    Returns
+    -------
+    float or array [kg]
+        The wire's mass.
+
+    References
+    ----------
+    [en13906-1] mass of the spring; [shigley] eq. (10-25) and Example 10-4 (the active coils'
+    weight W).
+
+    Examples
+    --------
+    Shigley Example 10-4 (9th ed.): 21 active coils of 0.092 in music wire, OD = 9/16 in,
+    prints W = 0.0586 lbf (0.284 lbf/in^3 there, 7861 kg/m^3 here).
+
+    >>> inch, lbf = 0.0254, 4.4482216152605
+    >>> W = mass(0.092 * inch, (9 / 16 - 0.092) * inch, 21, 7861) * 9.80665 / lbf
+    >>> round(float(W), 4)  # lbf
+    0.0586
+    """
     return density * np.pi * np.asarray(d, dtype=float) ** 2 / 4.0 * wire_length(D, n_t)
 
 
 def helix_mass(d, D, n, m, end_coils, density):
     """Wire mass ``rho (pi d^2/4) L`` (kg) with the wire length ``L`` of
-    :func:`helix_wire_length` (the helix rise included); m, kg/m^3."""
+    :func:`helix_wire_length` (the helix rise included); m, kg/m^3.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    n : float or array [-]
+        Number of active coils.
+    m : float or array [m]
+        Pitch of the active coils.
+    end_coils : float or array [-]
+        Inactive coils, wound at the pitch ``d``.
+    density : float or array [kg/m^3]
+        Density of the wire.
+
+    Returns
+    -------
+    float or array [kg]
+        The wire's mass.
+
+    References
+    ----------
+    [en13906-1] mass of the spring (the flat-coil limit, :func:`mass`).
+
+    Examples
+    --------
+    A hand check: 10 active coils of 4.6 mm pitch and 2 closed end coils of 2 mm steel wire on
+    a 20 mm coil weigh 0.23 % more than the 12 flat coils of :func:`mass` (18.59 g):
+
+    >>> rho = 7850
+    >>> round(float(helix_mass(2e-3, 20e-3, 10, 4.6e-3, 2, rho) / mass(2e-3, 20e-3, 12, rho)), 4)
+    1.0023
+    """
     d = np.asarray(d, dtype=float)
     return density * np.pi * d**2 / 4.0 * helix_wire_length(D, n, m, end_coils, d)
 
@@ -579,14 +1228,66 @@ def stiffness_r(d, r, n, G):
     same as the textbook ``G d^4 / (8 D^3 n)`` with ``D = 2 r``. Torsion of the wire only
     (shear and curvature corrections to stiffness are below 1 % for index C > 4).
 
-    >>> round(float(stiffness_r(0.017, 0.06, 8, 83.356525e9)), 1)  # Hamabe case a, N/m
-    62952.3
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius, ``D/2``.
+    n : float or array [-]
+        Number of active turns.
+    G : float or array [Pa]
+        Shear modulus of the wire.
+
+    Returns
+    -------
+    float or array [N/m]
+        The axial stiffness ``kappa``.
+
+    References
+    ----------
+    [hamabe] Example 1, case (a); [en13906-1] rate R with ``D = 2 r``.
+
+    Examples
+    --------
+    Hamabe's Example 1, case (a): d = 1.7 cm, r = 6 cm, n = 8, G = 850000 kg/cm^2 prints
+    64.2 kg per cm; in SI (1 kg = 9.80665 N) G = 83.356525 GPa and kappa = 62952 N/m =
+    64.19 kg/cm.
+
+    >>> kgf = 9.80665
+    >>> k = stiffness_r(0.017, 0.06, 8, 850000 * kgf * 1e4)
+    >>> round(float(k), 1), round(float(k) / (kgf * 100), 1)  # N/m, kg/cm
+    (62952.3, 64.2)
     """
     return G * d**4 / (64.0 * r**3 * n)
 
 
 def spring_index_r(d, r):
-    """Spring index ``C = D / d = 2 r / d`` (Wahl, *Mechanical Springs*, 1944, ch. 2)."""
+    """Spring index ``C = D / d = 2 r / d`` (Wahl, *Mechanical Springs*, 1944, ch. 2).
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius, ``D/2``.
+
+    Returns
+    -------
+    float or array [-]
+        The spring index, dimensionless.
+
+    References
+    ----------
+    [wahl] ch. 2; [shigley] eq. (10-1) with ``D = 2 r``.
+
+    Examples
+    --------
+    Hamabe's Example 1 spring (d = 1.7 cm, r = 6 cm): by hand 12/1.7 = 7.059.
+
+    >>> round(float(spring_index_r(0.017, 0.06)), 3)
+    7.059
+    """
     return 2.0 * r / d
 
 
@@ -620,6 +1321,36 @@ def shear_stress_r(F, d, r, correction: str = "none"):
     ``correction="wahl"`` multiplies by :func:`wahl_factor` of the index ``2 r / d``,
     ``"bergstrasser"`` by Bergstraesser's ``(C + 0.5)/(C - 0.75)`` (EN 13906-1; Shigley eq.
     (10-5); :func:`bergstrasser_factor`).
+
+    Parameters
+    ----------
+    F : float or array [N]
+        Axial force on the spring (its magnitude is used).
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius, ``D/2``.
+    correction : str [-]
+        ``"none"``, ``"wahl"`` or ``"bergstrasser"``; anything else is a ValueError.
+
+    Returns
+    -------
+    float or array [Pa]
+        The shear stress.
+
+    References
+    ----------
+    [hamabe] Example 1; [wahl] eq. (2-12); [en13906-1] factor k; [shigley] eq. (10-5).
+
+    Examples
+    --------
+    Hamabe's Example 1, case (a): F_a = 606 kg on the spring he chose, d = 1.7 cm, r = 6 cm;
+    the paper prints no stress, only that 1.7 cm keeps it under k_s = 4000 kg/cm^2: by hand
+    ``16 x 606 x 6/(pi 1.7^3) = 3769 kg/cm^2`` (1 kg/cm^2 = 98066.5 Pa).
+
+    >>> kgf = 9.80665
+    >>> round(float(shear_stress_r(606 * kgf, 0.017, 0.06)) / 98066.5)  # kg/cm^2
+    3769
     """
     tau = 16.0 * np.abs(F) * r / (np.pi * d**3)
     if correction == "wahl":
@@ -635,12 +1366,70 @@ def wire_diameter_for_stress(F, r, allowable):
     """Least wire diameter that keeps the uncorrected stress at ``allowable``.
 
     ``d = (16 F r / (pi k_s))^(1/3)`` — Hamabe, Example 1.
+
+    Parameters
+    ----------
+    F : float or array [N]
+        Largest axial force on the spring (its magnitude is used).
+    r : float or array [m]
+        Mean coil radius, ``D/2``.
+    allowable : float or array [Pa]
+        Allowable shear stress ``k_s``.
+
+    Returns
+    -------
+    float or array [m]
+        The least wire diameter.
+
+    References
+    ----------
+    [hamabe] Example 1, case (a).
+
+    Examples
+    --------
+    Hamabe's Example 1, case (a): F_a = 606 kg, r = 6 cm, k_s = 4000 kg/cm^2; the paper
+    rounds the result to the 1.7 cm it takes, the formula gives 1.667 cm.
+
+    >>> kgf = 9.80665
+    >>> round(float(wire_diameter_for_stress(606 * kgf, 0.06, 4000 * kgf * 1e4)) * 100, 3)  # cm
+    1.667
     """
     return np.cbrt(16.0 * np.abs(F) * r / (np.pi * allowable))
 
 
 def turns_for_stiffness(kappa, d, r, G):
-    """Active turns for stiffness ``kappa``: ``n = G d^4 / (64 r^3 kappa)`` (Hamabe, Ex. 1)."""
+    """Active turns for stiffness ``kappa``: ``n = G d^4 / (64 r^3 kappa)`` (Hamabe, Ex. 1).
+
+    Parameters
+    ----------
+    kappa : float or array [N/m]
+        Axial stiffness required.
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius, ``D/2``.
+    G : float or array [Pa]
+        Shear modulus of the wire.
+
+    Returns
+    -------
+    float or array [-]
+        Number of active turns.
+
+    References
+    ----------
+    [hamabe] Example 1, case (a).
+
+    Examples
+    --------
+    Hamabe's Example 1, case (a): kappa = 59.7 kg per cm, d = 1.7 cm, r = 6 cm,
+    G = 850000 kg/cm^2 (the scan's printed result is garbled by the OCR; by hand
+    ``850000 x 1.7^4/(64 x 6^3 x 59.7) = 8.60``), after which he takes n = 8.
+
+    >>> kgf = 9.80665
+    >>> round(float(turns_for_stiffness(59.7 * kgf * 100, 0.017, 0.06, 850000 * kgf * 1e4)), 2)
+    8.6
+    """
     return G * d**4 / (64.0 * r**3 * kappa)
 
 
@@ -648,6 +1437,37 @@ def wire_mass(d, r, n, density):
     """Mass of the active coils: wire cross-section ``pi d^2 / 4`` times length ``2 pi r n``.
 
     Ends and hooks are not included (they depend on the end form, which the sources leave open).
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius, ``D/2``.
+    n : float or array [-]
+        Number of active turns.
+    density : float or array [kg/m^3]
+        Density of the wire.
+
+    Returns
+    -------
+    float or array [kg]
+        Mass of the active coils.
+
+    References
+    ----------
+    [en13906-1] mass of the spring (``D = 2 r``); [hamabe] Example 1 (the spring weighed).
+
+    Examples
+    --------
+    Hamabe's Example 1, case (a) spring (d = 1.7 cm, r = 6 cm, n = 8) in steel of
+    7850 kg/m^3; the paper prints no mass: by hand
+    ``7850 x pi 0.017^2/4 x 2 pi 0.06 x 8 = 5.37 kg``, the same as :func:`mass` with D = 2 r.
+
+    >>> round(float(wire_mass(0.017, 0.06, 8, 7850)), 2)  # kg
+    5.37
+    >>> round(float(mass(0.017, 0.12, 8, 7850)), 2)
+    5.37
     """
     return density * (np.pi * d**2 / 4.0) * (2.0 * np.pi * r * n)
 
@@ -658,5 +1478,36 @@ def surge_frequency_r(d, r, n, G, density):
     ``f = (1/2) sqrt(kappa / m)`` with ``m`` the active-coil mass (Wahl 1944, ch. 25; Shigley,
     *Mechanical Engineering Design*, eq. 10-25), which with ``D = 2 r`` is
     ``f = d / (8 pi r^2 n) * sqrt(G / (2 rho))``.
+
+    Parameters
+    ----------
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius, ``D/2``.
+    n : float or array [-]
+        Number of active turns.
+    G : float or array [Pa]
+        Shear modulus of the wire.
+    density : float or array [kg/m^3]
+        Density of the wire.
+
+    Returns
+    -------
+    float or array [Hz]
+        The first surge frequency.
+
+    References
+    ----------
+    [wahl] ch. 25; [shigley] eq. (10-25); [en13906-1] natural frequency f_e.
+
+    Examples
+    --------
+    Shigley Example 10-4 (9th ed.) prints 281 Hz from k and W rounded; the same spring in the
+    radius form (r = D/2) gives what :func:`surge_frequency` gives, 281.5 Hz.
+
+    >>> inch, psi = 0.0254, 6894.757
+    >>> round(float(surge_frequency_r(0.092 * inch, 0.4705 * inch / 2, 21, 11.75e6 * psi, 7861)), 1)
+    281.5
     """
     return d / (8.0 * np.pi * r**2 * n) * np.sqrt(G / (2.0 * density))

@@ -46,7 +46,8 @@ The chord-bow relation (the distance ``l`` between the end attachments when the 
 
 Against the elastica, the straight line overstates ``l`` (by 0.42 % at ``x/L = 0.1``, 2.05 % at
 0.2, 3.8 % at 0.25) and the arc understates it (0.29 %, 1.59 %, 3.3 %); the linear force (eq. 5)
-understates the exact one by 4.3 % at ``x/L = 0.1`` and 20 % at 0.2 (the table in the README).
+falls short of the exact one by 4.1 % at ``x/L = 0.1`` and 16.8 % at 0.2 (the exact force is
+4.3 % and 20 % above it; the table in docs/theory/traction_leaf.md).
 """
 
 from __future__ import annotations
@@ -128,7 +129,31 @@ def moment_arm(span, ends="hinged"):
     """Largest bending moment per unit middle load, ``M/F`` (m): ``span/4`` hinged (at the
     middle), ``span/8`` clamped (at the middle and the ends). ``span``: the leaf's length ``L``
     in the small-deflection theory; the chord ``l`` in the elastica, where each half (quarter)
-    carries ``F/2`` at a lever ``l/2`` (``l/4``) from its root."""
+    carries ``F/2`` at a lever ``l/2`` (``l/4``) from its root.
+
+    Parameters
+    ----------
+    span : float or array [m]
+        The leaf's length ``L`` or its chord ``l`` (see above).
+    ends : str [-]
+        ``"hinged"`` or ``"clamped"`` (:data:`ENDS`).
+
+    Returns
+    -------
+    float or array [m]
+        The largest moment per unit load.
+
+    References
+    ----------
+    [roark] Table 8.1, cases 1a (centre load, simply supported) and 1e (both ends fixed).
+
+    Examples
+    --------
+    Roark's ``M_max = W l/4`` and ``W l/8`` for a 200 mm leaf:
+
+    >>> float(moment_arm(0.2)), float(moment_arm(0.2, "clamped"))
+    (0.05, 0.025)
+    """
     return span / (4.0 if ends == "hinged" else 8.0)
 
 
@@ -136,14 +161,73 @@ def bending_stress(F, w, t, span, ends="hinged"):
     """Largest bending stress ``sigma = M (t/2) / I = 6 M / (w t^2)`` (Pa) under the middle load
     ``F`` (N), ``M = F`` :func:`moment_arm` (Roark Table 8.1 cases 1a, 1e).
 
-    >>> round(float(bending_stress(1.0, 1.0, 1.0, 4.0)), 12)  # M = 1, sigma = 6 M / (w t^2)
+    Parameters
+    ----------
+    F : float or array [N]
+        Load at the middle, across the leaf (its magnitude is used).
+    w : float or array [m]
+        Width of the leaf.
+    t : float or array [m]
+        Thickness of the leaf.
+    span : float or array [m]
+        Span of the moment (:func:`moment_arm`).
+    ends : str [-]
+        ``"hinged"`` or ``"clamped"`` (:data:`ENDS`).
+
+    Returns
+    -------
+    float or array [Pa]
+        The largest bending stress.
+
+    References
+    ----------
+    [roark] Table 8.1, cases 1a and 1e; [traction-article] eq. 7 (I = w t^3/12).
+
+    Examples
+    --------
+    Hand checks: unit moment on a unit section, ``6 x 1/(1 x 1) = 6``; 10 N on a 20 x 1 mm leaf
+    over 200 mm, hinged: ``M = 10 x 0.05 = 0.5 N m``, ``6 x 0.5/(0.02 x 1e-6) = 150 MPa``.
+
+    >>> round(float(bending_stress(1.0, 1.0, 1.0, 4.0)), 12)  # M = 1
     6.0
+    >>> round(float(bending_stress(10.0, 0.02, 0.001, 0.2)) / 1e6, 6)  # MPa
+    150.0
     """
     return 6.0 * np.abs(F) * moment_arm(span, ends) / (w * t**2)
 
 
 def mass(w, t, L, density):
-    """Mass of the strip, ``density w t L`` (kg)."""
+    """Mass of the strip, ``density w t L`` (kg).
+
+    Parameters
+    ----------
+    w : float or array [m]
+        Width of the strip.
+    t : float or array [m]
+        Thickness of the strip.
+    L : float or array [m]
+        Length of the strip.
+    density : float or array [kg/m^3]
+        Density of the material.
+
+    Returns
+    -------
+    float or array [kg]
+        The strip's mass (its volume times the density; no source needed beyond the strip).
+
+    References
+    ----------
+    [traction-article] Fig. 2 (the strip w x t x L).
+
+    Examples
+    --------
+    A hand check: a 1 in x 1/32 in x 8 in steel strip is 0.25 in^3 = 4.097 cm^3, 32.16 g at
+    7850 kg/m^3.
+
+    >>> inch = 0.0254
+    >>> round(float(mass(inch, inch / 32, 8 * inch, 7850)) * 1e3, 2)  # g
+    32.16
+    """
     return density * w * t * L
 
 
@@ -212,6 +296,31 @@ def chord(x, L, model="elastica"):
     ``x >= L/2``; ``"arc"``: beyond a semicircle, ``x/L > 1/pi``; ``"elastica"``: ``x/L >=
     1/2``).
 
+    Parameters
+    ----------
+    x : float or array [m]
+        Bow of the middle off the line of the ends.
+    L : float [m]
+        Length of the leaf.
+    model : str [-]
+        ``"straight"`` (the article's eq. 8), ``"arc"`` (its circular arc, corrected) or
+        ``"elastica"`` (exact).
+
+    Returns
+    -------
+    tuple of float or array [m] and float or array [-]
+        The chord ``l`` and its slope ``dl/dx``.
+
+    References
+    ----------
+    [traction-article] eq. 8 and its circular-arc equation; [bisshopp-drucker] (the elastica).
+
+    Examples
+    --------
+    At x = 0.2 L: the straight line by hand ``sqrt(1 - 0.4^2) = 0.916515``; the elastica's
+    0.89812 is the table's in docs/theory/traction_leaf.md (checked against mpmath); the arc
+    lies 1.59 % below it.
+
     >>> [round(float(chord(0.2, 1.0, m)[0]), 6) for m in CHORD_MODELS]  # x = 0.2 L
     [0.916515, 0.883872, 0.898117]
     """
@@ -241,6 +350,31 @@ def chord(x, L, model="elastica"):
 def bow(l, L, model="elastica"):
     """The inverse of :func:`chord`: bow ``x`` (m) at chord ``l`` (m), ``0 < l <= L``.
 
+    Parameters
+    ----------
+    l : float or array [m]
+        Chord, the distance between the end attachments.
+    L : float [m]
+        Length of the leaf.
+    model : str [-]
+        One of :data:`CHORD_MODELS`.
+
+    Returns
+    -------
+    float or array [m]
+        The bow ``x``.
+
+    References
+    ----------
+    [traction-article] eq. 8 (``x = sqrt(L^2 - l^2)/2``); [bisshopp-drucker] (the elastica).
+
+    Examples
+    --------
+    Eq. 8 by hand, ``sqrt(1 - 0.8^2)/2 = 0.3``; the arc's inverse returns the bow it was
+    given.
+
+    >>> round(float(bow(0.8, 1.0, "straight")), 12)
+    0.3
     >>> round(float(bow(chord(0.15, 1.0, "arc")[0], 1.0, "arc")), 12)
     0.15
     """
@@ -257,8 +391,33 @@ def force_per_stiffness(x, L, model="elastica"):
     (eq. 5; models ``"straight"`` and ``"arc"``), ``f = L alpha^2 / 6`` in the elastica (exact,
     hinged or clamped alike; it stiffens as the lever arms shorten).
 
+    Parameters
+    ----------
+    x : float or array [m]
+        Bow of the middle off the line of the ends.
+    L : float [m]
+        Length of the leaf.
+    model : str [-]
+        One of :data:`CHORD_MODELS`.
+
+    Returns
+    -------
+    tuple of float or array [m] and float or array [-]
+        ``f = F/kappa`` and its slope ``df/dx``.
+
+    References
+    ----------
+    [traction-article] eq. 5 (linear); [bisshopp-drucker] (the elastica).
+
+    Examples
+    --------
+    At x = 0.2 L the exact force is 1.2025 times eq. 5's (eq. 5 falls 16.8 % short, the table
+    in docs/theory/traction_leaf.md); in the linear models ``f = x``.
+
     >>> round(float(force_per_stiffness(0.2, 1.0)[0]) / 0.2, 6)  # exact / eq. 5 at x = 0.2 L
     1.202536
+    >>> float(force_per_stiffness(0.2, 1.0, "straight")[0])
+    0.2
     """
     x = np.asarray(x, dtype=float)
     if model in ("straight", "arc"):
@@ -280,7 +439,28 @@ def article_arc_length(l, x):
     ``2 R arcsin(1 - x/R)``. It is wrong: ``1 - x/R = cos(half-angle)``, so it needs ``arccos``
     (:func:`chord` with ``model="arc"`` is the corrected relation). Kept to show the slip.
 
-    >>> round(float(article_arc_length(0.9, 0.1)), 4)  # the arc through l = 0.9, x = 0.1 is 0.9293
+    Parameters
+    ----------
+    l : float or array [m]
+        Chord, the distance between the end attachments.
+    x : float or array [m]
+        Bow of the middle.
+
+    Returns
+    -------
+    float or array [m]
+        The length the printed formula gives.
+
+    References
+    ----------
+    [traction-article] the circular-arc equation after eq. 9.
+
+    Examples
+    --------
+    The arc through l = 0.9, x = 0.1 has R = 1.0625 and length ``2 R arcsin(0.45/R)`` =
+    0.9293 by hand; the printed formula gives 2.4086:
+
+    >>> round(float(article_arc_length(0.9, 0.1)), 4)
     2.4086
     """
     R = (l**2 + 4.0 * x**2) / (8.0 * x)
@@ -293,7 +473,21 @@ def article_arc_length(l, x):
 def stock_sections():
     """Stock flat sections ``(widths, thicknesses)`` (m, paired arrays: every width with every
     thickness below a quarter of it) from ``govopt/data/leaf_stock.csv`` (sources in its
-    header)."""
+    header).
+
+    Returns
+    -------
+    tuple of array [m] and array [m]
+        Widths and thicknesses, paired element by element.
+
+    Examples
+    --------
+    Every pair keeps ``t <= w/4``, the strip bending about its weak axis:
+
+    >>> w, t = stock_sections()
+    >>> bool(len(w) == len(t) > 0 and (t <= 0.25 * w).all())
+    True
+    """
     text = resources.files("govopt").joinpath("data/leaf_stock.csv").read_text(encoding="utf-8")
     rows = csv.DictReader(line for line in text.splitlines() if not line.startswith("#"))
     series = {"width": [], "thickness": []}
@@ -333,6 +527,26 @@ CONSTRAINTS = (
 def checks(**kw):
     """The constraint table evaluated: a list of :class:`govopt.verdict.Check` (keywords as in
     :data:`CONSTRAINTS`).
+
+    Parameters
+    ----------
+    **kw : float [N, m, Pa] or str [-]
+        ``F`` (N), ``x``, ``w``, ``t``, ``L``, ``span`` (m), ``ends`` (str), ``allowable`` (Pa),
+        ``max_bow_ratio`` (dimensionless, default 0.2).
+
+    Returns
+    -------
+    list of Check [-]
+        One check per row of :data:`CONSTRAINTS`.
+
+    References
+    ----------
+    [roark] Table 8.1 (the stress); [traction-article] eq. 8 (stated for x = 0-20 % of L).
+
+    Examples
+    --------
+    A hand check: 1 N on a 20 x 1 mm leaf over 200 mm, hinged, is 15 MPa (:func:`bending_stress`),
+    well under 1 GPa; the bow 10/200 = 0.05 under 0.2; t/w = 0.05 under 0.25.
 
     >>> [c.passed for c in checks(F=1.0, x=0.01, w=0.02, t=0.001, L=0.2, span=0.2,
     ...                           ends="hinged", allowable=1e9)]

@@ -234,8 +234,42 @@ def material(grade: str, *, tensile_strength: float | None = None, G: float | No
     """The grade named ``grade`` (e.g. ``"EN10270-1 DH"``), with optional overrides in SI.
 
     ``tensile_strength`` (Pa) replaces the grade's R_m(d) by a constant (required for
-    ``"custom"``, which otherwise carries a placeholder).
+    ``"custom"``, which otherwise carries a placeholder). The grades and each number's source are
+    in ``govopt/data/spring_materials.toml``.
 
+    Parameters
+    ----------
+    grade : str [-]
+        A grade of the data file (:data:`GRADES`); an unknown one is a ValueError.
+    tensile_strength : float or None [Pa]
+        Constant tensile strength R_m replacing the grade's curve.
+    G : float or None [Pa]
+        Shear modulus replacing the grade's.
+    E : float or None [Pa]
+        Young's modulus replacing the grade's.
+    density : float or None [kg/m^3]
+        Density replacing the grade's.
+
+    Returns
+    -------
+    Material [-]
+        The grade, all values SI.
+
+    References
+    ----------
+    [en10270-1] grades SM, SH, DM, DH; [en10270-2]; [astm-a228] and [shigley] Table 10-4 (the
+    Shigley grades).
+
+    Examples
+    --------
+    Shigley Problem 10-3 (10th ed. solutions manual) prints S_ut = 1936 MPa for music wire of
+    2.5 mm; EN 10270-1 DH at 2 mm is ``2220 - 820 lg 2 = 1973 MPa``; a custom wire carries the
+    strength given.
+
+    >>> round(float(material("Shigley A228").tensile_strength(2.5e-3)) / 1e6)  # MPa
+    1936
+    >>> round(float(material("EN10270-1 DH").tensile_strength(2e-3)) / 1e6)  # MPa
+    1973
     >>> float(material("custom", tensile_strength=1.6e9).tensile_strength(0.017)) / 1e6
     1600.0
     """
@@ -269,6 +303,24 @@ def wire_sizes(grade: str | None) -> tuple[tuple[float, ...], str]:
     (``govopt/data/wire_sizes.toml``); for a grade no table covers (or none), the ISO 3 R20
     preferred numbers of :data:`govopt.inputs.PREFERRED_WIRE` and :data:`R20_SOURCE`.
 
+    Parameters
+    ----------
+    grade : str or None [-]
+        A grade name (matched by the prefixes of the data file's tables), or ``None``.
+
+    Returns
+    -------
+    tuple of float [m], str [-]
+        The diameters and the text naming their source.
+
+    References
+    ----------
+    [en10270-1] nominal diameters of the example.
+
+    Examples
+    --------
+    EN 10270-1's diameters between 2.5 and 3.2 mm:
+
     >>> sizes, source = wire_sizes("EN10270-1 SH")
     >>> [round(x * 1e3, 2) for x in sizes if 2.5e-3 <= x <= 3.2e-3], source[:10]
     ([2.5, 2.6, 2.8, 3.0, 3.2], 'EN 10270-1')
@@ -287,7 +339,37 @@ def given(G: float, density: float, E: float | None = None) -> Material:
     """A wire without a grade: a stand-in carrying the shear modulus ``G`` and ``density``
     given (SI) and no tensile strength (R_m nan: the rules that read it cannot be applied);
     its elastic modulus, for buckling and an extension spring's loops, is ``E`` or that of
-    ``custom`` (EN 10270-1 steel's 206 GPa)."""
+    ``custom`` (EN 10270-1 steel's 206 GPa).
+
+    govopt's own stand-in (no source defines it); the default E is EN 10270-1 wire's reference
+    value as EN 13906-1 lists it.
+
+    Parameters
+    ----------
+    G : float [Pa]
+        Shear modulus of the wire.
+    density : float [kg/m^3]
+        Density of the wire.
+    E : float or None [Pa]
+        Young's modulus (``None``: 206 GPa).
+
+    Returns
+    -------
+    Material [-]
+        The stand-in, its tensile strength NaN.
+
+    References
+    ----------
+    [en13906-1] reference values of EN 10270-1 wire (E = 206 GPa); [en10270-1].
+
+    Examples
+    --------
+    Hamabe's G = 850000 kg/cm^2 (83.36 GPa) with steel's density, no grade:
+
+    >>> w = given(83.356525e9, 7850.0)
+    >>> float(w.E) / 1e9, bool(np.isnan(w.tensile_strength(0.017)))
+    (206.0, True)
+    """
     custom = materials()["custom"]
     return replace(custom, grade="as given (no wire grade)",
                    standard="shear modulus and allowable stress given",
@@ -311,6 +393,38 @@ def static_rule(mat: Material, place: str, method: str = "EN13906") -> Allowable
     EN 13906 rules depend only on R_m (compression 0.5, solid 0.56, extension 0.45 R_m, against
     the uncorrected stress; hooks are not covered there, so they fall back to Shigley's Table
     10-7); Shigley's depend on the material family (Tables 10-6 and 10-7, against K_B tau).
+
+    Parameters
+    ----------
+    mat : Material [-]
+        The wire (its ``family`` chooses Shigley's row).
+    place : str [-]
+        Where the stress acts, one of :data:`STRESS_PLACES`.
+    method : str [-]
+        ``"EN13906"`` or ``"Shigley"`` (:data:`METHODS`); anything else is a ValueError.
+
+    Returns
+    -------
+    Allowable [-]
+        The fraction of R_m, the stress correction it is compared with, and the rule's source.
+
+    References
+    ----------
+    [en13906-1] static stress (0.5 and 0.56 R_m); [en13906-2] (0.45 R_m); [shigley] Tables 10-6
+    and 10-7.
+
+    Examples
+    --------
+    Shigley Problem 10-3 takes 45 % of S_ut for music wire against K_B tau; EN 13906-1 takes
+    half of R_m against the uncorrected stress:
+
+    >>> mw = material("Shigley A228")
+    >>> r = static_rule(mw, "compression", "Shigley")
+    >>> r.fraction, r.correction
+    (0.45, 'bergstrasser')
+    >>> r = static_rule(mw, "compression")
+    >>> r.fraction, r.correction
+    (0.5, 'none')
     """
     if method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
@@ -330,6 +444,36 @@ def allowable_static_stress(mat: Material, d, place: str, method: str = "EN13906
 
     ``override`` (Pa, e.g. the spec's explicit ``allowable_shear_stress``) wins when given.
 
+    Parameters
+    ----------
+    mat : Material [-]
+        The wire.
+    d : float or array [m]
+        Wire diameter.
+    place : str [-]
+        Where the stress acts, one of :data:`STRESS_PLACES`.
+    method : str [-]
+        ``"EN13906"`` or ``"Shigley"`` (:func:`static_rule`).
+    override : float or None [Pa]
+        An allowable stress given outright.
+
+    Returns
+    -------
+    float or array [Pa]
+        The allowable stress, shaped like ``d``.
+
+    References
+    ----------
+    [en13906-1] static stress; [shigley] Table 10-6 and Problem 10-3.
+
+    Examples
+    --------
+    Shigley Problem 10-3 (10th ed. solutions manual): music wire of 2.5 mm, S_sy = 0.45 x 1936
+    = 871.2 MPa as printed; EN 13906-1 for EN 10270-1 DH at 2 mm, 0.5 x 1973.2 MPa.
+
+    >>> mw = material("Shigley A228")
+    >>> round(float(allowable_static_stress(mw, 2.5e-3, "compression", "Shigley")) / 1e6, 1)
+    871.2
     >>> dh = material("EN10270-1 DH")
     >>> round(float(allowable_static_stress(dh, 2e-3, "compression")) / 1e6, 1)  # 0.5 R_m
     986.6
@@ -340,7 +484,32 @@ def allowable_static_stress(mat: Material, d, place: str, method: str = "EN13906
 
 
 def ksi_to_pa(x):
-    """kpsi to Pa (for worked examples in US units)."""
+    """kpsi to Pa (for worked examples in US units).
+
+    The factor is exact (1 lbf = 4.4482216152605 N, 1 in = 0.0254 m): 6.894757 MPa per kpsi.
+
+    Parameters
+    ----------
+    x : float or array [kpsi]
+        Stress in kpsi.
+
+    Returns
+    -------
+    float or array [Pa]
+        The same stress in Pa.
+
+    References
+    ----------
+    [shigley] Table 10-5 (its moduli in Mpsi and GPa).
+
+    Examples
+    --------
+    Shigley Table 10-5 lists hard-drawn wire's G = 11.6 Mpsi as 80.0 GPa and E = 28.7 Mpsi as
+    197.9 GPa:
+
+    >>> round(float(ksi_to_pa(11.6e3)) / 1e9, 1), round(float(ksi_to_pa(28.7e3)) / 1e9, 1)
+    (80.0, 197.9)
+    """
     return np.asarray(x, dtype=float) * KSI
 
 
@@ -348,6 +517,26 @@ def shigley_A_si(A_kpsi: float, m: float) -> float:
     """Shigley's constant A in MPa mm^m from kpsi in^m: ``A_SI = 6.894757 * 25.4^m * A_US``.
 
     10th ed. solutions manual, Problem 10-2 (music wire: 2215 MPa mm^m).
+
+    Parameters
+    ----------
+    A_kpsi : float [kpsi in^m]
+        Table 10-4's constant A in US units.
+    m : float [-]
+        Table 10-4's exponent m, dimensionless.
+
+    Returns
+    -------
+    float [MPa mm^m]
+        The constant in SI units.
+
+    References
+    ----------
+    [shigley] Table 10-4 (S_ut = A / d^m); 10th ed. solutions manual, Problem 10-2.
+
+    Examples
+    --------
+    Music wire, A = 201 kpsi in^m, m = 0.145: Problem 10-2 answers 2215 (Table 10-4 prints 2211).
 
     >>> round(shigley_A_si(201.0, 0.145))
     2215
