@@ -7,7 +7,7 @@ cvxpy's), and, given a checkout of main (``--main``), ``govopt --help`` as fast 
 (user + system), wall time beside it.
 
 Each command is also measured against its libraries' floor, the import of the packages it needs
-(numpy, pint, typer and rich's tables; the shaft governor's scipy.interpolate, for its valve
+(numpy, pint, typer with the pydantic it converts options with, rich's tables; the shaft governor's scipy.interpolate, for its valve
 table's PCHIP and the swing's root; cvxpy for a spring), within 1.3 x: what a floor costs is
 the libraries' (scipy.interpolate alone takes the shaft governor past 3 x numpy, and govopt
 does not copy a library's algorithm to save its import); what lies above it is govopt's.
@@ -45,8 +45,9 @@ ROOT = Path(__file__).resolve().parents[1]
 SPECS = ROOT / "specs"
 NUMPY = 'python -c "import numpy"'
 CVXPY = 'python -c "import cvxpy"'
-#: the libraries every command loads (units, the CLI, the terminal's tables): govopt's floor
-LIBRARIES = "numpy, pint, typer, rich.console, rich.table"
+#: the libraries every command loads (units, the CLI and its option conversion, typer 0.29's
+#: through pydantic, the terminal's tables): govopt's floor
+LIBRARIES = "numpy, pint, typer, pydantic, rich.console, rich.table"
 FLOOR = f'python -c "import {LIBRARIES}"'
 #: the shaft governor's evaluation adds scipy's PCHIP (its valve table) and brentq
 FLOOR_SHAFT = f'python -c "import {LIBRARIES}, scipy.interpolate"'
