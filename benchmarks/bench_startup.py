@@ -6,11 +6,12 @@ cvxpy's), and, given a checkout of main (``--main``), ``govopt --help`` as fast 
 ``--main`` every govopt command is also run from main, for comparison. In whole-process CPU
 (user + system), wall time beside it.
 
-Each command is also measured against its libraries' floor, the import of the packages it needs
-(numpy, pint, typer with the pydantic it converts options with, rich's tables; the shaft governor's scipy.interpolate, for its valve
-table's PCHIP and the swing's root; cvxpy for a spring), within 1.3 x: what a floor costs is
-the libraries' (scipy.interpolate alone takes the shaft governor past 3 x numpy, and govopt
-does not copy a library's algorithm to save its import); what lies above it is govopt's.
+Each command is also measured against its libraries' floor, the import of the packages it
+needs (numpy, pint, typer with the pydantic it converts options with, rich's tables; the shaft
+governor's scipy.interpolate, for its valve table's PCHIP and the swing's root; cvxpy for a
+spring), within 1.3 x: what a floor costs is the libraries' (scipy.interpolate alone takes the
+shaft governor past 3 x numpy, and govopt does not copy a library's algorithm to save its
+import); what lies above it is govopt's.
 Measure on a plain install (``pip install -e .``): where dask is installed, pint imports
 ``dask.base`` as it loads (pint 0.25), which every quantity-reading command then pays.
 
