@@ -57,8 +57,44 @@ FITS = "extension spring fits between its attachments"
 
 
 def wire(material) -> mt.Material:
-    """The spec's ``[material]`` as a wire grade: the grade with the spec's explicit G, density
-    and R_m; without a grade a stand-in carrying G and density only (no R_m)."""
+    """The spec's ``[material]`` as a wire grade (a :class:`~govopt.springs.materials.Material`).
+
+    The grade with the spec's explicit G, density and R_m; without a grade a stand-in carrying G
+    and density only (no R_m).
+
+    Parameters
+    ----------
+    material : Material [-]
+        The spec's ``[material]`` (moduli in Pa, density in kg/m^3).
+
+    Returns
+    -------
+    Material [-]
+        R_m(d) in Pa for ``d`` in m, the moduli in Pa.
+
+    References
+    ----------
+    [en10270-1] (grade DH: R_m = 2220 - 820 lg(d/mm) MPa, the data file's fit).
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    By hand ``2220 - 820 lg 17 = 1211.0 MPa``; G is Hamabe's 850000 kgf/cm^2 = 83.36 GPa.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> mat = wire(spec.material)
+    >>> mat.grade, round(float(mat.tensile_strength(0.017)) / 1e6, 1)
+    ('EN10270-1 DH', 1211.0)
+    >>> round(float(mat.shear_modulus(0.017)) / 1e9, 2)
+    83.36
+    """
     if material.grade is None:
         return replace(mt.given(material.shear_modulus, material.density),
                        grade="as specified (no wire grade)",
@@ -83,17 +119,96 @@ def harmonics_hz(vib) -> tuple[float, ...]:
 
 
 def fatigue_forces(spec, sd, swing: float):
-    """Least and largest spring force (N) of the load cycle: ``F(x_normal -+ swing / 2)``
-    (``swing`` the peak-to-peak vibration, in the coordinate's unit)."""
+    """Least and largest spring force, N, of the load cycle: ``F(x_normal -+ swing / 2)``.
+
+    The forced vibration about the normal configuration (Hamabe Part II) swings the spring
+    between these (the swing's mean offset, Hamabe's ``L``, neglected).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor.
+    sd : SpringDesign [-]
+        The design (stiffness in N/m, free length in m).
+    swing : float [rad] or [m]
+        Peak-to-peak vibration, in the coordinate's unit.
+
+    Returns
+    -------
+    tuple of float [N]
+        ``(F_lo, F_hi)``.
+
+    References
+    ----------
+    [hamabe] Part I, eq. (2); Part II (the forced vibration).
+
+    Examples
+    --------
+    Hamabe's Example 1 (a): with no swing both are F_n (the paper prints 508 kgf; 509 with
+    omega0 = 240 rpm exactly); a 0.02 rad swing moves them by about
+    ``2 kappa h_n x 0.01 = 2 x 62952 x 0.02882 x 0.01 = 36.3 N`` either side.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> [round(f / KGF) for f in fatigue_forces(spec, sd, 0.0)]
+    [509, 509]
+    >>> [round(f, 1) for f in fatigue_forces(spec, sd, 0.02)]
+    [4958.9, 5031.4]
+    """
     x = spec.governor.x_normal + np.array([-0.5, 0.5]) * swing
     F = statics.spring_force(spec, x, sd.kappa, sd.l0)
     return float(np.min(F)), float(np.max(F))
 
 
 def initial_tension(spec, d, D, F1):
-    """An extension spring's initial tension (N): ``[spring] initial_tension``, else the middle
-    of Shigley's preferred range (eq. (10-40), uncorrected stress) at the index ``D/d``, at most
-    the least working force ``F1``."""
+    """An extension spring's initial tension, N.
+
+    ``[spring] initial_tension`` where the spec gives it, else the middle of Shigley's preferred
+    range (eq. (10-40), uncorrected stress) at the index ``D/d``, at most the least working force
+    ``F1`` (the spring must open over the whole range).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        Its ``[spring]`` form.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter.
+    F1 : float or array [N]
+        Least working force.
+
+    Returns
+    -------
+    float or array [N]
+        The initial tension ``F0``.
+
+    References
+    ----------
+    [shigley] 9th ed. section 10-11, eq. (10-40).
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    At the index 12/1.7 = 7.06 the preferred range is 86.8 to 133.3 MPa; by hand its middle,
+    110.07 MPa, is ``110.07e6 x pi 0.017^3 / (8 x 0.12) = 1770 N``, below F1 = 4114 N.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> round(float(initial_tension(spec, 0.017, 0.12, 4114.0)))
+    1770
+    """
     if spec.spring_form.initial_tension is not None:
         return spec.spring_form.initial_tension + 0.0 * np.asarray(F1, dtype=float)
     lo, hi = hx.initial_tension_range(hx.spring_index(d, D))
@@ -146,6 +261,61 @@ FITS_SOURCE = ("Shigley 9th ed. §10-11: free length inside two full loops 2 (D 
 
 def evaluate_rows(spec, d, D, n, kappa, l0, F1, F2, harmonics=()) -> dict:
     """Every static row over arrays (the optimiser's screen): ``{name: (value, limit, sense)}``.
+
+    The spring kind's static table (:mod:`govopt.springs.checks`: stresses, initial tension,
+    index) and, for an extension spring, the fit between its attachments (Shigley 9th ed.
+    section 10-11: ``2 (D - d) + (n_b + 1) d <= L_v + F0 / kappa``).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]``, ``[spring]`` and requirements.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter (``2 r``).
+    n : float or array [-]
+        Active coils (dimensionless).
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form (the shaft governor: half the spring's length).
+    F1 : float or array [N]
+        Least working force of the static range.
+    F2 : float or array [N]
+        Largest working force.
+    harmonics : tuple of float [Hz], optional
+        The forcing's harmonics present (for the surge row).
+
+    Returns
+    -------
+    dict [-]
+        Row name -> ``(value, limit, sense)`` in the row's SI unit (Pa, N, m).
+
+    References
+    ----------
+    [shigley] 9th ed. sections 10-9, 10-11; [en13906-1].
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    Closed with two full loops it would be ``2 (0.12 - 0.017) + (8 - G/E + 1) 0.017 = 0.352 m``
+    long, more than the attachments' ``2 l0 + F0 / kappa = 0.2594 + 0.0281 = 0.2875 m``: Hamabe's
+    spring is an open-coiled one, not a close-coiled extension spring with loops.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> F1, F2 = static_range(spec, sd.kappa, sd.l0)
+    >>> rows = evaluate_rows(spec, sd.d, 2 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2)
+    >>> value, limit, sense = rows[FITS]
+    >>> round(float(value), 4), round(float(limit), 4), sense
+    (0.3521, 0.2875, '<=')
     """
     kind = KINDS[spec.governor.spring]
     kw = _kw(spec, d, D, n, kappa, l0, F1, F2, harmonics)
@@ -159,7 +329,55 @@ def evaluate_rows(spec, d, D, n, kappa, l0, F1, F2, harmonics=()) -> dict:
 
 
 def feasible(spec, d, D, n, kappa, l0, F1, F2, harmonics=()):
-    """True where every static row holds (arrays broadcast; NaN fails)."""
+    """True where every static row of :func:`evaluate_rows` holds (arrays broadcast; NaN fails).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]``, ``[spring]`` and requirements.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter (``2 r``).
+    n : float or array [-]
+        Active coils (dimensionless).
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form (the shaft governor: half the spring's length).
+    F1 : float or array [N]
+        Least working force of the static range.
+    F2 : float or array [N]
+        Largest working force.
+    harmonics : tuple of float [Hz], optional
+        The forcing's harmonics present.
+
+    Returns
+    -------
+    array of bool [-]
+        One per spring.
+
+    References
+    ----------
+    [shigley] 9th ed. sections 10-9, 10-11; [en13906-1].
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    It fails on the fit between its attachments alone (:func:`evaluate_rows`).
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> F1, F2 = static_range(spec, sd.kappa, sd.l0)
+    >>> bool(feasible(spec, sd.d, 2 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2))
+    False
+    """
     ok = True
     for value, limit, sense in evaluate_rows(spec, d, D, n, kappa, l0, F1, F2,
                                              harmonics).values():
@@ -168,9 +386,63 @@ def feasible(spec, d, D, n, kappa, l0, F1, F2, harmonics=()):
 
 
 def fatigue_safety(spec, d, D, n, kappa, l0, F1, F2, F_lo, F_hi):
-    """The least fatigue safety factor (body, and the hooks of an extension spring) over arrays,
-    for the load cycle ``F_lo .. F_hi`` (N); ``F1``, ``F2`` the static range (for the initial
-    tension)."""
+    """The least fatigue safety factor, dimensionless, for the load cycle ``F_lo .. F_hi``.
+
+    Over the body and, for an extension spring, the hooks (the library's fatigue rows:
+    EN 13906-1's Goodman diagram of the grade, Shigley's hook points A and B), over arrays.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]``, ``[spring]`` and requirements.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter (``2 r``).
+    n : float or array [-]
+        Active coils (dimensionless).
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form (the shaft governor: half the spring's length).
+    F1 : float or array [N]
+        Least working force of the static range.
+    F2 : float or array [N]
+        Largest working force.
+    F_lo : float or array [N]
+        Least force of the load cycle.
+    F_hi : float or array [N]
+        Largest force of the load cycle.
+
+    Returns
+    -------
+    array [-]
+        The least safety factor (dimensionless).
+
+    References
+    ----------
+    [en13906-1] (fatigue diagram); [shigley] 9th ed. sections 10-9, 10-11.
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    A wider cycle about the same mean force is less safe:
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> F1, F2 = static_range(spec, sd.kappa, sd.l0)
+    >>> def safety(lo, hi):
+    ...     return float(fatigue_safety(spec, sd.d, 2 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2,
+    ...                                 lo, hi))
+    >>> safety(4900.0, 5100.0) < safety(4950.0, 5050.0)
+    True
+    """
     kind = KINDS[spec.governor.spring]
     kw = _kw(spec, d, D, n, kappa, l0, F1, F2)
     kw.update(F1=F_lo, F2=F_hi)
@@ -184,8 +456,52 @@ def _static_range(char):
 
 
 def checks(spec, sd, char, vib=None) -> list:
-    """The spring engineering checks of one design (:class:`govopt.verdict.Check`): the static
-    table, an extension spring's fit, and the fatigue rows under the forcing's load cycle."""
+    """The spring engineering checks of one design (:class:`govopt.verdict.Check`, SI).
+
+    The static table, an extension spring's fit, and the fatigue rows under the forcing's load
+    cycle ``F(x_normal -+ peak-to-peak / 2)`` (Hamabe Part II, with the dash-pot) where ``vib``
+    is given.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]``, ``[spring]`` and requirements.
+    sd : SpringDesign [-]
+        The design (wire and coil in m, turns dimensionless, rate in N/m).
+    char : Characteristic [-]
+        Its statics (:func:`statics.characteristic`; spring force in N).
+    vib : VibrationResult [-], optional
+        The forced vibration (peak-to-peak in rad or m); None: no fatigue rows.
+
+    Returns
+    -------
+    list of Check [-]
+        Value and limit in each row's SI unit.
+
+    References
+    ----------
+    [shigley] 9th ed. sections 10-9, 10-11; [en13906-1]; [hamabe] Part II.
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    The body's uncorrected stress ``8 F2 D / (pi d^3) = 8 x 5992.5 x 0.12 / (pi 0.017^3) =
+    372.7 MPa`` is within k_s = 392.3 MPa; only the fit fails.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> cs = checks(spec, sd, statics.characteristic(spec, sd))
+    >>> round(cs[0].value / 1e6, 1), round(cs[0].limit / 1e6, 1), cs[0].name
+    (372.7, 392.3, 'body static shear stress')
+    >>> [c.name for c in cs if not c.passed]
+    ['extension spring fits between its attachments']
+    """
     kind = KINDS[spec.governor.spring]
     d, D, n = sd.d, 2.0 * sd.r, sd.n
     F1, F2 = _static_range(char)
@@ -302,13 +618,61 @@ class SpringReport:
 
 def hook_cycles(mat, d, D, F_lo, F_hi, r2=None, r1=None,
                 criterion: str = ck.DEFAULTS["criterion"]) -> dict:
-    """The fatigue cycle of an extension spring's hooks between the forces ``F_lo`` and
-    ``F_hi`` (N), as the hook checks read it (:mod:`govopt.springs.checks`: Shigley §10-11,
-    hooks taken unpeened; ``r1`` default ``D/2``, ``r2`` default ``2 d``): for point A (bending,
-    Shigley Example 10-7: ``S_e = S_se / 0.577`` with the tensile ``S_ut``) and point B
-    (torsion, ``S_se`` with ``S_su = 0.67 S_ut``) the midrange and amplitude stresses and the
-    line's intercepts (``endurance_Pa`` on the amplitude axis, ``ultimate_Pa`` on the midrange
-    axis), Pa; the safety factor is where the load line through the cycle meets the line."""
+    """The fatigue cycle of an extension spring's hooks between the forces ``F_lo`` and ``F_hi``.
+
+    As the hook checks read it (:mod:`govopt.springs.checks`: Shigley section 10-11, hooks taken
+    unpeened; ``r1`` default ``D/2``, ``r2`` default ``2 d``): for point A (bending, Shigley
+    Example 10-7: ``S_e = S_se / 0.577`` with the tensile ``S_ut``) and point B (torsion,
+    ``S_se`` with ``S_su = 0.67 S_ut``) the midrange and amplitude stresses and the line's
+    intercepts (``endurance`` on the amplitude axis, ``ultimate`` on the midrange axis), Pa; the
+    safety factor is where the load line through the cycle meets the line.
+
+    Parameters
+    ----------
+    mat : Material [-]
+        The wire (R_m in Pa).
+    d : float [m]
+        Wire diameter.
+    D : float [m]
+        Mean coil diameter.
+    F_lo : float [N]
+        Least force of the cycle.
+    F_hi : float [N]
+        Largest force of the cycle.
+    r2 : float [m], optional
+        Bend radius where the hook leaves the body.
+    r1 : float [m], optional
+        The hook's mean radius.
+    criterion : str [-], optional
+        The fatigue line (dimensionless name: ``"goodman"`` ...).
+
+    Returns
+    -------
+    dict [-]
+        ``criterion``, ``source`` and points ``A`` and ``B`` of :class:`Figure` in Pa.
+
+    References
+    ----------
+    [shigley] 9th ed. section 10-11 and Example 10-7.
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    The stresses are linear in the force, so amplitude over midrange is
+    ``(F_hi - F_lo) / (F_hi + F_lo) = 200 / 10000``:
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> A = hook_cycles(wire(spec.material), 0.017, 0.12, 4900.0, 5100.0)["A"]
+    >>> round(A["amplitude"].value / A["midrange"].value, 6), A["stress"]
+    (0.02, 'bending')
+    """
     r1 = D / 2.0 if r1 is None else r1
     r2 = 2.0 * d if r2 is None else r2
     Sut = float(mat.tensile_strength(d))
@@ -401,13 +765,48 @@ def report(spec, sd, char, vib=None) -> SpringReport:
 # ---------------------------------------------------------------- the optimiser's screen
 
 def allowable_monomial(spec, d_lo: float, d_hi: float) -> tuple[float, float]:
-    """``(k, m)`` with the static allowable at most ``k d^-m`` (Pa, ``d`` in m) for every wire
-    in ``[d_lo, d_hi]``: the spec's explicit allowable (``m = 0``), else the grade's rule
-    ``fraction R_m(d)`` fitted by least squares in ``lg R_m`` against ``lg d`` (R_m falls with
-    ``d`` as a near power law: Shigley Table 10-4's ``A / d^m``), then raised until it lies above
-    the rule at 513 log-spaced wires and the table's nodes (a step table's row ends). A
-    monomial keeps the spring GP a GP; lying above makes it a relaxation (its optimum a lower
-    bound)."""
+    """``(k, m)``: the static allowable is at most ``k d^-m`` (Pa, ``d`` in m) on the wires.
+
+    The spec's explicit allowable (``m = 0``), else the grade's rule ``fraction R_m(d)`` fitted
+    by least squares in ``lg R_m`` against ``lg d`` (R_m falls with ``d`` as a near power law:
+    Shigley Table 10-4's ``A / d^m``), then raised until it lies above the rule at 513
+    log-spaced wires and the table's nodes (a step table's row ends). A monomial keeps the
+    spring GP a GP; lying above makes it a relaxation (its optimum a lower bound). govopt's own
+    construction on Shigley's law.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        Its ``[material]`` and governor (the spring kind).
+    d_lo : float [m]
+        Thinnest wire.
+    d_hi : float [m]
+        Thickest wire.
+
+    Returns
+    -------
+    tuple of float
+        ``(k [Pa m^m], m [-])``.
+
+    References
+    ----------
+    [shigley] 9th ed. Table 10-4; [en13906-1] (the allowable as a fraction of R_m).
+
+    Examples
+    --------
+    Hamabe's spec gives k_s = 4000 kgf/cm^2 explicitly: by hand ``4000 x 9.80665e4 =
+    392.266 MPa``, independent of ``d``.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> allowable_monomial(spec, 0.005, 0.02)
+    (392266000.0, 0.0)
+    """
     m_, kind = spec.material, KINDS[spec.governor.spring]
     if m_.allowable_shear_stress is not None:
         return float(m_.allowable_shear_stress), 0.0
@@ -425,8 +824,46 @@ def allowable_monomial(spec, d_lo: float, d_hi: float) -> tuple[float, float]:
 
 
 def static_range(spec, kappa, l0):
-    """Least and largest spring force (N) over the characteristic's configurations
-    (:func:`govopt.analysis.statics.configurations`), for arrays of springs."""
+    """Least and largest spring force, N, over the characteristic's configurations.
+
+    ``F = kappa (A_F - B_F l0)`` (:func:`statics.spring_force`; the shaft governor's
+    ``2 kappa (l - l0)``, Hamabe eq. 2) at :func:`statics.configurations`, for arrays of springs.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor.
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form.
+
+    Returns
+    -------
+    tuple of float or array [N]
+        ``(F1, F2)``.
+
+    References
+    ----------
+    [hamabe] Part I, eq. (2) and Example 1.
+
+    Examples
+    --------
+    Hamabe's Example 1 (a), the paper's spring (64.2 kgf/cm): the paper prints F_a = 606 kgf for
+    the spring the range needs (63.3 kgf/cm with exact arms); its rounded, stiffer spring pulls
+    611 kgf at the outermost configuration, and F_i = 419.2 kgf with the exact arm.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> F1, F2 = static_range(spec, sd.kappa, sd.l0)
+    >>> round(float(F1) / KGF, 1), round(float(F2) / KGF, 1)
+    (419.5, 611.1)
+    """
     A_F, B_F = spec.governor.spring_force_coefficients(statics.configurations(spec))
     A_F, B_F = np.ravel(A_F), np.ravel(B_F)
     if B_F.size and np.all(B_F == B_F[0]) and np.all(np.asarray(kappa) >= 0):
