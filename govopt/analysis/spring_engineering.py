@@ -104,9 +104,42 @@ def wire(material) -> mt.Material:
 
 
 def harmonics_hz(vib) -> tuple[float, ...]:
-    """Frequencies (Hz) ``k omega0 / 2 pi`` of the forcing harmonics present in ``vib`` (a
-    :class:`~govopt.governors.shaft.vibration.VibrationResult`; orders up to
-    ``analysis.harmonics``)."""
+    """Frequencies ``k omega0 / 2 pi``, Hz, of the forcing harmonics present in ``vib``.
+
+    Orders up to ``analysis.harmonics``; a harmonic whose moment is below :data:`PRESENT_RTOL` of
+    the largest is absent (Hamabe Part II: for the vertical engine the odd orders above the first
+    vanish).
+
+    Parameters
+    ----------
+    vib : VibrationResult [-]
+        The forced vibration (its ``omega0`` in rad/s, harmonic moments in N m); None: none.
+
+    Returns
+    -------
+    tuple of float [Hz]
+        The present harmonics' frequencies.
+
+    References
+    ----------
+    [hamabe] Part II, eq. (14).
+
+    Examples
+    --------
+    Hamabe's valve gear on the vertical engine at 240 rpm (4 Hz): orders 1, 2, 4, ..., 12.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> fat = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> vib = screen_vibration(fat, fat.requirements)
+    >>> [round(f, 9) for f in harmonics_hz(vib)]
+    [4.0, 8.0, 16.0, 24.0, 32.0, 40.0, 48.0]
+    """
     if vib is None:
         return ()
     moments = np.array([math.hypot(h["moment_cos_N_m"], h["moment_sin_N_m"])
@@ -565,12 +598,54 @@ class Spread:
 
 
 def spread(spec, sd, sheet: sh.SpringSheet) -> Spread:
-    """The spring's spread under the tolerance model of a made governor
-    (:mod:`govopt.analysis.tolerance`) at the sheet's EN 15800 grade: the wire (EN 10270), coil
+    """The spring's spread under the tolerance model of a made governor (a :class:`Spread`, SI).
+
+    At the sheet's EN 15800 grade (:mod:`govopt.analysis.tolerance`): the wire (EN 10270), coil
     diameter (EN 15800 Table 1) and free length (EN 15800 ``A_L0`` of a compression spring)
     tolerances, the rate's range over them, and the equilibrium speeds' worst case at both ends
-    of the range (at the box's corners, exact: :func:`govopt.analysis.tolerance.speed_band`):
-    the spread of the governed speed range."""
+    of the range (at the box's corners, exact: :func:`govopt.analysis.tolerance.speed_band`): the
+    spread of the governed speed range.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its speeds and ``[material]``.
+    sd : SpringDesign [-]
+        The design (m, kg, N/m).
+    sheet : SpringSheet [-]
+        The spring maker's sheet (its tolerance grade).
+
+    Returns
+    -------
+    Spread [-]
+        Tolerances in m, rates in N/m, speeds in rad/s.
+
+    References
+    ----------
+    [en15800] Table 1; [en10270-1]; [hamabe] Part I, eqs. (2), (12).
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    EN 10270-1: d = 17 mm +- 0.090 mm (row to 18 mm); EN 15800 grade 2, D = 120 mm (row to
+    125 mm), w = 7.06 (4-8): +- 1.40 mm, so the rate lies in ``kappa (d -+ A_d)^4 / d^4 x
+    D^3 / (D +- A_D)^3`` = 59.5 to 66.6 kN/m about its 62.95 kN/m.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> rep = report(spec, sd, statics.characteristic(spec, sd))
+    >>> sp = spread(spec, sd, rep.sheet)
+    >>> round(sp.d_tol * 1e3, 3), round(sp.D_tol * 1e3, 2)
+    (0.09, 1.4)
+    >>> [round(k / 1e3, 1) for k in sp.kappa]
+    [59.5, 66.6]
+    """
     from . import tolerance as tm
 
     cols = {"flying_mass": np.array([sd.m]), "wire_diameter": np.array([sd.d]),
@@ -693,9 +768,53 @@ def hook_cycles(mat, d, D, F_lo, F_hi, r2=None, r1=None,
 
 
 def report(spec, sd, char, vib=None) -> SpringReport:
-    """The sheet (material, d, D, n, ends or hooks, free length, rate, the loads at the range's
-    two ends, tolerance grade, surface), the material's figures at ``d``, the static and
-    fatigue loads, and the tolerance spread of one helical governor spring."""
+    """The spring maker's sheet and the engineering figures of one helical governor spring.
+
+    The sheet (material, d, D, n, ends or hooks, free length, rate, the loads at the range's two
+    ends, tolerance grade, surface), the material's figures at ``d``, the static and fatigue
+    loads (the cycle of the type's forcing, Hamabe Part II, where ``vib`` is given), and the
+    tolerance spread (:func:`spread`).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]`` and ``[spring]``.
+    sd : SpringDesign [-]
+        The design (m, kg, N/m).
+    char : Characteristic [-]
+        Its statics (spring force in N).
+    vib : VibrationResult [-], optional
+        The forced vibration; None: no fatigue (and a note saying so).
+
+    Returns
+    -------
+    SpringReport [-]
+        Figures in SI, each with its unit.
+
+    References
+    ----------
+    [en13906-1] (surge frequency, sheet); [shigley] 9th ed. section 10-11; [en15800];
+    [hamabe] Part II.
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    Its surge frequency with both ends fixed, by hand
+    ``d / (2 pi n D^2) sqrt(G / (2 rho)) = 0.017 / (2 pi 8 0.0144) x sqrt(83.36e9 / 15700)``
+    ``= 54.1 Hz``; no forcing given, so no fatigue.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> rep = report(spec, sd, statics.characteristic(spec, sd))
+    >>> rep.kind, round(rep.loads["surge frequency"].value, 1), rep.notes == [NO_FORCING]
+    ('extension', 54.1, True)
+    """
     m, form = spec.material, spec.spring_form
     kind = KINDS[spec.governor.spring]
     mat = wire(m)
@@ -879,9 +998,44 @@ def static_range(spec, kappa, l0):
 
 
 def screen_vibration(spec, req):
-    """The type's forced vibration for a representative flying mass (the middle of its bounds)
-    when the spec has an engine (as :func:`govopt.evaluate` computes it); None without. Only the
-    harmonics' presence is read from it (the forcing does not involve the spring)."""
+    """The type's forced vibration for a representative flying mass, or None.
+
+    The middle of the flying mass's bounds, when the spec has an engine (as
+    :func:`govopt.evaluate` computes it); None without. Only the harmonics' presence is read from
+    it (the forcing does not involve the spring).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its speed, engine and forcing.
+    req : Requirements [-]
+        The design bounds (``flying_mass`` in kg).
+
+    Returns
+    -------
+    VibrationResult or None [-]
+        Harmonic moments in N m, ``omega0`` in rad/s.
+
+    References
+    ----------
+    [hamabe] Part II, eq. (14).
+
+    Examples
+    --------
+    Hamabe's valve gear (the pendulum bounded to 4-16 kg), 12 harmonics at omega0 = 240 rpm:
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> fat = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> vib = screen_vibration(fat, fat.requirements)
+    >>> round(vib.omega0, 4), len(vib.harmonics)
+    (25.1327, 12)
+    """
     if spec.engine is None or spec.speed is None:
         return None
     gov = spec.governor
@@ -891,20 +1045,121 @@ def screen_vibration(spec, req):
 
 
 def screen(spec, d, r, n, kappa, l0, harmonics=()):
-    """The static table over catalogue springs (arrays): True where every row holds."""
+    """The static table over catalogue springs (arrays): True where every row holds.
+
+    :func:`feasible` at the static range :func:`static_range` of each spring.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]`` and ``[spring]``.
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius.
+    n : float or array [-]
+        Active coils (dimensionless).
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form.
+    harmonics : tuple of float [Hz], optional
+        The forcing's harmonics present.
+
+    Returns
+    -------
+    array of bool [-]
+        One per spring.
+
+    References
+    ----------
+    [shigley] 9th ed. sections 10-9, 10-11; [en13906-1].
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    As :func:`feasible`: it does not fit between its attachments with loops.
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> screen(spec, np.array([sd.d]), np.array([sd.r]), np.array([sd.n]), np.array([sd.kappa]),
+    ...        np.array([sd.l0])).tolist()
+    [False]
+    """
     F1, F2 = static_range(spec, kappa, l0)
     return feasible(spec, d, 2.0 * r, n, kappa, l0, F1, F2, harmonics)
 
 
 def geometry_rows(spec, d, D, n, kappa, l0, F1=None, F2=None) -> dict:
-    """The rows of :data:`govopt.springs.checks.GEOMETRY` over arrays, ``{name: (value, limit,
-    sense)}``: a compression spring's coil clash, buckling (EN 13906-1, the seating
-    ``[spring] seating``, default both ends on flat parallel seats, ``nu = 0.5``) and free pitch
-    (gaps between the coils; at most 0.7 D_i, a helix angle small enough for the rate
-    G d^4 / (8 D^3 n)), which need no wire strength, for a spring without a wire grade (with
-    one, :func:`screen` and :func:`checks` hold them already); none for an extension spring.
-    The static range ``F1 <= F2`` defaults to :func:`static_range`; E is the grade's or,
-    without one, the EN 10270-1 steel default of :func:`wire`."""
+    """The rows of :data:`govopt.springs.checks.GEOMETRY` over arrays: ``{name: (value, ...)}``.
+
+    A compression spring's coil clash, buckling (EN 13906-1, the seating ``[spring] seating``,
+    default both ends on flat parallel seats, ``nu = 0.5``) and free pitch (gaps between the
+    coils; at most 0.7 D_i, a helix angle small enough for the rate G d^4 / (8 D^3 n)), which need
+    no wire strength, for a spring without a wire grade (with one, :func:`screen` and
+    :func:`checks` hold them already); none for an extension spring. The static range
+    ``F1 <= F2`` defaults to :func:`static_range`; E is the grade's or, without one, the
+    EN 10270-1 steel default of :func:`wire`.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]`` and ``[spring]``.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter (``2 r``).
+    n : float or array [-]
+        Active coils (dimensionless).
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form.
+    F1 : float or array [N], optional
+        Least working force.
+    F2 : float or array [N], optional
+        Largest working force.
+
+    Returns
+    -------
+    dict [-]
+        Row name -> ``(value, limit, sense)`` in the row's SI unit (m, or dimensionless).
+
+    References
+    ----------
+    [en13906-1] clause 9.14 (buckling), the least working length ``L_c + S_a``.
+
+    Examples
+    --------
+    A Hartnell governor's compression spring (the bundled ``hartnell-design`` spec, no wire
+    grade) of 3 mm wire, D 40 mm, 8 active coils, closed ends (10 in all), free length 209.7 mm,
+    working between 180.9 and 230.3 N at 1648 N/m.
+    By hand: the free pitch ``(L0 - 2 d) / n = (209.7 - 6) / 8 = 25.47 mm`` against
+    ``0.7 D_i = 0.7 x 37 = 25.9 mm``; the working length at full lift plus the 10 % overtravel,
+    ``L0 - (F2 + 0.1 (F2 - F1)) / kappa = 209.7 - 142.7 = 67.0 mm``.
+
+    >>> import tomllib
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> data = tomllib.loads(example("hartnell-design").read_text(encoding="utf-8"))
+    >>> data["design"] = {"ball_weight": "2 kgf", "wire_diameter": "3 mm", "coil_radius": "2 cm",
+    ...                   "active_turns": 8}
+    >>> spec = govopt.parse_spec(data, "hartnell")
+    >>> sd = statics.spring_design(spec)
+    >>> rows = geometry_rows(spec, sd.d, 2 * sd.r, sd.n, sd.kappa, sd.l0)
+    >>> v, lim, sense = rows["free pitch <= 0.7 inside diameter (helix angle)"]
+    >>> round(float(v) * 1e3, 2), round(float(lim) * 1e3, 2), sense
+    (25.47, 25.9, '<=')
+    >>> round(float(rows["working length >= least length (coil clash)"][0]) * 1e3, 1)
+    67.0
+    """
     kind = KINDS[spec.governor.spring]
     senses = {r.name: r.sense for r in ck.TABLES[kind] if r.name in ck.GEOMETRY}
     if not senses:  # no geometric row for this kind (an extension spring): nothing to compute
@@ -916,9 +1171,61 @@ def geometry_rows(spec, d, D, n, kappa, l0, F1=None, F2=None) -> dict:
 
 
 def geometry_table(spec, d, D, n, kappa, l0, F1, F2) -> list:
-    """The rows of :func:`geometry_rows` with what a check shows of them, in order:
+    """The rows of :func:`geometry_rows` with what a check shows of them, in order.
+
     ``(row, value, limit, source)`` (:func:`govopt.springs.checks.rows_over`; the row's name,
-    sense and unit); none for a spring kind without geometric rows."""
+    sense and unit); none for a spring kind without geometric rows.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]`` and ``[spring]``.
+    d : float or array [m]
+        Wire diameter.
+    D : float or array [m]
+        Mean coil diameter (``2 r``).
+    n : float or array [-]
+        Active coils (dimensionless).
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form.
+    F1 : float or array [N]
+        Least working force.
+    F2 : float or array [N]
+        Largest working force.
+
+    Returns
+    -------
+    list of tuple [-]
+        ``(Row, value, limit, source)``, values in the row's SI unit.
+
+    References
+    ----------
+    [en13906-1] clause 9.14 (buckling), the least working length.
+
+    Examples
+    --------
+    A Hartnell governor's compression spring (the bundled ``hartnell-design`` spec, no wire
+    grade) of 3 mm wire, D 40 mm, 8 active coils, closed ends (10 in all), free length 209.7 mm,
+    working between 180.9 and 230.3 N at 1648 N/m.
+    The buckling row cites its clause (the spring buckles: 1.06 of the buckling deflection).
+
+    >>> import tomllib
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> data = tomllib.loads(example("hartnell-design").read_text(encoding="utf-8"))
+    >>> data["design"] = {"ball_weight": "2 kgf", "wire_diameter": "3 mm", "coil_radius": "2 cm",
+    ...                   "active_turns": 8}
+    >>> spec = govopt.parse_spec(data, "hartnell")
+    >>> sd = statics.spring_design(spec)
+    >>> F1, F2 = static_range(spec, sd.kappa, sd.l0)
+    >>> table = geometry_table(spec, sd.d, 2 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2)
+    >>> row, value, limit, source = table[1]
+    >>> row.name, round(float(value), 2), source.split(":")[0]
+    ('deflection / buckling deflection', 1.06, 'EN 13906-1, 9.14')
+    """
     kind = KINDS[spec.governor.spring]
     if not any(r.name in ck.GEOMETRY for r in ck.TABLES[kind]):
         return []
@@ -926,7 +1233,51 @@ def geometry_table(spec, d, D, n, kappa, l0, F1, F2) -> list:
 
 
 def geometry_screen(spec, d, r, n, kappa, l0):
-    """True where every row of :func:`geometry_rows` holds (catalogue springs, arrays)."""
+    """True where every row of :func:`geometry_rows` holds (catalogue springs, arrays).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]`` and ``[spring]``.
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius.
+    n : float or array [-]
+        Active coils (dimensionless).
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form.
+
+    Returns
+    -------
+    array of bool [-]
+        One per spring.
+
+    References
+    ----------
+    [en13906-1] clause 9.14 (buckling), the least working length.
+
+    Examples
+    --------
+    A Hartnell governor's compression spring (the bundled ``hartnell-design`` spec, no wire
+    grade) of 3 mm wire, D 40 mm, 8 active coils, closed ends (10 in all), free length 209.7 mm,
+    working between 180.9 and 230.3 N at 1648 N/m.
+    It buckles (:func:`geometry_table`), so it fails the screen:
+
+    >>> import tomllib
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> data = tomllib.loads(example("hartnell-design").read_text(encoding="utf-8"))
+    >>> data["design"] = {"ball_weight": "2 kgf", "wire_diameter": "3 mm", "coil_radius": "2 cm",
+    ...                   "active_turns": 8}
+    >>> spec = govopt.parse_spec(data, "hartnell")
+    >>> sd = statics.spring_design(spec)
+    >>> bool(geometry_screen(spec, sd.d, sd.r, sd.n, sd.kappa, sd.l0))
+    False
+    """
     ok = True
     for value, limit, sense in geometry_rows(spec, d, 2.0 * r, n, kappa, l0).values():
         ok = ok & (value <= limit if sense == "<=" else value >= limit)
@@ -934,8 +1285,58 @@ def geometry_screen(spec, d, r, n, kappa, l0):
 
 
 def screen_fatigue(spec, d, r, n, kappa, l0, swing):
-    """The least fatigue safety factor of springs ``d, r, n, kappa, l0`` (arrays of candidates)
-    under peak-to-peak swings ``swing`` (candidates x dash-pots)."""
+    """The least fatigue safety factor, dimensionless, of candidate springs under swings ``swing``.
+
+    The load cycle ``F(x_normal -+ swing / 2)`` (:func:`fatigue_forces`) for every candidate and
+    dash-pot, then :func:`fatigue_safety`.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its ``[material]`` and ``[spring]``.
+    d : float or array [m]
+        Wire diameter.
+    r : float or array [m]
+        Mean coil radius.
+    n : float or array [-]
+        Active coils (dimensionless).
+    kappa : float or array [N/m]
+        Rate of the whole spring.
+    l0 : float or array [m]
+        Free length in the type's form.
+    swing : array [rad] or [m]
+        Peak-to-peak vibration, candidates x dash-pots.
+
+    Returns
+    -------
+    array [-]
+        Candidates x dash-pots (dimensionless).
+
+    References
+    ----------
+    [hamabe] Part II; [en13906-1]; [shigley] 9th ed. sections 10-9, 10-11.
+
+    Examples
+    --------
+    Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
+    (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
+    The same number as :func:`fatigue_safety` on the cycle of a 0.02 rad swing:
+
+    >>> import govopt
+    >>> from govopt.examples import example
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.load_spec(example("hamabe-design-fatigue"))
+    >>> spec = spec.with_design(govopt.load_spec(example("hamabe-a")).design)
+    >>> sd = statics.spring_design(spec)
+    >>> KGF = 9.80665
+    >>> one = screen_fatigue(spec, np.array([sd.d]), np.array([sd.r]), np.array([sd.n]),
+    ...                      np.array([sd.kappa]), np.array([sd.l0]), np.array([[0.02]]))
+    >>> F1, F2 = static_range(spec, sd.kappa, sd.l0)
+    >>> lo, hi = fatigue_forces(spec, sd, 0.02)
+    >>> two = fatigue_safety(spec, sd.d, 2 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2, lo, hi)
+    >>> bool(np.isclose(one[0, 0], two, rtol=1e-9))
+    True
+    """
     def col(v):
         return np.asarray(v, dtype=float)[:, None]
 
