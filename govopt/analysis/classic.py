@@ -71,7 +71,7 @@ def speed_change(spec, wi, wa):
 
     References
     ----------
-    [rattan] (effort and power of a governor); [textbook-ch3] section 3.4(b).
+    [rattan] (effort and power of a governor); [textbook-ch3] section 3.4, Example 1 (the speeds).
 
     Examples
     --------

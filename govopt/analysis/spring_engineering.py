@@ -334,8 +334,8 @@ def evaluate_rows(spec, d, D, n, kappa, l0, F1, F2, harmonics=()) -> dict:
     Hamabe's Example 1 (a) spring (d 1.7 cm, D 12 cm, 8 turns) drawn from EN 10270-1 DH wire
     (the bundled ``hamabe-design-fatigue`` spec, Hamabe's k_s = 4000 kgf/cm^2 as the allowable).
     Closed with two full loops it would be ``2 (0.12 - 0.017) + (8 - G/E + 1) 0.017 = 0.352 m``
-    long, more than the attachments' ``2 l0 + F0 / kappa = 0.2594 + 0.0281 = 0.2875 m``: Hamabe's
-    spring is an open-coiled one, not a close-coiled extension spring with loops.
+    long, more than the attachments' ``2 l0 + F0 / kappa = 0.2594 + 0.0281 = 0.2875 m``: as a
+    close-coiled extension spring with loops, Hamabe's spring does not fit.
 
     >>> import govopt
     >>> from govopt.examples import example

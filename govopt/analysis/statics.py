@@ -292,7 +292,7 @@ def required_spring(spec: Spec, m, central=None):
 
     References
     ----------
-    [hamabe] Part I, Example 1; [textbook-ch3] section 3.4, Examples 4 and 8.
+    [hamabe] Part I, Example 1; [textbook-ch3] section 3.5, Examples 4 and 8.
 
     Examples
     --------
@@ -445,13 +445,13 @@ def band_spring(spec: Spec, m, central=0.0):
 
     References
     ----------
-    [hamabe] Part I, Example 1; [textbook-ch3] section 3.4, Examples 4 and 8.
+    [hamabe] Part I, Example 1; [textbook-ch3] section 3.5, Examples 4 and 8.
 
     Examples
     --------
     Hamabe's Example 1 (a) with the valve gear's reactions at the local speed (govopt's default;
-    the paper's mean-speed reactions give 63.3, :func:`required_spring`): a softer spring, since
-    the reactions ease as the governor opens faster.
+    the paper's mean-speed reactions give 63.3, :func:`required_spring`): a slightly softer
+    spring, positive and loaded at every configuration, so no refusal.
 
     >>> import govopt
     >>> from govopt.examples import example
