@@ -49,9 +49,47 @@ from . import statics
 
 
 def speed_change(spec, wi, wa):
-    """The speed change ``c`` of the effort and power and whether it is the range's own
-    (``[analysis] speed_change = "range"``: ``wa / wi - 1`` from the innermost configuration,
-    ``wi``, ``wa`` in rad/s, arrays broadcast) or a fraction at the normal configuration."""
+    """The speed change ``c`` of the effort and power, and whether it is the range's own.
+
+    ``[analysis] speed_change = "range"``: ``wa / wi - 1`` from the innermost configuration (the
+    textbook's effort over the range); else the spec's fraction at the normal configuration
+    (Rattan: "a given percentage change of speed").
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        Its analysis options.
+    wi : array [rad/s]
+        Speed at the innermost configuration, per design.
+    wa : array [rad/s]
+        Speed at the outermost configuration (broadcast with ``wi``).
+
+    Returns
+    -------
+    tuple
+        ``(c [-], over_range [-])``: the change (dimensionless, per design) and a bool.
+
+    References
+    ----------
+    [rattan] (effort and power of a governor); [textbook-ch3] section 3.4, Example 1 (the speeds).
+
+    Examples
+    --------
+    The textbook's Example 1 (Porter): 177.5 to 203.2 rpm over the range (the book prints 178.5
+    and 202 rpm, slips of its own arithmetic), so c = 203.2 / 177.5 - 1:
+
+    >>> import govopt
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
+    ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
+    ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
+    ...     "radius_inner": "15 cm", "radius_outer": "25 cm"}})
+    >>> rpm = np.pi / 30
+    >>> c, whole = speed_change(spec.with_analysis(speed_change="range"),
+    ...                         np.array([177.5 * rpm]), np.array([203.2 * rpm]))
+    >>> round(float(c[0]), 4), whole
+    (0.1448, True)
+    """
     change = spec.analysis.speed_change  # Rattan: "a given percentage change of speed"
     if change == "range":
         return np.asarray(wa) / np.asarray(wi) - 1.0, True
@@ -64,14 +102,60 @@ CLASSIC_FIGURES = ("range_rad_s", "sensitiveness", "stability", "effort", "power
 
 
 def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> dict:
-    """The textbook's measures of N designs over their range (see the module docstring), SI,
-    each an array over the designs (:data:`CLASSIC_FIGURES`), and the speeds at which each
-    starts to open and close against its friction (``rise``, ``fall``: N x K). ``sd``: the
-    designs (fields of shape ``(N, 1)``); ``x``: the configurations (K); ``omega``: the
-    characteristic (N x K, rad/s); ``t``: the seam's terms at ``x``; ``band``: the friction band
-    at ``x`` (N x K, :meth:`Governor.friction`); ``ok``: the designs with a characteristic
-    (the others' travel is not sought). Effort and power at the normal configuration for the
-    spec's speed change (over the range: from the innermost configuration to the outermost)."""
+    """The textbook's measures of N designs over their range (see the module docstring), SI.
+
+    Each an array over the designs (:data:`CLASSIC_FIGURES`: range in rad/s, sensitiveness,
+    stability, effort in N or N m, power in J, friction band and insensitiveness), and the speeds
+    at which each starts to open and close against its friction (``rise``, ``fall``: N x K,
+    rad/s). Effort and power at the normal configuration for the spec's speed change (over the
+    range: from the innermost configuration to the outermost).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor, its speeds and analysis options.
+    sd : SpringDesign [-]
+        The designs (fields of shape ``(N, 1)``: kg, N/m, m).
+    x : array [rad] or [m]
+        The configurations (K), in the type's coordinate.
+    omega : array [rad/s]
+        The characteristic, N x K.
+    t : Terms [-]
+        The seam's generalised forces at ``x`` (:func:`statics.terms`).
+    band : array [N m] or [N]
+        The friction band at ``x`` (N x K, :meth:`Governor.friction`).
+    ok : array of bool [-]
+        The designs with a characteristic (the others' travel is not sought).
+
+    Returns
+    -------
+    dict [-]
+        Name -> array over the designs, SI as above.
+
+    References
+    ----------
+    [textbook-ch3] sections 3.2, 3.4(b); [rattan] (sensitiveness, stability, effort, power).
+
+    Examples
+    --------
+    A Porter governor with equal arms pinned on the axis, balls 6 kgf, sleeve 48 kgf: the book's
+    effort ``P = c (w + W)`` is first order in ``c``; govopt's exact ``((1 + c)^2 - 1) / 2``
+    makes it ``c (w + W) (1 + c/2) = 0.01 x 529.56 N x 1.005 = 5.3221 N`` for a 1 % change.
+
+    >>> import govopt
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
+    ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
+    ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
+    ...     "radius_inner": "15 cm", "radius_outer": "25 cm"}})
+    >>> sd = statics.spring_design(spec)
+    >>> x = statics.configurations(spec)
+    >>> t = statics.terms(spec, x, sd.m, sd.central)
+    >>> omega = np.sqrt(t.omega_squared(sd.kappa, sd.l0))[None, :]
+    >>> m = classic_measures(spec, sd, x, omega, t, np.zeros_like(omega), np.array([True]))
+    >>> round(float(m["effort"][0]), 4), str(m["stability"][0])
+    (5.3221, 'stable')
+    """
     gov = spec.governor
     n = omega.shape[0]
     w2 = omega**2
@@ -112,8 +196,50 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
 
 
 def report(spec, measures: dict, i: int) -> dict:
-    """The classic measures of design ``i`` of :func:`classic_measures` as a result reports
-    them (SI; units named), with the type's geometry at the ends and the normal configuration."""
+    """The classic measures of design ``i`` of :func:`classic_measures` as a result reports them.
+
+    SI, units named (``range_rad_s``, ``effort_unit``, ``power_unit``), with the type's geometry
+    at the ends and the normal configuration (:func:`geometry`).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor.
+    measures : dict [-]
+        :func:`classic_measures`' result (SI).
+    i : int [-]
+        The design's index (dimensionless).
+
+    Returns
+    -------
+    dict [-]
+        JSON-ready figures, SI.
+
+    References
+    ----------
+    [textbook-ch3] sections 3.2, 3.4(b); [rattan].
+
+    Examples
+    --------
+    The equal-arm Porter of :func:`classic_measures`: power is effort times the sleeve's lift
+    ``2 h (1 - 1/(1 + c)^2)`` with ``h = 0.2236 m`` at the normal radius 0.2 m, by hand
+    ``5.3221 N x 0.008812 m = 0.0469 J``.
+
+    >>> import govopt
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
+    ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
+    ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
+    ...     "radius_inner": "15 cm", "radius_outer": "25 cm"}})
+    >>> sd = statics.spring_design(spec)
+    >>> x = statics.configurations(spec)
+    >>> t = statics.terms(spec, x, sd.m, sd.central)
+    >>> omega = np.sqrt(t.omega_squared(sd.kappa, sd.l0))[None, :]
+    >>> m = classic_measures(spec, sd, x, omega, t, np.zeros_like(omega), np.array([True]))
+    >>> r = report(spec, m, 0)
+    >>> round(r["power"], 4), r["power_unit"], r["effort_unit"]
+    (0.0469, 'J', 'N')
+    """
     gov = spec.governor
     return {
         "range_rad_s": float(measures["range_rad_s"][i]),
@@ -139,11 +265,37 @@ def report(spec, measures: dict, i: int) -> dict:
 
 
 def effort_note(measures: dict, i: int) -> str:
-    """Why design ``i`` has no effort and power (empty where it has them): over the range
-    (``speed_change = "range"``) the speed must rise from the innermost configuration to the
-    outermost; where it falls or stays, no speed change moves the regulating member outward,
-    and Rattan's effort ``c (w + W)`` of a falling speed would be a negative force, not an
-    effort."""
+    """Why design ``i`` has no effort and power (empty where it has them).
+
+    Over the range (``speed_change = "range"``) the speed must rise from the innermost
+    configuration to the outermost; where it falls or stays, no speed change moves the regulating
+    member outward, and Rattan's effort ``c (w + W)`` of a falling speed would be a negative
+    force, not an effort.
+
+    Parameters
+    ----------
+    measures : dict [-]
+        :func:`classic_measures`' result (its ``change``, dimensionless, and ``over_range``).
+    i : int [-]
+        The design's index (dimensionless).
+
+    Returns
+    -------
+    str [-]
+        The note, or ``""``.
+
+    References
+    ----------
+    [rattan] (effort of a governor).
+
+    Examples
+    --------
+    A speed that falls 2 % over the range:
+
+    >>> print(effort_note({"change": np.array([-0.02]), "over_range": True}, 0))
+    not computed: the speed falls over the range (-2 %), so no rise of speed moves the
+    regulating member (see stability)
+    """
     c = float(measures["change"][i])
     if not measures["over_range"] or c > 0.0:
         return ""
@@ -153,10 +305,44 @@ def effort_note(measures: dict, i: int) -> str:
 
 
 def geometry(spec, x_normal) -> dict:
-    """The type's own geometry (:meth:`Governor.columns`: the Porter's height ``h`` and arm
-    ratio ``k = tan(beta)/tan(alpha)`` (textbook 3.4(b)), a bell-crank governor's sleeve lift,
-    the shaft governor's spring arm ``h`` (Hamabe eq. 2) ...) at the innermost, normal and
-    outermost configurations, SI; each name carries its unit (``height_m``, ``k``)."""
+    """The type's own geometry at the innermost, normal and outermost configurations, SI.
+
+    :meth:`Governor.columns`: the Porter's height ``h`` and arm ratio ``k = tan(beta)/tan(alpha)``
+    (textbook 3.4(b)), a bell-crank governor's sleeve lift, the shaft governor's spring arm ``h``
+    (Hamabe eq. 2) ...; each name carries its unit (``height_m``, ``k``).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor.
+    x_normal : float [rad] or [m]
+        The normal configuration, in the type's coordinate.
+
+    Returns
+    -------
+    dict [-]
+        Name with unit -> ``{"inner", "normal", "outer"}`` floats.
+
+    References
+    ----------
+    [textbook-ch3] section 3.4(b); [hamabe] Part I, eq. (2).
+
+    Examples
+    --------
+    The equal-arm Porter (arms 30 cm on the axis) at radius 0.2 m: by hand
+    ``h = sqrt(0.3^2 - 0.2^2) = 0.2236 m``, and the sleeve has lifted twice the fall of ``h``
+    from the innermost radius 0.15 m (``h = 0.2598 m``): 0.0724 m.
+
+    >>> import govopt
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
+    ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
+    ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
+    ...     "radius_inner": "15 cm", "radius_outer": "25 cm"}})
+    >>> g = geometry(spec, 0.2)
+    >>> round(g["height_m"]["normal"], 4), round(g["sleeve_lift_m"]["normal"], 4), g["k"]["normal"]
+    (0.2236, 0.0724, 1.0)
+    """
     gov = spec.governor
     x = np.array([gov.x_inner, float(x_normal), gov.x_outer])
     out = {}
@@ -168,8 +354,43 @@ def geometry(spec, x_normal) -> dict:
 
 
 def travel_between(spec, x0: float, x1):
-    """Travel of the regulating member from ``x0`` to ``x1`` (a number or an array of ends):
-    ``int s'(u) du`` (Gauss-Legendre, as :func:`_travel`)."""
+    """Travel of the regulating member from ``x0`` to ``x1``: ``int s'(u) du``.
+
+    Eight-point Gauss-Legendre quadrature of the type's :meth:`Governor.travel_slope`, exact to
+    rounding for these smooth linkages (govopt's own; Rattan's power is effort times this travel).
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        The governor.
+    x0 : float [rad] or [m]
+        Configuration from which the member moves.
+    x1 : float or array [rad] or [m]
+        Configuration(s) to which it moves.
+
+    Returns
+    -------
+    float or array [rad] or [m]
+        The member's travel (the sleeve's lift in m; a shaft governor's lever angle in rad).
+
+    References
+    ----------
+    [rattan] (power of a governor); [textbook-ch3] section 3.4(b) (the Porter's sleeve).
+
+    Examples
+    --------
+    The equal-arm Porter from radius 0.15 to 0.25 m: by hand the sleeve lifts
+    ``2 (sqrt(0.3^2 - 0.15^2) - sqrt(0.3^2 - 0.25^2)) = 0.187953 m``.
+
+    >>> import govopt
+    >>> from govopt.analysis import statics
+    >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
+    ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
+    ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
+    ...     "radius_inner": "15 cm", "radius_outer": "25 cm"}})
+    >>> round(travel_between(spec, 0.15, 0.25), 6)
+    0.187953
+    """
     x1 = np.asarray(x1, dtype=float)
     nodes, weights = np.polynomial.legendre.leggauss(8)
     u = 0.5 * (x1 - x0)[..., None] * nodes + 0.5 * (x1 + x0)[..., None]

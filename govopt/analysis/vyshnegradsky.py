@@ -21,23 +21,75 @@ REGIONS = ("oscillatory", "monotonic", "aperiodic", "unstable")
 
 
 def coordinates(a0, a1, a2, a3):
-    """``(A, B)`` of the normal form (see the module docstring); coefficients of eq. (28).
+    """``(A, B)`` of Vyshnegradsky's normal form, dimensionless, from the coefficients of eq. (28).
 
+    ``q = (a3/a0)^(1/3)``, ``A = 3 a1 / (a0 q)``, ``B = 3 a2 / (a0 q^2)`` (module docstring).
+
+    Parameters
+    ----------
+    a0 : float or array [kg m^2]
+        ``I``, the flying masses' inertia (any consistent units: ``A`` and ``B`` are ratios).
+    a1 : float or array [N m s]
+        A third of the dash-pot coefficient ``f``.
+    a2 : float or array [N m]
+        A third of ``I k^2``.
+    a3 : float or array [N m/s]
+        ``2 R omega0 a m rho sin(alpha0)`` (the engine's torque slope over the flywheel).
+
+    Returns
+    -------
+    tuple of float or array [-]
+        ``(A, B)``, dimensionless.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (28), (29); [vyshnegradsky].
+
+    Examples
+    --------
     >>> A, B = coordinates(1.0, 1.0, 1.0, 1.0)   # (s + 1)^3: the triple root
     >>> float(A), float(B)
     (3.0, 3.0)
+
+    Hamabe's Example 3 (a) in the paper's kgf-cm-s units (a0 = 1.76, a1 = 24, k^2 = 360 so
+    a2 = a0 k^2 / 3 = 211.2, a3 = 840):
+
+    >>> A, B = coordinates(1.76, 24.0, 211.2, 840.0)
+    >>> round(float(A), 3), round(float(B), 3)
+    (5.235, 5.895)
     """
     q = np.cbrt(np.asarray(a3, dtype=float) / np.asarray(a0, dtype=float))
     return 3.0 * a1 / (a0 * q), 3.0 * a2 / (a0 * q**2)
 
 
 def region(A: float, B: float, rtol: float = 1e-12) -> str:
-    """Vyshnegradsky's region of the point ``(A, B)``: ``"unstable"`` (``A B <= 1``),
-    ``"aperiodic"`` (three real roots: discriminant
+    """Vyshnegradsky's region of the point ``(A, B)``: one of :data:`REGIONS`.
+
+    ``"unstable"`` (``A B <= 1``), ``"aperiodic"`` (three real roots: discriminant
     ``18 A B - 4 A^3 + A^2 B^2 - 4 B^3 - 27 >= 0``), ``"oscillatory"`` (complex pair decaying
     slower than the real root: ``2 A^3 - 9 A B + 27 > 0``) or ``"monotonic"``. Decided from the
     coefficients, so exact at the triple root ``A = B = 3`` where computed roots scatter.
 
+    Parameters
+    ----------
+    A : float [-]
+        Normal-form coefficient (dimensionless, :func:`coordinates`).
+    B : float [-]
+        Normal-form coefficient (dimensionless).
+    rtol : float [-], optional
+        Relative tolerance of the discriminant's sign (dimensionless).
+
+    Returns
+    -------
+    str [-]
+        The region's name.
+
+    References
+    ----------
+    [vyshnegradsky]; [hurwitz] (``A B > 1``); [hamabe] Part III, eqs. (32), (37).
+
+    Examples
+    --------
     >>> region(3.0, 3.0), region(1.0, 0.5), region(0.5, 4.0), region(4.0, 1.0)
     ('aperiodic', 'unstable', 'oscillatory', 'oscillatory')
     >>> q = 2.5 ** (1 / 3)   # roots -0.5 and -2 +- 1i (scaled): the pair decays faster
@@ -48,10 +100,31 @@ def region(A: float, B: float, rtol: float = 1e-12) -> str:
 
 
 def regions(A, B, rtol: float = 1e-12) -> np.ndarray:
-    """:func:`region` of every point of the arrays ``A``, ``B`` (broadcast together), as indices
-    into :data:`REGIONS`: the same tests in the same order, on a whole grid at once (the
+    """:func:`region` of every point of the arrays ``A``, ``B``, as indices into :data:`REGIONS`.
+
+    The arrays broadcast together; the same tests in the same order, on a whole grid at once (the
     diagram's map of the regions).
 
+    Parameters
+    ----------
+    A : array [-]
+        Normal-form coefficients (dimensionless, :func:`coordinates`).
+    B : array [-]
+        Normal-form coefficients (dimensionless).
+    rtol : float [-], optional
+        Relative tolerance of the discriminant's sign (dimensionless).
+
+    Returns
+    -------
+    array of int [-]
+        Indices into :data:`REGIONS`.
+
+    References
+    ----------
+    [vyshnegradsky]; [hurwitz].
+
+    Examples
+    --------
     >>> [REGIONS[i] for i in regions([3.0, 1.0, 0.5, 4.0], [3.0, 0.5, 4.0, 1.0])]
     ['aperiodic', 'unstable', 'oscillatory', 'oscillatory']
     """
@@ -65,7 +138,37 @@ def regions(A, B, rtol: float = 1e-12) -> np.ndarray:
 
 
 def point(a0, a1, a2, a3) -> dict:
-    """``{"A", "B", "region"}`` of one design's load-change model (JSON-ready)."""
+    """``{"A", "B", "region"}`` of one design's load-change model (JSON-ready).
+
+    Parameters
+    ----------
+    a0 : float or array [kg m^2]
+        ``I``, the flying masses' inertia (any consistent units: ``A`` and ``B`` are ratios).
+    a1 : float or array [N m s]
+        A third of the dash-pot coefficient ``f``.
+    a2 : float or array [N m]
+        A third of ``I k^2``.
+    a3 : float or array [N m/s]
+        ``2 R omega0 a m rho sin(alpha0)`` (the engine's torque slope over the flywheel).
+
+    Returns
+    -------
+    dict [-]
+        ``A`` and ``B`` (dimensionless floats) and the region's name.
+
+    References
+    ----------
+    [hamabe] Part III, eqs. (28), (37); [vyshnegradsky].
+
+    Examples
+    --------
+    Hamabe's Example 3 (a), kgf-cm-s units: with a1 = 24 the paper prints three real roots
+    (-29.1, -10, -1.7; the cubic's own are -29.10, -10.20, -1.61), with a1 = 15 the root -1.5 and
+    the pair -12.043 +- 13.35i decaying faster (the cubic's: -1.47, -12.05 +- 13.39i).
+
+    >>> point(1.76, 24.0, 211.2, 840.0)["region"], point(1.76, 15.0, 211.2, 840.0)["region"]
+    ('aperiodic', 'monotonic')
+    """
     A, B = (float(v) for v in coordinates(a0, a1, a2, a3))
     return {"A": A, "B": B, "region": region(A, B)}
 
@@ -81,6 +184,24 @@ def boundaries(A_max: float, samples: int = 400) -> dict:
       (the pair ``-r +- i w`` and the real root ``-r``: ``A = 3 r``, ``r (r^2 + w^2) = 1``);
       beyond the cusp it runs inside the aperiodic region and separates nothing.
 
+    Parameters
+    ----------
+    A_max : float [-]
+        Largest ``A`` drawn (dimensionless).
+    samples : int [-], optional
+        Points per curve (dimensionless).
+
+    Returns
+    -------
+    dict [-]
+        Curve name -> ``(A, B)``, dimensionless arrays.
+
+    References
+    ----------
+    [vyshnegradsky]; [hurwitz]; [hamabe] Part III, eqs. (32), (37).
+
+    Examples
+    --------
     >>> c = boundaries(6.0)
     >>> A, B = c["aperiodic"]
     >>> i = int(np.argmin(A)); round(float(A[i]), 6), round(float(B[i]), 6)   # the cusp
