@@ -62,8 +62,8 @@ class Material:
 class SpringForm:
     """``[spring]``: the helical spring's form for the spring engineering checks (SI).
 
-    ``ends`` (:data:`govopt.springs.helical.END_FORMS`) and ``seating``
-    (:data:`~govopt.springs.helical.SEATING`) of a compression spring, its ``inactive_turns``
+    ``ends`` (:data:`govopt.springs.compression.END_FORMS`) and ``seating``
+    (:data:`~govopt.springs.compression.SEATING`) of a compression spring, its ``inactive_turns``
     (``n_t = n + 2`` for closed ends, EN 13906-1), ``overtravel``: the deflection beyond full
     lift (overspeed margin) as a fraction of the working stroke; an extension spring's
     ``initial_tension`` (default: the middle of Shigley's preferred range, at most the least

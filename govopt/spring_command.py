@@ -495,6 +495,8 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
 def _check(v: dict, where: _Where, name: str, entries) -> Outcome:
     """A given spring (module docstring): its geometry, material, loads and rules read and
     checked for consistency, then assessed."""
+    from .springs import compression as hc
+    from .springs import extension as he
     from .springs import helical as hx
     from .springs.assessment import Loads, Spring, assess, extension_free_length
 
@@ -523,7 +525,7 @@ def _check(v: dict, where: _Where, name: str, entries) -> Outcome:
         if total is not None and not total > n:
             where.fail("total_coils", f"expected more than the active coils ({n:g}), got "
                                       f"{total:g}")
-        end_coils = hx.end_coils(ends) if total is None else total - n
+        end_coils = hc.end_coils(ends) if total is None else total - n
         spring = Spring(kind, d, D, n, end_coils, v["free_length"], ends)
         R = float(hx.stiffness(d, D, n, G))
     else:
@@ -539,7 +541,7 @@ def _check(v: dict, where: _Where, name: str, entries) -> Outcome:
         R = float(hx.stiffness(d, D, n, G))
         F0 = v.get("initial_tension")
         if F0 is None:
-            lo, hi = hx.initial_tension_range(D / d)
+            lo, hi = he.initial_tension_range(D / d)
             F0 = float(min(hx.force_at_stress(0.5 * (lo + hi), d, D),
                            v.get("min_force") or math.inf))
             notes.append(f"initial tension not given: {F0:.4g} N, the middle of Shigley's "

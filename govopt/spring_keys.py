@@ -50,9 +50,9 @@ def _methods() -> tuple:
 
 
 def _hooks() -> tuple:
-    from .springs import helical
+    from .springs import extension as he
 
-    return tuple(helical.HOOKS)
+    return tuple(he.HOOKS)
 
 
 # -- keys a designed and a checked spring share -------------------------------------------------

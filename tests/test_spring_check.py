@@ -12,6 +12,7 @@ from clirun import invoke
 
 from govopt.examples import example
 from govopt.report.spring_report import JSON_KEYS
+from govopt.springs import compression as hc
 from govopt.springs import helical as hx
 from govopt.springs import materials as mt
 
@@ -211,7 +212,7 @@ def test_orderable_spring_from_the_grades_table_with_half_turns():
         for n in np.arange(3.0, 40.0, 0.5):
             D = (G * w**4 / (8 * 20e3 * n)) ** (1 / 3)
             R = float(hx.stiffness(w, D, n, G))
-            Ln = float(hx.min_working_length(w, D, n, n + 2, "closed_ground", True, False,
+            Ln = float(hc.min_working_length(w, D, n, n + 2, "closed_ground", True, False,
                                              w + 0.030e-3 if w > 2.6e-3 else w + 0.025e-3))
             spring = Spring("compression", w, D, n, 2.0, Ln + 500.0 / R, "closed_ground")
             a = assess(spring, mat, Loads(0.0, 500.0), rules)

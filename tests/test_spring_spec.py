@@ -11,6 +11,7 @@ from springjson import fig
 
 from govopt.examples import SPECS, example
 from govopt.optimize import spring_literature as sl
+from govopt.springs import compression as hc
 from govopt.springs import helical as hx
 from govopt.springs import tolerances as tl
 
@@ -129,7 +130,7 @@ def test_installed_lengths_and_stroke():
     assert fig(out, "free_length_m") == pytest.approx(0.050 + 500.0 / R)
     d, D, n = (fig(out, k) for k in ("wire_diameter_m", "mean_coil_diameter_m", "active_coils"))
     d_max = float(tl.max_wire_diameter(d, "EN10270-1 SH"))  # EN 13906-1: L_c = n_t d_max
-    L_n = float(hx.min_working_length(d, D, n, n + 2, "closed_ground", True, False, d_max))
+    L_n = float(hc.min_working_length(d, D, n, n + 2, "closed_ground", True, False, d_max))
     assert L_n <= 0.050 * (1 + 1e-6) and L_n == pytest.approx(
         fig(out, "least_working_length_m"), rel=1e-12)
     assert "working length" in out["optimisation"]["active_constraints"]
@@ -327,7 +328,7 @@ def test_long_installed_lengths_pass_their_solid_stress_and_pitch():
     rows = {c["name"]: c for c in out["checks"]}
     assert all(c["passed"] for c in out["checks"]), [n for n, c in rows.items() if not c["passed"]]
     d, D, n = (fig(out, k) for k in ("wire_diameter_m", "mean_coil_diameter_m", "active_coils"))
-    L_c = float(hx.solid_length(tl.max_wire_diameter(d, "EN10270-1 SH"), n + 2,
+    L_c = float(hc.solid_length(tl.max_wire_diameter(d, "EN10270-1 SH"), n + 2,
                                 "closed_ground"))
     F_c = 500.0 + fig(out, "rate_N_per_m") * (0.120 - L_c)  # the force at solid length
     tau_c = float(hx.shear_stress(F_c, d, D))  # EN 13906-1 static: uncorrected

@@ -21,6 +21,8 @@ import numpy as np
 import pytest
 
 from govopt.springs import checks as ck
+from govopt.springs import compression as hc
+from govopt.springs import extension as he
 from govopt.springs import fatigue as fat
 from govopt.springs import helical as hx
 from govopt.springs import materials as mt
@@ -218,7 +220,7 @@ def test_shigley_problem_10_3_compression_static():
     assert float(hx.bergstrasser_factor(D / d)) == pytest.approx(1.117, abs=5e-4)
     Fs = hx.force_at_stress(Ssy, d, D, "bergstrasser")
     assert float(Fs) == pytest.approx(167.9, abs=0.05)
-    Ls = hx.solid_length(d, Nt, "plain_ground")
+    Ls = hc.solid_length(d, Nt, "plain_ground")
     assert float(Ls) == pytest.approx(35e-3)
     L0 = Fs / k + Ls
     # printed 162.8 = 167.9 / 1.314 + 35 from the rounded F_s and k (162.78); unrounded 162.72
@@ -226,11 +228,11 @@ def test_shigley_problem_10_3_compression_static():
     assert float(L0) * 1e3 == pytest.approx(162.8, abs=0.1)
     # Shigley's 2.63 D/alpha is the root of the buckling formula for steel, E/G = 30/11.5:
     # 2.6249, printed rounded to 2.63; so the printed 149.9 mm carries +-0.005 D/alpha = 0.3 mm.
-    L0cr = hx.critical_free_length(D, 11.5, 30.0, hx.SEATING["fixed-fixed"])
+    L0cr = hc.critical_free_length(D, 11.5, 30.0, hc.SEATING["fixed-fixed"])
     assert float(L0cr) / (D / 0.5) == pytest.approx(2.6249, abs=1e-4)
     assert float(L0cr) * 1e3 == pytest.approx(149.9, abs=0.005 * D / 0.5 * 1e3)
     # "needs to be supported": EN 13906-1 gives the deflection at which it buckles, short of F_s
-    sK = hx.buckling_deflection(L0, D, 11.5, 30.0, 0.5)
+    sK = hc.buckling_deflection(L0, D, 11.5, 30.0, 0.5)
     assert float(sK) < float(Fs / k)
 
 
@@ -241,28 +243,28 @@ def test_buckling_formula_against_shigley_and_its_root():
     rng = np.random.default_rng(3)
     D = rng.uniform(5e-3, 0.2, 200)
     G, E = rng.uniform(40e9, 82e9, 200), 206e9
-    nu = rng.choice(list(hx.SEATING.values()), 200)
-    L0cr = hx.critical_free_length(D, G, E, nu)
+    nu = rng.choice(list(hc.SEATING.values()), 200)
+    L0cr = hc.critical_free_length(D, G, E, nu)
     L0 = L0cr * rng.uniform(1.001, 4.0, 200)
     lam = nu * L0 / D
     shigley = L0 * E / (2 * (E - G)) * (1 - np.sqrt(1 - 2 * np.pi**2 * (E - G) / (2 * G + E)
                                                     / lam**2))
-    assert np.allclose(hx.buckling_deflection(L0, D, G, E, nu), shigley, rtol=1e-12)
-    assert np.all(np.isinf(hx.buckling_deflection(0.999 * L0cr, D, G, E, nu)))
+    assert np.allclose(hc.buckling_deflection(L0, D, G, E, nu), shigley, rtol=1e-12)
+    assert np.all(np.isinf(hc.buckling_deflection(0.999 * L0cr, D, G, E, nu)))
     # s_K falls from L0 E/(2(E-G)) (1 - 0) toward 0 as L0 shortens to the critical length ...
-    near = hx.buckling_deflection(1.0000001 * L0cr, D, G, E, nu)
+    near = hc.buckling_deflection(1.0000001 * L0cr, D, G, E, nu)
     assert np.allclose(near, L0cr * E / (2 * (E - G)), rtol=1e-3)
 
 
 def test_end_forms_match_shigley_table_10_1():
     d, Na, L0 = 2e-3, 10.0, 60e-3
     # squared (closed) ends: N_t = N_a + 2, L_s = d (N_t + 1), p = (L0 - 3d)/N_a
-    assert float(hx.solid_length(d, Na + 2, "squared")) == pytest.approx(d * (Na + 3))
-    assert float(hx.pitch(L0, d, Na, Na + 2, "squared")) == pytest.approx((L0 - 3 * d) / Na)
+    assert float(hc.solid_length(d, Na + 2, "squared")) == pytest.approx(d * (Na + 3))
+    assert float(hc.pitch(L0, d, Na, Na + 2, "squared")) == pytest.approx((L0 - 3 * d) / Na)
     # squared and ground: L_s = d N_t, p = (L0 - 2d)/N_a
-    assert float(hx.pitch(L0, d, Na, Na + 2, "closed_ground")) == pytest.approx((L0 - 2 * d) / Na)
+    assert float(hc.pitch(L0, d, Na, Na + 2, "closed_ground")) == pytest.approx((L0 - 2 * d) / Na)
     with pytest.raises(ValueError, match="end form"):
-        hx.solid_length(d, 12, "welded")
+        hc.solid_length(d, 12, "welded")
 
 
 def test_open_coil_stiffness_against_the_simple_rate():
@@ -291,7 +293,7 @@ def test_open_coil_stiffness_against_the_simple_rate():
     # the largest pitch 0.7 D_i keeps the helix angle below atan(0.7/pi) = 12.56 deg at any
     # index, and the simple rate within 1.5 % (steel)
     w = np.linspace(4.0, 20.0, 33)
-    alpha = hx.helix_angle(hx.max_pitch(D / w, D), D)
+    alpha = hc.helix_angle(hc.max_pitch(D / w, D), D)
     assert np.all(np.diff(alpha) > 0) and float(np.degrees(alpha[-1])) == pytest.approx(11.95,
                                                                                         abs=5e-3)
     worst = hx.stiffness(d, D, n, G) / hx.open_coil_stiffness(d, D, n, G, E, np.arctan(0.7 / np.pi))
@@ -302,10 +304,10 @@ def test_min_gaps_are_unit_free_and_grow_under_dynamic_load():
     """EN 13906-1: S_a = n (0.0015 D^2/d + 0.1 d); the constants are dimensionless, so the same
     spring in mm gives 1000 times the metres."""
     d, D, n = 3e-3, 24e-3, 8
-    m = hx.sum_of_min_gaps(d, D, n)
-    assert float(hx.sum_of_min_gaps(d * 1e3, D * 1e3, n)) == pytest.approx(float(m) * 1e3)
+    m = hc.sum_of_min_gaps(d, D, n)
+    assert float(hc.sum_of_min_gaps(d * 1e3, D * 1e3, n)) == pytest.approx(float(m) * 1e3)
     assert float(m) == pytest.approx(8 * (0.0015 * 0.024**2 / 0.003 + 0.0003))
-    assert float(hx.sum_of_min_gaps(d, D, n, dynamic=True)) == pytest.approx(1.5 * float(m))
+    assert float(hc.sum_of_min_gaps(d, D, n, dynamic=True)) == pytest.approx(1.5 * float(m))
 
 
 # ---------------------------------------------------------------- compression: fatigue
@@ -407,30 +409,30 @@ def test_shigley_example_10_6_extension_static():
     assert float(Ssy) / KSI == pytest.approx(119.1, abs=0.05)
     G, E = hd.shear_modulus(d), hd.elastic_modulus(d)  # 11.6 and 28.7 Mpsi (Table 10-5)
     assert float(G) == 80.0e9 and float(E) == 197.9e9
-    Na = hx.extension_active_coils(Nb, G, E)
+    Na = he.extension_active_coils(Nb, G, E)
     assert float(Na) == pytest.approx(12.57, abs=0.005)
     k = hx.stiffness(d, D, Na, G)
     # the book's 17.91 uses G = 11.6 Mpsi, E = 28.7 Mpsi; Table 10-5's SI values round them
     # (80.0 GPa = 11.603 Mpsi): 17.91 within 0.05 %
     assert float(k) / (LBF / INCH) == pytest.approx(17.91, rel=5e-4)
-    assert float(hx.extension_free_length(d, D, Nb)) / INCH == pytest.approx(0.817, abs=5e-4)
+    assert float(he.extension_free_length(d, D, Nb)) / INCH == pytest.approx(0.817, abs=5e-4)
     tau_i = hx.shear_stress(Fi, d, D)
     assert float(tau_i) / KSI == pytest.approx(15.1, abs=0.05)
-    lo, hi = hx.initial_tension_range(C)
+    lo, hi = he.initial_tension_range(C)
     assert float(lo) / KSI == pytest.approx(14.2, abs=0.05)
     assert float(hi) / KSI == pytest.approx(21.2, abs=0.05)
     tau = hx.shear_stress(F, d, D, "bergstrasser")
     assert float(tau) / KSI == pytest.approx(82.0, abs=0.05)
     assert float(Ssy / tau) == pytest.approx(1.45, abs=0.005)
-    assert float(hx.hook_bending_factor(2 * r1 / d)) == pytest.approx(1.140, abs=5e-4)
-    sigma_A = hx.hook_bending_stress(F, d, D, r1)
+    assert float(he.hook_bending_factor(2 * r1 / d)) == pytest.approx(1.140, abs=5e-4)
+    sigma_A = he.hook_bending_stress(F, d, D, r1)
     assert float(sigma_A) / KSI == pytest.approx(156.9, abs=0.05)
     Sy = allowable("hook_bending")
     assert float(Sy) / KSI == pytest.approx(198.5, abs=0.05)
     assert float(Sy / sigma_A) == pytest.approx(1.27, abs=0.005)
     assert float(2 * r2 / d) == pytest.approx(5.086, abs=5e-4)
-    assert float(hx.hook_torsion_factor(2 * r2 / d)) == pytest.approx(1.184, abs=5e-4)
-    tau_B = hx.hook_torsion_stress(F, d, D, r2)
+    assert float(he.hook_torsion_factor(2 * r2 / d)) == pytest.approx(1.184, abs=5e-4)
+    tau_B = he.hook_torsion_stress(F, d, D, r2)
     assert float(tau_B) / KSI == pytest.approx(78.6, abs=0.05)
     Ssy_end = allowable("hook_torsion")
     assert float(Ssy_end) / KSI == pytest.approx(105.9, abs=0.05)

@@ -581,7 +581,7 @@ def test_coil_design_is_buildable():
     """traction-coil-design.toml's design now: the free length within a small multiple of the
     installed 4 in (the article's own replacement spring: 5.31 in), no buckling, no coil
     clash at the throttle closed."""
-    from govopt.springs import helical as hx
+    from govopt.springs import compression as hc
 
     spec, res = _design("traction-coil-design.toml")
     sd, gov = res.spring, spec.governor
@@ -593,7 +593,7 @@ def test_coil_design_is_buildable():
     assert s < _buckling_deflection(sd.l0, 2 * sd.r, spec.material.shear_modulus, 206e9, 0.5)
     least = gov.spring_length - (gov.spacing_open - 2 * math.sqrt(
         gov.arm_length**2 - (gov.x_outer - gov.hinge_radius) ** 2))  # d_2, throttle closed
-    assert float(hx.solid_length(sd.d, sd.n + 2, "closed_ground")) < least
+    assert float(hc.solid_length(sd.d, sd.n + 2, "closed_ground")) < least
     names = {c.name for c in res.checks}
     assert {"deflection / buckling deflection",
             "working length >= least length (coil clash)"} <= names
@@ -605,14 +605,15 @@ def test_coil_design_helix_angle_within_the_limit():
     the rate G d^4/(8 D^3 n) is within 1.5 % of the open-coiled spring's. The design before
     this row was 1.6 mm wire, D = 24 mm, 4 coils, free length 143.3 mm: a 35 mm pitch, 24.9 deg,
     and its simple rate 6.8 % stiffer than the open coil's (music wire, G/E = 11.75/28.5)."""
+    from govopt.springs import compression as hc
     from govopt.springs import helical as hx
 
     spec, res = _design("traction-coil-design.toml")
     sd = res.spring
     d, D = sd.d, 2 * sd.r
-    m = float(hx.pitch(sd.l0 * spec.governor.spring_length_factor, d, sd.n, sd.n + 2,
+    m = float(hc.pitch(sd.l0 * spec.governor.spring_length_factor, d, sd.n, sd.n + 2,
                        "closed_ground"))
-    alpha = float(hx.helix_angle(m, D))
+    alpha = float(hc.helix_angle(m, D))
     assert m <= 0.7 * (D - d) * (1 + 1e-12)
     assert math.degrees(alpha) < math.degrees(math.atan(0.7 * (1 - d / D) / math.pi)) + 1e-9
     assert math.degrees(alpha) < 12.6
@@ -623,6 +624,7 @@ def test_coil_design_helix_angle_within_the_limit():
     assert row.passed and row.value == pytest.approx(m, rel=1e-12)
     # the old design fails the row, and only it among the geometric ones
     from govopt.analysis import spring_engineering as se
+    from govopt.springs import compression as hc
     from govopt.springs import helical as hx
 
     d0, r0, n0, L0 = 1.6e-3, 12e-3, 4.0, 0.14325147278048733
@@ -630,7 +632,7 @@ def test_coil_design_helix_angle_within_the_limit():
     rows = se.geometry_rows(spec, d0, 2 * r0, n0, kappa0, L0)
     value, limit, _ = rows["free pitch <= 0.7 inside diameter (helix angle)"]
     assert float(value) == pytest.approx(35.0e-3, abs=0.05e-3) and float(limit) == 0.7 * 22.4e-3
-    assert math.degrees(float(hx.helix_angle(value, 24e-3))) == pytest.approx(24.9, abs=0.05)
+    assert math.degrees(float(hc.helix_angle(value, 24e-3))) == pytest.approx(24.9, abs=0.05)
     assert [k for k, (v, lim, s) in rows.items() if not (v <= lim if s == "<=" else v >= lim)] \
         == ["free pitch <= 0.7 inside diameter (helix angle)"]
     assert not se.geometry_screen(spec, d0, r0, n0, kappa0, L0)

@@ -41,6 +41,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 
 from ..springs import checks as ck
+from ..springs import extension as he
 from ..springs import fatigue as ft
 from ..springs import helical as hx
 from ..springs import materials as mt
@@ -244,7 +245,7 @@ def initial_tension(spec, d, D, F1):
     """
     if spec.spring_form.initial_tension is not None:
         return spec.spring_form.initial_tension + 0.0 * np.asarray(F1, dtype=float)
-    lo, hi = hx.initial_tension_range(hx.spring_index(d, D))
+    lo, hi = he.initial_tension_range(hx.spring_index(d, D))
     return np.minimum(hx.force_at_stress(0.5 * (lo + hi), d, D), F1)
 
 
@@ -283,7 +284,7 @@ def _static(name: str, spec) -> bool:
 def _fits(kw):
     """``(value, limit)`` of :data:`FITS`: the closed spring with its loops, and the
     attachments' distance at the initial tension."""
-    return (hx.extension_free_length(kw["d"], kw["D"], kw["n_body"]),
+    return (he.extension_free_length(kw["d"], kw["D"], kw["n_body"]),
             kw["L_v"] + kw["F0"] / kw["kappa"])
 
 
@@ -761,10 +762,10 @@ def hook_cycles(mat, d, D, F_lo, F_hi, r2=None, r1=None,
             Figure("endurance", float(endurance), "Pa"), Figure("ultimate", float(ultimate), "Pa"))}
 
     return {"criterion": criterion, "source": ft.ZIMMERLI_SOURCE,
-            "A": point("bending", hx.hook_bending_stress(mid, d, D, r1),
-                       hx.hook_bending_stress(half, d, D, r1), Sse / ft.SHEAR_TO_NORMAL, Sut),
-            "B": point("torsion", hx.hook_torsion_stress(mid, d, D, r2),
-                       hx.hook_torsion_stress(half, d, D, r2), Sse, Ssu)}
+            "A": point("bending", he.hook_bending_stress(mid, d, D, r1),
+                       he.hook_bending_stress(half, d, D, r1), Sse / ft.SHEAR_TO_NORMAL, Sut),
+            "B": point("torsion", he.hook_torsion_stress(mid, d, D, r2),
+                       he.hook_torsion_stress(half, d, D, r2), Sse, Ssu)}
 
 
 def report(spec, sd, char, vib=None) -> SpringReport:

@@ -31,6 +31,7 @@ import numpy as np
 
 from ..limits import MAX_SPRINGS
 from ..springs import checks as ck
+from ..springs import compression as hc
 from ..springs import helical as hx
 from ..springs import tolerances as tl
 from ..springs.assessment import Spring, table, table_keywords
@@ -101,7 +102,7 @@ def _feasible(s: Sizing, sp: Spring, n: np.ndarray, limits: dict) -> np.ndarray:
             ok &= (value <= limit * (1 + 1e-12)) if sense == "<=" else \
                 (value >= limit * (1 - 1e-12))
     if limits.get("Lc_max") is not None and s.kind == "compression":
-        Lc = hx.solid_length(tl.max_wire_diameter(d, s.mat.grade), sp.total_coils, sp.form)
+        Lc = hc.solid_length(tl.max_wire_diameter(d, s.mat.grade), sp.total_coils, sp.form)
         ok &= Lc <= limits["Lc_max"] * (1 + 1e-12)
     return ok
 

@@ -277,7 +277,7 @@ class SpringGP:
 
     def _pitch(self):
         """The active coils' free pitch ``m = (L0 - L_c)/n + d`` (m, EN 13906-1's ``s_c / n +
-        d``, :func:`govopt.springs.helical.pitch`), a posynomial: with the least free length
+        d``, :func:`govopt.springs.compression.pitch`), a posynomial: with the least free length
         ``L0 = L_c + S_a + F_max / R`` it is ``S_a / n + F_max / (R n) + d`` (``pitch_clear``
         1, ``pitch_L2`` tiny), whatever the solid length; with an installed length ``L2`` at
         ``F_max`` the pitch ``(L2 - L_c)/n + F_max/(R n) + d`` lies between that (``L2 >=
@@ -350,7 +350,7 @@ class SpringGP:
         working length ``L_c + S_a <= Ln_max``, the installed length at ``F_max`` (coils clear,
         EN 13906-1: ``L_n`` is the shortest working length allowed). With ``pitch_on`` 1 (tiny:
         off) the free pitch ``m = (L0 - L_c)/n + d <= 0.7 (D - d)`` (Gutekunst, as
-        :func:`govopt.springs.helical.max_pitch`) as the posynomial ``L0/n + 0.7 d <= 1.4 r``,
+        :func:`govopt.springs.compression.max_pitch`) as the posynomial ``L0/n + 0.7 d <= 1.4 r``,
         a restriction (``m <= L0/n``: the ``solid_coils d / n`` it drops is small)."""
         d, r, n, Q = self.d, self.r, self.n, self.free_length_params
         out = {"inside diameter": (Q["Di_min"] + d) / (2.0 * r) <= 1.0}

@@ -35,6 +35,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..springs import compression as hc
+from ..springs import extension as he
 from ..springs import helical as hx
 from ..springs import materials as mt
 from ..springs import tolerances as tl
@@ -51,14 +53,14 @@ def end_coils(kind: str, mat=None, ends: str = "closed_ground") -> float:
     """Coils of wire beyond the ``n`` active ones, counted in the mass (EN 13906-1: the wire
     length ``pi D n_t`` counts ends and loops as coils).
 
-    Compression: the end form's inactive coils (:func:`govopt.springs.helical.end_coils`: 2
+    Compression: the end form's inactive coils (:func:`govopt.springs.compression.end_coils`: 2
     for closed ends, EN 13906-1 ``n_t = n + 2``). Extension (``ends``: its loops,
-    :data:`govopt.springs.helical.HOOKS`; EN 13906-2:2013, active coils ``n = n_b + G/E``):
+    :data:`govopt.springs.extension.HOOKS`; EN 13906-2:2013, active coils ``n = n_b + G/E``):
     the body's ``n_b = n - G/E`` coils plus the loops' coils of wire, i.e. ``2 h - G/E`` (``h``
     a loop's coils, 1 for a full loop; ``2 h`` without a grade, as ``E`` is then unknown)."""
     if kind == "compression":
-        return hx.end_coils(ends)
-    loops = 2.0 * hx.HOOKS[ends].coils
+        return hc.end_coils(ends)
+    loops = 2.0 * he.HOOKS[ends].coils
     if mat is None:
         return loops
     return loops - float(mat.shear_modulus(1e-3) / mat.elastic_modulus(1e-3))
@@ -161,11 +163,11 @@ def objective_value(name: str, spring: Spring, mat, F_max):
     if spring.kind == "compression":
         n, Q = spring.coils, spring.end_coils
         d_max = tl.max_wire_diameter(d, mat.grade)
-        m = hx.pitch(spring.L0, d, n, n + Q, spring.form, d_max)
+        m = hc.pitch(spring.L0, d, n, n + Q, spring.form, d_max)
         wire = hx.helix_wire_length(D, n, m, Q, d)
     else:
-        n = hx.extension_active_coils(spring.coils, G, mat.elastic_modulus(d))
-        Q = spring.coils + 2.0 * hx.HOOKS[spring.form].coils - n
+        n = he.extension_active_coils(spring.coils, G, mat.elastic_modulus(d))
+        Q = spring.coils + 2.0 * he.HOOKS[spring.form].coils - n
         wire = hx.helix_wire_length(D, 0.0, 0.0, n + Q, d)
     mass = mat.density * np.pi * d**2 / 4.0 * wire
     if name == "mass":
@@ -173,7 +175,7 @@ def objective_value(name: str, spring: Spring, mat, F_max):
     if name == "volume":
         return (n + Q) * D * d**2
     if name == "solid length":
-        return hx.solid_length(tl.max_wire_diameter(d, mat.grade), n + Q, spring.form)
+        return hc.solid_length(tl.max_wire_diameter(d, mat.grade), n + Q, spring.form)
     if name == "outer diameter":
         return D + d
     if name == "mass per energy":
@@ -185,7 +187,7 @@ def drawn(kind: str, mat, d, D, n, F_min: float, F_max: float, *, ends: str,
           L2: float | None = None, dynamic: bool = True) -> Spring:
     """The spring ``(d, D, n)`` (``n`` its active coils; arrays broadcast) as drawn (SI). A
     compression spring: ``n_t = n +`` its end form's inactive coils
-    (:func:`govopt.springs.helical.end_coils`) and the least free length that keeps the coils
+    (:func:`govopt.springs.compression.end_coils`) and the least free length that keeps the coils
     clear at ``F_max``, ``L0 = L_n + F_max / R`` with EN 13906-1's least working length (the
     solid length with the largest wire diameter; ``S_a`` x1.5 dynamic), or with the installed
     length ``L2`` at ``F_max``, ``L0 = L2 + F_max / R``. An extension spring (``ends``: its
@@ -195,12 +197,12 @@ def drawn(kind: str, mat, d, D, n, F_min: float, F_max: float, *, ends: str,
     G = mat.shear_modulus(d)
     if kind == "compression":
         R = hx.stiffness(d, D, n, G)
-        Q = hx.end_coils(ends)
+        Q = hc.end_coils(ends)
         d_max = tl.max_wire_diameter(d, mat.grade)
-        Ln = hx.min_working_length(d, D, n, n + Q, ends, dynamic, ends.startswith("hot"), d_max)
+        Ln = hc.min_working_length(d, D, n, n + Q, ends, dynamic, ends.startswith("hot"), d_max)
         return Spring(kind, d, D, n, Q, (Ln if L2 is None else L2) + F_max / R, ends)
     n_b = n - G / mat.elastic_modulus(d)
-    lo, hi = hx.initial_tension_range(hx.spring_index(d, D))
+    lo, hi = he.initial_tension_range(hx.spring_index(d, D))
     F0 = np.minimum(hx.force_at_stress(0.5 * (lo + hi), d, D), F_min)
     return Spring(kind, d, D, n_b, 0.0, extension_free_length(d, D, n_b, ends), ends, F0)
 
@@ -225,8 +227,8 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     coils stay clear there (GP row ``working length``) and the free length is ``L2 + F_max /
     R`` (the solid-length stress row of the GP then takes the least free length: a relaxation,
     checked exactly afterwards). ``ends``: a compression spring's end form
-    (:data:`~govopt.springs.helical.END_FORMS`, default closed and ground), an extension
-    spring's loops (:data:`~govopt.springs.helical.HOOKS`, default full loops). Any wire and
+    (:data:`~govopt.springs.compression.END_FORMS`, default closed and ground), an extension
+    spring's loops (:data:`~govopt.springs.extension.HOOKS`, default full loops). Any wire and
     coils: :func:`govopt.optimize.spring_catalogue.size_orderable_spring` takes them from a
     table of wires and a step of coils."""
     return _size(F_max, stiffness, grade=grade, kind=kind, k_s=k_s, G=G, density=density,
@@ -253,7 +255,7 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
         space.update(L2=L2, Ln_max=L2, clear=1e-12)
     envelope = kind if space else None
     if kind == "compression":
-        space["solid_coils"] = hx.end_coils(ends) + hx.END_FORMS[ends].extra
+        space["solid_coils"] = hc.end_coils(ends) + hc.END_FORMS[ends].extra
     else:  # coils touching: the helix's pitch d (the GP's pitch constraint)
         space.update(pitch_clear=1e-12, pitch_F=1e-12)
     relaxed = dict(space)  # the relaxation gives the bound; with L2 the design's GP restricts
@@ -289,8 +291,8 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
     Q = end_coils(kind, mat, ends)
     stable = math.inf
     if kind == "compression":  # the slenderness that cannot buckle
-        stable = float(hx.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
-                                               hx.SEATING[seating]))
+        stable = float(hc.critical_free_length(1.0, G, mat.elastic_modulus(math.sqrt(lo * hi)),
+                                               hc.SEATING[seating]))
 
     def attempt(factor, slender=None, refit=True, relax=False):
         """The GP at ``factor`` times the rule, re-fitted until the wire settles (with
@@ -406,7 +408,7 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
 def _solid_length(sizing: Sizing) -> float:
     """The drawn spring's solid length with the largest wire diameter (EN 13906-1), m."""
     sp = sizing.spring
-    return float(hx.solid_length(tl.max_wire_diameter(sp.d, sizing.mat.grade), sp.total_coils,
+    return float(hc.solid_length(tl.max_wire_diameter(sp.d, sizing.mat.grade), sp.total_coils,
                                  sp.form))
 
 

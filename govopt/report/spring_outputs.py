@@ -17,8 +17,8 @@ from types import SimpleNamespace
 
 import numpy as np
 
+from ..springs import extension as he
 from ..springs import fatigue as ft
-from ..springs import helical as hx
 from ..springs import sheet as sh
 
 #: the plots `govopt spring --plots` writes (``fatigue`` only with a fatigue load cycle)
@@ -37,7 +37,7 @@ def maker_sheet(outcome) -> sh.SpringSheet | None:
         return sh.compression_sheet(mat, sp.d, sp.D, sp.coils, sp.total_coils, sp.L0,
                                     loads.F1, loads.F2, ends=sp.form, surface=surface)
     return sh.extension_sheet(mat, sp.d, sp.D, sp.coils, sp.F0, loads.F1, loads.F2,
-                              hooks=hx.HOOKS[sp.form].source.split(",")[0], surface=surface)
+                              hooks=he.HOOKS[sp.form].source.split(",")[0], surface=surface)
 
 
 def fatigue_cycle(outcome) -> dict | None:

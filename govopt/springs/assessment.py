@@ -3,8 +3,8 @@ spring as drawn (``govopt spring`` reports a designed spring and ``govopt spring
 given one through this one function, :func:`assess`).
 
 The spring (:class:`Spring`, SI) is its wire ``d``, mean coil diameter ``D``, coils, end form
-(a compression spring: :data:`~govopt.springs.helical.END_FORMS`) or loops (an extension
-spring: :data:`~govopt.springs.helical.HOOKS`) and free length; the material a wire grade
+(a compression spring: :data:`~govopt.springs.compression.END_FORMS`) or loops (an extension
+spring: :data:`~govopt.springs.extension.HOOKS`) and free length; the material a wire grade
 (:mod:`govopt.springs.materials`) or a stand-in carrying the shear modulus and density only
 (:func:`govopt.springs.materials.given`, then the static allowable is given); the loads its
 two working forces and, for fatigue, a load cycle (:class:`Loads`); the rules the standard's
@@ -43,6 +43,8 @@ import numpy as np
 
 from ..verdict import Check, Figure
 from . import checks as ck
+from . import compression as hc
+from . import extension as he
 from . import fatigue as ft
 from . import helical as hx
 from . import tolerances as tl
@@ -81,7 +83,7 @@ class Spring:
 def extension_free_length(d, D, body_coils, loops: str):
     """Free length inside the loops ``L0 = L_K + 2 L_H`` (m), the body ``L_K = (n_b + 1) d``
     (EN 13906-2; Shigley section 10-11) and each loop ``L_H`` the multiple of the inside
-    diameter ``D - d`` that :data:`~govopt.springs.helical.HOOKS` gives.
+    diameter ``D - d`` that :data:`~govopt.springs.extension.HOOKS` gives.
 
     Parameters
     ----------
@@ -92,7 +94,7 @@ def extension_free_length(d, D, body_coils, loops: str):
     body_coils : float [-]
         Body coils ``n_b``.
     loops : str [-]
-        A key of :data:`~govopt.springs.helical.HOOKS` (e.g. ``"full_loop"``).
+        A key of :data:`~govopt.springs.extension.HOOKS` (e.g. ``"full_loop"``).
 
     Returns
     -------
@@ -111,7 +113,7 @@ def extension_free_length(d, D, body_coils, loops: str):
     >>> round(float(extension_free_length(2e-3, 16e-3, 10, "full_loop")) * 1e3, 6)  # 22 + 28
     50.0
     """
-    return hx.extension_body_length(d, body_coils) + 2.0 * hx.HOOKS[loops].length * (D - d)
+    return he.extension_body_length(d, body_coils) + 2.0 * he.HOOKS[loops].length * (D - d)
 
 
 @dataclass(frozen=True)
@@ -355,18 +357,18 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
     grade_known = math.isfinite(Rm)
     d_max = _f(tl.max_wire_diameter(d, mat.grade)) if grade_known else d
     compression = spring.kind == "compression"
-    n = spring.coils if compression else _f(hx.extension_active_coils(spring.coils, G, E))
+    n = spring.coils if compression else _f(he.extension_active_coils(spring.coils, G, E))
     R = _f(hx.stiffness(d, D, n, G))
     L0, F1, F2 = spring.L0, loads.F1, loads.F2
     nan = math.nan
     notes: list[str] = []
     if compression:
-        n_t, form = spring.total_coils, hx.END_FORMS[spring.form]
+        n_t, form = spring.total_coils, hc.END_FORMS[spring.form]
         hot = spring.form.startswith("hot")
-        Lc = _f(hx.solid_length(d_max, n_t, spring.form))
-        Sa = _f(hx.sum_of_min_gaps(d, D, n, rules.dynamic, hot))
+        Lc = _f(hc.solid_length(d_max, n_t, spring.form))
+        Sa = _f(hc.sum_of_min_gaps(d, D, n, rules.dynamic, hot))
         Ln = Lc + Sa
-        m = _f(hx.pitch(L0, d, n, n_t, spring.form, d_max))
+        m = _f(hc.pitch(L0, d, n, n_t, spring.form, d_max))
         s1, s2 = F1 / R, F2 / R
         points = [_point("free length L0", L0, 0.0, 0.0, d, D)]
         if F1 > 0.0:  # a least force given: the spring works there
@@ -375,14 +377,14 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
                    _point("least working length L_n", Ln, R * (L0 - Ln), L0 - Ln, d, D),
                    _point("solid length L_c", Lc, R * (L0 - Lc), L0 - Lc, d, D)]
         wire = _f(hx.helix_wire_length(D, n, m, spring.end_coils, d))
-        nu = hx.SEATING[rules.seating]
-        sK = _f(hx.buckling_deflection(L0, D, G, E, nu))
+        nu = hc.SEATING[rules.seating]
+        sK = _f(hc.buckling_deflection(L0, D, G, E, nu))
         energy_2 = 0.5 * F2 * s2
         used = s2 / (L0 - Lc)
         end_source = form.source
     else:
         Lc = Sa = Ln = nan
-        hook = hx.HOOKS[spring.form]
+        hook = he.HOOKS[spring.form]
         m = d
         s1, s2 = (F1 - spring.F0) / R, (F2 - spring.F0) / R
         points = [_point("free length L0", L0, 0.0, 0.0, d, D)]
@@ -418,7 +420,7 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
         "pitch": Figure("pitch", m, "m", symbol="m",
                         source="EN 13906-1: m = s_c / n + d" if compression
                         else "coils touching: m = d"),
-        "helix angle": Figure("helix angle", _f(hx.helix_angle(m, D)), "rad"),
+        "helix angle": Figure("helix angle", _f(hc.helix_angle(m, D)), "rad"),
         "wire length": Figure("wire length", wire, "m", source=hx.helix_wire_length.__doc__
                               .split(":")[0].strip()),
         "mass": Figure("mass", rho * math.pi * d**2 / 4.0 * wire, "kg"),
@@ -458,7 +460,7 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
                                       else ""),
         "diameter increase at solid": Figure(
             "diameter increase at solid",
-            _f(hx.diameter_increase(d, D, n, L0, spring.total_coils, spring.form, d_max))
+            _f(hc.diameter_increase(d, D, n, L0, spring.total_coils, spring.form, d_max))
             if compression else nan, "m", symbol="Delta D_e", source="EN 13906-1"),
     }
     table_rows, dropped = table(spring, mat, loads, rules)

@@ -7,8 +7,8 @@ numpy arrays (an optimiser's screen: :func:`evaluate`) and, for one design, beco
 Keywords (SI): ``mat`` (:class:`~govopt.springs.materials.Material`), ``d``, ``D`` (m), ``n``
 (active coils; for an extension spring the *body* coils ``n_body``), ``F1 <= F2`` the least and
 largest working forces (N). Compression springs also take ``n_t`` (total coils), ``L0`` (free
-length, m), ``ends`` (:data:`~govopt.springs.helical.END_FORMS`), ``seating``
-(:data:`~govopt.springs.helical.SEATING`) and ``s_max`` - the largest deflection including the
+length, m), ``ends`` (:data:`~govopt.springs.compression.END_FORMS`), ``seating``
+(:data:`~govopt.springs.compression.SEATING`) and ``s_max`` - the largest deflection including the
 overspeed margin (default ``F2 / R``; the static stress is checked at the larger of ``F2`` and
 ``R s_max``). Extension springs take ``F0`` (initial tension, N),
 ``r1`` (hook radius, default ``D/2``, a full loop) and ``r2`` (bend radius where the hook leaves
@@ -32,6 +32,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..verdict import Check
+from . import compression as hc
+from . import extension as he
 from . import fatigue as fat
 from . import helical as hx
 from . import tolerances as tol
@@ -94,7 +96,7 @@ _DERIVED = {
     },
     "extension": {
         **_COMMON_DERIVED,
-        "n_active": lambda kw: hx.extension_active_coils(kw["n_body"], kw["G"], kw["E"]),
+        "n_active": lambda kw: he.extension_active_coils(kw["n_body"], kw["G"], kw["E"]),
         "R": lambda kw: hx.stiffness(kw["d"], kw["D"], kw["n_active"], kw["G"]),
     },
 }
@@ -145,7 +147,7 @@ def prepare(kind: str, **kw) -> dict:
         if kw["s_max"] is None:
             kw["s_max"] = kw["F2"] / kw["R"]
     else:
-        kw["L0"] = hx.extension_free_length(d, D, kw["n_body"])
+        kw["L0"] = he.extension_free_length(d, D, kw["n_body"])
         kw["r1"] = D / 2.0 if kw["r1"] is None else kw["r1"]
         kw["r2"] = 2.0 * d if kw["r2"] is None else kw["r2"]
         kw["F_max"] = kw["F2"]
@@ -157,7 +159,7 @@ def _static(place):
         rule = static_rule(kw["mat"], place, kw["method"])
         F = kw["F_max"]
         if place == "solid":
-            F = kw["R"] * (kw["L0"] - hx.solid_length(kw["d_max"], kw["n_t"], kw["ends"]))
+            F = kw["R"] * (kw["L0"] - hc.solid_length(kw["d_max"], kw["n_t"], kw["ends"]))
         return hx.shear_stress(F, kw["d"], kw["D"], kw["correction"] or rule.correction)
 
     def limit(kw):
@@ -209,11 +211,11 @@ def _hook_fatigue(point):
     def value(kw):
         F1, F2 = kw["F1"], kw["F2"]
         if point == "A":
-            sa = hx.hook_bending_stress(np.abs(F2 - F1) / 2.0, kw["d"], kw["D"], kw["r1"])
-            sm = hx.hook_bending_stress((F2 + F1) / 2.0, kw["d"], kw["D"], kw["r1"])
+            sa = he.hook_bending_stress(np.abs(F2 - F1) / 2.0, kw["d"], kw["D"], kw["r1"])
+            sm = he.hook_bending_stress((F2 + F1) / 2.0, kw["d"], kw["D"], kw["r1"])
             return fat.shigley_bending_fatigue_safety(sa, sm, kw["Rm"], False, kw["criterion"])
-        ta = hx.hook_torsion_stress(np.abs(F2 - F1) / 2.0, kw["d"], kw["D"], kw["r2"])
-        tm = hx.hook_torsion_stress((F2 + F1) / 2.0, kw["d"], kw["D"], kw["r2"])
+        ta = he.hook_torsion_stress(np.abs(F2 - F1) / 2.0, kw["d"], kw["D"], kw["r2"])
+        tm = he.hook_torsion_stress((F2 + F1) / 2.0, kw["d"], kw["D"], kw["r2"])
         return fat.shigley_fatigue_safety(ta, tm, kw["Rm"], False, kw["criterion"])
 
     def source(kw):
@@ -259,24 +261,24 @@ COMPRESSION = (
     Row("shear stress at solid length", "<=", "Pa", _static_s[0], _static_s[1], _static_s[2]),
     Row("working length >= least length (coil clash)", ">=", "m",
         lambda kw: kw["L0"] - kw["s_max"],
-        lambda kw: hx.min_working_length(kw["d"], kw["D"], kw["n"], kw["n_t"], kw["ends"],
+        lambda kw: hc.min_working_length(kw["d"], kw["D"], kw["n"], kw["n_t"], kw["ends"],
                                          kw["dynamic"], kw["ends"].startswith("hot"),
                                          kw["d_max"]),
         "EN 13906-1: L_n = L_c + S_a, L_c with the largest wire diameter d_max, S_a = n "
         "(0.0015 D^2/d + 0.1 d) (x1.5 dynamic), at the largest deflection including the "
         "overspeed margin"),
     Row("deflection / buckling deflection", "<=", "",
-        lambda kw: _over(kw["s_max"], hx.buckling_deflection(kw["L0"], kw["D"], kw["G"], kw["E"],
-                                                             hx.SEATING[kw["seating"]])),
+        lambda kw: _over(kw["s_max"], hc.buckling_deflection(kw["L0"], kw["D"], kw["G"], kw["E"],
+                                                             hc.SEATING[kw["seating"]])),
         lambda kw: 1.0,
         lambda kw: f"EN 13906-1, 9.14: buckling deflection s_K, seating {kw['seating']} "
-                   f"(nu = {hx.SEATING[kw['seating']]})"),
+                   f"(nu = {hc.SEATING[kw['seating']]})"),
     Row("free pitch > wire diameter", ">=", "m",
-        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"], kw["d_max"]),
+        lambda kw: hc.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"], kw["d_max"]),
         lambda kw: kw["d"], "geometry: the free spring must have gaps between active coils"),
     Row(PITCH_MAX, "<=", "m",
-        lambda kw: hx.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"], kw["d_max"]),
-        lambda kw: hx.max_pitch(kw["d"], kw["D"]),
+        lambda kw: hc.pitch(kw["L0"], kw["d"], kw["n"], kw["n_t"], kw["ends"], kw["d_max"]),
+        lambda kw: hc.max_pitch(kw["d"], kw["D"]),
         "Gutekunst Federn ('Spring pitch'): m <= 0.7 D_i, a helix angle atan(m / (pi D)) of at "
         "most 9.5-12.6 deg, where the rate G d^4 / (8 D^3 n) is within 1.5 % of the "
         "open-coiled spring's (6 % at 25 deg)"),
@@ -287,22 +289,22 @@ COMPRESSION = (
 EXTENSION = (
     Row("body static shear stress", "<=", "Pa", _static_e[0], _static_e[1], _static_e[2]),
     Row("hook bending stress (point A)", "<=", "Pa",
-        lambda kw: hx.hook_bending_stress(kw["F2"], kw["d"], kw["D"], kw["r1"]),
+        lambda kw: he.hook_bending_stress(kw["F2"], kw["d"], kw["D"], kw["r1"]),
         lambda kw: allowable_static_stress(kw["mat"], kw["d"], "hook_bending", "Shigley"),
         lambda kw: "Shigley §10-11 hook point A; " + static_rule(kw["mat"], "hook_bending",
                                                                  "Shigley").source),
     Row("hook torsion stress (point B)", "<=", "Pa",
-        lambda kw: hx.hook_torsion_stress(kw["F2"], kw["d"], kw["D"], kw["r2"]),
+        lambda kw: he.hook_torsion_stress(kw["F2"], kw["d"], kw["D"], kw["r2"]),
         lambda kw: allowable_static_stress(kw["mat"], kw["d"], "hook_torsion", "Shigley"),
         lambda kw: "Shigley §10-11 hook point B; " + static_rule(kw["mat"], "hook_torsion",
                                                                  "Shigley").source),
     Row("initial tension stress >= preferred min", ">=", "Pa",
         lambda kw: hx.shear_stress(kw["F0"], kw["d"], kw["D"]),
-        lambda kw: hx.initial_tension_range(kw["C"])[0],
+        lambda kw: he.initial_tension_range(kw["C"])[0],
         "Shigley eq. (10-40): preferred uncorrected initial-tension stress"),
     Row("initial tension stress <= preferred max", "<=", "Pa",
         lambda kw: hx.shear_stress(kw["F0"], kw["d"], kw["D"]),
-        lambda kw: hx.initial_tension_range(kw["C"])[1],
+        lambda kw: he.initial_tension_range(kw["C"])[1],
         "Shigley eq. (10-40): preferred uncorrected initial-tension stress"),
     Row("least force >= initial tension", ">=", "N", lambda kw: kw["F1"], lambda kw: kw["F0"],
         "an extension spring below its initial tension is closed: the force no longer follows "

@@ -144,15 +144,15 @@ KINDS: dict[str, SpringKind] = {
 
 
 def _end_forms() -> tuple:
-    from . import helical
+    from . import compression as hc
 
-    return tuple(helical.END_FORMS)
+    return tuple(hc.END_FORMS)
 
 
 def _seatings() -> tuple:
-    from . import helical
+    from . import compression as hc
 
-    return tuple(helical.SEATING)
+    return tuple(hc.SEATING)
 
 
 #: ``[spring]``: the helical spring's form, for the spring engineering checks

@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 
 from ..verdict import Figure
+from . import compression as hc
+from . import extension as he
 from . import helical as hx
 from . import tolerances as tol
 from .materials import Material
@@ -244,7 +246,7 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
     F1, F2 : float [N]
         The two working forces.
     ends : str [-]
-        End form, a key of :data:`~govopt.springs.helical.END_FORMS`.
+        End form, a key of :data:`~govopt.springs.compression.END_FORMS`.
     grade : int [-]
         EN 15800 quality grade 1, 2 or 3.
     surface : str [-]
@@ -290,10 +292,10 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
         n=_f(n), coils=_f(n_t), ends=ends.replace("_", " "), L0=_f(L0), R=R, F1=_f(F1),
         L1=_f(L0) - _f(F1) / R, F2=_f(F2), L2=_f(L0) - _f(F2) / R, tolerance_grade=grade,
         surface=surface,
-        mass=_f(hx.helix_mass(d, D, n, hx.pitch(L0, d, n, n_t, ends, d_max), _f(n_t) - _f(n),
+        mass=_f(hx.helix_mass(d, D, n, hc.pitch(L0, d, n, n_t, ends, d_max), _f(n_t) - _f(n),
                               mat.density)),
         surge_frequency=_f(hx.surge_frequency(d, D, n, G, mat.density)),
-        solid_length=_f(hx.solid_length(d_max, n_t, ends)),
+        solid_length=_f(hc.solid_length(d_max, n_t, ends)),
         tolerances=tols, notes=notes)
 
 
@@ -349,9 +351,9 @@ def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,
     (12.57, 17.91, 0.817)
     """
     G, E = _f(mat.shear_modulus(d)), _f(mat.elastic_modulus(d))
-    n = _f(hx.extension_active_coils(n_body, G, E))
+    n = _f(he.extension_active_coils(n_body, G, E))
     R = _f(hx.stiffness(d, D, n, G))
-    L0 = _f(hx.extension_free_length(d, D, n_body))
+    L0 = _f(he.extension_free_length(d, D, n_body))
     tols = {"A_D": _f(tol.coil_diameter_tolerance(D, D / d, grade))}
     std = wire_standard(mat)
     if std:
