@@ -65,6 +65,7 @@ def _cpu(fn, repeats: int) -> float:
 def bulk_bench(points: int = 100_000, baseline: int = 200, repeats: int = 3) -> dict:
     """evaluate_many against per-design loops (CPU seconds per design, designs per second)."""
     from govopt import evaluate, load_spec
+    from govopt.analysis import characteristic as chs
     from govopt.analysis import statics
     from govopt.bulk import evaluate_many
     from govopt.spec import Design
@@ -80,7 +81,7 @@ def bulk_bench(points: int = 100_000, baseline: int = 200, repeats: int = 3) -> 
     def bare(d):
         s = spec.with_design(d)
         sd = statics.spring_design(s, d)
-        ch = statics.characteristic(s, sd)
+        ch = chs.characteristic(s, sd)
         statics.restoring_k2(s, ch.alpha, sd, ch.omega**2)
 
     per_bare = _loop(bare, designs)

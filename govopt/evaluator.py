@@ -26,6 +26,7 @@ from dataclasses import dataclass, field, fields, replace
 
 import numpy as np
 
+from .analysis import characteristic as chs
 from .analysis import loadchange, statics
 from .analysis.classic import CLASSIC_FIGURES, classic_measures
 from .analysis.classic import report as classic_report
@@ -98,11 +99,11 @@ def invalid(spec: Spec, design: Design) -> str | None:
     """What the spec parser would say of a design given as numbers (a mass that is not a
     number, a wire thicker than its coil), or None."""
     if design.flying_mass is None or not math.isfinite(design.flying_mass):
-        return (f"{spec.path}: {statics.design_key(spec, 'flying_mass') or 'design'}: the "
+        return (f"{spec.path}: {chs.design_key(spec, 'flying_mass') or 'design'}: the "
                 f"{spec.governor.mass_key} mass is missing or not a finite number")
     if design.wire_diameter is not None and design.coil_radius is not None and \
             design.wire_diameter >= 2.0 * design.coil_radius:
-        key = statics.design_key(spec, "wire_diameter")
+        key = chs.design_key(spec, "wire_diameter")
         return (f"{spec.path}: {key}: expected a wire thinner than the coil diameter 2 r" if key
                 else f"{spec.path}: design: impossible design: the wire "
                 f"({design.wire_diameter:.4g} m) is not thinner than the coil diameter 2 r "
@@ -121,7 +122,7 @@ def diagnose(spec: Spec, design: Design) -> str:
     try:
         sd = statics.spring_design(spec, design)
         possible(spec, sd)
-        char = statics.characteristic(spec, sd)
+        char = chs.characteristic(spec, sd)
         k2 = statics.restoring_k2(spec, char.alpha, sd, char.omega**2)
         finite(spec, {"equilibrium speed": char.omega, "spring force (generalised)": char.M_f,
                       "centrifugal force (generalised)": char.M_z,
@@ -217,7 +218,7 @@ class Evaluation:
     table: CheckTable
     error: np.ndarray
     spring: statics.SpringDesign | None = None
-    char: statics.Characteristic | None = None
+    char: chs.Characteristic | None = None
     k2: np.ndarray | None = None
     vib: object = None
     dynamics: dict = field(default_factory=dict)
@@ -319,10 +320,11 @@ class _Statics:
         """Design ``i``'s :class:`SpringDesign` (scalars; as :func:`statics.spring_design`)."""
         return spring_design_of(self.sd, i, bool(np.isfinite(self.I_given[i, 0])))
 
-    def char_of(self, spec: Spec, i: int) -> statics.Characteristic:
-        """Design ``i``'s characteristic (:func:`statics.characteristic`, from the arrays)."""
+    def char_of(self, spec: Spec, i: int) -> chs.Characteristic:
+        """Design ``i``'s characteristic
+        (:func:`~govopt.analysis.characteristic.characteristic`, from the arrays)."""
         t, K = self.t, self.x.size
-        return statics.Characteristic(
+        return chs.Characteristic(
             alpha=self.x, omega=self.omega[i], M_z=self.M_z[i], M_f=self.M_f[i],
             M_r0=np.broadcast_to(t.cf + self.w2 * t.ci, (self.n, K))[i],
             spring_force=self.F[i], stress=self.stress[i], extra=spec.governor.columns(self.x),
@@ -381,10 +383,10 @@ def _statics(spec: Spec, cols: dict) -> _Statics:
         finite_rows = [omega, M_f, M_z, F, k2]
         impossible |= ~np.all([np.isfinite(v).all(axis=1) for v in finite_rows], axis=0)
         impossible |= helical & ~np.isfinite(stress).all(axis=1)
-        if spec.analysis.reaction_slope:  # statics.characteristic_slope on the terms in hand
+        if spec.analysis.reaction_slope:  # chs.characteristic_slope on the terms in hand
             slope = stiff / (2.0 * omega * t.lever)
         else:
-            slope = statics.characteristic_slope(spec, sd, x, omega)
+            slope = chs.characteristic_slope(spec, sd, x, omega)
         slope = np.broadcast_to(slope, (n, K))
         secant = np.diff(omega, axis=1) / np.diff(x)
         rise = np.minimum(slope.min(axis=1), secant.min(axis=1, initial=np.inf))

@@ -117,10 +117,12 @@ def statics_rows(spec) -> list[Row]:
     """The statics requirements (group ``"statics"``); ``ev``: ``irregularity``; ``band_low``,
     ``band_high`` (the operating band's lowest and highest speed over the range, with
     friction, :func:`statics.band_extremes`);
-    ``rise`` (the least slope of the characteristic, :func:`statics.rising_slopes`); ``w0sq``
-    (the reference ``omega0^2``); ``F_min``, ``F_top`` (the least and the largest absolute
-    spring force); ``k2_min``, ``k2_max``."""
-    from .analysis import statics  # here: the spring designer's rows need no governor's statics
+    ``rise`` (the least slope of the characteristic,
+    :func:`~govopt.analysis.characteristic.rising_slopes`); ``w0sq`` (the reference
+    ``omega0^2``); ``F_min``, ``F_top`` (the least and the largest absolute spring force);
+    ``k2_min``, ``k2_max``."""
+    from .analysis import characteristic as chs  # here: the spring designer's rows need no
+    from .analysis import statics  # governor's statics
     gov, sp, req = spec.governor, spec.speed, spec.requirements
     margin = req.k2_margin if req else 0.0
     unit = SI_UNITS[gov.coordinate]
@@ -141,8 +143,8 @@ def statics_rows(spec) -> list[Row]:
                     "d omega/dx > 0 over the range: the characteristic "
                     f"({method.named('characteristic').cite}) differentiated, stable by the "
                     f"characteristic curve ({method.named('stable').cite}); margin on omega0 / "
-                    "(x_outer - x_inner) (statics.stability)", group="statics",
-                    scale=lambda ev: statics.slope_scale(spec, np.sqrt(ev["w0sq"]))))
+                    "(x_outer - x_inner) (characteristic.stability)", group="statics",
+                    scale=lambda ev: chs.slope_scale(spec, np.sqrt(ev["w0sq"]))))
     if gov.spring is not None:
         rows.append(Row(gov.spring_loaded_check, ">=", "N", lambda ev: ev["F_min"], _const(0.0),
                         "the spring stays loaded over the range: its force > 0 ("

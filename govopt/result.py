@@ -20,7 +20,8 @@ from typing import Any
 
 import numpy as np
 
-from .analysis.statics import Characteristic, SpringDesign, classify_k2
+from .analysis.characteristic import Characteristic
+from .analysis.statics import SpringDesign, classify_k2
 from .inputs import Design, Spec
 from .jsonable import jsonable
 from .references import reference
@@ -51,7 +52,7 @@ class Result:
     kind: str = "evaluation"
     classic: dict[str, Any] = field(default_factory=dict)
     #: the helical spring's sheet for the spring maker, fatigue loads and manufacturing spread
-    #: (:class:`govopt.analysis.spring_engineering.SpringReport`); None without a wire spring
+    #: (:class:`govopt.analysis.spring_record.SpringReport`); None without a wire spring
     spring_report: Any = None
     #: governors made to the spec's tolerances (:mod:`govopt.made`): the tolerances, the yield
     #: beside the verdict and the worst-case speed band beside the required one (SI); None

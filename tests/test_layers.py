@@ -56,6 +56,7 @@ KNOWN_UPWARD = KNOWN_CYCLE_EDGES | {
     # (Governor.spring_checks, spring_report; the helical stress and geometry are rows of the one
     # evaluator) until the spring is a plug of its own
     ("govopt.governors.base", "govopt.analysis.spring_engineering"),
+    ("govopt.governors.base", "govopt.analysis.spring_record"),
     # Result.summary(), _repr_html_() and plot() render with the writers, imported when called
     # (conveniences for a notebook; no writer imports the result's module back)
     ("govopt.result", "govopt.report.plots"),

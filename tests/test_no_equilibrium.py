@@ -75,7 +75,7 @@ def test_messages_name_the_keys_the_spec_writes():
     written (``pendulum_mass``, not ``pendulum_weight``)."""
     import dataclasses
 
-    from govopt.analysis.statics import design_key
+    from govopt.analysis.characteristic import design_key
     from govopt.evaluator import invalid
     from govopt.spec import Design, load_spec
 

@@ -137,7 +137,7 @@ def test_an_isochronous_governor_is_labelled_so_on_every_path(tmp_path):
     19 cm long at the inner radius: the controlling force is 4 kappa r, exactly proportional
     to the radius, so omega^2 = 4 kappa / m everywhere. The classic label used to say
     "unstable" (a tolerance of 1e-9 of the largest slope, itself rounding noise) while the
-    "characteristic rises" check passed; both now read statics.stability."""
+    "characteristic rises" check passed; both now read chs.stability."""
     text = (SPECS / "textbook-ex6-spring_loaded.toml").read_text()
     text = text.replace('spring_length = "15 cm"', 'spring_length = "19 cm"  #').replace(
         'free_length = "11.5 cm"', 'free_length = "2 cm"  #')

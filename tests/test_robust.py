@@ -319,7 +319,7 @@ def test_no_robust_candidate_names_the_check_that_fails(tmp_path):
 def test_speed_band_is_the_spring_sheets_tolerance_spread(robust, tmp_path):
     """Over a box of the spring alone (the dash-pot does not move the statics) the band's ends
     are the spring sheet's EN 15800 spread of the governed speeds (its own corners,
-    govopt.analysis.spring_engineering.spread), and the plot is written."""
+    govopt.analysis.spring_record.spread), and the plot is written."""
     from govopt.report.plot_files import write_plots
 
     band = robust.optimisation["robust"]["speed_band"]

@@ -24,6 +24,7 @@ from clirun import invoke
 import govopt
 import govopt.examples
 from govopt.analysis import spring_engineering as se
+from govopt.analysis import spring_screens as ss
 from govopt.reader import SpecError
 from govopt.report import excel
 from govopt.report.text import format_result
@@ -301,7 +302,7 @@ def test_allowable_monomial_is_above_the_rule():
     data = _toml("hamabe-design")
     data["material"] = {"grade": "EN10270-1 SM"}  # a table grade
     spec = parse_spec(data, "sm")
-    k, m = se.allowable_monomial(spec, 2e-3, 15e-3)
+    k, m = ss.allowable_monomial(spec, 2e-3, 15e-3)
     d = np.geomspace(2e-3, 15e-3, 4001)
     rule = 0.45 * spec_wire_rm(spec, d)
     assert np.all(k * d**-m >= rule * (1 - 1e-6))

@@ -561,6 +561,7 @@ def test_old_coil_design_buckles():
     (it could not even be compressed into place)."""
     from govopt import load_spec
     from govopt.analysis import spring_engineering as se
+    from govopt.analysis import spring_screens as ss
     from govopt.springs import helical as hx
 
     spec = load_spec(SPECS / "traction-coil-design.toml")
@@ -574,7 +575,7 @@ def test_old_coil_design_buckles():
     assert sK == pytest.approx(0.0601, abs=5e-4)
     value, limit, sense = rows["deflection / buckling deflection"]
     assert float(value) == pytest.approx(s_max / sK, rel=1e-12) and float(value) > 8
-    assert not se.geometry_screen(spec, d, r, n, kappa, L0)
+    assert not ss.geometry_screen(spec, d, r, n, kappa, L0)
 
 
 def test_coil_design_is_buildable():
@@ -624,6 +625,7 @@ def test_coil_design_helix_angle_within_the_limit():
     assert row.passed and row.value == pytest.approx(m, rel=1e-12)
     # the old design fails the row, and only it among the geometric ones
     from govopt.analysis import spring_engineering as se
+    from govopt.analysis import spring_screens as ss
     from govopt.springs import compression as hc
     from govopt.springs import helical as hx
 
@@ -635,7 +637,7 @@ def test_coil_design_helix_angle_within_the_limit():
     assert math.degrees(float(hc.helix_angle(value, 24e-3))) == pytest.approx(24.9, abs=0.05)
     assert [k for k, (v, lim, s) in rows.items() if not (v <= lim if s == "<=" else v >= lim)] \
         == ["free pitch <= 0.7 inside diameter (helix angle)"]
-    assert not se.geometry_screen(spec, d0, r0, n0, kappa0, L0)
+    assert not ss.geometry_screen(spec, d0, r0, n0, kappa0, L0)
 
 
 def test_article_replacement_spring_passes_without_a_resonance_ceiling():

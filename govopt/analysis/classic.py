@@ -12,7 +12,7 @@ All are computed from the characteristic, written once on the seam
 
 * **range of speed** ``omega_a - omega_i`` over the configuration range;
 * **sensitiveness** ``2 (omega_a - omega_i) / (omega_a + omega_i)``
-  (:attr:`statics.Characteristic.sensitiveness`: the range divided by the mean of its ends; the
+  (:attr:`chs.Characteristic.sensitiveness`: the range divided by the mean of its ends; the
   *irregularity* requirement divides by the spec's mean speed instead, Hamabe Part I);
 * **stability** (Rattan; textbook 3.2): *stable* when the equilibrium speed rises with the
   configuration everywhere (``d omega / dx > 0``), *isochronous* when it is constant,
@@ -45,6 +45,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..verdict import json_key
+from . import characteristic as chs
 from . import statics
 
 
@@ -80,6 +81,7 @@ def speed_change(spec, wi, wa):
 
     >>> import govopt
     >>> from govopt.analysis import statics
+    >>> from govopt.analysis import characteristic as chs
     >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
     ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
     ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
@@ -144,6 +146,7 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
 
     >>> import govopt
     >>> from govopt.analysis import statics
+    >>> from govopt.analysis import characteristic as chs
     >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
     ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
     ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
@@ -166,8 +169,8 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
         w0 = spec.speed.omega_mean if spec.speed is not None else omega[:, i_n]
         # the characteristic's own slope d omega/dx (exact, the dead loads' slope included) and
         # its secants, at the one tolerance the "characteristic rises" check reads
-        stability = statics.stability(statics.rising_slopes(spec, sd, x, omega),
-                                      np.broadcast_to(statics.slope_scale(spec, w0), (n,)))
+        stability = chs.stability(chs.rising_slopes(spec, sd, x, omega),
+                                      np.broadcast_to(chs.slope_scale(spec, w0), (n,)))
         wi, wa = omega[:, 0], omega[:, -1]
         c, over_range = speed_change(spec, wi, wa)
         grow = (1.0 + c[:, None]) ** 2 - 1.0
@@ -227,6 +230,7 @@ def report(spec, measures: dict, i: int) -> dict:
 
     >>> import govopt
     >>> from govopt.analysis import statics
+    >>> from govopt.analysis import characteristic as chs
     >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
     ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
     ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
@@ -335,6 +339,7 @@ def geometry(spec, x_normal) -> dict:
 
     >>> import govopt
     >>> from govopt.analysis import statics
+    >>> from govopt.analysis import characteristic as chs
     >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
     ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
     ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",
@@ -384,6 +389,7 @@ def travel_between(spec, x0: float, x1):
 
     >>> import govopt
     >>> from govopt.analysis import statics
+    >>> from govopt.analysis import characteristic as chs
     >>> spec = govopt.parse_spec({"name": "porter-k1", "design": {"ball_weight": "6 kgf",
     ...     "central_weight": "48 kgf"}, "governor": {"type": "porter", "arm": "30 cm",
     ...     "link": "30 cm", "pivot_offset": "0 cm", "sleeve_offset": "0 cm",

@@ -1,7 +1,7 @@
 """The tolerance model of a made governor: what a governor built to its drawing may be.
 
 One declaration, read by every tolerance answer govopt gives: the spring sheet's worst-case
-spread (:func:`govopt.analysis.spring_engineering.spread`), the yield beside the verdict
+spread (:func:`govopt.analysis.spring_record.spread`), the yield beside the verdict
 (:mod:`govopt.made`), a tolerance study's samples (``govopt study run --tolerance grade=N``,
 :func:`govopt.study.tolerances.grade_tolerances`) and robust design's box
 (:mod:`govopt.optimize.robust`). So the worst case bounds every sample, and the three agree.

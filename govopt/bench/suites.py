@@ -319,6 +319,7 @@ def statics_reference(spec, alpha) -> np.ndarray:
 
 def statics_suite(quick: bool = False) -> list[Point]:
     """Hamabe's cases a and c: the characteristic ``omega(alpha)`` with each geometry."""
+    from ..analysis import characteristic as chs
     from ..analysis import statics
     from ..spec import load_spec
 
@@ -330,7 +331,7 @@ def statics_suite(quick: bool = False) -> list[Point]:
             spec = load_spec(SPECS / f"hamabe-{case}.toml").with_analysis(geometry=geometry)
 
             def run(spec=spec):
-                return statics.characteristic(spec, statics.spring_design(spec, spec.design))
+                return chs.characteristic(spec, statics.spring_design(spec, spec.design))
 
             ch = run()
             ref = statics_reference(spec, ch.alpha)

@@ -522,13 +522,13 @@ class Governor(ABC):
 
     def spring_report(self, spec, sd, char, vib=None):
         """The spring maker's sheet, the fatigue loads under ``vib`` and the manufacturing
-        spread of a helical spring (:func:`govopt.analysis.spring_engineering.report`); None
+        spread of a helical spring (:func:`govopt.analysis.spring_record.report`); None
         without a wire spring."""
         if spec.material is None or not np.isfinite(sd.d):
             return None
-        from ..analysis import spring_engineering
+        from ..analysis import spring_record as sr
 
-        return spring_engineering.report(spec, sd, char, vib)
+        return sr.report(spec, sd, char, vib)
 
     def columns(self, x) -> dict:
         """The type's own geometry over ``x`` for the characteristic table: name -> (values, SI

@@ -72,12 +72,13 @@ def helical_catalogue(spec: Spec, req: Requirements) -> SpringCatalogue:
     harmonics, fatigue = (), None
     if mat.grade is not None:  # the wire grade's table (govopt.analysis.spring_engineering)
         from ..analysis import spring_engineering as se
+        from ..analysis import spring_screens as ss
 
-        vib = se.screen_vibration(spec, req)
+        vib = ss.screen_vibration(spec, req)
         harmonics = se.harmonics_hz(vib)
         if vib is not None:
             def fatigue(cc, l0, swing):
-                return se.screen_fatigue(spec, d[cc], r[cc], n[cc], kappa[cc], l0, swing)
+                return ss.screen_fatigue(spec, d[cc], r[cc], n[cc], kappa[cc], l0, swing)
     return SpringCatalogue(
         kappa=kappa,
         mass=hx.wire_mass(d, r, n, mat.density),
@@ -134,15 +135,15 @@ def spring_checks(spec: Spec, req: Requirements, d, r, n, F_max, l0, harmonics=(
     a fraction of the time (the design screen checks millions of pairs)."""
     mat = spec.material
     ok = holds(requirement_rows(spec, req), SpringFigures(d, r, n, l0, mat))
-    from ..analysis import spring_engineering as se
+    from ..analysis import spring_screens as ss
 
     if kappa is None:
         kappa = hx.stiffness_r(d, r, n, mat.shear_modulus)
     if mat.grade is None:  # the stress against the spec's allowable; coil clash and buckling
         ok = ok & holds([stress_row(mat)],
                         {"stress": hx.shear_stress_r(F_max, d, r, mat.stress_correction)})
-        return _where(ok, lambda i: se.geometry_screen(spec, *_take(i, d, r, n, kappa, l0)))
-    return _where(ok, lambda i: se.screen(spec, *_take(i, d, r, n, kappa, l0), harmonics))
+        return _where(ok, lambda i: ss.geometry_screen(spec, *_take(i, d, r, n, kappa, l0)))
+    return _where(ok, lambda i: ss.screen(spec, *_take(i, d, r, n, kappa, l0), harmonics))
 
 
 def _take(i, *arrays):

@@ -87,7 +87,7 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
     mat = spec.material
     k_s, k_exp = mat.allowable_shear_stress, 0.0
     if mat.grade is not None:  # k_s d^-m above the grade's allowable over the wire bounds
-        from ..analysis.spring_engineering import allowable_monomial
+        from ..analysis.spring_screens import allowable_monomial
 
         k_s, k_exp = allowable_monomial(spec, *req.wire_diameter)
     gp = None

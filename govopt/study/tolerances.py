@@ -118,7 +118,7 @@ def grade_tolerances(spec, grade: int) -> list[Tolerance]:
     spreads them), each on the spec's ``[design]`` key, in the model's order: the same points
     as the yield beside the verdict (:mod:`govopt.made`) draws. The spec's design must give its
     free length (:func:`fixed_free_length` writes it where it does not)."""
-    from ..analysis import statics
+    from ..analysis import characteristic as chs
     from ..analysis import tolerance as tm
     from ..bulk import design_arrays
 
@@ -141,7 +141,7 @@ def grade_tolerances(spec, grade: int) -> list[Tolerance]:
                          "outside the EN 15800 / EN 10270 tables", where=f"tolerance grade {grade}")
     out = []
     for name in bx.active():
-        key = statics.design_key(spec, name)
+        key = chs.design_key(spec, name)
         if key is None:
             raise StudyError(f"the spec's [design] does not give its {name.replace('_', ' ')}",
                              where=f"tolerance grade {grade}")

@@ -5,7 +5,7 @@ The governor's Spring sheet (only where the governor has a spring) opens with wh
 spring numbers are on the spring (its free length in the type's form, coils active and total,
 in words: :func:`lengths_in_words`), then the force against length at the maker's working
 points with its chart, the maker's sheet, the material, the loads and the tolerance spread
-(govopt's record, :meth:`govopt.analysis.spring_engineering.SpringReport.record`) and the spring
+(govopt's record, :meth:`govopt.analysis.spring_record.SpringReport.record`) and the spring
 engineering checks; a spring without a maker's sheet (a leaf, a spring given by its rate) shows
 its figures and its force over the range. ``govopt spring --xlsx`` writes the same conventions:
 a Summary (command, version, date, verdict, the answer with the objective and its certified
