@@ -127,6 +127,7 @@ def test_evaluate_is_the_one_evaluator(name, monkeypatch):
     core's figures, with no scalar statics, k^2 or load-change computation beside it (the
     former twin) - those entry points may fail and evaluate still gives its checks, the same
     as evaluate_many's row."""
+    from govopt.analysis import characteristic as chs
     from govopt.analysis import loadchange, statics
     from govopt.bulk import evaluate_many, value_column
 
@@ -136,7 +137,7 @@ def test_evaluate_is_the_one_evaluator(name, monkeypatch):
     def second(*args, **kwargs):
         raise AssertionError("a second computation of the design's figures")
 
-    for module, fn in ((statics, "spring_design"), (statics, "characteristic"),
+    for module, fn in ((statics, "spring_design"), (chs, "characteristic"),
                        (statics, "restoring_k2"), (loadchange, "analyse")):
         monkeypatch.setattr(module, fn, second)
     res = govopt.evaluate(spec)
