@@ -77,7 +77,7 @@ def test_reference_keys_exist():
 
 
 #: documented functions so far: the count may only grow (raise it with each function written)
-DOCUMENTED_AT_LEAST = 131
+DOCUMENTED_AT_LEAST = 228
 
 
 def test_documented_functions_only_grow():
