@@ -309,10 +309,11 @@ def test_porter_without_bounds_is_told_its_central_load_bound(tmp_path):
         design(parse_spec(data, "porter.toml"))
     message = str(info.value)
     moves = message.split("it becomes feasible if one of these moves: ")[1].split("; ")
-    assert moves[0].startswith("bounds.central_weight 0 .. 0 kg (the default: no central "
+    assert moves[0].startswith("bounds.central_weight 0 .. 0 kgf (the default: no central "
                                "load) -> 0 .. "), message
-    upper = float(moves[0].split(" .. ")[-1].removesuffix(" kg"))
-    data["bounds"] = {"central_mass": ["0 kg", f"{upper} kg"]}
+    assert moves[0].endswith(" kgf"), message  # the key is a weight: in kgf, not kg
+    upper = float(moves[0].split(" .. ")[-1].removesuffix(" kgf"))
+    data["bounds"] = {"central_weight": ["0 kgf", f"{upper} kgf"]}
     assert design(parse_spec(data, "porter.toml")).design.central_mass <= upper
     data["bounds"] = {"central_mass": ["0 kg", f"{upper - 0.5} kg"]}
     with pytest.raises(InfeasibleError):

@@ -118,10 +118,11 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
 
 def central_move(spec: Spec, req: Requirements, feasible) -> str | None:
     """The central load's upper search bound that makes ``feasible(requirements)`` hold, as
-    a diagnosis's move (``bounds.central_weight 0 .. 0 kg (the default: no central load) -> 0
-    .. 21.6 kg``), or None: where the type has a central load and no central load up to 100
-    times the flying mass's upper bound does it. The bound is raised from the spec's (from a
-    hundredth of the flying mass's upper bound where it is 0) by bisection in log space."""
+    a diagnosis's move (``bounds.central_weight 0 .. 0 kgf (the default: no central load) -> 0
+    .. 21.6 kgf``; the bound on ``central_mass`` in kg), or None: where the type has a central
+    load and no central load up to 100 times the flying mass's upper bound does it. The bound
+    is raised from the spec's (from a hundredth of the flying mass's upper bound where it is 0)
+    by bisection in log space."""
     gov = spec.governor
     if not gov.central_load:
         return None
@@ -137,9 +138,10 @@ def central_move(spec: Spec, req: Requirements, feasible) -> str | None:
         return None
     given = "central_weight" if "central_mass" not in ((spec.data or {}).get("bounds") or {}) \
         else "central_mass"
+    unit = "kgf" if given == "central_weight" else "kg"  # a weight of m kg is m kgf
     default = "" if hi > 0 else " (the default: no central load)"
-    return (f"bounds.{given} {lo:.4g} .. {hi:.4g} kg{default} -> {lo:.4g} .. "
-            f"{base * x:.4g} kg")
+    return (f"bounds.{given} {lo:.4g} .. {hi:.4g} {unit}{default} -> {lo:.4g} .. "
+            f"{base * x:.4g} {unit}")
 
 
 
