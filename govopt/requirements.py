@@ -121,8 +121,9 @@ def statics_rows(spec) -> list[Row]:
     :func:`~govopt.analysis.characteristic.rising_slopes`); ``w0sq`` (the reference
     ``omega0^2``); ``F_min``, ``F_top`` (the least and the largest absolute spring force);
     ``k2_min``, ``k2_max``."""
-    from .analysis import characteristic as chs  # here: the spring designer's rows need no
-    from .analysis import statics  # governor's statics
+    # here: the spring designer's rows need no governor's statics
+    from .analysis import characteristic as chs
+    from .analysis import statics
     gov, sp, req = spec.governor, spec.speed, spec.requirements
     margin = req.k2_margin if req else 0.0
     unit = SI_UNITS[gov.coordinate]

@@ -421,8 +421,8 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
                         source="EN 13906-1: m = s_c / n + d" if compression
                         else "coils touching: m = d"),
         "helix angle": Figure("helix angle", _f(hc.helix_angle(m, D)), "rad"),
-        "wire length": Figure("wire length", wire, "m", source=hx.helix_wire_length.__doc__
-                              .split(":")[0].strip()),
+        "wire length": Figure("wire length", wire, "m", source="Developed wire length of a "
+                              "helical spring including the helix rise (m)"),
         "mass": Figure("mass", rho * math.pi * d**2 / 4.0 * wire, "kg"),
     }
     material_fig = {
@@ -451,8 +451,9 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
     }
     dynamics = {
         "surge frequency": Figure("surge frequency", _f(hx.surge_frequency(d, D, n, G, rho)),
-                                  "Hz", symbol="f_e", source=hx.surge_frequency.__doc__
-                                  .splitlines()[2].strip()),
+                                  "Hz", symbol="f_e",
+                                  source="``f_e = d / (2 pi n D^2) sqrt(G / (2 rho))`` - "
+                                         "EN 13906-1:2013 (natural frequency)"),
         "buckling deflection": Figure("buckling deflection", sK, "m", symbol="s_K",
                                       source=f"EN 13906-1, 9.14, seating {rules.seating}"
                                       if compression else "",
