@@ -1,5 +1,6 @@
-"""Statics of every governor type on the seam (Hamabe, Part I; textbook ch. 3): characteristic
-curve, irregularity, spring, k^2.
+"""Statics of every governor type on the seam (Hamabe, Part I; textbook ch. 3): the speed of
+equilibrium, the spring a speed range requires, the operating band with friction, k^2. The
+characteristic over the range and its stability are :mod:`govopt.analysis.characteristic`.
 
 Pure functions of a :class:`~govopt.spec.Spec` (geometry, valve gear, fidelity) and design
 arrays. Every design quantity (``m``, ``kappa``, ``l0`` ...) may be a numpy array of shape
