@@ -480,21 +480,40 @@ def _vibrations(spec: Spec, s: _Statics, per_design: _PerDesign, wanted: bool) -
     return vibs
 
 
+def _spread(n: int, at: list, by_design: dict, field: str) -> np.ndarray:
+    """A check's ``field`` over ``n`` designs: its value at the designs ``at`` (NaN, or False
+    for a verdict, elsewhere)."""
+    out = np.zeros(n, bool) if field == "verdict" else np.full(n, np.nan)
+    out[at] = [getattr(by_design[i], field) for i in at]
+    return out
+
+
 def _spring_checks(spec: Spec, cols: dict, s: _Statics, per_design: _PerDesign, vibs: list,
                    checks: CheckTable, own: bool) -> None:
     """The spring's checks: its own (``own``: a leaf's, a graded wire's), design by design, or
     a helical spring's stress and geometry (coil clash, buckling, pitch), which need no wire
     grade."""
     gov, mat, n = spec.governor, spec.material, s.n
-    if own:
+    if own:  # each row added once over the designs that have it (the last of a name wins)
+        rows: dict[str, dict] = {}
         for i in np.nonzero(~s.impossible)[0]:
             found = per_design(i, lambda i=i: gov.spring_checks(spec, s.spring_of(i),
                                                                 s.char_of(spec, i), vibs[i]))
             for c in found or []:
+                rows.setdefault(c.name, {})[int(i)] = c
+        for name, by_design in rows.items():
+            kinds: dict[tuple, list] = {}  # designs with a scale, a verdict of their own or not
+            for i, c in by_design.items():
+                kinds.setdefault((c.scale is None, c.verdict is None), []).append(i)
+            for (no_scale, no_verdict), at in kinds.items():
                 on = np.zeros(n, bool)
-                on[i] = True
-                checks.add(c.name, c.value, c.limit, c.sense, scale=c.scale, verdict=c.verdict,
-                           where=on, unit=c.unit, source=c.source, group=c.group)
+                on[at] = True
+                first = by_design[at[0]]
+                checks.add(name, _spread(n, at, by_design, "value"),
+                           _spread(n, at, by_design, "limit"), first.sense,
+                           scale=None if no_scale else _spread(n, at, by_design, "scale"),
+                           verdict=None if no_verdict else _spread(n, at, by_design, "verdict"),
+                           where=on, unit=first.unit, source=first.source, group=first.group)
     elif gov.spring is not None and mat is not None and s.helical.any():
         from .analysis import spring_engineering
 

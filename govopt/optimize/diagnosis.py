@@ -21,6 +21,8 @@ from .windows import (
     Grid,
     dead_weight_arrays,
     dead_weight_parts,
+    grid_steps,
+    mass_grid,
     masses,
     statics_feasible,
     statics_window,
@@ -87,7 +89,12 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
 
     rpm = 30.0 / math.pi
     moves = []
-    central = central_move(spec, req, lambda r: feasible(spec, r))
+    def meets(m, c):  # which weight pairs meet every statics requirement of the spec
+        t = statics.terms(spec, grid.alpha, m[:, None], c[:, None])
+        arrays = dead_weight_arrays(spec, grid, m, c, t)[1:4]
+        return np.logical_and.reduce(list(dead_weight_parts(spec, req, *arrays).values()))
+
+    central = central_move(spec, req, meets)
     if central:
         moves.append(central)
     x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=req.k2_margin / x)))
@@ -116,24 +123,42 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
         f"{sp.omega_outer / sp.omega_inner:.4g})"))
 
 
-def central_move(spec: Spec, req: Requirements, feasible) -> str | None:
-    """The central load's upper search bound that makes ``feasible(requirements)`` hold, as
-    a diagnosis's move (``bounds.central_weight 0 .. 0 kgf (the default: no central load) -> 0
-    .. 21.6 kgf``; the bound on ``central_mass`` in kg), or None: where the type has a central
-    load and no central load up to 100 times the flying mass's upper bound does it. The bound
-    is raised from the spec's (from a hundredth of the flying mass's upper bound where it is 0)
-    by bisection in log space."""
+def central_move(spec: Spec, req: Requirements, meets) -> str | None:
+    """The central load's upper search bound that makes the search feasible, as a diagnosis's
+    move (``bounds.central_weight 0 .. 0 kgf (the default: no central load) -> 0 .. 21.6
+    kgf``; the bound on ``central_mass`` in kg), or None: where the type has a central load
+    and no central load up to 100 times the flying mass's upper bound does it. ``meets(m, c)``
+    says which (flying, central) mass pairs meet every statics requirement.
+
+    The bound is raised from the spec's (from a hundredth of the flying mass's upper bound
+    where it is 0) by bisection in log space. A pair meets the requirements whatever the bounds,
+    and a higher bound only adds central loads on the same weight-step lattice, so the search
+    is feasible exactly when the bound reaches the least central load of a pair that meets
+    them: that load is found once (the lattice ascending, a block of pairs at a time, up to the
+    first that holds one) and the bisection tests the bound against it."""
     gov = spec.governor
     if not gov.central_load:
         return None
     lo, hi = req.central_mass
     top = 100.0 * max(req.flying_mass[1], hi)
     base = hi if hi > 0 else req.flying_mass[1] / 100.0
+    m, loads = mass_grid(req), grid_steps(lo, top, req.mass_step)
+    per = max(1, _DIAGNOSIS_BLOCK // max(1, m.size))
+    least = None
+    for j in range(0, loads.size, per):
+        mm, cc = np.meshgrid(m, loads[j:j + per], indexing="ij")
+        hit = meets(mm.ravel(), cc.ravel()).reshape(mm.shape).any(axis=0)
+        if hit.any():
+            least = loads[j + int(np.argmax(hit))]
+            break
+    if least is None:
+        return None
 
-    def widened(x):
-        return replace(req, central_mass=(lo, base * x))
+    def reaches(x):  # the widened bound's lattice holds the least load that meets them
+        grid = grid_steps(lo, base * x, req.mass_step)
+        return grid.size > 0 and grid[-1] >= least
 
-    x = _bisect(lambda x: feasible(widened(x)), lo=1.0, hi=top / base, iters=16)
+    x = _bisect(reaches, lo=1.0, hi=top / base, iters=16)
     if x is None or (hi > 0 and x == 1.0):
         return None
     given = "central_weight" if "central_mass" not in ((spec.data or {}).get("bounds") or {}) \
@@ -142,7 +167,6 @@ def central_move(spec: Spec, req: Requirements, feasible) -> str | None:
     default = "" if hi > 0 else " (the default: no central load)"
     return (f"bounds.{given} {lo:.4g} .. {hi:.4g} {unit}{default} -> {lo:.4g} .. "
             f"{base * x:.4g} {unit}")
-
 
 
 def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
@@ -298,8 +322,6 @@ def _dynamics_reason(spec: Spec, req: Requirements, stats: dict) -> str:
                 f"mass x stiffness cells meet the load-change requirements alone) {where}")
     return (f"infeasible: the dynamic requirements are met only together on no "
             f"candidate {where}")
-
-
 
 
 def unverified(spec: Spec, cand: Candidate, failed) -> str:
