@@ -1,8 +1,9 @@
 """The test suite's time against a baseline revision's, measured in the same run on the same
-machine: each tree (this checkout and ``--base``, cloned) is installed into a virtual
-environment of its own (``uv``, the same releases for both where their ranges allow) and runs
-its whole suite on one worker (``-n 0``: no time of one test includes another's), writing a
-JUnit report; the reports are then compared.
+machine: each tree (this checkout's HEAD and ``--base``, cloned) is installed into a virtual
+environment of its own (``uv``, the same releases for both where their ranges allow; with pip
+and setuptools, as ``python -m venv`` gives the README's test command) and runs its whole suite
+on one worker (``-n 0``: no time of one test includes another's), writing a JUnit report; the
+reports are then compared.
 
 Printed: each suite's total test time and its process CPU; the tests found in both (matched by
 function name and parameters, whatever file they moved to) with their ratio, the same without
@@ -33,7 +34,7 @@ ROOT = Path(__file__).resolve().parents[1]
 def install(tree: Path, venv: Path) -> Path:
     """A virtual environment at ``venv`` with ``tree`` installed editable with its test extras;
     its interpreter."""
-    subprocess.run(["uv", "venv", "-q", str(venv)], check=True)
+    subprocess.run(["uv", "venv", "-q", "--seed", str(venv)], check=True)  # pip, setuptools
     python = venv / "bin" / "python"
     subprocess.run(["uv", "pip", "install", "-q", "--python", str(python), "-e",
                     f"{tree}[test]"], check=True)
