@@ -21,6 +21,7 @@ from .windows import (
     Grid,
     dead_weight_arrays,
     dead_weight_parts,
+    dead_weight_statics,
     grid_steps,
     mass_grid,
     masses,
@@ -89,12 +90,8 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
 
     rpm = 30.0 / math.pi
     moves = []
-    def meets(m, c):  # which weight pairs meet every statics requirement of the spec
-        t = statics.terms(spec, grid.alpha, m[:, None], c[:, None])
-        arrays = dead_weight_arrays(spec, grid, m, c, t)[1:4]
-        return np.logical_and.reduce(list(dead_weight_parts(spec, req, *arrays).values()))
-
-    central = central_move(spec, req, meets)
+    central = central_move(spec, req, lambda m, c: np.logical_and.reduce(
+        list(dead_weight_statics(spec, req, grid, m, c)[0].values())))
     if central:
         moves.append(central)
     x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=req.k2_margin / x)))
