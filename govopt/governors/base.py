@@ -201,6 +201,43 @@ class Method:
         keys += [k for text in also for k in found_in(text)]
         return list(dict.fromkeys(keys))
 
+    def uses(self, checks: tuple[tuple[str, str], ...] = ()) -> dict[str, str]:
+        """What this method uses each of its sources for (:meth:`sources`' keys, in order),
+        in words: the topics whose equations cite it, each with the places cited, then the
+        ``checks`` (``(name, source text)`` pairs) whose sources name it. A source cited by
+        another type's method is listed for what this one takes from it, not for its whole
+        content.
+
+        >>> Method("t", (Equation("statics", "", "", "hamabe", "eq. 1"),
+        ...              Equation("stability", "", "", "hamabe", "Part II, case 2"),
+        ...              Equation("statics", "", "", "rattan"))).uses(
+        ...     (("shear stress", "Wahl 1944: tau"), ("irregularity", "Hamabe Part I")))
+        {'hamabe': 'statics (eq. 1); stability (Part II, case 2); the check irregularity', \
+'rattan': 'statics', 'wahl': 'the check shear stress'}
+        """
+        out: dict[str, dict[str, list[str]]] = {}
+        for e in self.equations:
+            places = out.setdefault(e.source, {}).setdefault(TOPICS.get(e.topic, e.topic).lower(),
+                                                             [])
+            if e.where and e.where not in places:
+                places.append(e.where)
+        named: dict[str, list[str]] = {}
+        for name, text in checks:
+            for key in found_in(text):
+                out.setdefault(key, {})
+                if name not in named.setdefault(key, []):
+                    named[key].append(name)
+        words = {}
+        for key, topics in out.items():
+            parts = [f"{t} ({', '.join(w)})" if w else t for t, w in topics.items()]
+            names = named.get(key, [])
+            if names:
+                shown = ", ".join(names[:4]) + (f" and {len(names) - 4} more" if len(names) > 4
+                                                else "")
+                parts.append(f"the check{'s' if len(names) > 1 else ''} {shown}")
+            words[key] = "; ".join(parts)
+        return words
+
     def to_dict(self) -> dict:
         """The method as JSON: equations (topic, what, formula, source key, citation,
         settings), the fidelity settings with values and the free length's meaning."""
