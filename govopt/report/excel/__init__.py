@@ -72,8 +72,9 @@ from .summary import build_summary, drawing_data
 if TYPE_CHECKING:
     from ...result import Result
 
-__all__ = ["ENGINEERING", "GOVOPT", "NAME", "NOTE", "PRINTED", "RELDIFF", "SHEETS", "SHOWN_IN_CHECKS", "SI",
-           "SI_UNIT", "UNIT", "VALUE", "build_workbook", "engineering", "extent", "layout",
+__all__ = ["ENGINEERING", "GOVOPT", "NAME", "NOTE", "PRINTED", "RELDIFF", "SHEETS",
+           "SHOWN_IN_CHECKS", "SI", "SI_UNIT", "UNIT", "VALUE", "build_workbook", "engineering",
+           "extent", "layout",
            "paginate", "print_titles", "printed_font", "sheets", "tables", "write_workbook"]
 
 #: The Summary's body text (pt): 8 pt printed at the least scale, so that its page holds the

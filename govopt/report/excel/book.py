@@ -584,8 +584,8 @@ def print_setup(sheet: Sheet, header: str = "", right: str = "") -> None:
     printed width (so no text prints under 8 pt); page breaks that keep tables together
     (:func:`paginate`), the header of a table that runs on repeated on each page
     (:func:`print_titles`), a print area covering the cells and charts (not a chart's data
-    placed to the right; an empty one for a sheet outside the printed record), ``header`` and ``right`` at the top of every page and the sheet's
-    name and ``page x of y`` at the foot."""
+    placed to the right; an empty one for a sheet outside the printed record), ``header`` and
+    ``right`` at the top of every page and the sheet's name and ``page x of y`` at the foot."""
     ws = sheet.ws
     cols, rows = print_extent(sheet)
     width = SPREADSHEET_WIDTH * sum(px(ws.column_dimensions[get_column_letter(j)].width)
