@@ -19,7 +19,10 @@ import sys
 import textwrap
 import tomllib
 
+from collections.abc import Collection
+
 from .keys import WEIGHT, Key, Table
+from .references import found_in
 from .units import SI_UNITS
 
 #: what a quantity of each dimension looks like in a spec, for the templates' commented keys
@@ -244,14 +247,35 @@ def _suggested(key: Key, name: str):
     return EXAMPLES[dim]
 
 
-def describe(key: Key) -> str:
+def describe(key: Key, borrowed: Collection[str] = ()) -> str:
     """A key in sentences: its meaning, kind, default, range, when it applies and its source
-    (the templates' comments, the schema's descriptions)."""
+    (the templates' comments, the schema's descriptions). ``borrowed``: bibliography keys of
+    other governor types' sources (:func:`borrowed_sources`); a key whose source cites only
+    those says it is borrowed.
+
+    >>> from govopt.keys import Key
+    >>> describe(Key("dashpot_f", "number", "the dash-pot's f", source="Hamabe Part III"),
+    ...          borrowed=("hamabe",))
+    "The dash-pot's f. number; required; > 0 (borrowed from Hamabe Part III)."
+    """
     facts = [kind_words(key), "required" if key.required and not key.when else
              f"default {key.default_words()}" if not key.required else "", key.range_words()]
+    cited = found_in(key.source)
+    source = (f"borrowed from {key.source}" if cited and set(cited) <= set(borrowed)
+              else key.source)
     return (key.meaning[0].upper() + key.meaning[1:] + ". " + "; ".join(f for f in facts if f)
             + (f"; applies {key.when}" if key.when else "")
-            + (f" ({key.source})" if key.source else "") + ".")
+            + (f" ({source})" if source else "") + ".")
+
+
+def borrowed_sources(type_name: str) -> frozenset[str]:
+    """The bibliography keys of the other governor types' own sources
+    (:attr:`Governor.source`): what a key or criterion of ``type_name`` borrows when it cites
+    them."""
+    from .governors import REGISTRY, governor_class
+
+    own = governor_class(type_name).source
+    return frozenset(governor_class(t).source for t in REGISTRY) - {own, ""}
 
 
 def option_help(key: Key, table: Table, reference: str = "docs/reference/spring-spec.md") -> str:
@@ -300,12 +324,13 @@ compression springs."
     return text
 
 
-def _comment(key: Key) -> list[str]:
+def _comment(key: Key, borrowed: Collection[str] = ()) -> list[str]:
     """The comment above a key in a template (:func:`describe`)."""
-    return ["# " + line for line in textwrap.wrap(describe(key), 96)]
+    return ["# " + line for line in textwrap.wrap(describe(key, borrowed), 96)]
 
 
-def _table_lines(table: Table, data: dict | None, tables: dict, prefix: str = "") -> list[str]:
+def _table_lines(table: Table, data: dict | None, tables: dict, prefix: str = "",
+                 borrowed: Collection[str] = ()) -> list[str]:
     """A table of the template: its header, then each key commented with the example's value
     (``data``), or commented out where the example leaves it to its default. A table the
     example has not is written commented out."""
@@ -322,10 +347,11 @@ def _table_lines(table: Table, data: dict | None, tables: dict, prefix: str = ""
         if key.kind == "table":  # a sub-table: its own section after this one's keys
             sub = tables.get(f"{table.name}.{key.name}")
             if sub is not None:
-                later += [""] + _table_lines(sub, data.get(key.name) if on else None, tables)
+                later += [""] + _table_lines(sub, data.get(key.name) if on else None, tables,
+                                             borrowed=borrowed)
             continue
         given = [n for n in key.names if n in data]
-        out += _comment(key)
+        out += _comment(key, borrowed)
         if given:
             out += [f"{mark}{n} = {_toml(data[n])}" for n in given]
         else:
@@ -350,6 +376,7 @@ def template(type_name: str) -> str:
     source = example(cls.example)
     data = tomllib.loads(source.read_text(encoding="utf-8"))
     tables = spec_tables(type_name)
+    borrowed = borrowed_sources(type_name)
     head = [f"# A {type_name} governor spec: {cls.title}.",
             f"# Written by `govopt init --type {type_name}`: every key of the type, each with "
             "its meaning;",
@@ -376,9 +403,9 @@ def template(type_name: str) -> str:
         if table.array:
             items = data.get(name) or [None]
             for item in items:
-                out += [""] + _table_lines(table, item, tables)
+                out += [""] + _table_lines(table, item, tables, borrowed=borrowed)
         else:
-            out += [""] + _table_lines(table, data.get(name), tables)
+            out += [""] + _table_lines(table, data.get(name), tables, borrowed=borrowed)
     return "\n".join(out) + "\n"
 
 

@@ -413,6 +413,9 @@ class Governor(ABC):
     resonance_ceiling: ClassVar[bool] = True
     #: where the ceiling ``0 < k^2 < omega0^2`` comes from, for a plot's legend ('' for none)
     resonance_source: ClassVar[str] = ""
+    #: the type's own source (a key of :data:`govopt.references.REFERENCES`): a spec key or a
+    #: criterion citing another type's source is borrowed, and its text says so
+    source: ClassVar[str] = ""
     #: the spring's whole free length per unit of ``l0`` (the shaft's l0 is a half length: 2)
     spring_length_factor: ClassVar[float] = 1.0
     #: names of the three generalised forces in reports: centrifugal, spring, dead loads

@@ -217,6 +217,7 @@ class BallGovernor(Governor):
     """
 
     coordinate: ClassVar[str] = "length"
+    source: ClassVar[str] = "textbook-ch3"
     coordinate_name: ClassVar[str] = "ball radius"
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"

@@ -133,6 +133,7 @@ class ShaftGovernor(Governor):
     type_name: ClassVar[str] = "shaft"
     title: ClassVar[str] = "Hamabe's shaft governor (Disturbing Actions of a Shaft Governor)"
     coordinate: ClassVar[str] = "angle"
+    source: ClassVar[str] = "hamabe"
     coordinate_name: ClassVar[str] = "alpha"
     travel: ClassVar[str] = "angle"
     spring: ClassVar[str | None] = "tension"
