@@ -18,11 +18,10 @@ import re
 import sys
 import textwrap
 import tomllib
-
 from collections.abc import Collection
 
 from .keys import WEIGHT, Key, Table
-from .references import found_in
+from .references import REFERENCES, found_in
 from .units import SI_UNITS
 
 #: what a quantity of each dimension looks like in a spec, for the templates' commented keys
@@ -270,12 +269,12 @@ def describe(key: Key, borrowed: Collection[str] = ()) -> str:
 
 def borrowed_sources(type_name: str) -> frozenset[str]:
     """The bibliography keys of the other governor types' own sources
-    (:attr:`Governor.source`): what a key or criterion of ``type_name`` borrows when it cites
-    them."""
-    from .governors import REGISTRY, governor_class
+    (:attr:`Reference.governor`, but ``type_name``'s own :attr:`Governor.source`): what a key
+    or criterion of ``type_name`` borrows when it cites them."""
+    from .governors import governor_class
 
     own = governor_class(type_name).source
-    return frozenset(governor_class(t).source for t in REGISTRY) - {own, ""}
+    return frozenset(k for k, r in REFERENCES.items() if r.governor) - {own}
 
 
 def option_help(key: Key, table: Table, reference: str = "docs/reference/spring-spec.md") -> str:

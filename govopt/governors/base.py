@@ -41,7 +41,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ..keys import Key, Table
-from ..references import cite, found_in
+from ..references import REFERENCES, cite, found_in
 from ..springs.kinds import KINDS, SpringKind
 
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
@@ -114,7 +114,9 @@ class Equation:
     source writes them, plain text), the ``source`` (a key of :data:`govopt.references.
     REFERENCES`) and ``where`` in it (an equation, a section, a clause), and the fidelity
     settings that choose its form (``settings``: ``"analysis.geometry"``, ``"governor.k"``).
-    ``name``: the handle a writer or a check asks for (``"irregularity"``, ``"hurwitz"``)."""
+    ``name``: the handle a writer or a check asks for (``"irregularity"``, ``"hurwitz"``).
+    ``borrowed``: a criterion or solution of another type's source applied to this type
+    (:meth:`Governor.borrows`); its citation says so."""
 
     topic: str
     what: str
@@ -123,11 +125,13 @@ class Equation:
     where: str = ""
     settings: tuple[str, ...] = ()
     name: str = ""
+    borrowed: bool = False
 
     @property
     def cite(self) -> str:
-        """The citation in running text: ``"Hamabe eq. 12"``."""
-        return cite(self.source, self.where)
+        """The citation in running text: ``"Hamabe eq. 12"``, or for a borrowed criterion
+        ``"borrowed from Hamabe Part II, case 2"``."""
+        return ("borrowed from " if self.borrowed else "") + cite(self.source, self.where)
 
     @property
     def text(self) -> str:
@@ -244,6 +248,7 @@ class Method:
         return {"title": self.title,
                 "equations": [{"topic": e.topic, "what": e.what, "formula": e.formula,
                                "source": e.source, "cite": e.cite,
+                               **({"borrowed": True} if e.borrowed else {}),
                                **({"settings": list(e.settings)} if e.settings else {})}
                               for e in self.equations],
                 "settings": {s.key: s.value for s in self.settings},
@@ -662,8 +667,16 @@ class Governor(ABC):
         if self.resonance_ceiling:
             out += (Equation("stability", "the flying masses' natural frequency kept below the "
                                           "running speed (clear of resonance)",
-                             "k^2 < omega0^2", "hamabe", "Part II, case 2", name="resonance"),)
+                             "k^2 < omega0^2", "hamabe", "Part II, case 2", name="resonance",
+                             borrowed=self.borrows("hamabe")),)
         return out
+
+    @classmethod
+    def borrows(cls, source: str) -> bool:
+        """Whether an equation citing ``source`` (a bibliography key) is borrowed by this type:
+        the source is not the type's own (:attr:`source`) nor a general one (a standard,
+        Lagrange, Rattan) but another governor type's (:attr:`Reference.governor`)."""
+        return bool(cls.source) and source != cls.source and REFERENCES[source].governor
 
     def friction_method(self, spec) -> tuple[Equation, ...]:
         """The type's friction band (default none) and, with an engine, the load change
@@ -678,7 +691,8 @@ class Governor(ABC):
         return (Equation("friction", "load change against the friction band: strokes and "
                                      "rests (stick-slip), each stroke solved exactly",
                          "I xi'' + f xi' + I k^2 xi + F_r sign(xi') = C eta, "
-                         "eta' = -R xi", "hamabe", "eqs. 42-46", name="strokes"),)
+                         "eta' = -R xi", "hamabe", "eqs. 42-46", name="strokes",
+                         borrowed=self.borrows("hamabe")),)
 
     def vibration_method(self, spec) -> tuple[Equation, ...]:
         """The forced vibration under a periodic forcing (default: none modelled)."""
