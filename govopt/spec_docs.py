@@ -84,8 +84,9 @@ def _key_names(key: Key) -> str:
     return " or ".join(f"`{n}`" for n in key.names)
 
 
-def table_markdown(table: Table, heading: str) -> list[str]:
-    """One table's section of the reference: its meaning and a row per key."""
+def table_markdown(table: Table, heading: str, borrowed: Collection[str] = ()) -> list[str]:
+    """One table's section of the reference: its meaning and a row per key (``borrowed``:
+    :func:`source_words`)."""
     lines = [heading, "", table.meaning[0].upper() + table.meaning[1:] + "."]
     if table.when:
         lines[-1] += f" {table.when[0].upper()}{table.when[1:]}."
@@ -102,7 +103,7 @@ def table_markdown(table: Table, heading: str) -> list[str]:
         lines.append("| " + " | ".join(_cell(c) for c in (
             _key_names(key), meaning, kind_words(key),
             "required" if key.required else key.default_words(), key.range_words(),
-            key.source)) + " |")
+            source_words(key.source, borrowed))) + " |")
     return lines + [""]
 
 
@@ -115,9 +116,11 @@ def reference() -> str:
 
     types = list(REGISTRY)
     every = {t: spec_tables(t) for t in types}
+    borrowed = {t: borrowed_sources(t) for t in types}
     names = list(dict.fromkeys(n for t in types for n in every[t]))
     shared = [n for n in names if n and all(n in every[t] for t in types)
-              and len({tuple(table_markdown(every[t][n], "")) for t in types}) == 1]
+              and len({tuple(table_markdown(every[t][n], "", borrowed[t]))
+                       for t in types}) == 1]
     out = [INTRO, "## Contents", ""]
     out += [f"- [{t}](#{t}): {governor_class(t).title}" for t in types]
     out += ["- [Tables every type shares](#tables-every-type-shares): "
@@ -130,7 +133,7 @@ def reference() -> str:
         for n in names:
             if n in every[t] and n not in shared:
                 title = f"[[{n}]]" if every[t][n].array else f"[{n}]" if n else "top level"
-                out += table_markdown(every[t][n], f"### {t}: {title}")
+                out += table_markdown(every[t][n], f"### {t}: {title}", borrowed[t])
         out.append("Shared: " + ", ".join(f"[`[{n}]`](#{_anchor(n)})" for n in shared
                                           if n in every[t]) + ".")
         out.append("")
@@ -259,12 +262,17 @@ def describe(key: Key, borrowed: Collection[str] = ()) -> str:
     """
     facts = [kind_words(key), "required" if key.required and not key.when else
              f"default {key.default_words()}" if not key.required else "", key.range_words()]
-    cited = found_in(key.source)
-    source = (f"borrowed from {key.source}" if cited and set(cited) <= set(borrowed)
-              else key.source)
+    source = source_words(key.source, borrowed)
     return (key.meaning[0].upper() + key.meaning[1:] + ". " + "; ".join(f for f in facts if f)
             + (f"; applies {key.when}" if key.when else "")
             + (f" ({source})" if source else "") + ".")
+
+
+def source_words(source: str, borrowed: Collection[str] = ()) -> str:
+    """A key's source as a type reads it: ``"borrowed from Hamabe Part III"`` where it cites
+    only ``borrowed`` bibliography keys (other types' own sources), else as declared."""
+    cited = found_in(source)
+    return f"borrowed from {source}" if cited and set(cited) <= set(borrowed) else source
 
 
 def borrowed_sources(type_name: str) -> frozenset[str]:
