@@ -418,6 +418,10 @@ class Governor(ABC):
     resonance_ceiling: ClassVar[bool] = True
     #: where the ceiling ``0 < k^2 < omega0^2`` comes from, for a plot's legend ('' for none)
     resonance_source: ClassVar[str] = ""
+    #: the spec key of the type's friction (its dotted path) and its dimension: what a
+    #: diagnosis lowers where friction makes a design infeasible ("" where the type has none)
+    friction_key: ClassVar[str] = ""
+    friction_dimension: ClassVar[str] = "force"
     #: the type's own source (a key of :data:`govopt.references.REFERENCES`): a spec key or a
     #: criterion citing another type's source is borrowed, and its text says so
     source: ClassVar[str] = ""

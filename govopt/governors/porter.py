@@ -218,6 +218,7 @@ class BallGovernor(Governor):
 
     coordinate: ClassVar[str] = "length"
     source: ClassVar[str] = "textbook-ch3"
+    friction_key: ClassVar[str] = "governor.sleeve_friction"
     coordinate_name: ClassVar[str] = "ball radius"
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"

@@ -134,6 +134,8 @@ class ShaftGovernor(Governor):
     title: ClassVar[str] = "Hamabe's shaft governor (Disturbing Actions of a Shaft Governor)"
     coordinate: ClassVar[str] = "angle"
     source: ClassVar[str] = "hamabe"
+    friction_key: ClassVar[str] = "design.friction_moment"
+    friction_dimension: ClassVar[str] = "moment"
     coordinate_name: ClassVar[str] = "alpha"
     travel: ClassVar[str] = "angle"
     spring: ClassVar[str | None] = "tension"
