@@ -331,8 +331,7 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
     friction = friction_move(spec, lambda s: _feasible(s, req, stage))
     if friction:
         moves.append(friction)
-        head += (f"; the friction ({spec.governor.friction_key}) is what binds: lowered, a "
-                 "design exists")
+        head += f"; with less friction ({spec.governor.friction_key}) a design exists"
     for name, make, how, value in cands:
         x = _relax(spec, req, stage, make)
         if x is None:
@@ -429,7 +428,7 @@ def unverified(spec: Spec, cand: Candidate, failed) -> str:
 #: The most evaluations :func:`evaluation_moves` spends on a failing design (each a few ms to
 #: a tenth of a second; a count, not a time, so that the advice is the same on any machine):
 #: its moves are then those found so far, the friction's and the speeds' first.
-EVALUATION_BUDGET = 80
+EVALUATION_BUDGET = 200
 #: The factors a design value is scanned over, each way (up to x2 and /2), before bisection.
 _SCAN = 1.05 ** np.arange(1, 16)
 
