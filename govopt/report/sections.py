@@ -353,8 +353,9 @@ def restoring(res) -> list[Table]:
         out.append(Table(f"Restoring stiffness at the normal configuration ({k2.cite})",
                          ["quantity", "unit", "value"],
                          [["k^2", "1/s^2", cell(k2n)], ["k^2 / omega0^2", "", cell(k2n / w0sq)]],
-                         ["stable for k^2 > 0, clear of resonance for k^2 / omega0^2 < 1 "
-                          f"({ceiling.cite})" if ceiling is not None else
+                         ["stable and clear of resonance for 0 < k^2 / omega0^2 < 1"
+                          + (f" (the ceiling {ceiling.cite})" if ceiling.borrowed else "")
+                          if ceiling is not None else
                           "stable for k^2 > 0; this type keeps no ceiling on k^2 / omega0^2 "
                           "(nothing forces its flying masses at the running speed's "
                           "harmonics)"],

@@ -603,8 +603,10 @@ def print_setup(sheet: Sheet, header: str = "", right: str = "") -> None:
                                   footer=0.3)
     ws.print_options.gridLines = False
     sheet.area = f"A1:{get_column_letter(cols)}{rows}"
-    # a sheet outside the record: a blank cell below its rows, whose page is not printed
-    ws.print_area = sheet.area if sheet.printed else f"A{rows + 2}"
+    # a sheet outside the record: a blank row below its rows, across its printed columns (a
+    # reader of the print range finds them), whose page is not printed
+    ws.print_area = sheet.area if sheet.printed else \
+        f"A{rows + 2}:{get_column_letter(cols)}{rows + 2}"
     if header:  # '&' starts a header's code: doubled, it is the character
         ws.oddHeader.left.text = xml_safe(header).replace("&", "&&")
     if right:
