@@ -61,6 +61,11 @@ def test_too_much_friction_is_told_to_lower_it():
     # the weight bounds' move names the spec's keys and units, not a bare factor
     assert any(m.startswith("bounds.ball_weight 2 .. 10 kgf -> ") and
                "bounds.central_weight 10 .. 100 kgf -> " in m for m in e.moves), e.moves
+    # the geometry: a narrower range of radii narrows the band; the radius told works
+    outer = next(m for m in e.moves if m.startswith("governor.radius_outer 25 cm -> "))
+    data = _porter(TOO_MUCH)
+    data["governor"]["radius_outer"] = outer.split(" -> ")[1]
+    assert all(c.passed for c in govopt.design(parse_spec(data, "porter.toml")).checks)
 
 
 def test_a_porter_without_bounds_is_not_told_only_to_move_its_band():

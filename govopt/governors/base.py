@@ -422,6 +422,10 @@ class Governor(ABC):
     #: diagnosis lowers where friction makes a design infeasible ("" where the type has none)
     friction_key: ClassVar[str] = ""
     friction_dimension: ClassVar[str] = "force"
+    #: the spec keys of the range's ends (innermost, outermost configuration) and their
+    #: dimension: a narrower range narrows the speed band, what a diagnosis may propose
+    range_keys: ClassVar[tuple[str, str] | None] = None
+    range_dimension: ClassVar[str] = "length"
     #: the type's own source (a key of :data:`govopt.references.REFERENCES`): a spec key or a
     #: criterion citing another type's source is borrowed, and its text says so
     source: ClassVar[str] = ""

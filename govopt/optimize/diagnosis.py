@@ -53,10 +53,11 @@ def _written_unit(spec: Spec, key: str) -> str | None:
     return m[1] if m else None
 
 
-def as_written(spec: Spec, key: str, si: float, dimension: str, down: bool = False) -> str:
+def as_written(spec: Spec, key: str, si: float, dimension: str, down: bool = False,
+               up: bool = False) -> str:
     """``si`` (SI) in the unit the spec wrote ``key`` in, to 4 significant digits (``2.309
-    kgf``; rounded down with ``down``, so that a lowered value that works still works), else
-    in SI."""
+    kgf``; rounded down with ``down``, up with ``up``, so that a value moved far enough still
+    is), else in SI."""
     unit = _written_unit(spec, key)
     value = si
     if unit is not None:
@@ -66,9 +67,9 @@ def as_written(spec: Spec, key: str, si: float, dimension: str, down: bool = Fal
             unit = None
     if unit is None:
         unit = SI_UNITS[dimension]
-    if down and value > 0:
+    if (down or up) and value > 0:
         step = 10.0 ** (math.floor(math.log10(value)) - 3)
-        value = math.floor(value / step) * step
+        value = (math.floor if down else math.ceil)(value / step) * step
     return f"{value:.4g} {unit}"
 
 
@@ -90,6 +91,40 @@ def friction_move(spec: Spec, feasible) -> str | None:
         return None
     return (f"{key} {as_written(spec, key, now, dimension)} -> "
             f"{as_written(spec, key, now / x, dimension, down=True)}")
+
+
+def range_moves(spec: Spec, feasible) -> list[str]:
+    """The governor's range narrowed at either end (its type's
+    :attr:`~govopt.governors.base.Governor.range_keys`) to where ``feasible(variant spec)``
+    holds, as moves in the spec's keys and units (``governor.radius_outer 25 cm -> 23.1 cm``):
+    bisection on the share of the range kept, down to a twentieth; none where the type
+    declares no range keys or the spec does not write them."""
+    from ..errors import GovoptError
+
+    gov = spec.governor
+    if gov.range_keys is None or spec.data is None:
+        return []
+    ends = [next((e for e in spec.entries if e.key == k), None) for k in gov.range_keys]
+    if any(e is None or not isinstance(e.si, float) for e in ends):
+        return []
+    (k_in, lo), (k_out, hi) = [(e.key, e.si) for e in ends]
+    unit = SI_UNITS[gov.range_dimension]
+
+    def ok(key: str, value: float) -> bool:
+        try:
+            return feasible(with_values(spec, {key: f"{value!r} {unit}"}))
+        except GovoptError:  # a configuration the type refuses (its normal outside)
+            return False
+
+    moves = []
+    for key, now, to in ((k_out, hi, lambda x: lo + (hi - lo) / x),
+                         (k_in, lo, lambda x: hi - (hi - lo) / x)):
+        x = _bisect(lambda x, key=key, to=to: ok(key, to(x)), hi=20.0, iters=12)
+        if x is not None:
+            shown = as_written(spec, key, to(x), gov.range_dimension, down=key == k_out,
+                               up=key == k_in)
+            moves.append(f"{key} {as_written(spec, key, now, gov.range_dimension)} -> {shown}")
+    return moves
 
 
 def bounds_move(spec: Spec, req: Requirements, x: float, central: bool) -> str:
@@ -142,14 +177,15 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
 
     def feasible(s, r):
         m, c = masses(r)
-        keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1]) \
-            and s.governor is spec.governor  # another governor (its friction): its own arrays
+        own_gov = s.governor is spec.governor  # else another friction or range: its arrays
+        keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1]) and own_gov
+        g = grid if own_gov else Grid.build(s)
         for lo in range(0, m.size, _DIAGNOSIS_BLOCK):
             mb, cb = m[lo:lo + _DIAGNOSIS_BLOCK], c[lo:lo + _DIAGNOSIS_BLOCK]
-            t = statics.terms(s, grid.alpha, mb[:, None], cb[:, None])
+            t = statics.terms(s, g.alpha, mb[:, None], cb[:, None])
             hit = memo.get(lo) if keep else None
             if hit is None or not _same_terms(hit[0], t):
-                hit = t, dead_weight_arrays(s, grid, mb, cb, t)[1:4]
+                hit = t, dead_weight_arrays(s, g, mb, cb, t)[1:4]
                 if keep:
                     memo[lo] = hit
             if np.logical_and.reduce(list(dead_weight_parts(s, r, *hit[1]).values())).any():
@@ -188,6 +224,7 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
         central_mass=(req.central_mass[0] / x, req.central_mass[1] * x))), hi=4.0)
     if x is not None:
         moves.append(bounds_move(spec, req, x, central=spec.governor.central_load))
+    moves += range_moves(spec, lambda s: feasible(s, req))  # the geometry: a narrower range
     with np.errstate(invalid="ignore"):
         ratio = np.sqrt(rise[:, -1] / fall[:, 0])
     best = float(np.nanmin(np.where(np.isfinite(ratio), ratio, np.nan))) \
