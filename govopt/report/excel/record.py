@@ -139,10 +139,3 @@ _WORKBOOK_NOTES = (
                  "Ranges > Edit, entire sheet; Excel: Page Layout > Print Area > Clear). Text "
                  "never under 8 pt; a table that runs onto another page repeats its header."),
 )
-
-
-def build_model(sheet: Sheet, res: Result) -> None:
-    """The Model sheet's title and what it holds (its constants are written by the Design
-    sheet's writer, :func:`govopt.report.excel.design.model_constants`, the drawing's data by
-    the Summary's)."""
-    sheet.title(1, "Model: the model's internals (for checking govopt, not for the design)")
