@@ -470,14 +470,59 @@ def _vibrations(spec: Spec, s: _Statics, per_design: _PerDesign, wanted: bool) -
     with a dash-pot or an engine, design by design (also the spring's load cycle); None where
     not ``wanted`` or the type has none."""
     gov = spec.governor
-    vibs = [None] * s.n
+    vibs = _Vibrations(s.n)
     if wanted and overridden(gov, "vibration"):
-        has_dashpot = np.isfinite(s.dashpot)
-        for i in np.nonzero(_engine_or_dashpot(spec, s))[0]:
-            vibs[i] = per_design(i, lambda i=i: gov.vibration(
-                spec, s.spring_of(i), float(s.k2[i, s.i_n]),
-                float(s.dashpot[i]) if has_dashpot[i] else 0.0))
+        at = np.nonzero(_engine_or_dashpot(spec, s))[0]
+        dashpot = np.where(np.isfinite(s.dashpot), s.dashpot, 0.0)
+        try:  # every design at once (:meth:`Governor.vibrations`)
+            with np.errstate(all="ignore"):
+                vibs.put(at, gov.vibrations(spec, _spring_rows(s.sd, at, s.n),
+                                            s.k2[at, s.i_n], dashpot[at]))
+        except (DesignError, OverflowError):  # one design's: each alone, to say which
+            for i in at:
+                vibs.put([i], [per_design(i, lambda i=i: gov.vibration(
+                    spec, s.spring_of(i), float(s.k2[i, s.i_n]), float(dashpot[i])))])
     return vibs
+
+
+class _Vibrations:
+    """Each design's forced vibration (None where there is none): ``vibs[i]``, made on demand
+    from what :meth:`Governor.vibrations` computed for many; ``peak_to_peak()`` over all."""
+
+    def __init__(self, n: int):
+        self.n, self.parts = n, []
+
+    def put(self, at, many) -> None:
+        if many is not None:
+            self.parts.append((np.asarray(at, dtype=np.int64), many))
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, i: int):
+        for at, many in self.parts:
+            j = np.searchsorted(at, i)
+            if j < at.size and at[j] == i:
+                return many[int(j)]
+        return None
+
+    def __iter__(self):
+        return (self[i] for i in range(self.n))
+
+    def peak_to_peak(self) -> np.ndarray:
+        """Each design's peak-to-peak (NaN where it has no vibration)."""
+        out = np.full(self.n, np.nan)
+        for at, many in self.parts:
+            p2p = getattr(many, "peak_to_peak_rad", None)
+            out[at] = (np.asarray(p2p, dtype=float) if p2p is not None else
+                       [np.nan if v is None else float(v.peak_to_peak_rad) for v in many])
+        return out
+
+
+def _spring_rows(sd: statics.SpringDesign, rows: np.ndarray, n: int) -> statics.SpringDesign:
+    """The designs ``rows`` of a vectorised :class:`SpringDesign` of ``n`` (fields ``(rows,)``)."""
+    return replace(sd, **{f.name: np.broadcast_to(np.asarray(v, dtype=float), (n, 1))[rows, 0]
+                          for f in fields(sd) if isinstance(v := getattr(sd, f.name), np.ndarray)})
 
 
 def _spread(n: int, at: list, by_design: dict, field: str) -> np.ndarray:
@@ -578,8 +623,7 @@ def _vibration_checks(spec: Spec, s: _Statics, vibs: list, out: dict,
                       checks: CheckTable) -> None:
     """The forced vibration's figure and rows (:func:`govopt.requirements.vibration_rows`),
     where the type has a forcing and some design is driven."""
-    p2p = np.array([np.nan if v is None else float(v.peak_to_peak_rad) for v in vibs],
-                   dtype=float)
+    p2p = vibs.peak_to_peak()
     if overridden(spec.governor, "vibration") and _engine_or_dashpot(spec, s).any():
         out["vibration_p2p_rad"] = p2p
         checks.add_rows(vibration_rows(spec), {"p2p": p2p}, where=~np.isnan(p2p))
