@@ -394,6 +394,11 @@ class Governor(ABC):
     #: the type carries a central (sleeve) load, which ``[design] central_weight`` gives and
     #: the design search varies within ``[bounds] central_weight``
     central_load: ClassVar[bool] = False
+    #: the generalised forces and the inertia are affine in the central load, and the lever
+    #: ``jp - ci`` free of it (a sleeve's weight acting through the linkage, as a Porter's): each
+    #: statics requirement is then an interval of central loads, found in closed form
+    #: (:func:`govopt.optimize.windows.central_load_intervals`)
+    central_load_affine: ClassVar[bool] = False
 
     #: innermost, outermost and normal configurations (SI), set by :meth:`parse`
     x_inner: float
