@@ -5,10 +5,11 @@ design's evaluation as a :class:`~govopt.result.Result`.
 (Hamabe eqs. 1, 2, 11, 12), ``k^2`` (eqs. 18-20), the load-change model (eqs. 24-32,
 :func:`govopt.analysis.transient_events.analyse_many`) and the classic measures (textbook ch. 3) in
 a few numpy operations, and evaluates every requirement row of :mod:`govopt.requirements` on them in
-one :class:`~govopt.requirements.CheckTable`. The parts that have no vectorised form run inside it
-design by design, into the same table: a type's periodic forcing (:meth:`Governor.vibration`, Hamabe
-Part II), Hamabe's friction transient (eqs. 42-46, a sequence of strokes), and the spring's own
-checks where the type or a wire grade supplies them (:meth:`Governor.spring_checks`). A design no
+one :class:`~govopt.requirements.CheckTable`, with a type's periodic forcing (Hamabe Part II) for
+all the designs at once (:meth:`Governor.vibrations`). The parts that have no vectorised form run
+inside it design by design, into the same table: Hamabe's friction transient (eqs. 42-46, a
+sequence of strokes), and the spring's own checks where the type or a wire grade supplies them
+(:meth:`Governor.spring_checks`). A design no
 spring can realise gets the one-line diagnosis :func:`diagnose` (the ``DesignError``
 :func:`govopt.evaluate` raises for it) instead of figures.
 
@@ -466,9 +467,10 @@ def _engine_or_dashpot(spec: Spec, s: _Statics) -> np.ndarray:
 
 
 def _vibrations(spec: Spec, s: _Statics, per_design: _PerDesign, wanted: bool) -> list:
-    """The type's forced vibration (:meth:`Governor.vibration`, Hamabe Part II) of each design
-    with a dash-pot or an engine, design by design (also the spring's load cycle); None where
-    not ``wanted`` or the type has none."""
+    """The type's forced vibration (Hamabe Part II) of each design with a dash-pot or an engine
+    (also the spring's load cycle), all at once (:meth:`Governor.vibrations`; design by design
+    only to name the design whose vibration raises a :class:`DesignError`); None where not
+    ``wanted`` or the type has none."""
     gov = spec.governor
     vibs = _Vibrations(s.n)
     if wanted and overridden(gov, "vibration"):
