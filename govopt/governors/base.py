@@ -35,7 +35,7 @@ load-change model and k^2 are invariant under scaling every generalised force an
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -447,6 +447,11 @@ class Governor(ABC):
     #: the type carries a central (sleeve) load, which ``[design] central_weight`` gives and
     #: the design search varies within ``[bounds] central_weight``
     central_load: ClassVar[bool] = False
+    #: the generalised forces and the inertia are affine in the central load, and the lever
+    #: ``jp - ci`` free of it (a sleeve's weight acting through the linkage, as a Porter's): each
+    #: statics requirement is then an interval of central loads, found in closed form
+    #: (:func:`govopt.optimize.windows.central_load_intervals`)
+    central_load_affine: ClassVar[bool] = False
 
     #: innermost, outermost and normal configurations (SI), set by :meth:`parse`
     x_inner: float
@@ -489,8 +494,22 @@ class Governor(ABC):
 
     def vibration(self, spec, sd, k2_normal: float, dashpot: float):
         """The forced vibration at the normal configuration where the type has a periodic
-        forcing (a result with ``to_dict()``), else ``None`` (default: no forcing modelled)."""
+        forcing (a result with ``to_dict()`` and ``peak_to_peak_rad``), else ``None`` (default:
+        no forcing modelled). A type with a forcing overrides this, and :meth:`vibrations`
+        where it can compute many designs at once."""
         return None
+
+    def vibrations(self, spec, sd, k2_normal, dashpot):
+        """:meth:`vibration` of N designs (``sd``'s fields of shape ``(N,)`` or ``(N, 1)``,
+        ``k2_normal`` and ``dashpot`` of shape ``(N,)``): a sequence of N results, or None
+        where the type has no forcing. Default: :meth:`vibration` design by design; a type
+        overrides it with one computation over the designs."""
+        rows = []
+        for i in range(np.size(k2_normal)):
+            one = replace(sd, **{f.name: float(np.ravel(getattr(sd, f.name))[i])
+                                 for f in fields(sd) if np.ndim(getattr(sd, f.name))})
+            rows.append(self.vibration(spec, one, float(k2_normal[i]), float(dashpot[i])))
+        return None if rows and rows[0] is None else rows
 
     @classmethod
     def key_unit(cls, quantity: str) -> str:

@@ -293,6 +293,7 @@ class BellCrankGovernor(Governor):
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
     central_load: ClassVar[bool] = True
+    central_load_affine: ClassVar[bool] = True  # cf, cf_x and I affine in W; ci = 0 (terms)
     #: True where the fulcrum rides on the sleeve and the ball hangs below it (Fig. 3.12)
     fulcrum_on_sleeve: ClassVar[bool] = False
     #: the spec key of the lever's second arm

@@ -226,6 +226,7 @@ class BallGovernor(Governor):
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
     central_load: ClassVar[bool] = True
+    central_load_affine: ClassVar[bool] = True  # cf, cf_x and I affine in W; ci = 0 (terms)
 
     def __init__(self, linkage: Linkage, x_inner, x_outer, x_normal, sleeve_friction=0.0,
                  spring=None, lever_ratio=0.0, spring_length=0.0):

@@ -23,6 +23,7 @@ from ..units import SI_UNITS, to_unit
 from .catalogue_search import Candidate, best_discrete
 from .windows import (
     Grid,
+    central_load_intervals,
     dead_weight_arrays,
     dead_weight_parts,
     dead_weight_statics,
@@ -175,7 +176,16 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
     own = masses(req)
     memo: dict = {}
 
+    def meets_in(s, r):
+        return lambda m, c: np.logical_and.reduce(
+            list(dead_weight_statics(s, r, grid, m, c)[0].values()))
+
     def feasible(s, r):
+        if spec.governor.central_load_affine:  # each ball's central loads in closed form
+            least = _least_central(s, r, mass_grid(r), grid_steps(*r.central_mass,
+                                                                   r.mass_step), meets_in(s, r))
+            if least is not ...:
+                return least is not None
         m, c = masses(r)
         own_gov = s.governor is spec.governor  # else another friction or range: its arrays
         keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1]) and own_gov
@@ -198,8 +208,7 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
 
     rpm = 30.0 / math.pi
     moves = []
-    central = central_move(spec, req, lambda m, c: np.logical_and.reduce(
-        list(dead_weight_statics(spec, req, grid, m, c)[0].values())))
+    central = central_move(spec, req, meets_in(spec, req))
     if central:
         moves.append(central)
     friction = friction_move(spec, lambda s: feasible(s, req))
@@ -255,14 +264,16 @@ def central_move(spec: Spec, req: Requirements, meets) -> str | None:
     top = 100.0 * max(req.flying_mass[1], hi)
     base = hi if hi > 0 else req.flying_mass[1] / 100.0
     m, loads = mass_grid(req), grid_steps(lo, top, req.mass_step)
-    per = max(1, _DIAGNOSIS_BLOCK // max(1, m.size))
-    least = None
-    for j in range(0, loads.size, per):
-        mm, cc = np.meshgrid(m, loads[j:j + per], indexing="ij")
-        hit = meets(mm.ravel(), cc.ravel()).reshape(mm.shape).any(axis=0)
-        if hit.any():
-            least = loads[j + int(np.argmax(hit))]
-            break
+    least = _least_central(spec, req, m, loads, meets) if gov.central_load_affine else ...
+    if least is ...:  # the lattice ascending, a block of pairs at a time
+        least = None
+        per = max(1, _DIAGNOSIS_BLOCK // max(1, m.size))
+        for j in range(0, loads.size, per):
+            mm, cc = np.meshgrid(m, loads[j:j + per], indexing="ij")
+            hit = meets(mm.ravel(), cc.ravel()).reshape(mm.shape).any(axis=0)
+            if hit.any():
+                least = loads[j + int(np.argmax(hit))]
+                break
     if least is None:
         return None
 
@@ -279,6 +290,34 @@ def central_move(spec: Spec, req: Requirements, meets) -> str | None:
     default = "" if hi > 0 else " (the default: no central load)"
     return (f"bounds.{given} {lo:.4g} .. {hi:.4g} {unit}{default} -> {lo:.4g} .. "
             f"{base * x:.4g} {unit}")
+
+
+#: lattice loads tried at the lower end of each flying mass's closed-form interval
+_CENTRAL_TRIES = 3
+
+
+def _least_central(spec: Spec, req: Requirements, m, loads, meets):
+    """The least central load of the lattice ``loads`` at which some flying mass of ``m``
+    meets every statics requirement (``meets(m, c)``), or None: each mass's interval of
+    central loads in closed form (:func:`govopt.optimize.windows.central_load_intervals`,
+    widened by rounding), the first lattice loads in it tried with ``meets`` itself, which
+    decides. ``...`` where the two disagree (every load tried fails in an interval that holds
+    more): the caller scans the lattice instead."""
+    lo, hi = central_load_intervals(spec, req, Grid.build(spec), m)
+    pad = 1e-9 * (np.abs(lo) + np.abs(hi) + req.mass_step)
+    with np.errstate(invalid="ignore"):
+        first = np.searchsorted(loads, np.where(np.isfinite(lo), lo - pad, -np.inf))
+        end = np.searchsorted(loads, np.where(np.isfinite(hi), hi + pad, np.inf), side="right")
+    rows = np.nonzero(end > first)[0]
+    if not rows.size:
+        return None
+    j = first[rows, None] + np.arange(_CENTRAL_TRIES)
+    tried = j < end[rows, None]
+    jj = np.minimum(j, loads.size - 1)
+    hit = meets(np.repeat(m[rows], _CENTRAL_TRIES), loads[jj].ravel()).reshape(j.shape) & tried
+    if np.any(~hit.any(axis=1) & (end[rows] - first[rows] > _CENTRAL_TRIES)):
+        return ...
+    return float(np.min(loads[jj][hit])) if hit.any() else None
 
 
 def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:

@@ -376,6 +376,12 @@ class ShaftGovernor(Governor):
 
         return vibration.vibration(spec, sd, self.alpha_normal, k2_normal, dashpot=dashpot)
 
+    def vibrations(self, spec, sd, k2_normal, dashpot):
+        """:meth:`vibration` of N designs at once (:func:`.vibration.vibrations`)."""
+        from . import vibration
+
+        return vibration.vibrations(spec, sd, self.alpha_normal, k2_normal, dashpot=dashpot)
+
     def columns(self, x) -> dict:
         """Half length ``l`` of the spring and its arm ``h = dl/dalpha`` (Hamabe eq. 2)."""
         return {"half length l": (linkage.half_length(x, self.a, self.b), "m"),
