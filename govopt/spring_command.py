@@ -314,10 +314,8 @@ def _pairs(v: dict, where: _Where) -> None:
 
 def _material_rules(v: dict, where: _Where) -> None:
     """What a wire grade must come with, and what needs one: the tensile strength of
-    ``custom`` only, a load cycle's fatigue only with a grade's data; a grade whose shear
-    modulus varies with the wire needs it; without a grade, the allowable and the modulus."""
-    from .springs import materials
-
+    ``custom`` only, a load cycle's fatigue only with a grade's data; without a grade, the
+    allowable and the modulus."""
     material = v.get("material")
     if v.get("tensile_strength") is not None and material != "custom":
         where.fail("tensile_strength", "applies to --material custom only (a grade's R_m is its "
@@ -335,10 +333,6 @@ def _material_rules(v: dict, where: _Where) -> None:
     if cycle and v["fatigue_min_force"] > v["fatigue_max_force"]:
         where.fail("fatigue_min_force", f"expected at most {where('fatigue_max_force')}, "
                                         f"got {v['fatigue_min_force']:.6g} N")
-    if material is not None and v.get("shear_modulus") is None and not isinstance(
-            materials.material(material, tensile_strength=1.0).G, float):
-        where.missing("shear_modulus", f" with material {material!r}, whose shear modulus "
-                                       "varies with the wire diameter")
     if material is None:
         _require(v, where, "allowable_stress", "shear_modulus")
 

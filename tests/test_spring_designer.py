@@ -84,10 +84,20 @@ def test_spring_options_are_read_as_a_governor_spec_is():
     assert result.output.strip() == "error: --turns-min: 1e+308 is too large a number"
 
 
-def test_grade_without_one_shear_modulus_names_the_option():
-    result = invoke(["spring", "--force", "500 N", "--stiffness", "20 N/mm", "--material",
-                     "ASTM A228"])
-    assert result.exit_code == 2 and "--shear-modulus" in result.output
+def test_grade_whose_moduli_step_with_the_wire_reads_them_by_its_wire():
+    """ASTM A228's G and E step with d (Shigley Table 10-5): without --shear-modulus each
+    range of constant moduli is sized on its own; the spring's rate is that of its own wire's
+    row, and it passes `spring check` (which reads the same rows)."""
+    from govopt.springs.materials import material
+
+    result = invoke(["spring", "--force", "10 lbf", "--stiffness", "5 lbf/in", "--material",
+                     "ASTM A228", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    d, D = fig(data, "wire_diameter_m"), fig(data, "mean_coil_diameter_m")
+    n = fig(data, "active_coils")
+    G = float(material("ASTM A228").shear_modulus(d))
+    assert G * d**4 / (8 * D**3 * n) == pytest.approx(5 * 4.4482216152605 / 0.0254, rel=1e-9)
     bad = invoke([*SH[:-1], "no such grade"])
     assert bad.exit_code == 2 and "expected one of 'EN10270-1" in bad.output
     assert "None" not in bad.output
