@@ -333,7 +333,7 @@ def _material_rules(v: dict, where: _Where) -> None:
     if cycle and v["fatigue_min_force"] > v["fatigue_max_force"]:
         where.fail("fatigue_min_force", f"expected at most {where('fatigue_max_force')}, "
                                         f"got {v['fatigue_min_force']:.6g} N")
-    if material is None:
+    if material is None and v.get("catalogue") is None:  # a catalogue's rows name theirs
         _require(v, where, "allowable_stress", "shear_modulus")
 
 
@@ -341,7 +341,8 @@ def _rules(v: dict):
     from .springs.assessment import Rules
 
     return Rules(method=v["rules"], allowable=v.get("allowable_stress"),
-                 correction=v.get("correction") or (None if v.get("material") else "wahl"),
+                 correction=v.get("correction") or (
+                     None if v.get("material") or v.get("catalogue") else "wahl"),
                  peened=v["peened"], seating=v["seating"],
                  index=(v["index_min"], v["index_max"]),
                  fatigue_safety=v["min_fatigue_safety"], cycles=v["life"],
@@ -450,6 +451,8 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
     if v.get("ends") is not None and v["kind"] != "compression":
         where.fail("ends", "end forms are a compression spring's; an extension spring has "
                            "--loops")
+    if v.get("catalogue") is not None:
+        return _from_catalogue(v, where, name, entries)
     wires, source = _catalogue(v, where)
     material = v.get("material")
     cycle = None
@@ -481,6 +484,32 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
         raise GovoptError("no spring meets these requirements" + (f": {why}" if why else ""))
     a = assess(sizing.spring, sizing.mat, sizing.loads, sizing.rules)
     return _outcome(name, "design", a, sizing.record(), entries, v, sizing=sizing)
+
+
+def _from_catalogue(v: dict, where: _Where, name: str, entries) -> Outcome:
+    """The lightest spring of a maker's catalogue meeting the requirements
+    (:mod:`govopt.spring_stock`): the same report as a designed spring's."""
+    from . import spring_stock as stock
+    from .springs.assessment import Loads
+
+    for key in ("length_1", "length_2", "wire_sizes", "coil_step"):
+        if v.get(key) is not None:
+            where.fail(key, "not with a catalogue (its springs are picked at the forces and "
+                            "the stiffness)")
+    if v["kind"] != "compression":
+        where.fail("catalogue", "a catalogue of compression springs (not --kind extension)")
+    file = v["catalogue"]
+    if where("catalogue") != "--catalogue" and file != stock.SAMPLE:
+        file = str(Path(where.file).parent / file)  # a spec's file: beside the spec
+    cycle = None
+    if v.get("fatigue_min_force") is not None:
+        cycle = (v["fatigue_min_force"], v["fatigue_max_force"])
+    loads = Loads(v.get("min_force") or 0.0, v["force"], cycle)
+    item, a, counts, notes = stock.pick(stock.read(file), v, _rules(v), loads,
+                                        v.get("material"))
+    source = Path(file).name if file != stock.SAMPLE else "sample (made up, no maker's)"
+    return _outcome(name or f"part {item.part} of the catalogue {source}", "design", a,
+                    stock.record(a, counts, source, notes), entries, v)
 
 
 # ---------------------------------------------------------------------------- check

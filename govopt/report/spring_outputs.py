@@ -247,13 +247,15 @@ def check_spec_text(outcome) -> str:
         lines += [f"total_coils = {sp.coils!r}  # the body's", f'loops = "{sp.form}"',
                   f"initial_tension = {q(sp.F0, 'N')}"]
     lines.append(f"free_length = {q(sp.L0, 'm')}")
-    if v.get("material") is not None:
-        lines.append(f'material = "{v["material"]}"')
+    # the grade given, or a catalogue's spring's own (its row names it)
+    material = v.get("material") or (a.mat.grade if v.get("catalogue") else None)
+    if material is not None:
+        lines.append(f'material = "{material}"')
     for key, si in (("tensile_strength", "Pa"), ("shear_modulus", "Pa"),
                     ("allowable_stress", "Pa")):
         if v.get(key) is not None:
             lines.append(f"{key} = {q(v[key], si)}")
-    if v.get("density") is not None or v.get("material") is None:
+    if v.get("density") is not None or material is None:
         lines.append(f'density = "{a.mat.density!r} kg/m^3"')
     lines.append(f"force = {q(a.loads.F2, 'N')}")
     if a.loads.F1 > 0:
@@ -266,6 +268,6 @@ def check_spec_text(outcome) -> str:
               f'seating = "{r.seating}"', f"index_min = {float(r.index[0])!r}",
               f"index_max = {float(r.index[1])!r}", f"min_fatigue_safety = {r.fatigue_safety!r}",
               f"life = {float(r.cycles)!r}"]
-    if v.get("correction") is not None or v.get("material") is None:
+    if v.get("correction") is not None or material is None:
         lines.append(f'correction = "{r.correction}"')
     return "\n".join(lines) + "\n"
