@@ -222,7 +222,8 @@ def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool, spec=Non
     from .report import spring_outputs as so
 
     if output is not None:
-        out.written.append(so.write_check_spec(out, output, replace=replace))
+        out.written.append(so.write_check_spec(out, output, replace=replace,
+                                               drawing=_drawing(out)))
     if xlsx is not None:
         from .report.excel.book import command_line
 
@@ -232,6 +233,32 @@ def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool, spec=Non
     if plots is not None:
         out.written += so.write_plots(out, plots, stem, replace=replace)
     return out
+
+
+def _drawing(out: Outcome) -> tuple[int, tuple[int, int, int]] | None:
+    """How a designed spring's lengths are written (:func:`govopt.report.spring_outputs.
+    drawn_length`): the fewest significant digits, from 4 (a drawing's), and the rounding of
+    the wire, the mean diameter and the free length (nearest first, then up and down) at
+    which the spring read back fails no check the design
+    passes; None (every digit) for a checked spring, which is written as it was given."""
+    from dataclasses import replace
+    from itertools import product
+
+    from .report.spring_outputs import drawn_length
+    from .springs.assessment import table
+
+    if out.command != "design":
+        return None
+    a, sp = out.assessment, out.assessment.spring
+    failed = set(a.failed)
+    for digits in range(4, 16):
+        for ways in product((0, 1, -1), repeat=3):
+            d, D, L0 = (drawn_length(out.shown, x, digits, w)[1]
+                        for x, w in zip((sp.d, sp.D, sp.L0), ways, strict=True))
+            rows, _ = table(replace(sp, d=d, D=D, L0=L0), a.mat, a.loads, a.rules)
+            if {c.name for c in rows if not c.passed} <= failed:
+                return digits, ways
+    return None
 
 
 def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
