@@ -68,9 +68,9 @@ TENSILE_STRENGTH = Key("tensile_strength", "stress", "the wire's tensile strengt
                        default=None, when="with material \"custom\", where it is required",
                        example="1600 MPa")
 SHEAR_MODULUS = Key("shear_modulus", "stress", "the shear modulus G (required without a "
-                                               "material, and with a grade whose G varies with "
-                                               "the wire diameter)",
-                    default=None, default_text="the grade's", example="81.5 GPa")
+                                               "material)",
+                    default=None, default_text="the grade's (at the wire's diameter where it "
+                                               "steps with it)", example="81.5 GPa")
 ALLOWABLE_STRESS = Key("allowable_stress", "stress", "the allowable shear stress k_s (required "
                                                      "without a material; with one, it replaces "
                                                      "the grade's rule)",
