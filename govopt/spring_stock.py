@@ -101,10 +101,13 @@ def read(name: str) -> list[StockSpring]:
     path = path_of(name)
     try:
         text = path.read_text(encoding="utf-8-sig")
-    except (OSError, UnicodeDecodeError) as exc:
+    except (OSError, UnicodeDecodeError, ValueError) as exc:  # ValueError: a NUL in the name
         raise GovoptError(f"--catalogue: cannot read {path}: "
                           f"{getattr(exc, 'strerror', None) or exc}") from None
-    rows = list(csv.reader(text.splitlines()))
+    try:
+        rows = list(csv.reader(text.splitlines()))
+    except csv.Error as exc:
+        raise GovoptError(f"{path}: expected CSV text: {exc}") from None
     rows = [r for r in rows if any(c.strip() for c in r) and not r[0].lstrip().startswith("#")]
     if not rows:
         raise GovoptError(f"{path}: expected a header row and springs, got an empty file")
