@@ -286,6 +286,8 @@ class BellCrankGovernor(Governor):
     fixed springs (:meth:`fixed_force`)."""
 
     coordinate: ClassVar[str] = "length"
+    source: ClassVar[str] = "textbook-ch3"
+    friction_key: ClassVar[str] = "governor.sleeve_friction"
     coordinate_name: ClassVar[str] = "ball radius"
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"

@@ -217,6 +217,10 @@ class BallGovernor(Governor):
     """
 
     coordinate: ClassVar[str] = "length"
+    source: ClassVar[str] = "textbook-ch3"
+    friction_key: ClassVar[str] = "governor.sleeve_friction"
+    range_keys: ClassVar[tuple[str, str] | None] = ("governor.radius_inner",
+                                                    "governor.radius_outer")
     coordinate_name: ClassVar[str] = "ball radius"
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
