@@ -177,8 +177,9 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
     memo: dict = {}
 
     def meets_in(s, r):
+        g = grid if s.governor is spec.governor else Grid.build(s)  # another range: its own
         return lambda m, c: np.logical_and.reduce(
-            list(dead_weight_statics(s, r, grid, m, c)[0].values()))
+            list(dead_weight_statics(s, r, g, m, c)[0].values()))
 
     def feasible(s, r):
         if spec.governor.central_load_affine:  # each ball's central loads in closed form
