@@ -146,10 +146,16 @@ def test_solid_length_is_total_coils_times_the_largest_wire(ends, end_coils, ext
         (n_t + extra) * 2.83e-3, rel=1e-12)
     if ends == "closed_ground":  # 11.5 x 2.83 mm
         assert out["lengths_and_energy"]["solid_length_m"] == pytest.approx(32.545e-3)
-    # the least working length: L_c + S_a with the nominal d in S_a (dynamic: x1.5)
-    S_a = 1.5 * 9.5 * (0.0015 * 20**2 / 2.8 + 0.1 * 2.8) * 1e-3
+    # the least working length: L_c + S_a with the nominal d in S_a; static without a load
+    # cycle, x1.5 under dynamic load (EN 13906-1)
+    S_a = 9.5 * (0.0015 * 20**2 / 2.8 + 0.1 * 2.8) * 1e-3
     assert out["lengths_and_energy"]["least_working_length_m"] == pytest.approx(
         (n_t + extra) * 2.83e-3 + S_a, rel=1e-12)
+    dynamic = _json("spring", "check", "--wire-diameter", "2.8 mm", "--mean-diameter", "20 mm",
+                    "--active-coils", "9.5", "--ends", ends, "--free-length", "60 mm",
+                    "--material", "EN10270-1 SH", "--force", "100 N", "--load", "dynamic")
+    assert dynamic["lengths_and_energy"]["least_working_length_m"] == pytest.approx(
+        (n_t + extra) * 2.83e-3 + 1.5 * S_a, rel=1e-12)
 
 
 def _coil_by_coil_length(D, n, pitch, end_coils, d, per_turn=4000):
