@@ -458,6 +458,9 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
     if v.get("loops") is not None and v["kind"] != "extension":
         where.fail("loops", "loops are an extension spring's (--kind extension); a compression "
                             "spring has --ends")
+    if v["objective"] == "solid length" and v["kind"] != "compression":
+        where.fail("objective", "a compression spring's (an extension spring is close-wound: "
+                                "its body is solid; minimise its mass or outer diameter)")
     if v.get("ends") is not None and v["kind"] != "compression":
         where.fail("ends", "end forms are a compression spring's; an extension spring has "
                            "--loops")
@@ -491,7 +494,9 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
         why = sizing.diagnosis
         raise GovoptError("no spring meets these requirements" + (f": {why}" if why else ""))
     a = assess(sizing.spring, sizing.mat, sizing.loads, sizing.rules)
-    return _outcome(name, "design", a, sizing.record(), entries, v, sizing=sizing)
+    record = sizing.record()
+    record.failed_checks = list(a.failed)  # no "certified" beside a failed check
+    return _outcome(name, "design", a, record, entries, v, sizing=sizing)
 
 
 # ---------------------------------------------------------------------------- check
