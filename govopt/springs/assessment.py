@@ -460,8 +460,12 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
         "wire diameter": Figure("wire diameter", d, "m", symbol="d"),
         "largest wire diameter": Figure(
             "largest wire diameter", d_max, "m", symbol="d_max",
-            source=("d + its tolerance after " + (tl.wire_standard(mat.grade) or "")
-                    if d_max > d else "the nominal d: no wire standard's tolerance known")),
+            source="d + its tolerance after " + (tl.wire_standard(mat.grade) or ""),
+            json="largest_wire_diameter_m") if d_max > d else Figure(
+            "solid length's wire diameter", d, "m", symbol="d",
+            source="the nominal d", json="largest_wire_diameter_m",
+            note="no diameter tolerance of " + (mat.standard or "the wire") + " in govopt's "
+                 "data: the nominal d, not d_max"),
         "mean coil diameter": Figure("mean coil diameter", D, "m", symbol="D"),
         "outside diameter": Figure("outside diameter", D + d, "m", symbol="D_e"),
         "inside diameter": Figure("inside diameter", D - d, "m", symbol="D_i"),
