@@ -263,7 +263,8 @@ def check_spec_text(outcome) -> str:
                   f"fatigue_max_force = {q(a.loads.cycle[1], 'N')}"]
     r = a.rules
     lines += [f'rules = "{r.method}"', f"peened = {str(r.peened).lower()}",
-              f'load = "{"dynamic" if r.dynamic else "static"}"', f'seating = "{r.seating}"', f"index_min = {float(r.index[0])!r}",
+              f'load = "{"dynamic" if r.dynamic else "static"}"', f'seating = "{r.seating}"',
+              f"index_min = {float(r.index[0])!r}",
               f"index_max = {float(r.index[1])!r}", f"min_fatigue_safety = {r.fatigue_safety!r}",
               f"life = {float(r.cycles)!r}"]
     if v.get("correction") is not None or v.get("material") is None:
