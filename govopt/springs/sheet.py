@@ -290,16 +290,22 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
         tols["A_d"] = _f(tol.wire_diameter_tolerance(d, std))
     notes = ("tolerances on F1, F2 (with L0 free) after EN 15800; A_L0 applies if no force "
              "is toleranced",)
+    Lc = _f(hc.solid_length(d_max, n_t, ends))
+    F_c = R * (_f(L0) - Lc)
+
+    def length(F):  # a force past solid: no length (the spring never gets there)
+        return _f(L0) - _f(F) / R if _f(F) <= F_c else float("nan")
+    if _f(F2) > F_c:
+        notes += (f"solid at {F_c:.5g} N, below the working force: no length given past it",)
     return SpringSheet(
         kind="compression", grade=mat.grade, material_standard=mat.standard, d=_f(d), D=_f(D),
         n=_f(n), coils=_f(n_t), ends=ends.replace("_", " "), L0=_f(L0), R=R, F1=_f(F1),
-        L1=_f(L0) - _f(F1) / R, F2=_f(F2), L2=_f(L0) - _f(F2) / R, tolerance_grade=grade,
+        L1=length(F1), F2=_f(F2), L2=length(F2), tolerance_grade=grade,
         surface=surface,
         mass=_f(hx.helix_mass(d, D, n, hc.pitch(L0, d, n, n_t, ends, d_max), _f(n_t) - _f(n),
                               mat.density)),
         surge_frequency=_f(hx.surge_frequency(d, D, n, G, mat.density)),
-        solid_length=_f(hc.solid_length(d_max, n_t, ends)),
-        tolerances=tols, notes=notes)
+        solid_length=Lc, tolerances=tols, notes=notes)
 
 
 def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,
