@@ -355,6 +355,20 @@ def test_a_spring_loaded_past_solid_fails_and_says_where_it_goes_solid():
     assert "largest force <= force at solid length: 300 <= 141.113 N" in text
 
 
+def test_a_point_past_solid_is_drawn_nowhere(tmp_path):
+    """The workbook's force-length table and the maker's sheet give no length at 300 N (the
+    spring is solid at 141 N); the sheet's note says so."""
+    import openpyxl
+
+    book = tmp_path / "s.xlsx"
+    _run(*SOLID, "--min-force", "100 N", "--force", "300 N", "--xlsx", str(book), code=1)
+    wb = openpyxl.load_workbook(book)
+    names = [r[0] for r in wb["Force-length"].iter_rows(values_only=True)]
+    assert "L1" in names and "L2" not in names
+    rows = {r[0]: r[1] for r in wb["Spring"].iter_rows(values_only=True) if r and r[0]}
+    assert rows["length 2"] == "nan" and "solid at 141.11 N" in rows["notes"]
+
+
 def test_a_load_cycle_is_checked_at_its_top():
     """The template spring, solid at R (60 - 34.845) mm: a cycle to 560 N goes solid, one
     between the force at L_n (dynamic) and solid clashes its coils; the working force alone
