@@ -37,7 +37,7 @@ a compression spring's solid length for an extension spring, R_m without a grade
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -551,6 +551,9 @@ def _fatigue(spring, mat, loads, rules, rows) -> tuple[dict[str, Figure], float 
     d, D = spring.d, spring.D
     out = ft.cycle_figures(lo, hi, *(_f(hx.shear_stress(F, d, D, "bergstrasser"))
                                      for F in (lo, hi)))
+    for key in ("corrected stress min", "corrected stress max"):  # the fatigue data's factor
+        out[key] = replace(out[key], note="k " + hx.CORRECTION_TEXT["bergstrasser"]
+                           + ", as the fatigue check")
     row = next((c for c in rows if c.name == "body fatigue safety factor"), None)
     safety = nan if row is None else row.value  # at the required life
     life = nan
