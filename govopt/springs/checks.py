@@ -347,8 +347,8 @@ EXTENSION = (
 #: they hold for a spring whose ``[material]`` gives an allowable stress and no wire grade too
 #: (``only=GEOMETRY``). A free length far beyond the installed length (the article's "longer
 #: spring" for a narrow speed range, 003) buckles long before it is compressed into place.
-GEOMETRY = ("working length >= least length (coil clash)", "deflection / buckling deflection",
-            "free pitch > wire diameter", PITCH_MAX)
+GEOMETRY = (SOLID, "working length >= least length (coil clash)",
+            "deflection / buckling deflection", "free pitch > wire diameter", PITCH_MAX)
 
 _SPACE = Row("free length <= space", "<=", "m", lambda kw: kw["L0"], lambda kw: kw["L0_max"],
              "installation space given in the spec")
