@@ -518,9 +518,7 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
         why = sizing.diagnosis
         raise GovoptError("no spring meets these requirements" + (f": {why}" if why else ""))
     a = assess(sizing.spring, sizing.mat, sizing.loads, sizing.rules)
-    record = sizing.record()
-    record.failed_checks = list(a.failed)  # no "certified" beside a failed check
-    return _outcome(name, "design", a, record, entries, v, sizing=sizing)
+    return _outcome(name, "design", a, sizing.record(), entries, v, sizing=sizing)
 
 
 def _from_catalogue(v: dict, where: _Where, name: str, entries) -> Outcome:
