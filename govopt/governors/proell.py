@@ -37,7 +37,8 @@ from .porter import (
     ARM,
     LINK,
     PIVOT_OFFSET,
-    RANGE,
+    BALL_RANGE,
+    ENDS,
     SLEEVE_FRICTION,
     SLEEVE_OFFSET,
     BallGovernor,
@@ -63,7 +64,7 @@ class ProellGovernor(BallGovernor):
     title: ClassVar[str] = ("Proell governor (textbook ch. 3, section 3.4(c), Figs. 3.1(c), 3.8, "
                             "3.9)")
     keys: ClassVar[tuple[Key, ...]] = (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, EXTENSION,
-                                       EXTENSION_ANGLE, K, *RANGE, SLEEVE_FRICTION)
+                                       EXTENSION_ANGLE, K, *BALL_RANGE, SLEEVE_FRICTION)
     example: ClassVar[str] = "proell-design"
 
     @classmethod
@@ -74,14 +75,26 @@ class ProellGovernor(BallGovernor):
         ``sleeve_friction``."""
         arm, link, pivot, sleeve, extension, angle, k = reader.read_all(
             (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, EXTENSION, EXTENSION_ANGLE, K)).values()
-        inner, outer, normal = cls._read_range(reader)
-        if angle is None:  # BG vertical at the normal configuration: r_B = r there
-            sin_beta = (normal - sleeve) / link
-            if not (abs(sin_beta) < 1 and 0 < (normal - pivot) / arm < 1):
+        base = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve, k=k)
+        if angle is not None:
+            linkage = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve,
+                              extension=extension, crank=angle, k=k)
+            inner, outer, normal = cls._read_range(reader, linkage)
+        else:  # BG vertical at the normal configuration: r_B = r there
+            got = cls._read_range(reader, base, to_radius=None)
+            radii, joints = got if isinstance(got[0], dict) else (dict(zip(ENDS, got)), {})
+            p_normal = joints.get("normal", radii["normal"])
+            if p_normal is None:
+                reader.fail("radius_normal", "needed where the ends are given by another "
+                            "coordinate: the extension is set vertical there")
+            sin_beta = (p_normal - sleeve) / link
+            if not (abs(sin_beta) < 1 and 0 < (p_normal - pivot) / arm < 1):
                 reader.fail("radius_normal", "the arm and link cannot reach this radius")
-            angle = math.asin(sin_beta)
-        linkage = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve,
-                          extension=extension, crank=angle, k=k)
+            linkage = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve,
+                              extension=extension, crank=math.asin(sin_beta), k=k)
+            inner, outer, normal = (float(linkage._at_joint(joints[e])["r"]) if e in joints
+                                    else radii[e] for e in ENDS)
+            inner, outer, normal = cls._ordered(reader, inner, outer, normal)
         friction = reader.read(SLEEVE_FRICTION)
         reader.finish()
         cls._check_reach(reader, linkage, inner, outer)

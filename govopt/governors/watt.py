@@ -33,7 +33,7 @@ from typing import ClassVar
 
 from ..keys import Key
 from .base import Equation
-from .porter import ARM, RANGE, SLEEVE_FRICTION, SLEEVE_OFFSET, BallGovernor, Linkage
+from .porter import ARM, BALL_RANGE, SLEEVE_FRICTION, SLEEVE_OFFSET, BallGovernor, Linkage
 
 SUSPENSIONS = ("axis", "collar", "crossed")
 
@@ -99,7 +99,7 @@ class WattGovernor(BallGovernor):
     type_name: ClassVar[str] = "watt"
     title: ClassVar[str] = "Watt governor (textbook ch. 3, section 3.4(a), Figs. 3.1(a), 3.3)"
     keys: ClassVar[tuple[Key, ...]] = (ARM, SUSPENSION, PIVOT_OFFSET, LINK, SLEEVE_OFFSET,
-                                       *RANGE, SLEEVE_FRICTION)
+                                       *BALL_RANGE, SLEEVE_FRICTION)
     example: ClassVar[str] = "watt-design"
 
     @classmethod
@@ -120,7 +120,7 @@ class WattGovernor(BallGovernor):
         linkage = Linkage(arm=v["arm"], link=v["link"],
                           pivot_offset=-offset if suspension == "crossed" else offset,
                           sleeve_offset=v["sleeve_offset"])
-        inner, outer, normal = cls._read_range(reader)
+        inner, outer, normal = cls._read_range(reader, linkage)
         friction = reader.read(SLEEVE_FRICTION)
         reader.finish()
         cls._check_reach(reader, linkage, inner, outer)
