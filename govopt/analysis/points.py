@@ -93,8 +93,8 @@ FIGURES = {
                                          "against its friction"),
     "speed_falling": ("angular_velocity", "the speed at which it starts to close"),
     "insensitiveness": ("", "(speed_rising - speed_falling) / speed"),
-    "controlling_force": ("generalised force", "the restoring generalised force per flying mass (the "
-                                   "controlling force of a ball on a radius)"),
+    "controlling_force": ("generalised force", "the restoring generalised force per flying "
+                                               "mass (a ball's controlling force)"),
     "spring_force": ("force", "the force in the spring"),
     "sleeve_force": ("travel force", "the force on the regulating member equivalent to the "
                                      "controlling force, n Q / s'"),
@@ -179,7 +179,7 @@ def _travel_to_stop(spec, sd, x0: float, x_end: float, target: float) -> float:
     ``target`` (classic's Newton on the characteristic), or to the outermost configuration
     where that lies beyond it (the member stops there); NaN where ``x0`` is at or past the
     stop or the speed does not rise."""
-    if not (np.isfinite(target) and x0 < x_end):
+    if not (np.isfinite(target) and x0 < x_end - 1e-9 * abs(x_end)):
         return float("nan")
     travel = classic._travel(spec, sd, x0, x_end, np.array([target]), np.array([True]))[0]
     return float(travel if np.isfinite(travel) else classic.travel_between(spec, x0, x_end))

@@ -321,13 +321,15 @@ class BallGovernor(Governor):
     # -- parsing shared by the ball governors -------------------------------------------------
 
     @staticmethod
-    def _read_range(reader, linkage, to_radius=None):
+    def _read_range(reader, linkage, to_radius="linkage"):
         """``radius_inner``, ``radius_outer``, ``radius_normal`` (default the mid radius), each
         end by the ball's radius or by one of :data:`BY` (``angle_inner``, ``lift_outer`` ...:
         :data:`RANGE_BY`), converted through the joint radius ``r_B``: ``to_radius`` gives the
-        ball's radius at a joint radius (default the linkage's own; None where it is not known
-        yet, a Proell's before its extension's angle: the joint radii are returned instead)."""
-        radii = {end: reader.read(key, required=False) for key, end in zip(BALL_RANGE, ENDS)}
+        ball's radius at a joint radius (``"linkage"``: the linkage's own; None where it is not
+        known yet, a Proell's before its extension's angle: then ``(radii, joints)``, the ends
+        given by their radius and by their joint radius, are returned instead)."""
+        radii = {end: reader.read(key, required=False)
+                 for key, end in zip(BALL_RANGE[:3], ENDS, strict=True)}
         joints = {}
         for key in RANGE_BY:
             name, end = key.name.rsplit("_", 1)
@@ -349,12 +351,13 @@ class BallGovernor(Governor):
                             + (" (a lift counts from the inner configuration)"
                                if name == "lift" else ""))
             joints[end] = p
-        for key, end in zip(BALL_RANGE[:2], ENDS):
+        for key, end in zip(BALL_RANGE[:2], ENDS[:2], strict=True):
             if radii[end] is None and end not in joints:
                 reader.read(key, required=True)  # the "missing" error
         if to_radius is None and joints:
             return radii, joints
-        to_radius = to_radius or (lambda p: float(linkage._at_joint(p)["r"]))
+        if not callable(to_radius):
+            to_radius = lambda p: float(linkage._at_joint(p)["r"])  # noqa: E731
         inner, outer, normal = (to_radius(joints[end]) if end in joints else radii[end]
                                 for end in ENDS)
         return BallGovernor._ordered(reader, inner, outer, normal)

@@ -35,10 +35,10 @@ from ..keys import Key
 from .base import Equation
 from .porter import (
     ARM,
-    LINK,
-    PIVOT_OFFSET,
     BALL_RANGE,
     ENDS,
+    LINK,
+    PIVOT_OFFSET,
     SLEEVE_FRICTION,
     SLEEVE_OFFSET,
     BallGovernor,
@@ -82,7 +82,8 @@ class ProellGovernor(BallGovernor):
             inner, outer, normal = cls._read_range(reader, linkage)
         else:  # BG vertical at the normal configuration: r_B = r there
             got = cls._read_range(reader, base, to_radius=None)
-            radii, joints = got if isinstance(got[0], dict) else (dict(zip(ENDS, got)), {})
+            radii, joints = got if isinstance(got[0], dict) else \
+                (dict(zip(ENDS, got, strict=True)), {})
             p_normal = joints.get("normal", radii["normal"])
             if p_normal is None:
                 reader.fail("radius_normal", "needed where the ends are given by another "
