@@ -181,7 +181,7 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
             travel = np.full(n, travel_between(spec, float(x[0]), float(x[-1])))
         else:
             target = (1.0 + c) ** 2 * w2[:, i_n]
-            travel = _travel(spec, sd, float(x[i_n]), float(x[-1]), target, ok)
+            travel = travel_to(spec, sd, float(x[i_n]), float(x[-1]), target, ok)
         # a speed change whose equilibrium lies past the outermost configuration moves the
         # member to its stop: the work is done over the travel to the stop (Rattan: power
         # is the work done at the member for the speed change)
@@ -405,7 +405,7 @@ def travel_between(spec, x0: float, x1):
     return float(out) if out.ndim == 0 else out
 
 
-def _travel(spec, sd, x0: float, x_end: float, target, ok):
+def travel_to(spec, sd, x0: float, x_end: float, target, ok):
     """Travel of the regulating member of each design from ``x0`` to its configuration ``x1`` in
     equilibrium at speed^2 ``target`` (``inf`` where the governor reaches the end of its range
     first): a safeguarded Newton iteration on the characteristic, whose slope is exact on the

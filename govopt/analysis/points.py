@@ -181,7 +181,7 @@ def _travel_to_stop(spec, sd, x0: float, x_end: float, target: float) -> float:
     stop or the speed does not rise."""
     if not (np.isfinite(target) and x0 < x_end - 1e-9 * abs(x_end)):
         return float("nan")
-    travel = classic._travel(spec, sd, x0, x_end, np.array([target]), np.array([True]))[0]
+    travel = classic.travel_to(spec, sd, x0, x_end, np.array([target]), np.array([True]))[0]
     return float(travel if np.isfinite(travel) else classic.travel_between(spec, x0, x_end))
 
 
