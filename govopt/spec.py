@@ -300,8 +300,9 @@ def _speed(sp: Reader) -> Speed:
             if sp.has(conflicting):
                 sp.fail(conflicting, "give either mean and irregularity, or inner and outer")
         w_in, w_out = sp.read(inner), sp.read(outer)
-        if w_out <= w_in:
-            sp.fail("outer", "expected outer > inner speed")
+        if w_out == w_in:  # the speeds at the ends: a falling pair is evaluated (unstable)
+            sp.fail("outer", "expected outer != inner speed (the speeds at the ends of the "
+                             "range; an isochronous governor has no band to meet)")
         speed = Speed((w_in + w_out) / 2.0, 2.0 * (w_out - w_in) / (w_out + w_in), band=True)
     else:
         speed = Speed(sp.read(mean), sp.read(irregularity))
