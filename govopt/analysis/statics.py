@@ -427,8 +427,8 @@ def band_spring(spec: Spec, m, central=0.0):
     with the checks: a :class:`DesignError` (the reason in words) for a band narrower than govopt
     resolves (its width over the mean speed at most :data:`SLOPE_RTOL`: the governor floating
     across it would be isochronous to rounding, not stable; a falling band, outer below inner,
-    gives the spring of a governor the evaluation reports unstable), a rate or free length that is not
-    positive and finite, or a force that does not keep the spring loaded in its working sense
+    gives the spring of a governor the evaluation reports unstable), a rate or free length that
+    is not positive and finite, or a force that does not keep the spring loaded in its working sense
     at every configuration (a compression spring that would have to pull).
 
     Parameters
