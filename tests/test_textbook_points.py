@@ -34,9 +34,10 @@ def _porter_speed(w, W, h, k=1.0):
     return math.sqrt(G / h * (w + W * (1.0 + k) / 2.0) / w)
 
 
-def _json(args):
+def _json(args, codes=(0,)):
+    """The command's JSON; ``codes``: the exit codes it may end with (1: a check failed)."""
     run = invoke(args)
-    assert run.exit_code == 0, run.stderr
+    assert run.exit_code in codes, run.stderr
     return json.loads(run.stdout)
 
 
@@ -166,3 +167,84 @@ def test_a_range_by_another_coordinate_is_checked(tmp_path, extra, message):
                                    'angle_outer = "45 deg"\n' + extra), encoding="utf-8")
     run = invoke(["evaluate", str(spec)])
     assert run.exit_code == 2 and message in run.stderr, run.stderr
+
+
+HARTNELL = (SPECS / "textbook-ex4-hartnell.toml").read_text(encoding="utf-8")
+
+
+def _hartnell(tmp_path, *changes, drop=("spring_stiffness", "free_length")):
+    text = HARTNELL
+    for old, new in changes:
+        assert old in text, old
+        text = text.replace(old, new)
+    lines = [ln for ln in text.splitlines() if not ln.startswith(drop)]
+    path = tmp_path / "hartnell.toml"
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return str(path)
+
+
+def test_a_hartnell_with_the_balls_below_the_fulcrum(tmp_path):
+    """Example 4's governor hung upside down (exact levers, the fulcrum at the mid radius 9.75
+    cm, a = b = 7.5 cm): moments about the fulcrum give ``F a cos(theta) = w a sin(theta) +
+    (S/2) b cos(theta)``, so ``S = 2 (F - w tan(theta))`` with sin(theta) = -0.3 and 0.3 at
+    the ends; the lift ``b (sin theta_o - sin theta_i) = 4.5 cm``, the stiffness ``(S_o -
+    S_i) / lift`` and the initial compression ``S_i / kappa``."""
+    spec = _hartnell(tmp_path, ('obliquity = "small_angle"', 'ball_position = "below"'))
+    out = _json(["evaluate", spec, "--json"])
+    w, tan = 2 * G, 0.3 / math.sqrt(1 - 0.09)
+    S_i = 2 * (2 * (240 * RPM) ** 2 * 0.075 + w * tan)
+    S_o = 2 * (2 * (256.8 * RPM) ** 2 * 0.12 - w * tan)
+    kappa = (S_o - S_i) / 0.045
+    found = out["band_spring"]
+    assert found["stiffness_N_per_m"] == pytest.approx(kappa, rel=1e-12)
+    assert found["force_inner_N"] == pytest.approx(S_i, rel=1e-12)
+    assert found["free_length_m"] - 0.10 == pytest.approx(S_i / kappa, rel=1e-12)
+    # the weights now resist the balls: the same spring above the fulcrum runs faster inside
+    assert out["classic"]["stability"] == "stable"
+
+
+def test_a_falling_speed_pair_is_evaluated_and_unstable(tmp_path):
+    """430 rpm at the inner end, 415 at the outer (a maladjusted Hartnell): the spring that
+    does it (small-angle statics, a = b: ``S = 2 m omega^2 r``, kappa = (S_o - S_i) / 4.5 cm)
+    is found and the governor reported unstable, exit 1 (checks fail), not refused."""
+    spec = _hartnell(tmp_path, ('inner = "240 rpm"', 'inner = "430 rpm"'),
+                     ('outer = "256.8 rpm"', 'outer = "415 rpm"'))
+    run = invoke(["evaluate", spec, "--json"])
+    assert run.exit_code == 1, run.stderr
+    out = json.loads(run.stdout)
+    S_i, S_o = (4 * (n * RPM) ** 2 * r for n, r in ((430, 0.075), (415, 0.12)))
+    assert out["band_spring"]["stiffness_N_per_m"] == pytest.approx((S_o - S_i) / 0.045,
+                                                                    rel=1e-12)
+    assert out["classic"]["stability"] == "unstable"
+    failed = {c["name"] for c in out["checks"] if not c["passed"]}
+    assert "characteristic rises (stable)" in failed
+
+
+def test_insensitiveness_at_each_end_and_the_largest(tmp_path):
+    """Example 4 with a sleeve friction R = 1 kgf: the band per ball ``(R/2) (b/a)`` against
+    the controlling force ``m omega^2 r``, so at each end ``(omega_r - omega_f) / omega`` with
+    ``omega_r,f^2 = omega^2 (1 +- (R/2) / (m omega^2 r))``; the largest is the inner end's."""
+    spec = _hartnell(tmp_path, ('spring_length = "10 cm"',
+                                'spring_length = "10 cm"\nsleeve_friction = "1 kgf"'), drop=())
+    classic = _json(["evaluate", spec, "--json"], codes=(0, 1))["classic"]
+    ends = {}
+    for end, r in (("inner", 0.075), ("outer", 0.12)):
+        w = _json(["at", spec, "--at", end, "--json"])["points"][0]["speed_rad_s"]
+        f = 0.5 * G / (2 * w**2 * r)
+        ends[end] = math.sqrt(1 + f) - math.sqrt(1 - f)
+        assert classic[f"insensitiveness_{end}"] == pytest.approx(ends[end], rel=1e-9)
+    assert classic["insensitiveness"] == pytest.approx(max(ends.values()), rel=1e-9)
+
+
+def test_the_hartnells_fulcrum_reaction():
+    """Example 4 (small-angle statics) at r = 10 cm: the spring's force S there, the collar's
+    force on each roller S/2, and the fulcrum holds ``m omega^2 r`` across and ``w + S/2``
+    along the axis."""
+    out = _json(["at", str(SPECS / "textbook-ex4-hartnell.toml"), "--at", "radius=10 cm",
+                 "--json"])["points"][0]
+    S = out["spring_force_N"]
+    assert out["roller_force_N"] == pytest.approx(S / 2, rel=1e-12)
+    centrifugal = 2 * out["speed_rad_s"] ** 2 * 0.10
+    assert centrifugal == pytest.approx(S / 2, rel=1e-12)  # F a = (S/2) b, a = b
+    assert out["fulcrum_reaction_N"] == pytest.approx(math.hypot(centrifugal, 2 * G + S / 2),
+                                                      rel=1e-12)
