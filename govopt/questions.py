@@ -173,9 +173,11 @@ def key_unit(spec, key: str) -> tuple[str, float | None]:
 
 
 def solve(spec, key: str, name: str, target: float, point: Point | None = None,
-          between: tuple[float, float] | None = None, samples: int = 33) -> Solved:
+          between: tuple[float, float] | None = None, samples: int = 33,
+          rtol: float = 1e-12) -> Solved:
     """The value of the input ``key`` at which the figure ``name`` (at ``point``) is ``target``
-    (SI), by a scan of the bracket for a sign change and Brent's method (see the module)."""
+    (SI), by a scan of the bracket for a sign change and Brent's method to the relative
+    tolerance ``rtol`` on the input (see the module; ``govopt bench`` measures the setting)."""
     from scipy.optimize import brentq
 
     from .spec import with_values
@@ -225,7 +227,7 @@ def solve(spec, key: str, name: str, target: float, point: Point | None = None,
                           "over it (widen --between, or the governor cannot do it)")
     i = int(cross[0])
     root = float(g[i]) if f[i] == 0 else float(brentq(excess, g[i], g[i + 1], xtol=1e-300,
-                                                       rtol=1e-12))
+                                                       rtol=rtol))
     solved = variant(root)
     return Solved(key, root, unit, name, target, figure(solved, name, point), solved, (lo, hi),
                   count[0], int(cross.size))
