@@ -248,3 +248,17 @@ def test_the_hartnells_fulcrum_reaction():
     assert centrifugal == pytest.approx(S / 2, rel=1e-12)  # F a = (S/2) b, a = b
     assert out["fulcrum_reaction_N"] == pytest.approx(math.hypot(centrifugal, 2 * G + S / 2),
                                                       rel=1e-12)
+
+
+def test_the_initial_compression_that_makes_a_hartnell_isochronous(tmp_path):
+    """Example 4 (small-angle statics, a = b): the controlling force per ball is S/2 with
+    ``S = kappa (l0 - L + (r - r_i))``, a line through the origin (isochronous) exactly when
+    ``l0 = L + r_i = 10 + 7.5 = 17.5 cm``; evaluated there the governor is isochronous."""
+    run = _json(["solve", str(SPECS / "textbook-ex4-hartnell.toml"), "--unknown",
+                 "design.free_length", "--target", "range=0 rpm", "--json"])
+    assert run["value"] == pytest.approx(0.175, rel=1e-12)
+    text = HARTNELL.replace('free_length = "15.41 cm"', 'free_length = "17.5 cm"')
+    spec = tmp_path / "iso.toml"
+    spec.write_text(text, encoding="utf-8")
+    assert _json(["evaluate", str(spec), "--json"], codes=(1,))["classic"]["stability"] == \
+        "isochronous"
