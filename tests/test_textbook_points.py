@@ -4,6 +4,7 @@ calculation from the book's own formulas."""
 
 import json
 import math
+from pathlib import Path
 
 import pytest
 from clirun import invoke
@@ -262,3 +263,23 @@ def test_the_initial_compression_that_makes_a_hartnell_isochronous(tmp_path):
     spec.write_text(text, encoding="utf-8")
     assert _json(["evaluate", str(spec), "--json"], codes=(1,))["classic"]["stability"] == \
         "isochronous"
+
+
+def test_bench_has_every_type_against_a_reference_on_a_hard_case():
+    """`govopt bench` measures each of the types: the stored table (the last full run) has
+    its statics and its solve rows, each error finite; run now, the Watt's exact model agrees
+    with the book's closed form ``omega^2 = g / h`` (mpmath) on arms from near the axis to near
+    90 deg, and the Porter's k = 1 shortcut is far off there (the sleeve pins off the axis)."""
+    from govopt.bench import report, suites
+    from govopt.governors import REGISTRY
+
+    stored = report.read_csv(Path(suites.__file__).parents[1] / "data" / "speed-vs-error.csv")
+    for gtype in REGISTRY:
+        for part in ("statics", "solve"):
+            rows = [p for p in stored if p.analysis == f"{gtype}: {part}"]
+            assert rows and all(math.isfinite(p.error) for p in rows), (gtype, part)
+    live = {(p.analysis, p.setting): p for p in suites.types_suite(True, ("watt", "porter"))}
+    assert live[("watt: statics", "exact")].error < 1e-14
+    assert live[("porter: statics", "unity")].error > 0.1
+    for rtol in (1e-6, 1e-12):  # Brent's tolerance on the input bounds its error
+        assert live[("porter: solve", f"rtol {rtol:g}")].error < 10 * rtol

@@ -650,16 +650,19 @@ def _watt_reference(spec, x) -> np.ndarray:
                          for r in x])
 
 
-def types_suite(quick: bool = False) -> list[Point]:
+def types_suite(quick: bool = False, types=None) -> list[Point]:
     """Every type's hard case: its characteristic at each fidelity setting against the exact
     model (the Watt's exact model against the book's closed form in mpmath), and ``govopt
     solve``'s Brent tolerance finding one input for a speed 3 % below the outermost one's,
-    against the root at the tightest tolerance (4 eps)."""
+    against the root at the tightest tolerance (4 eps). ``types``: the types to run (default
+    all of :data:`TYPE_CASES`)."""
     from .. import questions
     from ..analysis import statics
 
     points = []
     for name, (_, _, key, settings, unknown) in TYPE_CASES.items():
+        if types is not None and name not in types:
+            continue
         exact = type_case(name, settings[0])
         x = statics.configurations(exact)
 
