@@ -595,59 +595,29 @@ def optimiser_suite(quick: bool = False) -> list[Point]:
 # solve-for's tolerance, on a hard case of each type
 # ---------------------------------------------------------------------------------------------
 
-#: each type's hard case: a bundled spec and the values that make it hard (arms near the axis
-#: and near 90 deg, a leaf near its stop), the fidelity key of its shortcuts and their
-#: settings (the first the exact model), and the input the solve rows find
-TYPE_CASES = {
-    "shaft": ("hamabe-a", {}, "analysis.geometry", ("exact", "series"), "design.pendulum_weight"),
-    "watt": ({"name": "watt-hard", "governor": {"type": "watt", "arm": "30 cm",
-                                                 "radius_inner": "0.5 cm",
-                                                 "radius_outer": "29.7 cm"},
-              "design": {"ball_weight": "5 kgf"}}, {}, "", ("exact",), "governor.arm"),
-    "porter": ("textbook-ex1-porter", {"governor.radius_inner": "4 cm",
-                                       "governor.radius_outer": "29.5 cm"}, "governor.k",
-               ("exact", "unity"), "design.ball_weight"),
-    "proell": ("textbook-ex3-proell", {"governor.link": "20 cm", "governor.radius_inner": "8 cm",
-                                       "governor.radius_outer": "22 cm"}, "governor.k",
-               ("exact", "unity"), "design.ball_weight"),
-    "hartnell": ("textbook-ex5-hartnell", {}, "governor.obliquity", ("exact", "small_angle"),
-                 "design.ball_weight"),
-    "spring_loaded": ("textbook-ex6-spring_loaded", {}, "governor.obliquity",
-                      ("exact", "small_angle"), "design.ball_weight"),
-    "spring_gravity": ("textbook-ex8-spring_gravity", {}, "governor.obliquity",
-                       ("exact", "small_angle"), "design.ball_weight"),
-    "traction_coil": ("traction-coil-replacement-si", {}, "", ("exact",), "design.fly_weight"),
-    "traction_leaf": ("traction-leaf-weights", {}, "governor.leaf_model",
-                      ("elastica", "arc", "straight"), "design.fly_weight"),
-}
+def type_cases() -> dict:
+    """Every type's hard case (:attr:`Governor.bench_case`: a bundled spec or a spec's data,
+    the values that make it hard, the fidelity key of its shortcuts and their settings, the
+    exact model's first), with the input the solve rows find (default the flying mass)."""
+    from ..governors import REGISTRY, governor_class
 
-
-DEFAULTS |= {(f"{t}: statics", f"characteristic ({c[2] or 'exact'})", c[3][0])
-             for t, c in TYPE_CASES.items()}
-DEFAULTS |= {(f"{t}: solve", f"solve {c[4]} (Brent)", "rtol 1e-12") for t, c in TYPE_CASES.items()}
+    out = {}
+    for name in REGISTRY:
+        cls = governor_class(name)
+        source, changes, key, settings, *unknown = cls.bench_case
+        out[name] = (source, changes, key, settings,
+                     unknown[0] if unknown else f"design.{cls.mass_key}_weight")
+    return out
 
 
 def type_case(name: str, setting: str | None = None):
-    """The hard case of type ``name`` (:data:`TYPE_CASES`) at its fidelity ``setting``."""
+    """The hard case of type ``name`` (:func:`type_cases`) at its fidelity ``setting``."""
     from ..spec import load_spec, parse_spec, with_values
 
-    source, changes, key, _, _ = TYPE_CASES[name]
+    source, changes, key, _, _ = type_cases()[name]
     spec = parse_spec(source) if isinstance(source, dict) else load_spec(SPECS / f"{source}.toml")
     changes = {**changes, **({key: setting} if setting is not None and key else {})}
     return with_values(spec, changes) if changes else spec
-
-
-def _watt_reference(spec, x) -> np.ndarray:
-    """The Watt on the axis, sleeve neglected (section 3.4(a) eq. i): ``omega^2 = g / h``,
-    ``h = sqrt(a^2 - r^2)``, in mpmath (50 digits)."""
-    import mpmath as mp
-
-    from ..units import G_STANDARD
-
-    a = mp.mpf(spec.governor.linkage.arm)
-    with mp.workdps(50):
-        return np.array([float(mp.sqrt(G_STANDARD / mp.sqrt(a**2 - mp.mpf(float(r)) ** 2)))
-                         for r in x])
 
 
 def types_suite(quick: bool = False, types=None) -> list[Point]:
@@ -655,12 +625,12 @@ def types_suite(quick: bool = False, types=None) -> list[Point]:
     model (the Watt's exact model against the book's closed form in mpmath), and ``govopt
     solve``'s Brent tolerance finding one input for a speed 3 % below the outermost one's,
     against the root at the tightest tolerance (4 eps). ``types``: the types to run (default
-    all of :data:`TYPE_CASES`)."""
+    all of :func:`type_cases`)."""
     from .. import questions
     from ..analysis import statics
 
     points = []
-    for name, (_, _, key, settings, unknown) in TYPE_CASES.items():
+    for name, (_, _, key, settings, unknown) in type_cases().items():
         if types is not None and name not in types:
             continue
         exact = type_case(name, settings[0])
@@ -670,11 +640,12 @@ def types_suite(quick: bool = False, types=None) -> list[Point]:
             sd = statics.spring_design(spec)
             return np.sqrt(statics.omega_squared(spec, x, sd.m, sd.kappa, sd.l0, sd.central))
 
-        ref = _watt_reference(exact, x) if name == "watt" else speeds(exact)
-        for setting in settings if name != "watt" else ("exact",):
+        closed = exact.governor.bench_reference(exact, x)  # the book's own, in mpmath
+        ref = speeds(exact) if closed is None else closed
+        for setting in settings:
             spec = type_case(name, setting)
             err = _rel(speeds(spec) - ref, 1.0) / float(np.min(ref))
-            what = "the book's closed form in mpmath" if name == "watt" else \
+            what = "the book's closed form in mpmath" if closed is not None else \
                 "the exact model" if setting != settings[0] else "the exact model itself"
             points.append(Point(f"{name}: statics", f"characteristic ({key or 'exact'})",
                                 setting, cpu_per_call(lambda s=spec: speeds(s), 0.005 if quick
@@ -709,7 +680,10 @@ def pareto(points: list[Point]) -> None:
         p.pareto = math.isfinite(p.error) and not any(
             q.time_s <= p.time_s * noise and q.error <= p.error
             and (q.time_s < p.time_s / noise or q.error < p.error) for q in same)
-        p.default = (p.analysis, p.method, p.setting) in DEFAULTS
+        p.default = (p.analysis, p.method, p.setting) in DEFAULTS or (
+            p.analysis.endswith(": statics") and p.worst_case and p.setting == type_cases()[
+                p.worst_case][3][0]) or (p.analysis.endswith(": solve")
+                                         and p.setting == "rtol 1e-12")
 
 
 def speed_vs_error(quick: bool = False, analyses=None, log=None) -> list[Point]:

@@ -610,6 +610,18 @@ class Governor(ABC):
         within it; default the spec's range."""
         return self.x_inner, self.x_outer
 
+    #: the type's hard case for ``govopt bench`` (:func:`govopt.bench.suites.types_suite`): a
+    #: bundled spec's name (or a spec's data), the values that make it hard ({dotted key:
+    #: value}), the fidelity key of its shortcuts ("" for none) and their settings (the exact
+    #: model first), and optionally the input its solve rows find (default the flying mass)
+    bench_case: ClassVar[tuple] = ()
+
+    def bench_reference(self, spec, x):
+        """The equilibrium speeds (rad/s) at ``x`` of the bench case ``spec`` by the source's
+        own closed form in high precision, where the type has one; default None (the bench
+        measures the shortcuts against the exact model)."""
+        return None
+
     def link_forces(self, x, m, central, omega2, restoring) -> dict:
         """The forces in the type's arms, links and pivots (N) at configurations ``x`` in
         equilibrium at ``omega2`` (rad/s)^2 with the restoring generalised force ``restoring``

@@ -53,6 +53,10 @@ class HartnellGovernor(BellCrankGovernor):
     """Hartnell governor (section 3.5(a), Fig. 3.10): fixed fulcrum, ball above it, compression
     spring on the sleeve."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("textbook-ex5-hartnell", {}, "governor.obliquity",
+                               ("exact", "small_angle"))
+
     type_name: ClassVar[str] = "hartnell"
     title: ClassVar[str] = "Hartnell governor (textbook ch. 3, section 3.5(a), Fig. 3.10)"
     spring: ClassVar[str | None] = "compression"

@@ -615,6 +615,11 @@ class PorterGovernor(BallGovernor):
     """Porter governor (section 3.4(b)): a Watt with a central load on the sleeve; unequal arms
     and offsets allowed (``k`` varies), and an optional auxiliary spring (Example 2, Fig. 3.7)."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("textbook-ex1-porter", {"governor.radius_inner": "4 cm",
+                                                   "governor.radius_outer": "29.5 cm"},
+                               "governor.k", ("exact", "unity"))
+
     type_name: ClassVar[str] = "porter"
     title: ClassVar[str] = "Porter governor (textbook ch. 3, section 3.4(b), Figs. 3.1(b), 3.4-3.7)"
     keys: ClassVar[tuple[Key, ...]] = (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, K, *BALL_RANGE,

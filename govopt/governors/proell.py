@@ -60,6 +60,12 @@ EXTENSION_ANGLE = Key("extension_angle", "angle", "the extension's turn from the
 class ProellGovernor(BallGovernor):
     """Proell governor (section 3.4(c)): the ball on an extension of the lower link."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("textbook-ex3-proell", {"governor.link": "20 cm",
+                                                   "governor.radius_inner": "8 cm",
+                                                   "governor.radius_outer": "22 cm"},
+                               "governor.k", ("exact", "unity"))
+
     type_name: ClassVar[str] = "proell"
     title: ClassVar[str] = ("Proell governor (textbook ch. 3, section 3.4(c), Figs. 3.1(c), 3.8, "
                             "3.9)")
