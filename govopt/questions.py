@@ -197,8 +197,13 @@ def solve(spec, key: str, name: str, target: float, point: Point | None = None,
         lo, hi = sorted(between)
     count = [0]
 
+    span = max(abs(lo), abs(hi))
+
     def variant(v: float):
-        return with_values(spec, {key: f"{float(v)!r} {unit}" if unit else float(v)})
+        # a value within 1e-12 of the bracket's span of zero is zero (govopt's limits refuse
+        # magnitudes that small, and zero is the root there to the solver's tolerance)
+        v = 0.0 if abs(v) <= 1e-12 * span else float(v)
+        return with_values(spec, {key: f"{v!r} {unit}" if unit else v})
 
     def excess(v: float) -> float:
         count[0] += 1
@@ -226,8 +231,14 @@ def solve(spec, key: str, name: str, target: float, point: Point | None = None,
                           f"{human(hi, unit)} gives {human(target, fu)}: the {name} {span} "
                           "over it (widen --between, or the governor cannot do it)")
     i = int(cross[0])
-    root = float(g[i]) if f[i] == 0 else float(brentq(excess, g[i], g[i + 1], xtol=1e-300,
-                                                       rtol=rtol))
+    try:
+        root = float(g[i]) if f[i] == 0 else float(brentq(excess, g[i], g[i + 1], xtol=1e-300,
+                                                           rtol=rtol))
+    except ValueError:  # a value inside the bracket the spec refuses
+        raise GovoptError(f"--target {name}: {key} cannot be evaluated everywhere between "
+                          f"{g[i]:.6g} and {g[i + 1]:.6g} {unit}, where the root lies: the "
+                          "spec refuses a value there (narrow --between)") from None
+    root = 0.0 if abs(root) <= 1e-12 * span else root  # as variant() reads it
     solved = variant(root)
     return Solved(key, root, unit, name, target, figure(solved, name, point), solved, (lo, hi),
                   count[0], int(cross.size))

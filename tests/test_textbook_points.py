@@ -283,3 +283,39 @@ def test_bench_has_every_type_against_a_reference_on_a_hard_case():
     assert live[("porter: statics", "unity")].error > 0.1
     for rtol in (1e-6, 1e-12):  # Brent's tolerance on the input bounds its error
         assert live[("porter: solve", f"rtol {rtol:g}")].error < 10 * rtol
+
+
+LINE = """name = "line"
+[governor]
+type = "force_line"
+force_slope = "2.4 N/mm"
+force_intercept = "{b}"
+radius_inner = "10 cm"
+radius_outer = "15 cm"
+[design]
+ball_weight = "5 kgf"
+"""
+
+
+@pytest.mark.parametrize("b, stability", [("-60 N", "stable"), ("0 N", "isochronous"),
+                                          ("60 N", "unstable")])
+def test_a_governor_given_by_its_controlling_force_line(tmp_path, b, stability):
+    """F = 2.4 r - 60 N per ball (r in mm), 5 kg balls: by hand ``omega^2 = (a r + b) / (m r)``
+    at the ends; stable for b < 0, isochronous for b = 0, unstable for b > 0 (textbook 3.2)."""
+    spec = tmp_path / "line.toml"
+    spec.write_text(LINE.format(b=b), encoding="utf-8")
+    out = _json(["evaluate", str(spec), "--json"], codes=(0, 1))
+    bb = float(b.split()[0])
+    for row, r in ((out["characteristic"][0], 0.10), (out["characteristic"][-1], 0.15)):
+        assert row["omega_rad_s"] == pytest.approx(math.sqrt((2400 * r + bb) / (5 * r)),
+                                                   rel=1e-12)
+    assert out["classic"]["stability"] == stability
+
+
+def test_the_intercept_that_makes_a_force_line_isochronous(tmp_path):
+    """Solved for a range of 0 the intercept is 0 (to the solver's tolerance of the bracket)."""
+    spec = tmp_path / "line.toml"
+    spec.write_text(LINE.format(b="-60 N"), encoding="utf-8")
+    run = _json(["solve", str(spec), "--unknown", "governor.force_intercept", "--target",
+                 "range=0 rpm", "--between", "-100 N", "50 N", "--json"])
+    assert abs(run["value"]) < 1e-9
