@@ -433,7 +433,7 @@ FIFO = object()
 
 def _file_cases() -> Iterator[Case]:
     """Hostile files rather than hostile values."""
-    spec = bundled_specs()[0].read_text()
+    spec = next(p for p in bundled_specs() if p.stem == "hamabe-a-si").read_text()
     files = {
         "empty file": b"",
         "not UTF-8": spec.encode().replace(b"name", b"n\xe9me", 1),
