@@ -496,7 +496,15 @@ def _spring_checks(spec: Spec, cols: dict, s: _Statics, per_design: _PerDesign, 
     gov, mat, n = spec.governor, spec.material, s.n
     if own:  # each row added once over the designs that have it (the last of a name wins)
         rows: dict[str, dict] = {}
-        for i in np.nonzero(~s.impossible)[0]:
+        todo = ~s.impossible
+        unforced = todo & np.array([v is None for v in vibs], dtype=bool)
+        table = gov.spring_checks_over(spec, s.sd, s.F, s.x) if unforced.any() else None
+        if table is not None:  # the designs without a forcing at once, the rest one by one
+            for c in table:
+                checks.add(c.name, c.value, c.limit, c.sense, scale=c.scale, where=unforced,
+                           unit=c.unit, source=c.source, group=c.group)
+            todo = todo & ~unforced
+        for i in np.nonzero(todo)[0]:
             found = per_design(i, lambda i=i: gov.spring_checks(spec, s.spring_of(i),
                                                                 s.char_of(spec, i), vibs[i]))
             for c in found or []:

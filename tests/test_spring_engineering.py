@@ -370,3 +370,40 @@ def test_spring_cli_governor_load_builds_and_exits_by_its_checks():
         assert run.exit_code in (0, 1), run.output
         checks = json.loads(run.stdout)["checks"]
         assert run.exit_code == (0 if all(c["passed"] for c in checks) else 1)
+
+
+@pytest.mark.parametrize("name, grade", [("hartnell-tolerances", None),
+                                         ("spring_loaded-design", "EN10270-1 DH"),
+                                         ("traction-leaf-design", None)])
+def test_spring_checks_over_arrays_match_design_by_design(name, grade):
+    """The seam's array form (:meth:`Governor.spring_checks_over`, what the evaluator runs for
+    designs without a forcing) gives each design the numbers its one-design form
+    (:meth:`Governor.spring_checks`) gives it: a compression spring of a wire grade, an
+    extension spring of one, a leaf; over a spread of designs, some failing."""
+    from govopt import made
+    from govopt.evaluator import _statics
+
+    spec = govopt.load_spec(govopt.examples.example(name))
+    res = govopt.design(spec)
+    spec = res.spec
+    if grade is not None:  # the design's spring drawn from a wire grade
+        spec = dataclasses.replace(spec, material=dataclasses.replace(spec.material,
+                                                                      grade=grade))
+    cols = made.resolved_columns(spec, res)
+    rows = {k: np.repeat(v, 9) for k, v in cols.items()}
+    helical = spec.governor.spring_kind.helical  # thinner and thicker wire or strip
+    section = "wire_diameter" if helical else "leaf_thickness"
+    rows[section] = rows[section] * (np.linspace(0.6, 1.4, 9) if helical else
+                                     np.linspace(0.5, 8.0, 9))
+    s = _statics(spec, rows)
+    got = {c.name: c for c in spec.governor.spring_checks_over(spec, s.sd, s.F, s.x)}
+    assert got
+    failing = 0
+    for i in np.nonzero(~s.impossible)[0]:
+        one = spec.governor.spring_checks(spec, s.spring_of(i), s.char_of(spec, i))
+        assert [c.name for c in one] == list(got)
+        for c in one:
+            assert got[c.name].value[i] == pytest.approx(c.value, rel=1e-12, nan_ok=True)
+            assert got[c.name].limit[i] == pytest.approx(c.limit, rel=1e-12, nan_ok=True)
+        failing += not all(c.passed for c in one)
+    assert failing and failing < (~s.impossible).sum()  # the spread reaches both verdicts

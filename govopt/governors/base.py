@@ -520,6 +520,23 @@ class Governor(ABC):
 
         return spring_engineering.checks(spec, sd, char, vib)
 
+    def spring_checks_over(self, spec, sd, F, x) -> list | None:
+        """:meth:`spring_checks` of N designs at once, without a forcing (no fatigue rows):
+        ``sd`` a :class:`~govopt.analysis.statics.SpringDesign` of arrays (``(N, 1)``), ``F``
+        the spring forces over the configurations ``x`` (N, ``(N, K)``; ``x`` in the
+        coordinate's unit, ``(K,)``). Each
+        :class:`govopt.verdict.Check` holds arrays of N (value, limit, in its SI unit); None
+        where some design has no array form (a spring given by its rate alone: then
+        :meth:`spring_checks` design by design). The same numbers as :meth:`spring_checks`
+        (each row is elementwise over the designs: :func:`govopt.springs.checks.rows_over`)."""
+        if spec.material is None or spec.material.grade is None:
+            return []
+        if not np.all(np.isfinite(sd.d)):
+            return None
+        from ..analysis import spring_engineering
+
+        return spring_engineering.checks_over(spec, sd, F)
+
     def spring_report(self, spec, sd, char, vib=None):
         """The spring maker's sheet, the fatigue loads under ``vib`` and the manufacturing
         spread of a helical spring (:func:`govopt.analysis.spring_record.report`); None
