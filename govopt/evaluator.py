@@ -645,6 +645,17 @@ def _report(ev: Evaluation, s: _Statics, vib, vibration: bool, measures, dyn: di
     ev.dynamics = dyn
 
 
+def springs_of(spec: Spec, cols: dict) -> tuple[np.ndarray, np.ndarray]:
+    """The springs' rate ``kappa`` (N/m) and free length ``l0`` (the type's form, m) of the
+    designs ``cols`` (one float array per :data:`DESIGN_FIELDS`), shape ``(N,)``: as
+    :func:`core` evaluates them."""
+    col = {k: np.asarray(v, dtype=float)[:, None] for k, v in cols.items()}
+    central = np.where(np.isnan(col["central_mass"]), 0.0, col["central_mass"])
+    with np.errstate(all="ignore"):
+        kappa, l0 = _spring(spec, cols, col, central)
+    return kappa[:, 0], l0[:, 0]
+
+
 def _spring(spec: Spec, cols: dict, col: dict, central) -> tuple[np.ndarray, np.ndarray]:
     """The springs' rate ``kappa`` (N/m) and free length ``l0`` (the type's form, m), shape
     ``(N, 1)``: a given stiffness, else the type's rate of the section (a helical spring's

@@ -45,10 +45,96 @@ TORQUE_LEVELS = 11
 #: the failing samples are adjusted by the fitter in this many groups of settings, least change
 #: first (a sample fixed by a small change is not tried at the others)
 ADJUSTMENT_GROUPS = 3
+#: the least yield where the spec asks for none (``requirements.min_yield``): a spring
+#: governor's verdict is PASS where the 95 % Wilson lower bound of its made-and-set yield is at
+#: least this (``requirements.verdict = "made"``, the default)
+DEFAULT_MIN_YIELD = 0.95
+#: the EN 15800 quality grade a spring is made to where the spec states none (neither a wire
+#: grade's ``tolerance_grade`` nor ``robust_spring_grade``): grade 2, the standard's middle
+#: grade (grade 1 is the finest and dearest)
+DEFAULT_GRADE = 2
 #: the search bounds' rows (limits of the catalogue search, not requirements of a made part)
 BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diameter <= max",
                "coil radius >= min", "coil radius <= max", "active turns >= min",
                "active turns <= max", "leaf width", "leaf thickness")
+
+
+# ---------------------------------------------------------------------------------------------
+# Whose verdict: the made governor's
+# ---------------------------------------------------------------------------------------------
+
+def judged_as_made(spec) -> bool:
+    """Whether ``spec``'s verdict is the made governor's: a helical spring of a material (its
+    EN 15800 tolerances follow from its section) and ``requirements.verdict = "made"`` (the
+    default; ``"nominal"`` or ``--nominal``: the nominal design's checks alone)."""
+    req, mat = spec.requirements, spec.material
+    return (tm.kind(spec) is not None and mat is not None and mat.shear_modulus is not None
+            and (req is None or req.verdict == "made"))
+
+
+def made_requirements(spec):
+    """The requirements a made governor of ``spec`` is judged by: the spec's, with the made
+    verdict's defaults where it states none (:func:`judged_as_made`): the spring made to EN
+    15800 grade :data:`DEFAULT_GRADE`, the yield at least :data:`DEFAULT_MIN_YIELD`. The
+    spec's own requirements where its verdict is nominal (None without any)."""
+    from .inputs import Requirements
+
+    req = spec.requirements
+    if not judged_as_made(spec):
+        return req
+    req = Requirements() if req is None else req
+    changes = {}
+    if tm.spring_grade(spec, req) is None:
+        changes["robust_spring_grade"] = DEFAULT_GRADE
+    if req.min_yield is None:
+        changes["min_yield"] = DEFAULT_MIN_YIELD
+    return replace(req, **changes) if changes else req
+
+
+def as_made(spec):
+    """``spec`` with :func:`made_requirements` (what ``govopt design`` designs for)."""
+    req = made_requirements(spec)
+    return spec if req is spec.requirements else replace(spec, requirements=req)
+
+
+def fitter_sets(spec) -> tuple:
+    """The settings the fitter makes on each made governor of ``spec``
+    (:meth:`govopt.governors.base.Governor.adjustments`), none where
+    ``requirements.fitter = "none"``."""
+    req = spec.requirements
+    if req is not None and req.fitter == "none":
+        return ()
+    return spec.governor.adjustments()
+
+
+def set_by_the_fitter(spec, rows: dict, cols: dict, i: int = 0) -> dict:
+    """The made governors ``rows`` (design columns) as the fitter sets them
+    (:func:`fitter_sets`): each setting brings the equilibrium speed at its end of the range to
+    the speed of design ``i`` of ``cols`` there. The speed squared is affine in the spring's
+    free length (virtual work, ``omega^2 = (kappa (A - B l0) + C_f) / (J'/2 - C_i)``,
+    :meth:`govopt.governors.base.Terms.omega_squared`), so the setting is the closed form
+    ``l0 = (A + (C_f - omega*^2 (J'/2 - C_i)) / kappa) / B`` at that end."""
+    from .analysis import statics
+    from .evaluator import springs_of
+
+    out = dict(rows)
+    for adj in fitter_sets(spec):
+        if adj.field != "free_half_length":
+            continue
+        x = statics.configurations(spec)
+        end = x[:1] if adj.end == "inner" else x[-1:]
+        one = {k: np.asarray(v, dtype=float)[i:i + 1] for k, v in cols.items()}
+        kappa0, l00 = springs_of(spec, one)
+        t0 = statics.terms(spec, end, one["flying_mass"][:, None],
+                           np.nan_to_num(one["central_mass"])[:, None])
+        target = t0.omega_squared(kappa0[:, None], l00[:, None])
+        kappa, _ = springs_of(spec, out)
+        t = statics.terms(spec, end, out["flying_mass"][:, None],
+                          np.nan_to_num(out["central_mass"])[:, None])
+        with np.errstate(all="ignore"):
+            l0 = (t.A + (t.cf - target * t.lever) / kappa[:, None]) / t.B
+        out["free_half_length"] = np.broadcast_to(l0, (len(kappa), 1))[:, 0].copy()
+    return out
 
 
 # ---------------------------------------------------------------------------------------------
@@ -129,13 +215,13 @@ def row_seconds(spec, vibration: bool = True) -> float:
                                      friction_runs=friction)
 
 
-def sample_count(spec) -> int:
+def sample_count(spec, req=None) -> int:
     """How many governors the yield samples: :data:`SAMPLES` (``requirements.robust_samples``
     where the spec asks for a yield), fewer where they would cost more than
     :data:`govopt.limits.MAX_YIELD_SECONDS` (half of
     :data:`govopt.limits.MAX_MONTE_CARLO_SECONDS` where it asks for a yield) at
     :func:`row_seconds` each; 0 where fewer than :data:`MIN_SAMPLES` fit."""
-    req = spec.requirements
+    req = made_requirements(spec) if req is None else req
     asked = req is not None and req.min_yield is not None
     n, budget = ((req.robust_samples, limits.MAX_MONTE_CARLO_SECONDS / 2) if asked
                  else (SAMPLES, limits.MAX_YIELD_SECONDS))
@@ -267,6 +353,7 @@ def made_yield(spec, cols: dict, bx: tm.Box, n: int, seed: int,
     import pandas as pd
 
     rows, torque = draw(cols, bx, n, seed)
+    rows = set_by_the_fitter(spec, rows, cols)
     nut = fitter[0] if spec.governor.spring is not None else 0.0
     frames, oks, adjusted, stopped, start, b = [], [], 0, 0, 0, 0
     while start < n:
@@ -316,7 +403,9 @@ def record(spec, cols: dict, bx: tm.Box, n: int, seed: int, fitter=(0.0, 0.0),
            "half_widths": bx.half_widths(spec), "masses_fraction": masses,
            "dashpot_fraction": dashpot, "torque_slope_fraction": bx.torque,
            "adjusting_nut_m": nut, "dashpot_valve_fraction": valve,
-           "distribution": tm.DISTRIBUTION, "notes": list(bx.notes)}
+           "distribution": tm.DISTRIBUTION, "notes": list(bx.notes),
+           "set_by_the_fitter": [f"{a.what}, bringing the speed at the {a.end} end to the "
+                                 f"design's ({a.cite})" for a in fitter_sets(spec)]}
     band = tm.speed_band(spec, cols, bx)  # as made (before any fitter's setting)
     sp = spec.speed
     band["required_rad_s"] = [sp.omega_inner, sp.omega_outer] if sp is not None and sp.band \
@@ -346,7 +435,7 @@ def record(spec, cols: dict, bx: tm.Box, n: int, seed: int, fitter=(0.0, 0.0),
 def stated_record(spec, res) -> dict | None:
     """The made governors' record of a result (:func:`record`) for the tolerances its spec
     states (:func:`govopt.analysis.tolerance.states_tolerances`), else None."""
-    req = spec.requirements
+    req = made_requirements(spec)
     if not tm.states_tolerances(spec, req):
         return None
     cols = resolved_columns(spec, res)
@@ -354,7 +443,7 @@ def stated_record(spec, res) -> dict | None:
     if not bx.dims():
         return None
     seed = 0 if req is None else req.robust_seed
-    return record(spec, cols, bx, sample_count(spec), seed, fitter_of(req),
+    return record(spec, cols, bx, sample_count(spec, req), seed, fitter_of(req),
                   None if req is None else req.min_yield, spreads=spreads_of(req))
 
 

@@ -182,10 +182,18 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
 
 
 def exit_on_failed_checks(res, json_out: bool) -> None:
-    """Exit code 1 (after the report) when any of the result's checks failed."""
+    """Exit code 1 (after the report) when any of the result's checks failed, or the made
+    governors' yield falls short of ``min_yield`` where the verdict is theirs
+    (:attr:`govopt.result.Result.passed`)."""
     failed = [c.name for c in res.checks if not c.passed]
     if failed:
         if not json_out:
             echo(f"{len(failed)} of {len(res.checks)} checks failed: {'; '.join(failed)}",
                  err=True)
+        raise ChecksFailed
+    if not res.passed:
+        if not json_out:
+            from ..report.text import yield_line
+
+            echo(f"FAIL as made: {yield_line(res)}", err=True)
         raise ChecksFailed
