@@ -649,7 +649,10 @@ def springs_of(spec: Spec, cols: dict) -> tuple[np.ndarray, np.ndarray]:
     """The springs' rate ``kappa`` (N/m) and free length ``l0`` (the type's form, m) of the
     designs ``cols`` (one float array per :data:`DESIGN_FIELDS`), shape ``(N,)``: as
     :func:`core` evaluates them."""
-    col = {k: np.asarray(v, dtype=float)[:, None] for k, v in cols.items()}
+    n = len(cols["flying_mass"])
+    cols = {f: np.asarray(cols[f], dtype=float) if f in cols else np.full(n, np.nan)
+            for f in DESIGN_FIELDS}
+    col = {k: v[:, None] for k, v in cols.items()}
     central = np.where(np.isnan(col["central_mass"]), 0.0, col["central_mass"])
     with np.errstate(all="ignore"):
         kappa, l0 = _spring(spec, cols, col, central)

@@ -86,8 +86,10 @@ def made_requirements(spec):
     changes = {}
     if tm.spring_grade(spec, req) is None:
         changes["robust_spring_grade"] = DEFAULT_GRADE
-    if req.min_yield is None:
+    if req.min_yield is None:  # not asked: as many samples as the work allows
         changes["min_yield"] = DEFAULT_MIN_YIELD
+        afford = int(limits.MAX_MONTE_CARLO_SECONDS / 2 / row_seconds(spec))
+        changes["robust_samples"] = max(min(req.robust_samples, afford), MIN_SAMPLES)
     return replace(req, **changes) if changes else req
 
 

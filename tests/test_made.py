@@ -230,3 +230,15 @@ def test_the_yield_plot(tmp_path):
     labels = ax.get_legend_handles_labels()[1]
     assert "worst case over the tolerance box (as made)" in labels
     assert f"{made.SAMPLES} sampled governors (as made)" in labels
+
+
+@pytest.mark.parametrize("n, dim, seed", [(2000, 4, 0), (7, 1, 3), (500, 6, 12)])
+def test_latin_hypercube_is_scipys(n, dim, seed):
+    """The yield's Latin hypercube is made with numpy alone and gives scipy's points (so a
+    tolerance study and the yield keep drawing the same governors)."""
+    from scipy.stats import qmc
+
+    from govopt.stats import latin_hypercube
+
+    assert np.array_equal(latin_hypercube(n, dim, seed),
+                          qmc.LatinHypercube(d=dim, seed=seed).random(n))
