@@ -143,10 +143,64 @@ def set_by_the_fitter(spec, rows: dict, cols: dict, i: int = 0) -> dict:
 # Which rows of a bulk frame hold
 # ---------------------------------------------------------------------------------------------
 
+class Evaluated:
+    """Made governors evaluated, as arrays (no pandas frame: :func:`evaluate_arrays`): the
+    requirements' ``names`` (every check but the search bounds'), their relative ``margins``
+    (rows x names, as :func:`check_margins` reads a bulk frame), the rows that are ``error``
+    (impossible designs) and the evaluator's per-row ``figures`` (SI)."""
+
+    def __init__(self, names: list[str], margins: np.ndarray, error: np.ndarray,
+                 figures: dict):
+        self.names, self.margins, self.error, self.figures = names, margins, error, figures
+
+    def __len__(self) -> int:
+        return len(self.error)
+
+    def take(self, rows) -> Evaluated:
+        """Some of the rows (an index array or a mask)."""
+        return Evaluated(self.names, self.margins[rows], self.error[rows],
+                         {k: np.asarray(v)[rows] for k, v in self.figures.items()})
+
+    @staticmethod
+    def concat(parts: list[Evaluated]) -> Evaluated:
+        """The rows of ``parts`` in order (a requirement a part lacks does not apply there)."""
+        names = list(dict.fromkeys(n for p in parts for n in p.names))
+        margins = np.concatenate([np.column_stack(
+            [p.margins[:, p.names.index(n)] if n in p.names else np.full(len(p), np.inf)
+             for n in names]) if names else np.zeros((len(p), 0)) for p in parts])
+        keys = [k for k in parts[0].figures if all(k in p.figures for p in parts)]
+        return Evaluated(names, margins, np.concatenate([p.error for p in parts]),
+                         {k: np.concatenate([np.asarray(p.figures[k]) for p in parts])
+                          for k in keys})
+
+
+def evaluated(spec, cols: dict, vibration: bool = True) -> Evaluated:
+    """The designs ``cols`` through the one evaluator (:func:`govopt.evaluator.core`, the
+    classic measures left out), as :class:`Evaluated`."""
+    from .evaluator import DESIGN_FIELDS, core
+
+    n = len(cols["flying_mass"])
+    cols = {f: np.asarray(cols[f], dtype=float) if f in cols else np.full(n, np.nan)
+            for f in DESIGN_FIELDS}
+    ev = core(spec, cols, vibration=vibration, classic=False)
+    error = ev.impossible
+    names = [c for c in ev.table.names if not any(b in c for b in BOUND_NAMES)]
+    out = np.empty((ev.n, len(names)))
+    columns = ev.table.columns()
+    for j, name in enumerate(names):
+        c = columns[name]
+        m, p = c.margin, c.passed
+        m = np.where(~p & ~(m < PASS_TOL), -np.inf, np.where(p, np.maximum(m, PASS_TOL), m))
+        out[:, j] = np.where(error, -np.inf, np.where(c.applies, m, np.inf))
+    return Evaluated(names, out, error, ev.figures)
+
+
 def requirement_checks(frame) -> list[str]:
     """The checks of a bulk frame a made governor must meet (all but the search bounds')."""
     from .bulk import check_names
 
+    if isinstance(frame, Evaluated):
+        return list(frame.names)
     return [c for c in check_names(frame.columns) if not any(b in c for b in BOUND_NAMES)]
 
 
@@ -157,6 +211,8 @@ def check_margins(frame) -> np.ndarray:
     apply."""
     from .bulk import margin_column, passed_column
 
+    if isinstance(frame, Evaluated):
+        return frame.margins
     names = requirement_checks(frame)
     out = np.empty((len(frame), len(names)))
     error = (frame["status"] == "error").to_numpy(dtype=bool)
@@ -173,8 +229,15 @@ def check_margins(frame) -> np.ndarray:
 def holds(frame) -> np.ndarray:
     """Rows where every requirement holds (a check that does not apply holds; an error row
     does not)."""
-    error = (frame["status"] == "error").to_numpy(dtype=bool)
+    error = _error(frame)
     return ~error & np.all(check_margins(frame) >= PASS_TOL, axis=1)
+
+
+def _error(frame) -> np.ndarray:
+    """The rows of a bulk frame (or :class:`Evaluated`) that are impossible designs."""
+    if isinstance(frame, Evaluated):
+        return frame.error
+    return (frame["status"] == "error").to_numpy(dtype=bool)
 
 
 def failing(frame) -> dict[str, int]:
@@ -183,7 +246,7 @@ def failing(frame) -> dict[str, int]:
     if len(frame) == 0:
         return {}
     bad = check_margins(frame) < PASS_TOL
-    error = (frame["status"] == "error").to_numpy(dtype=bool)
+    error = _error(frame)
     counts = {c: int(k) for c, k in zip(requirement_checks(frame), bad[~error].sum(axis=0),
                                          strict=True) if k}
     if error.any():
@@ -254,6 +317,24 @@ def evaluate_at(spec, cols: dict, torque=None, vibration: bool = True):
     return frame.iloc[np.argsort(np.concatenate(index), kind="stable")].reset_index(drop=True)
 
 
+def evaluate_arrays(spec, cols: dict, torque=None, vibration: bool = True) -> Evaluated:
+    """:func:`evaluate_at` as arrays (:class:`Evaluated`, no pandas frame): the rows in
+    order, the running work charged first."""
+    n = len(cols["flying_mass"])
+    torque = np.zeros(n) if torque is None else np.asarray(torque, dtype=float)
+    limits.charge(n * row_seconds(spec, vibration), n)
+    parts, index = [], []
+    for level in np.unique(torque):
+        sel = np.nonzero(torque == level)[0]
+        s = spec if level == 0 else replace(spec, engine=replace(
+            spec.engine, torque_slope=spec.engine.torque_slope * (1.0 + level)))
+        parts.append(evaluated(s, {k: np.asarray(v, dtype=float)[sel] for k, v in cols.items()},
+                               vibration))
+        index.append(sel)
+    out = Evaluated.concat(parts)
+    return out.take(np.argsort(np.concatenate(index), kind="stable"))
+
+
 # ---------------------------------------------------------------------------------------------
 # Samples of made governors
 # ---------------------------------------------------------------------------------------------
@@ -284,8 +365,6 @@ def fit(spec, rows: dict, torque, ok: np.ndarray, nut: float, valve: float,
     ``frame`` (the governors' evaluated rows) also that frame with each adjusted governor's row
     as set (the first setting, least change first, at which it holds). ``evaluate(rows,
     torque)``: the evaluation (default :func:`evaluate_at`)."""
-    import pandas as pd
-
     if evaluate is None:
         def evaluate(r, t):
             return evaluate_at(spec, r, t, vibration)
@@ -316,6 +395,8 @@ def fit(spec, rows: dict, torque, ok: np.ndarray, nut: float, valve: float,
     if frame is None:
         return ok, adjusted, stopped
     if set_rows:  # the adjusted governors' rows as set
+        import pandas as pd
+
         idx = sorted(set_rows)
         new = pd.concat([set_rows[i] for i in idx], ignore_index=True)
         new.index = idx
@@ -352,8 +433,6 @@ def made_yield(spec, cols: dict, bx: tm.Box, n: int, seed: int,
     ``blocks``: the samples are evaluated in blocks of these sizes (the last repeated; None: at
     once), and after each block ``give_up(failures, samples so far)`` may stop them (the record
     then says how many were evaluated, ``samples``, of ``of``)."""
-    import pandas as pd
-
     rows, torque = draw(cols, bx, n, seed)
     rows = set_by_the_fitter(spec, rows, cols)
     nut = fitter[0] if spec.governor.spring is not None else 0.0
@@ -363,26 +442,27 @@ def made_yield(spec, cols: dict, bx: tm.Box, n: int, seed: int,
         sel = np.arange(start, min(n, start + size))
         start, b = int(sel[-1]) + 1, b + 1
         part = {k: v[sel] for k, v in rows.items()}
-        frame = evaluate_at(spec, part, torque[sel])
+        frame = evaluate_arrays(spec, part, torque[sel])
         ok = holds(frame)
         if nut > 0 or fitter[1] > 0:
-            ok, a, s_ = fit(spec, part, torque[sel], ok, nut, fitter[1])
+            ok, a, s_ = fit(spec, part, torque[sel], ok, nut, fitter[1],
+                            evaluate=lambda r, t: evaluate_arrays(spec, r, t))
             adjusted, stopped = adjusted + a, stopped + s_
         frames.append(frame)
         oks.append(ok)
         if give_up is not None and give_up(int(sum((~o).sum() for o in oks)), start):
             break
-    frame, ok = pd.concat(frames, ignore_index=True), np.concatenate(oks)
+    frame, ok = Evaluated.concat(frames), np.concatenate(oks)
     done, k = len(ok), int(ok.sum())
     lo, hi = wilson(k, done)
-    fails = failing(frame.iloc[np.nonzero(~ok)[0]])
+    fails = failing(frame.take(np.nonzero(~ok)[0]))
     out = {"probability": k / done, "ci95": [lo, hi], "holds": k, "samples": done, "of": n,
            "seed": seed, "sampler": "Latin hypercube", "distribution": tm.DISTRIBUTION,
            "adjusted_by_the_fitter": adjusted, "failing": fails,
            "most_failing": next(iter(fails), None)}
     for end in ("inner", "outer"):
-        w = frame[f"omega_{end}_rad_s"].to_numpy(dtype=float)
-        w = w[np.isfinite(w)]
+        w = np.asarray(frame.figures[f"omega_{end}_rad_s"], dtype=float)
+        w = w[np.isfinite(w) & ~frame.error]
         out[f"sampled_{end}_rad_s"] = [float(w.min()), float(w.max())] if w.size else None
     if stopped:
         out["note"] = (f"the fitter's adjustment stopped at govopt's limit of work: {stopped} "

@@ -49,11 +49,14 @@ def truncated_normal(u, sigmas: float = TOLERANCE_SIGMAS) -> np.ndarray:
     >>> [round(float(z), 4) for z in truncated_normal(np.array([0.0, 0.5, 0.841, 1.0]))]
     [-1.0, 0.0, 0.3316, 1.0]
     """
-    from scipy.special import ndtr, ndtri  # where the work is done
+    from statistics import NormalDist  # the standard library's: no scipy on the yield's path
 
-    lo = ndtr(-sigmas)
+    phi = NormalDist()
+    lo = phi.cdf(-sigmas)
     p = lo + np.clip(np.asarray(u, dtype=float), 0.0, 1.0) * (1.0 - 2.0 * lo)
-    return np.clip(ndtri(p) / sigmas, -1.0, 1.0)
+    z = np.frompyfunc(lambda q: phi.inv_cdf(q) if 0.0 < q < 1.0 else math.copysign(
+        math.inf, q - 0.5), 1, 1)(p).astype(float)
+    return np.clip(z / sigmas, -1.0, 1.0)
 
 
 #: the unit cube's samplers: Latin hypercube (McKay, Beckman and Conover 1979) and Sobol' points

@@ -64,7 +64,6 @@ from .. import limits
 from .. import made as mk
 from ..analysis import tolerance as tm
 from ..analysis.tolerance import Box
-from ..bulk import margin_column, passed_column, value_column
 from ..errors import InfeasibleError
 from ..made import (  # noqa: F401 (BOUND_NAMES: the search bounds, for its readers)
     ADJUSTMENT_GROUPS,
@@ -649,7 +648,7 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> di
     ``wc`` if already found) beside the nominal value (SI; unit, limit and sense from the
     evaluated ``checks``), where it lies and how it was found, and the fitter's settings: the
     range the box needs and the setting for nominal parts."""
-    from ..bulk import design_arrays
+    from ..bulk import design_arrays, margin_column, passed_column, value_column
 
     d = design_of(spec, cand)
     cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}
