@@ -240,6 +240,9 @@ class Spec:
     #: ``stiffness``, ``free_length`` (the type's form), ``force_inner`` and ``force_outer`` (N);
     #: else None
     band_spring: dict | None = field(default=None, compare=False)
+    #: ``"nominal"`` where the command line asks for the nominal verdict (``--nominal``),
+    #: whatever ``requirements.verdict`` says; else ``"made"`` (:mod:`govopt.made`)
+    verdict: str = "made"
 
     def with_analysis(self, **changes) -> Spec:
         """The same spec with some fidelity settings changed."""

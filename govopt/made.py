@@ -69,7 +69,7 @@ def judged_as_made(spec) -> bool:
     default; ``"nominal"`` or ``--nominal``: the nominal design's checks alone)."""
     req, mat = spec.requirements, spec.material
     return (tm.kind(spec) is not None and mat is not None and mat.shear_modulus is not None
-            and (req is None or req.verdict == "made"))
+            and spec.verdict == "made" and (req is None or req.verdict == "made"))
 
 
 def made_requirements(spec):

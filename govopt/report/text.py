@@ -214,10 +214,10 @@ def verdict(res: Result) -> str:
         tail = f"; binding: {'; '.join(binding)}" if binding else ""
         ok = meets(res.made)
         if ok is None:
-            req = res.spec.requirements
-            asked = " at nominal (requirements.verdict = \"nominal\")" if (
-                req is not None and req.verdict == "nominal" and res.spec.governor.spring) \
-                else ""
+            req, spring = res.spec.requirements, res.spec.governor.spring
+            asked = (" at nominal (--nominal)" if res.spec.verdict == "nominal" and spring
+                     else " at nominal (requirements.verdict = \"nominal\")" if
+                     req is not None and req.verdict == "nominal" and spring else "")
             return f"PASS{asked}: all {n} checks pass" + tail
         if ok:
             return f"PASS as made: {yield_line(res)}; all {n} checks pass at nominal" + tail
