@@ -645,6 +645,12 @@ def _report(ev: Evaluation, s: _Statics, vib, vibration: bool, measures, dyn: di
     ev.dynamics = dyn
 
 
+def statics_of(spec: Spec, cols: dict):
+    """The statics of the designs ``cols`` as :func:`core` evaluates them (arrays over the
+    designs and configurations: ``x``, ``F``, ``sd``, ``impossible`` ...)."""
+    return _statics(spec, cols)
+
+
 def springs_of(spec: Spec, cols: dict) -> tuple[np.ndarray, np.ndarray]:
     """The springs' rate ``kappa`` (N/m) and free length ``l0`` (the type's form, m) of the
     designs ``cols`` (one float array per :data:`DESIGN_FIELDS`), shape ``(N,)``: as

@@ -381,7 +381,7 @@ def test_spring_checks_over_arrays_match_design_by_design(name, grade):
     (:meth:`Governor.spring_checks`) gives it: a compression spring of a wire grade, an
     extension spring of one, a leaf; over a spread of designs, some failing."""
     from govopt import made
-    from govopt.evaluator import _statics
+    from govopt.evaluator import statics_of
 
     spec = govopt.load_spec(govopt.examples.example(name))
     res = govopt.design(spec)
@@ -395,7 +395,7 @@ def test_spring_checks_over_arrays_match_design_by_design(name, grade):
     section = "wire_diameter" if helical else "leaf_thickness"
     rows[section] = rows[section] * (np.linspace(0.6, 1.4, 9) if helical else
                                      np.linspace(0.5, 8.0, 9))
-    s = _statics(spec, rows)
+    s = statics_of(spec, rows)
     got = {c.name: c for c in spec.governor.spring_checks_over(spec, s.sd, s.F, s.x)}
     assert got
     failing = 0
