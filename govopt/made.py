@@ -94,7 +94,12 @@ def made_requirements(spec):
 
 
 def as_made(spec):
-    """``spec`` with :func:`made_requirements` (what ``govopt design`` designs for)."""
+    """``spec`` with :func:`made_requirements` (what ``govopt design`` designs for); a spec
+    that asks for a design over its tolerance box already (``robust_*``, ``min_yield``:
+    :mod:`govopt.optimize.robust`) as it is (a design every check holds for over the whole box
+    has a yield of 1)."""
+    if spec.requirements is not None and spec.requirements.robust:
+        return spec
     req = made_requirements(spec)
     return spec if req is spec.requirements else replace(spec, requirements=req)
 
@@ -534,11 +539,23 @@ def spreads_of(req) -> tuple[float, float]:
     return (0.0, 0.0) if req is None else (req.robust_masses, req.robust_dashpot)
 
 
+def _required(res):
+    """``res`` whose made record (a robust design's) states the required yield where the
+    verdict is the made governor's (:func:`made_requirements`)."""
+    y = res.made["yield"]
+    if y.get("required") is not None or not judged_as_made(res.spec):
+        return res
+    need = made_requirements(res.spec).min_yield
+    y = {**y, "required": need,
+         "meets_required": None if y["ci95"] is None else bool(y["ci95"][0] >= need)}
+    return replace(res, made={**res.made, "yield": y})
+
+
 def with_yield(res):
     """``res`` with its made governors' record (``Result.made``: the yield beside the verdict),
     where its spec states tolerances and the record is not there yet."""
     if res.made is not None:
-        return res
+        return _required(res)
     made = stated_record(res.spec, res)
     return res if made is None else replace(res, made=made)
 
