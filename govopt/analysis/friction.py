@@ -93,10 +93,6 @@ _RESYNC = 32  # grid steps between exact re-evaluations of expm(M t) z0
 
 
 # --------------------------------------------------------------------------------------------
-# linear model of a load change, from a spec
-
-
-# --------------------------------------------------------------------------------------------
 # exact linear pieces
 
 

@@ -143,10 +143,3 @@ _WORKBOOK_NOTES = (
                  "beside a sheet's printed columns are not printed; every page names the "
                  "design at its top and gives 'page x of y' at its foot."),
 )
-
-
-def build_model(sheet: Sheet, res: Result) -> None:
-    """The Model sheet's title and what it holds (its constants are written by the Design
-    sheet's writer, :func:`govopt.report.excel.design.model_constants`, the drawing's data by
-    the Summary's)."""
-    sheet.title(1, "Model: the model's internals (for checking govopt, not for the design)")
