@@ -81,3 +81,24 @@ def test_nonlinear_reference_on_a_ball_governor():
         # the run lasts 12 time constants of the slowest mode: e^-12 = 6e-6 of the start is left
         assert abs(e["final_xi_rad"]) < 2e-5 * d
     assert errs[1] / errs[0] == pytest.approx(4.0, rel=0.05)
+
+
+AFFINE_CENTRAL = [p for p in sorted(SPECS.glob("*.toml"))
+                  if governor_class(govopt.load_spec(p).governor.type_name).central_load_affine]
+
+
+@pytest.mark.parametrize("path", AFFINE_CENTRAL, ids=lambda p: p.stem)
+def test_a_declared_affine_central_load_is_affine(path):
+    """A type that declares its forces affine in the central load (``central_load_affine``,
+    which the dead-weight diagnosis solves in closed form) has terms and inertia affine in it
+    and the lever ``jp - ci`` free of it, at every configuration."""
+    spec = govopt.load_spec(path)
+    gov, x = spec.governor, statics.configurations(spec)
+    m = np.array([[1.5], [4.0]])
+    at = {c: statics.terms(spec, x, m, np.full_like(m, c)) for c in (0.0, 1.0, 7.5)}
+    for name in ("cf", "cf_x", "ci", "ci_x", "jp", "jpp", "A", "B", "A_x", "B_x"):
+        t0, t1, t7 = (np.broadcast_to(getattr(at[c], name), (2, x.size)) for c in at)
+        np.testing.assert_allclose(t7, t0 + 7.5 * (t1 - t0), rtol=1e-12, atol=1e-12)
+    np.testing.assert_array_equal(at[0.0].lever, at[7.5].lever)
+    i0, i1, i7 = (gov.inertia(x, m, np.full_like(m, c)) for c in (0.0, 1.0, 7.5))
+    np.testing.assert_allclose(i7, i0 + 7.5 * (i1 - i0), rtol=1e-12)

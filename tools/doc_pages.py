@@ -191,7 +191,8 @@ def theory_block(type_name: str) -> str:
             continue
         out += [f"### {heading}", "", "| what | formula | source | settings |", "|---|---|---|---|"]
         for e in eqs:
-            source = f"[{cite(e.source, e.where)}](../references.md#{e.source})"
+            source = ("borrowed from " if e.borrowed else "") + \
+                f"[{cite(e.source, e.where)}](../references.md#{e.source})"
             settings = ", ".join(f"`{s}`" for s in e.settings)
             out.append(f"| {_cell(e.what)} | `{_cell(e.formula)}` | {source} | {settings} |")
         out.append("")
