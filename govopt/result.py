@@ -258,6 +258,23 @@ class Result:
             out += made_figures(self.made)
         return out
 
+    @property
+    def verdict_of(self) -> str:
+        """Whose verdict this is: ``"made"`` (the governors made to the tolerances and set by
+        the fitter: :mod:`govopt.made`, its yield against ``min_yield``) or ``"nominal"`` (the
+        nominal design's checks alone)."""
+        from .made_words import meets
+
+        return "nominal" if meets(self.made) is None else "made"
+
+    @property
+    def passed(self) -> bool:
+        """The verdict: every check holds at nominal and, where the verdict is the made
+        governor's, its yield meets ``min_yield``."""
+        from .made_words import meets
+
+        return all(c.passed for c in self.checks) and meets(self.made) is not False
+
     def figure(self, name: str) -> Figure:
         """The figure named ``name`` (:meth:`figures`)."""
         return next(f for f in self.figures() if f.name == name)
@@ -405,4 +422,5 @@ class Result:
             out["optimisation"] = self.optimisation
         if self.made is not None:
             out["made"] = self.made
+        out["verdict"] = {"of": self.verdict_of, "passed": self.passed}
         return jsonable(out)

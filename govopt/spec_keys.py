@@ -17,7 +17,7 @@ import functools
 import math
 
 from . import limits
-from .inputs import OBJECTIVES, Analysis, Requirements
+from .inputs import FITTER, OBJECTIVES, VERDICTS, Analysis, Requirements
 from .keys import REQUIRED, Key, Table
 from .units import G_STANDARD
 
@@ -287,6 +287,15 @@ def requirements_table(kind) -> Table:
                                    "whose yield is at least this at 95 % confidence",
             default=None, high=1.0, example=0.99, range_text="(0, 1), e.g. 0.99",
             source="the yield's Wilson interval (Wilson 1927)"),
+        Key("verdict", "choice", "whose verdict a spring governor gets: made (the governors "
+                                 "made to the tolerances and set by the fitter: PASS where "
+                                 "their yield meets min_yield, default 0.95) or nominal (the "
+                                 "nominal design's checks alone; also --nominal)",
+            default=_REQ.verdict, choices=VERDICTS),
+        Key("fitter", "choice", "sets: the fitter sets each made governor as its type declares "
+                                "(a spring's preload, bringing the inner end of the range to "
+                                "the design's speed); none: made governors are taken as made",
+            default=_REQ.fitter, choices=FITTER),
         *(kind.requirements if kind is not None else ()),
     ), when="read by govopt design")
 

@@ -443,6 +443,33 @@ def mirrored(parts) -> tuple[Part, ...]:
     return tuple(out)
 
 
+@dataclass(frozen=True)
+class Adjustment:
+    """A setting the fitter makes on each governor as it is built: ``what`` is set (in words),
+    the :class:`~govopt.inputs.Design` ``field`` it changes, the ``end`` of the range
+    (``"inner"`` or ``"outer"``) whose equilibrium speed it brings to the design's, and the
+    ``source`` (a key of :data:`govopt.references.REFERENCES`) with ``where`` in it. Applied by
+    :func:`govopt.made.set_by_the_fitter` (the speed is affine in the setting: a closed form)."""
+
+    what: str
+    field: str
+    end: str
+    source: str
+    where: str = ""
+
+    @property
+    def cite(self) -> str:
+        return cite(self.source, self.where)
+
+
+#: the spring's initial compression (its free length) set by the nut so that the sleeve begins
+#: to rise at the design's speed: how the textbook's examples fix a spring governor's spring
+#: ("find the initial compression ... in order that the sleeve shall begin to rise at 240 rpm")
+SPRING_PRELOAD = Adjustment("the spring's preload (its free length, by the adjusting nut)",
+                            "free_half_length", "inner", "textbook-ch3",
+                            "section 3.5, Examples 5 and 8 (initial compression)")
+
+
 class Governor(ABC):
     """One governor type with its parsed geometry (SI); subclasses supply the seam.
 
@@ -656,6 +683,29 @@ class Governor(ABC):
         from ..analysis import spring_engineering
 
         return spring_engineering.checks(spec, sd, char, vib)
+
+    def adjustments(self) -> tuple[Adjustment, ...]:
+        """What the fitter sets on each governor as built (:class:`Adjustment`): a spring's
+        preload where the type has a spring (:data:`SPRING_PRELOAD`), nothing for a dead-weight
+        governor. A type whose source says otherwise overrides this."""
+        return () if self.spring is None else (SPRING_PRELOAD,)
+
+    def spring_checks_over(self, spec, sd, F, x) -> list | None:
+        """:meth:`spring_checks` of N designs at once, without a forcing (no fatigue rows):
+        ``sd`` a :class:`~govopt.analysis.statics.SpringDesign` of arrays (``(N, 1)``), ``F``
+        the spring forces over the configurations ``x`` (N, ``(N, K)``; ``x`` in the
+        coordinate's unit, ``(K,)``). Each
+        :class:`govopt.verdict.Check` holds arrays of N (value, limit, in its SI unit); None
+        where some design has no array form (a spring given by its rate alone: then
+        :meth:`spring_checks` design by design). The same numbers as :meth:`spring_checks`
+        (each row is elementwise over the designs: :func:`govopt.springs.checks.rows_over`)."""
+        if spec.material is None or spec.material.grade is None:
+            return []
+        if not np.all(np.isfinite(sd.d)):
+            return None
+        from ..analysis import spring_engineering
+
+        return spring_engineering.checks_over(spec, sd, F)
 
     def spring_report(self, spec, sd, char, vib=None):
         """The spring maker's sheet, the fatigue loads under ``vib`` and the manufacturing

@@ -36,7 +36,17 @@ from typing import ClassVar
 import numpy as np
 
 from ..keys import Key
-from .base import Drawing, Equation, Governor, Part, Terms, ball_radius, mirrored, zigzag
+from .base import (
+    Adjustment,
+    Drawing,
+    Equation,
+    Governor,
+    Part,
+    Terms,
+    ball_radius,
+    mirrored,
+    zigzag,
+)
 
 #: what both traction governors read (:class:`FlyWeights`)
 N_WEIGHTS = Key("n_weights", "count", "the number of fly weights", source="article 003",
@@ -227,6 +237,14 @@ class FlyWeights(Governor):
         spindle by half the rod's travel (one collar fixed); arms, rod and spring neglected, as
         in the article."""
         return m * (1.0 + 0.25 * self.geometry(x)["s1"] ** 2)
+
+    def adjustments(self) -> tuple[Adjustment, ...]:
+        """The spring's free length, set on the governor so that it begins to open the throttle
+        at the design's lowest speed: the article designs from the minimum speeds "to allow
+        for speed adjustment by the controller on the governor"."""
+        return (Adjustment("the spring's setting (its free length, by the controller's "
+                           "adjustment)", "free_half_length", "inner", "traction-article",
+                           "design step 1 (speed adjustment on the governor)"),)
 
     def travel_slope(self, x):
         """``ds/dr``: the throttle rod's travel per unit fly-weight radius."""

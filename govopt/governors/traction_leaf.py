@@ -377,6 +377,32 @@ class TractionLeafGovernor(FlyWeights):
                   scale=None if self.set_min else self.leaf_length, group="spring"),
             Check("leaf set <= max", sd.l0, self.set_max, "<=", "m", source, group="spring")]
 
+    def spring_checks_over(self, spec, sd, F, x) -> list:
+        """:meth:`spring_checks` of N designs at once (arrays of N: the leaf's rows are
+        elementwise, each design's largest over its configurations)."""
+        mat, req = spec.material, spec.requirements
+        allowable = mat.allowable_bending_stress if mat is not None else None
+        N = np.shape(F)[0]
+
+        def col(v):
+            return np.broadcast_to(np.asarray(v, dtype=float), (N, 1))
+
+        kw = dict(F=np.max(np.abs(F), axis=1, keepdims=True), x=self.x_outer - self.hinge_radius,
+                  w=col(sd.width), t=col(sd.thickness), L=self.leaf_length,
+                  span=self.span(x), ends=self.leaf_ends,
+                  allowable=allowable if allowable is not None else np.inf,
+                  max_bow_ratio=getattr(req, "max_bow_ratio", 0.2) or 0.2)
+        l0 = col(sd.l0)[:, 0]
+        source = "a buildable leaf: its set (unloaded bow, outward +) within [governor] bounds"
+        rows = [Check(c.name, np.broadcast_to(c.value(**kw), (N, np.size(kw["span"]))).max(axis=1),
+                      np.full(N, float(c.limit(**kw))), c.sense, c.unit, c.source, group="spring")
+                for c in leaf.CONSTRAINTS if np.isfinite(c.limit(**kw))]
+        return rows + [
+            Check("leaf set >= min", l0, np.full(N, self.set_min), ">=", "m", source,
+                  scale=None if self.set_min else np.full(N, self.leaf_length), group="spring"),
+            Check("leaf set <= max", l0, np.full(N, self.set_max), "<=", "m", source,
+                  group="spring")]
+
     def free_length_limits(self) -> dict:
         """The set's bounds as the design search's statics rows (the names of the checks of
         :meth:`spring_checks`)."""

@@ -284,6 +284,11 @@ class _Runner:
             good = np.array([e is None for e in bad], dtype=bool)
             if good.any():
                 cols = {f: a[good] for f, a in arrays.items()}
+                if self.study.tolerances:  # each made governor as the fitter sets it
+                    from ..bulk import design_arrays
+                    from ..made import set_by_the_fitter
+
+                    cols = set_by_the_fitter(spec, cols, design_arrays(spec, [spec.design]))
                 out, units = evaluate_columns(spec, cols, **self.kw)
                 self.put_frame(b, pos[good], self._set_by_the_fitter(spec, cols, out),
                                spec, units)
