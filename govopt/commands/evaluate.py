@@ -177,7 +177,7 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
                                                                              sections=sections))
     for path in (output, xlsx, *drawn):
         if path is not None:
-            echo(f"wrote {Path(path).absolute()}", err=json_out)
+            echo(f"wrote {path}", err=json_out)
     exit_on_failed_checks(res, json_out)
 
 

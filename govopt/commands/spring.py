@@ -92,7 +92,7 @@ def spring(ctx: typer.Context) -> None:
 def _finish(out, json_out: bool) -> None:
     echo(out.text)
     for path in out.written:
-        echo(f"wrote {Path(path).absolute()}", err=json_out)
+        echo(f"wrote {path}", err=json_out)
     if out.failed:  # as evaluate: the spring is reported, and exit code 1 says a check failed
         echo(f"{len(out.failed)} of {out.total} checks failed: {'; '.join(out.failed)}",
              err=True)

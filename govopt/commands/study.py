@@ -153,12 +153,12 @@ def write_outputs(store, out, plot, force: bool) -> None:
             from ..study import export
 
             written = export(store, out, overwrite=force)
-        echo(f"wrote {Path(written).absolute()}")
+        echo(f"wrote {written}")
     if plot is not None:
         from ..report.study_plots import plot_study
 
         for path in plot_study(store, plot, overwrite=force):
-            echo(f"wrote {Path(path).absolute()}")
+            echo(f"wrote {path}")
 
 
 def progress_bar():
