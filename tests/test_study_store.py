@@ -14,6 +14,7 @@ import pandas as pd
 import pytest
 
 import govopt
+import hostile
 from govopt.study import FORMAT_VERSION, Store, load_study, run_study
 
 SPECS = Path(__file__).resolve().parent.parent / "specs"
@@ -240,6 +241,25 @@ def test_a_truncated_database_is_damaged_and_force_replaces_it(tmp_path):
              "--skip", "dynamics,vibration,classic")
     assert r.exit_code in (0, 1) and "points: 400 of 400 done" in r.stdout, r.output
     assert _journal_files(tmp_path) == []
+
+
+@pytest.mark.parametrize("damage", hostile.DAMAGES)
+def test_a_damaged_database_is_named_damaged(tmp_path, damage):
+    """A database whose structure or totals are not what govopt wrote (a table gone, a row the
+    study did not write, a total or a unit's factor edited) is called damaged, with what is
+    wrong, by show, export and --resume (exit 2, one line): nothing is shown or counted from
+    it, nothing exported; --force starts the study afresh."""
+    sql, words = hostile.DAMAGES[damage]
+    db = tmp_path / "d.db"
+    hostile.damaged_study_db(sql, db)
+    for args in (["study", "show", db], ["study", "export", db, "--out", tmp_path / "d.csv"],
+                 ["study", "run", STUDY, "--db", db, "--resume", "--skip", "vibration,classic"]):
+        _one_line_error(_cli(*args), f"{db}: the study database is damaged: ", words,
+                        "run the study again with --force")
+    assert not (tmp_path / "d.csv").exists()
+    if damage == "no columns table":  # govopt's own header: --force may replace it
+        r = _cli("study", "run", STUDY, "--db", db, "--force", "--skip", "vibration,classic")
+        assert r.exit_code == 0 and "points: 5 of 5 done" in r.stdout, r.output
 
 
 def test_a_database_that_cannot_be_read_is_one_line(tmp_path, hamabe_db, monkeypatch):
