@@ -9,12 +9,12 @@ import sqlite3
 import subprocess
 from pathlib import Path
 
+import hostile
 import numpy as np
 import pandas as pd
 import pytest
 
 import govopt
-import hostile
 from govopt.study import FORMAT_VERSION, Store, load_study, run_study
 
 SPECS = Path(__file__).resolve().parent.parent / "specs"
