@@ -544,6 +544,19 @@ STUDY_OPTIONS = {
 }
 
 
+#: tolerance bands that take a part where it cannot be made (a weight or a wire's diameter
+#: below zero), each with the words of its refusal: on Hamabe's case c (a spring given)
+BAD_BANDS = {
+    "wire ±200%": (("--tolerance", "design.wire_diameter=±200%"),
+                   "tolerance design.wire_diameter: the band ±200% reaches a value the spec "
+                   "refuses (must be positive"),
+    "weight ±100%": (("--tolerance", "design.pendulum_weight=±100%"),
+                     "tolerance design.pendulum_weight: the band ±100% reaches"),
+    "wire ±20 mm": (("--tolerance", "design.wire_diameter=uniform ±20 mm"),
+                    "tolerance design.wire_diameter: the band ±20 mm reaches"),
+}
+
+
 def _study_cases() -> Iterator[Case]:
     """Hostile ``[study]`` tables (the rest of a study spec is a spec like the others) and
     options of ``govopt study run``."""
@@ -558,6 +571,11 @@ def _study_cases() -> Iterator[Case]:
         for label, options in STUDY_OPTIONS.items():
             yield Case(f"{path.stem}/option/{label}", (*args, *options), lambda t=text: t,
                        "option", "study", True, "study")
+    case_c = (ROOT / "specs" / "hamabe-c.toml").read_text()
+    for label, (options, _) in BAD_BANDS.items():
+        yield Case(f"hamabe-c/option/{label}", ("study", "run", "{spec}", "--db", "{spec}.db",
+                                                 *options), lambda t=case_c: t, "option", "study",
+                   True, "study")
 
 
 def _db(spec: Path) -> Path:

@@ -8,6 +8,7 @@ import sqlite3
 import time
 from pathlib import Path
 
+import hostile
 import numpy as np
 import pandas as pd
 import pytest
@@ -397,6 +398,20 @@ def test_tolerance_study(tmp_path):
     # the maker): the coil diameter alone
     grade = load_study(spec, tolerances=["grade=2"], samples=4)
     assert {t.key for t in grade.tolerances} == {"design.coil_radius"}
+
+
+@pytest.mark.parametrize("band", hostile.BAD_BANDS)
+def test_a_band_that_makes_a_part_impossible_is_refused(tmp_path, band):
+    """A tolerance band whose end the spec refuses (a wire's diameter or a weight at or below
+    zero) is refused where it is given, one line naming the key, before any point runs: no
+    sample is an impossible part counted as a failure."""
+    from clirun import invoke
+
+    options, words = hostile.BAD_BANDS[band]
+    r = invoke(["study", "run", SPECS / "hamabe-c.toml", *options, "--db", tmp_path / "t.db"])
+    assert r.exit_code == 2 and r.stderr.count("\n") == 1, r.output
+    assert r.stderr.startswith(f"error: {SPECS / 'hamabe-c.toml'}: study: {words}"), r.stderr
+    assert "give a narrower band" in r.stderr and not (tmp_path / "t.db").exists()
 
 
 def test_exports_and_no_clobber(tmp_path):
