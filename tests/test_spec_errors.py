@@ -84,6 +84,16 @@ CASES = {
     "speed min and max": (_edit('mean = "240 rpm"', 'min = "225 rpm"\nmax = "255 rpm"')
                           .replace("irregularity = 0.12\n", "", 1),
                           r"speed\.(min|max): unknown key \(did you mean 'inner' and 'outer'"),
+    # a load change is never dropped without a word: it needs the engine
+    "load change without [engine]": (
+        re.sub(r"\[engine\][^\[]*", "", BASE, count=1),
+        r"load_change: a load change needs \[engine\] .*add \[engine\], or drop the "
+        r"\[\[load_change\]\] tables"),
+    "torque slope spread without [engine]": (
+        re.sub(r"\[engine\][^\[]*", "", re.sub(r"\[\[load_change\]\][^\[]*", "", BASE))
+        + "\n[requirements]\nrobust_torque_slope = 0.1\n",
+        r"requirements\.robust_torque_slope: spreads the engine's torque slope, and there is "
+        r"no \[engine\]"),
 }
 
 
