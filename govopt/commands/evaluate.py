@@ -149,6 +149,15 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
     """Check the outputs, compute a Result, write the requested files, print it and say what
     was written where (on stderr with ``--json``); a user's error (GovoptError) exits 2 and a
     result with failed checks 1, through :func:`~govopt.commands.common.guarded`."""
+    from ..report.files import removed_on_error
+
+    with removed_on_error():  # a refused run leaves no empty plots folder
+        _run_and_report(compute, json_out, spec, xlsx, output, force, plots, sections)
+
+
+def _run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
+                    output: str | None = None, force: bool = False, plots: Path | None = None,
+                    sections: list[str] | None = None) -> None:
     from ..report.files import check_planned, drawn_design, overwrite_policy, write_design_spec
     from ..report.text import format_result
 

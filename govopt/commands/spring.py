@@ -117,10 +117,13 @@ def design(
         replace: Replace = False,
         **options,
 ) -> None:
+    from ..report.files import removed_on_error
     from ..spring_command import run
 
-    _finish(run(spec, json_out=json_out, xlsx=xlsx, plots=plots, output=output,
-                replace=replace, **options), json_out)
+    with removed_on_error():  # a refused run leaves no empty plots folder
+        out = run(spec, json_out=json_out, xlsx=xlsx, plots=plots, output=output,
+                  replace=replace, **options)
+    _finish(out, json_out)
 
 
 @app.command("check", help=CHECK_HELP, short_help="Check a spring you have.")
@@ -137,7 +140,10 @@ def check(
         replace: Replace = False,
         **options,
 ) -> None:
+    from ..report.files import removed_on_error
     from ..spring_command import check as run_check
 
-    _finish(run_check(spec, json_out=json_out, xlsx=xlsx, plots=plots, replace=replace,
-                      **options), json_out)
+    with removed_on_error():  # a refused run leaves no empty plots folder
+        out = run_check(spec, json_out=json_out, xlsx=xlsx, plots=plots, replace=replace,
+                        **options)
+    _finish(out, json_out)
