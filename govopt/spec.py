@@ -308,9 +308,17 @@ def _speed(sp: Reader) -> Speed:
         w_in, w_out = sp.read(inner), sp.read(outer)
         if w_out <= w_in:
             sp.fail("outer", "expected outer > inner speed")
+        if w_out > limits.MAX_SPEED_RATIO * w_in:
+            sp.fail("outer", f"expected at most {limits.MAX_SPEED_RATIO} times speed.inner "
+                             f"(govopt's limit), got {w_out / w_in:.4g} times")
         speed = Speed((w_in + w_out) / 2.0, 2.0 * (w_out - w_in) / (w_out + w_in), band=True)
     else:
         speed = Speed(sp.read(mean), sp.read(irregularity))
+        r = limits.MAX_SPEED_RATIO
+        if speed.irregularity > 2.0 * (r - 1) / (r + 1):
+            sp.fail("irregularity", f"expected at most {2.0 * (r - 1) / (r + 1):.4g} (the highest "
+                                    f"speed at most {r} times the lowest: govopt's limit), got "
+                                    f"{speed.irregularity:g}")
     sp.finish()
     return speed
 
