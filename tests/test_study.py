@@ -277,6 +277,30 @@ def test_sigkill_and_resume_give_the_uninterrupted_table(tmp_path, cli):
         pd.testing.assert_frame_equal(store.table(), reference)
 
 
+def test_sigterm_ends_a_study_with_the_summary_sigint_prints(tmp_path, cli):
+    """SIGTERM stops a study as Ctrl-C does: the blocks done kept, the summary on stdout and
+    how to resume on stderr, the same lines; exit 128 + the signal (130, 143)."""
+    spec = _wide(tmp_path)
+    said = {}
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        db = tmp_path / f"{sig.name}.db"
+        proc = cli("study", spec, "--sweep", "design.ball_weight=1.5 kgf:2.5 kgf:100000",
+                   "--chunk", "100", "--skip", "classic", "--db", db)
+        deadline = time.monotonic() + 60
+        while proc.poll() is None and _rows(db) < 200 and time.monotonic() < deadline:
+            time.sleep(0.01)
+        assert proc.poll() is None, "the study ended before the signal"
+        os.kill(proc.pid, sig)
+        out, err = proc.communicate(timeout=120)
+        assert proc.returncode == 128 + sig, err
+        n = _rows(db)
+        assert f"points: {n} of 100000 done" in out, out
+        assert err == f"interrupted: {n} of 100000 points are in {db}; run again with --resume " \
+                      "to finish\n"
+        said[sig] = out.splitlines()[0]
+    assert said[signal.SIGINT] == said[signal.SIGTERM]
+
+
 def test_resume_skips_done_points_and_refuses_other_studies(tmp_path):
     path = _study(tmp_path, "")
     db = tmp_path / "r.db"
