@@ -83,6 +83,25 @@ def test_sqlite3_and_pandas_read_named_columns(hamabe_db):
         "check margin", "irregularity"]
 
 
+def test_a_design_figure_is_read_in_the_unit_the_spec_writes_its_key_in(tmp_path):
+    """A spec whose lengths are in cm but whose wire diameter is in mm reads its study's wire
+    diameter in mm (the key's own unit), its coil radius in cm; ``study show`` alike."""
+    spec = tmp_path / "a.toml"
+    text = CASE_A.read_text()
+    assert 'wire_diameter = "1.7 cm"' in text
+    spec.write_text(text.replace('wire_diameter = "1.7 cm"', 'wire_diameter = "17 mm"'))
+    db = tmp_path / "a.db"
+    run_study(load_study(spec, sweeps=["design.pendulum_weight=11 kgf,12 kgf"],
+                         skip="dynamics,vibration,classic"), db)
+    with Store(db, create=False) as store:
+        columns = store.columns().set_index("name")
+        table = store.table()
+    assert columns.loc["wire_diameter", ["unit", "shown_unit"]].tolist() == ["m", "mm"]
+    assert columns.at["wire_diameter", "shown_factor"] == pytest.approx(1e-3, rel=1e-15)
+    assert columns.loc["coil_radius", ["unit", "shown_unit"]].tolist() == ["m", "cm"]
+    assert table["wire_diameter"].tolist() == pytest.approx([0.017, 0.017], rel=1e-12)
+
+
 def test_meta_holds_the_format_the_version_and_the_study(hamabe_db):
     con = sqlite3.connect(f"file:{hamabe_db}?mode=ro", uri=True)
     try:
