@@ -102,6 +102,13 @@ def table_schema(table: Table, tables: dict[str, Table]) -> dict:
                 required.append(key.name)
         if key.kind == WEIGHT:  # one spelling, not both
             rules.append({"not": {"required": list(key.names)}})
+        sub = tables.get(key.name) if not table.name else None
+        if sub is not None and sub.required_unless:  # [speed] unless only a [design] is read
+            rules.append({"if": {"not": {"required": [sub.required_unless]}},
+                          "then": {"required": [key.name]}})
+        if sub is not None and sub.needs:  # [[load_change]] with [engine]
+            rules.append({"if": {"required": [key.name]}, "then": {"required": list(sub.needs)}})
+    rules += [alternatives(choice) for choice in table.alternatives]
     out = {"type": "object", "description": table.meaning, "properties": props,
            "additionalProperties": False}
     if table.open:
@@ -113,6 +120,30 @@ def table_schema(table: Table, tables: dict[str, Table]) -> dict:
     return out
 
 
+def alternatives(choice: tuple) -> dict:
+    """``oneOf`` the groups of a choice (:attr:`govopt.keys.Table.alternatives`): every
+    required key of one group, and no key of the others.
+
+    >>> alternatives(((("a",), ("b", "c?"))))["oneOf"][1]
+    {'required': ['b'], 'not': {'anyOf': [{'required': ['a']}]}}
+    """
+    groups = [[n.rstrip("?") for n in group] for group in choice]
+    return {"oneOf": [
+        {"required": [n for n in group if not n.endswith("?")],
+         "not": {"anyOf": [{"required": [n]} for j, other in enumerate(groups) if j != i
+                           for n in other]}}
+        for i, group in enumerate(choice)]}
+
+
+def material_rules(helical: bool) -> dict:
+    """What ``[material]`` must give, as the parser reads it (:func:`govopt.spec._material`):
+    a helical spring's shear values unless a wire grade gives them, a leaf's modulus."""
+    if not helical:
+        return {"required": ["elastic_modulus"]}
+    return {"if": {"not": {"required": ["grade"]}},
+            "then": {"required": ["allowable_shear_stress", "shear_modulus"]}}
+
+
 def governor_schema() -> dict:
     """The schema of a governor spec file: the governor types named, every type's tables closed
     to their declared keys."""
@@ -122,12 +153,17 @@ def governor_schema() -> dict:
     branches = []
     for name in REGISTRY:
         tables = spec_tables(name)
+        then = {**table_schema(tables[""], tables),
+                "description": f"{governor_class(name).title}"}
+        kind = governor_class(name).declared_spring_kind()
+        material = then["properties"]["material"]
+        material["allOf"] = [*material.get("allOf", []),
+                             material_rules(kind is None or kind.helical)]
         branches.append({
             "if": {"properties": {"governor": {"properties": {"type": {"const": name}},
                                                "required": ["type"]}},
                    "required": ["governor"]},
-            "then": {**table_schema(tables[""], tables),
-                     "description": f"{governor_class(name).title}"}})
+            "then": then})
     return {
         "description": "a governor spec: the governor, the speeds, the spring's material, a "
                        "design to evaluate or the requirements of one to find",

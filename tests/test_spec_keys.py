@@ -162,6 +162,46 @@ def test_schema_rejects_what_the_parser_rejects(validator, change, where, tmp_pa
         parse_spec(bad, "bad.toml")
 
 
+def _deletions(data: dict):
+    """Every table of ``data`` and every key of each table deleted, one at a time."""
+    for table, value in data.items():
+        if isinstance(value, dict | list):
+            yield f"[{table}]", {k: v for k, v in data.items() if k != table}
+        if isinstance(value, dict):
+            for key in value:
+                bad = copy.deepcopy(data)
+                del bad[table][key]
+                yield f"{table}.{key}", bad
+
+
+@pytest.mark.parametrize("gtype", list(REGISTRY))
+def test_schema_and_govopt_agree_on_every_deletion_from_a_template(validator, gtype):
+    """The schema says what the parser says (it is generated from the same declarations):
+    each table and each key of a type's `govopt init` template deleted, the schema refuses
+    exactly what govopt refuses: a required key, one of two alternatives (``oneOf``: the
+    speed band or the mean speed; a bell crank's outer radius or sleeve lift; a leaf's
+    chords, bows or travels), a table required without another (``[speed]`` without
+    ``[design]``), a table read with another (``[[load_change]]`` with ``[engine]``), the
+    material's values its spring needs. Only a limit of govopt's work, which depends on the
+    values (a catalogue grown past its limit once a bound is gone), is the parser's alone."""
+    from govopt.spec_docs import template
+
+    data = tomllib.loads(template(gtype))
+    assert not list(validator.iter_errors(data))
+    disagree = []
+    for label, bad in _deletions(data):
+        try:
+            parse_spec(copy.deepcopy(bad), "bad.toml")
+            refused = ""
+        except govopt.GovoptError as exc:
+            refused = str(exc)
+        if bool(refused) != bool(list(validator.iter_errors(bad))) and \
+                "govopt's limit" not in refused:
+            disagree.append(f"{label}: govopt {'refuses' if refused else 'accepts'} "
+                            f"({refused[:120]})")
+    assert not disagree, "\n".join(disagree)
+
+
 def test_schema_command_writes_the_schema(tmp_path):
     from govopt.spec_schema import text
 

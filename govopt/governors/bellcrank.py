@@ -290,6 +290,7 @@ class BellCrankGovernor(Governor):
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
+    key_alternatives: ClassVar[tuple] = (((RADIUS_OUTER.name,), (SLEEVE_LIFT.name,)),)
     central_load: ClassVar[bool] = True
     #: True where the fulcrum rides on the sleeve and the ball hangs below it (Fig. 3.12)
     fulcrum_on_sleeve: ClassVar[bool] = False
