@@ -219,6 +219,8 @@ class FlyWeights(Governor):
     spring will be longer and with lower spring rate")."""
 
     resonance_ceiling: ClassVar[bool] = False
+    source: ClassVar[str] = "traction-article"
+    friction_key: ClassVar[str] = "governor.rod_friction"
 
     def inertia(self, x, m, central=None):
         """``I = m (1 + (ds/dr / 2)^2)`` (kg): the weight moves out by ``dr`` and along the

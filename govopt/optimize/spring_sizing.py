@@ -418,14 +418,6 @@ def _least_tolerance(grade, lo: float) -> float:
     return max(float(tl.max_wire_diameter(lo, grade)) - lo, 1e-12)
 
 
-def _draw(sizing: Sizing, ends: str, L2: float | None) -> Sizing:
-    """The sizing's spring as drawn (:func:`drawn`) and the spring kind's checks on it (the
-    plain GP's too, with the given allowable), computed once for every output."""
-    if sizing.solution.ok and sizing.spring is None:
-        sizing = _checked(sizing, ends, L2)
-    return sizing
-
-
 def _checked(sizing: Sizing, ends: str, L2: float | None) -> Sizing:
     """``sizing`` with its spring drawn and the spring kind's table on it
     (:func:`govopt.springs.assessment.table`: the fatigue rows at the load cycle)."""
