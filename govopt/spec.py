@@ -314,11 +314,10 @@ def _speed(sp: Reader) -> Speed:
         speed = Speed((w_in + w_out) / 2.0, 2.0 * (w_out - w_in) / (w_out + w_in), band=True)
     else:
         speed = Speed(sp.read(mean), sp.read(irregularity))
-        r = limits.MAX_SPEED_RATIO
-        if speed.irregularity > 2.0 * (r - 1) / (r + 1):
-            sp.fail("irregularity", f"expected at most {2.0 * (r - 1) / (r + 1):.4g} (the highest "
-                                    f"speed at most {r} times the lowest: govopt's limit), got "
-                                    f"{speed.irregularity:g}")
+        if speed.irregularity > limits.MAX_IRREGULARITY:
+            sp.fail("irregularity", f"expected at most {limits.MAX_IRREGULARITY:.4g} (the highest "
+                                    f"speed at most {limits.MAX_SPEED_RATIO} times the lowest: "
+                                    f"govopt's limit), got {speed.irregularity:g}")
     sp.finish()
     return speed
 
