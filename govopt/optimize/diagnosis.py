@@ -176,9 +176,13 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
     own = masses(req)
     memo: dict = {}
 
+    def grid_of(s):  # another governor (its friction or its range): its own grid
+        return grid if s.governor is spec.governor else Grid.build(s)
+
     def meets_in(s, r):
+        g = grid_of(s)
         return lambda m, c: np.logical_and.reduce(
-            list(dead_weight_statics(s, r, grid, m, c)[0].values()))
+            list(dead_weight_statics(s, r, g, m, c)[0].values()))
 
     def feasible(s, r):
         if spec.governor.central_load_affine:  # each ball's central loads in closed form
@@ -189,7 +193,7 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
         m, c = masses(r)
         own_gov = s.governor is spec.governor  # else another friction or range: its arrays
         keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1]) and own_gov
-        g = grid if own_gov else Grid.build(s)
+        g = grid_of(s)
         for lo in range(0, m.size, _DIAGNOSIS_BLOCK):
             mb, cb = m[lo:lo + _DIAGNOSIS_BLOCK], c[lo:lo + _DIAGNOSIS_BLOCK]
             t = statics.terms(s, g.alpha, mb[:, None], cb[:, None])
