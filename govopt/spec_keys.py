@@ -65,7 +65,8 @@ SPEED = Table("speed", "the speeds the governor must float between: a band (inne
     Key("irregularity", "number", "the irregularity delta0 = (omega_a - omega_i) / omega0: "
                                   "the design's own is at most this", high=2.0, example=0.12,
         when="with mean"),
-), when="required unless the spec only evaluates a given [design]")
+), when="required unless the spec only evaluates a given [design]", required_unless="design",
+   alternatives=((("inner", "outer"), ("mean", "irregularity")),))
 
 
 def material_table() -> Table:
@@ -195,7 +196,7 @@ def load_change_table(gov) -> Table:
             **_configuration(gov)),
         Key("to", dim, f"the configuration ({gov.coordinate_name}) after it",
             **_configuration(gov)),
-    ), array=True, when="read with [engine]")
+    ), array=True, when="read with [engine]", needs=("engine",))
 
 
 #: ``[analysis]``'s keys of every type; a type adds its own (:attr:`Governor.analysis_keys`:
@@ -329,7 +330,8 @@ def catalogue_table(kind) -> Table:
 
 def governor_table(gov) -> Table:
     """``[governor]`` of governor type ``gov``: ``type`` and the type's keys."""
-    return Table("governor", gov.title, (TYPE, *gov.keys), required=True)
+    return Table("governor", gov.title, (TYPE, *gov.keys), required=True,
+                 alternatives=gov.key_alternatives)
 
 
 def top_table(tables) -> Table:

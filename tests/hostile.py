@@ -602,6 +602,19 @@ STUDY_OPTIONS = {
 }
 
 
+#: tolerance bands that take a part where it cannot be made (a weight or a wire's diameter
+#: below zero), each with the words of its refusal: on Hamabe's case c (a spring given)
+BAD_BANDS = {
+    "wire ±200%": (("--tolerance", "design.wire_diameter=±200%"),
+                   "tolerance design.wire_diameter: the band ±200% reaches a value the spec "
+                   "refuses (must be positive"),
+    "weight ±100%": (("--tolerance", "design.pendulum_weight=±100%"),
+                     "tolerance design.pendulum_weight: the band ±100% reaches"),
+    "wire ±20 mm": (("--tolerance", "design.wire_diameter=uniform ±20 mm"),
+                    "tolerance design.wire_diameter: the band ±20 mm reaches"),
+}
+
+
 def _study_cases() -> Iterator[Case]:
     """Hostile ``[study]`` tables (the rest of a study spec is a spec like the others) and
     options of ``govopt study run``."""
@@ -616,6 +629,11 @@ def _study_cases() -> Iterator[Case]:
         for label, options in STUDY_OPTIONS.items():
             yield Case(f"{path.stem}/option/{label}", (*args, *options), lambda t=text: t,
                        "option", "study", True, "study")
+    case_c = (ROOT / "specs" / "hamabe-c.toml").read_text()
+    for label, (options, _) in BAD_BANDS.items():
+        yield Case(f"hamabe-c/option/{label}", ("study", "run", "{spec}", "--db", "{spec}.db",
+                                                 *options), lambda t=case_c: t, "option", "study",
+                   True, "study")
 
 
 def _db(spec: Path) -> Path:
@@ -670,6 +688,61 @@ def _truncated_db(spec: Path) -> None:
         store.set_meta({"study": {"name": "x", "pad": "x" * 40_000}, "digest": "x"})
     with open(_db(spec), "r+b") as fh:
         fh.truncate(fh.seek(0, 2) // 2)
+
+
+#: damages of a sound study database (Hamabe's Example 1 as a study, five points): each an SQL
+#: script, and the words of the one line that names it damaged
+DAMAGES = {
+    "no columns table": ("DROP TABLE columns", "no table columns"),
+    "a row of NULLs": ("INSERT INTO points (point, status, message) VALUES (NULL, 'pass', '')",
+                       "1 row the study did not write, the first point 5"),
+    "a row past the total": (
+        "INSERT INTO points (point, status, message, design_pendulum_weight, "
+        "speed_irregularity, design_wire_diameter, design_active_turns, design_dashpot_a1) "
+        "VALUES (7, 'pass', '', 1, 0.1, 1, 8, 1)", "the first point 7"),
+    "a row without its inputs": ("DELETE FROM points WHERE point = 4; INSERT INTO points "
+                                 "(point, status, message) VALUES (4, 'pass', '')",
+                                 "the first point 4"),
+    "the total edited": ("UPDATE meta SET value = '2' WHERE key = 'total'",
+                         "total 2, but the study has 5 points"),
+    "a shown_factor of 0": ("UPDATE columns SET shown_factor = 0 WHERE name = 'omega_inner'",
+                            "column omega_inner: shown_factor 0.0, expected a number > 0"),
+    "a meta value not JSON": ("UPDATE meta SET value = 'x{' WHERE key = 'total'",
+                              "meta 'total' is not JSON"),
+    "a column dropped": ("ALTER TABLE points DROP COLUMN omega_inner",
+                         "are not those described in columns"),
+    "the definition edited": ("UPDATE meta SET value = replace(value, 'hamabe-study', 'x') "
+                              "WHERE key = 'study'", "does not match its digest"),
+}
+
+
+@cache
+def sound_db() -> Path:
+    """A sound study database (Hamabe's Example 1 as a study), made once a process."""
+    import tempfile
+
+    from govopt.study import load_study, run_study
+
+    db = Path(tempfile.mkdtemp(prefix="govopt-hostile-")) / "sound.db"
+    run_study(load_study(study_specs()[0], skip="vibration,classic"), db)
+    return db
+
+
+def damaged_study_db(sql: str, db: Path) -> None:
+    """A copy of :func:`sound_db` at ``db``, damaged by the SQL script ``sql``."""
+    import shutil
+    import sqlite3
+
+    _clean(db)
+    shutil.copy(sound_db(), db)
+    conn = sqlite3.connect(db)
+    conn.executescript(sql)
+    conn.commit()
+    conn.close()
+
+
+def _damage(sql: str, spec: Path) -> None:
+    damaged_study_db(sql, _db(spec))
 
 
 def _empty_file(spec: Path) -> None:
@@ -740,6 +813,14 @@ OUTPUT_CASES = (
     ("init/-o into the package", "init",
      ("init", "hamabe-a", "-o", str(ROOT / "govopt" / "data" / "hostile-output.toml")), None),
 )
+
+
+OUTPUT_CASES += tuple(
+    (f"study/{command} {label}", "study", args, partial(_damage, sql))
+    for label, (sql, _) in DAMAGES.items()
+    for command, args in (("show", ("study", "show", "{db}")),
+                          ("export", ("study", "export", "{db}", "--out", "{db}.csv")),
+                          ("--resume", ("study", "run", "{spec}", "--db", "{db}", "--resume"))))
 
 
 def _output_cases() -> Iterator[Case]:

@@ -163,6 +163,15 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
     ``--json`` a search that finds no design prints its diagnosis as one JSON object before
     exiting 2; ``advise``: a result with failed checks is told what change makes it pass
     (:func:`govopt.optimize.diagnosis.evaluation_moves`; in the JSON, ``diagnosis``)."""
+    from ..report.files import removed_on_error
+
+    with removed_on_error():  # a refused run leaves no empty plots folder
+        _run_and_report(compute, json_out, spec, xlsx, output, force, plots, sections, advise)
+
+
+def _run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
+                    output: str | None = None, force: bool = False, plots: Path | None = None,
+                    sections: list[str] | None = None, advise: bool = False) -> None:
     from ..report.files import check_planned, drawn_design, overwrite_policy, write_design_spec
     from ..report.text import format_result
 
@@ -208,7 +217,7 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
         echo(format_result(res, sections=sections))
     for path in (output, xlsx, *drawn):
         if path is not None:
-            echo(f"wrote {Path(path).absolute()}", err=json_out)
+            echo(f"wrote {path}", err=json_out)
     exit_on_failed_checks(res, json_out, moves)
 
 

@@ -488,10 +488,12 @@ class Governor(ABC):
     * ``keys``: its ``[governor]`` keys beyond ``type`` (:class:`govopt.keys.Key`, in reading
       order), which :meth:`parse` reads; ``tables``: top-level tables of its own (the shaft
       governor's ``[valve_gear]``); ``example``: the bundled design spec of the type (the
-      values of its ``govopt init --type`` template).
+      values of its ``govopt init --type`` template); ``key_alternatives``: the choices
+      between groups of its keys (:attr:`govopt.keys.Table.alternatives`).
     """
 
     type_name: ClassVar[str]
+    key_alternatives: ClassVar[tuple] = ()
     title: ClassVar[str]
     coordinate: ClassVar[str] = "angle"
     coordinate_name: ClassVar[str] = "x"

@@ -303,6 +303,7 @@ class BellCrankGovernor(Governor):
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
+    key_alternatives: ClassVar[tuple] = (((RADIUS_OUTER.name,), (SLEEVE_LIFT.name,)),)
     central_load: ClassVar[bool] = True
     central_load_affine: ClassVar[bool] = True  # cf, cf_x and I affine in W; ci = 0 (terms)
     #: True where the fulcrum rides on the sleeve and the ball hangs below it (Fig. 3.12)

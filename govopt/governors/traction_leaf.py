@@ -264,6 +264,9 @@ class TractionLeafGovernor(FlyWeights):
     spring: ClassVar[str | None] = "leaf"
     mass_key: ClassVar[str] = "fly"
     mass_name: ClassVar[str] = "fly weight"
+    #: the valve's positions one way: chords, bows or travels (open and closed; normal optional)
+    key_alternatives: ClassVar[tuple] = (tuple(
+        (f"{way}_open", f"{way}_closed", f"{way}_normal?") for way in ("chord", "bow", "travel")),)
     free_length_key: ClassVar[str] = "leaf_set"
     free_length_positive: ClassVar[bool] = False  # the set may bow either way
     free_length_meaning: ClassVar[str] = ("the leaf's set l0: its unloaded bow at the middle, "

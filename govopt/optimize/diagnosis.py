@@ -573,7 +573,7 @@ def evaluation_moves(spec: Spec) -> list[str]:
                 found.append((key, f"{now * rpm:.5g} rpm", f"{now * x ** sign * rpm:.5g} rpm"))
     elif sp is not None:
         x = _bisect(lambda x: passes({"speed.irregularity": float(sp.irregularity * x)}),
-                    hi=min(100.0, 1.99 / sp.irregularity), iters=10)  # the key's range: < 2
+                    hi=min(100.0, limits.MAX_IRREGULARITY / sp.irregularity), iters=10)
         if x is not None:
             found.append(("speed.irregularity", f"{sp.irregularity:g}",
                           float(f"{sp.irregularity * x:.4g}")))

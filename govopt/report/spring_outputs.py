@@ -12,11 +12,13 @@ replaced without ``--replace``).
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
 
+from ..errors import GovoptError
 from ..springs import extension as he
 from ..springs import fatigue as ft
 from ..springs import sheet as sh
@@ -119,6 +121,10 @@ def planned(xlsx, plots, stem: str, output=None) -> list[tuple[Path, str]]:
     paths = [(Path(p), what) for p, what in ((output, "spring spec"), (xlsx, "workbook"))
              if p is not None]
     if plots is not None:
+        for path, what in paths:
+            if os.path.realpath(path) == os.path.realpath(plots):
+                raise GovoptError(f"{path}: cannot write {what}: it is the plots folder of "
+                                  "this run")
         folder = output_folder(Path(plots), "plots")
         paths += [(folder / f"{stem}-{k}.{fmt}", "plot") for k in PLOTS for fmt in ("png", "svg")]
     return paths
