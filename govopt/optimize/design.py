@@ -85,6 +85,13 @@ def objective_unit(req: Requirements, gov) -> str:
 
 
 
+def objective_of(req: Requirements, gov) -> Objective:
+    """The design's objective for the record: name, SI unit and, for the moving mass, what it
+    counts (:meth:`~govopt.governors.base.Governor.moving_mass_words`)."""
+    return Objective(req.objective, objective_unit(req, gov), counts=(
+        gov.moving_mass_words() if req.objective == "moving_mass" else ""))
+
+
 def validated(spec: Spec) -> Spec:
     """The spec with its design requirements filled in (:func:`requirements`), after the checks
     every search needs: grids of a size govopt allows, a ``[material]`` where a spring is to be
@@ -165,7 +172,7 @@ def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound
     searched = search_bounds(spec, req, cand)
     damping = gov.key_unit("damping")
     record = Record(
-        status="optimal", objective=Objective(req.objective, objective_unit(req, gov)),
+        status="optimal", objective=objective_of(req, gov),
         value=cand.objective, bound=math.nan if bound is None else bound["objective"],
         active=[f"{b['name']} at its {b['at']} search bound" for b in searched
                 if b["at"] in ("lower", "upper")],
@@ -300,7 +307,8 @@ def dashpot_margins(cand: Candidate) -> dict:
 
 
 def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
-    """Least moving mass ``m + M`` of a dead-weight governor (Watt, Porter, Proell: textbook
+    """Least moving mass (every ball and the central load: :meth:`Governor.moving_mass`) of a
+    dead-weight governor (Watt, Porter, Proell: textbook
     3.4), exhaustive over the ball and central-load weights on the catalogue's weight step.
 
     At each (m, M) the characteristic is exact (virtual work on the seam); with a friction band
@@ -313,6 +321,7 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     width. With an engine and load changes the dash-pot is designed as for spring governors.
     """
     grid, km, rows, m, c, stats = dead_weight_candidates(spec, req)
+    gov = spec.governor
     for part in batches(rows.size, 64):
         sel, start = rows[part], part.start
         try:
@@ -326,7 +335,7 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
             i = sel[j]
             stats["dynamics_checked"] = int(start + j + 1)
             return Candidate(float(m[i]), {}, 0.0, 0.0, float(win["f"][j]),
-                             float(m[i] + c[i]), float(win["settling"][j]),
+                             float(gov.moving_mass(m[i], c[i], 0.0)), float(win["settling"][j]),
                              float(win["f_lo"][j]), float(win["f_hi"][j]), float(c[i])), stats
     stats["dynamics_checked"] = int(rows.size)
     raise dynamics_conflict(spec, req, stats)
@@ -355,4 +364,5 @@ def dead_weight_candidates(spec: Spec, req: Requirements):
                     Affine(0.0 * w2, 0.0 * w2), Affine(0.0 * m[:, None], 0.0 * m[:, None]),
                     inertia, c[:, None])
     rows = np.nonzero(ok)[0]
-    return grid, km, rows[np.argsort(m[rows] + c[rows], kind="stable")], m, c, stats
+    return grid, km, rows[np.argsort(gov.moving_mass(m[rows], c[rows], 0.0), kind="stable")], \
+        m, c, stats

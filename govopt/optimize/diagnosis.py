@@ -94,9 +94,10 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
         list(dead_weight_statics(spec, req, grid, m, c)[0].values())))
     if central:
         moves.append(central)
-    x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=req.k2_margin / x)))
-    if x is not None and req.k2_margin:
-        moves.append(f"requirements.k2_margin {req.k2_margin:g} -> {req.k2_margin / x:.4g}")
+    margin = spec.governor.k2_rule(req.k2_margin)[0]
+    x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=margin / x))) if margin else None
+    if x is not None:
+        moves.append(f"requirements.k2_margin {margin:g} -> {margin / x:.4g}")
     x = _bisect(lambda x: feasible(band(sp.omega_inner / x, sp.omega_outer), req))
     if x is not None:
         moves.append(f"speed.inner {sp.omega_inner * rpm:.5g} rpm -> "
@@ -196,8 +197,15 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
         return replace(spec, material=replace(mat, allowable_shear_stress=mat
                                               .allowable_shear_stress * x)), req
 
+    margin = spec.governor.k2_rule(req.k2_margin)[0]  # the type's rule: 0 where not applied
+
     def with_k2(x):
-        return spec, replace(req, k2_margin=req.k2_margin / x)
+        return spec, replace(req, k2_margin=margin / x)
+
+    least = spec.governor.range_rule(req.min_range) if speed.band else 0.0
+
+    def with_range(x):
+        return spec, replace(req, min_range=least / x)
 
     def with_hurwitz(x):
         return spec, replace(req, hurwitz_margin=req.hurwitz_margin / x)
@@ -232,13 +240,15 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
             hi_name = min(others, key=lambda k: np.median(parts[k][1]))
             head = (f"infeasible: the requirement '{lo_name}' needs a stiffer "
                     f"spring than '{hi_name}' allows at every {weight} in the bounds")
-        cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin),
+        cands = [*speed_moves, ("k2_margin", with_k2, "/", margin),
+                 ("requirements.min_range", with_range, "/", least),
                  (f"bounds.{spec.governor.mass_key}_weight", with_mass, "widen x", None)]
     elif stage == "spring" and stats["statics_feasible"] == 0:
         head = (f"infeasible: no catalogue spring's stiffness falls in the window "
                 "the statics allow (the speed band, k^2 margins, free length) at any "
                 f"{spec.governor.mass_key} weight in the bounds")
-        cands = [*speed_moves, ("k2_margin", with_k2, "/", req.k2_margin)]
+        cands = [*speed_moves, ("k2_margin", with_k2, "/", margin),
+                 ("requirements.min_range", with_range, "/", least)]
     elif stage == "spring":
         head = (f"infeasible: no spring in the catalogue and bounds meets the "
                 f"allowable shear stress (with index, envelope and surge limits) at a stiffness "

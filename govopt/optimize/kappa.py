@@ -134,11 +134,18 @@ class KappaModel:
         return lo, hi
 
     def statics_interval(self, k2_low: float, k2_high: float, delta: float,
-                         i_inner: int = 0, i_outer: int = -1):
+                         i_inner: int = 0, i_outer: int = -1, least: float = 0.0):
         """Admissible ``kappa`` per mass: ``k2_low <= k^2 <= k2_high`` and ``omega^2 > 0`` at every
         configuration, irregularity ``<= delta``, spring in tension at the innermost
-        configuration, positive free length. Returns ``(lo, hi)``, empty where ``lo > hi``; and
-        a dict of the interval each requirement alone allows (for diagnoses)."""
+        configuration, positive free length; with ``least > 0`` the range of speed
+        ``omega_a - omega_i >= least omega0`` (:func:`govopt.requirements.range_row`). Returns
+        ``(lo, hi)``, empty where ``lo > hi``; and a dict of the interval each requirement
+        alone allows (for diagnoses).
+
+        The range grows with the stiffness: the normal configuration is held at its reference
+        speed, so a stiffer spring turns the characteristic about it, raising ``omega_a^2`` and
+        lowering ``omega_i^2`` (both affine in ``kappa``); the range is at least ``least
+        omega0`` above the top of the interval :meth:`irregularity_interval` gives for it."""
         M = self.m.shape[0]
         start = (np.zeros(M), np.full(M, np.inf))
         parts = {
@@ -166,6 +173,12 @@ class KappaModel:
             parts[statics.BAND_OUTER] = _interval(*start, rise, sp.omega_outer**2, "<=")
         lo_irr, hi_irr = self.irregularity_interval(i_inner, i_outer, delta)
         parts["irregularity"] = (np.maximum(start[0], lo_irr), np.minimum(start[1], hi_irr))
+        if least > 0:
+            from ..requirements import RANGE_OF_SPEED
+
+            lo_r, hi_r = self.irregularity_interval(i_inner, i_outer, least)
+            parts[RANGE_OF_SPEED] = (np.where(lo_r <= hi_r, np.maximum(hi_r, 0.0), 0.0),
+                                     start[1])
         lo = np.max([p[0] for p in parts.values()], axis=0)
         hi = np.min([p[1] for p in parts.values()], axis=0)
         return lo, hi, parts

@@ -354,7 +354,8 @@ def restoring(res) -> list[Table]:
                          ["quantity", "unit", "value"],
                          [["k^2", "1/s^2", cell(k2n)], ["k^2 / omega0^2", "", cell(k2n / w0sq)]],
                          ["stable and clear of resonance for 0 < k^2 / omega0^2 < 1"
-                          if res.spec.governor.resonance_ceiling else
+                          if res.spec.governor.k2_rule(getattr(res.spec.requirements,
+                                                               "k2_margin", None))[1] else
                           "stable for k^2 > 0 (no forcing at the running speed's harmonics, so "
                           "no ceiling on k^2 / omega0^2)"],
                          properties=True))
@@ -453,7 +454,8 @@ def optimisation(res) -> list[Table]:
     unit = obj.get("unit", "")
     v, u = shown(opt.get("value"), unit)
     rows = [["status", "", cell(opt.get("status"))],
-            [f"objective: {str(obj.get('name', '')).replace('_', ' ')}", u, cell(v)]]
+            [f"objective: {str(obj.get('name', '')).replace('_', ' ')}"
+             + (f" ({obj['counts']})" if obj.get("counts") else ""), u, cell(v)]]
     if opt.get("bound") is not None:
         rows.append(["continuous bound (GP relaxation)", u,
                      cell(shown(opt["bound"], unit)[0])])
