@@ -428,7 +428,7 @@ def _figures(spec: Spec, cols: dict, s: _Statics) -> dict:
             out[k] = np.where(helical, v, np.nan)
     elif gov.spring is not None and mat is not None:  # a spring of the type's own (a leaf)
         with np.errstate(all="ignore"):
-            smass = np.broadcast_to(gov.spring_mass(s.sd, mat), (n,)).astype(float)
+            smass = np.broadcast_to(np.ravel(gov.spring_mass(s.sd, mat)), (n,)).astype(float)
         helical = np.isfinite(smass)
     out["spring_mass_kg"] = np.where(helical, smass, np.nan)
     out["moving_mass_kg"] = gov.moving_mass(cols["flying_mass"], s.central[:, 0],

@@ -171,10 +171,11 @@ RANGE_OF_SPEED = "range of speed (hunting)"
 def range_row(sp, least: float, method) -> Row:
     """The governor's range of speed ``omega_a - omega_i`` (rad/s; from the sleeve's lowest to
     its highest position, at nominal, without friction: ``ev["irregularity"] omega0``) at
-    least ``least`` of the band ``speed.outer - speed.inner`` (group ``"statics"``): a governor
-    whose range is a sliver of its band is sensitive to a fault and hunts (the traction
-    article), the textbook's governors are designed through both ends of their range
-    (:meth:`govopt.governors.base.Governor.range_rule`)."""
+    least ``least`` of the band ``speed.outer - speed.inner`` (group ``"statics"``): a
+    governor whose range is a sliver of its band is more sensitive and hunts (the traction
+    article); the textbook's governors are designed through both ends of their range
+    (:meth:`govopt.governors.base.Governor.range_rule`). The friction band and the made
+    governor's spread take the rest of the band."""
     eq = method.named("irregularity")
     source = (f"{least:g} x (speed.outer - speed.inner) (requirements.min_range): the range "
               "of speed from the sleeve's lowest to its highest position"

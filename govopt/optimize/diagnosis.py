@@ -255,7 +255,7 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
                 f"the statics allow ({stats['statics_feasible']} mass-spring combinations pass "
                 f"the statics, none the spring checks)")
         cands = [("allowable_shear_stress", with_ks, "x", mat.allowable_shear_stress),
-                 *speed_moves]
+                 *speed_moves, ("requirements.min_range", with_range, "/", least)]
         if mat.allowable_shear_stress is None:  # a wire grade's allowables: not one number
             cands = cands[1:]
     else:

@@ -124,11 +124,10 @@ def _window_rows(spec: Spec, req: Requirements, grid: Grid, m, c, count: int):
 
 
 def least_range(spec: Spec, req: Requirements) -> float:
-    """The least range of speed over the mean speed, ``min_range (outer - inner) / omega0``
+    """The least range of speed's share of the band
     (:meth:`~govopt.governors.base.Governor.range_rule`; 0 without a band or where none is
     required)."""
-    sp = spec.speed
-    return spec.governor.range_rule(req.min_range) * sp.irregularity if sp.band else 0.0
+    return spec.governor.range_rule(req.min_range) if spec.speed.band else 0.0
 
 
 def statics_feasible(spec: Spec, req: Requirements, cells: int = 1 << 16) -> bool:
@@ -341,6 +340,6 @@ def dead_weight_parts(spec: Spec, req: Requirements, rise, fall, k2) -> dict:
         from ..requirements import RANGE_OF_SPEED
 
         with np.errstate(invalid="ignore"):
-            ends = np.sqrt((rise + fall) / 2.0)
-        out[RANGE_OF_SPEED] = ends[:, -1] - ends[:, 0] >= least * sp.omega_mean
+            w = np.sqrt((rise + fall) / 2.0)
+        out[RANGE_OF_SPEED] = w[:, -1] - w[:, 0] >= least * (sp.omega_outer - sp.omega_inner)
     return out
