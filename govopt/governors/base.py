@@ -729,9 +729,18 @@ class Governor(ABC):
         textbook's ratio of the range of speed to the mean speed)."""
         if spec.speed is None:
             return ()
-        return (Equation("speed", "irregularity: the range of speed over the mean speed",
-                         "delta = (omega_a - omega_i) / omega0, omega0 the spec's mean speed",
-                         "textbook-ch3", "Problems, 2", name="irregularity"),)
+        out = (Equation("speed", "irregularity: the range of speed over the mean speed",
+                        "delta = (omega_a - omega_i) / omega0, omega0 the spec's mean speed",
+                        "textbook-ch3", "Problems, 2", name="irregularity"),)
+        least = self.range_rule(spec.requirements.min_range if spec.requirements else None)
+        if spec.speed.band and least > 0:
+            out += (Equation("speed", "the band is the range of speed from the sleeve's lowest "
+                             "to its highest position: the design spans at least min_range "
+                             "of it (a narrow range is sensitive and hunts)",
+                             f"omega_a - omega_i >= {least:g} (outer - inner)",
+                             "traction-article", "coil-spring governor, step 3",
+                             ("requirements.min_range",), name="range"),)
+        return out
 
     def spring_method(self, spec) -> tuple[Equation, ...]:
         """A helical spring's rate, stress (with the material's correction), mass, surge
