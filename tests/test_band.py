@@ -93,6 +93,22 @@ def test_the_290_310_hartnells_moving_mass_counts_both_balls(hartnell_290):
     assert row["moving_mass_kg"] == pytest.approx(opt["value"], rel=1e-9)
 
 
+@pytest.mark.slow
+def test_the_290_310_hartnell_set_by_its_fitter_keeps_its_yield():
+    """The same Hartnell designed for a yield (``min_yield = 0.95``, the fitter's nut +-3 mm on
+    the spring's free length): it still spans at least 75 % of the band at nominal, and at
+    least 95 % of the governors made to EN 15800 grade 2 and set by the fitter pass (the 95 %
+    Wilson lower bound over the search's samples)."""
+    text = HARTNELL_290.replace('objective = "moving_mass"\n', 'objective = "moving_mass"\n'
+                                'min_yield = 0.95\nadjusting_nut = "3 mm"\n')
+    res = govopt.design(parse_spec(tomllib.loads(text), "hartnell-290-310.toml"))
+    span = float(res.statics.omega[-1] - res.statics.omega[0])
+    assert span >= 0.75 * 20.0 * RPM * (1 - 1e-9)
+    y = res.made["yield"]
+    assert y["meets_required"] and y["ci95"][0] >= 0.95
+    assert res.optimisation["value"] > 5.0  # both balls counted
+
+
 def test_the_envelope_reading_is_available_by_name():
     """``min_range = "envelope"``: no range of speed is required, so the lightest design may
     float anywhere inside the band (and is lighter or the same)."""
