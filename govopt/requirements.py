@@ -125,7 +125,9 @@ def statics_rows(spec) -> list[Row]:
     from .analysis import characteristic as chs
     from .analysis import statics
     gov, sp, req = spec.governor, spec.speed, spec.requirements
-    margin, ceiling = gov.k2_rule(req.k2_margin if req else None)
+    # without [requirements] (an evaluation of a given design): k^2 > 0, and the ceiling where
+    # the type is forced; the margin is a design requirement
+    margin, ceiling = gov.k2_rule(req.k2_margin) if req else (0.0, gov.resonance_ceiling)
     unit = SI_UNITS[gov.coordinate]
     method = gov.method(spec)  # the type's own sources (governors.base.Method)
     rows = []
