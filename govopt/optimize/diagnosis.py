@@ -18,6 +18,7 @@ from ..limits import MAX_TRANSIENT_POINTS
 from ..spec import Requirements, Spec, Speed
 from .catalogue_search import Candidate, best_discrete
 from .windows import (
+    BAND_REFERENCES_FINE,
     Grid,
     dead_weight_arrays,
     dead_weight_parts,
@@ -178,10 +179,31 @@ def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
     return stats["spring_feasible"] > 0 if stage == "spring" else cand is not None
 
 
-def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, iters=12):
+#: the statics cells (weight pairs x reference speeds x configurations) the diagnosis's
+#: relaxations may screen in all: a spec whose search is huge and infeasible (a degenerate
+#: band over a large weight grid) is told the moves found within it, not kept waiting
+DIAGNOSIS_CELLS = 4e7
+
+
+class _Spent(Exception):
+    """The diagnosis's relaxations have screened :data:`DIAGNOSIS_CELLS`."""
+
+
+def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, iters=12,
+           budget=None):
     """Smallest factor ``x`` in ``[lo, hi]`` with ``make(x) = (spec, req)`` feasible, by
-    bisection in log space; None if even ``hi`` is not enough."""
-    return _bisect(lambda x: _feasible(*make(x), stage), lo, hi, iters)
+    bisection in log space; None if even ``hi`` is not enough. ``budget``: a one-item list of
+    the cells left (each trial charged the most its screen can take), :class:`_Spent` raised
+    when none are."""
+    def trial(x):
+        s, r = make(x)
+        if budget is not None:
+            if budget[0] <= 0:
+                raise _Spent
+            budget[0] -= masses(r)[0].size * BAND_REFERENCES_FINE * Grid.build(s).alpha.size
+        return _feasible(s, r, stage)
+
+    return _bisect(trial, lo, hi, iters)
 
 
 def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> InfeasibleError:
@@ -260,8 +282,14 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
             cands = cands[1:]
     else:
         return dynamics_conflict(spec, req, stats)
+    budget = [DIAGNOSIS_CELLS]
     for name, make, how, value in cands:
-        x = _relax(spec, req, stage, make)
+        if how == "/" and not value:  # a margin of 0 (not applied): nothing to relax
+            continue
+        try:
+            x = _relax(spec, req, stage, make, budget=budget)
+        except _Spent:
+            break
         if x is None:
             continue
         if how == "x" and value is not None:
