@@ -1,12 +1,11 @@
 """`govopt evaluate SPEC --json` for every bundled spec, saved and compared.
 
-    python benchmarks/evaluate_json.py save DIR [--scipy]
+    python benchmarks/evaluate_json.py save DIR
     python benchmarks/evaluate_json.py compare DIR_A DIR_B [--rtol 1e-14]
 
 ``save`` runs each spec in a fresh interpreter and writes ``DIR/NAME.json`` (stdout), ``.err``
-(stderr) and ``.rc`` (exit code). ``--scipy`` runs govopt with scipy's ``PchipInterpolator`` /
-``CubicSpline`` and ``brentq`` patched in for its numpy valve table and plain-Python root finder:
-the reference in the same working tree. ``compare`` walks two folders' JSON side by side: every
+(stderr) and ``.rc`` (exit code): run it in two working trees (or before and after a change)
+to compare their answers. ``compare`` walks two folders' JSON side by side: every
 number within ``rtol`` (relative to its magnitude, 1e-300 absolute at zero), every other value
 equal, the same exit codes and stderr; it prints the differences and exits 1 if there are any.
 """
@@ -24,30 +23,16 @@ SPECS = Path(__file__).resolve().parents[1] / "specs"
 
 RUN = """
 import sys
-if {scipy!r}:
-    import numpy as np
-    from scipy import interpolate, optimize
-    from govopt.analysis import friction, roots, transient
-    from govopt.governors.shaft import valvegear, vibration
-
-    def smooth(table_alpha, table_delta, kind):
-        make = {{"pchip": interpolate.PchipInterpolator, "cubic": interpolate.CubicSpline}}[kind]
-        f = make(np.array(table_alpha), np.array(table_delta))
-        return f, f.derivative()
-
-    valvegear._smooth_table = smooth
-    for module in (roots, transient, friction, vibration):
-        module.brentq = optimize.brentq
 from govopt.cli import main
 sys.argv = ["govopt", "evaluate", {spec!r}, "--json"]
 main()
 """
 
 
-def save(folder: Path, scipy: bool) -> None:
+def save(folder: Path) -> None:
     folder.mkdir(parents=True, exist_ok=True)
     for spec in sorted(SPECS.glob("*.toml")):
-        p = subprocess.run([sys.executable, "-c", RUN.format(scipy=scipy, spec=str(spec))],
+        p = subprocess.run([sys.executable, "-c", RUN.format(spec=str(spec))],
                            capture_output=True, text=True, cwd=folder)
         (folder / f"{spec.stem}.json").write_text(p.stdout)
         (folder / f"{spec.stem}.err").write_text(p.stderr)
@@ -99,14 +84,13 @@ def main() -> int:
     sub = ap.add_subparsers(dest="cmd", required=True)
     s = sub.add_parser("save")
     s.add_argument("folder", type=Path)
-    s.add_argument("--scipy", action="store_true")
     c = sub.add_parser("compare")
     c.add_argument("first", type=Path)
     c.add_argument("second", type=Path)
     c.add_argument("--rtol", type=float, default=1e-14)
     args = ap.parse_args()
     if args.cmd == "save":
-        save(args.folder.resolve(), args.scipy)
+        save(args.folder.resolve())
         return 0
     return compare(args.first, args.second, args.rtol)
 

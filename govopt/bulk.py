@@ -227,6 +227,15 @@ def evaluate_many(spec: Spec, designs, *, dynamics: bool = True, vibration: bool
 def evaluate_rows(spec: Spec, designs, *, dynamics: bool = True, vibration: bool = True,
                   classic: bool = True, chunk: int = CHUNK) -> tuple[pd.DataFrame, dict]:
     """:func:`evaluate_many` and the SI unit of each of its checks (name -> unit)."""
+    out, units = evaluate_columns(spec, designs, dynamics=dynamics, vibration=vibration,
+                                  classic=classic, chunk=chunk)
+    return pd.DataFrame(out), units
+
+
+def evaluate_columns(spec: Spec, designs, *, dynamics: bool = True, vibration: bool = True,
+                     classic: bool = True, chunk: int = CHUNK) -> tuple[dict, dict]:
+    """:func:`evaluate_rows` as its columns (name -> numpy array, a nullable boolean array for
+    a check's verdict), without the frame: what a study's rows are made of."""
     cols = design_arrays(spec, designs)
     n = len(cols["flying_mass"])
     parts, units = [], {}
@@ -234,8 +243,22 @@ def evaluate_rows(spec: Spec, designs, *, dynamics: bool = True, vibration: bool
         ev = core(spec, {k: v[s:s + chunk] for k, v in cols.items()}, dynamics=dynamics,
                   vibration=vibration, classic=classic)
         units.update(ev.table.units())
-        parts.append(pd.DataFrame(columns(spec, ev)))
-    return (pd.concat(parts, ignore_index=True) if parts else pd.DataFrame()), units
+        parts.append(columns(spec, ev))
+    if len(parts) <= 1:
+        return (parts[0] if parts else {}), units
+    if any(list(p) != list(parts[0]) for p in parts):  # a check only some chunks have
+        frame = pd.concat([pd.DataFrame(p) for p in parts], ignore_index=True)
+        return {k: frame[k].array for k in frame.columns}, units
+    return {k: _joined([p[k] for p in parts]) for k in parts[0]}, units
+
+
+def _joined(arrays: list):
+    """One column of several chunks (a nullable boolean column stays one)."""
+    if isinstance(arrays[0], pd.arrays.BooleanArray):
+        return pd.arrays.BooleanArray(
+            np.concatenate([a.to_numpy(dtype=bool, na_value=False) for a in arrays]),
+            np.concatenate([np.asarray(a.isna()) for a in arrays]))
+    return np.concatenate([np.asarray(a) for a in arrays])
 
 
 def columns(spec: Spec, ev) -> dict:
@@ -270,5 +293,5 @@ def columns(spec: Spec, ev) -> dict:
     return out
 
 
-__all__ = ["DESIGN_FIELDS", "RowFigure", "design_arrays", "evaluate_many", "evaluate_rows",
-           "result_row", "row_figures"]
+__all__ = ["DESIGN_FIELDS", "RowFigure", "design_arrays", "evaluate_columns", "evaluate_many",
+           "evaluate_rows", "result_row", "row_figures"]

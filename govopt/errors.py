@@ -6,7 +6,12 @@ class GovoptError(ValueError):
 
 
 class DesignError(GovoptError):
-    """A design that cannot be evaluated (e.g. no equilibrium speed in part of the range)."""
+    """A design that cannot be evaluated (e.g. no equilibrium speed in part of the range), or
+    a search's chosen design that fails its final evaluation."""
+
+    def to_dict(self) -> dict:
+        """The error as JSON (``--json``): its status and the one line."""
+        return {"status": "error", "error": str(self)}
 
 
 def located(where, message: str) -> str:
@@ -58,3 +63,10 @@ class InfeasibleError(GovoptError):
 
     def __str__(self) -> str:
         return self._line()
+
+    def to_dict(self) -> dict:
+        """The diagnosis as JSON (``govopt design --json`` on an infeasible spec): status,
+        spec, key, reason, moves, what is said where none, and the one line."""
+        return {"status": "infeasible", "spec": self.file, "key": self.key,
+                "reason": self.reason, "moves": self.moves, "otherwise": self.otherwise,
+                "error": str(self)}

@@ -5,10 +5,11 @@ design's evaluation as a :class:`~govopt.result.Result`.
 (Hamabe eqs. 1, 2, 11, 12), ``k^2`` (eqs. 18-20), the load-change model (eqs. 24-32,
 :func:`govopt.analysis.transient_events.analyse_many`) and the classic measures (textbook ch. 3) in
 a few numpy operations, and evaluates every requirement row of :mod:`govopt.requirements` on them in
-one :class:`~govopt.requirements.CheckTable`. The parts that have no vectorised form run inside it
-design by design, into the same table: a type's periodic forcing (:meth:`Governor.vibration`, Hamabe
-Part II), Hamabe's friction transient (eqs. 42-46, a sequence of strokes), and the spring's own
-checks where the type or a wire grade supplies them (:meth:`Governor.spring_checks`). A design no
+one :class:`~govopt.requirements.CheckTable`, with a type's periodic forcing (Hamabe Part II) for
+all the designs at once (:meth:`Governor.vibrations`). The parts that have no vectorised form run
+inside it design by design, into the same table: Hamabe's friction transient (eqs. 42-46, a
+sequence of strokes), and the spring's own checks where the type or a wire grade supplies them
+(:meth:`Governor.spring_checks`). A design no
 spring can realise gets the one-line diagnosis :func:`diagnose` (the ``DesignError``
 :func:`govopt.evaluate` raises for it) instead of figures.
 
@@ -471,18 +472,64 @@ def _engine_or_dashpot(spec: Spec, s: _Statics) -> np.ndarray:
 
 
 def _vibrations(spec: Spec, s: _Statics, per_design: _PerDesign, wanted: bool) -> list:
-    """The type's forced vibration (:meth:`Governor.vibration`, Hamabe Part II) of each design
-    with a dash-pot or an engine, design by design (also the spring's load cycle); None where
-    not ``wanted`` or the type has none."""
+    """The type's forced vibration (Hamabe Part II) of each design with a dash-pot or an engine
+    (also the spring's load cycle), all at once (:meth:`Governor.vibrations`; design by design
+    only to name the design whose vibration raises a :class:`DesignError`); None where not
+    ``wanted`` or the type has none."""
     gov = spec.governor
-    vibs = [None] * s.n
+    vibs = _Vibrations(s.n)
     if wanted and overridden(gov, "vibration"):
-        has_dashpot = np.isfinite(s.dashpot)
-        for i in np.nonzero(_engine_or_dashpot(spec, s))[0]:
-            vibs[i] = per_design(i, lambda i=i: gov.vibration(
-                spec, s.spring_of(i), float(s.k2[i, s.i_n]),
-                float(s.dashpot[i]) if has_dashpot[i] else 0.0))
+        at = np.nonzero(_engine_or_dashpot(spec, s))[0]
+        dashpot = np.where(np.isfinite(s.dashpot), s.dashpot, 0.0)
+        try:  # every design at once (:meth:`Governor.vibrations`)
+            with np.errstate(all="ignore"):
+                vibs.put(at, gov.vibrations(spec, _spring_rows(s.sd, at, s.n),
+                                            s.k2[at, s.i_n], dashpot[at]))
+        except (DesignError, OverflowError):  # one design's: each alone, to say which
+            for i in at:
+                vibs.put([i], [per_design(i, lambda i=i: gov.vibration(
+                    spec, s.spring_of(i), float(s.k2[i, s.i_n]), float(dashpot[i])))])
     return vibs
+
+
+class _Vibrations:
+    """Each design's forced vibration (None where there is none): ``vibs[i]``, made on demand
+    from what :meth:`Governor.vibrations` computed for many; ``peak_to_peak()`` over all."""
+
+    def __init__(self, n: int):
+        self.n, self.parts = n, []
+
+    def put(self, at, many) -> None:
+        if many is not None:
+            self.parts.append((np.asarray(at, dtype=np.int64), many))
+
+    def __len__(self) -> int:
+        return self.n
+
+    def __getitem__(self, i: int):
+        for at, many in self.parts:
+            j = np.searchsorted(at, i)
+            if j < at.size and at[j] == i:
+                return many[int(j)]
+        return None
+
+    def __iter__(self):
+        return (self[i] for i in range(self.n))
+
+    def peak_to_peak(self) -> np.ndarray:
+        """Each design's peak-to-peak (NaN where it has no vibration)."""
+        out = np.full(self.n, np.nan)
+        for at, many in self.parts:
+            p2p = getattr(many, "peak_to_peak_rad", None)
+            out[at] = (np.asarray(p2p, dtype=float) if p2p is not None else
+                       [np.nan if v is None else float(v.peak_to_peak_rad) for v in many])
+        return out
+
+
+def _spring_rows(sd: statics.SpringDesign, rows: np.ndarray, n: int) -> statics.SpringDesign:
+    """The designs ``rows`` of a vectorised :class:`SpringDesign` of ``n`` (fields ``(rows,)``)."""
+    return replace(sd, **{f.name: np.broadcast_to(np.asarray(v, dtype=float), (n, 1))[rows, 0]
+                          for f in fields(sd) if isinstance(v := getattr(sd, f.name), np.ndarray)})
 
 
 def _spread(n: int, at: list, by_design: dict, field: str) -> np.ndarray:
@@ -583,8 +630,7 @@ def _vibration_checks(spec: Spec, s: _Statics, vibs: list, out: dict,
                       checks: CheckTable) -> None:
     """The forced vibration's figure and rows (:func:`govopt.requirements.vibration_rows`),
     where the type has a forcing and some design is driven."""
-    p2p = np.array([np.nan if v is None else float(v.peak_to_peak_rad) for v in vibs],
-                   dtype=float)
+    p2p = vibs.peak_to_peak()
     if overridden(spec.governor, "vibration") and _engine_or_dashpot(spec, s).any():
         out["vibration_p2p_rad"] = p2p
         checks.add_rows(vibration_rows(spec), {"p2p": p2p}, where=~np.isnan(p2p))

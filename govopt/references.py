@@ -27,13 +27,16 @@ __all__ = ["REFERENCES", "Reference", "cite", "found_in", "reference"]
 class Reference:
     """One source: its ``key``, how a citation in running text names it (``short``), the full
     ``citation``, what govopt takes from it (``use``) and the words that mark it in a check's
-    free-text source (``marks``, matched as written)."""
+    free-text source (``marks``, matched as written). ``governor``: the source of a governor
+    type's own model (:attr:`govopt.governors.base.Governor.source`); another type citing it
+    borrows."""
 
     key: str
     short: str
     citation: str
     use: str = ""
     marks: tuple[str, ...] = ()
+    governor: bool = False
 
 
 REFERENCES: dict[str, Reference] = {r.key: r for r in (
@@ -44,7 +47,7 @@ REFERENCES: dict[str, Reference] = {r.key: r for r in (
         "valve gear (eqs. 13-23); Part III: load changes of governor and engine (eqs. 24-32) "
         "and friction at the fulcrum (eqs. 42-46). OCR scan: seeds/000_b7bd06436315e116.txt",
         "the shaft governor: its statics, valve gear, vibration, load change and friction",
-        ("Hamabe",)),
+        ("Hamabe",), governor=True),
     Reference(
         "textbook-ch3", "textbook",
         "Textbook chapter 3, Governors: 3.1 function, 3.2 types, 3.3 centrifugal governors "
@@ -53,7 +56,7 @@ REFERENCES: dict[str, Reference] = {r.key: r for r in (
         "and gravity), Examples 1-8. OCR scan without a title page: "
         "seeds/001_dc27644daefca84c.txt",
         "the statics of the Watt, Porter, Proell and bell-crank governors, sleeve friction",
-        ("textbook",)),
+        ("textbook",), governor=True),
     Reference(
         "traction-article", "article",
         "Spring balance governors of traction engines: the coil-spring governor (Fig. 1, "
@@ -61,7 +64,7 @@ REFERENCES: dict[str, Reference] = {r.key: r for r in (
         "engineer of Bremerton, Washington. OCR scan without a title line: "
         "seeds/003_f797dd2d64bc6e21.txt",
         "the traction-engine governors: toggle and leaf statics, the replacement spring",
-        ("article",)),
+        ("article",), governor=True),
     Reference(
         "wahl", "Wahl 1944",
         "A. M. Wahl, Mechanical Springs, Penton, Cleveland, 1944 (2nd ed. McGraw-Hill, 1963)",

@@ -24,10 +24,7 @@ import numpy as np
 from .springs import helical as hx
 from .springs.checks import Row as SpringRow
 from .units import SI_UNITS
-from .verdict import Check
-
-#: a check that holds within this relative margin counts as satisfied (``Check.passed``)
-PASS_TOL = -1e-9
+from .verdict import PASS_TOL, Check
 
 
 @dataclass(frozen=True)
@@ -318,13 +315,15 @@ def friction_rows(spec, name: str) -> dict[str, Row]:
     offset it rests at) and ``"moves"`` (``ev["past"]``, how far the first stroke ends past the
     new equilibrium); ``ev["xi0"]`` the initial offset (the coordinate's unit)."""
     unit = SI_UNITS[spec.governor.coordinate]
+    eq = spec.governor.method(spec).named("strokes")  # the type's words (borrowed?)
+    strokes = eq.cite if eq is not None else "Hamabe eqs. 42-46"
     return {
         "stuck": Row(f"friction: the governor follows the load change: {name}", "<=", unit,
                      lambda ev: ev["rest"], _const(0.0),
-                     "Hamabe eqs. (42)-(46): stuck while |C eta - I k^2 xi| <= M0",
+                     f"{strokes}: stuck while |C eta - I k^2 xi| <= M0",
                      group="dynamics", scale=lambda ev: abs(ev["xi0"])),
         "moves": Row(f"friction: no over-regulation after the first stroke: {name}", "<=", unit,
-                     lambda ev: ev["past"], _const(0.0), "Hamabe eqs. (42)-(46)",
+                     lambda ev: ev["past"], _const(0.0), strokes,
                      group="dynamics", scale=lambda ev: abs(ev["xi0"]) or 1.0),
     }
 

@@ -18,8 +18,10 @@ import re
 import sys
 import textwrap
 import tomllib
+from collections.abc import Collection
 
 from .keys import WEIGHT, Key, Table
+from .references import REFERENCES, found_in
 from .units import SI_UNITS
 
 #: what a quantity of each dimension looks like in a spec, for the templates' commented keys
@@ -82,8 +84,9 @@ def _key_names(key: Key) -> str:
     return " or ".join(f"`{n}`" for n in key.names)
 
 
-def table_markdown(table: Table, heading: str) -> list[str]:
-    """One table's section of the reference: its meaning and a row per key."""
+def table_markdown(table: Table, heading: str, borrowed: Collection[str] = ()) -> list[str]:
+    """One table's section of the reference: its meaning and a row per key (``borrowed``:
+    :func:`source_words`)."""
     lines = [heading, "", table.meaning[0].upper() + table.meaning[1:] + "."]
     if table.when:
         lines[-1] += f" {table.when[0].upper()}{table.when[1:]}."
@@ -100,7 +103,7 @@ def table_markdown(table: Table, heading: str) -> list[str]:
         lines.append("| " + " | ".join(_cell(c) for c in (
             _key_names(key), meaning, kind_words(key),
             "required" if key.required else key.default_words(), key.range_words(),
-            key.source)) + " |")
+            source_words(key.source, borrowed))) + " |")
     return lines + [""]
 
 
@@ -113,9 +116,11 @@ def reference() -> str:
 
     types = list(REGISTRY)
     every = {t: spec_tables(t) for t in types}
+    borrowed = {t: borrowed_sources(t) for t in types}
     names = list(dict.fromkeys(n for t in types for n in every[t]))
     shared = [n for n in names if n and all(n in every[t] for t in types)
-              and len({tuple(table_markdown(every[t][n], "")) for t in types}) == 1]
+              and len({tuple(table_markdown(every[t][n], "", borrowed[t]))
+                       for t in types}) == 1]
     out = [INTRO, "## Contents", ""]
     out += [f"- [{t}](#{t}): {governor_class(t).title}" for t in types]
     out += ["- [Tables every type shares](#tables-every-type-shares): "
@@ -128,7 +133,7 @@ def reference() -> str:
         for n in names:
             if n in every[t] and n not in shared:
                 title = f"[[{n}]]" if every[t][n].array else f"[{n}]" if n else "top level"
-                out += table_markdown(every[t][n], f"### {t}: {title}")
+                out += table_markdown(every[t][n], f"### {t}: {title}", borrowed[t])
         out.append("Shared: " + ", ".join(f"[`[{n}]`](#{_anchor(n)})" for n in shared
                                           if n in every[t]) + ".")
         out.append("")
@@ -244,14 +249,40 @@ def _suggested(key: Key, name: str):
     return EXAMPLES[dim]
 
 
-def describe(key: Key) -> str:
+def describe(key: Key, borrowed: Collection[str] = ()) -> str:
     """A key in sentences: its meaning, kind, default, range, when it applies and its source
-    (the templates' comments, the schema's descriptions)."""
+    (the templates' comments, the schema's descriptions). ``borrowed``: bibliography keys of
+    other governor types' sources (:func:`borrowed_sources`); a key whose source cites only
+    those says it is borrowed.
+
+    >>> from govopt.keys import Key
+    >>> describe(Key("dashpot_f", "number", "the dash-pot's f", source="Hamabe Part III"),
+    ...          borrowed=("hamabe",))
+    "The dash-pot's f. number; required; > 0 (borrowed from Hamabe Part III)."
+    """
     facts = [kind_words(key), "required" if key.required and not key.when else
              f"default {key.default_words()}" if not key.required else "", key.range_words()]
+    source = source_words(key.source, borrowed)
     return (key.meaning[0].upper() + key.meaning[1:] + ". " + "; ".join(f for f in facts if f)
             + (f"; applies {key.when}" if key.when else "")
-            + (f" ({key.source})" if key.source else "") + ".")
+            + (f" ({source})" if source else "") + ".")
+
+
+def source_words(source: str, borrowed: Collection[str] = ()) -> str:
+    """A key's source as a type reads it: ``"borrowed from Hamabe Part III"`` where it cites
+    only ``borrowed`` bibliography keys (other types' own sources), else as declared."""
+    cited = found_in(source)
+    return f"borrowed from {source}" if cited and set(cited) <= set(borrowed) else source
+
+
+def borrowed_sources(type_name: str) -> frozenset[str]:
+    """The bibliography keys of the other governor types' own sources
+    (:attr:`Reference.governor`, but ``type_name``'s own :attr:`Governor.source`): what a key
+    or criterion of ``type_name`` borrows when it cites them."""
+    from .governors import governor_class
+
+    own = governor_class(type_name).source
+    return frozenset(k for k, r in REFERENCES.items() if r.governor) - {own}
 
 
 def option_help(key: Key, table: Table, reference: str = "docs/reference/spring-spec.md") -> str:
@@ -300,12 +331,13 @@ compression springs."
     return text
 
 
-def _comment(key: Key) -> list[str]:
+def _comment(key: Key, borrowed: Collection[str] = ()) -> list[str]:
     """The comment above a key in a template (:func:`describe`)."""
-    return ["# " + line for line in textwrap.wrap(describe(key), 96)]
+    return ["# " + line for line in textwrap.wrap(describe(key, borrowed), 96)]
 
 
-def _table_lines(table: Table, data: dict | None, tables: dict, prefix: str = "") -> list[str]:
+def _table_lines(table: Table, data: dict | None, tables: dict, prefix: str = "",
+                 borrowed: Collection[str] = ()) -> list[str]:
     """A table of the template: its header, then each key commented with the example's value
     (``data``), or commented out where the example leaves it to its default. A table the
     example has not is written commented out."""
@@ -322,10 +354,11 @@ def _table_lines(table: Table, data: dict | None, tables: dict, prefix: str = ""
         if key.kind == "table":  # a sub-table: its own section after this one's keys
             sub = tables.get(f"{table.name}.{key.name}")
             if sub is not None:
-                later += [""] + _table_lines(sub, data.get(key.name) if on else None, tables)
+                later += [""] + _table_lines(sub, data.get(key.name) if on else None, tables,
+                                             borrowed=borrowed)
             continue
         given = [n for n in key.names if n in data]
-        out += _comment(key)
+        out += _comment(key, borrowed)
         if given:
             out += [f"{mark}{n} = {_toml(data[n])}" for n in given]
         else:
@@ -350,6 +383,7 @@ def template(type_name: str) -> str:
     source = example(cls.example)
     data = tomllib.loads(source.read_text(encoding="utf-8"))
     tables = spec_tables(type_name)
+    borrowed = borrowed_sources(type_name)
     head = [f"# A {type_name} governor spec: {cls.title}.",
             f"# Written by `govopt init --type {type_name}`: every key of the type, each with "
             "its meaning;",
@@ -376,9 +410,9 @@ def template(type_name: str) -> str:
         if table.array:
             items = data.get(name) or [None]
             for item in items:
-                out += [""] + _table_lines(table, item, tables)
+                out += [""] + _table_lines(table, item, tables, borrowed=borrowed)
         else:
-            out += [""] + _table_lines(table, data.get(name), tables)
+            out += [""] + _table_lines(table, data.get(name), tables, borrowed=borrowed)
     return "\n".join(out) + "\n"
 
 

@@ -51,20 +51,20 @@ def _use_cases() -> tuple:
 TYPE = Key("type", "choice", "the governor type: its own keys follow in this table",
            choices=_types)
 
-#: ``[speed]``: the speed range to meet, as a band or as Hamabe's mean and irregularity
+#: ``[speed]``: the speed range to meet, as a band or as a mean speed and irregularity
 SPEED = Table("speed", "the speeds the governor must float between: a band (inner, outer) or "
-                       "Hamabe's mean speed and irregularity", (
+                       "a mean speed and irregularity", (
     Key("inner", "angular_velocity", "the lowest speed of the band, at the innermost "
                                      "configuration: every design keeps its whole operating "
                                      "band (friction included) within inner .. outer",
         when="with outer, in place of mean and irregularity"),
     Key("outer", "angular_velocity", "the highest speed of the band, at the outermost "
                                      "configuration", when="with inner"),
-    Key("mean", "angular_velocity", "the mean speed omega0", source="Hamabe Part I",
+    Key("mean", "angular_velocity", "the mean speed omega0",
         when="with irregularity, in place of inner and outer"),
     Key("irregularity", "number", "the irregularity delta0 = (omega_a - omega_i) / omega0: "
                                   "the design's own is at most this", high=2.0, example=0.12,
-        source="Hamabe Part I", when="with mean"),
+        when="with mean"),
 ), when="required unless the spec only evaluates a given [design]")
 
 
@@ -78,6 +78,7 @@ def material_table() -> Table:
                                "tolerances)", default=None, choices=_grades,
             when="to helical springs"),
         Key("tensile_strength", "stress", "the tensile strength R_m", default=None,
+            example="1600 MPa",
             when="with grade (required for grade \"custom\")"),
         Key("surface", "choice", "the wire's surface, for the fatigue check",
             default="not shot peened", choices=("not shot peened", "shot peened"),
@@ -91,9 +92,9 @@ def material_table() -> Table:
         Key("allowable_shear_stress", "stress", "the allowable shear stress k_s of a helical "
                                                 "spring (a grade's rule per wire diameter "
                                                 "where a grade is given)",
-            default=None, source="Hamabe Ex. 1",
+            default=None, source="EN 13906-1", example="400 MPa",
             when="to helical springs (required there without grade)"),
-        Key("shear_modulus", "stress", "the shear modulus G", default=None,
+        Key("shear_modulus", "stress", "the shear modulus G", default=None, example="81.5 GPa",
             default_text="the grade's", when="to helical springs (required there without grade)"),
         Key("density", "density", "the wire's or strip's density (the spring's mass)",
             default=7850.0, default_text="the grade's, else 7850 kg/m^3"),
@@ -103,9 +104,10 @@ def material_table() -> Table:
             default_text="\"none\" (with a grade: the rules' static correction)",
             source="Wahl 1944; EN 13906-1"),
         Key("elastic_modulus", "stress", "Young's modulus E of a leaf spring", default=None,
-            when="to leaf springs (required there)"),
+            example="206 GPa", when="to leaf springs (required there)"),
         Key("allowable_bending_stress", "stress", "the allowable bending stress of a leaf "
-                                                  "spring", default=None, when="to leaf springs"),
+                                                  "spring", default=None, example="800 MPa",
+            when="to leaf springs"),
     ), when="required to design a spring or to evaluate one given by its section")
 
 
@@ -137,14 +139,14 @@ def design_table(gov, kind) -> Table:
                    for k in kind.section),
                  Key(gov.free_length_key, "length", gov.free_length_meaning, default=None,
                      positive=gov.free_length_positive,
-                     default_text="the normal configuration in equilibrium at the mean speed "
-                                  "(Hamabe Ex. 1)", when=spring)]
+                     default_text="the normal configuration in equilibrium at the mean speed",
+                     when=spring)]
     keys += [Key(f"{gov.mass_key}_inertia", "inertia" if angular else "mass",
                  f"the {gov.mass_name}'s generalised inertia about the coordinate, in place of "
                  "the type's", default=None, default_text="the type's"),
              Key("dashpot_f", damping, "the dash-pot's coefficient f", default=None,
                  nonnegative=True, default_text="none", source="Hamabe Part III"),
-             Key("dashpot_a1", damping, "Hamabe's a1 = f/3, in place of dashpot_f",
+             Key("dashpot_a1", damping, "the load change's a1 = f/3, in place of dashpot_f",
                  default=None, nonnegative=True, default_text="none", source="Hamabe eq. 28")]
     if angular:
         keys.append(Key("friction_moment", "moment", "the Coulomb friction moment M_0 at the "
@@ -162,7 +164,7 @@ def engine_table(gov) -> Table:
     per = "angle" if gov.travel == "angle" else "length"
     travel = gov.coordinate_name if per == "angle" else "s (the regulating member's travel)"
     return Table("engine", "the engine the governor regulates, for the load changes and the "
-                           "vibration (Hamabe Parts II-III)", (
+                           "forced vibration", (
         Key("flywheel_inertia", "inertia", "the flywheel's moment of inertia",
             source="Hamabe Part III"),
         Key("torque_slope", f"torque_per_{per}", f"dT/d{travel}: the engine's torque per "
@@ -186,7 +188,7 @@ def load_change_table(gov) -> Table:
     """``[[load_change]]`` of governor type ``gov`` (configurations of its coordinate)."""
     dim = gov.coordinate
     return Table("load_change", "a sudden load change: the governor moves from one "
-                                "configuration to another (Hamabe Part III); one table each", (
+                                "configuration to another; one table each", (
         Key("name", "text", "its name in reports", default="", default_text="load change N"),
         Key("from", dim, f"the configuration ({gov.coordinate_name}) before the change, within "
                          "the governor's range",
@@ -247,12 +249,13 @@ def requirements_table(kind) -> Table:
                          "sets it (the textbook's and the traction governors with a spring); "
                          "else \"envelope\"",
             source="textbook Problems 2 (range of speed); traction article (hunting)"),
-        Key("hurwitz_margin", "number", "the margin on Hamabe's stability condition of the "
-                                        "load change", default=_REQ.hurwitz_margin,
+        Key("hurwitz_margin", "number", "the margin on the load change's stability condition "
+                                        "(Hurwitz)", default=_REQ.hurwitz_margin,
             nonnegative=True, source="Hamabe eq. 32"),
         Key("max_settling_time", "time", "the longest settling time after a load change",
             default=None),
-        Key("max_vibration", "angle", "the largest peak-to-peak vibration (shaft governor)",
+        Key("max_vibration", "angle", "the largest peak-to-peak forced vibration (a type "
+                                      "forced at the running speed's harmonics)",
             default=None, source="Hamabe Part II"),
         Key("spring_index", "dimensionless", "the spring index C = 2 r / d", shape="pair",
             default=_REQ.spring_index, source="EN 13906-1 scope: 4 <= w <= 20"),

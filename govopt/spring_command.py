@@ -222,7 +222,8 @@ def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool, spec=Non
     from .report import spring_outputs as so
 
     if output is not None:
-        out.written.append(so.write_check_spec(out, output, replace=replace))
+        out.written.append(so.write_check_spec(out, output, replace=replace,
+                                               drawing=_drawing(out)))
     if xlsx is not None:
         from .report.excel.book import command_line
 
@@ -232,6 +233,32 @@ def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool, spec=Non
     if plots is not None:
         out.written += so.write_plots(out, plots, stem, replace=replace)
     return out
+
+
+def _drawing(out: Outcome) -> tuple[int, tuple[int, int, int]] | None:
+    """How a designed spring's lengths are written (:func:`govopt.report.spring_outputs.
+    drawn_length`): the fewest significant digits, from 4 (a drawing's), and the rounding of
+    the wire, the mean diameter and the free length (nearest first, then up and down) at
+    which the spring read back fails no check the design
+    passes; None (every digit) for a checked spring, which is written as it was given."""
+    from dataclasses import replace
+    from itertools import product
+
+    from .report.spring_outputs import drawn_length
+    from .springs.assessment import table
+
+    if out.command != "design":
+        return None
+    a, sp = out.assessment, out.assessment.spring
+    failed = set(a.failed)
+    for digits in range(4, 16):
+        for ways in product((0, 1, -1), repeat=3):
+            d, D, L0 = (drawn_length(out.shown, x, digits, w)[1]
+                        for x, w in zip((sp.d, sp.D, sp.L0), ways, strict=True))
+            rows, _ = table(replace(sp, d=d, D=D, L0=L0), a.mat, a.loads, a.rules)
+            if {c.name for c in rows if not c.passed} <= failed:
+                return digits, ways
+    return None
 
 
 def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
@@ -314,10 +341,8 @@ def _pairs(v: dict, where: _Where) -> None:
 
 def _material_rules(v: dict, where: _Where) -> None:
     """What a wire grade must come with, and what needs one: the tensile strength of
-    ``custom`` only, a load cycle's fatigue only with a grade's data; a grade whose shear
-    modulus varies with the wire needs it; without a grade, the allowable and the modulus."""
-    from .springs import materials
-
+    ``custom`` only, a load cycle's fatigue only with a grade's data; without a grade, the
+    allowable and the modulus."""
     material = v.get("material")
     if v.get("tensile_strength") is not None and material != "custom":
         where.fail("tensile_strength", "applies to --material custom only (a grade's R_m is its "
@@ -335,11 +360,7 @@ def _material_rules(v: dict, where: _Where) -> None:
     if cycle and v["fatigue_min_force"] > v["fatigue_max_force"]:
         where.fail("fatigue_min_force", f"expected at most {where('fatigue_max_force')}, "
                                         f"got {v['fatigue_min_force']:.6g} N")
-    if material is not None and v.get("shear_modulus") is None and not isinstance(
-            materials.material(material, tensile_strength=1.0).G, float):
-        where.missing("shear_modulus", f" with material {material!r}, whose shear modulus "
-                                       "varies with the wire diameter")
-    if material is None:
+    if material is None and v.get("catalogue") is None:  # a catalogue's rows name theirs
         _require(v, where, "allowable_stress", "shear_modulus")
 
 
@@ -347,7 +368,8 @@ def _rules(v: dict):
     from .springs.assessment import Rules
 
     return Rules(method=v["rules"], allowable=v.get("allowable_stress"),
-                 correction=v.get("correction") or (None if v.get("material") else "wahl"),
+                 correction=v.get("correction") or (
+                     None if v.get("material") or v.get("catalogue") else "wahl"),
                  peened=v["peened"], seating=v["seating"],
                  index=(v["index_min"], v["index_max"]),
                  fatigue_safety=v["min_fatigue_safety"], cycles=v["life"],
@@ -456,6 +478,8 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
     if v.get("ends") is not None and v["kind"] != "compression":
         where.fail("ends", "end forms are a compression spring's; an extension spring has "
                            "--loops")
+    if v.get("catalogue") is not None:
+        return _from_catalogue(v, where, name, entries)
     wires, source = _catalogue(v, where)
     material = v.get("material")
     cycle = None
@@ -487,6 +511,32 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
         raise GovoptError("no spring meets these requirements" + (f": {why}" if why else ""))
     a = assess(sizing.spring, sizing.mat, sizing.loads, sizing.rules)
     return _outcome(name, "design", a, sizing.record(), entries, v, sizing=sizing)
+
+
+def _from_catalogue(v: dict, where: _Where, name: str, entries) -> Outcome:
+    """The lightest spring of a maker's catalogue meeting the requirements
+    (:mod:`govopt.spring_stock`): the same report as a designed spring's."""
+    from . import spring_stock as stock
+    from .springs.assessment import Loads
+
+    for key in ("length_1", "length_2", "wire_sizes", "coil_step"):
+        if v.get(key) is not None:
+            where.fail(key, "not with a catalogue (its springs are picked at the forces and "
+                            "the stiffness)")
+    if v["kind"] != "compression":
+        where.fail("catalogue", "a catalogue of compression springs (not --kind extension)")
+    file = v["catalogue"]
+    if where("catalogue") != "--catalogue" and file != stock.SAMPLE:
+        file = str(Path(where.file).parent / file)  # a spec's file: beside the spec
+    cycle = None
+    if v.get("fatigue_min_force") is not None:
+        cycle = (v["fatigue_min_force"], v["fatigue_max_force"])
+    loads = Loads(v.get("min_force") or 0.0, v["force"], cycle)
+    item, a, counts, notes = stock.pick(stock.read(file), v, _rules(v), loads,
+                                        v.get("material"))
+    source = Path(file).name if file != stock.SAMPLE else "sample (made up, no maker's)"
+    return _outcome(name or f"part {item.part} of the catalogue {source}", "design", a,
+                    stock.record(a, counts, source, notes), entries, v)
 
 
 # ---------------------------------------------------------------------------- check

@@ -68,9 +68,9 @@ TENSILE_STRENGTH = Key("tensile_strength", "stress", "the wire's tensile strengt
                        default=None, when="with material \"custom\", where it is required",
                        example="1600 MPa")
 SHEAR_MODULUS = Key("shear_modulus", "stress", "the shear modulus G (required without a "
-                                               "material, and with a grade whose G varies with "
-                                               "the wire diameter)",
-                    default=None, default_text="the grade's", example="81.5 GPa")
+                                               "material)",
+                    default=None, default_text="the grade's (at the wire's diameter where it "
+                                               "steps with it)", example="81.5 GPa")
 ALLOWABLE_STRESS = Key("allowable_stress", "stress", "the allowable shear stress k_s (required "
                                                      "without a material; with one, it replaces "
                                                      "the grade's rule)",
@@ -171,6 +171,12 @@ DESIGN = Table("spring", "a spring to design: its forces and stiffness, its wire
         default=None, default_text="0.5 with wire sizes to order from", high=1.0,
         high_inclusive=True, range_text="(0, 1] (0.25, 0.5 or 1 usual)", example=0.5),
     LOOPS,
+    Key("catalogue", "text", "a maker's catalogue of compression springs to pick from, a CSV "
+                             "file (columns part_number, d, D or OD, L0, n, ends, material, "
+                             "rate; units in brackets: 'd (mm)'); the lightest spring of it "
+                             "that meets the requirements and passes every check; \"sample\": "
+                             "govopt's made-up sample", default=None,
+        default_text="none (the spring is designed)", example="stock.csv"),
 ))
 
 # -- [spring] of a problem of the literature ------------------------------------------------------

@@ -68,7 +68,9 @@ def test_evaluate_exit_codes(tmp_path):
         assert [c["name"] for c in checks if not c["passed"]] == ["irregularity"]  # > 0.12
         p = server.run("evaluate", SPECS / "hamabe-a.toml")
         assert p.returncode == 1 and "FAIL" in p.stdout
-        assert p.stderr == f"1 of {len(checks)} checks failed: irregularity\n"
+        failed, advice = p.stderr.splitlines()  # the failed check, then what makes it pass
+        assert failed == f"1 of {len(checks)} checks failed: irregularity"
+        assert advice.startswith("it passes if one of these moves: speed.irregularity 0.12 -> ")
         p = server.run("evaluate", tmp_path / "absent.toml")
         assert p.returncode == 2 and p.stderr.startswith("error: ") and p.stdout == ""
 

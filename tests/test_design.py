@@ -176,7 +176,8 @@ def test_infeasible_error_carries_its_reason_as_data(tmp_path):
         dz.design(govopt.load_spec(path))
     e = caught.value
     assert e.file == str(path) and e.reason.startswith("infeasible: ")
-    assert e.moves and any(m.startswith("allowable_shear_stress ") for m in e.moves)
+    assert e.moves and any(m.startswith("material.allowable_shear_stress 400 kgf/cm^2 -> ")
+                           for m in e.moves), e.moves
     assert str(e) == f"{path}: {e.reason}; it becomes feasible if one of these moves: " \
         + "; ".join(e.moves)
 
@@ -342,6 +343,59 @@ def test_a_design_the_evaluator_fails_is_diagnosed_not_returned(monkeypatch):
     assert "irregularity (tightened): 0.05 , required <= 0.04 (margin -0.25)" in text
     assert "edge of irregularity (tightened)" in text and "more margin" in text
     assert "bug" not in text
+
+
+PORTER_INFEASIBLE = {  # speeds, central-load bounds: what no weight pair meets
+    "band too narrow": ('inner = "190 rpm"', 'outer = "200 rpm"', None),
+    "k^2 margin": ('inner = "200 rpm"', 'outer = "235.8 rpm"', None),
+    "slow": ('inner = "100 rpm"', 'outer = "115 rpm"', None),
+    "more central load": ('inner = "190 rpm"', 'outer = "224 rpm"', '["10 kgf", "20 kgf"]'),
+    "far more central load": ('inner = "190 rpm"', 'outer = "224 rpm"', '["2 kgf", "10 kgf"]'),
+}
+
+
+def _porter(tmp_path, inner, outer, central):
+    text = (Path("specs/porter-design.toml").read_text(encoding="utf-8")
+            .replace('inner = "190 rpm"', inner).replace('outer = "224 rpm"', outer))
+    if central:
+        text = text.replace('central_weight = ["10 kgf", "100 kgf"]', f"central_weight = {central}")
+    path = tmp_path / "porter.toml"
+    path.write_text(text, encoding="utf-8")
+    return govopt.load_spec(path)
+
+
+@pytest.mark.parametrize("case", sorted(PORTER_INFEASIBLE))
+def test_dead_weight_diagnosis_in_closed_form_is_the_lattice_scans(case, tmp_path, monkeypatch):
+    """The Porter's forces are affine in the central load, so the diagnosis finds each ball
+    weight's central loads in closed form (an interval) instead of scanning the lattice of
+    weight pairs: the same diagnosis, every move included, as the scan gives."""
+    from govopt.errors import InfeasibleError
+
+    spec = _porter(tmp_path, *PORTER_INFEASIBLE[case])
+    with pytest.raises(InfeasibleError) as closed:
+        govopt.design(spec)
+    monkeypatch.setattr(type(spec.governor), "central_load_affine", False)
+    with pytest.raises(InfeasibleError) as scanned:
+        govopt.design(spec)
+    assert str(closed.value) == str(scanned.value)
+    assert closed.value.moves == scanned.value.moves and closed.value.moves
+
+
+def test_central_load_intervals_hold_the_pairs_that_meet_the_statics(tmp_path):
+    """Each ball weight's closed-form interval of central loads holds exactly the lattice's
+    pairs that meet every statics requirement (away from its ends by rounding)."""
+    spec = _porter(tmp_path, 'inner = "190 rpm"', 'outer = "224 rpm"', None)
+    req, grid = spec.requirements, wz.Grid.build(spec)
+    m = wz.mass_grid(req)
+    c = wz.grid_steps(0.0, 200.0, req.mass_step)
+    lo, hi = wz.central_load_intervals(spec, req, grid, m)
+    mm, cc = (a.ravel() for a in np.meshgrid(m, c, indexing="ij"))
+    parts = wz.dead_weight_statics(spec, req, grid, mm, cc)[0]
+    met = np.logical_and.reduce(list(parts.values())).reshape(m.size, c.size)
+    inside = (c >= lo[:, None]) & (c <= hi[:, None])
+    near = np.minimum(np.abs(c - lo[:, None]), np.abs(c - hi[:, None])) < 1e-9 * c.max()
+    assert met.any() and (~met).any()
+    np.testing.assert_array_equal(met[~near], inside[~near])
 
 
 def test_dead_weight_design_on_an_engine_checks_each_candidates_own_central_load(tmp_path):

@@ -116,7 +116,7 @@ def test_diagnosis_names_the_types_weight_key(tmp_path):
                                  'ball_weight = ["0.2 kgf", "0.3 kgf"]'))
     with pytest.raises(InfeasibleError) as info:
         design(govopt.load_spec(path))
-    assert "bounds.ball_weight widened" in str(info.value)
+    assert "bounds.ball_weight 0.2 .. 0.3 kgf -> " in str(info.value)
     assert "pendulum" not in str(info.value)
 
 

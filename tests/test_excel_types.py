@@ -136,3 +136,19 @@ def test_workbook_reads_in_engineering_units(opened, results, name):
     friction = res.friction_speeds[0] is not None
     assert ("opening speed (rising against friction) (rpm)" in head) == friction
     assert len(chart.series) == (3 if res.spec.speed is not None else 1) + 2 * friction
+
+
+@pytest.mark.parametrize("name", ["hartnell-design", "porter-design", "traction-leaf-design"])
+def test_the_drawing_is_at_equal_scales(results, name):
+    """The Summary's drawing of the governor is at equal scales across and up, so its balls are
+    circles, as the PNG draws them: the chart's plot area is written as the axes' own rectangle
+    (its layout the chart's, which openpyxl writes into the plot area), and its axes give as
+    many mm per cm of that rectangle each way."""
+    wb = excel.build_workbook(results[name])
+    chart = next(c for c, _ in excel.layout(wb["Summary"]).charts
+                 if c.title.tx.rich.p[0].r[0].t.startswith("Drawn to scale"))
+    m = chart.layout.manualLayout
+    assert m.layoutTarget == "inner" and chart.plot_area.layout is None  # written from layout
+    across = (chart.x_axis.scaling.max - chart.x_axis.scaling.min) / (m.w * chart.width)
+    up = (chart.y_axis.scaling.max - chart.y_axis.scaling.min) / (m.h * chart.height)
+    assert across == pytest.approx(up, rel=1e-9)

@@ -81,7 +81,7 @@ def test_options_read_by_their_declarations():
 
 @pytest.mark.parametrize("command, body, message", [
     ("spring", '[spring]\nforce = "500 N"\nforse = "1 N"\n',
-     "spring.forse: unknown key (did you mean 'force'? 38 keys allowed here, listed in "
+     "spring.forse: unknown key (did you mean 'force'? 39 keys allowed here, listed in "
      "docs/reference/spring-spec.md under design: [spring])"),
     ("spring", '[spring]\nforce = "500 N"\nmax_preload_deflection = "1 in"\n',
      "spring.max_preload_deflection: not a key of a spring to design (govopt spring); it is "

@@ -224,7 +224,6 @@ def test_shigley_problem_10_3_compression_static():
     assert float(Ls) == pytest.approx(35e-3)
     L0 = Fs / k + Ls
     # printed 162.8 = 167.9 / 1.314 + 35 from the rounded F_s and k (162.78); unrounded 162.72
-    assert 167.9 / 1.314 + 35 == pytest.approx(162.8, abs=0.05)
     assert float(L0) * 1e3 == pytest.approx(162.8, abs=0.1)
     # Shigley's 2.63 D/alpha is the root of the buckling formula for steel, E/G = 30/11.5:
     # 2.6249, printed rounded to 2.63; so the printed 149.9 mm carries +-0.005 D/alpha = 0.3 mm.
@@ -358,7 +357,6 @@ def test_shigley_example_10_4_compression_fatigue():
     # inputs give 281.5 (same formula, EN 13906-1's f_e)
     f = hx.surge_frequency(d, D, Na, 11.75e6 * PSI, mw.density)
     assert float(f) == pytest.approx(281.5, abs=0.05)
-    assert 0.5 * math.sqrt(48.1 * 386 / 0.0586) == pytest.approx(281, abs=0.5)
 
 
 def test_en13906_goodman_diagram():

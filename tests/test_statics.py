@@ -90,7 +90,7 @@ def test_paper_rounds_the_spring_arms():
     assert s["h_i"] / CM == pytest.approx(2.548, abs=5e-4)
     assert s["h_a"] / CM == pytest.approx(3.000, abs=5e-4)
     assert s["F_i"] / KGF == pytest.approx(419.2, rel=0.005)
-    assert 1068 / 2.5 == pytest.approx(427, rel=0.001)  # the paper's number, from h = 2.5
+    # the paper's 427 kgf/cm is its 1068 / 2.5: from h = 2.5 cm, its own rounding
     assert s["kappa"] / (KGF / CM) == pytest.approx(63.1, rel=0.01)
     # the paper's 59.7 follows from its own rounded arms and its own M_f values:
     assert (1818 / 3.0 - 1068 / 2.5) / (2 * 1.5) == pytest.approx(59.7, rel=0.01)

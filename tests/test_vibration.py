@@ -501,3 +501,33 @@ def test_peak_to_peak_is_refined_past_the_grid():
     X, Y = np.array([0.3]), np.array([0.4])  # amplitude 0.5, phase off the grid's nodes
     p2p, _, _ = V._peak_to_peak(X, Y)
     assert p2p == pytest.approx(1.0, rel=1e-14)  # the grid alone is ~1e-7 short here
+
+
+def test_many_designs_at_once_are_each_designs_own_vibration():
+    """:func:`vibrations` of many designs (masses, stiffnesses and dash-pots of their own; one
+    stiff enough to need a longer explicit tail, one undamped at an exact resonance) gives each
+    design the vibration it has alone, and a peak-to-peak that a dense sampling of the kept
+    harmonics confirms."""
+    from govopt.analysis.statics import SpringDesign
+
+    spec = load_spec(SPECS / "hamabe-a.toml")
+    a0, w0 = spec.governor.alpha_normal, spec.speed.omega_mean
+    m = np.array([10.0, 12.0, 14.0, 12.0, 11.0])
+    inertia = m * spec.governor.rho**2
+    k2 = np.array([300.0, 360.0, 500.0, 1600.0 * w0**2, w0**2])
+    f = np.array([2.0, 0.0, 5.0, 1.0, 0.0])
+    many = V.vibrations(spec, SpringDesign(m, inertia, 0.0, 0.0), a0, k2, dashpot=f)
+    assert len(np.unique(V._tail_counts(spec.analysis.harmonics, k2, w0))) == 2
+    assert math.isinf(many.peak_to_peak_rad[4]) and many[4].resonant_orders == (1,)
+    tau = np.linspace(0.0, 2.0 * np.pi, 200_001)
+    for i in range(len(m)):
+        one = V.vibration(spec, SpringDesign(m[i], inertia[i], 0.0, 0.0), a0, k2[i],
+                          dashpot=f[i])
+        both = many[i]
+        assert both.harmonics == one.harmonics
+        assert both.truncation_error_rad == one.truncation_error_rad
+        assert both.peak_to_peak_rad == one.peak_to_peak_rad
+        if math.isfinite(one.peak_to_peak_rad):
+            _, xi = one.trace(tau.size)
+            sampled = xi.max() - xi.min()  # from below, within the grid's (2 pi / 2e5)^2
+            assert sampled <= one.peak_to_peak_rad <= sampled * (1.0 + 1e-9)

@@ -93,10 +93,6 @@ _RESYNC = 32  # grid steps between exact re-evaluations of expm(M t) z0
 
 
 # --------------------------------------------------------------------------------------------
-# linear model of a load change, from a spec
-
-
-# --------------------------------------------------------------------------------------------
 # exact linear pieces
 
 
@@ -485,7 +481,8 @@ class FrictionResult:
         u = self.units
         x = u["x"]
         return {
-            "model": "Hamabe eqs. (42)-(46), hybrid stick-slip, static = kinetic friction",
+            # the source is the method's (its "strokes" equation: the type's own or borrowed)
+            "model": "hybrid stick-slip strokes, static = kinetic friction",
             f"I_{u['inertia']}": self.I, f"f_{u['damping']}": self.f, "k2_per_s2": self.k2,
             f"C_{u['lever']}": self.C, f"R_{u['engine']}": self.R, f"M0_{u['force']}": self.M0,
             f"xi0_{x}": self.xi0, "eta0_rad_per_s": self.eta0,

@@ -566,12 +566,6 @@ def checks(spec, sd, char, vib=None) -> list:
     return out + [replace(c, source=c.source + tail) for c in rows]
 
 
-# ---------------------------------------------------------------- tolerances
-
-
-# ---------------------------------------------------------------- the report
-
-
 # ---------------------------------------------------------------- the optimiser's screen
 
 

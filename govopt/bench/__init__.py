@@ -11,7 +11,7 @@ as timed assertions in the tests. Three modules, one job each:
   ``evaluate`` and ``design`` (CPU, user + system, which is what an idle machine's wall time
   is; the wall time beside it, and a bare ``python -c pass`` timed in the same run: the machine
   is shared, so wall times carry its load), the peak RSS of a design over a catalogue of 48
-  million combinations, and (from a checkout: ``benchmarks/bench_study.py``) the designs per
+  million combinations, and (:mod:`.bulk`) the designs per
   second of ``evaluate_many`` with and without the load change against a loop of
   ``govopt.evaluate`` timed in the same run (:func:`.targets.targets`).
 * :mod:`.report`: ``speed-vs-error.md`` (tables, the Pareto front of each analysis, the

@@ -1,11 +1,10 @@
 """The speed targets beside what was measured: ``design()`` in process, whole-process times of
 the commands against ``python -c pass`` timed in the same run, the peak memory of a design over
-48 million combinations and (from a checkout) the bulk evaluation of ``benchmarks/bench_study.py``.
+48 million combinations and the bulk evaluation (:mod:`govopt.bench.bulk`).
 """
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import os
 import resource
@@ -18,9 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .bulk import bulk_bench
 from .suites import SPECS, cpu_per_call
-
-ROOT = Path(__file__).resolve().parents[2]
 
 #: The speed targets (docs/decisions.md, imports on demand): name -> (limit, unit, what is measured)
 TARGETS = {
@@ -86,7 +84,7 @@ def _child_times(args, repeats, env=None):
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         t0 = time.perf_counter()
         subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False,
-                       cwd=ROOT, env=env)
+                       cwd=tempfile.gettempdir(), env=env)
         walls.append(time.perf_counter() - t0)
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpus.append(after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime)
@@ -137,7 +135,7 @@ def peak_memory() -> dict:
     with tempfile.TemporaryDirectory() as tmp:
         path = big_catalogue_spec(Path(tmp))
         p = subprocess.run([sys.executable, "-c", code, str(path)], capture_output=True,
-                           text=True, cwd=ROOT, check=False)
+                           text=True, cwd=tmp, check=False)
     if p.returncode != 0:
         return {"error": p.stderr.strip().splitlines()[-1:]}
     return json.loads(p.stdout.strip().splitlines()[-1])
@@ -179,27 +177,13 @@ def targets(quick: bool = False, log=None) -> list[dict]:
             f"{mem['search']['spring_feasible']:,} spring-feasible, {mem['cpu_s']:.1f} s CPU")
     if log:
         log("peak memory measured")
-    bulk = benchmark_module("bench_study")
-    if bulk is not None:  # a checkout: benchmarks/ beside the package
-        b = bulk.bulk_bench(20_000 if quick else 100_000, 50 if quick else 200, 3)
-        loop = f"a loop of govopt.evaluate: {b['evaluate_loop_points_per_s']:.3g} designs/s"
-        add("evaluate_many, statics + k^2", b["statics_k2_vectorised_points_per_s"],
-            f"{b['points']:,} designs; {b['statics_k2_speedup_vs_evaluate_loop']:.0f} x {loop}")
-        add("evaluate_many, + load change", b["with_transient_vectorised_points_per_s"],
-            f"{b['with_transient_points']:,} designs; "
-            f"{b['with_transient_speedup_vs_evaluate_loop']:.0f} x {loop}")
-        if log:
-            log("bulk evaluation measured")
+    b = bulk_bench(20_000 if quick else 100_000, 50 if quick else 200, 3)
+    loop = f"a loop of govopt.evaluate: {b['evaluate_loop_points_per_s']:.3g} designs/s"
+    add("evaluate_many, statics + k^2", b["statics_k2_vectorised_points_per_s"],
+        f"{b['points']:,} designs; {b['statics_k2_speedup_vs_evaluate_loop']:.0f} x {loop}")
+    add("evaluate_many, + load change", b["with_transient_vectorised_points_per_s"],
+        f"{b['with_transient_points']:,} designs; "
+        f"{b['with_transient_speedup_vs_evaluate_loop']:.0f} x {loop}")
+    if log:
+        log("bulk evaluation measured")
     return rows
-
-
-def benchmark_module(name: str):
-    """The script ``benchmarks/<name>.py`` of a checkout as a module; None where govopt is
-    installed without its benchmarks."""
-    path = ROOT / "benchmarks" / f"{name}.py"
-    if not path.exists():
-        return None
-    mod_spec = importlib.util.spec_from_file_location(name, path)
-    mod = importlib.util.module_from_spec(mod_spec)
-    mod_spec.loader.exec_module(mod)
-    return mod

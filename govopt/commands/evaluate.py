@@ -78,7 +78,7 @@ def evaluate(spec: Spec = None,
     run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, geometry=geometry,
                                      speed_change=change)), json_out,
                    spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots,
-                   sections=_sections(full, section))
+                   sections=_sections(full, section), advise=True)
 
 
 @design_app.command("design", help=DESIGN_HELP, short_help=DESIGN_SHORT)
@@ -145,10 +145,13 @@ def _sections(full: bool, section: list[str] | None) -> list[str] | None:
 
 def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
                    output: str | None = None, force: bool = False, plots: Path | None = None,
-                   sections: list[str] | None = None) -> None:
+                   sections: list[str] | None = None, advise: bool = False) -> None:
     """Check the outputs, compute a Result, write the requested files, print it and say what
     was written where (on stderr with ``--json``); a user's error (GovoptError) exits 2 and a
-    result with failed checks 1, through :func:`~govopt.commands.common.guarded`."""
+    result with failed checks 1, through :func:`~govopt.commands.common.guarded`. With
+    ``--json`` a search that finds no design prints its diagnosis as one JSON object before
+    exiting 2; ``advise``: a result with failed checks is told what change makes it pass
+    (:func:`govopt.optimize.diagnosis.evaluation_moves`; in the JSON, ``diagnosis``)."""
     from ..report.files import check_planned, drawn_design, overwrite_policy, write_design_spec
     from ..report.text import format_result
 
@@ -160,9 +163,15 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
 
         check_plot_dir(plots, spec.stem, overwrite=force, inputs=[spec],
                        others=[p for p, _ in outputs])
+    from ..errors import DesignError, InfeasibleError
     from ..made import with_yield
 
-    res = compute()
+    try:
+        res = compute()
+    except (InfeasibleError, DesignError) as exc:  # no design: the diagnosis, as JSON too
+        if json_out:
+            echo(json.dumps(exc.to_dict(), indent=2))
+        raise
     if output is not None:  # rounded as drawn, and evaluated again: the report is its
         text, res, _ = drawn_design(res)
         write_design_spec(res, output, overwrite=force, text=text)
@@ -173,19 +182,35 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
         with overwrite_policy(force):
             write_workbook(res, xlsx)
     drawn = [] if plots is None else write_plots(res, plots, stem=spec.stem, overwrite=force)
-    echo(json.dumps(res.to_dict(), indent=2) if json_out else format_result(res,
-                                                                             sections=sections))
+    moves = None
+    if advise and not all(c.passed for c in res.checks):
+        from ..optimize.diagnosis import evaluation_moves
+
+        moves = evaluation_moves(res.spec)
+    if json_out:
+        out = res.to_dict()
+        if moves is not None:
+            out["diagnosis"] = {"failed": [c.name for c in res.checks if not c.passed],
+                                "moves": moves}
+        echo(json.dumps(out, indent=2))
+    else:
+        echo(format_result(res, sections=sections))
     for path in (output, xlsx, *drawn):
         if path is not None:
             echo(f"wrote {Path(path).absolute()}", err=json_out)
-    exit_on_failed_checks(res, json_out)
+    exit_on_failed_checks(res, json_out, moves)
 
 
-def exit_on_failed_checks(res, json_out: bool) -> None:
-    """Exit code 1 (after the report) when any of the result's checks failed."""
+def exit_on_failed_checks(res, json_out: bool, moves: list[str] | None = None) -> None:
+    """Exit code 1 (after the report) when any of the result's checks failed, saying (on
+    stderr) which, and ``moves``: the changes that each make it pass."""
     failed = [c.name for c in res.checks if not c.passed]
     if failed:
         if not json_out:
             echo(f"{len(failed)} of {len(res.checks)} checks failed: {'; '.join(failed)}",
                  err=True)
+            if moves is not None:
+                echo("it passes if one of these moves: " + "; ".join(moves) if moves else
+                     "no single change of its friction, speeds or a design value (within x2) "
+                     "makes it pass", err=True)
         raise ChecksFailed

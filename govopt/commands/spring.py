@@ -111,7 +111,8 @@ def design(
         output: Annotated[str | None, common.option(
             "-o", "--output", metavar="<path>",
             help="Write the designed spring as a spec for 'govopt spring check' (its "
-                 "geometry, material, loads and rules).")] = None,
+                 "geometry, its lengths as a drawing gives them: 4 significant digits, more "
+                 "only where a check would fail; material, loads and rules).")] = None,
         xlsx: Xlsx = None,
         plots: Plots = None,
         replace: Replace = False,

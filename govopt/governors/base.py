@@ -35,13 +35,13 @@ load-change model and k^2 are invariant under scaling every generalised force an
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 from typing import Any, ClassVar
 
 import numpy as np
 
 from ..keys import Key, Table
-from ..references import cite, found_in
+from ..references import REFERENCES, cite, found_in
 from ..springs.kinds import KINDS, SpringKind
 
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
@@ -124,7 +124,9 @@ class Equation:
     source writes them, plain text), the ``source`` (a key of :data:`govopt.references.
     REFERENCES`) and ``where`` in it (an equation, a section, a clause), and the fidelity
     settings that choose its form (``settings``: ``"analysis.geometry"``, ``"governor.k"``).
-    ``name``: the handle a writer or a check asks for (``"irregularity"``, ``"hurwitz"``)."""
+    ``name``: the handle a writer or a check asks for (``"irregularity"``, ``"hurwitz"``).
+    ``borrowed``: a criterion or solution of another type's source applied to this type
+    (:meth:`Governor.borrows`); its citation says so."""
 
     topic: str
     what: str
@@ -133,11 +135,13 @@ class Equation:
     where: str = ""
     settings: tuple[str, ...] = ()
     name: str = ""
+    borrowed: bool = False
 
     @property
     def cite(self) -> str:
-        """The citation in running text: ``"Hamabe eq. 12"``."""
-        return cite(self.source, self.where)
+        """The citation in running text: ``"Hamabe eq. 12"``, or for a borrowed criterion
+        ``"borrowed from Hamabe Part II, case 2"``."""
+        return ("borrowed from " if self.borrowed else "") + cite(self.source, self.where)
 
     @property
     def text(self) -> str:
@@ -211,12 +215,50 @@ class Method:
         keys += [k for text in also for k in found_in(text)]
         return list(dict.fromkeys(keys))
 
+    def uses(self, checks: tuple[tuple[str, str], ...] = ()) -> dict[str, str]:
+        """What this method uses each of its sources for (:meth:`sources`' keys, in order),
+        in words: the topics whose equations cite it, each with the places cited, then the
+        ``checks`` (``(name, source text)`` pairs) whose sources name it. A source cited by
+        another type's method is listed for what this one takes from it, not for its whole
+        content.
+
+        >>> Method("t", (Equation("statics", "", "", "hamabe", "eq. 1"),
+        ...              Equation("stability", "", "", "hamabe", "Part II, case 2"),
+        ...              Equation("statics", "", "", "rattan"))).uses(
+        ...     (("shear stress", "Wahl 1944: tau"), ("irregularity", "Hamabe Part I")))
+        {'hamabe': 'statics (eq. 1); stability (Part II, case 2); the check irregularity', \
+'rattan': 'statics', 'wahl': 'the check shear stress'}
+        """
+        out: dict[str, dict[str, list[str]]] = {}
+        for e in self.equations:
+            places = out.setdefault(e.source, {}).setdefault(TOPICS.get(e.topic, e.topic).lower(),
+                                                             [])
+            if e.where and e.where not in places:
+                places.append(e.where)
+        named: dict[str, list[str]] = {}
+        for name, text in checks:
+            for key in found_in(text):
+                out.setdefault(key, {})
+                if name not in named.setdefault(key, []):
+                    named[key].append(name)
+        words = {}
+        for key, topics in out.items():
+            parts = [f"{t} ({', '.join(w)})" if w else t for t, w in topics.items()]
+            names = named.get(key, [])
+            if names:
+                shown = ", ".join(names[:4]) + (f" and {len(names) - 4} more" if len(names) > 4
+                                                else "")
+                parts.append(f"the check{'s' if len(names) > 1 else ''} {shown}")
+            words[key] = "; ".join(parts)
+        return words
+
     def to_dict(self) -> dict:
         """The method as JSON: equations (topic, what, formula, source key, citation,
         settings), the fidelity settings with values and the free length's meaning."""
         return {"title": self.title,
                 "equations": [{"topic": e.topic, "what": e.what, "formula": e.formula,
                                "source": e.source, "cite": e.cite,
+                               **({"borrowed": True} if e.borrowed else {}),
                                **({"settings": list(e.settings)} if e.settings else {})}
                               for e in self.equations],
                 "settings": {s.key: s.value for s in self.settings},
@@ -395,6 +437,17 @@ class Governor(ABC):
     band_is_range: ClassVar[bool] = True
     #: where the ceiling ``0 < k^2 < omega0^2`` comes from, for a plot's legend ('' for none)
     resonance_source: ClassVar[str] = ""
+    #: the spec key of the type's friction (its dotted path) and its dimension: what a
+    #: diagnosis lowers where friction makes a design infeasible ("" where the type has none)
+    friction_key: ClassVar[str] = ""
+    friction_dimension: ClassVar[str] = "force"
+    #: the spec keys of the range's ends (innermost, outermost configuration) and their
+    #: dimension: a narrower range narrows the speed band, what a diagnosis may propose
+    range_keys: ClassVar[tuple[str, str] | None] = None
+    range_dimension: ClassVar[str] = "length"
+    #: the type's own source (a key of :data:`govopt.references.REFERENCES`): a spec key or a
+    #: criterion citing another type's source is borrowed, and its text says so
+    source: ClassVar[str] = ""
     #: the spring's whole free length per unit of ``l0`` (the shaft's l0 is a half length: 2)
     spring_length_factor: ClassVar[float] = 1.0
     #: names of the three generalised forces in reports: centrifugal, spring, dead loads
@@ -413,6 +466,11 @@ class Governor(ABC):
     #: the type carries a central (sleeve) load, which ``[design] central_weight`` gives and
     #: the design search varies within ``[bounds] central_weight``
     central_load: ClassVar[bool] = False
+    #: the generalised forces and the inertia are affine in the central load, and the lever
+    #: ``jp - ci`` free of it (a sleeve's weight acting through the linkage, as a Porter's): each
+    #: statics requirement is then an interval of central loads, found in closed form
+    #: (:func:`govopt.optimize.windows.central_load_intervals`)
+    central_load_affine: ClassVar[bool] = False
 
     #: innermost, outermost and normal configurations (SI), set by :meth:`parse`
     x_inner: float
@@ -455,8 +513,22 @@ class Governor(ABC):
 
     def vibration(self, spec, sd, k2_normal: float, dashpot: float):
         """The forced vibration at the normal configuration where the type has a periodic
-        forcing (a result with ``to_dict()``), else ``None`` (default: no forcing modelled)."""
+        forcing (a result with ``to_dict()`` and ``peak_to_peak_rad``), else ``None`` (default:
+        no forcing modelled). A type with a forcing overrides this, and :meth:`vibrations`
+        where it can compute many designs at once."""
         return None
+
+    def vibrations(self, spec, sd, k2_normal, dashpot):
+        """:meth:`vibration` of N designs (``sd``'s fields of shape ``(N,)`` or ``(N, 1)``,
+        ``k2_normal`` and ``dashpot`` of shape ``(N,)``): a sequence of N results, or None
+        where the type has no forcing. Default: :meth:`vibration` design by design; a type
+        overrides it with one computation over the designs."""
+        rows = []
+        for i in range(np.size(k2_normal)):
+            one = replace(sd, **{f.name: float(np.ravel(getattr(sd, f.name))[i])
+                                 for f in fields(sd) if np.ndim(getattr(sd, f.name))})
+            rows.append(self.vibration(spec, one, float(k2_normal[i]), float(dashpot[i])))
+        return None if rows and rows[0] is None else rows
 
     @classmethod
     def key_unit(cls, quantity: str) -> str:
@@ -784,8 +856,16 @@ class Governor(ABC):
         if self.k2_rule(spec.requirements.k2_margin if spec.requirements else None)[1]:
             out += (Equation("stability", "the flying masses' natural frequency kept below the "
                                           "running speed (clear of resonance)",
-                             "k^2 < omega0^2", "hamabe", "Part II, case 2", name="resonance"),)
+                             "k^2 < omega0^2", "hamabe", "Part II, case 2", name="resonance",
+                             borrowed=self.borrows("hamabe")),)
         return out
+
+    @classmethod
+    def borrows(cls, source: str) -> bool:
+        """Whether an equation citing ``source`` (a bibliography key) is borrowed by this type:
+        the source is not the type's own (:attr:`source`) nor a general one (a standard,
+        Lagrange, Rattan) but another governor type's (:attr:`Reference.governor`)."""
+        return bool(cls.source) and source != cls.source and REFERENCES[source].governor
 
     def friction_method(self, spec) -> tuple[Equation, ...]:
         """The type's friction band (default none) and, with an engine, the load change
@@ -800,7 +880,8 @@ class Governor(ABC):
         return (Equation("friction", "load change against the friction band: strokes and "
                                      "rests (stick-slip), each stroke solved exactly",
                          "I xi'' + f xi' + I k^2 xi + F_r sign(xi') = C eta, "
-                         "eta' = -R xi", "hamabe", "eqs. 42-46", name="strokes"),)
+                         "eta' = -R xi", "hamabe", "eqs. 42-46", name="strokes",
+                         borrowed=self.borrows("hamabe")),)
 
     def vibration_method(self, spec) -> tuple[Equation, ...]:
         """The forced vibration under a periodic forcing (default: none modelled)."""

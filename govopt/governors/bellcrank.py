@@ -286,11 +286,14 @@ class BellCrankGovernor(Governor):
     fixed springs (:meth:`fixed_force`)."""
 
     coordinate: ClassVar[str] = "length"
+    source: ClassVar[str] = "textbook-ch3"
+    friction_key: ClassVar[str] = "governor.sleeve_friction"
     coordinate_name: ClassVar[str] = "ball radius"
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
     central_load: ClassVar[bool] = True
+    central_load_affine: ClassVar[bool] = True  # cf, cf_x and I affine in W; ci = 0 (terms)
     #: True where the fulcrum rides on the sleeve and the ball hangs below it (Fig. 3.12)
     fulcrum_on_sleeve: ClassVar[bool] = False
     #: the spec key of the lever's second arm

@@ -217,11 +217,16 @@ class BallGovernor(Governor):
     """
 
     coordinate: ClassVar[str] = "length"
+    source: ClassVar[str] = "textbook-ch3"
+    friction_key: ClassVar[str] = "governor.sleeve_friction"
+    range_keys: ClassVar[tuple[str, str] | None] = ("governor.radius_inner",
+                                                    "governor.radius_outer")
     coordinate_name: ClassVar[str] = "ball radius"
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
     central_load: ClassVar[bool] = True
+    central_load_affine: ClassVar[bool] = True  # cf, cf_x and I affine in W; ci = 0 (terms)
 
     def __init__(self, linkage: Linkage, x_inner, x_outer, x_normal, sleeve_friction=0.0,
                  spring=None, lever_ratio=0.0, spring_length=0.0):

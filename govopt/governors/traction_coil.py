@@ -219,6 +219,8 @@ class FlyWeights(Governor):
     spring will be longer and with lower spring rate")."""
 
     resonance_ceiling: ClassVar[bool] = False
+    source: ClassVar[str] = "traction-article"
+    friction_key: ClassVar[str] = "governor.rod_friction"
 
     @property
     def flying_masses(self) -> int:  # type: ignore[override]

@@ -1,11 +1,14 @@
-"""Why a design search found nothing: which requirements or bounds conflict, and how far each
-would have to move (bisection on a relaxed copy of the spec) for a design to exist; and why a
-chosen design failed its closing evaluation.
+"""Why a design search found nothing: which requirements, inputs or bounds conflict, and how
+far each would have to move (bisection on a relaxed copy of the spec) for a design to exist,
+each move in the spec's keys and the units it wrote them in (the friction lowered to a value
+that works, a band's end, a bound); why a chosen design failed its closing evaluation; and what
+change makes a failing evaluation pass (:func:`evaluation_moves`).
 """
 
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import fields, replace
 
 import numpy as np
@@ -15,11 +18,13 @@ from ..analysis import statics
 from ..analysis.over_regulation import OVER_TOL
 from ..errors import InfeasibleError
 from ..limits import MAX_TRANSIENT_POINTS
-from ..spec import Requirements, Spec, Speed
+from ..spec import Requirements, Spec, Speed, with_values
+from ..units import SI_UNITS, to_unit
 from .catalogue_search import Candidate, best_discrete
 from .windows import (
     BAND_REFERENCES_FINE,
     Grid,
+    central_load_intervals,
     dead_weight_arrays,
     dead_weight_parts,
     dead_weight_statics,
@@ -38,6 +43,108 @@ def _same_terms(a, b) -> bool:
     """Whether two :class:`govopt.governors.base.Terms` hold the same numbers (NaN never
     equal: such terms are computed again)."""
     return all(np.array_equal(getattr(a, f.name), getattr(b, f.name)) for f in fields(a))
+
+
+def _written_unit(spec: Spec, key: str) -> str | None:
+    """The unit the spec wrote ``key`` in (``"kgf"`` of ``"8 kgf"``), or None (not written,
+    or a bare number)."""
+    entry = next((e for e in spec.entries if e.key == key), None)
+    if entry is None or not isinstance(entry.written, str):
+        return None
+    m = re.fullmatch(r"\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*(\S.*?)\s*", entry.written)
+    return m[1] if m else None
+
+
+def as_written(spec: Spec, key: str, si: float, dimension: str, down: bool = False,
+               up: bool = False) -> str:
+    """``si`` (SI) in the unit the spec wrote ``key`` in, to 4 significant digits (``2.309
+    kgf``; rounded down with ``down``, up with ``up``, so that a value moved far enough still
+    is), else in SI."""
+    unit = _written_unit(spec, key)
+    value = si
+    if unit is not None:
+        try:
+            value = to_unit(si, dimension, unit)
+        except (ValueError, TypeError, AttributeError):  # a unit pint reads only in context
+            unit = None
+    if unit is None:
+        unit = SI_UNITS[dimension]
+    if (down or up) and value > 0:
+        step = 10.0 ** (math.floor(math.log10(value)) - 3)
+        value = (math.floor if down else math.ceil)(value / step) * step
+    return f"{value:.4g} {unit}"
+
+
+def friction_move(spec: Spec, feasible) -> str | None:
+    """The spec's friction (its type's :attr:`~govopt.governors.base.Governor.friction_key`)
+    lowered to a value at which ``feasible(variant spec)`` holds, as a move in the spec's key
+    and unit (``governor.sleeve_friction 8 kgf -> 2.309 kgf``): bisection between the spec's
+    value and a thousandth of it; None where the spec has no friction or even that is not
+    enough (friction is then not the cause)."""
+    gov = spec.governor
+    key, dimension = gov.friction_key, gov.friction_dimension
+    entry = next((e for e in spec.entries if e.key == key), None) if key else None
+    if entry is None or not isinstance(entry.si, float) or entry.si <= 0 or spec.data is None:
+        return None
+    now, unit = entry.si, SI_UNITS[dimension]
+    x = _bisect(lambda x: feasible(with_values(spec, {key: f"{now / x!r} {unit}"})),
+                hi=1000.0, iters=14)
+    if x is None:
+        return None
+    return (f"{key} {as_written(spec, key, now, dimension)} -> "
+            f"{as_written(spec, key, now / x, dimension, down=True)}")
+
+
+def range_moves(spec: Spec, feasible) -> list[str]:
+    """The governor's range narrowed at either end (its type's
+    :attr:`~govopt.governors.base.Governor.range_keys`) to where ``feasible(variant spec)``
+    holds, as moves in the spec's keys and units (``governor.radius_outer 25 cm -> 23.1 cm``):
+    bisection on the share of the range kept, down to a twentieth; none where the type
+    declares no range keys or the spec does not write them."""
+    from ..errors import GovoptError
+
+    gov = spec.governor
+    if gov.range_keys is None or spec.data is None:
+        return []
+    ends = [next((e for e in spec.entries if e.key == k), None) for k in gov.range_keys]
+    if any(e is None or not isinstance(e.si, float) for e in ends):
+        return []
+    (k_in, lo), (k_out, hi) = [(e.key, e.si) for e in ends]
+    unit = SI_UNITS[gov.range_dimension]
+
+    def ok(key: str, value: float) -> bool:
+        try:
+            return feasible(with_values(spec, {key: f"{value!r} {unit}"}))
+        except GovoptError:  # a configuration the type refuses (its normal outside)
+            return False
+
+    moves = []
+    for key, now, to in ((k_out, hi, lambda x: lo + (hi - lo) / x),
+                         (k_in, lo, lambda x: hi - (hi - lo) / x)):
+        x = _bisect(lambda x, key=key, to=to: ok(key, to(x)), hi=20.0, iters=12)
+        if x is not None:
+            shown = as_written(spec, key, to(x), gov.range_dimension, down=key == k_out,
+                               up=key == k_in)
+            moves.append(f"{key} {as_written(spec, key, now, gov.range_dimension)} -> {shown}")
+    return moves
+
+
+def bounds_move(spec: Spec, req: Requirements, x: float, central: bool) -> str:
+    """The weight bounds widened ``x`` times each way (low / x, high * x), as a move in the
+    spec's keys: ``bounds.ball_weight 2 .. 10 kgf -> 0.79 .. 25.3 kgf`` (and the central
+    load's with ``central``). A bound on a weight is shown in kgf (m kg weighs m kgf), on a
+    mass in kg."""
+    written = (spec.data or {}).get("bounds") or {}
+    out = []
+    for base, (lo, hi), on in ((spec.governor.mass_key, req.flying_mass, True),
+                               ("central", req.central_mass, central)):
+        if not on:
+            continue
+        name = f"{base}_mass" if f"{base}_mass" in written else f"{base}_weight"
+        unit = "kg" if name.endswith("_mass") else "kgf"
+        out.append(f"bounds.{name} {lo:.4g} .. {hi:.4g} {unit} -> {lo / x:.4g} .. "
+                   f"{hi * x:.4g} {unit}")
+    return " and ".join(out)
 
 
 def _bisect(feasible, lo: float = 1.0, hi: float = 100.0, iters: int = 12) -> float | None:
@@ -70,15 +177,30 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
     own = masses(req)
     memo: dict = {}
 
+    def grid_of(s):  # another governor (its friction or its range): its own grid
+        return grid if s.governor is spec.governor else Grid.build(s)
+
+    def meets_in(s, r):
+        g = grid_of(s)
+        return lambda m, c: np.logical_and.reduce(
+            list(dead_weight_statics(s, r, g, m, c)[0].values()))
+
     def feasible(s, r):
+        if spec.governor.central_load_affine:  # each ball's central loads in closed form
+            least = _least_central(s, r, mass_grid(r), grid_steps(*r.central_mass,
+                                                                   r.mass_step), meets_in(s, r))
+            if least is not ...:
+                return least is not None
         m, c = masses(r)
-        keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1])
+        own_gov = s.governor is spec.governor  # else another friction or range: its arrays
+        keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1]) and own_gov
+        g = grid_of(s)
         for lo in range(0, m.size, _DIAGNOSIS_BLOCK):
             mb, cb = m[lo:lo + _DIAGNOSIS_BLOCK], c[lo:lo + _DIAGNOSIS_BLOCK]
-            t = statics.terms(s, grid.alpha, mb[:, None], cb[:, None])
+            t = statics.terms(s, g.alpha, mb[:, None], cb[:, None])
             hit = memo.get(lo) if keep else None
             if hit is None or not _same_terms(hit[0], t):
-                hit = t, dead_weight_arrays(s, grid, mb, cb, t)[1:4]
+                hit = t, dead_weight_arrays(s, g, mb, cb, t)[1:4]
                 if keep:
                     memo[lo] = hit
             if np.logical_and.reduce(list(dead_weight_parts(s, r, *hit[1]).values())).any():
@@ -91,10 +213,15 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
 
     rpm = 30.0 / math.pi
     moves = []
-    central = central_move(spec, req, lambda m, c: np.logical_and.reduce(
-        list(dead_weight_statics(spec, req, grid, m, c)[0].values())))
+    central = central_move(spec, req, meets_in(spec, req))
     if central:
         moves.append(central)
+    friction = friction_move(spec, lambda s: feasible(s, req))
+    if friction:  # the cause named: the friction band is wider than the speed band leaves
+        key = spec.governor.friction_key
+        head += (f": the friction ({key}) spreads the opening and closing speeds wider than "
+                 "speed.inner .. speed.outer leaves room for")
+        moves.insert(0, friction)
     margin = spec.governor.k2_rule(req.k2_margin)[0]
     x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=margin / x))) if margin else None
     if x is not None:
@@ -111,7 +238,8 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
         req, flying_mass=(req.flying_mass[0] / x, req.flying_mass[1] * x),
         central_mass=(req.central_mass[0] / x, req.central_mass[1] * x))), hi=4.0)
     if x is not None:
-        moves.append(f"the weight bounds widened x{x:.3g}")
+        moves.append(bounds_move(spec, req, x, central=spec.governor.central_load))
+    moves += range_moves(spec, lambda s: feasible(s, req))  # the geometry: a narrower range
     with np.errstate(invalid="ignore"):
         ratio = np.sqrt(rise[:, -1] / fall[:, 0])
     best = float(np.nanmin(np.where(np.isfinite(ratio), ratio, np.nan))) \
@@ -142,14 +270,16 @@ def central_move(spec: Spec, req: Requirements, meets) -> str | None:
     top = 100.0 * max(req.flying_mass[1], hi)
     base = hi if hi > 0 else req.flying_mass[1] / 100.0
     m, loads = mass_grid(req), grid_steps(lo, top, req.mass_step)
-    per = max(1, _DIAGNOSIS_BLOCK // max(1, m.size))
-    least = None
-    for j in range(0, loads.size, per):
-        mm, cc = np.meshgrid(m, loads[j:j + per], indexing="ij")
-        hit = meets(mm.ravel(), cc.ravel()).reshape(mm.shape).any(axis=0)
-        if hit.any():
-            least = loads[j + int(np.argmax(hit))]
-            break
+    least = _least_central(spec, req, m, loads, meets) if gov.central_load_affine else ...
+    if least is ...:  # the lattice ascending, a block of pairs at a time
+        least = None
+        per = max(1, _DIAGNOSIS_BLOCK // max(1, m.size))
+        for j in range(0, loads.size, per):
+            mm, cc = np.meshgrid(m, loads[j:j + per], indexing="ij")
+            hit = meets(mm.ravel(), cc.ravel()).reshape(mm.shape).any(axis=0)
+            if hit.any():
+                least = loads[j + int(np.argmax(hit))]
+                break
     if least is None:
         return None
 
@@ -166,6 +296,34 @@ def central_move(spec: Spec, req: Requirements, meets) -> str | None:
     default = "" if hi > 0 else " (the default: no central load)"
     return (f"bounds.{given} {lo:.4g} .. {hi:.4g} {unit}{default} -> {lo:.4g} .. "
             f"{base * x:.4g} {unit}")
+
+
+#: lattice loads tried at the lower end of each flying mass's closed-form interval
+_CENTRAL_TRIES = 3
+
+
+def _least_central(spec: Spec, req: Requirements, m, loads, meets):
+    """The least central load of the lattice ``loads`` at which some flying mass of ``m``
+    meets every statics requirement (``meets(m, c)``), or None: each mass's interval of
+    central loads in closed form (:func:`govopt.optimize.windows.central_load_intervals`,
+    widened by rounding), the first lattice loads in it tried with ``meets`` itself, which
+    decides. ``...`` where the two disagree (every load tried fails in an interval that holds
+    more): the caller scans the lattice instead."""
+    lo, hi = central_load_intervals(spec, req, Grid.build(spec), m)
+    pad = 1e-9 * (np.abs(lo) + np.abs(hi) + req.mass_step)
+    with np.errstate(invalid="ignore"):
+        first = np.searchsorted(loads, np.where(np.isfinite(lo), lo - pad, -np.inf))
+        end = np.searchsorted(loads, np.where(np.isfinite(hi), hi + pad, np.inf), side="right")
+    rows = np.nonzero(end > first)[0]
+    if not rows.size:
+        return None
+    j = first[rows, None] + np.arange(_CENTRAL_TRIES)
+    tried = j < end[rows, None]
+    jj = np.minimum(j, loads.size - 1)
+    hit = meets(np.repeat(m[rows], _CENTRAL_TRIES), loads[jj].ravel()).reshape(j.shape) & tried
+    if np.any(~hit.any(axis=1) & (end[rows] - first[rows] > _CENTRAL_TRIES)):
+        return ...
+    return float(np.min(loads[jj][hit])) if hit.any() else None
 
 
 def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
@@ -249,7 +407,7 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
     # the speed requirement as the spec states it: the band's ends, or the irregularity
     speed_moves = ([("speed.inner", with_inner, "rpm /", speed.omega_inner),
                     ("speed.outer", with_outer, "rpm x", speed.omega_outer)] if speed.band
-                   else [("irregularity", with_irr, "x", speed.irregularity)])
+                   else [("speed.irregularity", with_irr, "x", speed.irregularity)])
     if stage == "statics":
         lo_name = max(parts, key=lambda k: np.median(parts[k][0]))
         lo, hi = parts[lo_name]
@@ -262,26 +420,31 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
             hi_name = min(others, key=lambda k: np.median(parts[k][1]))
             head = (f"infeasible: the requirement '{lo_name}' needs a stiffer "
                     f"spring than '{hi_name}' allows at every {weight} in the bounds")
-        cands = [*speed_moves, ("k2_margin", with_k2, "/", margin),
+        cands = [*speed_moves, ("requirements.k2_margin", with_k2, "/", margin),
                  ("requirements.min_range", with_range, "/", least),
-                 (f"bounds.{spec.governor.mass_key}_weight", with_mass, "widen x", None)]
+                 ("bounds", with_mass, "widen x", None)]
     elif stage == "spring" and stats["statics_feasible"] == 0:
         head = (f"infeasible: no catalogue spring's stiffness falls in the window "
                 "the statics allow (the speed band, k^2 margins, free length) at any "
                 f"{spec.governor.mass_key} weight in the bounds")
-        cands = [*speed_moves, ("k2_margin", with_k2, "/", margin),
+        cands = [*speed_moves, ("requirements.k2_margin", with_k2, "/", margin),
                  ("requirements.min_range", with_range, "/", least)]
     elif stage == "spring":
         head = (f"infeasible: no spring in the catalogue and bounds meets the "
                 f"allowable shear stress (with index, envelope and surge limits) at a stiffness "
                 f"the statics allow ({stats['statics_feasible']} mass-spring combinations pass "
                 f"the statics, none the spring checks)")
-        cands = [("allowable_shear_stress", with_ks, "x", mat.allowable_shear_stress),
-                 *speed_moves, ("requirements.min_range", with_range, "/", least)]
+        cands = [("material.allowable_shear_stress", with_ks, "stress x",
+                  mat.allowable_shear_stress), *speed_moves,
+                 ("requirements.min_range", with_range, "/", least)]
         if mat.allowable_shear_stress is None:  # a wire grade's allowables: not one number
             cands = cands[1:]
     else:
         return dynamics_conflict(spec, req, stats)
+    friction = friction_move(spec, lambda s: _feasible(s, req, stage))
+    if friction:
+        moves.append(friction)
+        head += f"; with less friction ({spec.governor.friction_key}) a design exists"
     budget = [DIAGNOSIS_CELLS]
     for name, make, how, value in cands:
         if how == "/" and not value:  # a margin of 0 (not applied): nothing to relax
@@ -292,7 +455,10 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
             break
         if x is None:
             continue
-        if how == "x" and value is not None:
+        if how == "stress x" and value is not None:  # as the spec wrote it (MPa, kgf/cm^2)
+            moves.append(f"{name} {as_written(spec, name, value, 'stress')} -> "
+                         f"{as_written(spec, name, value * x, 'stress')} (x{x:.3g})")
+        elif how == "x" and value is not None:
             moves.append(f"{name} {value:g} -> {value * x:.4g} (x{x:.3g})")
         elif how.startswith("rpm"):  # a band's end, shown as the spec's speeds are
             rpm = 30.0 / math.pi
@@ -301,7 +467,7 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
         elif how == "/" and value:
             moves.append(f"{name} {value:g} -> {value / x:.4g}")
         elif how == "widen x":
-            moves.append(f"{name} widened x{x:.3g}")
+            moves.append(bounds_move(spec, req, x, central=False))
     return InfeasibleError(head, file=spec.path, moves=moves)
 
 
@@ -376,3 +542,104 @@ def unverified(spec: Spec, cand: Candidate, failed) -> str:
             + f". The search's screen passed it on its own model, so it lies on the edge of "
             f"{names}: no design is returned; ask for a little more margin on {names} (or a "
             "finer catalogue step) and search again")
+
+
+#: The most evaluations :func:`evaluation_moves` spends on a failing design (each a few ms to
+#: a tenth of a second; a count, not a time, so that the advice is the same on any machine):
+#: its moves are then those found so far, the friction's and the speeds' first.
+EVALUATION_BUDGET = 200
+#: The factors a design value is scanned over, each way (up to x2 and /2), before bisection.
+_SCAN = 1.05 ** np.arange(1, 16)
+
+
+def evaluation_moves(spec: Spec) -> list[str]:
+    """What makes a failing evaluation pass: each change of one input of ``spec`` (its
+    friction lowered, a band's end or the irregularity moved, a design value raised or
+    lowered) at which every check of :func:`govopt.evaluator.evaluate` passes, the nearest
+    found, in the spec's keys and units (``governor.sleeve_friction 8 kgf -> 3.156 kgf``,
+    ``design.central_weight 33.75 kgf -> 36.4 kgf``). A design value is scanned up and down
+    to twice and half its value, then bisected; at most :data:`EVALUATION_BUDGET`
+    evaluations."""
+    from ..errors import GovoptError
+    from ..evaluator import core, design_columns, evaluate
+
+    spent = [0]
+
+    def statics_checks(variant: Spec) -> list | None:  # the checks before the dynamics
+        ev = core(variant, design_columns([variant.design]), dynamics=False, vibration=False,
+                  classic=False)
+        return None if ev.error[0] is not None else ev.table.checks(0)
+
+    def full(variant: Spec) -> bool:
+        return all(c.passed for c in evaluate(variant).checks)
+
+    # where every failing check is one the statics hold, a move is sought on them (fast) and
+    # the value found is then held against the whole evaluation
+    base = statics_checks(spec) if spec.design is not None else None
+    failing = {c.name for c in evaluate(spec).checks if not c.passed}
+    quick = base is not None and failing <= {c.name for c in base}
+
+    def passes(values: dict | Spec, final: bool = False) -> bool:
+        if spent[0] >= EVALUATION_BUDGET and not final:
+            return False
+        spent[0] += 1
+        try:
+            variant = values if isinstance(values, Spec) else with_values(spec, values)
+            if quick and not final:
+                checks = statics_checks(variant)
+                return checks is not None and all(c.passed for c in checks)
+            return full(variant)
+        except GovoptError:  # no equilibrium, a value out of range: not this way
+            return False
+
+    def at(key: str, si: float, dimension: str) -> dict:
+        return {key: f"{float(si)!r} {SI_UNITS[dimension]}"}
+
+    if spec.data is None:
+        return []
+    found = []  # (key, as written now, the new value as the spec would write it)
+    friction = friction_move(spec, passes)
+    if friction:
+        key, change = friction.split(" ", 1)
+        found.append((key, *change.split(" -> ")))
+    sp, rpm = spec.speed, 30.0 / math.pi
+    if sp is not None and sp.band:
+        for key, now, sign in (("speed.inner", sp.omega_inner, -1), ("speed.outer",
+                                                                      sp.omega_outer, 1)):
+            x = _bisect(lambda x, key=key, now=now, sign=sign: passes(
+                {key: f"{float(now * x ** sign * rpm)!r} rpm"}), hi=2.0, iters=10)
+            if x is not None:
+                found.append((key, f"{now * rpm:.5g} rpm", f"{now * x ** sign * rpm:.5g} rpm"))
+    elif sp is not None:
+        x = _bisect(lambda x: passes({"speed.irregularity": float(sp.irregularity * x)}),
+                    hi=min(100.0, 1.99 / sp.irregularity), iters=10)  # the key's range: < 2
+        if x is not None:
+            found.append(("speed.irregularity", f"{sp.irregularity:g}",
+                          float(f"{sp.irregularity * x:.4g}")))
+    for entry in spec.entries:
+        if not entry.key.startswith("design.") or not isinstance(entry.si, float) \
+                or entry.si <= 0 or not entry.unit:
+            continue
+        dimension = next((d for d, u in SI_UNITS.items() if u == entry.unit), None)
+        if dimension is None:
+            continue
+        key, now = entry.key, entry.si
+        best = None
+        for sign in (1, -1):  # up, then down: the nearer of the two
+            prev = 1.0
+            for f in _SCAN:
+                if passes(at(key, now * f ** sign, dimension)):
+                    x = _bisect(lambda x, s=sign, key=key, now=now, d=dimension: passes(
+                        at(key, now * x ** s, d)), lo=prev, hi=f, iters=6)
+                    if x is not None and (best is None or x < best[0]):
+                        best = (x, sign)
+                    break
+                prev = f
+        if best is not None:
+            x, sign = best
+            found.append((key, as_written(spec, key, now, dimension),
+                          as_written(spec, key, now * x ** sign, dimension)))
+    # each move as shown (rounded as written) holds against the whole evaluation
+    moves = [f"{key} {old} -> {new}" for key, old, new in found
+             if passes({key: new}, final=True)]
+    return moves

@@ -343,3 +343,38 @@ def dead_weight_parts(spec: Spec, req: Requirements, rise, fall, k2) -> dict:
             w = np.sqrt((rise + fall) / 2.0)
         out[RANGE_OF_SPEED] = w[:, -1] - w[:, 0] >= least * (sp.omega_outer - sp.omega_inner)
     return out
+
+
+def central_load_intervals(spec: Spec, req: Requirements, grid: Grid, m) -> tuple:
+    """The central loads ``c`` at which each flying mass ``m`` (an array) meets every statics
+    requirement of :func:`dead_weight_parts`, as an interval ``(lo, hi)`` per mass (``lo > hi``:
+    none), in closed form, for a type whose forces are affine in the central load
+    (:attr:`Governor.central_load_affine`). With the lever ``jp - ci`` free of ``c``, the
+    speeds squared ``(cf -+ F) / (jp - ci)`` (textbook 3.4(b)) and ``I k^2`` and ``I`` (Hamabe
+    eqs. 18-20) are affine in ``c``, so each requirement at each configuration is ``a + b c >=
+    0``: a half-line. Read from :func:`dead_weight_arrays` at ``c = 0`` and ``c = 1`` kg."""
+    sp = spec.speed
+    k2_lo, k2_hi = k2_limits(spec, req)
+    at = []
+    for c in (0.0, 1.0):
+        cc = np.full(np.shape(m), c)
+        _, rise, fall, k2, inertia = dead_weight_arrays(
+            spec, grid, m, cc, statics.terms(spec, grid.alpha, m[:, None], cc[:, None]))
+        with np.errstate(invalid="ignore"):
+            forms = [fall, k2 * inertia - k2_lo * inertia]
+            if np.isfinite(k2_hi):
+                forms.append(k2_hi * inertia - k2 * inertia)
+            if sp.omega_inner > 0:
+                forms.append(fall - sp.omega_inner**2)
+            forms.append(sp.omega_outer**2 - rise)
+        at.append(forms)
+    lo, hi = np.full(np.size(m), -np.inf), np.full(np.size(m), np.inf)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for a, a1 in zip(*at, strict=True):
+            b = a1 - a
+            root = -a / b
+            lo = np.maximum(lo, np.max(np.where(b > 0, root, -np.inf), axis=1))
+            hi = np.minimum(hi, np.min(np.where(b < 0, root, np.inf), axis=1))
+            never = np.any((b == 0) & ~(a >= 0) | ~np.isfinite(a) | ~np.isfinite(b), axis=1)
+            lo = np.where(never, np.inf, lo)
+    return lo, hi

@@ -349,15 +349,16 @@ def restoring(res) -> list[Table]:
     k2n = dyn.get("k2_normal_rad2_s2")
     if k2n is not None:
         w0sq = res.omega_reference ** 2
-        k2 = res.method.named("k2")
+        k2, ceiling = res.method.named("k2"), res.method.named("resonance")
         out.append(Table(f"Restoring stiffness at the normal configuration ({k2.cite})",
                          ["quantity", "unit", "value"],
                          [["k^2", "1/s^2", cell(k2n)], ["k^2 / omega0^2", "", cell(k2n / w0sq)]],
                          ["stable and clear of resonance for 0 < k^2 / omega0^2 < 1"
-                          if res.spec.governor.k2_rule(getattr(res.spec.requirements,
-                                                               "k2_margin", None))[1] else
-                          "stable for k^2 > 0 (no forcing at the running speed's harmonics, so "
-                          "no ceiling on k^2 / omega0^2)"],
+                          + (f" (the ceiling {ceiling.cite})" if ceiling.borrowed else "")
+                          if ceiling is not None else
+                          "stable for k^2 > 0; this type keeps no ceiling on k^2 / omega0^2 "
+                          "(nothing forces its flying masses at the running speed's "
+                          "harmonics)"],
                          properties=True))
     other = {k: v for k, v in dyn.items() if k not in _DYNAMICS_KEYS}
     if other:

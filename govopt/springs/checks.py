@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..verdict import Check
+from ..verdict import Check, holds
 from . import compression as hc
 from . import extension as he
 from . import fatigue as fat
@@ -463,7 +463,7 @@ def feasible(kind: str, only=None, **kw) -> np.ndarray:
     ok = True
     for r in _rows(kind, kw, only):
         value, limit = r.value(kw), r.limit(kw)
-        ok = ok & (value <= limit if r.sense == "<=" else value >= limit)
+        ok = ok & holds(value, limit, r.sense)  # as each Check passes
     return np.asarray(ok)
 
 

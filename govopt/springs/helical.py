@@ -322,9 +322,6 @@ def surge_detuning(f_e, harmonics_hz):
     return np.min(np.abs(f_e[..., None] / h - 1.0), axis=-1)
 
 
-# ---------------------------------------------------------------- extension springs
-
-
 # ---------------------------------------------------------------- mass
 
 def wire_length(D, n_t):

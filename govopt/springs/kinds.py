@@ -84,11 +84,11 @@ class SpringKind:
         ]
 
 
-#: a helical spring's section: wire, mean coil radius, active turns (Hamabe Ex. 1; EN 13906-1)
+#: a helical spring's section: wire, mean coil radius, active turns (EN 13906-1)
 HELICAL_SECTION = (
     Key("wire_diameter", "length", "the wire's diameter d", source="EN 13906-1", example="4 mm"),
     Key("coil_radius", "length", "the coil's mean radius r (half the mean coil diameter)",
-        source="Hamabe Ex. 1", example="2.4 cm"),
+        source="EN 13906-1", example="2.4 cm"),
     Key("active_turns", "number", "the active turns n", source="EN 13906-1", example=8.5),
 )
 HELICAL_BOUNDS = (

@@ -184,58 +184,53 @@ class _Runner:
             b.put(col, slice(None), [_text(x) for x in v] if inp.text else
                   (np.asarray(v, dtype=object) if inp.integer else v))
 
-    def put_frame(self, b: _Builder, pos, frame: pd.DataFrame, spec, check_units: dict,
+    def put_frame(self, b: _Builder, pos, frame, spec, check_units: dict,
                   objective_unit: str | None = None) -> None:
-        """The evaluator's rows ``frame`` (:func:`govopt.bulk.columns`) at positions ``pos``."""
+        """The evaluator's rows ``frame`` (:func:`govopt.bulk.columns`: a dict of columns, or a
+        pandas frame of them) at positions ``pos``."""
         from ..bulk import OBJECTIVE_COLUMN, RowFigure, row_figures
 
         figures = row_figures(spec)
-        for c in frame.columns:
-            v = frame[c]
+        for c, v in frame.items():
             if c == "status":
-                b.status[pos] = v.to_numpy(dtype=object)
+                b.status[pos] = np.asarray(v, dtype=object)
             elif c == "message":
                 b.message[pos] = ["" if x is None or x is pd.NA else str(x) for x in v]
             elif c == "objective":
                 b.put(Column("objective", "objective", "", "TEXT", "the objective's name"),
-                      pos, v.to_numpy(dtype=object))
+                      pos, np.asarray(v, dtype=object))
             elif c == "objective_value":
-                name = str(frame["objective"].iloc[0]) if "objective" in frame else ""
+                name = str(np.asarray(frame["objective"], dtype=object)[0]) if (
+                    "objective" in frame) else ""
                 fig = figures.get(OBJECTIVE_COLUMN.get(name, ""))
                 unit = objective_unit if objective_unit is not None else (
                     fig.unit if fig else "")
                 b.put(Column("objective value", "objective_value", unit, "REAL",
-                             "the objective's value", *self.shown(unit)), pos,
-                      pd.to_numeric(v, errors="coerce").to_numpy(dtype=float))
+                             "the objective's value", *self.shown(unit)), pos, _numbers(v))
             elif c.startswith(("value: ", "margin: ", "passed: ")):
                 what, _, check = c.partition(": ")
                 if what == "passed":
-                    mask = v.isna().to_numpy()
-                    data = np.where(mask, None, v.fillna(False).to_numpy(dtype=bool)
-                                    .astype(int)).astype(object)
                     b.put(Column("check passed", check, "", "INTEGER",
-                                 "1 where the check holds, 0 where it fails"), pos, data)
+                                 "1 where the check holds, 0 where it fails"), pos,
+                          _verdicts(v))
                 elif what == "margin":
                     b.put(Column("check margin", check, "", "REAL",
-                                 "relative margin (negative: fails)"), pos,
-                          pd.to_numeric(v, errors="coerce").to_numpy(dtype=float))
+                                 "relative margin (negative: fails)"), pos, _numbers(v))
                 else:
                     unit = check_units.get(check, "")
                     b.put(Column("check value", check, unit, "REAL", "the checked value",
-                                 *self.shown(unit)), pos,
-                          pd.to_numeric(v, errors="coerce").to_numpy(dtype=float))
+                                 *self.shown(unit)), pos, _numbers(v))
             else:
                 fig = figures.get(c)
                 if fig is None:  # a figure the declaration does not know (a test finds it)
-                    fig = RowFigure(c, "", c, v.dtype == object)
+                    fig = RowFigure(c, "", c, np.asarray(v).dtype == object)
                 if fig.text:
                     b.put(Column("figure", fig.name, "", "TEXT", fig.label), pos,
                           [None if x is None or x is pd.NA else str(x) for x in v])
                 else:
                     b.put(Column("design" if fig.design else "figure", fig.name, fig.unit,
                                  "REAL", fig.label,
-                                 *self.shown(fig.unit)), pos,
-                          pd.to_numeric(v, errors="coerce").to_numpy(dtype=float))
+                                 *self.shown(fig.unit)), pos, _numbers(v))
 
     # -- evaluate mode --
 
@@ -255,7 +250,7 @@ class _Runner:
     def _evaluate(self, b: _Builder, values: dict) -> None:
         """Evaluate-mode points: grouped by their non-design values (one spec each), the
         design values of a group evaluated at once (:func:`govopt.bulk.evaluate_rows`)."""
-        from ..bulk import evaluate_rows
+        from ..bulk import evaluate_columns, evaluate_rows
 
         n = len(b.points)
         keys = list(values)
@@ -289,13 +284,13 @@ class _Runner:
             good = np.array([e is None for e in bad], dtype=bool)
             if good.any():
                 cols = {f: a[good] for f, a in arrays.items()}
-                frame, units = evaluate_rows(spec, cols, **self.kw)
-                self.put_frame(b, pos[good], self._set_by_the_fitter(spec, cols, frame),
+                out, units = evaluate_columns(spec, cols, **self.kw)
+                self.put_frame(b, pos[good], self._set_by_the_fitter(spec, cols, out),
                                spec, units)
             for j in np.nonzero(~good)[0]:
                 b.error([pos[j]], bad[j])
 
-    def _set_by_the_fitter(self, spec, cols: dict, frame):
+    def _set_by_the_fitter(self, spec, cols: dict, out: dict):
         """A tolerance study's made governors as the fitter sets them, where the spec has one
         (``requirements.adjusting_nut``, ``dashpot_valve``): each that fails as made is tried at
         the fitter's settings, least change first, and its row is the governor as set at the
@@ -307,7 +302,8 @@ class _Runner:
         nut, valve = fitter_of(spec.requirements)
         nut = nut if spec.governor.spring is not None else 0.0
         if not self.study.tolerances or not (nut > 0 or valve > 0):
-            return frame
+            return out
+        frame = pd.DataFrame(out)
         return fit(spec, cols, None, holds(frame), nut, valve, frame=frame,
                    evaluate=lambda rows, _: evaluate_rows(spec, rows, **self.kw)[0])[3]
 
@@ -458,6 +454,24 @@ class _Runner:
             frame = pd.DataFrame({k: [v] for k, v in row.items()})
             self.put_frame(b, [i], frame, spec, res.evaluation.table.units(),
                            objective_unit=opt["unit"])
+
+
+def _numbers(v) -> np.ndarray:
+    """A column's values as floats (NaN where not a number)."""
+    if isinstance(v, np.ndarray) and v.dtype.kind in "fiub":
+        return v.astype(float)
+    return pd.to_numeric(pd.Series(v), errors="coerce").to_numpy(dtype=float)
+
+
+def _verdicts(v) -> np.ndarray:
+    """A check's verdicts as 1, 0 or None (where it does not apply)."""
+    if not isinstance(v, pd.arrays.BooleanArray):
+        v = pd.Series(v).array
+        if not isinstance(v, pd.arrays.BooleanArray):
+            v = pd.array(np.asarray(v, dtype=object), dtype="boolean")
+    mask = np.asarray(v.isna())
+    return np.where(mask, None, v.to_numpy(dtype=bool, na_value=False).astype(int)).astype(
+        object)
 
 
 def _changes(spec, variant) -> dict[str, float]:

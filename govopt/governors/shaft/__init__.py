@@ -133,6 +133,9 @@ class ShaftGovernor(Governor):
     type_name: ClassVar[str] = "shaft"
     title: ClassVar[str] = "Hamabe's shaft governor (Disturbing Actions of a Shaft Governor)"
     coordinate: ClassVar[str] = "angle"
+    source: ClassVar[str] = "hamabe"
+    friction_key: ClassVar[str] = "design.friction_moment"
+    friction_dimension: ClassVar[str] = "moment"
     coordinate_name: ClassVar[str] = "alpha"
     travel: ClassVar[str] = "angle"
     spring: ClassVar[str | None] = "tension"
@@ -374,6 +377,12 @@ class ShaftGovernor(Governor):
         from . import vibration
 
         return vibration.vibration(spec, sd, self.alpha_normal, k2_normal, dashpot=dashpot)
+
+    def vibrations(self, spec, sd, k2_normal, dashpot):
+        """:meth:`vibration` of N designs at once (:func:`.vibration.vibrations`)."""
+        from . import vibration
+
+        return vibration.vibrations(spec, sd, self.alpha_normal, k2_normal, dashpot=dashpot)
 
     def columns(self, x) -> dict:
         """Half length ``l`` of the spring and its arm ``h = dl/dalpha`` (Hamabe eq. 2)."""

@@ -69,6 +69,7 @@ def piecewise_fourier(func, start, n_harmonics: int, nodes: int | None = None):
     ``[start, start + pi]`` and ``[start + pi, start + 2 pi]`` and may jump between them.
 
     ``func(t, piece)`` is evaluated at Gauss-Legendre nodes ``t`` of shape ``start.shape + (2m,)``
+    (its value may have more leading axes: functions sharing their nodes, computed at once)
     with ``piece = +1`` on the first half period and ``-1`` on the second (so a switching term,
     like the valve friction, needs no ``sign`` of a rounded number). Because each half period is
     integrated separately, the jumps cost no accuracy: the coefficients are exact to ~1e-15
@@ -112,11 +113,11 @@ def piecewise_fourier(func, start, n_harmonics: int, nodes: int | None = None):
     weights = np.concatenate([w, w]) * (np.pi / 2.0)
     piece = np.concatenate([np.ones(m), -np.ones(m)])
     t = start[..., None] + (np.pi / 2.0) * (u + 1.0)
-    gw = func(t, piece) * weights
+    gw = func(t, piece) * weights  # may have more leading axes than start (shared nodes)
     orders = np.arange(n_harmonics + 1, dtype=float)
-    a = np.empty(start.shape + (n_harmonics + 1,))
+    a = np.empty(np.broadcast_shapes(gw.shape[:-1], start.shape) + (n_harmonics + 1,))
     b = np.empty_like(a)
-    block = max(1, int(2e7 // max(gw.size, 1)))
+    block = max(1, int(2e7 // max(t.size, 1)))
     for lo in range(0, n_harmonics + 1, block):
         phase = t[..., None] * orders[lo:lo + block]
         a[..., lo:lo + block] = np.einsum("...k,...kn->...n", gw, np.cos(phase)) / np.pi

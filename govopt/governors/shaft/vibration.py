@@ -105,8 +105,10 @@ def _setup(spec: Spec, alpha0, m, inertia, omega0, tangential_inertia, speed_flu
         raise ValueError(f"tangential_inertia must be -1, 0 or +1, got {tangential_inertia!r}")
     g, vg = spec.governor, spec.governor.valve_gear
     omega0 = spec.speed.omega_mean if omega0 is None else omega0
-    alpha0, m, inertia, omega0 = np.broadcast_arrays(*(np.asarray(v, dtype=float)
-                                                       for v in (alpha0, m, inertia, omega0)))
+    # the crank's timing (advance, modulation, switches) needs only alpha0 and omega0: shared by
+    # designs that differ in their masses, so the quadrature's nodes are computed once for them
+    alpha0, omega0 = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (alpha0, omega0)))
+    m, inertia = (np.asarray(v, dtype=float) for v in (m, inertia))
     E2, F2 = _speed_fluctuation(spec, speed_fluctuation)
     if np.any(2.0 * math.hypot(E2, F2) >= omega0):
         raise ValueError("speed fluctuation |E2 + i F2| must be below omega0 / 2 (the crank "
@@ -228,6 +230,11 @@ def forcing_harmonics(spec: Spec, alpha0, m, inertia, omega0=None, n_harmonics: 
     """
     N = spec.analysis.harmonics if n_harmonics is None else int(n_harmonics)
     p = _setup(spec, alpha0, m, inertia, omega0, tangential_inertia, speed_fluctuation)
+    return _harmonics(spec, p, N)
+
+
+def _harmonics(spec: Spec, p: dict, N: int):
+    """``(a, b)`` of :func:`forcing_harmonics` from its parameters ``p`` (:func:`_setup`)."""
     spread = 2.0 * float(np.max(np.hypot(p["eps_E"], p["eps_F"])))
     nodes = harmonics.quadrature_nodes(N, spread)
 
@@ -347,8 +354,13 @@ def _tail_integral(K, k2, omega0):
 def _tail_count(N, k2, omega0):
     """Last harmonic computed explicitly for the truncation estimate: ``N + max(N, 32)``, and at
     least 1.5 times the order of a resonance ``k / omega0``, so the asymptotic rest is monotone."""
-    kmax = float(np.max(np.sqrt(np.maximum(k2, 0.0)) / omega0))
-    return int(max(N + max(N, TAIL_EXPLICIT), math.ceil(1.5 * kmax) + 2))
+    return int(np.max(_tail_counts(N, k2, omega0)))
+
+
+def _tail_counts(N, k2, omega0):
+    """:func:`_tail_count` of each design of ``k2`` (an integer array)."""
+    k = np.sqrt(np.maximum(np.asarray(k2, dtype=float), 0.0)) / omega0
+    return np.maximum(N + max(N, TAIL_EXPLICIT), np.ceil(1.5 * k) + 2).astype(np.int64)
 
 
 def _asymptotic_tail(spec: Spec, p: dict, K, k2, inertia):
@@ -368,38 +380,77 @@ def _synthesize(X, Y, tau):
 
 
 def _peak_to_peak(X, Y):
-    """Peak-to-peak of ``sum_n X_n cos(n tau) + Y_n sin(n tau)`` (``n = 1..N``): sampled by an
-    inverse FFT on a fine grid, then the global maximum and minimum refined by root finding on
-    the derivative (``brentq`` in the bracketing grid cells). Exact to rounding."""
-    N = len(X)
+    """Peak-to-peak of ``sum_n X_n cos(n tau) + Y_n sin(n tau)`` (``n = 1..N``) and the
+    ``tau`` of its top and bottom: :func:`_peak_to_peak_many` of one."""
+    p2p, top, bottom = _peak_to_peak_many(np.atleast_2d(X), np.atleast_2d(Y))
+    return float(p2p[0]), float(top[0]), float(bottom[0])
+
+
+#: designs whose swing is sampled at once (bounds the memory: ~ 2 x 2048 x 16 bytes a design)
+_SWING_BLOCK = 256
+
+
+def _peak_to_peak_many(X, Y):
+    """Peak-to-peak of ``sum_n X_n cos(n tau) + Y_n sin(n tau)`` (``n = 1..N``) of each row of
+    ``X, Y`` (shape ``(designs, N)``) and the ``tau`` of its top and bottom: sampled by an
+    inverse FFT on a fine grid, then the global maximum and minimum refined by a safeguarded
+    Newton iteration on the derivative in the bracketing grid cells. Exact to rounding."""
+    rows, N = X.shape
     if N == 0:
-        return 0.0, 0.0, 0.0
-    from scipy.optimize import brentq  # here, where the swing's extremes are refined
-
+        return np.zeros(rows), np.zeros(rows), np.zeros(rows)
     L = 1 << max(11, int(math.ceil(math.log2(32 * (N + 1)))))
-    spec = np.zeros(L // 2 + 1, dtype=complex)
-    spec[1:N + 1] = (X - 1j * Y) * (L / 2.0)
-    x = np.fft.irfft(spec, n=L)
+    i_top, i_bottom = np.empty(rows, np.int64), np.empty(rows, np.int64)
+    x_top, x_bottom = np.empty(rows), np.empty(rows)
+    for lo in range(0, rows, _SWING_BLOCK):
+        sl = slice(lo, lo + _SWING_BLOCK)
+        spec = np.zeros((X[sl].shape[0], L // 2 + 1), dtype=complex)
+        spec[:, 1:N + 1] = (X[sl] - 1j * Y[sl]) * (L / 2.0)
+        x = np.fft.irfft(spec, n=L, axis=-1)
+        i_top[sl], i_bottom[sl] = np.argmax(x, axis=1), np.argmin(x, axis=1)
+        x_top[sl] = np.take_along_axis(x, i_top[sl, None], axis=1)[:, 0]
+        x_bottom[sl] = np.take_along_axis(x, i_bottom[sl, None], axis=1)[:, 0]
     tau = 2.0 * np.pi * np.arange(L) / L
-    n = np.arange(1, N + 1)
-
-    def dx(t):
-        return float(np.sum(n * (-X * np.sin(n * t) + Y * np.cos(n * t))))
-
-    def refine(i, sense):
-        lo, hi = tau[i] - 2.0 * np.pi / L, tau[i] + 2.0 * np.pi / L
-        try:
-            if dx(lo) * dx(hi) < 0:
-                t = brentq(dx, lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)  # rtol: its least
-                v = float(_synthesize(X, Y, np.array([t]))[0])
-                return max(v, x[i]) if sense > 0 else min(v, x[i]), t
-        except RuntimeError:  # no convergence: the grid's value stands
-            pass
-        return float(x[i]), float(tau[i])
-
-    top, t_top = refine(int(np.argmax(x)), +1)
-    bottom, t_bottom = refine(int(np.argmin(x)), -1)
+    top, t_top = _refine(X, Y, tau[i_top], x_top, 2.0 * np.pi / L, np.maximum)
+    bottom, t_bottom = _refine(X, Y, tau[i_bottom], x_bottom, 2.0 * np.pi / L, np.minimum)
     return top - bottom, t_top, t_bottom
+
+
+def _refine(X, Y, t0, x0, h, better):
+    """The extremum of each row's series near the grid's ``t0`` (value ``x0``): the root of the
+    derivative in ``[t0 - h, t0 + h]`` where it changes sign there (Newton, falling back to
+    bisection when a step leaves the bracket, to a step of ``1e-13 (1 + |t|)``: the value at a
+    stationary point moves by the square of that), the ``better`` of its value and the grid's;
+    else the grid's."""
+    n = np.arange(1, X.shape[1] + 1)
+
+    def slope(t, X, Y, second=False):
+        c, s = np.cos(n * t[:, None]), np.sin(n * t[:, None])
+        if second:
+            return -np.sum(n * n * (X * c + Y * s), axis=1)
+        return np.sum(n * (Y * c - X * s), axis=1)
+
+    lo, hi = t0 - h, t0 + h
+    f_lo = slope(lo, X, Y)
+    bracket = f_lo * slope(hi, X, Y) < 0
+    t = t0.copy()
+    todo = np.nonzero(bracket)[0]
+    for _ in range(100):
+        if not todo.size:
+            break
+        tt, Xt, Yt = t[todo], X[todo], Y[todo]
+        f, fp = slope(tt, Xt, Yt), slope(tt, Xt, Yt, second=True)
+        same = np.sign(f) == np.sign(f_lo[todo])
+        lo[todo], hi[todo] = np.where(same, tt, lo[todo]), np.where(same, hi[todo], tt)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            nxt = tt - f / fp
+        nxt = np.where((nxt >= lo[todo]) & (nxt <= hi[todo]), nxt, 0.5 * (lo[todo] + hi[todo]))
+        nxt = np.where(f == 0, tt, nxt)
+        t[todo] = nxt
+        tol = 1e-13 * (1.0 + np.abs(tt))
+        todo = todo[(np.abs(nxt - tt) > tol) & (hi[todo] - lo[todo] > tol)]
+    c, s = np.cos(n * t[:, None]), np.sin(n * t[:, None])
+    value = np.sum(X * c + Y * s, axis=1)
+    return np.where(bracket, better(value, x0), x0), t
 
 
 # ---------------------------------------------------------------------------------------------
@@ -578,44 +629,156 @@ def vibration(spec: Spec, sd: SpringDesign, alpha0: float, k2: float | None = No
     >>> round(float(np.degrees(v.amplitude(1))), 2)
     8.43
     """
+    return vibrations(spec, sd, alpha0, k2, omega0, n_harmonics, dashpot=dashpot,
+                      speed_fluctuation=speed_fluctuation,
+                      tangential_inertia=tangential_inertia)[0]
+
+
+@dataclass(frozen=True)
+class Vibrations:
+    """The steady forced vibrations of N designs about one configuration (:func:`vibrations`),
+    as arrays over the designs (SI); ``self[i]`` is design ``i``'s :class:`VibrationResult`.
+
+    ``k2``, ``inertia``, ``dashpot``, ``ratio`` (the tangential inertia ratio), ``tail`` (the
+    truncation error), ``peak_to_peak_rad``: shape ``(N,)``; ``extrema``: ``(N, 2)``;
+    ``a``, ``b`` (the forcing's moments) and ``response`` (:func:`harmonic_response`'s arrays):
+    ``(N, n_harmonics + 1)``, orders ``0 .. n_harmonics``."""
+
+    alpha0: float
+    delta: float
+    omega0: float
+    n_harmonics: int
+    speed_fluctuation: tuple[float, float]
+    tangential_inertia: int
+    q: float
+    k2: np.ndarray
+    inertia: np.ndarray
+    dashpot: np.ndarray
+    ratio: np.ndarray
+    a: np.ndarray
+    b: np.ndarray
+    response: dict
+    peak_to_peak_rad: np.ndarray
+    extrema: np.ndarray
+    tail: np.ndarray
+
+    def __len__(self) -> int:
+        return self.k2.size
+
+    def __getitem__(self, i: int) -> VibrationResult:
+        N, r = self.n_harmonics, {k: v[i] for k, v in self.response.items()}
+        a, b = self.a[i], self.b[i]
+        harmonics = tuple(
+            {"order": n, "moment_cos_N_m": float(a[n]), "moment_sin_N_m": float(b[n]),
+             "cos_rad": float(r["cos"][n]), "sin_rad": float(r["sin"][n]),
+             "amplitude_rad": float(r["amplitude"][n]), "phase_rad": float(r["phase"][n]),
+             "detuning": float(r["detuning"][n]), "resonant": bool(r["resonant"][n])}
+            for n in range(1, N + 1))
+        p2p = float(self.peak_to_peak_rad[i])
+        return VibrationResult(
+            alpha0=self.alpha0, delta=self.delta, omega0=self.omega0, k2=float(self.k2[i]),
+            inertia=float(self.inertia[i]), dashpot=float(self.dashpot[i]), n_harmonics=N,
+            speed_fluctuation=self.speed_fluctuation,
+            tangential_inertia=self.tangential_inertia,
+            tangential_inertia_ratio=float(self.ratio[i]), harmonics=harmonics,
+            mean_offset_rad=float(r["cos"][0]), peak_to_peak_rad=p2p,
+            eccentric_travel_m=float(self.q * p2p), truncation_error_rad=float(self.tail[i]),
+            resonant_orders=tuple(n for n in range(1, N + 1) if r["resonant"][n]),
+            extrema_tau=tuple(float(t) for t in self.extrema[i]))
+
+
+def vibrations(spec: Spec, sd: SpringDesign, alpha0: float, k2=None, omega0: float | None = None,
+               n_harmonics: int | None = None, *, dashpot="design", speed_fluctuation=None,
+               tangential_inertia: int = 0) -> Vibrations:
+    """:func:`vibration` of N designs at once (Hamabe, Part II, eqs. 18-22): ``sd``'s mass and
+    inertia, ``k2`` and ``dashpot`` arrays of N (or broadcasting to them), one configuration
+    ``alpha0`` and speed ``omega0``. The forcing's harmonics, the responses, the swing's
+    extremes and the truncation estimate are computed for all the designs together (the
+    quadrature's nodes once); design ``i``'s numbers are :func:`vibration`'s for it.
+
+    Parameters
+    ----------
+    spec : Spec [-]
+        A shaft-governor spec (SI inside).
+    sd : SpringDesign [-]
+        The designs (``m`` [kg], ``inertia`` [kg m^2]: arrays or numbers).
+    alpha0 : float [rad]
+        The equilibrium configuration vibrated about.
+    k2 : float or array or None [1/s^2]
+        Restoring stiffness per unit inertia (default from the statics).
+    omega0 : float or None [rad/s]
+        Mean shaft speed (default the spec's mean speed).
+    n_harmonics : int or None [-]
+        Highest harmonic (default the spec's ``analysis.harmonics``).
+    dashpot : float or array or None or str [N m s/rad]
+        ``f``; ``"design"`` (default) takes the spec's; None is undamped.
+    speed_fluctuation : tuple of float or None [rad/s]
+        ``(E2, F2)`` of eq. (19), overriding the spec's engine.
+    tangential_inertia : int [-]
+        -1, 0 or +1 (see the module docstring).
+
+    Returns
+    -------
+    Vibrations [rad]
+        The N designs' vibrations (``peak_to_peak_rad`` an array; ``[i]`` one result).
+
+    References
+    ----------
+    [hamabe] Part II, eqs. (18)-(22), Example 2.
+
+    Examples
+    --------
+    Hamabe's Example 2, case (a), undamped and without speed fluctuation, at two stiffnesses:
+    the first as :func:`vibration` gives it, 8.43 deg for the first harmonic:
+
+    >>> import govopt, govopt.examples
+    >>> from govopt.analysis.statics import spring_design
+    >>> spec = govopt.load_spec(govopt.examples.example("hamabe-a"))
+    >>> v = vibrations(spec, spring_design(spec), spec.governor.alpha_normal, [360.0, 300.0],
+    ...                np.sqrt(630.0), dashpot=None, speed_fluctuation=(0, 0))
+    >>> len(v), round(float(np.degrees(v[0].amplitude(1))), 2)
+    (2, 8.43)
+    """
     g = spec.governor
     omega0 = spec.speed.omega_mean if omega0 is None else float(omega0)
     if k2 is None:
-        k2 = float(restoring_k2(spec, alpha0, sd, omega0**2))
-    k2 = float(k2)
+        k2 = restoring_k2(spec, alpha0, sd, omega0**2)
     N = spec.analysis.harmonics if n_harmonics is None else int(n_harmonics)
-    f = float(_dashpot(spec, dashpot))
-    inertia, m = float(sd.inertia), float(sd.m)
+    m, inertia, k2, f = (np.array(v, dtype=float) for v in np.broadcast_arrays(*(
+        np.ravel(np.asarray(v, dtype=float)) for v in (sd.m, sd.inertia, k2,
+                                                       _dashpot(spec, dashpot)))))
     E2, F2 = _speed_fluctuation(spec, speed_fluctuation)
-    K = _tail_count(N, k2, omega0)
-    a, b = forcing_harmonics(spec, alpha0, m, inertia, omega0, K,
-                             speed_fluctuation=(E2, F2), tangential_inertia=tangential_inertia)
-    r = harmonic_response(a, b, k2, inertia, omega0, f)
     p = _setup(spec, alpha0, m, inertia, omega0, tangential_inertia, (E2, F2))
-    harmonics = tuple(
-        {"order": n, "moment_cos_N_m": float(a[n]), "moment_sin_N_m": float(b[n]),
-         "cos_rad": float(r["cos"][n]), "sin_rad": float(r["sin"][n]),
-         "amplitude_rad": float(r["amplitude"][n]), "phase_rad": float(r["phase"][n]),
-         "detuning": float(r["detuning"][n]), "resonant": bool(r["resonant"][n])}
-        for n in range(1, N + 1))
-    resonant_orders = tuple(n for n in range(1, N + 1) if r["resonant"][n])
-    if np.any(np.isinf(r["amplitude"][1:N + 1])):
-        p2p, extrema = math.inf, (math.nan, math.nan)
-    else:
-        p2p, t_top, t_bottom = _peak_to_peak(r["cos"][1:N + 1], r["sin"][1:N + 1])
-        extrema = (t_top, t_bottom)
-    tail = float(np.sum(r["amplitude"][N + 1:]))
-    tail += float(_asymptotic_tail(spec, p, K, k2, inertia))
-    ratio = (abs(inertia - m * g.a * g.rho * math.cos(alpha0)) / (m * g.a * g.rho
-                                                                    * math.sin(alpha0)))
-    return VibrationResult(
-        alpha0=float(alpha0), delta=float(p["delta"]), omega0=omega0, k2=k2, inertia=inertia,
-        dashpot=f, n_harmonics=N, speed_fluctuation=(E2, F2),
-        tangential_inertia=tangential_inertia, tangential_inertia_ratio=ratio,
-        harmonics=harmonics,
-        mean_offset_rad=float(r["cos"][0]),
-        peak_to_peak_rad=float(p2p), eccentric_travel_m=float(g.q * p2p),
-        truncation_error_rad=tail, resonant_orders=resonant_orders, extrema_tau=extrema)
+    n = k2.size
+    a, b = np.empty((n, N + 1)), np.empty((n, N + 1))
+    resp = {k: np.empty((n, N + 1), dtype=bool if k == "resonant" else float)
+            for k in ("cos", "sin", "amplitude", "phase", "detuning", "resonant")}
+    tail = np.empty(n)
+    counts = _tail_counts(N, k2, omega0)
+    for K in np.unique(counts):  # the explicit tail's length: one group unless k^2 is large
+        rows = np.nonzero(counts == K)[0]
+        K = int(K)
+        ak, bk = _harmonics(spec, {k: v[rows] if k in ("lever", "euler") else v
+                                   for k, v in p.items()}, K)
+        r = harmonic_response(ak, bk, k2[rows], inertia[rows], omega0, f[rows])
+        a[rows], b[rows] = ak[:, :N + 1], bk[:, :N + 1]
+        for k in resp:
+            resp[k][rows] = r[k][:, :N + 1]
+        tail[rows] = (np.sum(r["amplitude"][:, N + 1:], axis=-1)
+                      + _asymptotic_tail(spec, p, K, k2[rows], inertia[rows]))
+    p2p = np.full(n, math.inf)
+    extrema = np.full((n, 2), math.nan)
+    finite = ~np.isinf(resp["amplitude"][:, 1:]).any(axis=1)
+    if finite.any():
+        p2p[finite], extrema[finite, 0], extrema[finite, 1] = _peak_to_peak_many(
+            resp["cos"][finite, 1:], resp["sin"][finite, 1:])
+    lever = m * g.a * g.rho
+    ratio = np.abs(inertia - lever * math.cos(alpha0)) / (lever * math.sin(alpha0))
+    return Vibrations(alpha0=float(alpha0), delta=float(p["delta"]), omega0=omega0,
+                      n_harmonics=N, speed_fluctuation=(E2, F2),
+                      tangential_inertia=tangential_inertia, q=g.q, k2=k2, inertia=inertia,
+                      dashpot=f, ratio=ratio, a=a, b=b, response=resp, peak_to_peak_rad=p2p,
+                      extrema=extrema, tail=tail)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -18,6 +18,9 @@ API; the sheets' conventions, :mod:`govopt.report.excel.book`):
 * **Spec** - the inputs with what each means; **Method** - the type's own equations, sources
   and fidelity settings; **Model** - the model's internals (:mod:`.record`).
 
+The printed record is the sheets of :data:`PRINTED` (Summary, Design, Checks, Method); the
+others keep their page set up but print only when a reader sets their print range.
+
 Every heading that cites a source reads the governor type's method
 (:meth:`govopt.governors.base.Governor.method`); no sheet holds a type's method text. The writer
 formats only: every number comes from the result or from govopt's own functions. The file is
@@ -69,8 +72,9 @@ from .summary import build_summary, drawing_data
 if TYPE_CHECKING:
     from ...result import Result
 
-__all__ = ["ENGINEERING", "GOVOPT", "NAME", "NOTE", "RELDIFF", "SHEETS", "SHOWN_IN_CHECKS", "SI",
-           "SI_UNIT", "UNIT", "VALUE", "build_workbook", "engineering", "extent", "layout",
+__all__ = ["ENGINEERING", "GOVOPT", "NAME", "NOTE", "PRINTED", "RELDIFF", "SHEETS",
+           "SHOWN_IN_CHECKS", "SI", "SI_UNIT", "UNIT", "VALUE", "build_workbook", "engineering",
+           "extent", "layout",
            "paginate", "print_titles", "printed_font", "sheets", "tables", "write_workbook"]
 
 #: The Summary's body text (pt): 8 pt printed at the least scale, so that its page holds the
@@ -80,6 +84,10 @@ SUMMARY_PT = 10.0
 #: a spring: :func:`sheets`).
 SHEETS = ("Summary", "Design", "Checks", "Optimisation", "Characteristic", "Spring",
           "Dynamics", "Spec", "Method", "Model")
+#: The sheets a printed record holds, what a colleague reads and signs: the answer, the design
+#: with its formulas, the checks, the method and its sources. The others are there on screen
+#: and print only when asked (:attr:`~govopt.report.excel.book.Sheet.printed`).
+PRINTED = ("Summary", "Design", "Checks", "Method")
 
 
 def sheets(result: Result) -> tuple[str, ...]:
@@ -115,7 +123,8 @@ def build_workbook(result: Result, *, command: str = "") -> Workbook:
     res = result
     wb = new_workbook()
     made = {name: Sheet(wb.create_sheet(name), one_page=name == "Summary",
-                        body_pt=SUMMARY_PT if name == "Summary" else BODY_PT)
+                        body_pt=SUMMARY_PT if name == "Summary" else BODY_PT,
+                        printed=name in PRINTED)
             for name in sheets(res)}
     model = FormulaSheet(wb, made["Model"])
     build_design(wb, made["Design"], model, res)

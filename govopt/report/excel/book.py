@@ -12,7 +12,7 @@ header repeats); :func:`finish` then aligns, sizes and prints the sheet:
 * **numbers**: each with a display format for its unit (:data:`FORMATS`), the stored value
   keeping every digit; a word where a number is not finite;
 * **printing**: A4, portrait where the printed columns fit, else landscape, at a fixed scale
-  of at least :data:`MIN_SCALE` % (so no text prints under 8 pt: :func:`printed_font`), the
+  of at least :func:`least_scale` (so no text prints under 8 pt: :func:`printed_font`), the
   columns chosen so that the page's width holds them; page breaks that keep a table with its
   title and header and its last rows (:func:`paginate`); a table that runs onto another page
   repeats its title and header (:func:`print_titles`); a header naming the document on every
@@ -58,8 +58,11 @@ __all__ = ["BOLD", "FORMATS", "HEADER_FILL", "INPUT_FILL", "ITALIC", "MIN_SCALE"
            "tables", "unit_label"]
 
 #: The body text's size (pt; openpyxl's and Excel's default), the headings', and the smallest
-#: scale a sheet prints at: charts' text is 10 pt, so 80 % prints it at 8 pt.
+#: scale a sheet with a chart prints at: charts' text is 10 pt, so 80 % prints it at 8 pt.
 BODY_PT, TITLE_PT, MIN_SCALE = 11.0, 13.0, 80
+#: The smallest printed text (pt): a sheet without charts prints at the least scale that keeps
+#: its smallest cell font at this size (:func:`least_scale`: 73 % for 11 pt).
+PRINTED_PT = 8.0
 #: The body font (openpyxl's default, named on every font: a cell's font without a name falls
 #: back to the renderer's serif).
 FONT = "Calibri"
@@ -202,6 +205,12 @@ class Sheet:
     #: the body text's size on this sheet (pt): the Summary's 10 pt prints at 8 pt at
     #: :data:`MIN_SCALE`; its fonts are scaled to it when the sheet is finished
     body_pt: float = BODY_PT
+    #: whether the sheet is in the printed record; one that is not keeps its page set up but
+    #: an empty print range (LibreOffice and Excel print none of it), until a reader sets its
+    #: range to :attr:`area` and asks for it
+    printed: bool = True
+    #: the range the sheet prints when asked (``A1:H70``; set by :func:`finish`)
+    area: str = ""
 
     def __post_init__(self):
         _LAYOUTS[self.ws] = self
@@ -306,15 +315,17 @@ class Sheet:
         self.keeps.append((first, last))
 
     def keep_table(self, title: int, last: int, rows: int = 3, header: int | None = None,
-                   top: int = 1) -> None:
-        """A table from its title row to ``last``: whole on a page where it fits on one; else
-        its title and header never end a page and its last ``rows`` rows never start one
-        alone. ``header``: its column-header row (default the row under the title; a shared
-        header row above it for a section of a longer table, whose rows from ``top`` repeat
-        above the section where it continues; the title itself for a section with none)."""
+                   top: int = 1, whole: bool = True) -> None:
+        """A table from its title row to ``last``: whole on a page where it fits on one (with
+        ``whole``; without, a long table fills the page it starts on); else its title and
+        header never end a page and its last ``rows`` rows never start one alone.
+        ``header``: its column-header row (default the row under the title; a shared header
+        row above it for a section of a longer table, whose rows from ``top`` repeat above the
+        section where it continues; the title itself for a section with none)."""
         header = title + 1 if header is None else header
         self.tables.append(PrintedTable(title, header, last, top))
-        self.keep(title, last)
+        if whole or last - title <= 2 * rows + 2:
+            self.keep(title, last)
         if last - title > 2 * rows + 2:
             self.keep(title, max(title, header) + 1 + rows)
             self.keep(last - rows, last)
@@ -478,6 +489,16 @@ def printed_font(sheet: Sheet) -> float:
     return min(sizes, default=BODY_PT) * sheet.scale / 100.0
 
 
+def least_scale(sheet: Sheet) -> int:
+    """The least scale (%) a sheet prints at with no text under :data:`PRINTED_PT`:
+    :data:`MIN_SCALE` where it has a chart (10 pt text), else what its smallest cell font
+    allows (73 % for the body's 11 pt)."""
+    if sheet.charts:
+        return MIN_SCALE
+    sizes = [c.font.sz or BODY_PT for c in sheet.cells.values() if c.value is not None]
+    return min(100, math.ceil(100 * PRINTED_PT / min(sizes, default=BODY_PT)))
+
+
 def finish(sheet: Sheet, header: str, right: str = "") -> None:
     """Make a written sheet print readably: every cell aligned at the top, rows tall enough
     for their wrapped text, the page set up (:func:`print_setup`) with ``header`` (left) and
@@ -559,26 +580,21 @@ def _free_right(sheet: Sheet, cell) -> bool:
 
 def print_setup(sheet: Sheet, header: str = "", right: str = "") -> None:
     """Print the sheet readably: A4, portrait where its printed columns fit the page, else
-    landscape; a fixed scale, at most 100 % and at least :data:`MIN_SCALE` %, fitting the
+    landscape; a fixed scale, at most 100 % and at least :func:`least_scale`, fitting the
     printed width (so no text prints under 8 pt); page breaks that keep tables together
     (:func:`paginate`), the header of a table that runs on repeated on each page
     (:func:`print_titles`), a print area covering the cells and charts (not a chart's data
-    placed to the right), ``header`` and ``right`` at the top of every page and the sheet's
-    name and ``page x of y`` at the foot."""
+    placed to the right; an empty one for a sheet outside the printed record), ``header`` and
+    ``right`` at the top of every page and the sheet's name and ``page x of y`` at the foot."""
     ws = sheet.ws
-    cols = sheet.print_cols or ws.max_column
-    rows = max((r for (r, c), cell in sheet.cells.items() if c <= cols and cell.value is not None),
-               default=1)
-    for chart, anchor in sheet.charts:
-        c, r = extent(sheet, anchor, chart.width, chart.height)
-        cols, rows = max(cols, c), max(rows, r)
+    cols, rows = print_extent(sheet)
     width = SPREADSHEET_WIDTH * sum(px(ws.column_dimensions[get_column_letter(j)].width)
                                     for j in range(1, cols + 1))
     portrait = PAGE_PX["portrait"][0] / width
     orientation = "portrait" if portrait >= 0.95 and not sheet.one_page else "landscape"
     page_w, page_h = PAGE_PX[orientation]
-    sheet.scale = MIN_SCALE if sheet.one_page else max(MIN_SCALE,
-                                                       min(100, int(100 * page_w / width)))
+    least = least_scale(sheet)
+    sheet.scale = least if sheet.one_page else max(least, min(100, int(100 * page_w / width)))
     ws.page_setup.paperSize = ws.PAPERSIZE_A4
     ws.page_setup.orientation = orientation
     ws.page_setup.scale = sheet.scale
@@ -586,7 +602,11 @@ def print_setup(sheet: Sheet, header: str = "", right: str = "") -> None:
     ws.page_margins = PageMargins(left=0.5, right=0.5, top=0.6, bottom=0.6, header=0.3,
                                   footer=0.3)
     ws.print_options.gridLines = False
-    ws.print_area = f"A1:{get_column_letter(cols)}{rows}"
+    sheet.area = f"A1:{get_column_letter(cols)}{rows}"
+    # a sheet outside the record: a blank row below its rows, across its printed columns (a
+    # reader of the print range finds them), whose page is not printed
+    ws.print_area = sheet.area if sheet.printed else \
+        f"A{rows + 2}:{get_column_letter(cols)}{rows + 2}"
     if header:  # '&' starts a header's code: doubled, it is the character
         ws.oddHeader.left.text = xml_safe(header).replace("&", "&&")
     if right:
@@ -597,6 +617,18 @@ def print_setup(sheet: Sheet, header: str = "", right: str = "") -> None:
     repeat = print_titles(sheet)
     if repeat is not None:
         ws.print_title_rows = f"{repeat[0]}:{repeat[1]}"
+
+
+def print_extent(sheet: Sheet) -> tuple[int, int]:
+    """The last column and row a sheet prints: its printed columns' cells and its charts (not
+    a chart's data placed to the right)."""
+    cols = sheet.print_cols or sheet.ws.max_column
+    rows = max((r for (r, c), cell in sheet.cells.items() if c <= cols and cell.value is not None),
+               default=1)
+    for chart, anchor in sheet.charts:
+        c, r = extent(sheet, anchor, chart.width, chart.height)
+        cols, rows = max(cols, c), max(rows, r)
+    return cols, rows
 
 
 def print_titles(sheet: Sheet) -> tuple[int, int] | None:

@@ -37,7 +37,7 @@ SHOWN_IN_CHECKS = tuple(SHOWN)
 HEADERS = ["check", "value", "unit", "sense", "limit", "margin", "result", "binding (active)",
            "source"]
 #: The widths: a declared table under the checks (quantity, unit, value) reads in A-C.
-WIDTHS = {1: 32, 2: 12, 3: 12, 4: 6, 5: 12, 6: 9, 7: 7, 8: 8, 9: 29}
+WIDTHS = {1: 32, 2: 12, 3: 12, 4: 6, 5: 12, 6: 9, 7: 7, 8: 8, 9: 42}
 
 
 def build_checks(sheet: Sheet, res: Result) -> None:
@@ -64,7 +64,8 @@ def build_checks(sheet: Sheet, res: Result) -> None:
         row += 1
     last = row - 1
     sheet.print_cols = len(HEADERS)
-    sheet.keep_table(1, last + 4, header=1)  # with the binding and failed lines under it
+    # with the binding and failed lines under it, and three checks at least beside them
+    sheet.keep_table(1, last + 4, rows=3 + 4, header=1)
     if res.checks:
         green = FormulaRule(formula=['$G2="PASS"'], fill=PASS_FILL, font=PASS_FONT)
         red = FormulaRule(formula=['$G2="FAIL"'], fill=FAIL_FILL, font=FAIL_FONT)

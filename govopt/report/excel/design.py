@@ -177,9 +177,11 @@ class FormulaSheet:
         self.row += 1
 
     def close(self) -> None:
-        """The printed blocks: each section whole where it fits, under the sheet's header."""
+        """The printed blocks: each section under the sheet's header (repeated on every page),
+        filling the page it starts on, its title never alone at a page's foot nor its last rows
+        alone at a page's head."""
         for first, end in zip(self.titles, [*self.titles[1:], self.row + 1], strict=True):
-            self.sheet.keep_table(first, end - 2, header=1)
+            self.sheet.keep_table(first, end - 2, header=1, whole=False)
         self.sheet.keep_table(1, self.row - 1, header=1)
 
 

@@ -50,14 +50,18 @@ def inputs_table(sheet: Sheet, title: str, entries, path: str | None, show=shown
     sheet.print_cols = len(SPEC_HEADERS)
 
 
-METHOD_WIDTHS = {1: 22, 2: 22, 3: 44, 4: 32}
+#: The Method sheet's columns: as wide as a landscape page holds at the least scale, so that
+#: its text wraps to few lines.
+METHOD_WIDTHS = {1: 26, 2: 28, 3: 50, 4: 42}
 
 
 def build_method(sheet: Sheet, res: Result) -> None:
-    """The type's method (its declaration, :meth:`Governor.method`): a small table a topic of
-    its equations with their sources, the fidelity settings that apply with their values, the
-    spring's free length in words, how the workbook is made, and last the bibliography (the
-    method's and the checks' sources: the one table that may run onto another page)."""
+    """The type's method (its declaration, :meth:`Governor.method`): one table of its
+    equations with their sources, a section a topic, the fidelity settings that apply with
+    their values, the spring's free length in words, the bibliography (the method's and the
+    checks' sources, each with what this record uses it for: :meth:`Method.uses`), and last how
+    the workbook is made. Printed in the record, so written to fill its pages: a table may run
+    onto another page (its header repeated), no blank row between a table's sections."""
     from ...governors.base import TOPICS
 
     method = res.method
@@ -66,29 +70,31 @@ def build_method(sheet: Sheet, res: Result) -> None:
     sheet.title(1, f"Method: {method.title}")
     sheet.put(2, 1, "What govopt computes for this governor, and from which source: the "
                     "type's own declaration, beside its physics.").font = ITALIC
+    sheet.header(3, ["what", "", "equation", "source (fidelity settings)"])
     row = 4
     for topic, heading in TOPICS.items():
         equations = method.of(topic)
         if not equations:
             continue
         sheet.title(row, heading, font=BOLD)
-        sheet.header(row + 1, ["what", "", "equation", "source (fidelity settings)"])
-        first, row = row, row + 2
+        sheet.keep(row, row + 1)  # a topic's heading never alone at a page's foot
+        row += 1
         for e in equations:
             sheet.paragraph(row, e.what, 1, 2, font=None)
             sheet.put(row, 3, e.formula).alignment = WRAP
             settings = f" ({', '.join(e.settings)})" if e.settings else ""
             sheet.put(row, 4, e.cite + settings).alignment = WRAP
             row += 1
-        sheet.keep_table(first, row - 1)
-        row += 1
+    # the equations: one table, the sheet's title and its header repeated where it runs on
+    sheet.keep_table(1, row - 1, header=3, whole=False)
+    row += 1
     sheet.title(row, "Fidelity settings that apply to this governor", font=BOLD)
-    sheet.header(row + 1, ["setting", "what it chooses", "value in this spec", ""])
+    sheet.header(row + 1, ["setting", "what it chooses", "", "value in this spec"])
     first, row = row, row + 2
     for s in method.settings:
         sheet.put(row, 1, s.key)
-        sheet.put(row, 2, s.meaning).alignment = WRAP
-        sheet.put(row, 3, str(s.value).lower() if isinstance(s.value, bool) else s.value,
+        sheet.paragraph(row, s.meaning, 2, 3, font=None)
+        sheet.put(row, 4, str(s.value).lower() if isinstance(s.value, bool) else s.value,
                   sig_format(s.value))
         row += 1
     sheet.keep_table(first, row - 1)
@@ -98,6 +104,17 @@ def build_method(sheet: Sheet, res: Result) -> None:
         sheet.paragraph(row + 1, method.free_length, 1, 4, font=None)
         sheet.keep(row, row + 1)
         row += 3
+    uses = res.method.uses(tuple((c.name, c.source) for c in res.checks))
+    sheet.title(row, "Sources (of the method and of the checks)", font=BOLD)
+    sheet.header(row + 1, ["key", "citation", "", "used in this record for"])
+    first, row = row, row + 2
+    for key, use in uses.items():
+        sheet.put(row, 1, key)
+        sheet.paragraph(row, reference(key).citation, 2, 3, font=None)
+        sheet.put(row, 4, use).alignment = WRAP
+        row += 1
+    sheet.keep_table(first, row - 1)
+    row += 1
     sheet.title(row, "This workbook", font=BOLD)
     first, row = row, row + 1
     for label, text in _WORKBOOK_NOTES:
@@ -105,48 +122,20 @@ def build_method(sheet: Sheet, res: Result) -> None:
         sheet.paragraph(row, text, 2, 4, font=None)
         row += 1
     sheet.keep_table(first, row - 1, header=first)
-    row += 1
-    keys = method.sources(tuple(c.source for c in res.checks))
-    sheet.title(row, "Sources (of the method and of the checks)", font=BOLD)
-    sheet.header(row + 1, ["key", "citation", "", "used for"])
-    first, row = row, row + 2
-    for key in keys:
-        ref = reference(key)
-        sheet.put(row, 1, key)
-        sheet.paragraph(row, ref.citation, 2, 3, font=None)
-        sheet.put(row, 4, ref.use).alignment = WRAP
-        row += 1
-    sheet.keep_table(first, row - 1)
 
 
 #: How the workbook is made, for its reader (on the Method sheet).
 _WORKBOOK_NOTES = (
-    ("sheets", "Summary (the answer: verdict, design, the checks to watch, the characteristic, "
-               "the governor drawn), Design (live formulas), Checks, Optimisation (for a "
-               "design), Characteristic, Spring "
-               "(where the governor has one), Dynamics, Spec (the inputs), Method (this sheet), "
-               "Model (the model's internals). docs/how-to/read-the-workbook.md tells more."),
-    ("units", "Engineering units where a person reads (mm, N/mm, MPa, rpm, deg), each column or "
-              "row with its unit; the Design sheet's formulas work in SI (m, kg, s, N, Pa, "
-              "rad) on its defined names, the SI cells right of its printed page."),
-    ("live", "The Design sheet's blue cells are formulas on its yellow inputs: edit an input "
-             "and they follow; every other number is govopt's value when the workbook was "
-             "written. A reader that does not recalculate (pandas, a previewer) finds govopt's "
-             "value of each formula in the Design sheet's 'govopt value' column."),
-    ("words", "yes/no for booleans; 'never' for a time that never comes (a response that never "
-              "reaches or never settles at its new equilibrium); 'not decided' for a settling "
-              "time beyond what the solver's time grid resolves; 'unbounded' for an unstable "
+    ("units", "Engineering units where a person reads (mm, N/mm, MPa, rpm, deg); the Design "
+              "sheet's formulas work in SI on its defined names, right of its printed page."),
+    ("live", "The Design sheet's blue cells are formulas on its yellow inputs; every other "
+             "number is govopt's value when the workbook was written (beside each formula, "
+             "in 'govopt value', for a reader that does not recalculate)."),
+    ("words", "yes/no for booleans; 'never' for a time that never comes; 'not decided' for a "
+              "settling time beyond the solver's time grid; 'unbounded' for an unstable "
               "excursion; a blank cell is not defined."),
-    ("printing", "A4 at a fixed scale (text never under 8 pt), landscape where wide; page "
-                 "breaks keep a table with its title and header and a chart with its rows; a "
-                 "table that runs onto another page repeats its title and header; chart data "
-                 "beside a sheet's printed columns are not printed; every page names the "
-                 "design at its top and gives 'page x of y' at its foot."),
+    ("printing", "The record is Summary, Design, Checks and Method. The other sheets have an "
+                 "empty print range: to print one, set its range (LibreOffice: Format > Print "
+                 "Ranges > Edit, entire sheet; Excel: Page Layout > Print Area > Clear). Text "
+                 "never under 8 pt; a table that runs onto another page repeats its header."),
 )
-
-
-def build_model(sheet: Sheet, res: Result) -> None:
-    """The Model sheet's title and what it holds (its constants are written by the Design
-    sheet's writer, :func:`govopt.report.excel.design.model_constants`, the drawing's data by
-    the Summary's)."""
-    sheet.title(1, "Model: the model's internals (for checking govopt, not for the design)")

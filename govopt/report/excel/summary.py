@@ -333,9 +333,15 @@ def _drawing_chart(res: Result, sheet: Sheet, series: list, height: float = DRAW
 
     chart.display_blanks = "gap"
     chart.legend = None  # the title names the configurations' colours
-    plot_w, plot_h = 0.78, 0.70  # the plot area's share of the chart, fixed below
-    chart.plot_area.layout = Layout(manualLayout=ManualLayout(x=0.17, y=0.11, w=plot_w,
-                                                              h=plot_h))
+    # the axes' share of the chart, fixed: room for the title's two lines above (1.2 cm) and
+    # the tick labels and axis title below (1.1 cm)
+    plot_w, top = 0.78, 1.2 / height
+    plot_h = 1.0 - top - 1.1 / height
+    # "inner": the share is the axes' rectangle itself, not one that also holds the tick
+    # labels and axis titles; set on the chart (openpyxl writes the chart's layout into its
+    # plot area, over one set on the plot area: the balls were drawn as ellipses)
+    chart.layout = Layout(manualLayout=ManualLayout(
+        layoutTarget="inner", xMode="edge", yMode="edge", x=0.17, y=top, w=plot_w, h=plot_h))
     width_cm, height_cm = plot_w * DRAWING[0], plot_h * height
     (x0, x1), (y0, y1) = (min(xs), max(xs)), (min(ys), max(ys))
     per_cm = max((x1 - x0) / width_cm, (y1 - y0) / height_cm) * 1.02  # mm a cm, both axes
