@@ -347,16 +347,18 @@ def test_a_design_the_evaluator_fails_is_diagnosed_not_returned(monkeypatch):
 
 PORTER_INFEASIBLE = {  # speeds, central-load bounds: what no weight pair meets
     "band too narrow": ('inner = "190 rpm"', 'outer = "200 rpm"', None),
-    "k^2 margin": ('inner = "200 rpm"', 'outer = "235.8 rpm"', None),
+    # Hamabe's band asked for: a Porter has no forcing, so it applies only when the spec says
+    "k^2 margin": ('inner = "200 rpm"', 'outer = "235.8 rpm"', None, "k2_margin = 0.05\n"),
     "slow": ('inner = "100 rpm"', 'outer = "115 rpm"', None),
     "more central load": ('inner = "190 rpm"', 'outer = "224 rpm"', '["10 kgf", "20 kgf"]'),
     "far more central load": ('inner = "190 rpm"', 'outer = "224 rpm"', '["2 kgf", "10 kgf"]'),
 }
 
 
-def _porter(tmp_path, inner, outer, central):
+def _porter(tmp_path, inner, outer, central, requirements=""):
     text = (Path("specs/porter-design.toml").read_text(encoding="utf-8")
-            .replace('inner = "190 rpm"', inner).replace('outer = "224 rpm"', outer))
+            .replace('inner = "190 rpm"', inner).replace('outer = "224 rpm"', outer)
+            .replace("[requirements]\n", "[requirements]\n" + requirements, 1))
     if central:
         text = text.replace('central_weight = ["10 kgf", "100 kgf"]', f"central_weight = {central}")
     path = tmp_path / "porter.toml"
