@@ -28,6 +28,10 @@ COMMANDS = {
                                              "Hamabe case a)."),
     "design": ("evaluate", "design_app", "Find the best design for the spec's requirements "
                                          "(default: bundled hamabe-design)."),
+    "at": ("questions", "at_app", "Speeds, forces, effort and power at the configurations a "
+                                  "problem names."),
+    "solve": ("questions", "solve_app", "Find the spec input at which a figure meets its target "
+                                        "(any unknown)."),
     "spring": ("spring", "app", "Least-mass helical spring for a force and stiffness (an exact "
                                 "GP, certified global), or check one you have."),
     "bench": ("bench", "app", "Speed against error of every analysis and the speed targets "

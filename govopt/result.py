@@ -244,11 +244,15 @@ class Result:
                                       note=f"normal; {lo:.4g} .. {hi:.4g}{' ' + u if u else ''} "
                                            "innermost .. outermost"))
             if cm["friction_band"]:
+                ends = (f"; {cm['insensitiveness_inner']:.4g} at the inner end, "
+                        f"{cm['insensitiveness_outer']:.4g} at the outer"
+                        if "insensitiveness_inner" in cm else "")
                 out += [Figure("friction band", cm["friction_band"],
                                "N*m" if gov.coordinate == "angle" else "N", "classic",
-                               note="generalised force"),
+                               note="referred to the flying mass (a generalised force), not "
+                                    "the sleeve's own friction"),
                         Figure("coefficient of insensitiveness", cm["insensitiveness"], "",
-                               "classic")]
+                               "classic", note="the largest over the range" + ends)]
         if self.made:  # governors made to the spec's tolerances: the yield beside the verdict
             from .made_words import figures as made_figures
 

@@ -133,7 +133,7 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
     kind = governor.spring_kind
     # the speed range to meet: optional where a design is only evaluated (the textbook's "find
     # the equilibrium speeds"); whatever needs it says so
-    speed = _speed(top.sub("speed", declared=SPEED)) \
+    speed = _speed(top.sub("speed", declared=SPEED), falling=top.has("design")) \
         if top.has("speed") or not top.has("design") else None
     mat = top.sub("material", required=False, declared=material_table())
     material = None if mat is None else _material(mat, kind is None or kind.helical)
@@ -289,7 +289,10 @@ def _configuration(rd: Reader, name: str, governor: Governor) -> float:
     return x
 
 
-def _speed(sp: Reader) -> Speed:
+def _speed(sp: Reader, falling: bool = False) -> Speed:
+    """``[speed]``: the band's ends, or the mean speed and irregularity; ``falling``: an outer
+    speed below the inner one is allowed (a governor evaluated, found unstable), else (a design
+    search) refused."""
     given = [k for k in ("min", "max", "minimum", "maximum", "low", "high") if sp.has(k)]
     if given and not (sp.has("inner") or sp.has("outer") or sp.has("mean")):
         sp.fail(given[0], "unknown key (did you mean 'inner' and 'outer', the speeds at the "
@@ -300,8 +303,10 @@ def _speed(sp: Reader) -> Speed:
             if sp.has(conflicting):
                 sp.fail(conflicting, "give either mean and irregularity, or inner and outer")
         w_in, w_out = sp.read(inner), sp.read(outer)
-        if w_out <= w_in:
-            sp.fail("outer", "expected outer > inner speed")
+        if w_out == w_in or (w_out < w_in and not falling):
+            sp.fail("outer", "expected outer > inner speed" + (
+                "" if w_out == w_in else " (a falling pair is evaluated where [design] gives "
+                                         "the governor, not designed for)"))
         speed = Speed((w_in + w_out) / 2.0, 2.0 * (w_out - w_in) / (w_out + w_in), band=True)
     else:
         speed = Speed(sp.read(mean), sp.read(irregularity))

@@ -433,7 +433,7 @@ FIFO = object()
 
 def _file_cases() -> Iterator[Case]:
     """Hostile files rather than hostile values."""
-    spec = bundled_specs()[0].read_text()
+    spec = next(p for p in bundled_specs() if p.stem == "hamabe-a-si").read_text()
     files = {
         "empty file": b"",
         "not UTF-8": spec.encode().replace(b"name", b"n\xe9me", 1),
@@ -504,6 +504,64 @@ def _spring_cases() -> Iterator[Case]:
     yield Case("spring/--force/not_utf8", ("spring", *args), None, "not_utf8", "--force", True,
                "spring")
     yield from _mutated(SPRING_CHECK, ("spring", "check"), ("--active-coils", "8"))
+    yield from _impossible_springs()
+
+
+#: springs that cannot be (refused, exit 2: nonsense) and springs a load takes past what they
+#: can do (a failed check, exit 1): ``(label, the options after the base, nonsense)``
+IMPOSSIBLE = (
+    ("free length below solid", ("--free-length", "30 mm"), True),
+    ("length 2 at the free length", ("--length-2", "60 mm"), True),
+    ("cycle past solid", ("--force", "400 N", "--fatigue-min-force", "100 N",
+                          "--fatigue-max-force", "560 N"), False),
+    ("cycle past L_n", ("--force", "400 N", "--fatigue-min-force", "100 N",
+                        "--fatigue-max-force", "500 N"), False),
+    ("force past solid", ("--force", "600 N"), False),
+    ("life below the data's", ("--force", "400 N", "--fatigue-min-force", "100 N",
+                               "--fatigue-max-force", "400 N", "--life", "1000"), False),
+    ("closed ends without end coils", ("--force", "400 N", "--total-coils", "9.5"), True),
+    ("plain ends, total = active", ("--force", "400 N", "--total-coils", "9.5", "--ends",
+                                    "plain"), False),
+    ("extension body coils against active", ("--kind", "extension", "--force", "100 N",
+                                             "--total-coils", "30", "--free-length", ""),
+     True),
+    ("extension shorter than its body", ("--kind", "extension", "--force", "100 N",
+                                         "--free-length", "1 mm"), True),
+    ("extension length below free", ("--kind", "extension", "--length-2", "50 mm",
+                                     "--free-length", "80 mm"), True),
+    ("extension force below initial tension", ("--kind", "extension", "--force", "100 N",
+                                               "--min-force", "5 N", "--initial-tension",
+                                               "30 N", "--free-length", ""), False),
+    ("extension min force 0", ("--kind", "extension", "--force", "100 N", "--min-force", "0 N",
+                               "--free-length", ""), False),
+)
+#: the spring of the ``spring-check`` template: solid at 533 N, free at 60 mm
+_CHECKED = {"--wire-diameter": "3 mm", "--mean-diameter": "16 mm", "--active-coils": "9.5",
+            "--free-length": "60 mm", "--material": "EN10270-1 SH"}
+
+
+def _impossible_springs() -> Iterator[Case]:
+    """:data:`IMPOSSIBLE` through the options, and the spring that cannot be in a spec file
+    (its error names the file and the key)."""
+    for label, extra, nonsense_ in IMPOSSIBLE:
+        options = dict(_CHECKED)
+        options.update(zip(extra[::2], extra[1::2], strict=True))
+        args = [a for k, v in options.items() if v != "" for a in (k, v)]
+        yield Case(f"spring check/impossible/{label}", ("spring", "check", *args), None,
+                   "impossible_spring", label, nonsense_, "spring")
+    text = ('[spring]\nwire_diameter = "3 mm"\nmean_diameter = "16 mm"\nactive_coils = 9.5\n'
+            'free_length = "30 mm"\nmaterial = "EN10270-1 SH"\nforce = "100 N"\n')
+    yield Case("spring check/impossible/free length below solid in a spec",
+               ("spring", "check", "{spec}"), lambda: text, "impossible_spring",
+               "spring.free_length", True, "spring")
+    long = "s" * 300
+    yield Case("spring check/impossible/a 300-character spec name",
+               ("spring", "check", f"{long}.toml"), None, "file", None, True, "spring",
+               names_key=False)
+    yield Case("spring/impossible/extension with the solid length as objective",
+               ("spring", "--kind", "extension", "--force", "300 N", "--stiffness", "5 N/mm",
+                "--material", "EN10270-1 DH", "--objective", "solid length"), None,
+               "impossible_spring", "--objective", True, "spring")
 
 
 #: ``govopt spring check`` options and a valid value of each (a spring given as it is)
@@ -964,8 +1022,10 @@ def classify(out: Outcome, spec: str | None, json_out: bool = False) -> Outcome:
     else:
         out.klass, out.why = "error", ""
         first = lines[0] if lines else ""
-        # the file's path is the user's; a design's diagnosis says how far each requirement is
-        size = len(first) - len(spec or "")
+        # the file's path is the user's (the spec's, or a file named on the command line); a
+        # design's diagnosis says how far each requirement is
+        paths = [len(a) for a in case.args if a.endswith(FILE_SUFFIXES) and a in first]
+        size = len(first) - max([len(spec or ""), *paths])
         limit = MAX_DIAGNOSIS if "infeasible" in first or "the chosen design" in first \
             else MAX_LINE
         if len(lines) != 1:
@@ -985,6 +1045,8 @@ def classify(out: Outcome, spec: str | None, json_out: bool = False) -> Outcome:
     return out
 
 
+#: what a file named on the command line ends with (its name is the user's, however long)
+FILE_SUFFIXES = (".toml", ".xlsx", ".json", ".db", ".csv")
 #: a Python exception's class in a message (``(AssertionError)``, ``UnicodeEncodeError:``)
 EXCEPTION_NAME = re.compile(r"\b[A-Z]\w*(Error|Exception)\b")
 
@@ -1000,8 +1062,10 @@ def _names_key(line: str, spec: str | None, case: Case) -> bool:
     ``error: --option: ...``."""
     if line.startswith("error: --") or (case.kind == "option" and " --" in line):
         return case.command == "spring" or case.kind == "option"  # an option's error names it
-    if case.command == "spring":  # or a diagnosis naming the requirements that conflict
-        return line.startswith("error: no spring meets these requirements: infeasible: ")
+    if case.command == "spring":  # a spring spec's key, or a diagnosis naming the
+        # requirements that conflict
+        return (spec is not None and line.startswith(f"error: {spec}: spring.")) or \
+            line.startswith("error: no spring meets these requirements: infeasible: ")
     if spec is None:
         return True
     if not line.startswith(f"error: {spec}: "):

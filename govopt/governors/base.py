@@ -267,6 +267,22 @@ class Method:
 
 
 @dataclass(frozen=True)
+class Coordinate:
+    """One way the books give a governor's configuration (the ball's radius, the arm's angle to
+    the axis, the height, the joint's radius, the sleeve's lift): its ``name`` as a spec key's
+    stem and a query point write it (``angle`` -> ``angle_inner``, ``--at "angle=30 deg"``),
+    its ``dimension`` (``"angle"`` or ``"length"``), one line of ``meaning`` with its source,
+    and ``value``: the coordinate at configurations ``x`` (SI, vectorised). Every type declares
+    its own (:meth:`Governor.coordinates`); :func:`govopt.analysis.points.configuration`
+    inverts ``value`` by bracketed root-finding over :meth:`Governor.x_domain`."""
+
+    name: str
+    dimension: str
+    meaning: str
+    value: Any
+
+
+@dataclass(frozen=True)
 class Part:
     """One part of a governor's drawing in its own plane (SI, m): ``kind`` is ``"link"``
     (a polyline of bars or arms), ``"mass"`` (a ball or pendulum: a circle of ``size`` radius
@@ -329,6 +345,55 @@ def zigzag(start, end, width: float, coils: float = 6.0) -> tuple[tuple[float, f
         points.append(p + (0.1 + 0.8 * (k + 0.5) / n) * axis + (1 if k % 2 == 0 else -1) * across)
     points += [p + 0.9 * axis, q]
     return tuple((float(x), float(y)) for x, y in points)
+
+
+def solve_monotone(f, value: float, lo: float, hi: float, samples: int = 257) -> float:
+    """The ``u`` in ``(lo, hi)`` where ``f(u) = value``: ``f`` sampled at ``samples`` points
+    (its non-finite values skipped), the first sign change bracketed and closed by Brent's
+    method to rounding; NaN where ``f`` does not cross ``value`` (no root in the domain).
+
+    Brent's method (R. P. Brent, *Algorithms for Minimization without Derivatives*, 1973, ch.
+    4; ``scipy.optimize.brentq``): a root of a continuous function, bracketed, never lost.
+
+    Parameters
+    ----------
+    f : callable [-]
+        Vectorised function of ``u`` (SI).
+    value : float [-]
+        The value sought, in ``f``'s unit.
+    lo, hi : float [-]
+        The domain of ``u`` (the ends themselves are not sampled).
+    samples : int [-]
+        Points sampled to find a bracket.
+
+    Returns
+    -------
+    float [-]
+        The root, or NaN.
+
+    Examples
+    --------
+    ``u^2 = 2`` on (0, 3): by hand sqrt(2) = 1.41421356...
+
+    >>> round(solve_monotone(lambda u: u**2, 2.0, 0.0, 3.0), 12)
+    1.414213562373
+    """
+    from scipy.optimize import brentq
+
+    u = np.linspace(lo, hi, samples + 2)[1:-1]
+    with np.errstate(all="ignore"):
+        g = np.asarray(f(u), dtype=float) - value
+    ok = np.isfinite(g)
+    u, g = u[ok], g[ok]
+    hit = np.flatnonzero(g == 0.0)
+    if hit.size:
+        return float(u[hit[0]])
+    cross = np.flatnonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0)
+    if not cross.size:
+        return float("nan")
+    i = int(cross[0])
+    return float(brentq(lambda v: float(f(v)) - value, u[i], u[i + 1], xtol=1e-15 * max(
+        abs(hi), abs(lo), 1e-300), rtol=4 * np.finfo(float).eps))
 
 
 def ball_radius(mass: float, density: float = 7850.0) -> float:
@@ -754,6 +819,40 @@ class Governor(ABC):
         from ..analysis import spring_record as sr
 
         return sr.report(spec, sd, char, vib)
+
+    #: the name of the type's own coordinate ``x`` as a query point writes it
+    coordinate_key: ClassVar[str] = "x"
+
+    def coordinates(self) -> tuple[Coordinate, ...]:
+        """The coordinates a configuration may be given by (:class:`Coordinate`): the type's
+        own ``x`` (default); a type adds the ones its books use."""
+        return (Coordinate(self.coordinate_key, self.coordinate,
+                           f"the {self.coordinate_name} (the type's own coordinate)",
+                           lambda x: np.asarray(x, dtype=float)),)
+
+    def x_domain(self) -> tuple[float, float]:
+        """The configurations ``x`` the mechanism can take (SI): a query point is sought
+        within it; default the spec's range."""
+        return self.x_inner, self.x_outer
+
+    #: the type's hard case for ``govopt bench`` (:func:`govopt.bench.suites.types_suite`): a
+    #: bundled spec's name (or a spec's data), the values that make it hard ({dotted key:
+    #: value}), the fidelity key of its shortcuts ("" for none) and their settings (the exact
+    #: model first), and optionally the input its solve rows find (default the flying mass)
+    bench_case: ClassVar[tuple] = ()
+
+    def bench_reference(self, spec, x):
+        """The equilibrium speeds (rad/s) at ``x`` of the bench case ``spec`` by the source's
+        own closed form in high precision, where the type has one; default None (the bench
+        measures the shortcuts against the exact model)."""
+        return None
+
+    def link_forces(self, x, m, central, omega2, restoring) -> dict:
+        """The forces in the type's arms, links and pivots (N) at configurations ``x`` in
+        equilibrium at ``omega2`` (rad/s)^2 with the restoring generalised force ``restoring``
+        (:meth:`Terms.restoring`, a friction band added where the governor is moving):
+        name -> array. Default: none (the type does not resolve its linkage's forces)."""
+        return {}
 
     def columns(self, x) -> dict:
         """The type's own geometry over ``x`` for the characteristic table: name -> (values, SI

@@ -266,6 +266,9 @@ class FlyWeights(Governor):
 class TractionCoilGovernor(FlyWeights):
     """Coil-spring traction-engine governor (article 003, Fig. 1), SI; per fly weight."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("traction-coil-replacement-si", {}, "", ("exact",))
+
     type_name: ClassVar[str] = "traction_coil"
     title: ClassVar[str] = "Coil-spring traction-engine governor (article 003, Fig. 1)"
     coordinate: ClassVar[str] = "length"

@@ -252,6 +252,10 @@ def _bow(l: float, L: float, model: str) -> float:
 class TractionLeafGovernor(FlyWeights):
     """Flat-spring traction-engine governor (article 003, Fig. 2), SI; per fly weight."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("traction-leaf-weights", {}, "governor.leaf_model",
+                               ("elastica", "arc", "straight"))
+
     type_name: ClassVar[str] = "traction_leaf"
     title: ClassVar[str] = "Flat-spring traction-engine governor (article 003, Fig. 2)"
     coordinate: ClassVar[str] = "length"

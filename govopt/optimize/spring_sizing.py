@@ -345,6 +345,8 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
     G, density = mat.G, mat.density
     lo, hi = max(mat.d_min, bounds.get("d_min") or 0.0), min(mat.d_max, bounds.get("d_max")
                                                           or math.inf)
+    # a grade with no least wire (custom: from 0): the window's logarithms need one above 0
+    lo = lo if lo > 0.0 else min(hi, 1.0) * 1e-9
     state = {"window": (lo, hi)}
 
     Q = end_coils(kind, mat, ends)

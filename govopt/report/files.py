@@ -123,7 +123,11 @@ def output_folder(directory: str | Path, what: str) -> Path:
     one line if it is not a folder or cannot be made."""
     directory = Path(directory)
     refuse_package(directory, what)
-    if directory.is_dir():
+    try:
+        is_dir = directory.is_dir()
+    except OSError as exc:  # a name the system refuses (too long)
+        raise GovoptError(f"{directory}: cannot write {what} ({_reason(exc)})") from None
+    if is_dir:
         return directory
     if directory.exists() or directory.is_symlink():
         raise GovoptError(f"{directory}: cannot write {what}: it is not a folder")

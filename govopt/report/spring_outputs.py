@@ -86,7 +86,7 @@ def force_length(outcome, ax) -> None:
         ax.plot(L(x), F(F0 + R * (x - L0)), color="tab:blue", lw=2,
                 label=f"F = F0 + R (L - L0), F0 = {shown.text(F0, 'N', 4)}")
     for key in ("L1", "L2"):
-        if key in pts:
+        if key in pts and not math.isnan(pts[key]["length"].value):  # (past solid: no point)
             p = pts[key]
             length, force = p["length"].value, p["force"].value
             ax.plot(L(length), F(force), "o", color="tab:orange", mec="k",
@@ -203,10 +203,13 @@ def write_workbook(outcome, path, *, replace: bool = True, command: str = "") ->
 def force_length_points(outcome) -> list[tuple[str, float, float]]:
     """``(name, length m, force N)`` of the assessment's working points: the free length, L1,
     L2 and a compression spring's least working and solid lengths; a point equal to the one
-    before it (no least force: the first working point is the free length) once."""
+    before it (no least force: the first working point is the free length) once; a force the
+    spring never reaches (past solid: no length) left out, as the report's note says."""
     out: list[tuple[str, float, float]] = []
     for p in outcome.assessment.points:
         name, L, F = str(p["point"].value), float(p["length"].value), float(p["force"].value)
+        if math.isnan(L):
+            continue
         if out and math.isclose(out[-1][1], L, rel_tol=1e-12) and \
                 math.isclose(out[-1][2], F, rel_tol=1e-12, abs_tol=1e-12):
             continue
@@ -289,7 +292,8 @@ def check_spec_text(outcome, drawing=None) -> str:
                   f"fatigue_max_force = {q(a.loads.cycle[1], 'N')}"]
     r = a.rules
     lines += [f'rules = "{r.method}"', f"peened = {str(r.peened).lower()}",
-              f'seating = "{r.seating}"', f"index_min = {float(r.index[0])!r}",
+              f'load = "{"dynamic" if r.dynamic else "static"}"', f'seating = "{r.seating}"',
+              f"index_min = {float(r.index[0])!r}",
               f"index_max = {float(r.index[1])!r}", f"min_fatigue_safety = {r.fatigue_safety!r}",
               f"life = {float(r.cycles)!r}"]
     if v.get("correction") is not None or material is None:
