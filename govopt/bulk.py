@@ -90,7 +90,7 @@ def row_figures(spec: Spec) -> dict[str, RowFigure]:
         ("surge_frequency_Hz", "surge_frequency", "Hz", "surge frequency"),
         ("body_length_m", "body_length", "m", "close-wound body length"),
         ("spring_mass_kg", "spring_mass", "kg", "spring mass"),
-        ("moving_mass_kg", "moving_mass", "kg", "moving mass (flying, central and spring)"),
+        ("moving_mass_kg", "moving_mass", "kg", f"moving mass ({gov.moving_mass_words()})"),
         ("k2_min_rad2_s2", "k2_min", "rad^2/s^2", "least k^2 over the range"),
         ("k2_max_rad2_s2", "k2_max", "rad^2/s^2", "largest k^2 over the range"),
         ("k2_normal_rad2_s2", "k2_normal", "rad^2/s^2", "k^2 at the normal configuration"),

@@ -427,8 +427,13 @@ def _figures(spec: Spec, cols: dict, s: _Statics) -> dict:
             smass = hx.wire_mass(dd, rr, nn, mat.density)
         for k, v in props.items():
             out[k] = np.where(helical, v, np.nan)
+    elif gov.spring is not None and mat is not None:  # a spring of the type's own (a leaf)
+        with np.errstate(all="ignore"):
+            smass = np.broadcast_to(np.ravel(gov.spring_mass(s.sd, mat)), (n,)).astype(float)
+        helical = np.isfinite(smass)
     out["spring_mass_kg"] = np.where(helical, smass, np.nan)
-    out["moving_mass_kg"] = cols["flying_mass"] + s.central[:, 0] + np.where(helical, smass, 0.0)
+    out["moving_mass_kg"] = gov.moving_mass(cols["flying_mass"], s.central[:, 0],
+                                            np.where(helical, smass, 0.0))
     out.update({"k2_min_rad2_s2": s.k2.min(axis=1), "k2_max_rad2_s2": s.k2.max(axis=1),
                 "k2_normal_rad2_s2": s.k2[:, s.i_n]})
     return out

@@ -157,7 +157,12 @@ class Requirements:
     """What `govopt design` must achieve, within which bounds, from which catalogue (SI)."""
 
     objective: str = "moving_mass"
-    k2_margin: float = 0.05
+    #: Hamabe's margin on k^2 within (0, omega0^2); None: the type's rule
+    #: (:meth:`govopt.governors.base.Governor.k2_rule`: 0.05 where a forcing is modelled)
+    k2_margin: float | None = None
+    #: the least range of speed as a share of the band, or "envelope"; None: the type's rule
+    #: (:meth:`govopt.governors.base.Governor.range_rule`)
+    min_range: float | str | None = None
     hurwitz_margin: float = 0.1
     max_settling_time: float | None = None
     max_vibration: float | None = None

@@ -122,7 +122,9 @@ def statics_rows(spec) -> list[Row]:
     from .analysis import characteristic as chs
     from .analysis import statics
     gov, sp, req = spec.governor, spec.speed, spec.requirements
-    margin = req.k2_margin if req else 0.0
+    # without [requirements] (an evaluation of a given design): k^2 > 0, and the ceiling where
+    # the type is forced; the margin is a design requirement
+    margin, ceiling = gov.k2_rule(req.k2_margin) if req else (0.0, gov.resonance_ceiling)
     unit = SI_UNITS[gov.coordinate]
     method = gov.method(spec)  # the type's own sources (governors.base.Method)
     rows = []
@@ -136,6 +138,9 @@ def statics_rows(spec) -> list[Row]:
                          _const(sp.omega_inner), band, group="statics"),
                      Row(statics.BAND_OUTER, "<=", "rad/s", lambda ev: ev["band_high"],
                          _const(sp.omega_outer), band, group="statics")]
+            least = gov.range_rule(req.min_range if req else None)
+            if least > 0:
+                rows.append(range_row(sp, least, method))
     rows.append(Row("characteristic rises (stable)", ">=", f"rad/s/{unit}", lambda ev: ev["rise"],
                     _const(0.0),
                     "d omega/dx > 0 over the range: the characteristic "
@@ -151,11 +156,32 @@ def statics_rows(spec) -> list[Row]:
     rows.append(Row("k^2 > 0 (stability)", ">=", "rad^2/s^2", lambda ev: ev["k2_min"],
                     lambda ev: margin * ev["w0sq"], method.text("stable"), group="statics",
                     scale=lambda ev: ev["w0sq"]))
-    if gov.resonance_ceiling:
+    if ceiling:
         rows.append(Row("k^2 < omega0^2 (no resonance)", "<=", "rad^2/s^2",
                         lambda ev: ev["k2_max"], lambda ev: (1.0 - margin) * ev["w0sq"],
                         method.text("resonance"), group="statics"))
     return rows
+
+
+#: the check of the governor's range of speed against its share of the band
+RANGE_OF_SPEED = "range of speed (hunting)"
+
+
+def range_row(sp, least: float, method) -> Row:
+    """The governor's range of speed ``omega_a - omega_i`` (rad/s; from the sleeve's lowest to
+    its highest position, at nominal, without friction: ``ev["irregularity"] omega0``) at
+    least ``least`` of the band ``speed.outer - speed.inner`` (group ``"statics"``): a
+    governor whose range is a sliver of its band is more sensitive and hunts (the traction
+    article); the textbook's governors are designed through both ends of their range
+    (:meth:`govopt.governors.base.Governor.range_rule`). The friction band and the made
+    governor's spread take the rest of the band."""
+    eq = method.named("irregularity")
+    source = (f"{least:g} x (speed.outer - speed.inner) (requirements.min_range): the range "
+              "of speed from the sleeve's lowest to its highest position"
+              + (f" ({eq.cite})" if eq else "") + "; narrower, the governor is more sensitive "
+              "and hunts (Traction article)")
+    return Row(RANGE_OF_SPEED, ">=", "rad/s", lambda ev: ev["irregularity"] * sp.omega_mean,
+               _const(least * (sp.omega_outer - sp.omega_inner)), source, group="statics")
 
 
 def statics_figures(irregularity, band_low, band_high, rise, w0sq, spring_force, k2) -> dict:
@@ -435,7 +461,8 @@ class CheckTable:
         return ~self.failed().any(axis=1)
 
 
-__all__ = ["GP_BOUNDS", "PASS_TOL", "CheckTable", "Column", "GPForm", "Row", "SpringFigures",
-           "friction_rows", "holds", "load_change_rows", "requirement_rows",
+__all__ = ["GP_BOUNDS", "PASS_TOL", "RANGE_OF_SPEED", "CheckTable", "Column", "GPForm", "Row",
+           "SpringFigures",
+           "friction_rows", "holds", "load_change_rows", "range_row", "requirement_rows",
            "search_bound_rows", "statics_rows",
            "statics_figures", "stress_row", "vibration_rows"]

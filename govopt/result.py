@@ -152,7 +152,8 @@ class Result:
             out.append(Figure(
                 f"objective: {str(obj.get('name', '')).replace('_', ' ')}",
                 opt.get("value"), unit, "design",
-                note=f"status {opt.get('status')}" + (
+                note=(f"{obj['counts']}; " if obj.get("counts") else "")
+                + f"status {opt.get('status')}" + (
                     "" if gap is None else f"; {100 * gap:.3g} % above the continuous bound")))
         if spec.speed is not None:
             eq = self.method.named("irregularity")

@@ -232,9 +232,24 @@ def requirements_table(kind) -> Table:
     return Table("requirements", "what govopt design must achieve", (
         Key("objective", "choice", "what the design search minimises", default=_REQ.objective,
             choices=OBJECTIVES),
-        Key("k2_margin", "number", "k^2 within margin omega0^2 .. (1 - margin) omega0^2 "
-                                   "(stability and, where forced, clear of resonance)",
-            default=_REQ.k2_margin, nonnegative=True, high=0.5, source="Hamabe Part II"),
+        Key("k2_margin", "number", "Hamabe's band: k^2 within margin omega0^2 .. (1 - "
+                                   "margin) omega0^2 (stable, and clear of resonance with a "
+                                   "forcing at the running speed's harmonics)",
+            default=_REQ.k2_margin, nonnegative=True, high=0.5, source="Hamabe Part II",
+            default_text="0.05 where a forcing is modelled (the shaft governor's valve gear); "
+                         "else not applied: only k^2 > 0 (stable, the textbook's criterion)"),
+        Key("min_range", "number", "the least range of speed (from the sleeve's lowest to its "
+                                   "highest position, at nominal, without friction) as a share "
+                                   "of the band speed.outer - speed.inner: a narrower range is "
+                                   "more sensitive and hunts; \"envelope\": the speeds "
+                                   "anywhere inside the band",
+            default=_REQ.min_range, nonnegative=True, high=1.0, high_inclusive=True,
+            choices=("envelope",),
+            range_text="[0, 1], or \"envelope\"",
+            default_text="0.75 where the band is the governor's range of speed and a spring "
+                         "sets it (the textbook's and the traction governors with a spring); "
+                         "else \"envelope\"",
+            source="textbook Problems 2 (range of speed); traction article (hunting)"),
         Key("hurwitz_margin", "number", "the margin on the load change's stability condition "
                                         "(Hurwitz)", default=_REQ.hurwitz_margin,
             nonnegative=True, source="Hamabe eq. 32"),

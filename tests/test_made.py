@@ -29,8 +29,19 @@ free_length = "14.49 cm"
 """
 
 
+#: the yield's tests read the band as an envelope, as they were written: the range of speed
+#: the band asks for by default (tests/test_band.py) leaves the 0.5 kgf friction band and the
+#: made spread no room for these yields (DESIGN spans 59 % of the band)
+ENVELOPE = 'min_range = "envelope"\n'
+
+
+def _envelope() -> str:
+    return HARTNELL.read_text(encoding="utf-8").replace("[requirements]\n",
+                                                        "[requirements]\n" + ENVELOPE, 1)
+
+
 def _designed(tmp_path, extra: str = "") -> govopt.Spec:
-    text = HARTNELL.read_text(encoding="utf-8")
+    text = _envelope()
     if extra:
         text = text.replace("[requirements]\n", "[requirements]\n" + extra, 1)
     path = tmp_path / "h.toml"
@@ -154,9 +165,9 @@ def test_min_yield_designs_for_a_yield(tmp_path):
     """`min_yield = 0.99` changes the design; its yield's 95 % Wilson lower bound is at least
     0.99 over the search's samples, and a fresh sample (another seed) of the design holds in at
     least 99 % of 1000 governors."""
-    spec = govopt.load_spec(HARTNELL)
-    plain = govopt.design(spec)
-    text = HARTNELL.read_text(encoding="utf-8").replace(
+    (tmp_path / "plain.toml").write_text(_envelope(), encoding="utf-8")
+    plain = govopt.design(govopt.load_spec(tmp_path / "plain.toml"))
+    text = _envelope().replace(
         "[requirements]\n", "[requirements]\nmin_yield = 0.99\n", 1)
     (tmp_path / "y.toml").write_text(text, encoding="utf-8")
     res = govopt.design(govopt.load_spec(tmp_path / "y.toml"))
@@ -171,11 +182,11 @@ def test_min_yield_designs_for_a_yield(tmp_path):
 
 
 def test_min_yield_that_no_design_reaches_names_what_binds(tmp_path):
-    """Without the fitter's setting (``fitter = "none"``, no nut) the spring maker's free
-    length spreads the speeds past the band: the diagnosis names the best candidate's yield,
-    the requirement failing most often in its own samples and the tolerance that spreads the
-    speeds most, and says to let the fitter set the spring."""
-    text = HARTNELL.read_text(encoding="utf-8").replace(
+    """Without the fitter's setting (``fitter = "none"``, no nut) the spring maker's tolerances
+    spread the speeds past the band: the diagnosis names the best candidate's yield, the
+    requirement failing most often in its own samples and a tolerance that spreads the speeds
+    most, and says to let the fitter set the spring."""
+    text = _envelope().replace(
         "[requirements]\n", "[requirements]\nmin_yield = 0.999\nrobust_samples = 4000\n"
         'fitter = "none"\n', 1)
     text = "\n".join(x for x in text.splitlines() if not x.startswith("adjusting_nut"))
@@ -184,7 +195,9 @@ def test_min_yield_that_no_design_reaches_names_what_binds(tmp_path):
     assert run.exit_code == 2 and run.exception is None, run.output
     err = run.stderr.strip()
     assert err.count("\n") == 0 and "requirements.min_yield" in err
-    assert "most often failing there" in err and "free length tolerance alone" in err
+    # the best candidate (both balls in the moving mass, no Hamabe band on a Hartnell): which
+    # tolerance spreads it most depends on the candidate, that one is named does not
+    assert "most often failing there" in err and "tolerance alone (+-" in err
     assert 'let the fitter set the spring (requirements.fitter = "sets")' in err
     held = re.search(r"holds in (\d+) of its (\d+) samples \(([0-9.]+) %\)", err)
     worst = [int(k) for k in re.findall(r"\(in (\d+) samples\)", err)]

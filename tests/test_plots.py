@@ -346,12 +346,21 @@ def test_cli_plots_written_refused_and_forced(tmp_path):
 
 
 def test_k2_axis_is_the_datas_where_the_ceiling_is_far():
-    """A Porter's k^2 (24-31 1/s^2) against omega0^2 = 396: the axis is scaled to k^2 (not a
-    0-396 band with the curve squashed at its foot), the ceiling named with its spare; a
+    """A Porter has no forcing modelled: its k^2 plot has no ceiling. Asked for Hamabe's band
+    (``k2_margin``), its k^2 (24-31 1/s^2) against omega0^2 = 396: the axis is scaled to k^2
+    (not a 0-396 band with the curve squashed at its foot), the ceiling named with its spare; a
     textbook governor's band is not called Hamabe's case; the shaft's still shows omega0^2."""
+    from dataclasses import replace
+
     from matplotlib.colors import to_rgba
 
+    from govopt.inputs import Requirements
+
     res = _result("porter-engine")
+    labels = [t.get_text() for t in plots.draw(res, "k2").get_legend().get_texts()]
+    assert any("no ceiling" in t for t in labels) and not any("spare" in t for t in labels)
+    spec = load_spec(SPECS / "porter-engine.toml")
+    res = evaluate(replace(spec, requirements=Requirements(k2_margin=0.0)))
     ax = plots.draw(res, "k2")
     w0sq = res.omega_reference ** 2
     lo, hi = ax.get_ylim()

@@ -111,9 +111,10 @@ def test_designs_keep_their_whole_band_with_friction(name):
 
 
 def test_porter_diagnosis_names_the_k2_margin(tmp_path):
-    """porter-design at 200-235.8 rpm: the band is wide enough; what binds is the default
-    k2_margin 0.05 (0.03 makes it feasible). The diagnosis names it, with the value that
-    makes it feasible, and that value does make it feasible."""
+    """porter-design at 200-235.8 rpm with Hamabe's band asked for (``k2_margin = 0.05``; a
+    Porter has no forcing, so by default only k^2 > 0 applies and it designs): the band is
+    wide enough; what binds is the k2_margin (0.03 makes it feasible). The diagnosis names it,
+    with the value that makes it feasible, and that value does make it feasible."""
     import re
 
     from govopt.errors import InfeasibleError
@@ -124,6 +125,9 @@ def test_porter_diagnosis_names_the_k2_margin(tmp_path):
         'outer = "224 rpm"', 'outer = "235.8 rpm"')
     path = tmp_path / "porter.toml"
     path.write_text(text)
+    assert design(load_spec(path)).optimisation["status"] == "optimal"  # the type's default
+    path.write_text(text.replace('objective = "moving_mass"',
+                                 'objective = "moving_mass"\nk2_margin = 0.05'))
     with pytest.raises(InfeasibleError) as info:
         design(load_spec(path))
     message = str(info.value)

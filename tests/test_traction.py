@@ -528,9 +528,11 @@ def test_leaf_design_has_a_buildable_set():
     assert checks["leaf set >= min"].passed and checks["leaf set >= min"].value == l0
     # the weights rest at r_h + l0, outside the hinge radius
     assert gov.hinge_radius + l0 >= gov.hinge_radius
-    # a spec whose governor has a stop states a reverse set; the old optimum comes back
+    # a spec whose governor has a stop states a reverse set, and the search takes one (without
+    # the k^2 margin of Hamabe's shaft governor, which these governors no longer carry, a
+    # -2.5 mm set where it was -19.36 mm)
     spec2, res2 = _design("traction-leaf-design.toml", leaf_set_min="-1 in")
-    assert res2.spring.l0 < -0.01
+    assert res2.spring.l0 < 0.0
     assert res2.optimisation["value"] < res.optimisation["value"]
 
 

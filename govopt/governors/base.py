@@ -59,6 +59,16 @@ KEY_UNITS = {
 }
 
 
+#: the least share of the spec's band ``[speed] inner .. outer`` the governor's range of speed
+#: covers by default where its spring sets that range (:meth:`Governor.range_rule`); a
+#: quarter of the band is left to the friction band and the made governor's spread
+MIN_RANGE = 0.75
+
+#: Hamabe's margin on ``k^2`` within ``(0, omega0^2)`` where a forcing is modelled (the shaft
+#: governor's default ``requirements.k2_margin``; Hamabe Part II, Example 1's band of k^2)
+K2_MARGIN = 0.05
+
+
 @dataclass(frozen=True)
 class Terms:
     """Generalised forces at configurations ``x`` for flying mass ``m`` (SI, broadcasting arrays).
@@ -502,14 +512,23 @@ class Governor(ABC):
     mass_key: ClassVar[str] = "ball"
     mass_name: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
-    #: flying masses (balls, pendulums) acting on the regulating member: effort and power
+    #: flying masses (balls, pendulums) acting on the regulating member: effort and power, and
+    #: the moving mass (:meth:`moving_mass`)
     flying_masses: ClassVar[int] = 2
     #: ``l0`` is a length that must be positive (a coil spring's free length; a leaf's set is not)
     free_length_positive: ClassVar[bool] = True
     #: the flying masses are forced at the running speed's harmonics (Hamabe Part II: the valve
-    #: gear), so ``k^2 < omega0^2`` keeps them clear of resonance (case 2); False for a type
-    #: whose mechanism has no such forcing: only ``k^2 > 0`` (stability, case 3) is required
-    resonance_ceiling: ClassVar[bool] = True
+    #: gear), so ``k^2 < omega0^2`` keeps them clear of resonance (case 2) by default, with
+    #: :data:`K2_MARGIN`; False (the default) for a type whose mechanism has no such forcing
+    #: modelled (the textbook's and the article's governors): only ``k^2 > 0`` (stability, case
+    #: 3) is required, and Hamabe's band only where the spec asks for it
+    #: (``requirements.k2_margin``, :meth:`k2_rule`)
+    resonance_ceiling: ClassVar[bool] = False
+    #: the spec's band ``[speed] inner/outer`` is the governor's range of speed from the
+    #: sleeve's lowest to its highest position (the textbook's and the article's reading:
+    #: :meth:`range_rule`); False where it is only an envelope the speeds stay within (Hamabe's
+    #: irregularity "at most")
+    band_is_range: ClassVar[bool] = True
     #: where the ceiling ``0 < k^2 < omega0^2`` comes from, for a plot's legend ('' for none)
     resonance_source: ClassVar[str] = ""
     #: the spec key of the type's friction (its dotted path) and its dimension: what a
@@ -654,6 +673,134 @@ class Governor(ABC):
         """Name of the check that the spring stays loaded in its working sense over the range."""
         return f"spring in {self.spring}"
 
+    @property
+    def moving_springs(self) -> int:
+        """How many design springs the governor carries (each of the design's size): one by
+        default, none for a dead-weight governor."""
+        return 0 if self.spring is None else 1
+
+    def moving_mass(self, m, central, spring_mass):
+        """Every moving mass (kg): the flying masses (:attr:`flying_masses` of ``m`` each), the
+        central (sleeve) load and the design springs (:attr:`moving_springs` of
+        ``spring_mass`` each): the objective ``moving_mass``.
+
+        A definition of govopt's (the sources size the parts, not their sum); what it counts
+        is :meth:`moving_mass_words`.
+
+        Parameters
+        ----------
+        m : float or array [kg]
+            Each flying mass.
+        central : float or array [kg]
+            The central load (0 without one).
+        spring_mass : float or array [kg]
+            One design spring's mass.
+
+        Returns
+        -------
+        float or array [kg]
+            The moving mass.
+
+        Examples
+        --------
+        A Hartnell with two 2.5 kg balls and a 0.17 kg spring:
+
+        >>> from govopt.governors.hartnell import HartnellGovernor
+        >>> HartnellGovernor.__new__(HartnellGovernor).moving_mass(2.5, 0.0, 0.17)
+        5.17
+        """
+        return self.flying_masses * m + central + self.moving_springs * spring_mass
+
+    def moving_mass_words(self) -> str:
+        """What :meth:`moving_mass` counts, in words: ``"2 balls, the central load and the
+        spring"``."""
+        parts = [f"{self.flying_masses} {self.mass_name}s"]
+        if self.central_load:
+            parts.append("the central load")
+        springs = self.moving_springs
+        if springs:
+            parts.append("the spring" if springs == 1 else f"{springs} springs")
+        return parts[0] if len(parts) == 1 else ", ".join(parts[:-1]) + " and " + parts[-1]
+
+    def k2_rule(self, k2_margin: float | None) -> tuple[float, bool]:
+        """Hamabe's band ``margin omega0^2 <= k^2 <= (1 - margin) omega0^2`` as this type
+        applies it: ``(margin, ceiling)``, the ceiling kept or not. Where a forcing is modelled
+        (:attr:`resonance_ceiling`, the shaft governor's valve gear: Hamabe Part II, case 2) the
+        band applies by default with :data:`K2_MARGIN`; elsewhere only ``k^2 > 0`` (stability,
+        the characteristic rising: the textbook's criterion) unless the spec asks for the band
+        (``k2_margin`` given: then margin and ceiling both apply).
+
+        Parameters
+        ----------
+        k2_margin : float or None [-]
+            The spec's ``requirements.k2_margin``; None where it gives none.
+
+        Returns
+        -------
+        tuple of (float [-], bool)
+            The margin on ``k^2 / omega0^2`` and whether the ceiling applies.
+
+        References
+        ----------
+        [hamabe] Part II, cases 1-3.
+
+        Examples
+        --------
+        >>> from govopt.governors.porter import PorterGovernor
+        >>> from govopt.governors.shaft import ShaftGovernor
+        >>> Governor.k2_rule(PorterGovernor, None), Governor.k2_rule(ShaftGovernor, None)
+        ((0.0, False), (0.05, True))
+        >>> Governor.k2_rule(PorterGovernor, 0.1)
+        (0.1, True)
+        """
+        if k2_margin is None:
+            return (K2_MARGIN, True) if self.resonance_ceiling else (0.0, False)
+        return float(k2_margin), True
+
+    def range_rule(self, min_range: float | str | None) -> float:
+        """The least range of speed, a share of the spec's band, this type requires:
+        ``requirements.min_range`` as given (``"envelope"``: 0, the speeds anywhere inside the
+        band), else :data:`MIN_RANGE` where the band is the governor's range of speed
+        (:attr:`band_is_range`) and a spring sets it, else 0.
+
+        The textbook states a governor's speeds at the sleeve's lowest and highest positions
+        and its range of speed between them (ch. 3, Problems 2; Examples 5-8 design the spring
+        through both); the traction article takes N1 and N2 at the throttle's two ends and
+        warns that a narrow range hunts. A dead-weight governor's range is set by its linkage
+        (textbook 3.4(b) eq. (ii): the Porter's speed ratio between two heights does not depend
+        on its weights), which the spec gives, so it is not required by default.
+
+        Parameters
+        ----------
+        min_range : float, "envelope" or None [-]
+            The spec's ``requirements.min_range``; None where it gives none.
+
+        Returns
+        -------
+        float [-]
+            The share of the band (0: no range required).
+
+        References
+        ----------
+        [textbook-ch3] Problems 2 (the range of speed); [traction-article] (hunting).
+
+        Examples
+        --------
+        >>> from govopt.governors.hartnell import HartnellGovernor
+        >>> from govopt.governors.porter import PorterGovernor
+        >>> from govopt.governors.shaft import ShaftGovernor
+        >>> [Governor.range_rule(g, None) for g in (HartnellGovernor, PorterGovernor,
+        ...                                         ShaftGovernor)]
+        [0.75, 0.0, 0.0]
+        >>> Governor.range_rule(HartnellGovernor, "envelope")
+        0.0
+        """
+        if min_range == "envelope":
+            return 0.0
+        if min_range is None:
+            return MIN_RANGE if self.band_is_range and self.spring is not None else 0.0
+        return float(min_range)
+
     def spring_rate(self, design, material) -> float:
         """The spring's stiffness ``kappa`` (N/m) from the design's section: a helical spring,
         ``G d^4 / (64 r^3 n)`` (Wahl 1944; Hamabe Ex. 1)."""
@@ -661,6 +808,12 @@ class Governor(ABC):
 
         return hx.stiffness_r(design.wire_diameter, design.coil_radius, design.active_turns,
                               material.shear_modulus)
+
+    def spring_mass(self, sd, material):
+        """One design spring's mass (kg) for the design(s) ``sd``: here a leaf's or another
+        spring of the type's own (a helical spring's is the evaluator's, Wahl 1944 ch. 25);
+        NaN where the type does not say."""
+        return np.full(np.shape(sd.m), np.nan)
 
     def spring_stress(self, x, F, sd, material):
         """The spring's stress (Pa) under force ``F`` at ``x``: helical shear ``16 F r/(pi d^3)``
@@ -799,9 +952,18 @@ class Governor(ABC):
         textbook's ratio of the range of speed to the mean speed)."""
         if spec.speed is None:
             return ()
-        return (Equation("speed", "irregularity: the range of speed over the mean speed",
-                         "delta = (omega_a - omega_i) / omega0, omega0 the spec's mean speed",
-                         "textbook-ch3", "Problems, 2", name="irregularity"),)
+        out = (Equation("speed", "irregularity: the range of speed over the mean speed",
+                        "delta = (omega_a - omega_i) / omega0, omega0 the spec's mean speed",
+                        "textbook-ch3", "Problems, 2", name="irregularity"),)
+        least = self.range_rule(spec.requirements.min_range if spec.requirements else None)
+        if spec.speed.band and least > 0:
+            out += (Equation("speed", "the band is the range of speed from the sleeve's lowest "
+                             "to its highest position: the design spans at least min_range "
+                             "of it (a narrow range is sensitive and hunts)",
+                             f"omega_a - omega_i >= {least:g} (outer - inner)",
+                             "traction-article", "coil-spring governor, step 3",
+                             ("requirements.min_range",), name="range"),)
+        return out
 
     def spring_method(self, spec) -> tuple[Equation, ...]:
         """A helical spring's rate, stress (with the material's correction), mass, surge
@@ -842,7 +1004,7 @@ class Governor(ABC):
                                      "rises (d omega/dx > 0)",
                         "I k^2 = 2 omega (J'/2 - C_i) d omega/dx", "rattan",
                         name="stable"))
-        if self.resonance_ceiling:
+        if self.k2_rule(spec.requirements.k2_margin if spec.requirements else None)[1]:
             out += (Equation("stability", "the flying masses' natural frequency kept below the "
                                           "running speed (clear of resonance)",
                              "k^2 < omega0^2", "hamabe", "Part II, case 2", name="resonance",

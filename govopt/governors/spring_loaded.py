@@ -94,6 +94,12 @@ class SpringLoadedGovernor(BellCrankGovernor):
         self.ball_spring_stiffness = ball_spring_stiffness
         self.ball_spring_tension = ball_spring_tension
 
+    @property
+    def moving_springs(self) -> int:
+        """The design springs: the ``ball_springs`` joining the balls (``"direct"``) or the
+        lever's one spring (``"lever"``; the given ball springs' mass is not known)."""
+        return self.ball_springs if self.variant == "direct" else 1
+
     @classmethod
     def parse(cls, reader) -> SpringLoadedGovernor:
         """Keys: ``ball_arm``, ``sleeve_arm``, the radius range, ``fulcrum_radius`` (default: the

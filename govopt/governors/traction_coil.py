@@ -232,6 +232,11 @@ class FlyWeights(Governor):
     source: ClassVar[str] = "traction-article"
     friction_key: ClassVar[str] = "governor.rod_friction"
 
+    @property
+    def flying_masses(self) -> int:  # type: ignore[override]
+        """The spec's ``n_weights`` fly weights (effort, power and the moving mass)."""
+        return self.n_weights
+
     def inertia(self, x, m, central=None):
         """``I = m (1 + (ds/dr / 2)^2)`` (kg): the weight moves out by ``dr`` and along the
         spindle by half the rod's travel (one collar fixed); arms, rod and spring neglected, as

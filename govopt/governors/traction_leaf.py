@@ -346,6 +346,11 @@ class TractionLeafGovernor(FlyWeights):
 
     # -- the leaf -------------------------------------------------------------------------------
 
+    def spring_mass(self, sd, material):
+        """The strip's mass ``density w t L`` (kg; :func:`govopt.springs.leaf.mass`, the
+        article's Fig. 2 strip)."""
+        return leaf.mass(sd.width, sd.thickness, self.leaf_length, material.density)
+
     def leaf_stiffness(self, w, t, E):
         """``kappa = c E I / L^3`` (N/m) of a leaf ``w x t`` (m) of this length and ends."""
         return leaf.stiffness(w, t, self.leaf_length, E, self.leaf_ends)

@@ -162,16 +162,18 @@ def _where(ok, test):
     return ok
 
 
-def objective_values(req: Requirements, m, spring_mass, window=None, central=0.0):
+def objective_values(req: Requirements, m, spring_mass, window=None, central=0.0, *,
+                     gov):
     """The objective of candidates; ``window`` (from :func:`dashpot_window`) for the dynamic
-    objectives."""
+    objectives; ``gov`` the governor, whose :meth:`~govopt.governors.base.Governor.moving_mass`
+    counts every moving mass."""
     if req.objective == "spring_mass":
         return spring_mass
     if req.objective == "settling_time":
         return window["settling"]
     if req.objective == "vibration":
         return window["vibration"]
-    return m + central + spring_mass  # moving mass (flying + central + spring), the default
+    return gov.moving_mass(m, central, spring_mass)  # every moving mass, the default
 
 
 @dataclass(frozen=True)
@@ -273,7 +275,8 @@ def best_discrete(spec: Spec, req: Requirements, km: KappaModel, grid: Grid, lo,
         order = _surrogate_order(spec, req, km, grid, rows, kappa[cols])
         head = order[:max_checked]
     else:
-        values = objective_values(req, m, smass[cols], central=km.central[rows, 0])
+        values = objective_values(req, m, smass[cols], central=km.central[rows, 0],
+                                  gov=spec.governor)
         head = _best_first(values, max_checked)[:max_checked]
         order = None
     best, checked, stopped = _visit(spec, req, km, grid, rows, cols, cat, m, l0, head, batch)
@@ -323,7 +326,8 @@ def _visit(spec, req, km, grid, rows, cols, cat, m, l0, order, batch):
         if not np.any(win["feasible"]):
             continue
         obj = np.where(win["feasible"], objective_values(req, m[sel], cat.mass[cols[sel]], win,
-                                                         km.central[rows[sel], 0]), np.inf)
+                                                         km.central[rows[sel], 0],
+                                                         gov=spec.governor), np.inf)
         j = int(np.argmin(obj))
         i = sel[j]
         spring_fields = {k: float(v[cols[i]]) for k, v in cat.fields.items()}
@@ -379,7 +383,8 @@ def _surrogate_order(spec, req, km, grid, rows, kappa):
     if uniq is None:  # not even a cell per mass within its share: lightest first
         return np.argsort(km.m[rows, 0], kind="stable")
     win = batched_windows(spec, req, km, grid, cell_rows, centre)
-    score = np.where(win["feasible"], objective_values(req, None, None, win), np.inf)
+    score = np.where(win["feasible"],
+                     objective_values(req, None, None, win, gov=spec.governor), np.inf)
     return np.argsort(score[np.searchsorted(uniq, key)], kind="stable")
 
 

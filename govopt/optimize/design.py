@@ -85,6 +85,13 @@ def objective_unit(req: Requirements, gov) -> str:
 
 
 
+def objective_of(req: Requirements, gov) -> Objective:
+    """The design's objective for the record: name, SI unit and, for the moving mass, what it
+    counts (:meth:`~govopt.governors.base.Governor.moving_mass_words`)."""
+    return Objective(req.objective, objective_unit(req, gov), counts=(
+        gov.moving_mass_words() if req.objective == "moving_mass" else ""))
+
+
 def validated(spec: Spec) -> Spec:
     """The spec with its design requirements filled in (:func:`requirements`), after the checks
     every search needs: grids of a size govopt allows, a ``[material]`` where a spring is to be
@@ -165,9 +172,11 @@ def result_of(spec: Spec, req: Requirements, cand: Candidate, stats: dict, bound
     searched = search_bounds(spec, req, cand)
     damping = gov.key_unit("damping")
     record = Record(
-        status="optimal", objective=Objective(req.objective, objective_unit(req, gov)),
+        status="optimal", objective=objective_of(req, gov),
         value=cand.objective, bound=math.nan if bound is None else bound["objective"],
-        active=[f"{b['name']} at its {b['at']} search bound" for b in searched
+        active=[f"{b['name']} at its {b['at']} search bound" if b["held"] == "bound" else
+                f"{b['name']} at the catalogue's {b['at']} step within its bounds "
+                f"([catalogue] {b['step_key']})" for b in searched
                 if b["at"] in ("lower", "upper")],
         sensitivities=sensitivities(spec, req, None if bound is None else bound["objective"]),
         sensitivities_of=("the continuous bound (the spring GP at each mass), re-solved with "
@@ -217,23 +226,30 @@ def search_bounds(spec: Spec, req: Requirements, cand: Candidate) -> list[dict]:
     ``high_<unit>`` and ``value_<unit>`` (``low``, ``high``, ``value`` when dimensionless),
     ``given`` (the spec states it) and ``at``: ``"lower"`` or ``"upper"`` where the design
     takes the least or the largest value the search could give it within the bound (the
-    catalogue's grid), ``"fixed"`` for equal ends, else None."""
-    from ..spec_keys import bounds_table
+    catalogue's grid), ``"fixed"`` for equal ends, else None; ``held``: what holds it there,
+    ``"bound"`` (the grid reaches the bound) or ``"catalogue"`` (the grid's last step inside
+    the bound falls short of it: the ``[catalogue]`` key ``step_key`` decides); ``bound_text``,
+    ``step_text``: the bound and that key as the spec writes them (its own units; the default's
+    text where it gives none)."""
+    from ..spec_keys import bounds_table, catalogue_table
 
     gov = spec.governor
     kind = gov.spring_kind
-    given = (spec.data or {}).get("bounds") or {}
+    data = spec.data or {}
+    given = data.get("bounds") or {}
     table = bounds_table(gov, kind)
     rows = [(f"{gov.mass_key}_mass", gov.mass_key, "kg", req.flying_mass, mass_grid(req),
-             cand.m)]
+             cand.m, "weight_step")]
     if gov.central_load:
         rows.append(("central_mass", "central", "kg", req.central_mass,
-                     grid_steps(*req.central_mass, req.mass_step), cand.central))
+                     grid_steps(*req.central_mass, req.mass_step), cand.central, "weight_step"))
     if cand.spring and kind is not None and kind.helical:
         axes = dict(zip(("wire_diameter", "coil_radius", "active_turns"),
                         catalogue_axes(req), strict=True))
+        steps = {"wire_diameter": "wire_diameters", "coil_radius": "coil_radius_step",
+                 "active_turns": "turn_step"}
         rows += [(k.name, k.name, k.unit, getattr(req, k.name), axes[k.name],
-                  cand.spring[k.name]) for k in kind.bounds]
+                  cand.spring[k.name], steps.get(k.name)) for k in kind.bounds]
     elif cand.spring and kind is not None:
         from ..springs import leaf
 
@@ -241,21 +257,38 @@ def search_bounds(spec: Spec, req: Requirements, cand: Candidate) -> list[dict]:
         keep = ((w >= req.leaf_width[0] - 1e-12) & (w <= req.leaf_width[1] + 1e-12)
                 & (t >= req.leaf_thickness[0] - 1e-12) & (t <= req.leaf_thickness[1] + 1e-12))
         rows += [(k.name, k.name, k.unit, getattr(req, k.name), grid[keep],
-                  cand.spring[k.name]) for k, grid in zip(kind.bounds, (w, t), strict=True)]
+                  cand.spring[k.name], "leaf_sections")
+                 for k, grid in zip(kind.bounds, (w, t), strict=True)]
     if req.dashpot is not None and not math.isnan(cand.f):
         rows.append(("dashpot_f", "dashpot_f", gov.key_unit("damping"), req.dashpot,
-                     np.array(req.dashpot), cand.f))
+                     np.array(req.dashpot), cand.f, None))
+    catalogue = catalogue_table(kind)
+    written = data.get("catalogue") or {}
     out = []
-    for name, key, unit, (lo, hi), grid, value in rows:
+    for name, key, unit, (lo, hi), grid, value, step in rows:
         first, last = _grid_ends(grid)
         tol = 1e-9 * max(abs(first), abs(last), 1e-300)
         at = ("fixed" if lo == hi else "lower" if value <= first + tol
               else "upper" if value >= last - tol else None)
+        end = first if at == "lower" else last
+        bound = lo if at == "lower" else hi
+        held = None if at not in ("lower", "upper") else (
+            "catalogue" if step and abs(end - bound) > 1e-6 * max(abs(bound), abs(end))
+            else "bound")
         suffix = f"_{unit}" if unit else ""
         names = [n for n in table.key(key).names if n in given]
-        out.append({"name": name, "key": names[0] if names else "/".join(table.key(key).names),
-                    "unit": unit, f"low{suffix}": lo, f"high{suffix}": hi,
-                    f"value{suffix}": value, "given": bool(names), "at": at})
+        entry = {"name": name, "key": names[0] if names else "/".join(table.key(key).names),
+                 "unit": unit, f"low{suffix}": lo, f"high{suffix}": hi,
+                 f"value{suffix}": value, "given": bool(names), "at": at, "held": held}
+        if held:
+            side = 0 if at == "lower" else 1
+            entry["bound_text"] = str(given[names[0]][side]) if names else _shown(bound, unit)
+        if held == "catalogue":
+            decl = catalogue.key(step)
+            entry["step_key"] = step
+            entry["step_text"] = (str(written[step]) if step in written else
+                                  decl.default_text or str(decl.default))
+        out.append(entry)
     return out
 
 
@@ -264,6 +297,24 @@ def _shown(value: float, unit: str) -> str:
     if unit == "m":
         return f"{value * 1e3:.4g} mm"
     return f"{value:.4g} {unit}".rstrip()
+
+
+def _as_written(value: float, unit: str, text: str) -> str:
+    """``value`` (SI ``unit``) in the unit of ``text``, a quantity as the spec writes it
+    (``"0.25 lbf"``; a mass searched under a weight's bound as its weight), else
+    :func:`_shown`."""
+    from ..units import registry
+
+    written = str(text).lstrip("+-0123456789.eE ").strip()
+    if not written or not unit:
+        return _shown(value, unit)
+    ureg = registry()
+    for magnitude, si in ((value, unit), (value * G_STANDARD, "N")):
+        try:
+            return f"{ureg.Quantity(magnitude, si).to(written).magnitude:.4g} {written}"
+        except Exception:  # noqa: BLE001 - another dimension: the next reading, else SI
+            continue
+    return _shown(value, unit)
 
 
 def bounds_notes(searched: list[dict]) -> list[str]:
@@ -283,10 +334,20 @@ def bounds_notes(searched: list[dict]) -> list[str]:
         parts.append(f"{b['name']} {span}" + (f" ({', '.join(how)})" if how else ""))
     notes = ["search bounds ([bounds]): " + ", ".join(parts)]
     for b in searched:
-        if b["at"] in ("lower", "upper"):
-            notes.append(f"at the {b['at']} search bound of {b['name']} "
-                         f"({_shown(ends(b)[2], b['unit'])}): widen [bounds] {b['key']} to "
-                         "search beyond it")
+        if b["at"] not in ("lower", "upper"):
+            continue
+        value = _as_written(ends(b)[2], b["unit"], b.get("bound_text", ""))
+        if b.get("held") == "catalogue":
+            least, beyond = ("least", "below") if b["at"] == "lower" else ("largest", "above")
+            notes.append(f"at the {least} {b['name']} the catalogue gives within the bounds "
+                         f"({value}; [bounds] {b['key']} {b['at']} end {b['bound_text']}): "
+                         f"the catalogue's step holds it, not the bound ([catalogue] "
+                         f"{b['step_key']} = {b['step_text']}); a finer {b['step_key']} "
+                         f"searches {beyond} it")
+        else:
+            notes.append(f"at the {b['at']} search bound of {b['name']} ({value}; [bounds] "
+                         f"{b['key']} {b['at']} end {b['bound_text']}): widen [bounds] "
+                         f"{b['key']} to search beyond it")
     return notes
 
 def dashpot_margins(cand: Candidate) -> dict:
@@ -300,7 +361,8 @@ def dashpot_margins(cand: Candidate) -> dict:
 
 
 def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
-    """Least moving mass ``m + M`` of a dead-weight governor (Watt, Porter, Proell: textbook
+    """Least moving mass (every ball and the central load: :meth:`Governor.moving_mass`) of a
+    dead-weight governor (Watt, Porter, Proell: textbook
     3.4), exhaustive over the ball and central-load weights on the catalogue's weight step.
 
     At each (m, M) the characteristic is exact (virtual work on the seam); with a friction band
@@ -313,6 +375,7 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
     width. With an engine and load changes the dash-pot is designed as for spring governors.
     """
     grid, km, rows, m, c, stats = dead_weight_candidates(spec, req)
+    gov = spec.governor
     for part in batches(rows.size, 64):
         sel, start = rows[part], part.start
         try:
@@ -326,7 +389,7 @@ def dead_weight_search(spec: Spec, req: Requirements) -> tuple[Candidate, dict]:
             i = sel[j]
             stats["dynamics_checked"] = int(start + j + 1)
             return Candidate(float(m[i]), {}, 0.0, 0.0, float(win["f"][j]),
-                             float(m[i] + c[i]), float(win["settling"][j]),
+                             float(gov.moving_mass(m[i], c[i], 0.0)), float(win["settling"][j]),
                              float(win["f_lo"][j]), float(win["f_hi"][j]), float(c[i])), stats
     stats["dynamics_checked"] = int(rows.size)
     raise dynamics_conflict(spec, req, stats)
@@ -355,4 +418,5 @@ def dead_weight_candidates(spec: Spec, req: Requirements):
                     Affine(0.0 * w2, 0.0 * w2), Affine(0.0 * m[:, None], 0.0 * m[:, None]),
                     inertia, c[:, None])
     rows = np.nonzero(ok)[0]
-    return grid, km, rows[np.argsort(m[rows] + c[rows], kind="stable")], m, c, stats
+    return grid, km, rows[np.argsort(gov.moving_mass(m[rows], c[rows], 0.0), kind="stable")], \
+        m, c, stats

@@ -98,7 +98,7 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
                                     k_s * req.wire_diameter[0] ** -k_exp, mat.shear_modulus,
                                     mat.density)
     if req.objective != "spring_mass":
-        lower = lower + km.m[rows, 0] + km.central[rows, 0]
+        lower = spec.governor.moving_mass(km.m[rows, 0], km.central[rows, 0], lower)
     best, best_key = None, (math.inf, -1)
     for j in np.argsort(lower, kind="stable"):
         if lower[j] > best_key[0] * (1.0 + 1e-7):  # the GP's optimum cannot be below its bound
@@ -117,7 +117,8 @@ def continuous_bound(spec: Spec, req: Requirements, km: KappaModel, lo, hi):
         if not sol.ok:
             continue
         m, c = float(km.m[i, 0]), float(km.central[i, 0])
-        obj = sol.objective if req.objective == "spring_mass" else m + c + sol.objective
+        obj = sol.objective if req.objective == "spring_mass" else \
+            spec.governor.moving_mass(m, c, sol.objective)
         if (obj, i) < best_key:
             best_key = (obj, i)
             best = {"objective": obj, f"{spec.governor.mass_key}_mass_kg": m,
@@ -154,8 +155,13 @@ def sensitivities(spec: Spec, req: Requirements, base: float | None) -> dict[str
             speed, irregularity=speed.irregularity * 1.01)), req),
         ("mean speed", replace(spec, speed=replace(speed, omega_mean=speed.omega_mean * 1.01)),
          req),
-        ("k^2 margin", spec, replace(req, k2_margin=req.k2_margin * 1.01)),
     ]
+    margin = spec.governor.k2_rule(req.k2_margin)[0]
+    if margin:
+        trials.append(("k^2 margin", spec, replace(req, k2_margin=margin * 1.01)))
+    least = spec.governor.range_rule(req.min_range) if speed.band else 0.0
+    if least:
+        trials.append(("least range of speed", spec, replace(req, min_range=least * 1.01)))
     for name, s, r in trials:
         b = bound_of(s, r)
         if b is None:

@@ -22,6 +22,7 @@ from ..spec import Requirements, Spec, Speed, with_values
 from ..units import SI_UNITS, to_unit
 from .catalogue_search import Candidate, best_discrete
 from .windows import (
+    BAND_REFERENCES_FINE,
     Grid,
     central_load_intervals,
     dead_weight_arrays,
@@ -221,9 +222,10 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
         head += (f": the friction ({key}) spreads the opening and closing speeds wider than "
                  "speed.inner .. speed.outer leaves room for")
         moves.insert(0, friction)
-    x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=req.k2_margin / x)))
-    if x is not None and req.k2_margin:
-        moves.append(f"requirements.k2_margin {req.k2_margin:g} -> {req.k2_margin / x:.4g}")
+    margin = spec.governor.k2_rule(req.k2_margin)[0]
+    x = _bisect(lambda x: feasible(spec, replace(req, k2_margin=margin / x))) if margin else None
+    if x is not None:
+        moves.append(f"requirements.k2_margin {margin:g} -> {margin / x:.4g}")
     x = _bisect(lambda x: feasible(band(sp.omega_inner / x, sp.omega_outer), req))
     if x is not None:
         moves.append(f"speed.inner {sp.omega_inner * rpm:.5g} rpm -> "
@@ -335,10 +337,31 @@ def _feasible(spec: Spec, req: Requirements, stage: str) -> bool:
     return stats["spring_feasible"] > 0 if stage == "spring" else cand is not None
 
 
-def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, iters=12):
+#: the statics cells (weight pairs x reference speeds x configurations) the diagnosis's
+#: relaxations may screen in all: a spec whose search is huge and infeasible (a degenerate
+#: band over a large weight grid) is told the moves found within it, not kept waiting
+DIAGNOSIS_CELLS = 4e7
+
+
+class _Spent(Exception):
+    """The diagnosis's relaxations have screened :data:`DIAGNOSIS_CELLS`."""
+
+
+def _relax(spec: Spec, req: Requirements, stage: str, make, lo=1.0, hi=100.0, iters=12,
+           budget=None):
     """Smallest factor ``x`` in ``[lo, hi]`` with ``make(x) = (spec, req)`` feasible, by
-    bisection in log space; None if even ``hi`` is not enough."""
-    return _bisect(lambda x: _feasible(*make(x), stage), lo, hi, iters)
+    bisection in log space; None if even ``hi`` is not enough. ``budget``: a one-item list of
+    the cells left (each trial charged the most its screen can take), :class:`_Spent` raised
+    when none are."""
+    def trial(x):
+        s, r = make(x)
+        if budget is not None:
+            if budget[0] <= 0:
+                raise _Spent
+            budget[0] -= masses(r)[0].size * BAND_REFERENCES_FINE * Grid.build(s).alpha.size
+        return _feasible(s, r, stage)
+
+    return _bisect(trial, lo, hi, iters)
 
 
 def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> InfeasibleError:
@@ -354,8 +377,15 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
         return replace(spec, material=replace(mat, allowable_shear_stress=mat
                                               .allowable_shear_stress * x)), req
 
+    margin = spec.governor.k2_rule(req.k2_margin)[0]  # the type's rule: 0 where not applied
+
     def with_k2(x):
-        return spec, replace(req, k2_margin=req.k2_margin / x)
+        return spec, replace(req, k2_margin=margin / x)
+
+    least = spec.governor.range_rule(req.min_range) if speed.band else 0.0
+
+    def with_range(x):
+        return spec, replace(req, min_range=least / x)
 
     def with_hurwitz(x):
         return spec, replace(req, hurwitz_margin=req.hurwitz_margin / x)
@@ -390,20 +420,23 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
             hi_name = min(others, key=lambda k: np.median(parts[k][1]))
             head = (f"infeasible: the requirement '{lo_name}' needs a stiffer "
                     f"spring than '{hi_name}' allows at every {weight} in the bounds")
-        cands = [*speed_moves, ("requirements.k2_margin", with_k2, "/", req.k2_margin),
+        cands = [*speed_moves, ("requirements.k2_margin", with_k2, "/", margin),
+                 ("requirements.min_range", with_range, "/", least),
                  ("bounds", with_mass, "widen x", None)]
     elif stage == "spring" and stats["statics_feasible"] == 0:
         head = (f"infeasible: no catalogue spring's stiffness falls in the window "
                 "the statics allow (the speed band, k^2 margins, free length) at any "
                 f"{spec.governor.mass_key} weight in the bounds")
-        cands = [*speed_moves, ("requirements.k2_margin", with_k2, "/", req.k2_margin)]
+        cands = [*speed_moves, ("requirements.k2_margin", with_k2, "/", margin),
+                 ("requirements.min_range", with_range, "/", least)]
     elif stage == "spring":
         head = (f"infeasible: no spring in the catalogue and bounds meets the "
                 f"allowable shear stress (with index, envelope and surge limits) at a stiffness "
                 f"the statics allow ({stats['statics_feasible']} mass-spring combinations pass "
                 f"the statics, none the spring checks)")
         cands = [("material.allowable_shear_stress", with_ks, "stress x",
-                  mat.allowable_shear_stress), *speed_moves]
+                  mat.allowable_shear_stress), *speed_moves,
+                 ("requirements.min_range", with_range, "/", least)]
         if mat.allowable_shear_stress is None:  # a wire grade's allowables: not one number
             cands = cands[1:]
     else:
@@ -412,8 +445,14 @@ def diagnose(spec: Spec, req: Requirements, stage: str, parts, stats=None) -> In
     if friction:
         moves.append(friction)
         head += f"; with less friction ({spec.governor.friction_key}) a design exists"
+    budget = [DIAGNOSIS_CELLS]
     for name, make, how, value in cands:
-        x = _relax(spec, req, stage, make)
+        if how == "/" and not value:  # a margin of 0 (not applied): nothing to relax
+            continue
+        try:
+            x = _relax(spec, req, stage, make, budget=budget)
+        except _Spent:
+            break
         if x is None:
             continue
         if how == "stress x" and value is not None:  # as the spec wrote it (MPa, kgf/cm^2)

@@ -133,12 +133,49 @@ class KappaModel:
         hi = np.max([np.where(p[0] <= p[1], p[1], -np.inf) for p in (ray, quad)], axis=0)
         return lo, hi
 
+    def range_floor(self, share: float, i_inner: int = 0, i_outer: int = -1,
+                    iterations: int = 64):
+        """The least stiffness per row whose range of speed ``omega_a - omega_i`` (without
+        friction) is at least ``share`` of the band ``speed.outer - speed.inner``
+        (:func:`govopt.requirements.range_row`).
+
+        The range grows with the stiffness: the normal configuration is held at its reference
+        speed, so a stiffer spring turns the characteristic about it, raising ``omega_a`` and
+        lowering ``omega_i`` (their squares affine in ``kappa``, slopes of opposite signs); so
+        the set is a ray, its end found by bisection up to the stiffness at which
+        ``omega_i^2`` reaches 0 (beyond it no equilibrium: another requirement's). ``inf``
+        where no stiffness meets it.
+        """
+        sp = self.spec.speed
+        target = share * (sp.omega_outer - sp.omega_inner)
+        xi, yi = self.omega2.x[:, i_inner], self.omega2.y[:, i_inner]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            top = np.where(xi < 0, -yi / xi, 1e12)
+
+        def met(k):
+            def root(i):
+                return np.sqrt(np.maximum(self.omega2.x[:, i] * k + self.omega2.y[:, i], 0.0))
+            return root(i_outer) - root(i_inner) >= target
+
+        lo, hi = np.zeros_like(top), top
+        ok = met(hi)
+        for _ in range(iterations):
+            mid = 0.5 * (lo + hi)
+            up = met(mid)
+            hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
+        return np.where(ok, hi, np.inf)
+
     def statics_interval(self, k2_low: float, k2_high: float, delta: float,
-                         i_inner: int = 0, i_outer: int = -1):
+                         i_inner: int = 0, i_outer: int = -1, least: float = 0.0):
         """Admissible ``kappa`` per mass: ``k2_low <= k^2 <= k2_high`` and ``omega^2 > 0`` at every
         configuration, irregularity ``<= delta``, spring in tension at the innermost
-        configuration, positive free length. Returns ``(lo, hi)``, empty where ``lo > hi``; and
-        a dict of the interval each requirement alone allows (for diagnoses)."""
+        configuration, positive free length; with ``least > 0`` the range of speed
+        ``omega_a - omega_i >= least omega0`` (:func:`govopt.requirements.range_row`). Returns
+        ``(lo, hi)``, empty where ``lo > hi``; and a dict of the interval each requirement
+        alone allows (for diagnoses).
+
+        ``least``: the least range of speed's share of the band
+        (:func:`govopt.requirements.range_row`; :meth:`range_floor`)."""
         M = self.m.shape[0]
         start = (np.zeros(M), np.full(M, np.inf))
         parts = {
@@ -166,6 +203,10 @@ class KappaModel:
             parts[statics.BAND_OUTER] = _interval(*start, rise, sp.omega_outer**2, "<=")
         lo_irr, hi_irr = self.irregularity_interval(i_inner, i_outer, delta)
         parts["irregularity"] = (np.maximum(start[0], lo_irr), np.minimum(start[1], hi_irr))
+        if sp.band and least > 0:
+            from ..requirements import RANGE_OF_SPEED
+
+            parts[RANGE_OF_SPEED] = (self.range_floor(least, i_inner, i_outer), start[1])
         lo = np.max([p[0] for p in parts.values()], axis=0)
         hi = np.min([p[1] for p in parts.values()], axis=0)
         return lo, hi, parts

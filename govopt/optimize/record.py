@@ -67,11 +67,13 @@ KEYS = ("status", "objective", "value", "bound", "bound_kind", "gap", "certified
 
 @dataclass(frozen=True)
 class Objective:
-    """What is optimised: its name, its SI unit and whether it is minimised or maximised."""
+    """What is optimised: its name, its SI unit and whether it is minimised or maximised;
+    ``counts``: what it sums, in words (the moving mass's parts), where it is a sum."""
 
     name: str
     unit: str
     sense: str = "minimise"
+    counts: str = ""
 
     def __post_init__(self):
         if self.sense not in ("minimise", "maximise"):
@@ -149,7 +151,9 @@ class Record:
         return {
             "status": self.status,
             "objective": {"name": self.objective.name, "unit": self.objective.unit,
-                          "sense": self.objective.sense},
+                          "sense": self.objective.sense,
+                          **({"counts": self.objective.counts} if self.objective.counts
+                             else {})},
             "value": num(self.value),
             "bound": num(self.bound),
             "bound_kind": "lower" if self.objective.sense == "minimise" else "upper",

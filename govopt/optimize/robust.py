@@ -319,7 +319,7 @@ def spring_batches(spec: Spec, req: Requirements):
     cat = dz.catalogue(spec, req)
     rows, cols, l0, _ = dz.spring_screen(spec, req, km, lo, hi, cat)
     values = dz.objective_values(req, km.m[rows, 0], cat.mass[cols],
-                                 central=km.central[rows, 0])
+                                 central=km.central[rows, 0], gov=spec.governor)
     order = np.argsort(values, kind="stable")
     for first, sel in _slices(order):
         fat = None if cat.fatigue is None else (

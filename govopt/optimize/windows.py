@@ -69,9 +69,11 @@ def masses(req: Requirements) -> tuple[np.ndarray, np.ndarray]:
 
 
 def k2_limits(spec: Spec, req: Requirements) -> tuple[float, float]:
+    """``k^2``'s limits ``(low, high)``, 1/s^2: the type's rule on the spec's ``k2_margin``
+    (:meth:`~govopt.governors.base.Governor.k2_rule`; no ceiling: ``inf``)."""
     w0sq = spec.speed.omega_mean**2
-    ceiling = (1.0 - req.k2_margin) * w0sq if spec.governor.resonance_ceiling else np.inf
-    return req.k2_margin * w0sq, ceiling
+    margin, ceiling = spec.governor.k2_rule(req.k2_margin)
+    return margin * w0sq, (1.0 - margin) * w0sq if ceiling else np.inf
 
 
 #: reference speeds across a stated band at which the normal configuration may be held
@@ -117,7 +119,15 @@ def _window_rows(spec: Spec, req: Requirements, grid: Grid, m, c, count: int):
     if refs is not None:  # rows mass-major, the mean speed first (ties keep it)
         m, c, refs = np.repeat(m, refs.size), np.repeat(c, refs.size), np.tile(refs, m.size)
     km = KappaModel.build(spec, m, grid.alpha, c[:, None], refs)
-    return km, *km.statics_interval(*k2_limits(spec, req), spec.speed.irregularity)
+    return km, *km.statics_interval(*k2_limits(spec, req), spec.speed.irregularity,
+                                    least=least_range(spec, req))
+
+
+def least_range(spec: Spec, req: Requirements) -> float:
+    """The least range of speed's share of the band
+    (:meth:`~govopt.governors.base.Governor.range_rule`; 0 without a band or where none is
+    required)."""
+    return spec.governor.range_rule(req.min_range) if spec.speed.band else 0.0
 
 
 def statics_feasible(spec: Spec, req: Requirements, cells: int = 1 << 16) -> bool:
@@ -319,12 +329,20 @@ def dead_weight_parts(spec: Spec, req: Requirements, rise, fall, k2) -> dict:
     from :func:`dead_weight_arrays`."""
     sp = spec.speed
     k2_lo, k2_hi = k2_limits(spec, req)
-    return {
+    out = {
         "equilibrium speed > 0": np.all(fall > 0, axis=1),
         "k^2 within its margins": np.all((k2 >= k2_lo) & (k2 <= k2_hi), axis=1),
         statics.BAND_INNER: statics.band_extremes(fall, rise)[0] >= sp.omega_inner,
         statics.BAND_OUTER: statics.band_extremes(fall, rise)[1] <= sp.omega_outer,
     }
+    least = least_range(spec, req)
+    if least > 0:  # asked for: the range of speed without friction, the mean of the two bands
+        from ..requirements import RANGE_OF_SPEED
+
+        with np.errstate(invalid="ignore"):
+            w = np.sqrt((rise + fall) / 2.0)
+        out[RANGE_OF_SPEED] = w[:, -1] - w[:, 0] >= least * (sp.omega_outer - sp.omega_inner)
+    return out
 
 
 def central_load_intervals(spec: Spec, req: Requirements, grid: Grid, m) -> tuple:

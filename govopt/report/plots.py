@@ -283,14 +283,15 @@ FAR_CEILING = 0.25
 
 def k2(res, ax) -> None:
     """``k^2`` over the range (Hamabe Part II): where the type is forced at the running speed's
-    harmonics (``resonance_ceiling``), against the band ``0 < k^2 < omega0^2`` (case 1;
+    harmonics (``resonance_ceiling``) or the spec asks for Hamabe's band (``k2_margin``),
+    against the band ``0 < k^2 < omega0^2`` (case 1;
     resonance risk above, case 2; unstable below 0, case 3); otherwise only ``k^2 > 0``
     (stability) is required and the axis is scaled to ``k^2`` itself. The required margin (the
     check ``k^2 > 0``'s limit, where positive) is drawn as a line, its spare named."""
     x, _ = _shown(res, res.statics.alpha)
     w0sq = res.omega_reference**2
     k2v = np.asarray(res.k2, dtype=float)
-    ceiling = res.spec.governor.resonance_ceiling
+    ceiling = res.spec.governor.k2_rule(getattr(res.spec.requirements, "k2_margin", None))[1]
     low = next((c for c in res.checks if c.name == "k^2 > 0 (stability)"), None)
     floor = low.limit if low is not None and low.limit > 0 else None
     top = float(np.max(k2v))

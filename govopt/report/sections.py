@@ -455,7 +455,8 @@ def optimisation(res) -> list[Table]:
     unit = obj.get("unit", "")
     v, u = shown(opt.get("value"), unit)
     rows = [["status", "", cell(opt.get("status"))],
-            [f"objective: {str(obj.get('name', '')).replace('_', ' ')}", u, cell(v)]]
+            [f"objective: {str(obj.get('name', '')).replace('_', ' ')}"
+             + (f" ({obj['counts']})" if obj.get("counts") else ""), u, cell(v)]]
     if opt.get("bound") is not None:
         rows.append(["continuous bound (GP relaxation)", u,
                      cell(shown(opt["bound"], unit)[0])])

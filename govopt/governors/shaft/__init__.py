@@ -144,6 +144,8 @@ class ShaftGovernor(Governor):
     spring: ClassVar[str | None] = "tension"
     mass_key: ClassVar[str] = "pendulum"
     mass_name: ClassVar[str] = "pendulum"
+    resonance_ceiling: ClassVar[bool] = True  # the valve gear forces the pendulums
+    band_is_range: ClassVar[bool] = False  # Hamabe's irregularity: "at most" delta0
     resonance_source: ClassVar[str] = "Hamabe Part II, case 1"
     free_length_key: ClassVar[str] = "free_half_length"
     free_length_meaning: ClassVar[str] = ("half the spring's free length, l0 (the spring joins "

@@ -73,7 +73,7 @@ def _k2(sheet: Sheet, row: int, res: Result) -> None:
     ws, st, gov = sheet.ws, res.statics, res.spec.governor
     w0sq = res.omega_reference**2
     xs, xu = gov.shown(st.alpha)
-    ceiling = gov.resonance_ceiling
+    ceiling = gov.k2_rule(getattr(res.spec.requirements, "k2_margin", None))[1]
     k2 = res.method.named("k2")
     sheet.title(row, f"Restoring stiffness k^2 over the range ({k2.cite}): stable for "
                      + ("0 < k^2 < omega0^2" if ceiling else "k^2 > 0"), font=BOLD)
