@@ -101,8 +101,10 @@ def row_figures(spec: Spec) -> dict[str, RowFigure]:
         ("stability", "stability", "", "stability", True),
         ("effort", "effort", effort, "effort"),
         ("power", "power", "J", "power"),
-        ("friction_band", "friction_band", force, "friction band"),
-        ("insensitiveness", "insensitiveness", "", "coefficient of insensitiveness"),
+        ("friction_band", "friction_band", force, "friction band referred to the flying mass "
+                                                  "(not the sleeve's own friction force)"),
+        ("insensitiveness", "insensitiveness", "", "coefficient of insensitiveness, the "
+                                                   "largest over the range"),
     ]
     for lc in spec.load_changes:
         rows += [(f"hurwitz_margin: {lc.name}", f"hurwitz_margin: {lc.name}", "",

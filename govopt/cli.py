@@ -20,7 +20,7 @@ from typing import Annotated
 
 import typer
 
-from .commands.common import PipeClosed, State, echo, fail, internal
+from .commands.common import State, echo, fail, internal, unwritable
 
 #: command -> (module in govopt.commands, its typer app, the one line of the root's help)
 COMMANDS = {
@@ -28,6 +28,10 @@ COMMANDS = {
                                              "Hamabe case a)."),
     "design": ("evaluate", "design_app", "Find the best design for the spec's requirements "
                                          "(default: bundled hamabe-design)."),
+    "at": ("questions", "at_app", "Speeds, forces, effort and power at the configurations a "
+                                  "problem names."),
+    "solve": ("questions", "solve_app", "Find the spec input at which a figure meets its target "
+                                        "(any unknown)."),
     "spring": ("spring", "app", "Least-mass helical spring for a force and stiffness (an exact "
                                 "GP, certified global), or check one you have."),
     "bench": ("bench", "app", "Speed against error of every analysis and the speed targets "
@@ -162,9 +166,9 @@ def main(argv: list[str] | None = None) -> None:
         _run(argv)
     except KeyboardInterrupt:
         sys.exit(130)
-    except (BrokenPipeError, PipeClosed):  # `govopt evaluate | head`: quiet, stdout is gone
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        sys.exit(1)
+    except BrokenPipeError as exc:  # stdout gone outside a command's output: the shell's
+        unwritable(sys.stdout, exc)  # convention (128 + SIGPIPE), quietly
+        sys.exit(128 + signal.SIGPIPE)
     except Exception as exc:  # outside a command (the commands are guarded)
         if State.terminated:
             sys.exit(State.terminated)

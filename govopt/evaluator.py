@@ -543,7 +543,15 @@ def _spring_checks(spec: Spec, cols: dict, s: _Statics, per_design: _PerDesign, 
     gov, mat, n = spec.governor, spec.material, s.n
     if own:  # each row added once over the designs that have it (the last of a name wins)
         rows: dict[str, dict] = {}
-        for i in np.nonzero(~s.impossible)[0]:
+        todo = ~s.impossible
+        unforced = todo & np.array([v is None for v in vibs], dtype=bool)
+        table = gov.spring_checks_over(spec, s.sd, s.F, s.x) if unforced.any() else None
+        if table is not None:  # the designs without a forcing at once, the rest one by one
+            for c in table:
+                checks.add(c.name, c.value, c.limit, c.sense, scale=c.scale, where=unforced,
+                           unit=c.unit, source=c.source, group=c.group)
+            todo = todo & ~unforced
+        for i in np.nonzero(todo)[0]:
             found = per_design(i, lambda i=i: gov.spring_checks(spec, s.spring_of(i),
                                                                 s.char_of(spec, i), vibs[i]))
             for c in found or []:
@@ -681,6 +689,26 @@ def _report(ev: Evaluation, s: _Statics, vib, vibration: bool, measures, dyn: di
     if vibration and vib is not None:
         dyn["vibration"] = vib.to_dict()
     ev.dynamics = dyn
+
+
+def statics_of(spec: Spec, cols: dict):
+    """The statics of the designs ``cols`` as :func:`core` evaluates them (arrays over the
+    designs and configurations: ``x``, ``F``, ``sd``, ``impossible`` ...)."""
+    return _statics(spec, cols)
+
+
+def springs_of(spec: Spec, cols: dict) -> tuple[np.ndarray, np.ndarray]:
+    """The springs' rate ``kappa`` (N/m) and free length ``l0`` (the type's form, m) of the
+    designs ``cols`` (one float array per :data:`DESIGN_FIELDS`), shape ``(N,)``: as
+    :func:`core` evaluates them."""
+    n = len(cols["flying_mass"])
+    cols = {f: np.asarray(cols[f], dtype=float) if f in cols else np.full(n, np.nan)
+            for f in DESIGN_FIELDS}
+    col = {k: v[:, None] for k, v in cols.items()}
+    central = np.where(np.isnan(col["central_mass"]), 0.0, col["central_mass"])
+    with np.errstate(all="ignore"):
+        kappa, l0 = _spring(spec, cols, col, central)
+    return kappa[:, 0], l0[:, 0]
 
 
 def _spring(spec: Spec, cols: dict, col: dict, central) -> tuple[np.ndarray, np.ndarray]:

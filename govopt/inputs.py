@@ -148,6 +148,8 @@ PREFERRED_WIRE = tuple(x / 1000 for x in (
     8.0, 9.0, 10.0, 11.2, 12.5, 14.0, 16.0, 18.0, 20.0, 22.4, 25.0))
 
 OBJECTIVES = ("moving_mass", "spring_mass", "settling_time", "vibration")
+#: whose verdict (``requirements.verdict``) and what the fitter does (``requirements.fitter``)
+VERDICTS, FITTER = ("made", "nominal"), ("sets", "none")
 
 
 @dataclass(frozen=True)
@@ -196,6 +198,14 @@ class Requirements:
     #: the least yield of made governors (:mod:`govopt.made`): the design search keeps only
     #: designs whose yield under the stated tolerances is at least this; None: not asked
     min_yield: float | None = None
+    #: whose verdict a spring governor's design and evaluation give (:mod:`govopt.made`):
+    #: ``"made"``, the governors made to the tolerances and set by the fitter (PASS where their
+    #: yield meets ``min_yield``, default :data:`govopt.made.DEFAULT_MIN_YIELD`), or
+    #: ``"nominal"``, the nominal design's checks alone
+    verdict: str = "made"
+    #: whether the fitter sets each made governor as its type declares
+    #: (:meth:`govopt.governors.base.Governor.adjustments`): ``"sets"``, or ``"none"``
+    fitter: str = "sets"
 
     @property
     def robust(self) -> bool:
@@ -230,6 +240,9 @@ class Spec:
     #: ``stiffness``, ``free_length`` (the type's form), ``force_inner`` and ``force_outer`` (N);
     #: else None
     band_spring: dict | None = field(default=None, compare=False)
+    #: ``"nominal"`` where the command line asks for the nominal verdict (``--nominal``),
+    #: whatever ``requirements.verdict`` says; else ``"made"`` (:mod:`govopt.made`)
+    verdict: str = "made"
 
     def with_analysis(self, **changes) -> Spec:
         """The same spec with some fidelity settings changed."""

@@ -218,7 +218,12 @@ class Table:
     """A spec table: its path (``"governor"``, ``"valve_gear.table"``), what it is for, its
     keys in reading order. ``required``: the spec must have it; ``array``: an array of tables
     (``[[load_change]]``); ``open``: its keys are another reader's (a study's ``[study]``);
-    ``when``: when it applies (words)."""
+    ``when``: when it applies (words). The same as data, for the readers that check it (the
+    parser and the JSON Schema): ``alternatives``, the choices between groups of keys (a
+    choice is a tuple of groups, a group a tuple of key names, ``?`` after an optional one:
+    the spec gives every required key of exactly one group and no key of the others);
+    ``required_unless``: the top-level table whose presence makes this one optional;
+    ``needs``: the top-level tables this one is read with."""
 
     name: str
     meaning: str
@@ -227,6 +232,9 @@ class Table:
     array: bool = False
     open: bool = False
     when: str = ""
+    alternatives: tuple = ()
+    required_unless: str = ""
+    needs: tuple[str, ...] = ()
     #: keys a reader names on a mistake, beyond the declared ones: name -> the hint
     aliases: dict = field(default_factory=dict, compare=False)
 

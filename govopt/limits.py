@@ -29,6 +29,13 @@ MAX_EXPONENT = 30
 #: [MIN_MAGNITUDE, MAX_MAGNITUDE]: the real range is ~1e-4 m to ~2e11 Pa; beyond it products
 #: and powers (``d^4``, ``1/I``) over- or underflow double precision
 MIN_MAGNITUDE, MAX_MAGNITUDE = 1e-12, 1e12
+#: the highest speed of a speed band over its lowest (``speed.outer / speed.inner``; with
+#: ``speed.irregularity`` delta: (2 + delta) / (2 - delta)): a governor floats over a band of a
+#: few per cent to a few tens; past ten times its inner speed a band is a slip of the pen
+#: (``1e7 rpm`` for ``300 rpm``), and its characteristic is no governor's
+MAX_SPEED_RATIO = 10
+#: the irregularity that gives that band: 2 (r - 1) / (r + 1)
+MAX_IRREGULARITY = 2.0 * (MAX_SPEED_RATIO - 1) / (MAX_SPEED_RATIO + 1)
 #: characters of a text (name, description): it is shown in reports and workbook cells
 MAX_TEXT_CHARS = 1000
 #: items in one list of a spec (a valve-gear table, a catalogue's wire diameters)

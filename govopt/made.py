@@ -45,6 +45,14 @@ TORQUE_LEVELS = 11
 #: the failing samples are adjusted by the fitter in this many groups of settings, least change
 #: first (a sample fixed by a small change is not tried at the others)
 ADJUSTMENT_GROUPS = 3
+#: the least yield where the spec asks for none (``requirements.min_yield``): a spring
+#: governor's verdict is PASS where the 95 % Wilson lower bound of its made-and-set yield is at
+#: least this (``requirements.verdict = "made"``, the default)
+DEFAULT_MIN_YIELD = 0.95
+#: the EN 15800 quality grade a spring is made to where the spec states none (neither a wire
+#: grade's ``tolerance_grade`` nor ``robust_spring_grade``): grade 2, the standard's middle
+#: grade (grade 1 is the finest and dearest)
+DEFAULT_GRADE = 2
 #: the search bounds' rows (limits of the catalogue search, not requirements of a made part)
 BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diameter <= max",
                "coil radius >= min", "coil radius <= max", "active turns >= min",
@@ -52,13 +60,152 @@ BOUND_NAMES = ("mass >= min", "mass <= max", "wire diameter >= min", "wire diame
 
 
 # ---------------------------------------------------------------------------------------------
+# Whose verdict: the made governor's
+# ---------------------------------------------------------------------------------------------
+
+def judged_as_made(spec) -> bool:
+    """Whether ``spec``'s verdict is the made governor's: a helical spring of a material (its
+    EN 15800 tolerances follow from its section) and ``requirements.verdict = "made"`` (the
+    default; ``"nominal"`` or ``--nominal``: the nominal design's checks alone)."""
+    req, mat = spec.requirements, spec.material
+    return (tm.kind(spec) is not None and mat is not None and mat.shear_modulus is not None
+            and spec.verdict == "made" and (req is None or req.verdict == "made"))
+
+
+def made_requirements(spec):
+    """The requirements a made governor of ``spec`` is judged by: the spec's, with the made
+    verdict's defaults where it states none (:func:`judged_as_made`): the spring made to EN
+    15800 grade :data:`DEFAULT_GRADE`, the yield at least :data:`DEFAULT_MIN_YIELD`. The
+    spec's own requirements where its verdict is nominal (None without any)."""
+    from .inputs import Requirements
+
+    req = spec.requirements
+    if not judged_as_made(spec):
+        return req
+    req = Requirements() if req is None else req
+    changes = {}
+    if tm.spring_grade(spec, req) is None:
+        changes["robust_spring_grade"] = DEFAULT_GRADE
+    if req.min_yield is None:  # not asked: as many samples as the work allows
+        changes["min_yield"] = DEFAULT_MIN_YIELD
+        afford = int(limits.MAX_MONTE_CARLO_SECONDS / 2 / row_seconds(spec))
+        changes["robust_samples"] = max(min(req.robust_samples, afford), MIN_SAMPLES)
+    return replace(req, **changes) if changes else req
+
+
+def as_made(spec):
+    """``spec`` with :func:`made_requirements` (what ``govopt design`` designs for); a spec
+    that asks for a design over its tolerance box already (``robust_*``, ``min_yield``:
+    :mod:`govopt.optimize.robust`) as it is (a design every check holds for over the whole box
+    has a yield of 1)."""
+    if spec.requirements is not None and spec.requirements.robust:
+        return spec
+    req = made_requirements(spec)
+    return spec if req is spec.requirements else replace(spec, requirements=req)
+
+
+def fitter_sets(spec) -> tuple:
+    """The settings the fitter makes on each made governor of ``spec``
+    (:meth:`govopt.governors.base.Governor.adjustments`), none where
+    ``requirements.fitter = "none"``."""
+    req = spec.requirements
+    if req is not None and req.fitter == "none":
+        return ()
+    return spec.governor.adjustments()
+
+
+def set_by_the_fitter(spec, rows: dict, cols: dict, i: int = 0) -> dict:
+    """The made governors ``rows`` (design columns) as the fitter sets them
+    (:func:`fitter_sets`): each setting brings the equilibrium speed at its end of the range to
+    the speed of design ``i`` of ``cols`` there. The speed squared is affine in the spring's
+    free length (virtual work, ``omega^2 = (kappa (A - B l0) + C_f) / (J'/2 - C_i)``,
+    :meth:`govopt.governors.base.Terms.omega_squared`), so the setting is the closed form
+    ``l0 = (A + (C_f - omega*^2 (J'/2 - C_i)) / kappa) / B`` at that end."""
+    from .analysis import statics
+    from .evaluator import springs_of
+
+    out = dict(rows)
+    for adj in fitter_sets(spec):
+        if adj.field != "free_half_length":
+            continue
+        x = statics.configurations(spec)
+        end = x[:1] if adj.end == "inner" else x[-1:]
+        one = {k: np.asarray(v, dtype=float)[i:i + 1] for k, v in cols.items()}
+        kappa0, l00 = springs_of(spec, one)
+        t0 = statics.terms(spec, end, one["flying_mass"][:, None],
+                           np.nan_to_num(one["central_mass"])[:, None])
+        target = t0.omega_squared(kappa0[:, None], l00[:, None])
+        kappa, _ = springs_of(spec, out)
+        t = statics.terms(spec, end, out["flying_mass"][:, None],
+                          np.nan_to_num(out["central_mass"])[:, None])
+        with np.errstate(all="ignore"):
+            l0 = (t.A + (t.cf - target * t.lever) / kappa[:, None]) / t.B
+        out["free_half_length"] = np.broadcast_to(l0, (len(kappa), 1))[:, 0].copy()
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
 # Which rows of a bulk frame hold
 # ---------------------------------------------------------------------------------------------
+
+class Evaluated:
+    """Made governors evaluated, as arrays (no pandas frame: :func:`evaluate_arrays`): the
+    requirements' ``names`` (every check but the search bounds'), their relative ``margins``
+    (rows x names, as :func:`check_margins` reads a bulk frame), the rows that are ``error``
+    (impossible designs) and the evaluator's per-row ``figures`` (SI)."""
+
+    def __init__(self, names: list[str], margins: np.ndarray, error: np.ndarray,
+                 figures: dict):
+        self.names, self.margins, self.error, self.figures = names, margins, error, figures
+
+    def __len__(self) -> int:
+        return len(self.error)
+
+    def take(self, rows) -> Evaluated:
+        """Some of the rows (an index array or a mask)."""
+        return Evaluated(self.names, self.margins[rows], self.error[rows],
+                         {k: np.asarray(v)[rows] for k, v in self.figures.items()})
+
+    @staticmethod
+    def concat(parts: list[Evaluated]) -> Evaluated:
+        """The rows of ``parts`` in order (a requirement a part lacks does not apply there)."""
+        names = list(dict.fromkeys(n for p in parts for n in p.names))
+        margins = np.concatenate([np.column_stack(
+            [p.margins[:, p.names.index(n)] if n in p.names else np.full(len(p), np.inf)
+             for n in names]) if names else np.zeros((len(p), 0)) for p in parts])
+        keys = [k for k in parts[0].figures if all(k in p.figures for p in parts)]
+        return Evaluated(names, margins, np.concatenate([p.error for p in parts]),
+                         {k: np.concatenate([np.asarray(p.figures[k]) for p in parts])
+                          for k in keys})
+
+
+def evaluated(spec, cols: dict, vibration: bool = True) -> Evaluated:
+    """The designs ``cols`` through the one evaluator (:func:`govopt.evaluator.core`, the
+    classic measures left out), as :class:`Evaluated`."""
+    from .evaluator import DESIGN_FIELDS, core
+
+    n = len(cols["flying_mass"])
+    cols = {f: np.asarray(cols[f], dtype=float) if f in cols else np.full(n, np.nan)
+            for f in DESIGN_FIELDS}
+    ev = core(spec, cols, vibration=vibration, classic=False)
+    error = ev.impossible
+    names = [c for c in ev.table.names if not any(b in c for b in BOUND_NAMES)]
+    out = np.empty((ev.n, len(names)))
+    columns = ev.table.columns()
+    for j, name in enumerate(names):
+        c = columns[name]
+        m, p = c.margin, c.passed
+        m = np.where(~p & ~(m < PASS_TOL), -np.inf, np.where(p, np.maximum(m, PASS_TOL), m))
+        out[:, j] = np.where(error, -np.inf, np.where(c.applies, m, np.inf))
+    return Evaluated(names, out, error, ev.figures)
+
 
 def requirement_checks(frame) -> list[str]:
     """The checks of a bulk frame a made governor must meet (all but the search bounds')."""
     from .bulk import check_names
 
+    if isinstance(frame, Evaluated):
+        return list(frame.names)
     return [c for c in check_names(frame.columns) if not any(b in c for b in BOUND_NAMES)]
 
 
@@ -69,6 +216,8 @@ def check_margins(frame) -> np.ndarray:
     apply."""
     from .bulk import margin_column, passed_column
 
+    if isinstance(frame, Evaluated):
+        return frame.margins
     names = requirement_checks(frame)
     out = np.empty((len(frame), len(names)))
     error = (frame["status"] == "error").to_numpy(dtype=bool)
@@ -85,8 +234,15 @@ def check_margins(frame) -> np.ndarray:
 def holds(frame) -> np.ndarray:
     """Rows where every requirement holds (a check that does not apply holds; an error row
     does not)."""
-    error = (frame["status"] == "error").to_numpy(dtype=bool)
+    error = _error(frame)
     return ~error & np.all(check_margins(frame) >= PASS_TOL, axis=1)
+
+
+def _error(frame) -> np.ndarray:
+    """The rows of a bulk frame (or :class:`Evaluated`) that are impossible designs."""
+    if isinstance(frame, Evaluated):
+        return frame.error
+    return (frame["status"] == "error").to_numpy(dtype=bool)
 
 
 def failing(frame) -> dict[str, int]:
@@ -95,7 +251,7 @@ def failing(frame) -> dict[str, int]:
     if len(frame) == 0:
         return {}
     bad = check_margins(frame) < PASS_TOL
-    error = (frame["status"] == "error").to_numpy(dtype=bool)
+    error = _error(frame)
     counts = {c: int(k) for c, k in zip(requirement_checks(frame), bad[~error].sum(axis=0),
                                          strict=True) if k}
     if error.any():
@@ -129,13 +285,13 @@ def row_seconds(spec, vibration: bool = True) -> float:
                                      friction_runs=friction)
 
 
-def sample_count(spec) -> int:
+def sample_count(spec, req=None) -> int:
     """How many governors the yield samples: :data:`SAMPLES` (``requirements.robust_samples``
     where the spec asks for a yield), fewer where they would cost more than
     :data:`govopt.limits.MAX_YIELD_SECONDS` (half of
     :data:`govopt.limits.MAX_MONTE_CARLO_SECONDS` where it asks for a yield) at
     :func:`row_seconds` each; 0 where fewer than :data:`MIN_SAMPLES` fit."""
-    req = spec.requirements
+    req = made_requirements(spec) if req is None else req
     asked = req is not None and req.min_yield is not None
     n, budget = ((req.robust_samples, limits.MAX_MONTE_CARLO_SECONDS / 2) if asked
                  else (SAMPLES, limits.MAX_YIELD_SECONDS))
@@ -164,6 +320,24 @@ def evaluate_at(spec, cols: dict, torque=None, vibration: bool = True):
         index.append(sel)
     frame = pd.concat(frames, ignore_index=True)
     return frame.iloc[np.argsort(np.concatenate(index), kind="stable")].reset_index(drop=True)
+
+
+def evaluate_arrays(spec, cols: dict, torque=None, vibration: bool = True) -> Evaluated:
+    """:func:`evaluate_at` as arrays (:class:`Evaluated`, no pandas frame): the rows in
+    order, the running work charged first."""
+    n = len(cols["flying_mass"])
+    torque = np.zeros(n) if torque is None else np.asarray(torque, dtype=float)
+    limits.charge(n * row_seconds(spec, vibration), n)
+    parts, index = [], []
+    for level in np.unique(torque):
+        sel = np.nonzero(torque == level)[0]
+        s = spec if level == 0 else replace(spec, engine=replace(
+            spec.engine, torque_slope=spec.engine.torque_slope * (1.0 + level)))
+        parts.append(evaluated(s, {k: np.asarray(v, dtype=float)[sel] for k, v in cols.items()},
+                               vibration))
+        index.append(sel)
+    out = Evaluated.concat(parts)
+    return out.take(np.argsort(np.concatenate(index), kind="stable"))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -196,8 +370,6 @@ def fit(spec, rows: dict, torque, ok: np.ndarray, nut: float, valve: float,
     ``frame`` (the governors' evaluated rows) also that frame with each adjusted governor's row
     as set (the first setting, least change first, at which it holds). ``evaluate(rows,
     torque)``: the evaluation (default :func:`evaluate_at`)."""
-    import pandas as pd
-
     if evaluate is None:
         def evaluate(r, t):
             return evaluate_at(spec, r, t, vibration)
@@ -228,6 +400,8 @@ def fit(spec, rows: dict, torque, ok: np.ndarray, nut: float, valve: float,
     if frame is None:
         return ok, adjusted, stopped
     if set_rows:  # the adjusted governors' rows as set
+        import pandas as pd
+
         idx = sorted(set_rows)
         new = pd.concat([set_rows[i] for i in idx], ignore_index=True)
         new.index = idx
@@ -264,9 +438,8 @@ def made_yield(spec, cols: dict, bx: tm.Box, n: int, seed: int,
     ``blocks``: the samples are evaluated in blocks of these sizes (the last repeated; None: at
     once), and after each block ``give_up(failures, samples so far)`` may stop them (the record
     then says how many were evaluated, ``samples``, of ``of``)."""
-    import pandas as pd
-
     rows, torque = draw(cols, bx, n, seed)
+    rows = set_by_the_fitter(spec, rows, cols)
     nut = fitter[0] if spec.governor.spring is not None else 0.0
     frames, oks, adjusted, stopped, start, b = [], [], 0, 0, 0, 0
     while start < n:
@@ -274,26 +447,27 @@ def made_yield(spec, cols: dict, bx: tm.Box, n: int, seed: int,
         sel = np.arange(start, min(n, start + size))
         start, b = int(sel[-1]) + 1, b + 1
         part = {k: v[sel] for k, v in rows.items()}
-        frame = evaluate_at(spec, part, torque[sel])
+        frame = evaluate_arrays(spec, part, torque[sel])
         ok = holds(frame)
         if nut > 0 or fitter[1] > 0:
-            ok, a, s_ = fit(spec, part, torque[sel], ok, nut, fitter[1])
+            ok, a, s_ = fit(spec, part, torque[sel], ok, nut, fitter[1],
+                            evaluate=lambda r, t: evaluate_arrays(spec, r, t))
             adjusted, stopped = adjusted + a, stopped + s_
         frames.append(frame)
         oks.append(ok)
         if give_up is not None and give_up(int(sum((~o).sum() for o in oks)), start):
             break
-    frame, ok = pd.concat(frames, ignore_index=True), np.concatenate(oks)
+    frame, ok = Evaluated.concat(frames), np.concatenate(oks)
     done, k = len(ok), int(ok.sum())
     lo, hi = wilson(k, done)
-    fails = failing(frame.iloc[np.nonzero(~ok)[0]])
+    fails = failing(frame.take(np.nonzero(~ok)[0]))
     out = {"probability": k / done, "ci95": [lo, hi], "holds": k, "samples": done, "of": n,
            "seed": seed, "sampler": "Latin hypercube", "distribution": tm.DISTRIBUTION,
            "adjusted_by_the_fitter": adjusted, "failing": fails,
            "most_failing": next(iter(fails), None)}
     for end in ("inner", "outer"):
-        w = frame[f"omega_{end}_rad_s"].to_numpy(dtype=float)
-        w = w[np.isfinite(w)]
+        w = np.asarray(frame.figures[f"omega_{end}_rad_s"], dtype=float)
+        w = w[np.isfinite(w) & ~frame.error]
         out[f"sampled_{end}_rad_s"] = [float(w.min()), float(w.max())] if w.size else None
     if stopped:
         out["note"] = (f"the fitter's adjustment stopped at govopt's limit of work: {stopped} "
@@ -316,7 +490,9 @@ def record(spec, cols: dict, bx: tm.Box, n: int, seed: int, fitter=(0.0, 0.0),
            "half_widths": bx.half_widths(spec), "masses_fraction": masses,
            "dashpot_fraction": dashpot, "torque_slope_fraction": bx.torque,
            "adjusting_nut_m": nut, "dashpot_valve_fraction": valve,
-           "distribution": tm.DISTRIBUTION, "notes": list(bx.notes)}
+           "distribution": tm.DISTRIBUTION, "notes": list(bx.notes),
+           "set_by_the_fitter": [f"{a.what}, bringing the speed at the {a.end} end to the "
+                                 f"design's ({a.cite})" for a in fitter_sets(spec)]}
     band = tm.speed_band(spec, cols, bx)  # as made (before any fitter's setting)
     sp = spec.speed
     band["required_rad_s"] = [sp.omega_inner, sp.omega_outer] if sp is not None and sp.band \
@@ -346,7 +522,7 @@ def record(spec, cols: dict, bx: tm.Box, n: int, seed: int, fitter=(0.0, 0.0),
 def stated_record(spec, res) -> dict | None:
     """The made governors' record of a result (:func:`record`) for the tolerances its spec
     states (:func:`govopt.analysis.tolerance.states_tolerances`), else None."""
-    req = spec.requirements
+    req = made_requirements(spec)
     if not tm.states_tolerances(spec, req):
         return None
     cols = resolved_columns(spec, res)
@@ -354,7 +530,7 @@ def stated_record(spec, res) -> dict | None:
     if not bx.dims():
         return None
     seed = 0 if req is None else req.robust_seed
-    return record(spec, cols, bx, sample_count(spec), seed, fitter_of(req),
+    return record(spec, cols, bx, sample_count(spec, req), seed, fitter_of(req),
                   None if req is None else req.min_yield, spreads=spreads_of(req))
 
 
@@ -363,11 +539,23 @@ def spreads_of(req) -> tuple[float, float]:
     return (0.0, 0.0) if req is None else (req.robust_masses, req.robust_dashpot)
 
 
+def _required(res):
+    """``res`` whose made record (a robust design's) states the required yield where the
+    verdict is the made governor's (:func:`made_requirements`)."""
+    y = res.made["yield"]
+    if y.get("required") is not None or not judged_as_made(res.spec):
+        return res
+    need = made_requirements(res.spec).min_yield
+    y = {**y, "required": need,
+         "meets_required": None if y["ci95"] is None else bool(y["ci95"][0] >= need)}
+    return replace(res, made={**res.made, "yield": y})
+
+
 def with_yield(res):
     """``res`` with its made governors' record (``Result.made``: the yield beside the verdict),
     where its spec states tolerances and the record is not there yet."""
     if res.made is not None:
-        return res
+        return _required(res)
     made = stated_record(res.spec, res)
     return res if made is None else replace(res, made=made)
 

@@ -46,6 +46,14 @@ def yield_words(made: dict, name=str) -> str:
     return text
 
 
+def meets(made: dict | None) -> bool | None:
+    """Whether the made governors meet the required yield (the 95 % Wilson lower bound at
+    least ``min_yield``): None where no yield is required or none was sampled."""
+    if not made or made["yield"].get("required") is None:
+        return None
+    return made["yield"].get("meets_required")
+
+
 def sampled_words(made: dict) -> str:
     """How the yield was found: ``"500 samples (Latin hypercube, seed 0)"``, or the worst
     case."""

@@ -387,7 +387,11 @@ def _bundled_hint(path) -> str:
     from .examples import examples
 
     p = Path(path)
-    if p.exists() or p.parent != Path() or (p.stem if p.suffix == ".toml" else p.name) not in \
+    try:
+        present = p.exists()
+    except OSError:  # a name the system refuses (too long): no example bears it
+        return ""
+    if present or p.parent != Path() or (p.stem if p.suffix == ".toml" else p.name) not in \
             examples():
         return ""
     name = p.stem if p.suffix == ".toml" else p.name

@@ -243,16 +243,37 @@ class Result:
                                       note=f"normal; {lo:.4g} .. {hi:.4g}{' ' + u if u else ''} "
                                            "innermost .. outermost"))
             if cm["friction_band"]:
+                ends = (f"; {cm['insensitiveness_inner']:.4g} at the inner end, "
+                        f"{cm['insensitiveness_outer']:.4g} at the outer"
+                        if "insensitiveness_inner" in cm else "")
                 out += [Figure("friction band", cm["friction_band"],
                                "N*m" if gov.coordinate == "angle" else "N", "classic",
-                               note="generalised force"),
+                               note="referred to the flying mass (a generalised force), not "
+                                    "the sleeve's own friction"),
                         Figure("coefficient of insensitiveness", cm["insensitiveness"], "",
-                               "classic")]
+                               "classic", note="the largest over the range" + ends)]
         if self.made:  # governors made to the spec's tolerances: the yield beside the verdict
             from .made_words import figures as made_figures
 
             out += made_figures(self.made)
         return out
+
+    @property
+    def verdict_of(self) -> str:
+        """Whose verdict this is: ``"made"`` (the governors made to the tolerances and set by
+        the fitter: :mod:`govopt.made`, its yield against ``min_yield``) or ``"nominal"`` (the
+        nominal design's checks alone)."""
+        from .made_words import meets
+
+        return "nominal" if meets(self.made) is None else "made"
+
+    @property
+    def passed(self) -> bool:
+        """The verdict: every check holds at nominal and, where the verdict is the made
+        governor's, its yield meets ``min_yield``."""
+        from .made_words import meets
+
+        return all(c.passed for c in self.checks) and meets(self.made) is not False
 
     def figure(self, name: str) -> Figure:
         """The figure named ``name`` (:meth:`figures`)."""
@@ -401,4 +422,5 @@ class Result:
             out["optimisation"] = self.optimisation
         if self.made is not None:
             out["made"] = self.made
+        out["verdict"] = {"of": self.verdict_of, "passed": self.passed}
         return jsonable(out)

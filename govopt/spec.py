@@ -133,7 +133,7 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
     kind = governor.spring_kind
     # the speed range to meet: optional where a design is only evaluated (the textbook's "find
     # the equilibrium speeds"); whatever needs it says so
-    speed = _speed(top.sub("speed", declared=SPEED)) \
+    speed = _speed(top.sub("speed", declared=SPEED), falling=top.has("design")) \
         if top.has("speed") or not top.has("design") else None
     mat = top.sub("material", required=False, declared=material_table())
     material = None if mat is None else _material(mat, kind is None or kind.helical)
@@ -153,10 +153,16 @@ def parse_spec(data: dict, file: str = "<spec>") -> Spec:
                                        alpha_to=_configuration(lc, "to", governor)))
         lc.finish()
 
+    if load_changes and engine is None:  # never dropped without a word
+        top.fail("load_change", "a load change needs [engine] (the flywheel's inertia and the "
+                 "engine's torque slope): add [engine], or drop the [[load_change]] tables")
     analysis = _analysis(top.sub("analysis", required=False, declared=analysis_table(governor)))
     if speed is not None:
         analysis = replace(analysis, omega_mean=speed.omega_mean)
     requirements = _requirements(top, governor)
+    if requirements is not None and requirements.robust_torque_slope > 0 and engine is None:
+        top.sub("requirements").fail("robust_torque_slope", "spreads the engine's torque slope, "
+                                     "and there is no [engine]: add [engine], or drop the key")
     too_big = requirements and limits.design_size_error(requirements, analysis.points,
                                                         kind, governor.mass_key)
     if too_big:  # counted before anything is allocated
@@ -289,7 +295,10 @@ def _configuration(rd: Reader, name: str, governor: Governor) -> float:
     return x
 
 
-def _speed(sp: Reader) -> Speed:
+def _speed(sp: Reader, falling: bool = False) -> Speed:
+    """``[speed]``: the band's ends, or the mean speed and irregularity; ``falling``: an outer
+    speed below the inner one is allowed (a governor evaluated, found unstable), else (a design
+    search) refused."""
     given = [k for k in ("min", "max", "minimum", "maximum", "low", "high") if sp.has(k)]
     if given and not (sp.has("inner") or sp.has("outer") or sp.has("mean")):
         sp.fail(given[0], "unknown key (did you mean 'inner' and 'outer', the speeds at the "
@@ -300,11 +309,20 @@ def _speed(sp: Reader) -> Speed:
             if sp.has(conflicting):
                 sp.fail(conflicting, "give either mean and irregularity, or inner and outer")
         w_in, w_out = sp.read(inner), sp.read(outer)
-        if w_out <= w_in:
-            sp.fail("outer", "expected outer > inner speed")
+        if w_out == w_in or (w_out < w_in and not falling):
+            sp.fail("outer", "expected outer > inner speed" + (
+                "" if w_out == w_in else " (a falling pair is evaluated where [design] gives "
+                                         "the governor, not designed for)"))
+        if max(w_out, w_in) > limits.MAX_SPEED_RATIO * min(w_out, w_in):
+            sp.fail("outer", f"expected at most {limits.MAX_SPEED_RATIO} times speed.inner "
+                             f"(govopt's limit), got {w_out / w_in:.4g} times")
         speed = Speed((w_in + w_out) / 2.0, 2.0 * (w_out - w_in) / (w_out + w_in), band=True)
     else:
         speed = Speed(sp.read(mean), sp.read(irregularity))
+        if speed.irregularity > limits.MAX_IRREGULARITY:
+            sp.fail("irregularity", f"expected at most {limits.MAX_IRREGULARITY:.4g} (the highest "
+                                    f"speed at most {limits.MAX_SPEED_RATIO} times the lowest: "
+                                    f"govopt's limit), got {speed.irregularity:g}")
     sp.finish()
     return speed
 

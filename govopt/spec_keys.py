@@ -17,7 +17,7 @@ import functools
 import math
 
 from . import limits
-from .inputs import OBJECTIVES, Analysis, Requirements
+from .inputs import FITTER, OBJECTIVES, VERDICTS, Analysis, Requirements
 from .keys import REQUIRED, Key, Table
 from .units import G_STANDARD
 
@@ -65,7 +65,8 @@ SPEED = Table("speed", "the speeds the governor must float between: a band (inne
     Key("irregularity", "number", "the irregularity delta0 = (omega_a - omega_i) / omega0: "
                                   "the design's own is at most this", high=2.0, example=0.12,
         when="with mean"),
-), when="required unless the spec only evaluates a given [design]")
+), when="required unless the spec only evaluates a given [design]", required_unless="design",
+   alternatives=((("inner", "outer"), ("mean", "irregularity")),))
 
 
 def material_table() -> Table:
@@ -195,7 +196,7 @@ def load_change_table(gov) -> Table:
             **_configuration(gov)),
         Key("to", dim, f"the configuration ({gov.coordinate_name}) after it",
             **_configuration(gov)),
-    ), array=True, when="read with [engine]")
+    ), array=True, when="read with [engine]", needs=("engine",))
 
 
 #: ``[analysis]``'s keys of every type; a type adds its own (:attr:`Governor.analysis_keys`:
@@ -287,6 +288,15 @@ def requirements_table(kind) -> Table:
                                    "whose yield is at least this at 95 % confidence",
             default=None, high=1.0, example=0.99, range_text="(0, 1), e.g. 0.99",
             source="the yield's Wilson interval (Wilson 1927)"),
+        Key("verdict", "choice", "whose verdict a spring governor gets: made (the governors "
+                                 "made to the tolerances and set by the fitter: PASS where "
+                                 "their yield meets min_yield, default 0.95) or nominal (the "
+                                 "nominal design's checks alone; also --nominal)",
+            default=_REQ.verdict, choices=VERDICTS),
+        Key("fitter", "choice", "sets: the fitter sets each made governor as its type declares "
+                                "(a spring's preload, bringing the inner end of the range to "
+                                "the design's speed); none: made governors are taken as made",
+            default=_REQ.fitter, choices=FITTER),
         *(kind.requirements if kind is not None else ()),
     ), when="read by govopt design")
 
@@ -320,7 +330,8 @@ def catalogue_table(kind) -> Table:
 
 def governor_table(gov) -> Table:
     """``[governor]`` of governor type ``gov``: ``type`` and the type's keys."""
-    return Table("governor", gov.title, (TYPE, *gov.keys), required=True)
+    return Table("governor", gov.title, (TYPE, *gov.keys), required=True,
+                 alternatives=gov.key_alternatives)
 
 
 def top_table(tables) -> Table:

@@ -8,15 +8,23 @@ that reads each refuses the other's keys). The governor branch names the governo
 each type an ``if``/``then`` pair closes every table to the type's declared keys (a misspelt key
 is an error, as in the parser); the spring branch closes ``[spring]`` to the keys of its form
 (:func:`spring_schema`). Quantities must be strings with a unit (a bare number, or a string of
-digits, is not a length), choices are enumerations and static ranges are limits. What only the
-parser can check (a quantity's dimension, ranges that depend on other keys, keys required in one
-configuration) stays the parser's.
+digits, is not a length) of their dimension (:func:`dimension_pattern`: a number and one unit
+word govopt reads as that dimension; a unit written as an expression is left to the parser),
+choices are enumerations and static ranges are limits. Which keys a spec needs is said as the
+parser reads it: required keys, alternatives (``oneOf``: :attr:`govopt.keys.Table.alternatives`),
+a table required unless another is there, a table read with another, the material's values its
+spring needs. What only the parser can check stays the parser's: the order of a bound's ends
+and ranges that depend on other keys (JSON Schema compares no two values), a unit expression's
+dimension, and the limits of govopt's work.
 """
 
 from __future__ import annotations
 
+import functools
 import json
 import math
+import re
+from pathlib import Path
 
 from .keys import WEIGHT, Key, Table
 from .spec_docs import describe
@@ -24,6 +32,60 @@ from .spec_docs import describe
 #: a string with a unit: a letter that is not an exponent's ``e``, or a degree, minute or
 #: second sign (no look-ahead, which taplo's regular expressions lack)
 UNIT_PATTERN = "[A-DF-Za-df-z_°µ'\"%]"
+#: the unit words of each dimension, as govopt reads them (:func:`unit_words`, generated:
+#: ``python -m govopt.spec_schema --words``; a test fails when it is stale)
+WORDS = Path(__file__).parent / "data" / "unit_words.json"
+#: SI prefixes, symbols and names (pint reads each before any unit: ``mm``, ``kN``, ``MPa``)
+PREFIXES = ("Y", "Z", "E", "P", "T", "G", "M", "k", "h", "da", "d", "c", "m", "µ", "u", "n", "p",
+            "f", "a", "yotta", "zetta", "exa", "peta", "tera", "giga", "mega", "kilo", "hecto",
+            "deca", "deka", "deci", "centi", "milli", "micro", "nano", "pico", "femto", "atto")
+_NUMBER = r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?"
+
+
+def unit_words() -> dict[str, list[str]]:
+    """Each dimension's single unit words (names and symbols of pint's registry) that govopt's
+    own parser reads as a quantity of it (``1 WORD``): ``rpm`` an angular velocity, ``Hz`` not
+    (:func:`govopt.units.parse_quantity`). Slow (every unit of the registry, tried in every
+    dimension): :data:`WORDS` keeps what it gives."""
+    from .units import SI_UNITS, UnitError, parse_quantity, registry
+
+    ureg = registry()
+    found: dict[str, set] = {d: set() for d, si in SI_UNITS.items() if si}
+    for name in ureg:
+        try:
+            words = {name, ureg.get_symbol(name)}
+        except Exception:  # noqa: BLE001 - a registry entry that is no unit
+            continue
+        for word in words:
+            for dimension, got in found.items():
+                try:
+                    parse_quantity(f"1 {word}", dimension)
+                except (UnitError, ValueError):
+                    continue
+                got.add(word)
+    return {d: sorted(w) for d, w in found.items()}
+
+
+@functools.cache
+def _words() -> dict[str, list[str]]:
+    return json.loads(WORDS.read_text(encoding="utf-8"))
+
+
+def dimension_pattern(dimension: str) -> str | None:
+    """A quantity string of ``dimension`` as far as a pattern can say it: a number and one
+    unit word of the dimension (an SI prefix allowed, a plural ``s``), or a unit written as an
+    expression (a product, quotient, power or sum: the parser alone reads its dimension);
+    only an expression where the dimension has no single unit word (an inertia, a damping).
+    None for a dimension without units."""
+    if dimension not in _words():
+        return None
+    expression = r".*[*/^()+·²³].*|.*\s-\s.*|.*[A-DF-Za-df-z][0-9].*"
+    words = _words()[dimension]
+    if not words:
+        return rf"^(?:{expression})$"
+    alt = "|".join(re.escape(w) for w in sorted(words, key=len, reverse=True))
+    prefixes = "|".join(sorted(PREFIXES, key=len, reverse=True))
+    return rf"^(?:{expression}|\s*{_NUMBER}\s*(?:{prefixes})?(?:{alt})(?:e?s)?\s*)$"
 
 
 def _limits(key: Key) -> dict:
@@ -56,7 +118,10 @@ def _value(key: Key, dimension: str | None) -> dict:
         return {"type": "object"}
     if dimension is None or dimension == "dimensionless":
         return {"type": "integer" if kind == "count" else "number", **_limits(key)}
-    return {"type": "string", "pattern": UNIT_PATTERN}
+    if dimension_pattern(dimension) is None:
+        return {"type": "string", "pattern": UNIT_PATTERN}
+    return {"type": "string", "pattern": UNIT_PATTERN,
+            "allOf": [{"$ref": f"#/definitions/{dimension}"}]}
 
 
 def _key_schema(key: Key, name: str) -> dict:
@@ -102,6 +167,13 @@ def table_schema(table: Table, tables: dict[str, Table]) -> dict:
                 required.append(key.name)
         if key.kind == WEIGHT:  # one spelling, not both
             rules.append({"not": {"required": list(key.names)}})
+        sub = tables.get(key.name) if not table.name else None
+        if sub is not None and sub.required_unless:  # [speed] unless only a [design] is read
+            rules.append({"if": {"not": {"required": [sub.required_unless]}},
+                          "then": {"required": [key.name]}})
+        if sub is not None and sub.needs:  # [[load_change]] with [engine]
+            rules.append({"if": {"required": [key.name]}, "then": {"required": list(sub.needs)}})
+    rules += [alternatives(choice) for choice in table.alternatives]
     out = {"type": "object", "description": table.meaning, "properties": props,
            "additionalProperties": False}
     if table.open:
@@ -113,6 +185,30 @@ def table_schema(table: Table, tables: dict[str, Table]) -> dict:
     return out
 
 
+def alternatives(choice: tuple) -> dict:
+    """``oneOf`` the groups of a choice (:attr:`govopt.keys.Table.alternatives`): every
+    required key of one group, and no key of the others.
+
+    >>> alternatives(((("a",), ("b", "c?"))))["oneOf"][1]
+    {'required': ['b'], 'not': {'anyOf': [{'required': ['a']}]}}
+    """
+    groups = [[n.rstrip("?") for n in group] for group in choice]
+    return {"oneOf": [
+        {"required": [n for n in group if not n.endswith("?")],
+         "not": {"anyOf": [{"required": [n]} for j, other in enumerate(groups) if j != i
+                           for n in other]}}
+        for i, group in enumerate(choice)]}
+
+
+def material_rules(helical: bool) -> dict:
+    """What ``[material]`` must give, as the parser reads it (:func:`govopt.spec._material`):
+    a helical spring's shear values unless a wire grade gives them, a leaf's modulus."""
+    if not helical:
+        return {"required": ["elastic_modulus"]}
+    return {"if": {"not": {"required": ["grade"]}},
+            "then": {"required": ["allowable_shear_stress", "shear_modulus"]}}
+
+
 def governor_schema() -> dict:
     """The schema of a governor spec file: the governor types named, every type's tables closed
     to their declared keys."""
@@ -122,12 +218,17 @@ def governor_schema() -> dict:
     branches = []
     for name in REGISTRY:
         tables = spec_tables(name)
+        then = {**table_schema(tables[""], tables),
+                "description": f"{governor_class(name).title}"}
+        kind = governor_class(name).declared_spring_kind()
+        material = then["properties"]["material"]
+        material["allOf"] = [*material.get("allOf", []),
+                             material_rules(kind is None or kind.helical)]
         branches.append({
             "if": {"properties": {"governor": {"properties": {"type": {"const": name}},
                                                "required": ["type"]}},
                    "required": ["governor"]},
-            "then": {**table_schema(tables[""], tables),
-                     "description": f"{governor_class(name).title}"}})
+            "then": then})
     return {
         "description": "a governor spec: the governor, the speeds, the spring's material, a "
                        "design to evaluate or the requirements of one to find",
@@ -188,9 +289,23 @@ def schema() -> dict:
         "if": {"required": ["governor"]},
         "then": governor_schema(),
         "else": spring_schema(),
+        "definitions": {d: {"description": f"a quantity of {d.replace('_', ' ')}: a number and "
+                                           "its unit",
+                            "type": "string", "pattern": dimension_pattern(d)}
+                        for d in _words() if dimension_pattern(d) is not None},
     }
 
 
 def text() -> str:
     """:func:`schema` as JSON text (indented, keys in declared order)."""
     return json.dumps(schema(), indent=2, ensure_ascii=False) + "\n"
+
+
+if __name__ == "__main__":  # python -m govopt.spec_schema --words: regenerate WORDS
+    import sys
+
+    if sys.argv[1:] != ["--words"]:
+        raise SystemExit("usage: python -m govopt.spec_schema --words")
+    WORDS.write_text(json.dumps(unit_words(), indent=1, ensure_ascii=False) + "\n",
+                     encoding="utf-8")
+    print(f"wrote {WORDS}")

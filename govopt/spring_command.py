@@ -222,7 +222,8 @@ def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool, spec=Non
     from .report import spring_outputs as so
 
     if output is not None:
-        out.written.append(so.write_check_spec(out, output, replace=replace))
+        out.written.append(so.write_check_spec(out, output, replace=replace,
+                                               drawing=_drawing(out)))
     if xlsx is not None:
         from .report.excel.book import command_line
 
@@ -232,6 +233,32 @@ def _write(out: Outcome, xlsx, plots, output, stem: str, replace: bool, spec=Non
     if plots is not None:
         out.written += so.write_plots(out, plots, stem, replace=replace)
     return out
+
+
+def _drawing(out: Outcome) -> tuple[int, tuple[int, int, int]] | None:
+    """How a designed spring's lengths are written (:func:`govopt.report.spring_outputs.
+    drawn_length`): the fewest significant digits, from 4 (a drawing's), and the rounding of
+    the wire, the mean diameter and the free length (nearest first, then up and down) at
+    which the spring read back fails no check the design
+    passes; None (every digit) for a checked spring, which is written as it was given."""
+    from dataclasses import replace
+    from itertools import product
+
+    from .report.spring_outputs import drawn_length
+    from .springs.assessment import table
+
+    if out.command != "design":
+        return None
+    a, sp = out.assessment, out.assessment.spring
+    failed = set(a.failed)
+    for digits in range(4, 16):
+        for ways in product((0, 1, -1), repeat=3):
+            d, D, L0 = (drawn_length(out.shown, x, digits, w)[1]
+                        for x, w in zip((sp.d, sp.D, sp.L0), ways, strict=True))
+            rows, _ = table(replace(sp, d=d, D=D, L0=L0), a.mat, a.loads, a.rules)
+            if {c.name for c in rows if not c.passed} <= failed:
+                return digits, ways
+    return None
 
 
 def run(spec: str | Path | None = None, *, json_out: bool = False, xlsx=None, plots=None,
@@ -314,10 +341,8 @@ def _pairs(v: dict, where: _Where) -> None:
 
 def _material_rules(v: dict, where: _Where) -> None:
     """What a wire grade must come with, and what needs one: the tensile strength of
-    ``custom`` only, a load cycle's fatigue only with a grade's data; a grade whose shear
-    modulus varies with the wire needs it; without a grade, the allowable and the modulus."""
-    from .springs import materials
-
+    ``custom`` only, a load cycle's fatigue only with a grade's data; without a grade, the
+    allowable and the modulus."""
     material = v.get("material")
     if v.get("tensile_strength") is not None and material != "custom":
         where.fail("tensile_strength", "applies to --material custom only (a grade's R_m is its "
@@ -335,32 +360,34 @@ def _material_rules(v: dict, where: _Where) -> None:
     if cycle and v["fatigue_min_force"] > v["fatigue_max_force"]:
         where.fail("fatigue_min_force", f"expected at most {where('fatigue_max_force')}, "
                                         f"got {v['fatigue_min_force']:.6g} N")
-    if material is not None and v.get("shear_modulus") is None and not isinstance(
-            materials.material(material, tensile_strength=1.0).G, float):
-        where.missing("shear_modulus", f" with material {material!r}, whose shear modulus "
-                                       "varies with the wire diameter")
-    if material is None:
+    if material is None and v.get("catalogue") is None:  # a catalogue's rows name theirs
         _require(v, where, "allowable_stress", "shear_modulus")
 
 
 def _rules(v: dict):
+    """The standard's choices; the load dynamic (S_a x1.5) as ``load`` says, else where a
+    load cycle is given."""
     from .springs.assessment import Rules
 
+    load = v.get("load") or ("dynamic" if v.get("fatigue_max_force") is not None else "static")
     return Rules(method=v["rules"], allowable=v.get("allowable_stress"),
-                 correction=v.get("correction") or (None if v.get("material") else "wahl"),
+                 correction=v.get("correction") or (
+                     None if v.get("material") or v.get("catalogue") else "wahl"),
                  peened=v["peened"], seating=v["seating"],
                  index=(v["index_min"], v["index_max"]),
                  fatigue_safety=v["min_fatigue_safety"], cycles=v["life"],
-                 tolerance_grade=v.get("tolerance_grade", 2))
+                 dynamic=load == "dynamic", tolerance_grade=v.get("tolerance_grade", 2))
 
 
 def _material(v: dict):
     from .springs import materials
 
     if v.get("material") is None:
-        return materials.given(v["shear_modulus"], v.get("density") or 7850.0)
+        return materials.given(v["shear_modulus"], v.get("density") or 7850.0,
+                               v.get("elastic_modulus"))
     return materials.material(v["material"], tensile_strength=v.get("tensile_strength"),
-                              G=v.get("shear_modulus"), density=v.get("density"))
+                              G=v.get("shear_modulus"), E=v.get("elastic_modulus"),
+                              density=v.get("density"))
 
 
 def _outcome(name, command, assessment, record, entries, v, notes=(), sizing=None) -> Outcome:
@@ -453,9 +480,14 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
     if v.get("loops") is not None and v["kind"] != "extension":
         where.fail("loops", "loops are an extension spring's (--kind extension); a compression "
                             "spring has --ends")
+    if v["objective"] == "solid length" and v["kind"] != "compression":
+        where.fail("objective", "a compression spring's (an extension spring is close-wound: "
+                                "its body is solid; minimise its mass or outer diameter)")
     if v.get("ends") is not None and v["kind"] != "compression":
         where.fail("ends", "end forms are a compression spring's; an extension spring has "
                            "--loops")
+    if v.get("catalogue") is not None:
+        return _from_catalogue(v, where, name, entries)
     wires, source = _catalogue(v, where)
     material = v.get("material")
     cycle = None
@@ -489,6 +521,32 @@ def _design(v: dict, where: _Where, name: str, entries) -> Outcome:
     return _outcome(name, "design", a, sizing.record(), entries, v, sizing=sizing)
 
 
+def _from_catalogue(v: dict, where: _Where, name: str, entries) -> Outcome:
+    """The lightest spring of a maker's catalogue meeting the requirements
+    (:mod:`govopt.spring_stock`): the same report as a designed spring's."""
+    from . import spring_stock as stock
+    from .springs.assessment import Loads
+
+    for key in ("length_1", "length_2", "wire_sizes", "coil_step"):
+        if v.get(key) is not None:
+            where.fail(key, "not with a catalogue (its springs are picked at the forces and "
+                            "the stiffness)")
+    if v["kind"] != "compression":
+        where.fail("catalogue", "a catalogue of compression springs (not --kind extension)")
+    file = v["catalogue"]
+    if where("catalogue") != "--catalogue" and file != stock.SAMPLE:
+        file = str(Path(where.file).parent / file)  # a spec's file: beside the spec
+    cycle = None
+    if v.get("fatigue_min_force") is not None:
+        cycle = (v["fatigue_min_force"], v["fatigue_max_force"])
+    loads = Loads(v.get("min_force") or 0.0, v["force"], cycle)
+    item, a, counts, notes = stock.pick(stock.read(file), v, _rules(v), loads,
+                                        v.get("material"))
+    source = Path(file).name if file != stock.SAMPLE else "sample (made up, no maker's)"
+    return _outcome(name or f"part {item.part} of the catalogue {source}", "design", a,
+                    stock.record(a, counts, source, notes), entries, v)
+
+
 # ---------------------------------------------------------------------------- check
 
 
@@ -498,6 +556,7 @@ def _check(v: dict, where: _Where, name: str, entries) -> Outcome:
     from .springs import compression as hc
     from .springs import extension as he
     from .springs import helical as hx
+    from .springs import tolerances as tl
     from .springs.assessment import Loads, Spring, assess, extension_free_length
 
     _require(v, where, "wire_diameter")
@@ -521,12 +580,19 @@ def _check(v: dict, where: _Where, name: str, entries) -> Outcome:
                 where.fail(key, "an extension spring's (--kind extension)")
         _require(v, where, "active_coils", "free_length")
         n, ends = v["active_coils"], v.get("ends") or "closed_ground"
-        total = v.get("total_coils")
-        if total is not None and not total > n:
-            where.fail("total_coils", f"expected more than the active coils ({n:g}), got "
+        total, inactive = v.get("total_coils"), hc.end_coils(ends)
+        if total is not None and (total < n or (total == n and inactive > 0)):
+            where.fail("total_coils", f"expected {'more than' if inactive > 0 else 'at least'} "
+                                      f"the active coils ({n:g}) with {ends} ends, got "
                                       f"{total:g}")
-        end_coils = hc.end_coils(ends) if total is None else total - n
+        end_coils = inactive if total is None else total - n
         spring = Spring(kind, d, D, n, end_coils, v["free_length"], ends)
+        Lc = float(hc.solid_length(tl.max_wire_diameter(d, mat.grade), n + end_coils, ends))
+        if v["free_length"] < Lc:
+            where.fail("free_length", f"expected at least the solid length L_c = "
+                                      f"{Lc * 1e3:.6g} mm ({n + end_coils:g} coils of "
+                                      f"{ends} ends, EN 13906-1), got "
+                                      f"{v['free_length'] * 1e3:.6g} mm")
         R = float(hx.stiffness(d, D, n, G))
     else:
         if v.get("ends") is not None:
@@ -534,18 +600,38 @@ def _check(v: dict, where: _Where, name: str, entries) -> Outcome:
         loops = v.get("loops") or "full_loop"
         if v.get("total_coils") is not None:  # an extension spring's body coils
             n_b = v["total_coils"]
+            n = n_b + G / E
+            if v.get("active_coils") is not None and not math.isclose(
+                    v["active_coils"], n, rel_tol=1e-9):
+                where.fail("total_coils", f"an extension spring's body coils n_b, whose active "
+                                          f"coils are n_b + G/E = {n:.6g} (Shigley section "
+                                          f"10-11), not {where('active_coils')} "
+                                          f"{v['active_coils']:g}: give one of them")
         else:
             _require(v, where, "active_coils")
             n_b = v["active_coils"] - G / E
-        n = n_b + G / E
+            n = v["active_coils"]
+        if not n_b > 0.0:
+            where.fail("active_coils", f"expected more than G/E = {G / E:.4g} (the body's "
+                                       f"coils n_b = n - G/E), got {n:g}")
         R = float(hx.stiffness(d, D, n, G))
+        body = float(he.extension_body_length(d, n_b))
+        if v.get("free_length") is not None and v["free_length"] < body:
+            where.fail("free_length", f"expected at least the close-wound body (n_b + 1) d = "
+                                      f"{body * 1e3:.6g} mm, got {v['free_length'] * 1e3:.6g} mm")
         F0 = v.get("initial_tension")
-        if F0 is None:
+        if F0 is None:  # at most the least force (0 N where none is given)
+            least = v.get("min_force")
+            least = least if least is not None else (
+                math.inf if v.get("length_1") is not None else 0.0)
             lo, hi = he.initial_tension_range(D / d)
-            F0 = float(min(hx.force_at_stress(0.5 * (lo + hi), d, D),
-                           v.get("min_force") or math.inf))
-            notes.append(f"initial tension not given: {F0:.4g} N, the middle of Shigley's "
-                         "preferred range (eq. (10-40)), at most the least force")
+            middle = float(hx.force_at_stress(0.5 * (lo + hi), d, D))
+            F0 = min(middle, least)
+            notes.append(f"initial tension not given: {F0:.4g} N, "
+                         + ("the middle of Shigley's preferred range (eq. (10-40))"
+                            if F0 == middle else
+                            f"the least working force (the middle of Shigley's preferred range "
+                            f"(eq. (10-40)), {middle:.4g} N, is above it)"))
         L0 = v.get("free_length") or float(extension_free_length(d, D, n_b, loops))
         spring = Spring(kind, d, D, n_b, 0.0, L0, loops, F0)
     F1, F2 = _forces(v, where, spring, R)
@@ -569,17 +655,25 @@ def _forces(v: dict, where: _Where, spring, R: float) -> tuple[float, float]:
         if v.get(force) is not None and v.get(length) is not None:
             raise GovoptError(f"{where(force)} and {where(length)}: give one (the other "
                               "follows from the rate)")
-        out.append(v.get(force) if v.get(length) is None else at(v[length]))
+        L = v.get(length)
+        if L is not None and sign < 0 and L < spring.L0:
+            where.fail(length, f"expected at least the free length ({spring.L0 * 1e3:.6g} mm: "
+                               f"an extension spring is close-wound below it), got "
+                               f"{L * 1e3:.6g} mm")
+        if L is not None and sign > 0 and L > spring.L0:
+            where.fail(length, f"expected at most the free length ({spring.L0 * 1e3:.6g} mm: "
+                               f"beyond it the spring would pull), got {L * 1e3:.6g} mm")
+        out.append(v.get(force) if L is None else at(L))
     F1, F2 = out
     if F2 is None:
         where.missing("force", " (or the working length: length_2)")
+    if not F2 > 0.0:  # as a force of 0 N is refused
+        where.fail("length_2", f"expected a length under load, got the free length "
+                               f"({spring.L0 * 1e3:.6g} mm: no working force)")
     F1 = 0.0 if F1 is None else F1
     if not F1 <= F2:
         where.fail("min_force" if v.get("min_force") is not None else "length_1",
                    f"expected at most the force at L2 ({F2:.6g} N), got {F1:.6g} N")
-    if F1 < 0.0 or F2 < 0.0:
-        where.fail("length_2" if v.get("length_2") is not None else "force",
-                   "a working length beyond the free length (the spring would pull)")
     return F1, F2
 
 

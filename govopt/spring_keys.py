@@ -68,9 +68,9 @@ TENSILE_STRENGTH = Key("tensile_strength", "stress", "the wire's tensile strengt
                        default=None, when="with material \"custom\", where it is required",
                        example="1600 MPa")
 SHEAR_MODULUS = Key("shear_modulus", "stress", "the shear modulus G (required without a "
-                                               "material, and with a grade whose G varies with "
-                                               "the wire diameter)",
-                    default=None, default_text="the grade's", example="81.5 GPa")
+                                               "material)",
+                    default=None, default_text="the grade's (at the wire's diameter where it "
+                                               "steps with it)", example="81.5 GPa")
 ALLOWABLE_STRESS = Key("allowable_stress", "stress", "the allowable shear stress k_s (required "
                                                      "without a material; with one, it replaces "
                                                      "the grade's rule)",
@@ -105,6 +105,14 @@ MIN_FATIGUE_SAFETY = Key("min_fatigue_safety", "number", "the least fatigue safe
                          default=1.0)
 LIFE = Key("life", "number", "the required life, load cycles", default=1e7)
 PEENED = Key("peened", "flag", "shot-peened wire (its fatigue strength)", default=False)
+LOAD = Key("load", "choice", "how the spring is loaded: static (or quasi-static), or dynamic "
+                            "(the sum of least gaps S_a x1.5)", default=None,
+           choices=("static", "dynamic"), source="EN 13906-1",
+           default_text="\"dynamic\" with a load cycle (fatigue_max_force), else \"static\"")
+ELASTIC_MODULUS = Key("elastic_modulus", "stress", "the elastic modulus E (buckling; an "
+                                                   "extension spring's active coils n_b + G/E)",
+                      default=None, default_text="the grade's, else 206 GPa (EN 10270-1 steel's)",
+                      example="206 GPa")
 INDEX_MIN = Key("index_min", "number", "the least spring index D/d", default=4.0,
                 source="EN 13906-1 scope; Shigley's preferred range")
 
@@ -171,6 +179,12 @@ DESIGN = Table("spring", "a spring to design: its forces and stiffness, its wire
         default=None, default_text="0.5 with wire sizes to order from", high=1.0,
         high_inclusive=True, range_text="(0, 1] (0.25, 0.5 or 1 usual)", example=0.5),
     LOOPS,
+    Key("catalogue", "text", "a maker's catalogue of compression springs to pick from, a CSV "
+                             "file (columns part_number, d, D or OD, L0, n, ends, material, "
+                             "rate; units in brackets: 'd (mm)'); the lightest spring of it "
+                             "that meets the requirements and passes every check; \"sample\": "
+                             "govopt's made-up sample", default=None,
+        default_text="none (the spring is designed)", example="stock.csv"),
 ))
 
 # -- [spring] of a problem of the literature ------------------------------------------------------
@@ -229,8 +243,8 @@ CHECK = Table("spring", "a spring you have: its geometry, material, working forc
     *GEOMETRY,
     Key("tolerance_grade", "choice", "the spring's EN 15800 quality grade (its tolerances)",
         default=2, choices=(1, 2, 3), source="EN 15800"),
-    KIND, MATERIAL, TENSILE_STRENGTH, SHEAR_MODULUS, ALLOWABLE_STRESS, DENSITY, CORRECTION, RULES,
-    ENDS, SEATING,
+    KIND, MATERIAL, TENSILE_STRENGTH, SHEAR_MODULUS, ELASTIC_MODULUS, ALLOWABLE_STRESS, DENSITY,
+    CORRECTION, RULES, ENDS, SEATING, LOAD,
     Key("force", "force", "the largest working force F2 (give it or length_2)", default=None,
         default_text="from length_2 and the rate", example="400 N"),
     MIN_FORCE, LENGTH_1,

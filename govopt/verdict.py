@@ -17,12 +17,45 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from .jsonable import jsonable
 
-__all__ = ["ACTIVE_TOL", "GROUPS", "SHOWN", "Check", "Figure", "json_key", "shown"]
+__all__ = ["ACTIVE_TOL", "GROUPS", "PASS_TOL", "SHOWN", "Check", "Figure", "holds", "json_key",
+           "margins", "shown"]
 
 #: Relative margin below which a satisfied check is reported as active (binding).
 ACTIVE_TOL = 1e-3
+#: The least relative margin that passes: a check holds at equality (an equality by
+#: construction, such as the coil-clash row ``L0 = L_n + F/R``, rounds either way by ~1e-16).
+PASS_TOL = -1e-9
+
+
+def margins(value, limit, sense: str, scale=None):
+    """:attr:`Check.margin` over arrays: ``(limit - value)`` for ``<=`` (``value - limit`` for
+    ``>=``) over ``scale``, else ``|limit|``, else 1 where the limit is zero.
+
+    >>> margins([1.0, 2.0], 2.0, "<=").tolist()
+    [0.5, 0.0]
+    """
+    value, limit = np.asarray(value, dtype=float), np.asarray(limit, dtype=float)
+    if scale is None:
+        scale = np.where(limit != 0, np.abs(limit), 1.0)
+    diff = limit - value if sense == "<=" else value - limit
+    with np.errstate(invalid="ignore"):
+        return diff / scale
+
+
+def holds(value, limit, sense: str, scale=None):
+    """Where a row ``value sense limit`` passes, over arrays: as :attr:`Check.passed` does,
+    its margin (:func:`margins`) at least :data:`PASS_TOL` (NaN fails). Every feasibility
+    test of a search reads this, so a design the search keeps is one whose checks pass.
+
+    >>> holds([1.0, 1.0 + 1e-16, 1.1], 1.0, "<=").tolist()
+    [True, True, False]
+    """
+    with np.errstate(invalid="ignore"):
+        return margins(value, limit, sense, scale) >= PASS_TOL
 
 #: How an SI unit is shown to a person (text, workbook, notebook, ``to_frame(engineering=True)``):
 #: SI unit -> (shown unit, factor to multiply by). Units not listed are shown as they are.
@@ -100,7 +133,7 @@ class Check:
 
     @property
     def passed(self) -> bool:
-        return self.margin >= -1e-9 if self.verdict is None else self.verdict
+        return self.margin >= PASS_TOL if self.verdict is None else self.verdict
 
     @property
     def active(self) -> bool:

@@ -433,7 +433,7 @@ FIFO = object()
 
 def _file_cases() -> Iterator[Case]:
     """Hostile files rather than hostile values."""
-    spec = bundled_specs()[0].read_text()
+    spec = next(p for p in bundled_specs() if p.stem == "hamabe-a-si").read_text()
     files = {
         "empty file": b"",
         "not UTF-8": spec.encode().replace(b"name", b"n\xe9me", 1),
@@ -504,6 +504,64 @@ def _spring_cases() -> Iterator[Case]:
     yield Case("spring/--force/not_utf8", ("spring", *args), None, "not_utf8", "--force", True,
                "spring")
     yield from _mutated(SPRING_CHECK, ("spring", "check"), ("--active-coils", "8"))
+    yield from _impossible_springs()
+
+
+#: springs that cannot be (refused, exit 2: nonsense) and springs a load takes past what they
+#: can do (a failed check, exit 1): ``(label, the options after the base, nonsense)``
+IMPOSSIBLE = (
+    ("free length below solid", ("--free-length", "30 mm"), True),
+    ("length 2 at the free length", ("--length-2", "60 mm"), True),
+    ("cycle past solid", ("--force", "400 N", "--fatigue-min-force", "100 N",
+                          "--fatigue-max-force", "560 N"), False),
+    ("cycle past L_n", ("--force", "400 N", "--fatigue-min-force", "100 N",
+                        "--fatigue-max-force", "500 N"), False),
+    ("force past solid", ("--force", "600 N"), False),
+    ("life below the data's", ("--force", "400 N", "--fatigue-min-force", "100 N",
+                               "--fatigue-max-force", "400 N", "--life", "1000"), False),
+    ("closed ends without end coils", ("--force", "400 N", "--total-coils", "9.5"), True),
+    ("plain ends, total = active", ("--force", "400 N", "--total-coils", "9.5", "--ends",
+                                    "plain"), False),
+    ("extension body coils against active", ("--kind", "extension", "--force", "100 N",
+                                             "--total-coils", "30", "--free-length", ""),
+     True),
+    ("extension shorter than its body", ("--kind", "extension", "--force", "100 N",
+                                         "--free-length", "1 mm"), True),
+    ("extension length below free", ("--kind", "extension", "--length-2", "50 mm",
+                                     "--free-length", "80 mm"), True),
+    ("extension force below initial tension", ("--kind", "extension", "--force", "100 N",
+                                               "--min-force", "5 N", "--initial-tension",
+                                               "30 N", "--free-length", ""), False),
+    ("extension min force 0", ("--kind", "extension", "--force", "100 N", "--min-force", "0 N",
+                               "--free-length", ""), False),
+)
+#: the spring of the ``spring-check`` template: solid at 533 N, free at 60 mm
+_CHECKED = {"--wire-diameter": "3 mm", "--mean-diameter": "16 mm", "--active-coils": "9.5",
+            "--free-length": "60 mm", "--material": "EN10270-1 SH"}
+
+
+def _impossible_springs() -> Iterator[Case]:
+    """:data:`IMPOSSIBLE` through the options, and the spring that cannot be in a spec file
+    (its error names the file and the key)."""
+    for label, extra, nonsense_ in IMPOSSIBLE:
+        options = dict(_CHECKED)
+        options.update(zip(extra[::2], extra[1::2], strict=True))
+        args = [a for k, v in options.items() if v != "" for a in (k, v)]
+        yield Case(f"spring check/impossible/{label}", ("spring", "check", *args), None,
+                   "impossible_spring", label, nonsense_, "spring")
+    text = ('[spring]\nwire_diameter = "3 mm"\nmean_diameter = "16 mm"\nactive_coils = 9.5\n'
+            'free_length = "30 mm"\nmaterial = "EN10270-1 SH"\nforce = "100 N"\n')
+    yield Case("spring check/impossible/free length below solid in a spec",
+               ("spring", "check", "{spec}"), lambda: text, "impossible_spring",
+               "spring.free_length", True, "spring")
+    long = "s" * 300
+    yield Case("spring check/impossible/a 300-character spec name",
+               ("spring", "check", f"{long}.toml"), None, "file", None, True, "spring",
+               names_key=False)
+    yield Case("spring/impossible/extension with the solid length as objective",
+               ("spring", "--kind", "extension", "--force", "300 N", "--stiffness", "5 N/mm",
+                "--material", "EN10270-1 DH", "--objective", "solid length"), None,
+               "impossible_spring", "--objective", True, "spring")
 
 
 #: ``govopt spring check`` options and a valid value of each (a spring given as it is)
@@ -544,6 +602,19 @@ STUDY_OPTIONS = {
 }
 
 
+#: tolerance bands that take a part where it cannot be made (a weight or a wire's diameter
+#: below zero), each with the words of its refusal: on Hamabe's case c (a spring given)
+BAD_BANDS = {
+    "wire ±200%": (("--tolerance", "design.wire_diameter=±200%"),
+                   "tolerance design.wire_diameter: the band ±200% reaches a value the spec "
+                   "refuses (must be positive"),
+    "weight ±100%": (("--tolerance", "design.pendulum_weight=±100%"),
+                     "tolerance design.pendulum_weight: the band ±100% reaches"),
+    "wire ±20 mm": (("--tolerance", "design.wire_diameter=uniform ±20 mm"),
+                    "tolerance design.wire_diameter: the band ±20 mm reaches"),
+}
+
+
 def _study_cases() -> Iterator[Case]:
     """Hostile ``[study]`` tables (the rest of a study spec is a spec like the others) and
     options of ``govopt study run``."""
@@ -558,6 +629,11 @@ def _study_cases() -> Iterator[Case]:
         for label, options in STUDY_OPTIONS.items():
             yield Case(f"{path.stem}/option/{label}", (*args, *options), lambda t=text: t,
                        "option", "study", True, "study")
+    case_c = (ROOT / "specs" / "hamabe-c.toml").read_text()
+    for label, (options, _) in BAD_BANDS.items():
+        yield Case(f"hamabe-c/option/{label}", ("study", "run", "{spec}", "--db", "{spec}.db",
+                                                 *options), lambda t=case_c: t, "option", "study",
+                   True, "study")
 
 
 def _db(spec: Path) -> Path:
@@ -612,6 +688,61 @@ def _truncated_db(spec: Path) -> None:
         store.set_meta({"study": {"name": "x", "pad": "x" * 40_000}, "digest": "x"})
     with open(_db(spec), "r+b") as fh:
         fh.truncate(fh.seek(0, 2) // 2)
+
+
+#: damages of a sound study database (Hamabe's Example 1 as a study, five points): each an SQL
+#: script, and the words of the one line that names it damaged
+DAMAGES = {
+    "no columns table": ("DROP TABLE columns", "no table columns"),
+    "a row of NULLs": ("INSERT INTO points (point, status, message) VALUES (NULL, 'pass', '')",
+                       "1 row the study did not write, the first point 5"),
+    "a row past the total": (
+        "INSERT INTO points (point, status, message, design_pendulum_weight, "
+        "speed_irregularity, design_wire_diameter, design_active_turns, design_dashpot_a1) "
+        "VALUES (7, 'pass', '', 1, 0.1, 1, 8, 1)", "the first point 7"),
+    "a row without its inputs": ("DELETE FROM points WHERE point = 4; INSERT INTO points "
+                                 "(point, status, message) VALUES (4, 'pass', '')",
+                                 "the first point 4"),
+    "the total edited": ("UPDATE meta SET value = '2' WHERE key = 'total'",
+                         "total 2, but the study has 5 points"),
+    "a shown_factor of 0": ("UPDATE columns SET shown_factor = 0 WHERE name = 'omega_inner'",
+                            "column omega_inner: shown_factor 0.0, expected a number > 0"),
+    "a meta value not JSON": ("UPDATE meta SET value = 'x{' WHERE key = 'total'",
+                              "meta 'total' is not JSON"),
+    "a column dropped": ("ALTER TABLE points DROP COLUMN omega_inner",
+                         "are not those described in columns"),
+    "the definition edited": ("UPDATE meta SET value = replace(value, 'hamabe-study', 'x') "
+                              "WHERE key = 'study'", "does not match its digest"),
+}
+
+
+@cache
+def sound_db() -> Path:
+    """A sound study database (Hamabe's Example 1 as a study), made once a process."""
+    import tempfile
+
+    from govopt.study import load_study, run_study
+
+    db = Path(tempfile.mkdtemp(prefix="govopt-hostile-")) / "sound.db"
+    run_study(load_study(study_specs()[0], skip="vibration,classic"), db)
+    return db
+
+
+def damaged_study_db(sql: str, db: Path) -> None:
+    """A copy of :func:`sound_db` at ``db``, damaged by the SQL script ``sql``."""
+    import shutil
+    import sqlite3
+
+    _clean(db)
+    shutil.copy(sound_db(), db)
+    conn = sqlite3.connect(db)
+    conn.executescript(sql)
+    conn.commit()
+    conn.close()
+
+
+def _damage(sql: str, spec: Path) -> None:
+    damaged_study_db(sql, _db(spec))
 
 
 def _empty_file(spec: Path) -> None:
@@ -682,6 +813,14 @@ OUTPUT_CASES = (
     ("init/-o into the package", "init",
      ("init", "hamabe-a", "-o", str(ROOT / "govopt" / "data" / "hostile-output.toml")), None),
 )
+
+
+OUTPUT_CASES += tuple(
+    (f"study/{command} {label}", "study", args, partial(_damage, sql))
+    for label, (sql, _) in DAMAGES.items()
+    for command, args in (("show", ("study", "show", "{db}")),
+                          ("export", ("study", "export", "{db}", "--out", "{db}.csv")),
+                          ("--resume", ("study", "run", "{spec}", "--db", "{db}", "--resume"))))
 
 
 def _output_cases() -> Iterator[Case]:
@@ -964,8 +1103,10 @@ def classify(out: Outcome, spec: str | None, json_out: bool = False) -> Outcome:
     else:
         out.klass, out.why = "error", ""
         first = lines[0] if lines else ""
-        # the file's path is the user's; a design's diagnosis says how far each requirement is
-        size = len(first) - len(spec or "")
+        # the file's path is the user's (the spec's, or a file named on the command line); a
+        # design's diagnosis says how far each requirement is
+        paths = [len(a) for a in case.args if a.endswith(FILE_SUFFIXES) and a in first]
+        size = len(first) - max([len(spec or ""), *paths])
         limit = MAX_DIAGNOSIS if "infeasible" in first or "the chosen design" in first \
             else MAX_LINE
         if len(lines) != 1:
@@ -985,6 +1126,8 @@ def classify(out: Outcome, spec: str | None, json_out: bool = False) -> Outcome:
     return out
 
 
+#: what a file named on the command line ends with (its name is the user's, however long)
+FILE_SUFFIXES = (".toml", ".xlsx", ".json", ".db", ".csv")
 #: a Python exception's class in a message (``(AssertionError)``, ``UnicodeEncodeError:``)
 EXCEPTION_NAME = re.compile(r"\b[A-Z]\w*(Error|Exception)\b")
 
@@ -1000,8 +1143,10 @@ def _names_key(line: str, spec: str | None, case: Case) -> bool:
     ``error: --option: ...``."""
     if line.startswith("error: --") or (case.kind == "option" and " --" in line):
         return case.command == "spring" or case.kind == "option"  # an option's error names it
-    if case.command == "spring":  # or a diagnosis naming the requirements that conflict
-        return line.startswith("error: no spring meets these requirements: infeasible: ")
+    if case.command == "spring":  # a spring spec's key, or a diagnosis naming the
+        # requirements that conflict
+        return (spec is not None and line.startswith(f"error: {spec}: spring.")) or \
+            line.startswith("error: no spring meets these requirements: infeasible: ")
     if spec is None:
         return True
     if not line.startswith(f"error: {spec}: "):

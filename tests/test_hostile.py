@@ -56,7 +56,7 @@ def test_hostile_corpus(tmp_path):
     assert {c.kind for c in cases} >= {"degenerate_long", "degenerate_near", "degenerate_wire",
                                        "degenerate_turns", "angle_in_unit", "incomplete",
                                        "unbalanced", "divide_by_zero", "not_utf8",
-                                       "band_spring", "band_narrow"}
+                                       "band_spring", "band_narrow", "impossible_spring"}
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
     outcomes = [hostile.run(c, tmp_path, LIMIT, json_out=i % 2 == 1)
                 for i, c in enumerate(cases)]

@@ -30,7 +30,7 @@ LAYERS = (
     ("governor types", ("govopt.governors",)),
     ("parser", ("govopt.reader", "govopt.spec", "govopt.spec_keys", "govopt.spring_keys")),
     ("evaluator", ("govopt.result", "govopt.requirements", "govopt.evaluator", "govopt.bulk",
-                   "govopt.made", "govopt.made_words")),
+                   "govopt.made", "govopt.made_words", "govopt.questions")),
     ("optimize", ("govopt.optimize",)),
     ("study", ("govopt.study",)),
     ("report", ("govopt.report",)),

@@ -4,6 +4,7 @@ degenerate samples."""
 
 import json
 import math
+import re
 
 import numpy as np
 import pytest
@@ -100,13 +101,15 @@ def test_the_yield_is_beside_the_verdict_deterministic_and_declared_once(tmp_pat
     assert run.exit_code == 0, run.output
     head = run.stdout.splitlines()[:10]
     line = next(x for x in head if "of made governors pass" in x)
-    assert line.startswith("PASS at nominal; ") and "(95 %: " in line
+    # the verdict is the made governor's (a wire grade's grade 2, the fitter's setting)
+    assert line.startswith("PASS as made: ") and "(95 %: " in line
     assert any("worst-case speeds" in x and "beside the required 290-310 rpm" in x for x in head)
     assert any("Latin hypercube, seed 0" in x for x in head)
     out = json.loads(invoke(["evaluate", str(spec.path), "--json"]).stdout)
     again = json.loads(invoke(["evaluate", str(spec.path), "--json"]).stdout)
     y = out["made"]["yield"]
-    assert y == again["made"]["yield"] and y["samples"] == made.SAMPLES and y["seed"] == 0
+    assert y == again["made"]["yield"] and y["seed"] == 0
+    assert y["samples"] == govopt.spec.Requirements().robust_samples  # as the design certifies
     assert y["ci95"] == list(wilson(y["holds"], y["samples"]))
     assert f"{percent(y['probability'])} of made governors pass" in line
     res = made.with_yield(govopt.evaluate(spec))
@@ -122,9 +125,18 @@ def test_the_yield_is_beside_the_verdict_deterministic_and_declared_once(tmp_pat
 
 
 def test_no_tolerance_no_yield():
-    """A spec that states no tolerance (no wire grade, no robust_* spread) reports none."""
-    res = made.with_yield(govopt.evaluate(govopt.load_spec(SPECS / "hamabe-a.toml")))
+    """A spec that states no tolerance (no wire grade, no robust_* spread) is judged as made to
+    the default grade (EN 15800 grade 2); asked for the nominal verdict, it reports no yield."""
+    import dataclasses
+
+    spec = govopt.load_spec(SPECS / "hamabe-a.toml")
+    res = made.with_yield(govopt.evaluate(spec))
+    assert res.made["tolerances"]["spring_grade"] == made.DEFAULT_GRADE
+    assert res.made["yield"]["required"] == made.DEFAULT_MIN_YIELD
+    spec = dataclasses.replace(spec, verdict="nominal")
+    res = made.with_yield(govopt.evaluate(spec))
     assert res.made is None and "made" not in res.to_dict()
+    assert res.to_dict()["verdict"]["of"] == "nominal"
 
 
 def test_the_yield_in_words():
@@ -159,24 +171,30 @@ def test_min_yield_designs_for_a_yield(tmp_path):
 
 
 def test_min_yield_that_no_design_reaches_names_what_binds(tmp_path):
-    """Without the fitter's nut the spring maker's free length spreads the speeds past the
-    band: the diagnosis names the best candidate's yield, the requirement failing most often
-    and the tolerance that spreads the speeds most."""
+    """Without the fitter's setting (``fitter = "none"``, no nut) the spring maker's free
+    length spreads the speeds past the band: the diagnosis names the best candidate's yield,
+    the requirement failing most often in its own samples and the tolerance that spreads the
+    speeds most, and says to let the fitter set the spring."""
     text = HARTNELL.read_text(encoding="utf-8").replace(
-        "[requirements]\n", "[requirements]\nmin_yield = 0.999\nrobust_samples = 4000\n", 1)
+        "[requirements]\n", "[requirements]\nmin_yield = 0.999\nrobust_samples = 4000\n"
+        'fitter = "none"\n', 1)
     text = "\n".join(x for x in text.splitlines() if not x.startswith("adjusting_nut"))
     (tmp_path / "y.toml").write_text(text, encoding="utf-8")
     run = invoke(["design", str(tmp_path / "y.toml")])
     assert run.exit_code == 2 and run.exception is None, run.output
     err = run.stderr.strip()
     assert err.count("\n") == 0 and "requirements.min_yield" in err
-    assert "most often failing" in err and "free length tolerance alone" in err
-    assert "add requirements.adjusting_nut" in err
+    assert "most often failing there" in err and "free length tolerance alone" in err
+    assert 'let the fitter set the spring (requirements.fitter = "sets")' in err
+    held = re.search(r"holds in (\d+) of its (\d+) samples \(([0-9.]+) %\)", err)
+    worst = [int(k) for k in re.findall(r"\(in (\d+) samples\)", err)]
+    assert held and worst and max(worst) <= int(held[2]) - int(held[1])  # its own failures
 
 
 def test_min_yield_needs_stated_tolerances(tmp_path):
+    """With the nominal verdict (no default grade) a yield needs a stated tolerance."""
     text = (SPECS / "hamabe-design.toml").read_text(encoding="utf-8").replace(
-        "[requirements]\n", "[requirements]\nmin_yield = 0.9\n", 1)
+        "[requirements]\n", '[requirements]\nmin_yield = 0.9\nverdict = "nominal"\n', 1)
     (tmp_path / "y.toml").write_text(text, encoding="utf-8")
     run = invoke(["design", str(tmp_path / "y.toml")])
     assert run.exit_code == 2 and "requirements.min_yield: the spec states no tolerance" in \
@@ -229,4 +247,17 @@ def test_the_yield_plot(tmp_path):
     assert "of made governors pass" in ax.get_title()
     labels = ax.get_legend_handles_labels()[1]
     assert "worst case over the tolerance box (as made)" in labels
-    assert f"{made.SAMPLES} sampled governors (as made)" in labels
+    samples = res.made["yield"]["samples"]  # set by the fitter before they are evaluated
+    assert f"{samples} sampled governors (as made and set)" in labels
+
+
+@pytest.mark.parametrize("n, dim, seed", [(2000, 4, 0), (7, 1, 3), (500, 6, 12)])
+def test_latin_hypercube_is_scipys(n, dim, seed):
+    """The yield's Latin hypercube is made with numpy alone and gives scipy's points (so a
+    tolerance study and the yield keep drawing the same governors)."""
+    from scipy.stats import qmc
+
+    from govopt.stats import latin_hypercube
+
+    assert np.array_equal(latin_hypercube(n, dim, seed),
+                          qmc.LatinHypercube(d=dim, seed=seed).random(n))

@@ -228,7 +228,11 @@ def test_cli_existing_output_needs_force(tmp_path):
     (["design", SPEC_DESIGN, "-o", "/dev/null", "--force"], "character device"),
     (["design", SPEC_DESIGN, "-o", "/proc/x.toml"], "cannot write design spec"),
     (["design", SPEC_DESIGN, "-o", "{d}"], "is a directory"),
-    (["design", SPEC_DESIGN, "-o", ""], "expected a file name")])
+    (["design", SPEC_DESIGN, "-o", ""], "expected a file name"),
+    (["evaluate", SPEC_A, "--plots", "{d}/p", "--xlsx", "{d}/p"], "it is the plots folder"),
+    (["evaluate", SPEC_A, "--plots", "{d}/p", "--xlsx", "{d}/p/w.xlsx"], "folder {d}/p does not "
+                                                                          "exist"),
+    (["init", "hamabe-a", "-o", ""], "-o: expected a file or folder name, got ''")])
 def test_cli_bad_outputs_fail_at_once_with_one_line(tmp_path, monkeypatch, args, message):
     """A bad output path fails with one line before the evaluation or the search runs."""
     ran = []
@@ -237,9 +241,24 @@ def test_cli_bad_outputs_fail_at_once_with_one_line(tmp_path, monkeypatch, args,
     before = SPEC_A.read_bytes()
     result = _run([str(a).format(d=tmp_path) for a in args])
     line = _one_error_line(result)
-    assert message in line, line
+    assert message.format(d=tmp_path) in line, line
     assert ran == []
     assert SPEC_A.read_bytes() == before and os.listdir(tmp_path) == []
+
+
+SPRING = ("--force", "606 kgf", "--stiffness", "59.7 kgf/cm", "--allowable-stress",
+          "4000 kgf/cm^2", "--shear-modulus", "850000 kgf/cm^2")
+SPRING_CHECK = ("--wire-diameter", "3 mm", "--mean-diameter", "20 mm", "--free-length", "60 mm",
+                "--force", "100 N", "--active-coils", "8", "--material", "EN10270-1 SH")
+
+
+@pytest.mark.parametrize("command", [("spring", *SPRING), ("spring", "check", *SPRING_CHECK)])
+def test_refused_spring_outputs_leave_no_folder(tmp_path, command):
+    """A spring's workbook onto the folder its plots would make: one line, exit 2, and no
+    empty folder left behind."""
+    result = _run([*command, "--plots", f"{tmp_path}/p", "--xlsx", f"{tmp_path}/p"])
+    assert "it is the plots folder of this run" in _one_error_line(result)
+    assert os.listdir(tmp_path) == []
 
 
 def test_cli_unexpected_error_is_one_line_exit_3(monkeypatch):

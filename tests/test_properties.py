@@ -34,7 +34,7 @@ TEMPLATES = {
     "hartnell": "textbook-ex4-hartnell", "spring_loaded": "textbook-ex6-spring_loaded",
     "spring_gravity": "textbook-ex8-spring_gravity",
     "traction_coil": "traction-coil-replacement", "traction_leaf": "traction-leaf-assembly",
-    "watt": "watt-design",
+    "watt": "watt-design", "force_line": "force_line-design",
 }
 
 

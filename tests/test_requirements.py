@@ -1,6 +1,7 @@
 """Requirements that mean the same on every path: evaluate, bulk (evaluate_many),
 design and studies read one rule for each requirement."""
 
+import math
 from pathlib import Path
 
 import pytest
@@ -51,8 +52,12 @@ def test_coil_clash_is_checked_without_a_grade_or_requirements(clash_spec):
     res = evaluate(load_spec(clash_spec))
     check = next(c for c in res.checks if c.name == CLASH)
     sheet = res.spring_report.sheet
-    # the spring sheet's own numbers: the working length at full lift is below the solid length
-    assert sheet.L2 < sheet.solid_length
+    # the spring sheet's own numbers: the force at full lift is past the solid length's, so it
+    # gives no working length there (the spring never gets there) and says where it goes solid
+    assert math.isnan(sheet.L2) and any("solid at" in n for n in sheet.notes)
+    solid = next(c for c in res.checks if c.name == "largest force <= force at solid length")
+    assert not solid.passed and solid.limit == pytest.approx(
+        sheet.R * (sheet.L0 - sheet.solid_length), rel=1e-12)
     assert not check.passed and check.value < check.limit
     assert not all(c.passed for c in res.checks)
 

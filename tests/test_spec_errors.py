@@ -84,6 +84,23 @@ CASES = {
     "speed min and max": (_edit('mean = "240 rpm"', 'min = "225 rpm"\nmax = "255 rpm"')
                           .replace("irregularity = 0.12\n", "", 1),
                           r"speed\.(min|max): unknown key \(did you mean 'inner' and 'outer'"),
+    # a band past govopt's limit (govopt/limits.py MAX_SPEED_RATIO)
+    "band of 240 rpm to 1e7 rpm": (_edit('mean = "240 rpm"', 'inner = "240 rpm"\nouter = "1e7 rpm"')
+                                   .replace("irregularity = 0.12\n", "", 1),
+                                   r"speed\.outer: expected at most 10 times speed\.inner "
+                                   r"\(govopt's limit\), got 4\.167e\+04 times"),
+    "irregularity past the band's limit": (_edit("irregularity = 0.12", "irregularity = 1.7"),
+                                           r"speed\.irregularity: expected at most 1\.636"),
+    # a load change is never dropped without a word: it needs the engine
+    "load change without [engine]": (
+        re.sub(r"\[engine\][^\[]*", "", BASE, count=1),
+        r"load_change: a load change needs \[engine\] .*add \[engine\], or drop the "
+        r"\[\[load_change\]\] tables"),
+    "torque slope spread without [engine]": (
+        re.sub(r"\[engine\][^\[]*", "", re.sub(r"\[\[load_change\]\][^\[]*", "", BASE))
+        + "\n[requirements]\nrobust_torque_slope = 0.1\n",
+        r"requirements\.robust_torque_slope: spreads the engine's torque slope, and there is "
+        r"no \[engine\]"),
 }
 
 

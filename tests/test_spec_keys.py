@@ -76,16 +76,17 @@ def test_an_undeclared_key_is_the_parsers_mistake():
 def test_unknown_key_lists_the_allowed_keys_in_full_or_points_to_the_reference(tmp_path):
     """A short table's keys are listed in full; a long one's are pointed to in the reference,
     never cut short."""
-    base = (SPECS / "hartnell-design.toml").read_text()
+    short = (SPECS / "spring_gravity-design.toml").read_text()
     path = tmp_path / "s.toml"
-    path.write_text(base.replace('sleeve_friction = "1.5 kgf"', 'sleeve_fricton = "1.5 kgf"'))
+    path.write_text(short.replace('ball_arm = ', 'sleeve_fricton = "1 kgf"\nball_arm = '))
     run = invoke(["design", str(path)])
     line = run.stderr.strip()
     assert run.exit_code == 2 and "did you mean 'sleeve_friction'?" in line
-    assert line.endswith(", ".join(spec_tables("hartnell")["governor"].names) + ")")
+    assert line.endswith(", ".join(spec_tables("spring_gravity")["governor"].names) + ")")
+    base = (SPECS / "hartnell-design.toml").read_text()
     path.write_text(base.replace('objective = "moving_mass"', 'objectve = "moving_mass"'))
     line = invoke(["design", str(path)]).stderr.strip()
-    assert line.endswith("did you mean 'objective'? 19 keys allowed here, listed in "
+    assert line.endswith("did you mean 'objective'? 21 keys allowed here, listed in "
                          "docs/reference/spec.md under hartnell: [requirements])"), line
     path.write_text(base + '\n[analysis]\npoints = 31\nponts = 3\n')
     line = invoke(["design", str(path)]).stderr.strip()
@@ -160,6 +161,112 @@ def test_schema_rejects_what_the_parser_rejects(validator, change, where, tmp_pa
                                 for e in errors), [e.message for e in errors]
     with pytest.raises(govopt.SpecError):
         parse_spec(bad, "bad.toml")
+
+
+def _deletions(data: dict):
+    """Every table of ``data`` and every key of each table deleted, one at a time."""
+    for table, value in data.items():
+        if isinstance(value, dict | list):
+            yield f"[{table}]", {k: v for k, v in data.items() if k != table}
+        if isinstance(value, dict):
+            for key in value:
+                bad = copy.deepcopy(data)
+                del bad[table][key]
+                yield f"{table}.{key}", bad
+
+
+@pytest.mark.parametrize("gtype", list(REGISTRY))
+def test_schema_and_govopt_agree_on_every_deletion_from_a_template(validator, gtype):
+    """The schema says what the parser says (it is generated from the same declarations):
+    each table and each key of a type's `govopt init` template deleted, the schema refuses
+    exactly what govopt refuses: a required key, one of two alternatives (``oneOf``: the
+    speed band or the mean speed; a bell crank's outer radius or sleeve lift; a leaf's
+    chords, bows or travels), a table required without another (``[speed]`` without
+    ``[design]``), a table read with another (``[[load_change]]`` with ``[engine]``), the
+    material's values its spring needs. Only a limit of govopt's work, which depends on the
+    values (a catalogue grown past its limit once a bound is gone), is the parser's alone."""
+    from govopt.spec_docs import template
+
+    data = tomllib.loads(template(gtype))
+    assert not list(validator.iter_errors(data))
+    disagree = []
+    for label, bad in _deletions(data):
+        try:
+            parse_spec(copy.deepcopy(bad), "bad.toml")
+            refused = ""
+        except govopt.GovoptError as exc:
+            refused = str(exc)
+        if bool(refused) != bool(list(validator.iter_errors(bad))) and \
+                "govopt's limit" not in refused:
+            disagree.append(f"{label}: govopt {'refuses' if refused else 'accepts'} "
+                            f"({refused[:120]})")
+    assert not disagree, "\n".join(disagree)
+
+
+#: a unit of each dimension, to write where a key wants another
+UNIT_OF = {"length": "cm", "mass": "kg", "force": "kgf", "angle": "deg", "stress": "MPa",
+           "angular_velocity": "rpm", "time": "s"}
+
+
+@pytest.mark.parametrize("gtype", list(REGISTRY))
+def test_schema_and_govopt_agree_on_every_wrong_dimension_in_a_template(validator, gtype):
+    """Every quantity of a type's template written in a unit of each other dimension (a
+    length in kg, a speed in cm, an inertia in kg): the schema refuses it by its dimension's
+    pattern (a number and one unit word of the dimension, the words govopt reads:
+    govopt/data/unit_words.json), as govopt does."""
+    from govopt.spec_docs import template
+    from govopt.spec_keys import spec_tables
+
+    data = tomllib.loads(template(gtype))
+    tables = spec_tables(gtype)
+    disagree, tried = [], 0
+    for table, values in data.items():
+        if not isinstance(values, dict) or table not in tables:
+            continue
+        for name, value in values.items():
+            if not isinstance(value, str) or " " not in value:
+                continue
+            try:
+                key = tables[table].key(name)
+            except KeyError:
+                continue
+            dimension = ("force" if name.endswith("_weight") else "mass") if \
+                key.kind == "weight" else key.dimension
+            number = value.split(" ", 1)[0]
+            for other, unit in UNIT_OF.items():
+                if other == dimension or (dimension == "torque_per_length" and other == "force"):
+                    continue  # N*m/m is a force's unit too
+                bad = copy.deepcopy(data)
+                bad[table][name] = f"{number} {unit}"
+                with pytest.raises(govopt.GovoptError):
+                    parse_spec(copy.deepcopy(bad), "bad.toml")
+                tried += 1
+                if not list(validator.iter_errors(bad)):
+                    disagree.append(f"{table}.{name} = {bad[table][name]!r}")
+    assert tried >= 20 and not disagree, disagree
+
+
+def test_the_unit_words_are_govopts():
+    """govopt/data/unit_words.json (``python -m govopt.spec_schema --words``, slow) holds, for
+    each dimension, words govopt reads as it: each listed word parses, an angular velocity
+    names its angle (rpm, not Hz), and the patterns take the bundled specs' units."""
+    import re as regex
+
+    from govopt.spec_schema import _words, dimension_pattern
+    from govopt.units import parse_quantity
+
+    words = _words()
+    for dimension, listed in words.items():
+        for word in listed:
+            parse_quantity(f"1 {word}", dimension)
+    assert "rpm" in words["angular_velocity"] and "Hz" not in words["angular_velocity"]
+    assert "kgf" in words["force"] and "kgf" not in words["mass"]
+    for dimension, good, bad in (("length", "18 cm", "18 kg"), ("stress", "250 MPa", "250 N"),
+                                 ("angular_velocity", "240 rpm", "4 Hz"),
+                                 ("length", "0.375 inches", "3 rpm"),
+                                 ("inertia", "43 kgf*m*s^2", "43 kg")):
+        pattern = dimension_pattern(dimension)
+        assert regex.search(pattern, good) and not regex.search(pattern, bad), (good, bad)
 
 
 def test_schema_command_writes_the_schema(tmp_path):

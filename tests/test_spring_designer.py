@@ -84,10 +84,20 @@ def test_spring_options_are_read_as_a_governor_spec_is():
     assert result.output.strip() == "error: --turns-min: 1e+308 is too large a number"
 
 
-def test_grade_without_one_shear_modulus_names_the_option():
-    result = invoke(["spring", "--force", "500 N", "--stiffness", "20 N/mm", "--material",
-                     "ASTM A228"])
-    assert result.exit_code == 2 and "--shear-modulus" in result.output
+def test_grade_whose_moduli_step_with_the_wire_reads_them_by_its_wire():
+    """ASTM A228's G and E step with d (Shigley Table 10-5): without --shear-modulus each
+    range of constant moduli is sized on its own; the spring's rate is that of its own wire's
+    row, and it passes `spring check` (which reads the same rows)."""
+    from govopt.springs.materials import material
+
+    result = invoke(["spring", "--force", "10 lbf", "--stiffness", "5 lbf/in", "--material",
+                     "ASTM A228", "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    d, D = fig(data, "wire_diameter_m"), fig(data, "mean_coil_diameter_m")
+    n = fig(data, "active_coils")
+    G = float(material("ASTM A228").shear_modulus(d))
+    assert G * d**4 / (8 * D**3 * n) == pytest.approx(5 * 4.4482216152605 / 0.0254, rel=1e-9)
     bad = invoke([*SH[:-1], "no such grade"])
     assert bad.exit_code == 2 and "expected one of 'EN10270-1" in bad.output
     assert "None" not in bad.output
@@ -316,3 +326,65 @@ def test_step_table_grade_has_an_honest_bound():
         other = size_spring(500.0, 1e4, **kw, **rows)
         assert other.solution.mass >= s.lower_bound
         assert other.solution.mass >= s.solution.mass  # this design is the best of the three
+
+
+def _checked_mass(d, n, force, rate, grade, *extra, G=None, ends="closed_ground"):
+    """`govopt spring check` of the stock spring of wire ``d`` (m) with ``n`` active coils at
+    the rate (the mean diameter that gives it, the least free length that keeps the coils
+    clear: EN 13906-1 ``L0 = L_n + F/R``): its exit code and mass (kg)."""
+    from govopt.springs import compression as hc
+    from govopt.springs import tolerances as tl
+    from govopt.springs.materials import material
+
+    mat = material(grade, G=G)
+    D = (float(mat.shear_modulus(d)) * d**4 / (8 * rate * n)) ** (1 / 3)
+    L0 = float(hc.min_working_length(d, D, n, n + 2, ends, True, False,
+                                     tl.max_wire_diameter(d, grade))) + force / rate
+    result = invoke(["spring", "check", "--wire-diameter", f"{d * 1e3:.15g} mm",
+                     "--mean-diameter", f"{D * 1e3:.15g} mm", "--active-coils", f"{n:g}",
+                     "--free-length", f"{L0 * 1e3:.15g} mm", "--material", grade,
+                     "--force", f"{force:.15g} N", *extra, "--json"])
+    return result.exit_code, fig(json.loads(result.stdout), "mass_kg")
+
+
+LBF, INCH = 4.4482216152605, 0.0254
+
+
+@pytest.mark.parametrize(("args", "stock"), [
+    # the coil-clash row is an equality by construction: rounding may not decide the coils
+    (["--force", "39 lbf", "--min-force", "10 lbf", "--stiffness", "22.17 lbf/in",
+      "--material", "ASTM A228", "--shear-modulus", "11.5e6 psi", "--wire-sizes", "preferred",
+      "--coil-step", "0.5"], (0.076 * INCH, 9, 39 * LBF, 22.17 * LBF / INCH, "ASTM A228",
+                              11.5e6 * LBF / INCH**2)),
+    # buckling-limited: a spring that may buckle but whose deflection stays below s_K
+    (["--force", "500 N", "--stiffness", "2 N/mm", "--material", "EN10270-1 SH"],
+     (8e-3, 24, 500.0, 2e3, "EN10270-1 SH", None)),
+    # the same, with ASTM A228's own moduli (E(d) in the critical slenderness); that spring's
+    # index is 12.1, above the design's default 12 (Shigley's preference), within check's 20
+    (["--force", "10 lbf", "--stiffness", "5 lbf/in", "--material", "ASTM A228",
+      "--index-max", "20"],
+     (0.045 * INCH, 7.5, 10 * LBF, 5 * LBF / INCH, "ASTM A228", None)),
+])
+def test_stock_design_passes_and_is_no_heavier_than_a_passing_stock_spring(args, stock):
+    """The reproductions of a stock search that lost its optimum or declared a buckling-limited
+    spring impossible: the design passes every check, is certified, and is no heavier than a
+    stock spring `govopt spring check` passes."""
+    d, n, force, rate, grade, G = stock
+    extra = [] if G is None else ["--shear-modulus", f"{G:.15g} Pa"]
+    code, stock_mass = _checked_mass(d, n, force, rate, grade, *extra, G=G)
+    assert code == 0
+    result = invoke(["spring", *args, "--json"])
+    assert result.exit_code == 0, result.output
+    out = json.loads(result.stdout)
+    assert all(c["passed"] for c in out["checks"])
+    assert out["optimisation"]["certified"]
+    assert fig(out, "mass_kg") <= stock_mass * (1 + 1e-9)
+
+
+def test_no_stock_spring_passes_buckling_is_exit_1_with_the_reason():
+    result = invoke(["spring", "--force", "2000 N", "--stiffness", "2 N/mm", "--material",
+                     "EN10270-1 SH"])
+    assert result.exit_code == 1
+    assert "deflection / buckling deflection" in result.output.splitlines()[-1]
+    assert "certified\n" not in result.output and "global optimum" not in result.output
+    assert "no spring of the wire table" in result.output

@@ -38,6 +38,13 @@ def _toml(name):
     return tomllib.loads((SPECS / f"{name}.toml").read_text(encoding="utf-8"))
 
 
+def _nominal(spec):
+    """``spec`` with the nominal verdict (``--nominal``): these tests are about the nominal
+    search (its spring GP and continuous bound) and the figures worked for its design; the
+    made governor's design is tested in test_made_default.py."""
+    return dataclasses.replace(spec, verdict="nominal")
+
+
 def rm_dh(d):
     """EN 10270-1 DH minimum R_m (Pa) at d (m), the lg-linear fit of the data file."""
     return (2220.0 - 820.0 * math.log10(d * 1e3)) * MPA
@@ -48,7 +55,7 @@ def old():
     """The bundled design (`govopt design` on hamabe-design.toml) with its dash-pot at the upper
     end of its feasible window, where an earlier search put it (it now takes the
     window's centre on a log scale): the design these figures were worked for."""
-    res = govopt.design(govopt.load_spec(SPECS / "hamabe-design.toml"))
+    res = govopt.design(_nominal(govopt.load_spec(SPECS / "hamabe-design.toml")))
     f_hi = res.optimisation["design"]["dashpot_feasible_range_N_m_s_per_rad"][1]
     assert res.design.dashpot < f_hi
     out = govopt.evaluate(res.spec.with_design(dataclasses.replace(res.design, dashpot=f_hi)))
@@ -58,7 +65,7 @@ def old():
 
 @pytest.fixture(scope="module")
 def fatigue_spec():
-    return govopt.load_spec(SPECS / "hamabe-design-fatigue.toml")
+    return _nominal(govopt.load_spec(SPECS / "hamabe-design-fatigue.toml"))
 
 
 @pytest.fixture(scope="module")
@@ -284,7 +291,7 @@ def test_thinner_wire_with_higher_strength_wins():
         spec_data["material"].pop("allowable_shear_stress")
         spec_data["material"].update(mat)
         spec = parse_spec(spec_data, name)
-        chosen[name] = (spec, govopt.design(spec))
+        chosen[name] = (spec, govopt.design(_nominal(spec)))
     d_dh = chosen["DH"][1].design.wire_diameter
     d_const = chosen["const"][1].design.wire_diameter
     assert d_dh < d_const
@@ -370,3 +377,40 @@ def test_spring_cli_governor_load_builds_and_exits_by_its_checks():
         assert run.exit_code in (0, 1), run.output
         checks = json.loads(run.stdout)["checks"]
         assert run.exit_code == (0 if all(c["passed"] for c in checks) else 1)
+
+
+@pytest.mark.parametrize("name, grade", [("hartnell-tolerances", None),
+                                         ("spring_loaded-design", "EN10270-1 DH"),
+                                         ("traction-leaf-design", None)])
+def test_spring_checks_over_arrays_match_design_by_design(name, grade):
+    """The seam's array form (:meth:`Governor.spring_checks_over`, what the evaluator runs for
+    designs without a forcing) gives each design the numbers its one-design form
+    (:meth:`Governor.spring_checks`) gives it: a compression spring of a wire grade, an
+    extension spring of one, a leaf; over a spread of designs, some failing."""
+    from govopt import made
+    from govopt.evaluator import statics_of
+
+    spec = govopt.load_spec(govopt.examples.example(name))
+    res = govopt.design(spec)
+    spec = res.spec
+    if grade is not None:  # the design's spring drawn from a wire grade
+        spec = dataclasses.replace(spec, material=dataclasses.replace(spec.material,
+                                                                      grade=grade))
+    cols = made.resolved_columns(spec, res)
+    rows = {k: np.repeat(v, 9) for k, v in cols.items()}
+    helical = spec.governor.spring_kind.helical  # thinner and thicker wire or strip
+    section = "wire_diameter" if helical else "leaf_thickness"
+    rows[section] = rows[section] * (np.linspace(0.6, 1.8, 9) if helical else
+                                     np.linspace(0.5, 8.0, 9))
+    s = statics_of(spec, rows)
+    got = {c.name: c for c in spec.governor.spring_checks_over(spec, s.sd, s.F, s.x)}
+    assert got
+    failing = 0
+    for i in np.nonzero(~s.impossible)[0]:
+        one = spec.governor.spring_checks(spec, s.spring_of(i), s.char_of(spec, i))
+        assert [c.name for c in one] == list(got)
+        for c in one:
+            assert got[c.name].value[i] == pytest.approx(c.value, rel=1e-12, nan_ok=True)
+            assert got[c.name].limit[i] == pytest.approx(c.limit, rel=1e-12, nan_ok=True)
+        failing += not all(c.passed for c in one)
+    assert failing  # the spread reaches failing designs: their numbers agree too

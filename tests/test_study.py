@@ -8,6 +8,7 @@ import sqlite3
 import time
 from pathlib import Path
 
+import hostile
 import numpy as np
 import pandas as pd
 import pytest
@@ -276,6 +277,30 @@ def test_sigkill_and_resume_give_the_uninterrupted_table(tmp_path, cli):
         pd.testing.assert_frame_equal(store.table(), reference)
 
 
+def test_sigterm_ends_a_study_with_the_summary_sigint_prints(tmp_path, cli):
+    """SIGTERM stops a study as Ctrl-C does: the blocks done kept, the summary on stdout and
+    how to resume on stderr, the same lines; exit 128 + the signal (130, 143)."""
+    spec = _wide(tmp_path)
+    said = {}
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        db = tmp_path / f"{sig.name}.db"
+        proc = cli("study", spec, "--sweep", "design.ball_weight=1.5 kgf:2.5 kgf:100000",
+                   "--chunk", "100", "--skip", "classic", "--db", db)
+        deadline = time.monotonic() + 60
+        while proc.poll() is None and _rows(db) < 200 and time.monotonic() < deadline:
+            time.sleep(0.01)
+        assert proc.poll() is None, "the study ended before the signal"
+        os.kill(proc.pid, sig)
+        out, err = proc.communicate(timeout=120)
+        assert proc.returncode == 128 + sig, err
+        n = _rows(db)
+        assert f"points: {n} of 100000 done" in out, out
+        assert err == f"interrupted: {n} of 100000 points are in {db}; run again with --resume " \
+                      "to finish\n"
+        said[sig] = out.splitlines()[0]
+    assert said[signal.SIGINT] == said[signal.SIGTERM]
+
+
 def test_resume_skips_done_points_and_refuses_other_studies(tmp_path):
     path = _study(tmp_path, "")
     db = tmp_path / "r.db"
@@ -399,6 +424,20 @@ def test_tolerance_study(tmp_path):
     assert {t.key for t in grade.tolerances} == {"design.coil_radius"}
 
 
+@pytest.mark.parametrize("band", hostile.BAD_BANDS)
+def test_a_band_that_makes_a_part_impossible_is_refused(tmp_path, band):
+    """A tolerance band whose end the spec refuses (a wire's diameter or a weight at or below
+    zero) is refused where it is given, one line naming the key, before any point runs: no
+    sample is an impossible part counted as a failure."""
+    from clirun import invoke
+
+    options, words = hostile.BAD_BANDS[band]
+    r = invoke(["study", "run", SPECS / "hamabe-c.toml", *options, "--db", tmp_path / "t.db"])
+    assert r.exit_code == 2 and r.stderr.count("\n") == 1, r.output
+    assert r.stderr.startswith(f"error: {SPECS / 'hamabe-c.toml'}: study: {words}"), r.stderr
+    assert "give a narrower band" in r.stderr and not (tmp_path / "t.db").exists()
+
+
 def test_exports_and_no_clobber(tmp_path):
     """CSV and Parquet in the spec's units with the unit in each heading (speeds in rpm,
     lengths in cm, forces in kgf: Hamabe's), the workbook's Data sheet the database's own
@@ -452,9 +491,9 @@ def test_cli_study_show_export(tmp_path, monkeypatch):
             "--db", "s.db", "--out", "s.csv", "--plot", "plots")
     assert r.exit_code == 0, r.output
     assert "points: 6 of 6 done" in r.stdout and "Pareto front" in r.stdout
-    # like evaluate and design, a study says where it wrote, as an absolute path
-    assert f"wrote {tmp_path / 's.csv'}" in r.stdout.splitlines()
-    assert f"wrote {tmp_path / 'plots' / 'pareto.png'}" in r.stdout.splitlines()
+    # like evaluate and design, a study says where it wrote, the path as given
+    assert "wrote s.csv" in r.stdout.splitlines()
+    assert f"wrote {Path('plots') / 'pareto.png'}" in r.stdout.splitlines()
     assert {p.name for p in (tmp_path / "plots").iterdir()} >= {
         "sweep-design.ball_weight.png", "sweep-design.free_length.svg", "pareto.png"}
     again = cli("study", wide, "--sweep", "design.ball_weight=2 kgf", "--db", "s.db")

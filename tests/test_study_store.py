@@ -9,6 +9,7 @@ import sqlite3
 import subprocess
 from pathlib import Path
 
+import hostile
 import numpy as np
 import pandas as pd
 import pytest
@@ -80,6 +81,25 @@ def test_sqlite3_and_pandas_read_named_columns(hamabe_db):
         "Pa", "kgf/cm^2"]
     assert columns.loc["margin_irregularity", ["role", "label"]].tolist() == [
         "check margin", "irregularity"]
+
+
+def test_a_design_figure_is_read_in_the_unit_the_spec_writes_its_key_in(tmp_path):
+    """A spec whose lengths are in cm but whose wire diameter is in mm reads its study's wire
+    diameter in mm (the key's own unit), its coil radius in cm; ``study show`` alike."""
+    spec = tmp_path / "a.toml"
+    text = CASE_A.read_text()
+    assert 'wire_diameter = "1.7 cm"' in text
+    spec.write_text(text.replace('wire_diameter = "1.7 cm"', 'wire_diameter = "17 mm"'))
+    db = tmp_path / "a.db"
+    run_study(load_study(spec, sweeps=["design.pendulum_weight=11 kgf,12 kgf"],
+                         skip="dynamics,vibration,classic"), db)
+    with Store(db, create=False) as store:
+        columns = store.columns().set_index("name")
+        table = store.table()
+    assert columns.loc["wire_diameter", ["unit", "shown_unit"]].tolist() == ["m", "mm"]
+    assert columns.at["wire_diameter", "shown_factor"] == pytest.approx(1e-3, rel=1e-15)
+    assert columns.loc["coil_radius", ["unit", "shown_unit"]].tolist() == ["m", "cm"]
+    assert table["wire_diameter"].tolist() == pytest.approx([0.017, 0.017], rel=1e-12)
 
 
 def test_meta_holds_the_format_the_version_and_the_study(hamabe_db):
@@ -240,6 +260,25 @@ def test_a_truncated_database_is_damaged_and_force_replaces_it(tmp_path):
              "--skip", "dynamics,vibration,classic")
     assert r.exit_code in (0, 1) and "points: 400 of 400 done" in r.stdout, r.output
     assert _journal_files(tmp_path) == []
+
+
+@pytest.mark.parametrize("damage", hostile.DAMAGES)
+def test_a_damaged_database_is_named_damaged(tmp_path, damage):
+    """A database whose structure or totals are not what govopt wrote (a table gone, a row the
+    study did not write, a total or a unit's factor edited) is called damaged, with what is
+    wrong, by show, export and --resume (exit 2, one line): nothing is shown or counted from
+    it, nothing exported; --force starts the study afresh."""
+    sql, words = hostile.DAMAGES[damage]
+    db = tmp_path / "d.db"
+    hostile.damaged_study_db(sql, db)
+    for args in (["study", "show", db], ["study", "export", db, "--out", tmp_path / "d.csv"],
+                 ["study", "run", STUDY, "--db", db, "--resume", "--skip", "vibration,classic"]):
+        _one_line_error(_cli(*args), f"{db}: the study database is damaged: ", words,
+                        "run the study again with --force")
+    assert not (tmp_path / "d.csv").exists()
+    if damage == "no columns table":  # govopt's own header: --force may replace it
+        r = _cli("study", "run", STUDY, "--db", db, "--force", "--skip", "vibration,classic")
+        assert r.exit_code == 0 and "points: 5 of 5 done" in r.stdout, r.output
 
 
 def test_a_database_that_cannot_be_read_is_one_line(tmp_path, hamabe_db, monkeypatch):

@@ -42,7 +42,8 @@ OWN = {"shaft": ("hamabe", "Hamabe eq. 12"), "watt": ("textbook-ch3", "textbook 
        "spring_loaded": ("textbook-ch3", "textbook 3.5(b)"),
        "spring_gravity": ("textbook-ch3", "textbook 3.5(c)"),
        "traction_coil": ("traction-article", "article eq. 1"),
-       "traction_leaf": ("traction-article", "article eqs. 5-6")}
+       "traction_leaf": ("traction-article", "article eqs. 5-6"),
+       "force_line": ("textbook-ch3", "textbook 3.3")}
 
 pytestmark = [pytest.mark.libreoffice,
               pytest.mark.skipif(SOFFICE is None or PDFTOTEXT is None,
@@ -82,7 +83,7 @@ def test_every_bundled_spec_has_a_record(records):
     holding the verdict and the chosen design (the flying mass, the spring where the type has
     one, the dash-pot where the design has one), every page naming the design at its top and
     'page x of y' at its foot."""
-    assert len(records) == 32
+    assert len(records) == 33
     for name, (res, path, pages, _) in records.items():
         assert openpyxl.load_workbook(path, read_only=True).sheetnames[0] == "Summary"
         first = pages[0]

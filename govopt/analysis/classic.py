@@ -37,7 +37,9 @@ All are computed from the characteristic, written once on the seam
 * **friction band** (textbook 3.4(b), "Friction at the sleeve"; Hamabe eq. 42): the speeds at
   which the governor starts to open and to close against the friction band ``F``,
   ``omega_rise,fall^2 = (Q_s + cf +- F) / (jp - ci)``, and the coefficient of insensitiveness
-  ``(omega_rise - omega_fall) / omega``.
+  ``(omega_rise - omega_fall) / omega``: ``insensitiveness`` is the largest over the range, and
+  ``insensitiveness_inner`` and ``_outer`` are its values at the ends (the books ask for each;
+  at any configuration, :mod:`govopt.analysis.points`).
 """
 
 from __future__ import annotations
@@ -181,7 +183,7 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
             travel = np.full(n, travel_between(spec, float(x[0]), float(x[-1])))
         else:
             target = (1.0 + c) ** 2 * w2[:, i_n]
-            travel = _travel(spec, sd, float(x[i_n]), float(x[-1]), target, ok)
+            travel = travel_to(spec, sd, float(x[i_n]), float(x[-1]), target, ok)
         # a speed change whose equilibrium lies past the outermost configuration moves the
         # member to its stop: the work is done over the travel to the stop (Rattan: power
         # is the work done at the member for the speed change)
@@ -193,6 +195,7 @@ def classic_measures(spec, sd: statics.SpringDesign, x, omega, t, band, ok) -> d
                 "stability": np.where(ok, stability, None), "effort": effort[:, at],
                 "power": effort[:, at] * travel, "friction_band": band[:, i_n],
                 "insensitiveness": ((rise - fall) / omega).max(axis=1),
+                "insensitiveness_ends": ((rise - fall) / omega)[:, [0, -1]],
                 "rise": rise, "fall": fall, "change": c, "over_range": over_range,
                 "at_stop": at_stop,
                 "x_normal": float(x[i_n])}
@@ -264,6 +267,8 @@ def report(spec, measures: dict, i: int) -> dict:
         "omega_rise_rad_s": measures["rise"][i].tolist(),
         "omega_fall_rad_s": measures["fall"][i].tolist(),
         "insensitiveness": float(measures["insensitiveness"][i]),
+        "insensitiveness_inner": float(measures["insensitiveness_ends"][i, 0]),
+        "insensitiveness_outer": float(measures["insensitiveness_ends"][i, 1]),
         "geometry": geometry(spec, measures["x_normal"]),
     }
 
@@ -405,7 +410,7 @@ def travel_between(spec, x0: float, x1):
     return float(out) if out.ndim == 0 else out
 
 
-def _travel(spec, sd, x0: float, x_end: float, target, ok):
+def travel_to(spec, sd, x0: float, x_end: float, target, ok):
     """Travel of the regulating member of each design from ``x0`` to its configuration ``x1`` in
     equilibrium at speed^2 ``target`` (``inf`` where the governor reaches the end of its range
     first): a safeguarded Newton iteration on the characteristic, whose slope is exact on the

@@ -426,8 +426,9 @@ def band_spring(spec: Spec, m, central=0.0):
     The textbook's question (ch. 3, Examples 4 and 8; Hamabe Example 1: :func:`required_spring`),
     with the checks: a :class:`DesignError` (the reason in words) for a band narrower than govopt
     resolves (its width over the mean speed at most :data:`SLOPE_RTOL`: the governor floating
-    across it would be isochronous to rounding, not stable), a rate or free length that is not
-    positive and finite, or a force that does not keep the spring loaded in its working sense
+    across it would be isochronous to rounding, not stable; a falling band, outer below inner,
+    gives the spring of a governor the evaluation reports unstable), a rate or free length that
+    is not positive and finite, or a force that does not keep the spring loaded in its working sense
     at every configuration (a compression spring that would have to pull).
 
     Parameters
@@ -464,7 +465,7 @@ def band_spring(spec: Spec, m, central=0.0):
     """
     gov, sp = spec.governor, spec.speed
     width = (sp.omega_outer - sp.omega_inner) / sp.omega_mean
-    if not width > SLOPE_RTOL:
+    if not abs(width) > SLOPE_RTOL:  # a falling band (outer < inner) is evaluated: unstable
         raise DesignError(f"the band is {width:.3g} of the mean speed wide, within govopt's "
                           f"resolution ({SLOPE_RTOL:g}): isochronous to rounding; widen it")
     kappa, l0, f_inner, f_outer = (float(v) for v in required_spring(spec, m, central))

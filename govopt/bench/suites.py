@@ -590,9 +590,84 @@ def optimiser_suite(quick: bool = False) -> list[Point]:
     return points
 
 
+# ---------------------------------------------------------------------------------------------
+# The textbook and traction types: each type's shortcuts against its exact model, and the
+# solve-for's tolerance, on a hard case of each type
+# ---------------------------------------------------------------------------------------------
+
+def type_cases() -> dict:
+    """Every type's hard case (:attr:`Governor.bench_case`: a bundled spec or a spec's data,
+    the values that make it hard, the fidelity key of its shortcuts and their settings, the
+    exact model's first), with the input the solve rows find (default the flying mass)."""
+    from ..governors import REGISTRY, governor_class
+
+    out = {}
+    for name in REGISTRY:
+        cls = governor_class(name)
+        source, changes, key, settings, *unknown = cls.bench_case
+        out[name] = (source, changes, key, settings,
+                     unknown[0] if unknown else f"design.{cls.mass_key}_weight")
+    return out
+
+
+def type_case(name: str, setting: str | None = None):
+    """The hard case of type ``name`` (:func:`type_cases`) at its fidelity ``setting``."""
+    from ..spec import load_spec, parse_spec, with_values
+
+    source, changes, key, _, _ = type_cases()[name]
+    spec = parse_spec(source) if isinstance(source, dict) else load_spec(SPECS / f"{source}.toml")
+    changes = {**changes, **({key: setting} if setting is not None and key else {})}
+    return with_values(spec, changes) if changes else spec
+
+
+def types_suite(quick: bool = False, types=None) -> list[Point]:
+    """Every type's hard case: its characteristic at each fidelity setting against the exact
+    model (the Watt's exact model against the book's closed form in mpmath), and ``govopt
+    solve``'s Brent tolerance finding one input for a speed 3 % below the outermost one's,
+    against the root at the tightest tolerance (4 eps). ``types``: the types to run (default
+    all of :func:`type_cases`)."""
+    from .. import questions
+    from ..analysis import statics
+
+    points = []
+    for name, (_, _, key, settings, unknown) in type_cases().items():
+        if types is not None and name not in types:
+            continue
+        exact = type_case(name, settings[0])
+        x = statics.configurations(exact)
+
+        def speeds(spec, x=x):
+            sd = statics.spring_design(spec)
+            return np.sqrt(statics.omega_squared(spec, x, sd.m, sd.kappa, sd.l0, sd.central))
+
+        closed = exact.governor.bench_reference(exact, x)  # the book's own, in mpmath
+        ref = speeds(exact) if closed is None else closed
+        for setting in settings:
+            spec = type_case(name, setting)
+            err = _rel(speeds(spec) - ref, 1.0) / float(np.min(ref))
+            what = "the book's closed form in mpmath" if closed is not None else \
+                "the exact model" if setting != settings[0] else "the exact model itself"
+            points.append(Point(f"{name}: statics", f"characteristic ({key or 'exact'})",
+                                setting, cpu_per_call(lambda s=spec: speeds(s), 0.005 if quick
+                                                      else 0.02), err, name,
+                                f"speed over the hard case's range against {what}"))
+        outer = questions.Point("outer", "outer")
+        target = 0.97 * questions.figure(exact, "speed", outer)
+        best = questions.solve(exact, unknown, "speed", target, outer,
+                               rtol=4 * np.finfo(float).eps).value
+        for rtol in (1e-6, 1e-12) if quick else (1e-3, 1e-6, 1e-9, 1e-12):
+            t0 = time.process_time()
+            found = questions.solve(exact, unknown, "speed", target, outer, rtol=rtol)
+            points.append(Point(f"{name}: solve", f"solve {unknown} (Brent)", f"rtol {rtol:g}",
+                                time.process_time() - t0, abs(found.value - best) / abs(best),
+                                name, f"{found.evaluations} evaluations; the root at 4 eps "
+                                      "is the reference"))
+    return points
+
+
 SUITES = {"statics": statics_suite, "transient": transient_suite,
           "load change": load_change_suite, "vibration": vibration_suite,
-          "friction": friction_suite, "optimiser": optimiser_suite}
+          "friction": friction_suite, "optimiser": optimiser_suite, "types": types_suite}
 
 
 def pareto(points: list[Point]) -> None:
@@ -605,7 +680,10 @@ def pareto(points: list[Point]) -> None:
         p.pareto = math.isfinite(p.error) and not any(
             q.time_s <= p.time_s * noise and q.error <= p.error
             and (q.time_s < p.time_s / noise or q.error < p.error) for q in same)
-        p.default = (p.analysis, p.method, p.setting) in DEFAULTS
+        p.default = (p.analysis, p.method, p.setting) in DEFAULTS or (
+            p.analysis.endswith(": statics") and p.worst_case and p.setting == type_cases()[
+                p.worst_case][3][0]) or (p.analysis.endswith(": solve")
+                                         and p.setting == "rtol 1e-12")
 
 
 def speed_vs_error(quick: bool = False, analyses=None, log=None) -> list[Point]:

@@ -46,4 +46,4 @@ def bench(quick: Annotated[bool, common.flag(
     echo(report.summary(points, rows))
     if out is not None:
         for path in report.write_report(points, out, rows, overwrite=force):
-            echo(f"wrote {Path(path).absolute()}")
+            echo(f"wrote {path}")

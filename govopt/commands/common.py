@@ -4,7 +4,9 @@ flags. The commands are ordinary typer commands: typer parses and converts their
 
 from __future__ import annotations
 
+import errno
 import functools
+import os
 import re
 import sys
 import typing
@@ -35,7 +37,29 @@ def echo(text: str, err: bool = False) -> None:
     stream = sys.stderr if err else sys.stdout
     if not stream.isatty():
         text = _ANSI.sub("", text)
-    print(text, file=stream, flush=True)
+    try:
+        print(text, file=stream, flush=True)
+    except OSError as exc:
+        unwritable(stream, exc)
+
+
+def unwritable(stream, exc: OSError) -> None:
+    """A standard stream that cannot be written. Its reader gone (``govopt design | head -1``,
+    a closed pipe): nothing more is printed there, and the command carries on (its files
+    written, its exit code its own: the same however early the reader left). Anything else (a
+    full disk, ``/dev/full``): one line naming the stream, exit code 2. Either way the stream
+    is pointed at the null device, so that nothing left in its buffer fails again at exit."""
+    name = "stderr" if stream is sys.stderr else "stdout"
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), stream.fileno())
+    except (OSError, ValueError):  # not a file (a test's capture): nothing to point away
+        pass
+    if exc.errno in (errno.EPIPE, errno.ECONNRESET) or stream is sys.stderr:
+        return
+    from ..errors import GovoptError
+
+    raise GovoptError(f"{name}: cannot write the output "
+                      f"({(exc.strerror or type(exc).__name__).lower()})")
 
 
 def fail(message: str) -> typing.NoReturn:
@@ -56,11 +80,6 @@ class ChecksFailed(Exception):
     """The command ran and printed its result, and some of the design's checks failed."""
 
 
-class PipeClosed(Exception):
-    """stdout was closed under a command (``govopt evaluate | head``): :func:`govopt.cli.main`
-    exits 1 quietly (typer's own handler would swap ``sys.stdout`` for good)."""
-
-
 def guarded(command):
     """Run a command so that it never shows a traceback: a user's error (GovoptError) is one
     line and exit 2, anything unexpected one line, "please report" and exit 3 (``--debug``
@@ -75,8 +94,6 @@ def guarded(command):
                 out = command(*args, **kwargs)
             except ChecksFailed:
                 failed = True
-            except BrokenPipeError:
-                raise PipeClosed from None
             except GovoptError as exc:
                 fail(str(exc))
             except Exception as exc:

@@ -44,9 +44,17 @@ evaluate_app = typer.Typer(add_completion=False)
 design_app = typer.Typer(add_completion=False)
 
 
-def _load(spec: Path | None, default: Path, **analysis):
+Nominal = Annotated[bool, typer.Option(
+    "--nominal", help="The nominal design's verdict alone: its checks, not the governors made "
+    "to the tolerances and set by the fitter (as requirements.verdict = \"nominal\").")]
+
+
+def _load(spec: Path | None, default: Path, nominal: bool = False, **analysis):
     """The spec with the command's ``[analysis]`` options set as if written in it (re-read:
-    ``design -o`` writes them into the design's spec, which then reproduces the report)."""
+    ``design -o`` writes them into the design's spec, which then reproduces the report);
+    ``nominal``: its verdict the nominal design's (``--nominal``)."""
+    import dataclasses
+
     from ..spec import load_spec, with_values
     from ..spec_keys import analysis_table
 
@@ -56,7 +64,8 @@ def _load(spec: Path | None, default: Path, **analysis):
     for key in (k for k, v in analysis.items() if v is not None and k not in own):
         fail(f"--{key.replace('_', '-')}: the {s.governor.type_name} governor has no "
              f"[analysis] {key} (docs/reference/spec.md)")
-    return with_values(s, changes) if changes else s
+    s = with_values(s, changes) if changes else s
+    return dataclasses.replace(s, verdict="nominal") if nominal else s
 
 
 @evaluate_app.command("evaluate", help=EVALUATE_HELP, short_help=EVALUATE_SHORT)
@@ -69,13 +78,13 @@ def evaluate(spec: Spec = None,
              = None,
              json_out: Json = False, xlsx: Xlsx = None, force: Force = False,
              plots: Plots = None, full: Full = False, section: Section = None,
-             speed_change: Change = None) -> None:
+             speed_change: Change = None, nominal: Nominal = False) -> None:
     from ..evaluator import evaluate as run
 
     if geometry is not None and geometry not in ("exact", "series"):
         fail(f"--geometry: expected 'exact' or 'series', got {geometry!r}")
     change = _speed_change(speed_change)
-    run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, geometry=geometry,
+    run_and_report(lambda: run(_load(spec, DEFAULT_EVALUATE, nominal, geometry=geometry,
                                      speed_change=change)), json_out,
                    spec or DEFAULT_EVALUATE, xlsx=xlsx, force=force, plots=plots,
                    sections=_sections(full, section), advise=True)
@@ -88,11 +97,13 @@ def design(spec: Spec = None, json_out: Json = False,
                "-o", "--output", metavar="<path>", help="Write the design as a spec file.")]
            = None,
            xlsx: Xlsx = None, force: Force = False, plots: Plots = None, full: Full = False,
-           section: Section = None, speed_change: Change = None) -> None:
+           section: Section = None, speed_change: Change = None,
+           nominal: Nominal = False) -> None:
     from ..optimize.search import design as run
 
     change = _speed_change(speed_change)
-    run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN, speed_change=change)), json_out,
+    run_and_report(lambda: run(_load(spec, DEFAULT_DESIGN, nominal, speed_change=change)),
+                   json_out,
                    spec or DEFAULT_DESIGN,
                    xlsx=xlsx, output=output, force=force, plots=plots,
                    sections=_sections(full, section))
@@ -152,6 +163,15 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
     ``--json`` a search that finds no design prints its diagnosis as one JSON object before
     exiting 2; ``advise``: a result with failed checks is told what change makes it pass
     (:func:`govopt.optimize.diagnosis.evaluation_moves`; in the JSON, ``diagnosis``)."""
+    from ..report.files import removed_on_error
+
+    with removed_on_error():  # a refused run leaves no empty plots folder
+        _run_and_report(compute, json_out, spec, xlsx, output, force, plots, sections, advise)
+
+
+def _run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
+                    output: str | None = None, force: bool = False, plots: Path | None = None,
+                    sections: list[str] | None = None, advise: bool = False) -> None:
     from ..report.files import check_planned, drawn_design, overwrite_policy, write_design_spec
     from ..report.text import format_result
 
@@ -197,13 +217,15 @@ def run_and_report(compute, json_out: bool, spec: Path, xlsx: str | None = None,
         echo(format_result(res, sections=sections))
     for path in (output, xlsx, *drawn):
         if path is not None:
-            echo(f"wrote {Path(path).absolute()}", err=json_out)
+            echo(f"wrote {path}", err=json_out)
     exit_on_failed_checks(res, json_out, moves)
 
 
 def exit_on_failed_checks(res, json_out: bool, moves: list[str] | None = None) -> None:
     """Exit code 1 (after the report) when any of the result's checks failed, saying (on
-    stderr) which, and ``moves``: the changes that each make it pass."""
+    stderr) which, and ``moves``: the changes that each make it pass; or when the made
+    governors' yield falls short of ``min_yield`` where the verdict is theirs
+    (:attr:`govopt.result.Result.passed`)."""
     failed = [c.name for c in res.checks if not c.passed]
     if failed:
         if not json_out:
@@ -213,4 +235,10 @@ def exit_on_failed_checks(res, json_out: bool, moves: list[str] | None = None) -
                 echo("it passes if one of these moves: " + "; ".join(moves) if moves else
                      "no single change of its friction, speeds or a design value (within x2) "
                      "makes it pass", err=True)
+        raise ChecksFailed
+    if not res.passed:
+        if not json_out:
+            from ..report.text import yield_line
+
+            echo(f"FAIL as made: {yield_line(res)}", err=True)
         raise ChecksFailed

@@ -3,7 +3,6 @@ init --type TYPE` writes a commented spec of a governor type, or of a spring spe
 ``spring-check``), with every key (its template, :func:`govopt.spec_docs.template`); `govopt
 schema` writes the JSON Schema of a spec file."""
 
-import sys
 from pathlib import Path
 from typing import Annotated
 
@@ -89,6 +88,8 @@ def init_command(
         source = example(name)
         data, inputs, stem = source.read_bytes(), [source], source.stem
         what = f"the bundled {source.stem}"
+    if output is not None and not output.strip():
+        raise GovoptError(f"-o: expected a file or folder name, got {output!r}")
     target = Path(output) if output is not None else Path(f"{stem}.toml")
     if names_folder(output):  # 'DIR/new/': a folder, made if only its parent exists
         target = output_folder(target, "the spec") / f"{stem}.toml"
@@ -103,7 +104,7 @@ def init_command(
         command = FORMS[form(table["spring"])][1].removeprefix("govopt ")
     else:
         command = "study" if "study" in table else "evaluate" if "design" in table else "design"
-    echo(f"wrote {target.absolute()} ({what}); edit it, then: govopt {command} {target}")
+    echo(f"wrote {target} ({what}); edit it, then: govopt {command} {target}")
 
 
 @schema_app.command("schema", help=SCHEMA_HELP, short_help=SCHEMA_SHORT)
@@ -121,7 +122,7 @@ def schema_command(
 
     body = text()
     if output is None:
-        sys.stdout.write(body)
+        echo(body.removesuffix("\n"))
         return
     from ..report.files import atomic_write, check_output
 
@@ -129,4 +130,4 @@ def schema_command(
     check_output(target, overwrite=force, inputs=[], what="schema")
     atomic_write(target, lambda tmp: tmp.write_text(body, encoding="utf-8"), overwrite=force,
                  what="schema")
-    echo(f"wrote {target.absolute()}")
+    echo(f"wrote {target}")

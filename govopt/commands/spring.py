@@ -92,7 +92,7 @@ def spring(ctx: typer.Context) -> None:
 def _finish(out, json_out: bool) -> None:
     echo(out.text)
     for path in out.written:
-        echo(f"wrote {Path(path).absolute()}", err=json_out)
+        echo(f"wrote {path}", err=json_out)
     if out.failed:  # as evaluate: the spring is reported, and exit code 1 says a check failed
         echo(f"{len(out.failed)} of {out.total} checks failed: {'; '.join(out.failed)}",
              err=True)
@@ -111,16 +111,20 @@ def design(
         output: Annotated[str | None, common.option(
             "-o", "--output", metavar="<path>",
             help="Write the designed spring as a spec for 'govopt spring check' (its "
-                 "geometry, material, loads and rules).")] = None,
+                 "geometry, its lengths as a drawing gives them: 4 significant digits, more "
+                 "only where a check would fail; material, loads and rules).")] = None,
         xlsx: Xlsx = None,
         plots: Plots = None,
         replace: Replace = False,
         **options,
 ) -> None:
+    from ..report.files import removed_on_error
     from ..spring_command import run
 
-    _finish(run(spec, json_out=json_out, xlsx=xlsx, plots=plots, output=output,
-                replace=replace, **options), json_out)
+    with removed_on_error():  # a refused run leaves no empty plots folder
+        out = run(spec, json_out=json_out, xlsx=xlsx, plots=plots, output=output,
+                  replace=replace, **options)
+    _finish(out, json_out)
 
 
 @app.command("check", help=CHECK_HELP, short_help="Check a spring you have.")
@@ -137,7 +141,10 @@ def check(
         replace: Replace = False,
         **options,
 ) -> None:
+    from ..report.files import removed_on_error
     from ..spring_command import check as run_check
 
-    _finish(run_check(spec, json_out=json_out, xlsx=xlsx, plots=plots, replace=replace,
-                      **options), json_out)
+    with removed_on_error():  # a refused run leaves no empty plots folder
+        out = run_check(spec, json_out=json_out, xlsx=xlsx, plots=plots, replace=replace,
+                        **options)
+    _finish(out, json_out)

@@ -2,13 +2,14 @@
 database; export, plot and summarise it. `govopt study SPEC ...` is `govopt study run SPEC ...`
 (:func:`govopt.cli.main`)."""
 
+import contextlib
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
 from . import common
-from .common import FORCE_HELP, ChecksFailed, echo, fail, guarded, rich_text
+from .common import FORCE_HELP, ChecksFailed, State, echo, fail, guarded, rich_text
 
 STUDY_SHORT = ("Batch trade studies: sweep a spec's inputs, one row per point in an SQLite "
                "database; export, plot and summarise it.")
@@ -110,8 +111,9 @@ def study_run(
         check_plot_folder(plot)
     bar = progress_bar()
     try:
-        report = run_study(study, db, workers=workers, dask=dask, resume=resume,
-                           fresh=force and not resume, chunk=chunk, progress=bar)
+        with sigterm_stops():
+            report = run_study(study, db, workers=workers, dask=dask, resume=resume,
+                               fresh=force and not resume, chunk=chunk, progress=bar)
     finally:
         if bar is not None:
             bar.close()
@@ -122,7 +124,34 @@ def study_run(
     if line:
         echo(line, err=True)
     if code:
-        raise ChecksFailed if code == 1 else SystemExit(code)
+        raise ChecksFailed if code == 1 else SystemExit(
+            State.terminated if report.interrupted and State.terminated else code)
+
+
+@contextlib.contextmanager
+def sigterm_stops():
+    """Within this block, SIGTERM stops a study as Ctrl-C does (the blocks done are kept, the
+    summary and how to resume are printed), exiting 128 + SIGTERM; only where the process's
+    SIGTERM is govopt's own (the console script's), never a host's."""
+    import signal
+
+    from ..cli import on_sigterm
+
+    if signal.getsignal(signal.SIGTERM) is not on_sigterm:
+        yield
+        return
+
+    def stop(signum, frame):
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)  # a second one while stopping: ignored
+        State.terminated = 128 + signum
+        raise KeyboardInterrupt
+
+    signal.signal(signal.SIGTERM, stop)
+    try:
+        yield
+    finally:
+        if signal.getsignal(signal.SIGTERM) is stop:
+            signal.signal(signal.SIGTERM, on_sigterm)
 
 
 def _outcome(db, report, outcome):
@@ -153,12 +182,12 @@ def write_outputs(store, out, plot, force: bool) -> None:
             from ..study import export
 
             written = export(store, out, overwrite=force)
-        echo(f"wrote {Path(written).absolute()}")
+        echo(f"wrote {written}")
     if plot is not None:
         from ..report.study_plots import plot_study
 
         for path in plot_study(store, plot, overwrite=force):
-            echo(f"wrote {Path(path).absolute()}")
+            echo(f"wrote {path}")
 
 
 def progress_bar():

@@ -22,6 +22,7 @@ REGISTRY: dict[str, str] = {
     "spring_gravity": "spring_gravity:SpringGravityGovernor",
     "traction_coil": "traction_coil:TractionCoilGovernor",
     "traction_leaf": "traction_leaf:TractionLeafGovernor",
+    "force_line": "force_line:ForceLineGovernor",
 }
 
 

@@ -257,6 +257,22 @@ class Method:
 
 
 @dataclass(frozen=True)
+class Coordinate:
+    """One way the books give a governor's configuration (the ball's radius, the arm's angle to
+    the axis, the height, the joint's radius, the sleeve's lift): its ``name`` as a spec key's
+    stem and a query point write it (``angle`` -> ``angle_inner``, ``--at "angle=30 deg"``),
+    its ``dimension`` (``"angle"`` or ``"length"``), one line of ``meaning`` with its source,
+    and ``value``: the coordinate at configurations ``x`` (SI, vectorised). Every type declares
+    its own (:meth:`Governor.coordinates`); :func:`govopt.analysis.points.configuration`
+    inverts ``value`` by bracketed root-finding over :meth:`Governor.x_domain`."""
+
+    name: str
+    dimension: str
+    meaning: str
+    value: Any
+
+
+@dataclass(frozen=True)
 class Part:
     """One part of a governor's drawing in its own plane (SI, m): ``kind`` is ``"link"``
     (a polyline of bars or arms), ``"mass"`` (a ball or pendulum: a circle of ``size`` radius
@@ -321,6 +337,55 @@ def zigzag(start, end, width: float, coils: float = 6.0) -> tuple[tuple[float, f
     return tuple((float(x), float(y)) for x, y in points)
 
 
+def solve_monotone(f, value: float, lo: float, hi: float, samples: int = 257) -> float:
+    """The ``u`` in ``(lo, hi)`` where ``f(u) = value``: ``f`` sampled at ``samples`` points
+    (its non-finite values skipped), the first sign change bracketed and closed by Brent's
+    method to rounding; NaN where ``f`` does not cross ``value`` (no root in the domain).
+
+    Brent's method (R. P. Brent, *Algorithms for Minimization without Derivatives*, 1973, ch.
+    4; ``scipy.optimize.brentq``): a root of a continuous function, bracketed, never lost.
+
+    Parameters
+    ----------
+    f : callable [-]
+        Vectorised function of ``u`` (SI).
+    value : float [-]
+        The value sought, in ``f``'s unit.
+    lo, hi : float [-]
+        The domain of ``u`` (the ends themselves are not sampled).
+    samples : int [-]
+        Points sampled to find a bracket.
+
+    Returns
+    -------
+    float [-]
+        The root, or NaN.
+
+    Examples
+    --------
+    ``u^2 = 2`` on (0, 3): by hand sqrt(2) = 1.41421356...
+
+    >>> round(solve_monotone(lambda u: u**2, 2.0, 0.0, 3.0), 12)
+    1.414213562373
+    """
+    from scipy.optimize import brentq
+
+    u = np.linspace(lo, hi, samples + 2)[1:-1]
+    with np.errstate(all="ignore"):
+        g = np.asarray(f(u), dtype=float) - value
+    ok = np.isfinite(g)
+    u, g = u[ok], g[ok]
+    hit = np.flatnonzero(g == 0.0)
+    if hit.size:
+        return float(u[hit[0]])
+    cross = np.flatnonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0)
+    if not cross.size:
+        return float("nan")
+    i = int(cross[0])
+    return float(brentq(lambda v: float(f(v)) - value, u[i], u[i + 1], xtol=1e-15 * max(
+        abs(hi), abs(lo), 1e-300), rtol=4 * np.finfo(float).eps))
+
+
 def ball_radius(mass: float, density: float = 7850.0) -> float:
     """The radius [m] of a steel ball of ``mass``: how the drawings show a flying mass,
     ``r = (3 m / (4 pi rho))^(1/3)``.
@@ -378,6 +443,33 @@ def mirrored(parts) -> tuple[Part, ...]:
     return tuple(out)
 
 
+@dataclass(frozen=True)
+class Adjustment:
+    """A setting the fitter makes on each governor as it is built: ``what`` is set (in words),
+    the :class:`~govopt.inputs.Design` ``field`` it changes, the ``end`` of the range
+    (``"inner"`` or ``"outer"``) whose equilibrium speed it brings to the design's, and the
+    ``source`` (a key of :data:`govopt.references.REFERENCES`) with ``where`` in it. Applied by
+    :func:`govopt.made.set_by_the_fitter` (the speed is affine in the setting: a closed form)."""
+
+    what: str
+    field: str
+    end: str
+    source: str
+    where: str = ""
+
+    @property
+    def cite(self) -> str:
+        return cite(self.source, self.where)
+
+
+#: the spring's initial compression (its free length) set by the nut so that the sleeve begins
+#: to rise at the design's speed: how the textbook's examples fix a spring governor's spring
+#: ("find the initial compression ... in order that the sleeve shall begin to rise at 240 rpm")
+SPRING_PRELOAD = Adjustment("the spring's preload (its free length, by the adjusting nut)",
+                            "free_half_length", "inner", "textbook-ch3",
+                            "section 3.5, Examples 5 and 8 (initial compression)")
+
+
 class Governor(ABC):
     """One governor type with its parsed geometry (SI); subclasses supply the seam.
 
@@ -396,10 +488,12 @@ class Governor(ABC):
     * ``keys``: its ``[governor]`` keys beyond ``type`` (:class:`govopt.keys.Key`, in reading
       order), which :meth:`parse` reads; ``tables``: top-level tables of its own (the shaft
       governor's ``[valve_gear]``); ``example``: the bundled design spec of the type (the
-      values of its ``govopt init --type`` template).
+      values of its ``govopt init --type`` template); ``key_alternatives``: the choices
+      between groups of its keys (:attr:`govopt.keys.Table.alternatives`).
     """
 
     type_name: ClassVar[str]
+    key_alternatives: ClassVar[tuple] = ()
     title: ClassVar[str]
     coordinate: ClassVar[str] = "angle"
     coordinate_name: ClassVar[str] = "x"
@@ -592,6 +686,29 @@ class Governor(ABC):
 
         return spring_engineering.checks(spec, sd, char, vib)
 
+    def adjustments(self) -> tuple[Adjustment, ...]:
+        """What the fitter sets on each governor as built (:class:`Adjustment`): a spring's
+        preload where the type has a spring (:data:`SPRING_PRELOAD`), nothing for a dead-weight
+        governor. A type whose source says otherwise overrides this."""
+        return () if self.spring is None else (SPRING_PRELOAD,)
+
+    def spring_checks_over(self, spec, sd, F, x) -> list | None:
+        """:meth:`spring_checks` of N designs at once, without a forcing (no fatigue rows):
+        ``sd`` a :class:`~govopt.analysis.statics.SpringDesign` of arrays (``(N, 1)``), ``F``
+        the spring forces over the configurations ``x`` (N, ``(N, K)``; ``x`` in the
+        coordinate's unit, ``(K,)``). Each
+        :class:`govopt.verdict.Check` holds arrays of N (value, limit, in its SI unit); None
+        where some design has no array form (a spring given by its rate alone: then
+        :meth:`spring_checks` design by design). The same numbers as :meth:`spring_checks`
+        (each row is elementwise over the designs: :func:`govopt.springs.checks.rows_over`)."""
+        if spec.material is None or spec.material.grade is None:
+            return []
+        if not np.all(np.isfinite(sd.d)):
+            return None
+        from ..analysis import spring_engineering
+
+        return spring_engineering.checks_over(spec, sd, F)
+
     def spring_report(self, spec, sd, char, vib=None):
         """The spring maker's sheet, the fatigue loads under ``vib`` and the manufacturing
         spread of a helical spring (:func:`govopt.analysis.spring_record.report`); None
@@ -601,6 +718,40 @@ class Governor(ABC):
         from ..analysis import spring_record as sr
 
         return sr.report(spec, sd, char, vib)
+
+    #: the name of the type's own coordinate ``x`` as a query point writes it
+    coordinate_key: ClassVar[str] = "x"
+
+    def coordinates(self) -> tuple[Coordinate, ...]:
+        """The coordinates a configuration may be given by (:class:`Coordinate`): the type's
+        own ``x`` (default); a type adds the ones its books use."""
+        return (Coordinate(self.coordinate_key, self.coordinate,
+                           f"the {self.coordinate_name} (the type's own coordinate)",
+                           lambda x: np.asarray(x, dtype=float)),)
+
+    def x_domain(self) -> tuple[float, float]:
+        """The configurations ``x`` the mechanism can take (SI): a query point is sought
+        within it; default the spec's range."""
+        return self.x_inner, self.x_outer
+
+    #: the type's hard case for ``govopt bench`` (:func:`govopt.bench.suites.types_suite`): a
+    #: bundled spec's name (or a spec's data), the values that make it hard ({dotted key:
+    #: value}), the fidelity key of its shortcuts ("" for none) and their settings (the exact
+    #: model first), and optionally the input its solve rows find (default the flying mass)
+    bench_case: ClassVar[tuple] = ()
+
+    def bench_reference(self, spec, x):
+        """The equilibrium speeds (rad/s) at ``x`` of the bench case ``spec`` by the source's
+        own closed form in high precision, where the type has one; default None (the bench
+        measures the shortcuts against the exact model)."""
+        return None
+
+    def link_forces(self, x, m, central, omega2, restoring) -> dict:
+        """The forces in the type's arms, links and pivots (N) at configurations ``x`` in
+        equilibrium at ``omega2`` (rad/s)^2 with the restoring generalised force ``restoring``
+        (:meth:`Terms.restoring`, a friction band added where the governor is moving):
+        name -> array. Default: none (the type does not resolve its linkage's forces)."""
+        return {}
 
     def columns(self, x) -> dict:
         """The type's own geometry over ``x`` for the characteristic table: name -> (values, SI

@@ -60,7 +60,18 @@ import numpy as np
 
 from ..keys import Key
 from ..units import G_STANDARD
-from .base import Drawing, Equation, Governor, Part, Setting, Terms, ball_radius, mirrored, zigzag
+from .base import (
+    Coordinate,
+    Drawing,
+    Equation,
+    Governor,
+    Part,
+    Setting,
+    Terms,
+    ball_radius,
+    mirrored,
+    zigzag,
+)
 from .porter import RANGE
 
 OBLIQUITIES = ("exact", "small_angle")
@@ -292,10 +303,14 @@ class BellCrankGovernor(Governor):
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"
     free_length_key: ClassVar[str] = "free_length"
+    key_alternatives: ClassVar[tuple] = (((RADIUS_OUTER.name,), (SLEEVE_LIFT.name,)),)
     central_load: ClassVar[bool] = True
     central_load_affine: ClassVar[bool] = True  # cf, cf_x and I affine in W; ci = 0 (terms)
     #: True where the fulcrum rides on the sleeve and the ball hangs below it (Fig. 3.12)
     fulcrum_on_sleeve: ClassVar[bool] = False
+    #: the balls hang below a fixed fulcrum (a Hartnell drawn upside down): the sleeve then
+    #: falls as the balls fly out, so the balls' and the sleeve's weights change sign
+    ball_below: bool = False
     #: the spec key of the lever's second arm
     arm_key: ClassVar[str] = "sleeve_arm"
     #: the default fulcrum radius: the ball arm vertical at radius "normal" or "inner"
@@ -414,7 +429,8 @@ class BellCrankGovernor(Governor):
                     theta=st["theta"])
 
     def sleeve_lift(self, x):
-        """Rise of the sleeve from the innermost configuration (m) at ball radius ``x`` (m)."""
+        """Rise of the sleeve from the innermost configuration (m) at ball radius ``x`` (m); its
+        fall where the balls hang below the fulcrum (:attr:`ball_below`)."""
         return self.geometry(x)["s"]
 
     def height(self, x):
@@ -428,6 +444,22 @@ class BellCrankGovernor(Governor):
         return {"sleeve lift": (self.sleeve_lift(x), "m"),
                 "ball arm angle": (self.crank.angle(x), "rad"),
                 "ball height": (self.height(x), "m")}
+
+    coordinate_key: ClassVar[str] = "radius"
+
+    def coordinates(self) -> tuple[Coordinate, ...]:
+        """The ball's radius, the ball arm's inclination to the vertical and the sleeve's lift
+        from the innermost configuration (section 3.5, eq. vi)."""
+        return super().coordinates() + (
+            Coordinate("angle", "angle", "the ball arm's inclination theta to the vertical "
+                                         "(textbook 3.5, Fig. 3.10)", self.crank.angle),
+            Coordinate("lift", "length", "the sleeve's lift from its innermost position "
+                                         "(textbook 3.5(a), eq. vi)", self.sleeve_lift))
+
+    def x_domain(self) -> tuple[float, float]:
+        """The ball radii the ball arm reaches about its fulcrum, ``r_f +- a``."""
+        cr = self.crank
+        return cr.fulcrum_radius - cr.ball_arm, cr.fulcrum_radius + cr.ball_arm
 
     # -- springs (subclasses) -----------------------------------------------------------------
 
@@ -451,8 +483,9 @@ class BellCrankGovernor(Governor):
         geo = self.geometry(x)
         half = 0.0 if central is None else 0.5 * central
         fixed, fixed_x = self.fixed_force(x, geo)
-        cf = G_STANDARD * (m * geo["y1"] + half * geo["s1"]) + fixed
-        cf_x = G_STANDARD * (m * geo["y2"] + half * geo["s2"]) + fixed_x
+        g = -G_STANDARD if self.ball_below else G_STANDARD  # upside down: gravity reversed
+        cf = g * (m * geo["y1"] + half * geo["s1"]) + fixed
+        cf_x = g * (m * geo["y2"] + half * geo["s2"]) + fixed_x
         A, B, A_x, B_x = spring_terms(*self.spring_length_at(geo))
         zero = 0.0 * x
         return Terms(jp=m * x, jpp=m + zero, cf=cf, cf_x=cf_x, ci=zero, ci_x=zero,
@@ -553,6 +586,8 @@ class BellCrankGovernor(Governor):
             parts.append(Part("frame", ((-width, stop), (width, stop))))
         low = min(collar - tall, ball[1]) - 0.2 * a
         parts.append(Part("frame", ((0.0, max(top, ball[1]) + 0.15 * a), (0.0, low))))
+        if self.ball_below:  # the same mechanism upside down
+            parts = [Part(p.kind, tuple((u, -v) for u, v in p.points), p.size) for p in parts]
         return Drawing(tuple(parts))
 
     def spring_between_balls(self) -> bool:

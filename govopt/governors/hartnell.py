@@ -26,7 +26,10 @@ from __future__ import annotations
 
 from typing import ClassVar
 
+import numpy as np
+
 from ..keys import Key
+from ..units import G_STANDARD
 from .base import Equation
 from .bellcrank import BellCrankGovernor, common_keys, spring_length_key
 
@@ -39,16 +42,26 @@ SPRING_LENGTH = spring_length_key(
     "it (the frame does), so it has no default", source="textbook 3.5(a)",
     example="10 cm")
 
+BALL_POSITION = Key("ball_position", "choice", "where the balls sit: \"above\" the fulcrum "
+                    "(Fig. 3.10) or \"below\" it (the ball arms hanging down: the levers "
+                    "upside down, so the sleeve falls as the balls fly out and the balls' and "
+                    "the sleeve's weights resist it)", default="above",
+                    choices=("above", "below"), source="textbook 3.5(a)")
+
 
 class HartnellGovernor(BellCrankGovernor):
     """Hartnell governor (section 3.5(a), Fig. 3.10): fixed fulcrum, ball above it, compression
     spring on the sleeve."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("textbook-ex5-hartnell", {}, "governor.obliquity",
+                               ("exact", "small_angle"))
+
     type_name: ClassVar[str] = "hartnell"
     title: ClassVar[str] = "Hartnell governor (textbook ch. 3, section 3.5(a), Fig. 3.10)"
     spring: ClassVar[str | None] = "compression"
     common: ClassVar[tuple[Key, ...]] = common_keys(SLEEVE_ARM, "normal")
-    keys: ClassVar[tuple[Key, ...]] = (*common, SPRING_LENGTH)
+    keys: ClassVar[tuple[Key, ...]] = (*common, BALL_POSITION, SPRING_LENGTH)
     example: ClassVar[str] = "hartnell-design"
 
     @classmethod
@@ -67,10 +80,43 @@ class HartnellGovernor(BellCrankGovernor):
         3.0
         """
         common = cls.read_common(reader)
+        below = reader.read(BALL_POSITION) == "below"
         gov = cls(**common, spring_length=reader.read(SPRING_LENGTH))
+        gov.ball_below = below
         gov.check_spring_length(reader)
         reader.finish()
         return gov
+
+    def link_forces(self, x, m, central, omega2, restoring) -> dict:
+        """The force between each roller and the sleeve's collar and each fulcrum's reaction
+        (N), from the bell crank's statics (section 3.5(a)): the collar's force on the roller,
+        vertical, ``V = (Q - (+-) m g dy/dr) / (ds/dr)`` (the spring's, the sleeve's weight and
+        the friction, read back from the seam's restoring force ``Q``); the fulcrum holds the
+        ball's centrifugal force ``m omega^2 r`` across and ``m g + V`` along the axis (``m g
+        - V`` with the balls below), so its reaction is ``sqrt((m omega^2 r)^2 + (m g +- V)^2)``.
+
+        Example 4's Hartnell (small-angle statics, weights neglected in the controlling force)
+        at the inner end: the spring presses 19.32 kgf, V = 9.66 kgf, the ball's 2 kgf weight
+        and its centrifugal force ``2 x (240 pi/30)^2 x 0.075 / g = 9.66`` kgf (a = b), so by
+        hand the reaction is ``sqrt(9.66^2 + 11.66^2) = 15.14`` kgf:
+
+        >>> import govopt, numpy as np
+        >>> from govopt.examples import example
+        >>> spec = govopt.load_spec(example("textbook-ex4-hartnell"))
+        >>> gov, KGF = spec.governor, 9.80665
+        >>> t = gov.terms(0.075, 2.0, spec.analysis)
+        >>> f = gov.link_forces(0.075, 2.0, 0.0, t.omega_squared(3.572 * KGF / 0.01, 0.1541),
+        ...                     t.restoring(3.572 * KGF / 0.01, 0.1541))
+        >>> round(float(f["fulcrum reaction"]) / KGF, 2)
+        15.14
+        """
+        geo = self.geometry(x)
+        sign = -1.0 if self.ball_below else 1.0
+        V = (np.asarray(restoring, dtype=float) - sign * G_STANDARD * m * geo["y1"]) / geo["s1"]
+        across = m * np.asarray(omega2, dtype=float) * np.asarray(x, dtype=float)
+        return {"roller force": V, "fulcrum reaction": np.hypot(across, G_STANDARD * m
+                                                                + sign * V),
+                "sleeve load": 2.0 * V}
 
     # -- the type's method: what a reader is told (textbook 3.5(a)) ---------------------------
 
@@ -85,4 +131,8 @@ class HartnellGovernor(BellCrankGovernor):
                          "and initial compression", "S = kappa (l0 - L), L = spring_length - s; "
                          "initial compression l0 - spring_length", "textbook-ch3",
                          "3.5(a) eqs. (vii)-(viii)", name="spring force"),
-                self.lift_equation())
+                self.lift_equation()) + ((Equation(
+                    "statics", "the balls below the fulcrum: the levers upside down, the "
+                    "sleeve falling as the balls fly out", "omega^2 m r = -m g dy/dr - (W/2) "
+                    "ds/dr + (S/2) ds/dr: the weights' moments change sign", "textbook-ch3",
+                    "3.5(a)", name="ball below"),) if self.ball_below else ())

@@ -40,6 +40,7 @@ stability, effort, power and friction band.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -47,7 +48,19 @@ import numpy as np
 
 from ..keys import Key
 from ..units import G_STANDARD
-from .base import Drawing, Equation, Governor, Part, Setting, Terms, ball_radius, mirrored, zigzag
+from .base import (
+    Coordinate,
+    Drawing,
+    Equation,
+    Governor,
+    Part,
+    Setting,
+    Terms,
+    ball_radius,
+    mirrored,
+    solve_monotone,
+    zigzag,
+)
 
 K_MODES = ("exact", "unity")
 SPRING_KINDS = ("tension", "compression")
@@ -79,6 +92,36 @@ RANGE = (
         default=lambda v: 0.5 * (v["radius_inner"] + v["radius_outer"]),
         default_text="the mid radius, (radius_inner + radius_outer) / 2"),
 )
+#: the coordinates a ball governor's configuration may be given by besides the ball's radius
+#: (the textbook's problems give each), each a function of the joint radius p = r_B alone, so a
+#: Proell's extension does not move them: name -> (dimension, meaning, the figure it is)
+BY = {"angle": ("angle", "the upper arm's angle alpha to the spindle's axis", "Fig. 3.4"),
+      "height": ("length", "the height h = r_B / tan(alpha): the joint B's depth below the point "
+                           "where the upper arm (produced) meets the axis", "Fig. 3.3"),
+      "joint_radius": ("length", "the radius r_B of the joint B of the upper arm and the lower "
+                                 "link", "Fig. 3.4"),
+      "lift": ("length", "the sleeve's lift above its innermost position", "Fig. 3.4")}
+ENDS = ("inner", "outer", "normal")
+#: the range by another coordinate: ``angle_inner``, ``height_outer``, ``lift_outer`` ...
+#: (a lift is counted from the inner end, so it gives the outer and normal ones only)
+RANGE_BY = tuple(
+    Key(f"{name}_{end}", dim, f"{meaning}, at the {end} configuration: gives radius_{end}",
+        default=None, default_text=f"none (radius_{end} gives it)",
+        **({"high": math.pi / 2, "range_text": "(0 deg, 90 deg)"} if dim == "angle" else {}),
+        source=f"textbook {fig}")
+    for name, (dim, meaning, fig) in BY.items() for end in ENDS
+    if not (name == "lift" and end == "inner"))
+#: the radius range of the ball governors (Watt, Porter, Proell): each end by the ball's radius
+#: or one of :data:`BY`
+BALL_RANGE = tuple(Key(k.name, k.kind, k.meaning, default=None,
+                       default_text=(f"from {k.name.replace('radius', 'angle')}, "
+                                     f"{k.name.replace('radius', 'height')}, "
+                                     f"{k.name.replace('radius', 'joint_radius')}"
+                                     + (f" or {k.name.replace('radius', 'lift')}"
+                                        if k.name != "radius_inner" else "")
+                                     + ("; else the mid radius" if k.name == "radius_normal"
+                                        else "")),
+                       example=k.example) for k in RANGE) + RANGE_BY
 SLEEVE_FRICTION = Key("sleeve_friction", "force", "the friction force R at the sleeve: the "
                                                   "central load is W + R rising, W - R falling",
                       default=0.0, nonnegative=True,
@@ -186,6 +229,45 @@ class Linkage:
             out[f + "2"] = (f2 * r1 - f1 * r2) / r1**3
         return out
 
+    def joint_domain(self) -> tuple[float, float]:
+        """The joint radii ``r_B`` (m) the arm and the link can take: the arm inclined outward
+        and both short of horizontal."""
+        lo = max(self.pivot_offset, self.sleeve_offset - self.link)
+        hi = min(self.pivot_offset + self.arm, self.sleeve_offset + self.link)
+        return lo, hi
+
+    def by_joint(self, name: str, p):
+        """The coordinate ``name`` of :data:`BY` at joint radii ``p`` (m), SI: the arm's angle
+        ``alpha = asin((r_B - e_u)/a)``, the height ``r_B / tan(alpha)``, ``r_B`` itself, the
+        sleeve pin's height (a lift is its rise from a reference).
+
+        Example 1's Porter (arms of 30 cm on the axis) at r_B = 25 cm: by hand alpha =
+        asin(25/30) = 56.44 deg and h = sqrt(30^2 - 25^2) = 16.58 cm:
+
+        >>> lk = Linkage(arm=0.30, link=0.30, sleeve_offset=0.0376)
+        >>> round(float(np.degrees(lk.by_joint("angle", 0.25))), 2), round(float(
+        ...     lk.by_joint("height", 0.25)), 4)
+        (56.44, 0.1658)
+        """
+        p = np.asarray(p, dtype=float)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            sa = (p - self.pivot_offset) / self.arm
+            if name == "angle":
+                return np.arcsin(sa)
+            if name == "height":
+                return p * np.sqrt(1.0 - sa**2) / sa
+            if name == "joint_radius":
+                return p
+            return self._at_joint(p)["z"]
+
+    def joint_for(self, name: str, value: float, lift_from: float = np.nan) -> float:
+        """The joint radius ``r_B`` (m) where the coordinate ``name`` of :data:`BY` is
+        ``value`` (SI; a lift counted from the joint radius ``lift_from``): the root of
+        :meth:`by_joint` over :meth:`joint_domain`; NaN where the linkage cannot take it."""
+        lo, hi = self.joint_domain()
+        base = 0.0 if name != "lift" else float(self.by_joint("lift", lift_from))
+        return solve_monotone(lambda p: self.by_joint(name, p) - base, value, lo, hi)
+
     def reach_error(self, xs):
         """Why the ball radii ``xs`` (m) cannot be reached, or ``""``."""
         xs = np.asarray(xs, dtype=float)
@@ -244,9 +326,52 @@ class BallGovernor(Governor):
     # -- parsing shared by the ball governors -------------------------------------------------
 
     @staticmethod
-    def _read_range(reader):
-        """``radius_inner``, ``radius_outer``, ``radius_normal`` (default the mid radius)."""
-        inner, outer, normal = reader.read_all(RANGE).values()
+    def _read_range(reader, linkage, to_radius="linkage"):
+        """``radius_inner``, ``radius_outer``, ``radius_normal`` (default the mid radius), each
+        end by the ball's radius or by one of :data:`BY` (``angle_inner``, ``lift_outer`` ...:
+        :data:`RANGE_BY`), converted through the joint radius ``r_B``: ``to_radius`` gives the
+        ball's radius at a joint radius (``"linkage"``: the linkage's own; None where it is not
+        known yet, a Proell's before its extension's angle: then ``(radii, joints)``, the ends
+        given by their radius and by their joint radius, are returned instead)."""
+        radii = {end: reader.read(key, required=False)
+                 for key, end in zip(BALL_RANGE[:3], ENDS, strict=True)}
+        joints = {}
+        for key in RANGE_BY:
+            name, end = key.name.rsplit("_", 1)
+            value = reader.read(key)
+            if value is None:
+                continue
+            if radii[end] is not None or end in joints:
+                reader.fail(key.name, f"the {end} configuration is given twice: give one of "
+                                      f"radius_{end} and the {end} keys of another coordinate")
+            ref = joints.get("inner", np.nan)
+            if name == "lift" and radii["inner"] is not None:
+                if to_radius is None:
+                    reader.fail(key.name, "a lift needs the inner configuration by the arm's "
+                                          "angle, the height or the joint radius here")
+                ref = float(linkage.joint_radius(radii["inner"]))
+            p = linkage.joint_for(name, value, ref)
+            if not np.isfinite(p):
+                reader.fail(key.name, "the arm and the link cannot take this configuration"
+                            + (" (a lift counts from the inner configuration)"
+                               if name == "lift" else ""))
+            joints[end] = p
+        for key, end in zip(BALL_RANGE[:2], ENDS[:2], strict=True):
+            if radii[end] is None and end not in joints:
+                reader.read(key, required=True)  # the "missing" error
+        if to_radius is None and joints:
+            return radii, joints
+        if not callable(to_radius):
+            to_radius = lambda p: float(linkage._at_joint(p)["r"])  # noqa: E731
+        inner, outer, normal = (to_radius(joints[end]) if end in joints else radii[end]
+                                for end in ENDS)
+        return BallGovernor._ordered(reader, inner, outer, normal)
+
+    @staticmethod
+    def _ordered(reader, inner, outer, normal):
+        """The range's ends in order, the normal one by default the mid radius."""
+        if normal is None:
+            normal = 0.5 * (inner + outer)
         if not inner < outer:
             reader.fail("radius_outer", "expected radius_inner < radius_outer")
         if not inner <= normal <= outer:
@@ -302,6 +427,58 @@ class BallGovernor(Governor):
         alpha, beta = self.angles(x)
         return {"sleeve lift": (self.sleeve_lift(x), "m"), "height": (self.height(x), "m"),
                 "alpha": (alpha, "rad"), "beta": (beta, "rad"), "k": (self.k_ratio(x), "")}
+
+    coordinate_key: ClassVar[str] = "radius"
+
+    def coordinates(self) -> tuple[Coordinate, ...]:
+        """The ball's radius and the coordinates of :data:`BY`: the arm's angle to the axis,
+        the height, the joint's radius and the sleeve's lift from the innermost
+        configuration."""
+        lk = self.linkage
+        own = super().coordinates()
+        by = {"angle": lambda x: lk.by_joint("angle", lk.joint_radius(x)),
+              "height": self.height, "joint_radius": lk.joint_radius, "lift": self.sleeve_lift}
+        return own + tuple(Coordinate(name, dim, f"{meaning} (textbook {fig})", by[name])
+                           for name, (dim, meaning, fig) in BY.items())
+
+    def x_domain(self) -> tuple[float, float]:
+        """The ball radii the linkage reaches: those of the joint radii of
+        :meth:`Linkage.joint_domain`."""
+        lo, hi = self.linkage.joint_domain()
+        eps = 1e-9 * (hi - lo)
+        return tuple(float(self.linkage._at_joint(p)["r"]) for p in (lo + eps, hi - eps))
+
+    def link_forces(self, x, m, central, omega2, restoring) -> dict:
+        """The forces in each ball's arm and link (N), from the statics of the lower link with
+        its ball (section 3.4(b); the arm is a two-force member, so its pivot's reaction is its
+        tension): the sleeve's load per ball ``V = (Q - m g dy_G/dr) / (ds/dr)`` (its weight,
+        the spring's share and the friction, read back from the restoring force ``Q`` of the
+        seam), vertically ``T cos(alpha) = m g + V``, so the arm's tension
+        ``T = (m g + V) / cos(alpha)`` (the book's ``(w + W/2) / cos(alpha)`` of the Porter);
+        horizontally the sleeve pin's force ``H = T sin(alpha) - m omega^2 r`` on the link, the
+        pin's force ``sqrt(H^2 + V^2)`` (a straight link's tension ``V / cos(beta)``; signed
+        by ``V``: + where the sleeve hangs on the links).
+
+        Example 1's Porter at r = 20 cm (the sleeve 48 kgf, balls 6 kgf): by hand
+        ``alpha = asin(20/30)``, ``T = (6 + 24) kgf / cos(alpha) = 40.25 kgf``:
+
+        >>> import govopt
+        >>> from govopt.examples import example
+        >>> spec = govopt.load_spec(example("textbook-ex1-porter"))
+        >>> gov, KGF = spec.governor, 9.80665
+        >>> t = gov.terms(0.2, 6.0, spec.analysis, 48.0)
+        >>> f = gov.link_forces(0.2, 6.0, 48.0, t.omega_squared(), t.restoring())
+        >>> round(float(f["arm tension"]) / KGF, 2)
+        40.25
+        """
+        st = self.linkage.state(x)
+        g = G_STANDARD
+        V = (np.asarray(restoring, dtype=float) - g * m * st["y1"]) / st["z1"]
+        cos_a = 1.0 / np.sqrt(1.0 + st["ta"] ** 2)
+        T = (g * m + V) / cos_a
+        H = T * st["ta"] * cos_a - m * omega2 * np.asarray(x, dtype=float)
+        return {"arm tension": T, "pivot reaction": np.abs(T),
+                "sleeve pin force": np.sign(V) * np.hypot(H, V), "sleeve load": 2.0 * V}
 
     # -- the seam ----------------------------------------------------------------------------
 
@@ -443,9 +620,14 @@ class PorterGovernor(BallGovernor):
     """Porter governor (section 3.4(b)): a Watt with a central load on the sleeve; unequal arms
     and offsets allowed (``k`` varies), and an optional auxiliary spring (Example 2, Fig. 3.7)."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("textbook-ex1-porter", {"governor.radius_inner": "4 cm",
+                                                   "governor.radius_outer": "29.5 cm"},
+                               "governor.k", ("exact", "unity"))
+
     type_name: ClassVar[str] = "porter"
     title: ClassVar[str] = "Porter governor (textbook ch. 3, section 3.4(b), Figs. 3.1(b), 3.4-3.7)"
-    keys: ClassVar[tuple[Key, ...]] = (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, K, *RANGE,
+    keys: ClassVar[tuple[Key, ...]] = (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, K, *BALL_RANGE,
                                        SLEEVE_FRICTION, *SPRING_KEYS)
     example: ClassVar[str] = "porter-design"
     optional_spring: ClassVar[str | None] = "tension"
@@ -456,7 +638,7 @@ class PorterGovernor(BallGovernor):
         (default 0), ``k`` ("exact" | "unity"), the radius range, ``sleeve_friction`` and the
         auxiliary spring's keys (:meth:`BallGovernor._read_spring`)."""
         linkage = Linkage(**reader.read_all((ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, K)))
-        inner, outer, normal = cls._read_range(reader)
+        inner, outer, normal = cls._read_range(reader, linkage)
         friction = reader.read(SLEEVE_FRICTION)
         spring = cls._read_spring(reader)
         reader.finish()

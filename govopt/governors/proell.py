@@ -35,9 +35,10 @@ from ..keys import Key
 from .base import Equation
 from .porter import (
     ARM,
+    BALL_RANGE,
+    ENDS,
     LINK,
     PIVOT_OFFSET,
-    RANGE,
     SLEEVE_FRICTION,
     SLEEVE_OFFSET,
     BallGovernor,
@@ -59,11 +60,17 @@ EXTENSION_ANGLE = Key("extension_angle", "angle", "the extension's turn from the
 class ProellGovernor(BallGovernor):
     """Proell governor (section 3.4(c)): the ball on an extension of the lower link."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("textbook-ex3-proell", {"governor.link": "20 cm",
+                                                   "governor.radius_inner": "8 cm",
+                                                   "governor.radius_outer": "22 cm"},
+                               "governor.k", ("exact", "unity"))
+
     type_name: ClassVar[str] = "proell"
     title: ClassVar[str] = ("Proell governor (textbook ch. 3, section 3.4(c), Figs. 3.1(c), 3.8, "
                             "3.9)")
     keys: ClassVar[tuple[Key, ...]] = (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, EXTENSION,
-                                       EXTENSION_ANGLE, K, *RANGE, SLEEVE_FRICTION)
+                                       EXTENSION_ANGLE, K, *BALL_RANGE, SLEEVE_FRICTION)
     example: ClassVar[str] = "proell-design"
 
     @classmethod
@@ -74,14 +81,27 @@ class ProellGovernor(BallGovernor):
         ``sleeve_friction``."""
         arm, link, pivot, sleeve, extension, angle, k = reader.read_all(
             (ARM, LINK, PIVOT_OFFSET, SLEEVE_OFFSET, EXTENSION, EXTENSION_ANGLE, K)).values()
-        inner, outer, normal = cls._read_range(reader)
-        if angle is None:  # BG vertical at the normal configuration: r_B = r there
-            sin_beta = (normal - sleeve) / link
-            if not (abs(sin_beta) < 1 and 0 < (normal - pivot) / arm < 1):
+        base = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve, k=k)
+        if angle is not None:
+            linkage = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve,
+                              extension=extension, crank=angle, k=k)
+            inner, outer, normal = cls._read_range(reader, linkage)
+        else:  # BG vertical at the normal configuration: r_B = r there
+            got = cls._read_range(reader, base, to_radius=None)
+            radii, joints = got if isinstance(got[0], dict) else \
+                (dict(zip(ENDS, got, strict=True)), {})
+            p_normal = joints.get("normal", radii["normal"])
+            if p_normal is None:
+                reader.fail("radius_normal", "needed where the ends are given by another "
+                            "coordinate: the extension is set vertical there")
+            sin_beta = (p_normal - sleeve) / link
+            if not (abs(sin_beta) < 1 and 0 < (p_normal - pivot) / arm < 1):
                 reader.fail("radius_normal", "the arm and link cannot reach this radius")
-            angle = math.asin(sin_beta)
-        linkage = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve,
-                          extension=extension, crank=angle, k=k)
+            linkage = Linkage(arm=arm, link=link, pivot_offset=pivot, sleeve_offset=sleeve,
+                              extension=extension, crank=math.asin(sin_beta), k=k)
+            inner, outer, normal = (float(linkage._at_joint(joints[e])["r"]) if e in joints
+                                    else radii[e] for e in ENDS)
+            inner, outer, normal = cls._ordered(reader, inner, outer, normal)
         friction = reader.read(SLEEVE_FRICTION)
         reader.finish()
         cls._check_reach(reader, linkage, inner, outer)

@@ -43,6 +43,10 @@ class SpringGravityGovernor(BellCrankGovernor):
     """Spring-and-gravity governor (section 3.5(c), Fig. 3.12): fulcrum on the sleeve, ball below
     it, rollers under a fixed cap, compression spring plus the sleeve's dead load."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("textbook-ex8-spring_gravity", {}, "governor.obliquity",
+                               ("exact", "small_angle"))
+
     type_name: ClassVar[str] = "spring_gravity"
     title: ClassVar[str] = ("Spring and gravity controlled governor (textbook ch. 3, "
                             "section 3.5(c), Figs. 3.12-3.13)")

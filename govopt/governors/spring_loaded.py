@@ -74,6 +74,10 @@ class SpringLoadedGovernor(BellCrankGovernor):
     """Balls connected directly by tension springs (section 3.5(b), Fig. 3.11(a)), optionally with
     a supplementary spring on the sleeve through a lever (Fig. 3.11(b))."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("textbook-ex6-spring_loaded", {}, "governor.obliquity",
+                               ("exact", "small_angle"))
+
     type_name: ClassVar[str] = "spring_loaded"
     title: ClassVar[str] = ("Spring-loaded governor, balls connected by springs (textbook ch. 3, "
                             "section 3.5(b), Fig. 3.11)")

@@ -36,7 +36,17 @@ from typing import ClassVar
 import numpy as np
 
 from ..keys import Key
-from .base import Drawing, Equation, Governor, Part, Terms, ball_radius, mirrored, zigzag
+from .base import (
+    Adjustment,
+    Drawing,
+    Equation,
+    Governor,
+    Part,
+    Terms,
+    ball_radius,
+    mirrored,
+    zigzag,
+)
 
 #: what both traction governors read (:class:`FlyWeights`)
 N_WEIGHTS = Key("n_weights", "count", "the number of fly weights", source="article 003",
@@ -228,6 +238,14 @@ class FlyWeights(Governor):
         in the article."""
         return m * (1.0 + 0.25 * self.geometry(x)["s1"] ** 2)
 
+    def adjustments(self) -> tuple[Adjustment, ...]:
+        """The spring's free length, set on the governor so that it begins to open the throttle
+        at the design's lowest speed: the article designs from the minimum speeds "to allow
+        for speed adjustment by the controller on the governor"."""
+        return (Adjustment("the spring's setting (its free length, by the controller's "
+                           "adjustment)", "free_half_length", "inner", "traction-article",
+                           "design step 1 (speed adjustment on the governor)"),)
+
     def travel_slope(self, x):
         """``ds/dr``: the throttle rod's travel per unit fly-weight radius."""
         return self.geometry(x)["s1"]
@@ -260,6 +278,9 @@ class FlyWeights(Governor):
 @dataclass(frozen=True)
 class TractionCoilGovernor(FlyWeights):
     """Coil-spring traction-engine governor (article 003, Fig. 1), SI; per fly weight."""
+
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("traction-coil-replacement-si", {}, "", ("exact",))
 
     type_name: ClassVar[str] = "traction_coil"
     title: ClassVar[str] = "Coil-spring traction-engine governor (article 003, Fig. 1)"

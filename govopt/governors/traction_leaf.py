@@ -252,6 +252,10 @@ def _bow(l: float, L: float, model: str) -> float:
 class TractionLeafGovernor(FlyWeights):
     """Flat-spring traction-engine governor (article 003, Fig. 2), SI; per fly weight."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("traction-leaf-weights", {}, "governor.leaf_model",
+                               ("elastica", "arc", "straight"))
+
     type_name: ClassVar[str] = "traction_leaf"
     title: ClassVar[str] = "Flat-spring traction-engine governor (article 003, Fig. 2)"
     coordinate: ClassVar[str] = "length"
@@ -260,6 +264,9 @@ class TractionLeafGovernor(FlyWeights):
     spring: ClassVar[str | None] = "leaf"
     mass_key: ClassVar[str] = "fly"
     mass_name: ClassVar[str] = "fly weight"
+    #: the valve's positions one way: chords, bows or travels (open and closed; normal optional)
+    key_alternatives: ClassVar[tuple] = (tuple(
+        (f"{way}_open", f"{way}_closed", f"{way}_normal?") for way in ("chord", "bow", "travel")),)
     free_length_key: ClassVar[str] = "leaf_set"
     free_length_positive: ClassVar[bool] = False  # the set may bow either way
     free_length_meaning: ClassVar[str] = ("the leaf's set l0: its unloaded bow at the middle, "
@@ -372,6 +379,32 @@ class TractionLeafGovernor(FlyWeights):
             Check("leaf set >= min", sd.l0, self.set_min, ">=", "m", source,
                   scale=None if self.set_min else self.leaf_length, group="spring"),
             Check("leaf set <= max", sd.l0, self.set_max, "<=", "m", source, group="spring")]
+
+    def spring_checks_over(self, spec, sd, F, x) -> list:
+        """:meth:`spring_checks` of N designs at once (arrays of N: the leaf's rows are
+        elementwise, each design's largest over its configurations)."""
+        mat, req = spec.material, spec.requirements
+        allowable = mat.allowable_bending_stress if mat is not None else None
+        N = np.shape(F)[0]
+
+        def col(v):
+            return np.broadcast_to(np.asarray(v, dtype=float), (N, 1))
+
+        kw = dict(F=np.max(np.abs(F), axis=1, keepdims=True), x=self.x_outer - self.hinge_radius,
+                  w=col(sd.width), t=col(sd.thickness), L=self.leaf_length,
+                  span=self.span(x), ends=self.leaf_ends,
+                  allowable=allowable if allowable is not None else np.inf,
+                  max_bow_ratio=getattr(req, "max_bow_ratio", 0.2) or 0.2)
+        l0 = col(sd.l0)[:, 0]
+        source = "a buildable leaf: its set (unloaded bow, outward +) within [governor] bounds"
+        rows = [Check(c.name, np.broadcast_to(c.value(**kw), (N, np.size(kw["span"]))).max(axis=1),
+                      np.full(N, float(c.limit(**kw))), c.sense, c.unit, c.source, group="spring")
+                for c in leaf.CONSTRAINTS if np.isfinite(c.limit(**kw))]
+        return rows + [
+            Check("leaf set >= min", l0, np.full(N, self.set_min), ">=", "m", source,
+                  scale=None if self.set_min else np.full(N, self.leaf_length), group="spring"),
+            Check("leaf set <= max", l0, np.full(N, self.set_max), "<=", "m", source,
+                  group="spring")]
 
     def free_length_limits(self) -> dict:
         """The set's bounds as the design search's statics rows (the names of the checks of

@@ -31,9 +31,12 @@ from __future__ import annotations
 import math
 from typing import ClassVar
 
+import numpy as np
+
 from ..keys import Key
+from ..units import G_STANDARD
 from .base import Equation
-from .porter import ARM, RANGE, SLEEVE_FRICTION, SLEEVE_OFFSET, BallGovernor, Linkage
+from .porter import ARM, BALL_RANGE, SLEEVE_FRICTION, SLEEVE_OFFSET, BallGovernor, Linkage
 
 SUSPENSIONS = ("axis", "collar", "crossed")
 
@@ -99,8 +102,26 @@ class WattGovernor(BallGovernor):
     type_name: ClassVar[str] = "watt"
     title: ClassVar[str] = "Watt governor (textbook ch. 3, section 3.4(a), Figs. 3.1(a), 3.3)"
     keys: ClassVar[tuple[Key, ...]] = (ARM, SUSPENSION, PIVOT_OFFSET, LINK, SLEEVE_OFFSET,
-                                       *RANGE, SLEEVE_FRICTION)
+                                       *BALL_RANGE, SLEEVE_FRICTION)
     example: ClassVar[str] = "watt-design"
+    #: arms from near the axis to near 90 deg (govopt bench), against the book's h = g/omega^2
+    bench_case: ClassVar[tuple] = ({"name": "watt-hard", "governor": {
+        "type": "watt", "arm": "30 cm", "radius_inner": "0.5 cm", "radius_outer": "29.7 cm"},
+        "design": {"ball_weight": "5 kgf"}}, {}, "", ("exact",), "governor.arm")
+
+    def bench_reference(self, spec, x):
+        """The book's ``omega^2 = g / h`` (section 3.4(a) eq. i; the sleeve neglected, no
+        central load), ``h = sqrt(a^2 - r^2)`` for arms pivoted on the axis, in mpmath (50
+        digits); None for another suspension or a central load."""
+        import mpmath as mp
+
+        lk = self.linkage
+        if lk.pivot_offset != 0.0 or (spec.design.central_mass or 0.0) != 0.0:
+            return None
+        with mp.workdps(50):
+            a = mp.mpf(lk.arm)
+            return np.array([float(mp.sqrt(G_STANDARD / mp.sqrt(a**2 - mp.mpf(float(r))**2)))
+                             for r in np.atleast_1d(x)])
 
     @classmethod
     def parse(cls, reader) -> WattGovernor:
@@ -120,7 +141,7 @@ class WattGovernor(BallGovernor):
         linkage = Linkage(arm=v["arm"], link=v["link"],
                           pivot_offset=-offset if suspension == "crossed" else offset,
                           sleeve_offset=v["sleeve_offset"])
-        inner, outer, normal = cls._read_range(reader)
+        inner, outer, normal = cls._read_range(reader, linkage)
         friction = reader.read(SLEEVE_FRICTION)
         reader.finish()
         cls._check_reach(reader, linkage, inner, outer)

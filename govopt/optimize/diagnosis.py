@@ -176,8 +176,11 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
     own = masses(req)
     memo: dict = {}
 
+    def grid_of(s):  # another governor (its friction or its range): its own grid
+        return grid if s.governor is spec.governor else Grid.build(s)
+
     def meets_in(s, r):
-        g = grid if s.governor is spec.governor else Grid.build(s)  # another range: its own
+        g = grid_of(s)
         return lambda m, c: np.logical_and.reduce(
             list(dead_weight_statics(s, r, g, m, c)[0].values()))
 
@@ -190,7 +193,7 @@ def dead_weight_diagnosis(spec: Spec, req: Requirements, parts: dict, rise, fall
         m, c = masses(r)
         own_gov = s.governor is spec.governor  # else another friction or range: its arrays
         keep = np.array_equal(m, own[0]) and np.array_equal(c, own[1]) and own_gov
-        g = grid if own_gov else Grid.build(s)
+        g = grid_of(s)
         for lo in range(0, m.size, _DIAGNOSIS_BLOCK):
             mb, cb = m[lo:lo + _DIAGNOSIS_BLOCK], c[lo:lo + _DIAGNOSIS_BLOCK]
             t = statics.terms(s, g.alpha, mb[:, None], cb[:, None])
@@ -570,7 +573,7 @@ def evaluation_moves(spec: Spec) -> list[str]:
                 found.append((key, f"{now * rpm:.5g} rpm", f"{now * x ** sign * rpm:.5g} rpm"))
     elif sp is not None:
         x = _bisect(lambda x: passes({"speed.irregularity": float(sp.irregularity * x)}),
-                    hi=min(100.0, 1.99 / sp.irregularity), iters=10)  # the key's range: < 2
+                    hi=min(100.0, limits.MAX_IRREGULARITY / sp.irregularity), iters=10)
         if x is not None:
             found.append(("speed.irregularity", f"{sp.irregularity:g}",
                           float(f"{sp.irregularity * x:.4g}")))

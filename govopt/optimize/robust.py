@@ -64,7 +64,6 @@ from .. import limits
 from .. import made as mk
 from ..analysis import tolerance as tm
 from ..analysis.tolerance import Box
-from ..bulk import margin_column, passed_column, value_column
 from ..errors import InfeasibleError
 from ..made import (  # noqa: F401 (BOUND_NAMES: the search bounds, for its readers)
     ADJUSTMENT_GROUPS,
@@ -513,8 +512,9 @@ def yield_diagnosis(spec: Spec, req: Requirements, stats: dict, failing: dict) -
     head = (f"{spec.path}: infeasible: requirements.min_yield: no candidate's yield reaches "
             f"{100 * req.min_yield:g} % at 95 % confidence ({checked} candidates feasible at "
             "nominal values, sampled best first"
-            + (f", stopped at govopt's limit of work (~{limits.MAX_ROBUST_SEARCH_SECONDS:g} s)"
-               if stopped else "") + ")")
+            + (f", stopped after {stats.get('evaluations', 0)} evaluations: the work govopt "
+               f"allows a search, {limits.MAX_ROBUST_SEARCH_SECONDS:g} s of evaluations at "
+               "their estimated cost" if stopped else "") + ")")
     best = stats.get("_best")
     if best is None:
         return head + ": none is within the EN 15800 / EN 10270 tables; widen the bounds"
@@ -522,14 +522,18 @@ def yield_diagnosis(spec: Spec, req: Requirements, stats: dict, failing: dict) -
     gov, rpm = spec.governor, 30.0 / math.pi
     spring = ", ".join(f"{k.replace('_', ' ')} {v * 1e3:.4g} mm" if k != "active_turns"
                        else f"{v:g} active turns" for k, v in cand.spring.items())
-    worst = sorted(failing.items(), key=lambda kv: -kv[1])[:2]
+    worst = list(y["failing"].items())[:2]  # the best candidate's own, of its own samples
     text = (f"{head}: the best, {gov.mass_name} mass {cand.m:.4g} kg"
             + (f" with {spring}" if spring else "")
-            + f", holds in {100 * y['probability']:.3g} % of its {y['samples']} samples; most "
-            "often failing: " + ", ".join(f"'{k}' ({v} times)" for (k, _), v in worst))
+            + f", holds in {y['holds']} of its {y['samples']} samples "
+            f"({100 * y['probability']:.3g} %); most often failing there: "
+            + ", ".join(f"'{k}' (in {v} samples)" for k, v in worst))
     each = tm.speed_band_each(spec, cols, bx)
-    if each and spec.speed is not None and spec.speed.band:
-        name, (lo, hi) = max(each.items(), key=lambda kv: kv[1][1] - kv[1][0])
+    sp = spec.speed
+    outside = {k: v for k, v in each.items()  # a tolerance whose band leaves the required one
+               if sp is not None and sp.band and (v[0] < sp.omega_inner or v[1] > sp.omega_outer)}
+    if outside:
+        name, (lo, hi) = max(outside.items(), key=lambda kv: kv[1][1] - kv[1][0])
         half = bx.fields[name][0]
         shown = f"+-{half * 1e3:.3g} mm" if name in ("wire_diameter", "coil_radius",
                                                       "free_half_length") else f"+-{half:.3g}"
@@ -537,8 +541,8 @@ def yield_diagnosis(spec: Spec, req: Requirements, stats: dict, failing: dict) -
                  f"tolerance alone ({shown}, {tm.SOURCES[name]}) spreads its speed band over "
                  f"{lo * rpm:.4g}-{hi * rpm:.4g} rpm against the required "
                  f"{spec.speed.omega_inner * rpm:.4g}-{spec.speed.omega_outer * rpm:.4g} rpm")
-    return text + ("; add requirements.adjusting_nut (the fitter sets the spring on assembly), "
-                   if gov.spring is not None and req.adjusting_nut <= 0 else "; ") + (
+    return text + ('; let the fitter set the spring (requirements.fitter = "sets"), '
+                   if gov.spring is not None and not mk.fitter_sets(spec) else "; ") + (
         "make to a finer grade, lower min_yield, or widen the speed band or the bounds")
 
 
@@ -649,7 +653,7 @@ def robust_record(spec: Spec, req: Requirements, cand, checks=(), wc=None) -> di
     ``wc`` if already found) beside the nominal value (SI; unit, limit and sense from the
     evaluated ``checks``), where it lies and how it was found, and the fitter's settings: the
     range the box needs and the setting for nominal parts."""
-    from ..bulk import design_arrays
+    from ..bulk import design_arrays, margin_column, passed_column, value_column
 
     d = design_of(spec, cand)
     cols = {k: v[:1] for k, v in design_arrays(spec.with_design(d), [d]).items()}

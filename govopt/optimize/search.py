@@ -19,7 +19,9 @@ def design(spec):
     :class:`~govopt.errors.DesignError` naming the failed checks when the chosen design fails
     its final re-evaluation (never returns a design that fails a check).
     """
-    spec = dz.validated(spec)
+    from ..made import as_made
+
+    spec = as_made(dz.validated(spec))  # a spring governor: designed as made and set
     req = spec.requirements
     if req.robust:
         from .robust import robust_design  # the bulk evaluator and pandas: only when asked

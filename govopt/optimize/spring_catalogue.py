@@ -35,6 +35,7 @@ from ..springs import compression as hc
 from ..springs import helical as hx
 from ..springs import tolerances as tl
 from ..springs.assessment import Spring, table, table_keywords
+from ..verdict import holds
 from .spring_sizing import Sizing, drawn, dual_bound, objective_value, size_spring
 
 __all__ = ["catalogue_sizing", "size_orderable_spring"]
@@ -70,13 +71,13 @@ def _candidates(s: Sizing, w: float, step: float, limits: dict, ends: str, L2):
                  L2=L2), n
 
 
-def _feasible(s: Sizing, sp: Spring, n: np.ndarray, limits: dict) -> np.ndarray:
+def _feasible(s: Sizing, sp: Spring, n: np.ndarray, limits: dict,
+              spared: frozenset = frozenset()) -> np.ndarray:
     """Where the springs ``sp`` (arrays) meet every row of the spring's table that the
-    material can give (:func:`govopt.springs.assessment.table`'s) and the problem's limits;
-    a row the continuous design ``s`` fails too is not required (it is reported, as the
-    continuous design's would be: an extension spring's initial tension without a least
-    force, say)."""
-    failed = {c.name for c in s.checks if not c.passed}
+    material can give (:func:`govopt.springs.assessment.table`'s) and the problem's limits,
+    each with the checks' own tolerance (:func:`govopt.verdict.holds`: a row holds at
+    equality); the rows named in ``spared`` are not required (:func:`catalogue_sizing`: only
+    when no spring passes them)."""
     d, D = sp.d, sp.D
     ok = np.ones(np.shape(n), dtype=bool)
     kw = table_keywords(sp, s.mat, s.loads, s.rules)
@@ -88,23 +89,36 @@ def _feasible(s: Sizing, sp: Spring, n: np.ndarray, limits: dict) -> np.ndarray:
                  if "fatigue" in name]
     senses = {r.name: r.sense for r in ck.TABLES[s.kind] + ck.COMMON}
     for name, v, lim in rows:
-        if np.all(np.isnan(lim)) or name in failed:  # a grade's row, no grade: not checked
+        if np.all(np.isnan(lim)) or name in spared:  # a grade's row, no grade: not checked
             continue
-        with np.errstate(invalid="ignore"):
-            ok &= (v <= lim) if senses[name] == "<=" else (v >= lim)
+        ok &= holds(v, lim, senses[name])
     G = s.mat.shear_modulus(d)
     f_e = hx.surge_frequency(d, D, n, G, s.mat.density)
-    for key, value, sense in (("D_out_max", D + d, "<="), ("L_body_max", (n + 1.0) * d, "<="),
-                              ("f_surge_min", f_e, ">="), ("Di_min", D - d, ">="),
-                              ("L0_max", sp.L0, "<=")):
-        limit = limits.get(key)
-        if limit is not None:
-            ok &= (value <= limit * (1 + 1e-12)) if sense == "<=" else \
-                (value >= limit * (1 - 1e-12))
-    if limits.get("Lc_max") is not None and s.kind == "compression":
-        Lc = hc.solid_length(tl.max_wire_diameter(d, s.mat.grade), sp.total_coils, sp.form)
-        ok &= Lc <= limits["Lc_max"] * (1 + 1e-12)
+    space = [("D_out_max", D + d, "<="), ("L_body_max", (n + 1.0) * d, "<="),
+             ("f_surge_min", f_e, ">="), ("Di_min", D - d, ">="), ("L0_max", sp.L0, "<=")]
+    if s.kind == "compression":
+        space.append(("Lc_max", hc.solid_length(tl.max_wire_diameter(d, s.mat.grade),
+                                                 sp.total_coils, sp.form), "<="))
+    for key, value, sense in space:
+        if limits.get(key) is not None:
+            ok &= holds(value, limits[key], sense)
     return ok
+
+
+def _pieces(s: Sizing, wires: list[float]) -> list[tuple[list[float], object, dict]]:
+    """The table's wires split by the relaxations' pieces (``Sizing.relaxation``: one per
+    range of wires with constant moduli), each piece's wires ordered outwards from its
+    relaxation's own optimum (the least of its per-wire bounds, convex in log d)."""
+    out = []
+    for lo, hi, gp, values in s.relaxation:
+        mine = [w for w in wires if lo * (1 - 1e-9) <= w <= hi * (1 + 1e-9)]
+        if not mine:
+            continue
+        sol = gp.solve(**{**values, "d_min": max(lo, mine[0]), "d_max": min(hi, mine[-1])})
+        centre = float(sol.d) if sol.ok else mine[0]
+        split = int(np.searchsorted(mine, centre))
+        out += [(side, gp, values) for side in (mine[split:], mine[:split][::-1])]
+    return out
 
 
 def catalogue_sizing(s: Sizing, wires: Sequence[float], step: float, limits: dict, *,
@@ -113,48 +127,55 @@ def catalogue_sizing(s: Sizing, wires: Sequence[float], step: float, limits: dic
     docstring), from the continuous sizing ``s``; ``limits``: the stiffness (``kappa_min``,
     ``kappa_max``, equal for one stiffness) and the GP's bounds and space (``n_min``,
     ``D_out_max``, ``Di_min``, ``L0_max`` ...); ``source``: where the sizes come from (the
-    record's notes)."""
+    record's notes). Every row is required; only where no spring of the table passes a row
+    the continuous design fails too (an extension spring's initial tension without a least
+    force, say) is the best spring that passes the others returned, failing it (its checks
+    say so, exit code 1)."""
     lo, hi = limits.get("d_min") or 0.0, limits.get("d_max") or math.inf
     lo, hi = max(lo, s.mat.d_min), min(hi, s.mat.d_max)
     table_wires = sorted({float(w) for w in wires if lo * (1 - 1e-9) <= w <= hi * (1 + 1e-9)})
-    gp, values = s.relaxation
     stats = {"wires in range": len(table_wires), "wires enumerated": 0,
              "wires pruned by their bound": 0, "springs examined": 0}
-    best: tuple[float, Spring, int] | None = None
+    pieces = _pieces(s, table_wires)
 
-    def bound_of(w: float) -> float:
-        sol = gp.solve(**{**values, "d_min": w, "d_max": w})
-        if sol.status == "infeasible":
-            return math.inf
-        return dual_bound(sol) if sol.ok else -math.inf
+    def search(spared: frozenset):
+        best: tuple[float, Spring, int] | None = None
+        bounds: dict[float, float] = {}
 
-    def enumerate_wire(w: float) -> None:
-        nonlocal best
-        sp, n = _candidates(s, w, step, limits, ends, L2)
-        stats["wires enumerated"] += 1
-        stats["springs examined"] += int(np.size(n))
-        if not np.size(n):
-            return
-        ok = _feasible(s, sp, n, limits)
-        if not ok.any():
-            return
-        value = np.asarray(objective_value(s.objective, sp, s.mat, s.loads.F2), dtype=float)
-        value = np.where(ok, value, np.inf)
-        i = int(np.argmin(value))
-        if best is None or value[i] < best[0]:
-            best = (float(value[i]), sp, i)
+        def bound_of(w: float, gp, values) -> float:
+            if w not in bounds:
+                sol = gp.solve(**{**values, "d_min": w, "d_max": w})
+                bounds[w] = (math.inf if sol.status == "infeasible" else
+                             dual_bound(sol) if sol.ok else -math.inf)
+            return bounds[w]
 
-    centre = s.spring.d
-    split = int(np.searchsorted(table_wires, centre))
-    for side in (table_wires[split:], table_wires[:split][::-1]):  # outwards from d*
-        for w in side:
-            b = bound_of(w)
-            if best is not None and b > best[0] * (1.0 + 1e-9):
-                stats["wires pruned by their bound"] += len(side) - side.index(w)
-                break  # convex in log d: every wire beyond is bounded higher still
-            if math.isinf(b) and b > 0:
-                continue  # no spring at all with this wire
-            enumerate_wire(w)
+        for side, gp, values in pieces:  # outwards from each piece's relaxation optimum
+            for w in side:
+                b = bound_of(w, gp, values)
+                if best is not None and b > best[0] * (1.0 + 1e-9):
+                    stats["wires pruned by their bound"] += len(side) - side.index(w)
+                    break  # convex in log d: every wire beyond is bounded higher still
+                if math.isinf(b) and b > 0:
+                    continue  # no spring at all with this wire
+                sp, n = _candidates(s, w, step, limits, ends, L2)
+                stats["wires enumerated"] += 1
+                stats["springs examined"] += int(np.size(n))
+                if not np.size(n):
+                    continue
+                ok = _feasible(s, sp, n, limits, spared)
+                if not ok.any():
+                    continue
+                value = np.asarray(objective_value(s.objective, sp, s.mat, s.loads.F2),
+                                   dtype=float)
+                i = int(np.argmin(np.where(ok, value, np.inf)))
+                if best is None or value[i] < best[0]:
+                    best = (float(value[i]), sp, i)
+        return best
+
+    best = search(frozenset())
+    unmet = frozenset(c.name for c in s.checks if not c.passed)
+    if best is None and unmet:  # nothing passes every row: the best failing only those
+        best = search(unmet)
     if best is None:
         why = (f"no spring with a wire of the table ({len(table_wires)} sizes between "
                f"{lo * 1e3:.4g} and {hi * 1e3:.4g} mm; {source.split(':')[0]}) and coils on "
@@ -176,10 +197,12 @@ def catalogue_sizing(s: Sizing, wires: Sequence[float], step: float, limits: dic
                  search=stats)
     out.lower_bound = out.value  # exact by enumeration: the optimum is its own bound
     out.notes.append(f"wire sizes: {source}")
-    unmet = [c.name for c in s.checks if not c.passed]
-    if unmet:
-        out.notes.append("the continuous design fails " + ", ".join(unmet) + " too: the wire "
-                         "table's springs were not required to pass it")
+    failing = [c.name for c in checks if not c.passed]
+    if failing:  # no optimum: the bound is the continuous relaxation's, of a passing spring
+        out.lower_bound = s.lower_bound
+        out.notes.append("no spring of the wire table and the coils on the step passes "
+                         + ", ".join(failing) + " (nor does the continuous design): this is "
+                         "the lightest that passes the other checks")
     if math.isfinite(s.lower_bound):  # the price of ordering: against the certified bound
         price = (out.value / s.lower_bound - 1 if s.objective != "mass per energy"
                  else s.lower_bound / out.value - 1)

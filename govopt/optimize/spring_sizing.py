@@ -94,9 +94,10 @@ class Sizing:
     method: str = "geometric programme (cvxpy; exact: convex in the logarithms of d, D, n)"
     #: counts of a catalogue's enumeration (empty for the continuous GP)
     search: dict = field(default_factory=dict)
-    #: the GP and its values that relax every row over every wire of the grade (or the plain
-    #: GP's): a catalogue's per-wire bounds (:mod:`govopt.optimize.spring_catalogue`)
-    relaxation: tuple | None = None
+    #: per range of wires ``(lo, hi)`` (m; one, or one per range of constant moduli), the GP
+    #: and its values that relax every row over every wire of the range (or the plain GP's):
+    #: a catalogue's per-wire bounds (:mod:`govopt.optimize.spring_catalogue`)
+    relaxation: list | None = None
 
     @property
     def value(self) -> float:
@@ -134,8 +135,11 @@ class Sizing:
                 if abs(v) > 1e-6}  # below: a limit that does not bind (the duals' rounding)
         # a discrete optimum's binding limits are its checks' (the relaxation's are the GP's)
         active = [c.name for c in self.checks if c.active] if self.search else sol.active
+        status = sol.status if sol.ok else (sol.status or "infeasible")
+        if sol.ok and not self.passed:  # a spring that fails a check is no optimum
+            status = "checks failed"
         return Record(
-            status=sol.status if sol.ok else (sol.status or "infeasible"),
+            status=status,
             objective=Objective(name, unit, sense), value=value, bound=bound,
             active=list(active), sensitivities=sens,
             sensitivities_of=("the continuous relaxation (any wire, any coils)" if self.search
@@ -231,17 +235,75 @@ def size_spring(F_max: float, stiffness: float, *, grade: str | None = None,
     spring's loops (:data:`~govopt.springs.extension.HOOKS`, default full loops). Any wire and
     coils: :func:`govopt.optimize.spring_catalogue.size_orderable_spring` takes them from a
     table of wires and a step of coils."""
-    return _size(F_max, stiffness, grade=grade, kind=kind, k_s=k_s, G=G, density=density,
-                 tensile_strength=tensile_strength, rules=rules, correction=correction,
-                 F_min=F_min, fatigue=fatigue, min_fatigue_safety=min_fatigue_safety,
-                 peened=peened, cycles=cycles, ends=ends, seating=seating, objective=objective,
-                 stiffness_max=stiffness_max, L2=L2, **bounds)
+    kw = dict(grade=grade, kind=kind, k_s=k_s, density=density,
+              tensile_strength=tensile_strength, rules=rules, correction=correction,
+              F_min=F_min, fatigue=fatigue, min_fatigue_safety=min_fatigue_safety,
+              peened=peened, cycles=cycles, ends=ends, seating=seating, objective=objective,
+              stiffness_max=stiffness_max, L2=L2)
+    pieces = _moduli_pieces(grade, G, tensile_strength, density, bounds)
+    if pieces is None:
+        return _size(F_max, stiffness, G=G, **kw, **bounds)
+    return _by_pieces(pieces, F_max, stiffness, G, kw, bounds)
+
+
+def _moduli_pieces(grade, G, tensile_strength, density, bounds):
+    """The grade's ranges of wire diameters (m) with constant moduli, each ``(lo, hi, G, E)``,
+    where its shear modulus (not given) or its elastic modulus steps with the diameter (ASTM
+    A228, Shigley Table 10-5); None where both are constant (one GP serves every wire)."""
+    if grade is None:
+        return None
+    mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
+    stepped = [m for m in (mat.G, mat.E) if not isinstance(m, float)]
+    if not stepped:
+        return None
+    lo = max(mat.d_min, bounds.get("d_min") or 0.0)
+    hi = min(mat.d_max, bounds.get("d_max") or math.inf)
+    cuts = sorted({u for m in stepped for u, _ in m if lo < u < hi})
+    out, start = [], lo
+    for end in [*cuts, hi]:
+        if end >= start:
+            mid = math.sqrt(start * end)  # in the row: the moduli of every wire of the piece
+            out.append((start, end, float(mat.shear_modulus(mid)),
+                        float(mat.elastic_modulus(mid))))
+        start = end * (1.0 + 2e-9)  # the next row (a row holds its upper end)
+    return out
+
+
+def _by_pieces(pieces, F_max, stiffness, G, kw, bounds) -> Sizing:
+    """:func:`size_spring` where the moduli step with the wire (:func:`_moduli_pieces`): each
+    range of constant moduli sized on its own (its own GP, exact there), the best spring that
+    passes its checks taken; the certified bound is the least of the pieces' bounds, and the
+    relaxations of every piece bound a wire table's springs
+    (:mod:`govopt.optimize.spring_catalogue`)."""
+    mat = mt.material(kw["grade"], tensile_strength=kw["tensile_strength"], G=G,
+                      density=kw["density"])
+    done = []
+    for lo, hi, G_i, E_i in pieces:
+        piece = _size(F_max, stiffness, G=G_i, E=E_i, **kw,
+                      **{**bounds, "d_min": lo, "d_max": hi})
+        if piece.solution.ok and piece.spring is not None:  # the grade's own moduli
+            piece.mat = mat
+            piece.checks, _ = table(piece.spring, mat, piece.loads, piece.rules)
+        done.append(piece)
+    ok = [p for p in done if p.solution.ok and p.spring is not None]
+    if not ok:
+        return done[0]
+    best = min(ok, key=lambda p: (not p.passed, p.value))
+    bounds_ = [p.lower_bound if p.solution.ok else
+               math.inf if p.solution.status == "infeasible" else math.nan for p in done]
+    best.lower_bound = min(bounds_) if not any(math.isnan(b) for b in bounds_) else math.nan
+    best.relaxation = [r for p in done if p.relaxation for r in p.relaxation]
+    best.notes.append(f"the moduli step with the wire diameter ({mat.moduli_source}): each of "
+                      f"the {len(pieces)} ranges of constant moduli sized on its own, the best "
+                      "taken; the certified bound is the least of theirs")
+    return best
 
 
 def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensile_strength,
           rules, correction, F_min, fatigue, min_fatigue_safety, peened, cycles, ends, seating,
-          objective, stiffness_max, L2, **bounds) -> Sizing:
-    """:func:`size_spring` on a continuum of wires and coils."""
+          objective, stiffness_max, L2, E=None, **bounds) -> Sizing:
+    """:func:`size_spring` on a continuum of wires and coils (``E``: the elastic modulus over
+    the grade's, a piece of :func:`_by_pieces`)."""
     if kind not in KINDS:
         raise ValueError(f"spring kind must be one of {KINDS}, got {kind!r}")
     ends = ends or ("closed_ground" if kind == "compression" else "full_loop")
@@ -273,10 +335,7 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
         correction = correction or "wahl"
         bounds = {"C_min": DEFAULT_BOUNDS["C_min"], "C_max": DEFAULT_BOUNDS["C_max"], **bounds}
     else:
-        mat = mt.material(grade, tensile_strength=tensile_strength, G=G, density=density)
-        if not isinstance(mat.G, float):
-            raise ValueError(f"grade {grade!r}: the shear modulus varies with the wire "
-                             f"diameter ({mat.moduli_source}): give it")
+        mat = mt.material(grade, tensile_strength=tensile_strength, G=G, E=E, density=density)
         correction = correction or hx.DEFAULT_CORRECTION[(rules, "static")]
         bounds = {"C_min": 4.0, "C_max": 20.0, **bounds}
     index = (bounds["C_min"], bounds["C_max"])
@@ -286,6 +345,8 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
     G, density = mat.G, mat.density
     lo, hi = max(mat.d_min, bounds.get("d_min") or 0.0), min(mat.d_max, bounds.get("d_max")
                                                           or math.inf)
+    # a grade with no least wire (custom: from 0): the window's logarithms need one above 0
+    lo = lo if lo > 0.0 else min(hi, 1.0) * 1e-9
     state = {"window": (lo, hi)}
 
     Q = end_coils(kind, mat, ends)
@@ -372,7 +433,8 @@ def _size(F_max: float, stiffness: float, *, grade, kind, k_s, G, density, tensi
             keep = {key: x for key, x in values.items()
                     if key not in FREE_LENGTH_KEYS or key in ("k_solid", "s_over_D_max",
                                                               "d_tol")}
-            sizing.relaxation = (gp, {**keep, **relaxed, **relaxation(values, k, m, m_c)})
+            sizing.relaxation = [(lo, hi, gp, {**keep, **relaxed,
+                                               **relaxation(values, k, m, m_c)})]
         return sizing
 
     if L2 is not None:  # there the design's GP restricts; its relaxation bounds: first
@@ -457,17 +519,30 @@ def _buckling_search(attempt, sizing, stable):
     length below the slenderness that cannot buckle (``L0 <= stable D``) is; a free length of
     ``s`` times that may still pass (the deflection stays below ``s_K``). Bisection on ``s``
     from 1 (safe when feasible) to the unconstrained design's slenderness finds the least-mass
-    design that passes, to 0.1 %; the GP without it stays the certified lower bound."""
+    design that passes, to 0.1 %; the GP without it stays the certified lower bound. Where no
+    spring within the other limits is short enough not to buckle at all (``s = 1``
+    infeasible), the least ``s`` the limits allow is found first (bisection on the GP's
+    feasibility, to 0.1 %): a spring that may buckle but whose deflection stays below ``s_K``
+    is searched from there."""
     if not _failed_buckling(sizing):
         return sizing
     factor = sizing.allowable_factor
-    safe, _ = attempt(factor, 1.0)
+    top = float(sizing.spring.L0 / sizing.spring.D / stable)  # the failing design's
+    least, safe = 1.0, attempt(factor, 1.0)[0]
+    if not safe.solution.ok:  # the least slenderness factor the other limits allow
+        lo, hi = 1.0, top
+        while hi / lo > 1.001:
+            mid = math.sqrt(lo * hi)
+            if attempt(factor, mid, refit=False)[0].solution.ok:
+                hi = mid
+            else:
+                lo = mid
+        least, safe = hi, attempt(factor, hi)[0]
     if not safe.solution.ok or _failed_buckling(safe):
         sizing.notes.append("no spring passes the buckling check within the other limits: "
                             "guide it (--seating) or allow a larger diameter")
         return sizing
-    sol = sizing.solution
-    good, bad = 1.0, float(sizing.spring.L0 / (2.0 * sol.r) / stable)
+    good, bad = least, top
     while bad / good > 1.001:  # one compiled GP: the allowable's fit is frozen meanwhile
         mid = math.sqrt(good * bad)
         trial, _ = attempt(factor, mid, refit=False)
@@ -480,7 +555,7 @@ def _buckling_search(attempt, sizing, stable):
         if trial.solution.ok and not _failed_buckling(trial) and trial.passed >= safe.passed:
             safe = trial
             break
-        good = max(1.0, good * 0.998)
+        good = max(least, good * 0.998)
     safe.allowable_factor = factor
     safe.notes = sizing.notes + [
         f"buckling binds: the free length is held to {good:.4g} times the slenderness that "

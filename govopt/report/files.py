@@ -37,6 +37,8 @@ _OVERWRITE = contextvars.ContextVar("govopt_overwrite", default=True)
 #: the "already exists" messages: ``--force``, but ``govopt spring`` spells it ``--replace``
 #: (its ``--force`` is the spring's force)
 _OPTION = contextvars.ContextVar("govopt_overwrite_option", default="--force")
+#: the folders :func:`output_folder` made within :func:`removed_on_error` (None outside)
+_MADE = contextvars.ContextVar("govopt_made_folders", default=None)
 _KINDS = ((stat.S_ISDIR, "a directory"), (stat.S_ISCHR, "a character device"),
           (stat.S_ISBLK, "a block device"), (stat.S_ISFIFO, "a FIFO"), (stat.S_ISSOCK, "a socket"))
 
@@ -123,7 +125,11 @@ def output_folder(directory: str | Path, what: str) -> Path:
     one line if it is not a folder or cannot be made."""
     directory = Path(directory)
     refuse_package(directory, what)
-    if directory.is_dir():
+    try:
+        is_dir = directory.is_dir()
+    except OSError as exc:  # a name the system refuses (too long)
+        raise GovoptError(f"{directory}: cannot write {what} ({_reason(exc)})") from None
+    if is_dir:
         return directory
     if directory.exists() or directory.is_symlink():
         raise GovoptError(f"{directory}: cannot write {what}: it is not a folder")
@@ -135,7 +141,27 @@ def output_folder(directory: str | Path, what: str) -> Path:
     except OSError as exc:
         raise GovoptError(f"{directory}: cannot make the folder for {what} "
                           f"({_reason(exc)})") from None
+    made = _MADE.get()
+    if made is not None:
+        made.append(directory)
     return directory
+
+
+@contextlib.contextmanager
+def removed_on_error():
+    """Within this block, a folder :func:`output_folder` makes is removed again (if it is still
+    empty) when the block ends in an error: a refused run leaves no empty folder behind."""
+    made: list[Path] = []
+    token = _MADE.set(made)
+    try:
+        yield
+    except BaseException:
+        for folder in reversed(made):
+            with contextlib.suppress(OSError):
+                folder.rmdir()
+        raise
+    finally:
+        _MADE.reset(token)
 
 
 def check_output(path: str | Path, *, overwrite: bool = False, inputs: Iterable = (),

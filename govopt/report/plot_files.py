@@ -39,6 +39,8 @@ def check_plot_dir(directory: str | Path, stem: str, *, overwrite: bool = False,
     directory = Path(directory)
     pattern = _pattern(stem)
     for other in map(Path, others):
+        if os.path.realpath(other) == os.path.realpath(directory):
+            raise GovoptError(f"{other}: cannot write it: it is the plots folder of this run")
         if pattern.fullmatch(other.name) and os.path.realpath(other.parent) == os.path.realpath(
                 directory):
             raise GovoptError(f"{other}: cannot write it: it is also a plot of this run")

@@ -236,9 +236,10 @@ def made_yield(res, ax) -> None:
     x = _band_and_nominal(res, ax, made["speed_band"],
                           "worst case over the tolerance box (as made)")
     ends = [(x[0], y.get("sampled_inner_rad_s")), (x[-1], y.get("sampled_outer_rad_s"))]
+    how = "as made and set" if made["tolerances"].get("set_by_the_fitter") else "as made"
     for i, (at, w) in enumerate(e for e in ends if e[1]):
         ax.plot([at, at], [w[0] * RPM, w[1] * RPM], color="k", lw=3, solid_capstyle="butt",
-                label=f"{y['samples']} sampled governors (as made)" if i == 0 else None)
+                label=f"{y['samples']} sampled governors ({how})" if i == 0 else None)
     _speed_axes(res, ax)
     words = yield_words(made)
     ax.set_title(f"{spec.name}: made to its tolerances\n{_wrapped(words, 90)}", fontsize=9)

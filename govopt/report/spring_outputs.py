@@ -12,11 +12,13 @@ replaced without ``--replace``).
 from __future__ import annotations
 
 import math
+import os
 from pathlib import Path
 from types import SimpleNamespace
 
 import numpy as np
 
+from ..errors import GovoptError
 from ..springs import extension as he
 from ..springs import fatigue as ft
 from ..springs import sheet as sh
@@ -86,7 +88,7 @@ def force_length(outcome, ax) -> None:
         ax.plot(L(x), F(F0 + R * (x - L0)), color="tab:blue", lw=2,
                 label=f"F = F0 + R (L - L0), F0 = {shown.text(F0, 'N', 4)}")
     for key in ("L1", "L2"):
-        if key in pts:
+        if key in pts and not math.isnan(pts[key]["length"].value):  # (past solid: no point)
             p = pts[key]
             length, force = p["length"].value, p["force"].value
             ax.plot(L(length), F(force), "o", color="tab:orange", mec="k",
@@ -119,6 +121,10 @@ def planned(xlsx, plots, stem: str, output=None) -> list[tuple[Path, str]]:
     paths = [(Path(p), what) for p, what in ((output, "spring spec"), (xlsx, "workbook"))
              if p is not None]
     if plots is not None:
+        for path, what in paths:
+            if os.path.realpath(path) == os.path.realpath(plots):
+                raise GovoptError(f"{path}: cannot write {what}: it is the plots folder of "
+                                  "this run")
         folder = output_folder(Path(plots), "plots")
         paths += [(folder / f"{stem}-{k}.{fmt}", "plot") for k in PLOTS for fmt in ("png", "svg")]
     return paths
@@ -203,10 +209,13 @@ def write_workbook(outcome, path, *, replace: bool = True, command: str = "") ->
 def force_length_points(outcome) -> list[tuple[str, float, float]]:
     """``(name, length m, force N)`` of the assessment's working points: the free length, L1,
     L2 and a compression spring's least working and solid lengths; a point equal to the one
-    before it (no least force: the first working point is the free length) once."""
+    before it (no least force: the first working point is the free length) once; a force the
+    spring never reaches (past solid: no length) left out, as the report's note says."""
     out: list[tuple[str, float, float]] = []
     for p in outcome.assessment.points:
         name, L, F = str(p["point"].value), float(p["length"].value), float(p["force"].value)
+        if math.isnan(L):
+            continue
         if out and math.isclose(out[-1][1], L, rel_tol=1e-12) and \
                 math.isclose(out[-1][2], F, rel_tol=1e-12, abs_tol=1e-12):
             continue
@@ -214,46 +223,72 @@ def force_length_points(outcome) -> list[tuple[str, float, float]]:
     return out
 
 
-def write_check_spec(outcome, path, *, replace: bool = True) -> Path:
+def write_check_spec(outcome, path, *, replace: bool = True, drawing=None) -> Path:
     """The spring as a spec for `govopt spring check` (its geometry, material, loads and
-    rules), each number at the shortest precision that reads back to the same float, in the
-    units the input was written in: checking it reproduces the design's report (without the
-    optimiser's record)."""
+    rules), in the units the input was written in; each number at the shortest precision that
+    reads back to the same float (checking it reproduces the design's report, without the
+    optimiser's record), or with ``drawing`` the spring's lengths as a drawing gives them
+    (:func:`drawn_length`; the command chose them so that the spring read back passes the
+    checks the design passes)."""
     from .files import atomic_write
 
-    text = check_spec_text(outcome)
+    text = check_spec_text(outcome, drawing)
     return atomic_write(Path(path), lambda tmp: Path(tmp).write_text(text, encoding="utf-8"),
                         overwrite=replace, what="spring spec")
 
 
-def check_spec_text(outcome) -> str:
-    """The TOML of :func:`write_check_spec`."""
+def drawn_length(shown, value: float, digits: int, way: int = 0) -> tuple[float, float]:
+    """A length as a drawing gives it: ``digits`` significant digits in the shown unit, the
+    last one rounded to the nearest (``way`` 0), up (1) or down (-1); ``(the number shown,
+    its value in m)``.
+
+    >>> from govopt.report.spring_report import Shown
+    >>> drawn_length(Shown(), 0.0954426, 4), drawn_length(Shown(), 0.0954426, 4, way=1)[0]
+    ((95.44, 0.09544), 95.45)
+    """
+    x, _ = shown(value, "m")
+    r = float(f"{x:.{digits - 1}e}")
+    if way and (r - x) * way < 0:  # rounded the other way: one unit of the last digit on
+        unit = 10.0 ** (int(f"{x:.{digits - 1}e}".split("e")[1]) - digits + 1)
+        r = float(f"{r + way * unit:.{digits - 1}e}")
+    return r, r * shown.table.get("m", ("m", 1.0))[1]
+
+
+def check_spec_text(outcome, drawing=None) -> str:
+    """The TOML of :func:`write_check_spec`; ``drawing``: ``(digits, ways)``, the lengths as a
+    drawing gives them (:func:`drawn_length`; ``ways`` the rounding of the wire diameter, the
+    mean diameter and the free length)."""
     a, v, shown = outcome.assessment, outcome.values, outcome.shown
     sp = a.spring
+    ways = dict(zip(("d", "D", "L0"), drawing[1], strict=True)) if drawing else {}
 
-    def q(value, si):
+    def q(value, si, length=None):
         x, unit = shown(value, si)
+        if drawing is not None and length is not None:
+            x = drawn_length(shown, value, drawing[0], ways[length])[0]
         return f'"{x!r} {unit}"'
 
     name = outcome.name.replace('"', "'")
     lines = [f'name = "{name}"',
              'description = "written by govopt spring -o: check it with govopt spring check"',
-             "", "[spring]", f'kind = "{sp.kind}"', f"wire_diameter = {q(sp.d, 'm')}",
-             f"mean_diameter = {q(sp.D, 'm')}"]
+             "", "[spring]", f'kind = "{sp.kind}"', f"wire_diameter = {q(sp.d, 'm', 'd')}",
+             f"mean_diameter = {q(sp.D, 'm', 'D')}"]
     if sp.kind == "compression":
         lines += [f"active_coils = {sp.coils!r}", f"total_coils = {sp.total_coils!r}",
                   f'ends = "{sp.form}"']
     else:
         lines += [f"total_coils = {sp.coils!r}  # the body's", f'loops = "{sp.form}"',
                   f"initial_tension = {q(sp.F0, 'N')}"]
-    lines.append(f"free_length = {q(sp.L0, 'm')}")
-    if v.get("material") is not None:
-        lines.append(f'material = "{v["material"]}"')
+    lines.append(f"free_length = {q(sp.L0, 'm', 'L0')}")
+    # the grade given, or a catalogue's spring's own (its row names it)
+    material = v.get("material") or (a.mat.grade if v.get("catalogue") else None)
+    if material is not None:
+        lines.append(f'material = "{material}"')
     for key, si in (("tensile_strength", "Pa"), ("shear_modulus", "Pa"),
                     ("allowable_stress", "Pa")):
         if v.get(key) is not None:
             lines.append(f"{key} = {q(v[key], si)}")
-    if v.get("density") is not None or v.get("material") is None:
+    if v.get("density") is not None or material is None:
         lines.append(f'density = "{a.mat.density!r} kg/m^3"')
     lines.append(f"force = {q(a.loads.F2, 'N')}")
     if a.loads.F1 > 0:
@@ -263,9 +298,10 @@ def check_spec_text(outcome) -> str:
                   f"fatigue_max_force = {q(a.loads.cycle[1], 'N')}"]
     r = a.rules
     lines += [f'rules = "{r.method}"', f"peened = {str(r.peened).lower()}",
-              f'seating = "{r.seating}"', f"index_min = {float(r.index[0])!r}",
+              f'load = "{"dynamic" if r.dynamic else "static"}"', f'seating = "{r.seating}"',
+              f"index_min = {float(r.index[0])!r}",
               f"index_max = {float(r.index[1])!r}", f"min_fatigue_safety = {r.fatigue_safety!r}",
               f"life = {float(r.cycles)!r}"]
-    if v.get("correction") is not None or v.get("material") is None:
+    if v.get("correction") is not None or material is None:
         lines.append(f'correction = "{r.correction}"')
     return "\n".join(lines) + "\n"

@@ -140,8 +140,10 @@ def _points(a, shown: Shown) -> list[str]:
     lines = [f"  {'working point':<26}" + "".join(f"{c:>14}" for c in heads),
              f"  {'':<26}" + "".join(f"{u:>14}" for u in units)]
     for p in a.points:
-        cells = "".join(f"{shown(p[c].value, p[c].unit)[0]:>14.5g}" for c in cols)
+        cells = "".join(f"{'-':>14}" if math.isnan(p[c].value) else
+                        f"{shown(p[c].value, p[c].unit)[0]:>14.5g}" for c in cols)
         lines.append(f"  {p['point'].value:<26}{cells}")
+    lines.append(f"  {a.points[0]['corrected stress'].source}")
     return lines
 
 

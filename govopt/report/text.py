@@ -202,13 +202,27 @@ def watched(res: Result) -> list[Check]:
 
 
 def verdict(res: Result) -> str:
-    """One line: all checks pass, or which fail (with their margins)."""
+    """One line: all checks pass, or which fail (with their margins); where the verdict is the
+    made governor's (:attr:`Result.verdict_of`), "PASS as made" or "FAIL as made" with the
+    made-and-set yield against ``min_yield``, what fails most often and what to change."""
+    from ..made_words import meets
+
     failed = [c for c in res.checks if not c.passed]
     n = len(res.checks)
     if not failed:
         binding = [check_name(c, res) for c in res.checks if c.active]
-        return (f"PASS: all {n} checks pass" + (f"; binding: {'; '.join(binding)}"
-                                                if binding else ""))
+        tail = f"; binding: {'; '.join(binding)}" if binding else ""
+        ok = meets(res.made)
+        if ok is None:
+            req, spring = res.spec.requirements, res.spec.governor.spring
+            asked = (" at nominal (--nominal)" if res.spec.verdict == "nominal" and spring
+                     else " at nominal (requirements.verdict = \"nominal\")" if
+                     req is not None and req.verdict == "nominal" and spring else "")
+            return f"PASS{asked}: all {n} checks pass" + tail
+        if ok:
+            return f"PASS as made: {yield_line(res)}; all {n} checks pass at nominal" + tail
+        return (f"FAIL as made: {yield_line(res)}; all {n} checks pass at nominal; "
+                + made_advice(res))
     return (f"FAIL: {len(failed)} of {n} checks fail: "
             + "; ".join(f"{check_name(c, res)} ({margin_words(c)})" for c in failed))
 
@@ -217,12 +231,13 @@ def made_lines(res: Result) -> list[str]:
     """The yield beside the verdict (where the spec states tolerances: ``Result.made``): the
     share of made governors that pass with its interval and the requirement failing most often,
     the worst-case speed band beside the required one, and what they were made to."""
-    from ..made_words import sampled_words
+    from ..made_words import meets, sampled_words
 
     made = res.made
     if not made:
         return []
     nominal = "PASS" if all(c.passed for c in res.checks) else "FAIL"
+    said = nominal == "PASS" and meets(made) is not None  # the verdict's line says the yield
     band, tol = made["speed_band"], made["tolerances"]
 
     def rpm(pair) -> str:
@@ -241,10 +256,26 @@ def made_lines(res: Result) -> list[str]:
         made_to.append(f"set by the fitter's nut +-{tol['adjusting_nut_m'] * 1e3:.3g} mm")
     if tol.get("dashpot_valve_fraction"):
         made_to.append(f"dash-pot valve set +-{100 * tol['dashpot_valve_fraction']:g} %")
-    made_as = " as made (before the fitter's setting)" if tol.get("adjusting_nut_m") else ""
-    return [f"{nominal} at nominal; {yield_line(res)}",
+    made_as = " as made (before the fitter's setting)" if tol.get("adjusting_nut_m") or \
+        tol.get("set_by_the_fitter") else ""
+    made_to += [f"set by the fitter: {s}" for s in tol.get("set_by_the_fitter") or ()]
+    return [*([] if said else [f"{nominal} at nominal; {yield_line(res)}"]),
             f"  worst-case speeds {rpm(band['band_rad_s'])}{made_as} beside {besides}",
             "  made to " + ", ".join(m for m in made_to if m) + f"; {sampled_words(made)}"]
+
+
+def made_advice(res: Result) -> str:
+    """What the fitter or the designer can change where the made governors fall short of
+    ``min_yield``."""
+    req = res.spec.requirements
+    fitter = ("let the fitter set the spring (requirements.fitter = \"sets\")"
+              if req is not None and req.fitter == "none" and res.spec.governor.adjustments()
+              else "")
+    return "; ".join(x for x in (
+        fitter, "design for the made governor (govopt design: only designs whose made yield "
+                "meets min_yield)",
+        "or make to a finer grade (requirements.robust_spring_grade = 1), widen the speed "
+        "band, or lower requirements.min_yield") if x)
 
 
 def yield_line(res: Result) -> str:

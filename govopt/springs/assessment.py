@@ -37,7 +37,7 @@ a compression spring's solid length for an extension spring, R_m without a grade
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -180,19 +180,51 @@ def _f(x) -> float:
     return float(np.asarray(x, dtype=float))
 
 
-def _point(name: str, length: float, force: float, deflection: float, d: float, D: float
+def _point(name: str, length: float, force: float, deflection: float, d: float, D: float,
+           correction: str = "bergstrasser", wire_force: float | None = None
            ) -> dict[str, Figure]:
     """One working point: its length, deflection, force and stresses (uncorrected and with
-    Bergstraesser's k, EN 13906-1)."""
+    the chosen correction factor, Bergstraesser's by default, EN 13906-1); ``wire_force`` the
+    force the wire carries where it differs from the force applied (an extension spring held
+    closed by its initial tension). A point the spring never reaches (beyond solid) has its
+    force only: its length, deflection and stresses are nan."""
+    wire = force if wire_force is None else wire_force
+    factor = hx.CORRECTION_TEXT[correction]
     return {"point": Figure("point", name), "length": Figure("length", length, "m"),
             "deflection": Figure("deflection", deflection, "m"),
             "force": Figure("force", force, "N"),
-            "stress": Figure("stress", _f(hx.shear_stress(force, d, D)), "Pa",
+            "stress": Figure("stress", math.nan if math.isnan(length) else
+                             _f(hx.shear_stress(wire, d, D)), "Pa",
                              source="EN 13906-1: tau = 8 F D / (pi d^3)"),
-            "corrected stress": Figure("corrected stress",
-                                       _f(hx.shear_stress(force, d, D, "bergstrasser")), "Pa",
-                                       source="EN 13906-1: tau_k = k tau, k = (w + 0.5)/(w - "
-                                              "0.75)")}
+            "corrected stress": Figure("corrected stress", math.nan if math.isnan(length) else
+                                       _f(hx.shear_stress(wire, d, D, correction)), "Pa",
+                                       source=f"tau_k = k tau, k {factor}")}
+
+
+def corrected(rules: Rules) -> str:
+    """The correction factor of the report's corrected stresses: the one chosen
+    (``rules.correction``, Wahl's or Bergstraesser's), else EN 13906-1's k (Bergstraesser's).
+
+    Parameters
+    ----------
+    rules : Rules [-]
+        The standard's choices.
+
+    Returns
+    -------
+    str [-]
+        ``"wahl"`` or ``"bergstrasser"`` (:data:`govopt.springs.helical.CORRECTION_TEXT`).
+
+    References
+    ----------
+    [en13906-1] factor k; [wahl] eq. (2-12).
+
+    Examples
+    --------
+    >>> corrected(Rules(correction="wahl")), corrected(Rules(correction="none"))
+    ('wahl', 'bergstrasser')
+    """
+    return rules.correction if rules.correction in ("wahl", "bergstrasser") else "bergstrasser"
 
 
 def table_keywords(spring: Spring, mat: Material, loads: Loads, rules: Rules) -> dict:
@@ -296,7 +328,10 @@ def table(spring: Spring, mat: Material, loads: Loads, rules: Rules
     (['shear stress at solid length', 'deflection / buckling deflection'], [])
     """
     kw = table_keywords(spring, mat, loads, rules)
-    rows = [c for c in ck.checks(spring.kind, **kw) if "fatigue" not in c.name]
+    if loads.cycle is not None:  # the static rows at every force the spring sees
+        static = dict(kw, F1=min(loads.F1, *loads.cycle), F2=max(loads.F2, *loads.cycle))
+    rows = [c for c in ck.checks(spring.kind, **(kw if loads.cycle is None else static))
+            if "fatigue" not in c.name]
     if loads.cycle is not None:
         kw.update(F1=min(loads.cycle), F2=max(loads.cycle))
         rows += [c for c in ck.checks(spring.kind, **kw) if "fatigue" in c.name]
@@ -362,6 +397,7 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
     L0, F1, F2 = spring.L0, loads.F1, loads.F2
     nan = math.nan
     notes: list[str] = []
+    k = corrected(rules)
     if compression:
         n_t, form = spring.total_coils, hc.END_FORMS[spring.form]
         hot = spring.form.startswith("hot")
@@ -369,31 +405,51 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
         Sa = _f(hc.sum_of_min_gaps(d, D, n, rules.dynamic, hot))
         Ln = Lc + Sa
         m = _f(hc.pitch(L0, d, n, n_t, spring.form, d_max))
+        Fc = R * max(L0 - Lc, 0.0)  # the force that closes it solid
         s1, s2 = F1 / R, F2 / R
-        points = [_point("free length L0", L0, 0.0, 0.0, d, D)]
+
+        def point(name, F):  # a force beyond solid: no length (nor stress) it never reaches
+            s = F / R if F <= Fc else nan
+            return _point(name, L0 - s, F, s, d, D, k)
+
+        points = [_point("free length L0", L0, 0.0, 0.0, d, D, k)]
         if F1 > 0.0:  # a least force given: the spring works there
-            points.append(_point("L1", L0 - s1, F1, s1, d, D))
-        points += [_point("L2", L0 - s2, F2, s2, d, D),
-                   _point("least working length L_n", Ln, R * (L0 - Ln), L0 - Ln, d, D),
-                   _point("solid length L_c", Lc, R * (L0 - Lc), L0 - Lc, d, D)]
+            points.append(point("L1", F1))
+        points.append(point("L2", F2))
+        if Ln < L0:  # (a free length at or below L_n: the spring never works there)
+            points.append(_point("least working length L_n", Ln, R * (L0 - Ln), L0 - Ln, d, D,
+                                 k))
+        points.append(_point("solid length L_c", Lc, Fc, L0 - Lc, d, D, k))
+        beyond = [name for name, F in (("L1", F1), ("L2", F2)) if F > Fc]
+        if beyond:
+            notes.append(f"{' and '.join(beyond)} beyond the solid length: the spring is solid "
+                         f"at {Fc:.5g} N, below the force there (no length, stress or energy "
+                         "reported where it never gets)")
         wire = _f(hx.helix_wire_length(D, n, m, spring.end_coils, d))
         nu = hc.SEATING[rules.seating]
         sK = _f(hc.buckling_deflection(L0, D, G, E, nu))
-        energy_2 = 0.5 * F2 * s2
+        energy_2 = 0.5 * F2 * s2 if F2 <= Fc else nan
+        energy_12 = (F1 + F2) / 2.0 * (s2 - s1) if F2 <= Fc else nan
         used = s2 / (L0 - Lc)
         end_source = form.source
     else:
         Lc = Sa = Ln = nan
         hook = he.HOOKS[spring.form]
         m = d
-        s1, s2 = (F1 - spring.F0) / R, (F2 - spring.F0) / R
-        points = [_point("free length L0", L0, 0.0, 0.0, d, D)]
+        F0 = spring.F0
+        # below its initial tension the spring stays closed: no deflection, the wire holding F0
+        s1, s2 = (max(F - F0, 0.0) / R for F in (F1, F2))
+        points = [_point("free length L0", L0, 0.0, 0.0, d, D, k, wire_force=F0)]
         if F1 > 0.0:
-            points.append(_point("L1", L0 + s1, F1, s1, d, D))
-        points.append(_point("L2", L0 + s2, F2, s2, d, D))
+            points.append(_point("L1", L0 + s1, F1, s1, d, D, k, wire_force=max(F1, F0)))
+        points.append(_point("L2", L0 + s2, F2, s2, d, D, k, wire_force=max(F2, F0)))
         wire = _f(hx.helix_wire_length(D, 0.0, 0.0, spring.coils + 2.0 * hook.coils, d))
         sK = nan
-        energy_2 = spring.F0 * s2 + 0.5 * R * s2**2
+
+        def work(s):  # from the free length: F0 s + R s^2 / 2
+            return F0 * s + 0.5 * R * s**2
+
+        energy_2, energy_12 = work(s2), work(s2) - work(s1)
         used = nan
         end_source = hook.source
     index = D / d
@@ -404,8 +460,12 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
         "wire diameter": Figure("wire diameter", d, "m", symbol="d"),
         "largest wire diameter": Figure(
             "largest wire diameter", d_max, "m", symbol="d_max",
-            source=("d + its tolerance after " + (tl.wire_standard(mat.grade) or "")
-                    if d_max > d else "the nominal d: no wire standard's tolerance known")),
+            source="d + its tolerance after " + (tl.wire_standard(mat.grade) or ""),
+            json="largest_wire_diameter_m") if d_max > d else Figure(
+            "solid length's wire diameter", d, "m", symbol="d",
+            source="the nominal d", json="largest_wire_diameter_m",
+            note="no diameter tolerance of " + (mat.standard or "the wire") + " in govopt's "
+                 "data: the nominal d, not d_max"),
         "mean coil diameter": Figure("mean coil diameter", D, "m", symbol="D"),
         "outside diameter": Figure("outside diameter", D + d, "m", symbol="D_e"),
         "inside diameter": Figure("inside diameter", D - d, "m", symbol="D_i"),
@@ -437,8 +497,10 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
         "solid length": Figure("solid length", Lc, "m", symbol="L_c",
                                source=end_source if compression else ""),
         "sum of least gaps": Figure("sum of least gaps", Sa, "m", symbol="S_a",
-                                    source="EN 13906-1: S_a = n (0.0015 D^2/d + 0.1 d), x1.5 "
-                                           "dynamic" if compression else ""),
+                                    source="EN 13906-1: S_a = n (0.0015 D^2/d + 0.1 d), "
+                                           + ("x1.5 dynamic load" if rules.dynamic else
+                                              "static load (x1.5 under dynamic load)")
+                                           if compression else ""),
         "least working length": Figure("least working length", Ln, "m", symbol="L_n"),
         "deflection used": Figure("deflection used", 100.0 * used, "%",
                                   symbol="s2 / (L0 - L_c)",
@@ -446,8 +508,9 @@ def assess(spring: Spring, mat: Material, loads: Loads, rules: Rules = Rules()) 
         "energy to L2": Figure("energy to L2", energy_2, "J", symbol="W2",
                                source="the work from the free length to L2"),
         "energy between the working points": Figure(
-            "energy between the working points", (F1 + F2) / 2.0 * (s2 - s1), "J",
-            symbol="W12", source="EN 13906-1: W = (F1 + F2)/2 (s2 - s1)"),
+            "energy between the working points", energy_12, "J", symbol="W12",
+            source="EN 13906-1: W = (F1 + F2)/2 (s2 - s1)" if compression else
+            "W = F0 (s2 - s1) + R (s2^2 - s1^2) / 2, s from the initial tension"),
     }
     dynamics = {
         "surge frequency": Figure("surge frequency", _f(hx.surge_frequency(d, D, n, G, rho)),
@@ -488,12 +551,16 @@ def _fatigue(spring, mat, loads, rules, rows) -> tuple[dict[str, Figure], float 
     d, D = spring.d, spring.D
     out = ft.cycle_figures(lo, hi, *(_f(hx.shear_stress(F, d, D, "bergstrasser"))
                                      for F in (lo, hi)))
+    for key in ("corrected stress min", "corrected stress max"):  # the fatigue data's factor
+        out[key] = replace(out[key], note="k " + hx.CORRECTION_TEXT["bergstrasser"]
+                           + ", as the fatigue check")
     row = next((c for c in rows if c.name == "body fatigue safety factor"), None)
-    safety = nan if row is None else row.value
+    safety = nan if row is None else row.value  # at the required life
     life = nan
-    if row is not None:
+    if row is not None:  # the row's safety at the required life, read back to the data's
         Sse, Ssu = ft.reversed_endurance(mat, d, rules.method, rules.peened)
-        life = _f(ft.finite_life(safety, Sse, Ssu, ck.DATA_CYCLES))
+        at_data = safety / _f(ft.life_factor(rules.cycles, Sse, Ssu, ck.DATA_CYCLES))
+        life = _f(ft.finite_life(at_data, Sse, Ssu, ck.DATA_CYCLES))
     out["safety factor"] = Figure("safety factor", safety, source=row.source if row else "")
     out["life"] = Figure(
         "life", life, "cycles", source="Basquin's line from 0.9 S_su at 1e3 cycles to the "
@@ -534,8 +601,8 @@ def _tolerances(spring, mat, loads, rules, n, R, G, s2) -> dict[str, Figure]:
                              source="R(d - A_d, D + A_D): the wire's and coil's tolerances"),
         "rate largest": Figure("rate largest", _f(hi), "N/m",
                                source="R(d + A_d, D - A_D)"),
-        "force 2 least": Figure("force 2 least", loads.F2 - A_F2, "N",
-                                source="F2 - A_F2 at L2"),
+        "force 2 least": Figure("force 2 least", max(loads.F2 - A_F2, 0.0), "N",
+                                source="F2 - A_F2 at L2 (at least 0)"),
         "force 2 largest": Figure("force 2 largest", loads.F2 + A_F2, "N",
                                   source="F2 + A_F2 at L2"),
         "stress at force 2 largest": Figure(
@@ -550,4 +617,4 @@ def _tolerances(spring, mat, loads, rules, n, R, G, s2) -> dict[str, Figure]:
 
 
 __all__ = ["KINDS", "POINTS", "SECTIONS", "Assessment", "Loads", "Rules", "Spring", "assess",
-           "extension_free_length", "table", "table_keywords"]
+           "corrected", "extension_free_length", "table", "table_keywords"]

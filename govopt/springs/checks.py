@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..verdict import Check
+from ..verdict import Check, holds
 from . import compression as hc
 from . import extension as he
 from . import fatigue as fat
@@ -93,6 +93,11 @@ _DERIVED = {
         "R": lambda kw: hx.stiffness(kw["d"], kw["D"], kw["n"], kw["G"]),
         # the static stress at the overspeed deflection
         "F_max": lambda kw: np.maximum(kw["F2"], kw["R"] * kw["s_max"]),
+        # the force that closes the spring solid (none beyond it follows the rate), and the
+        # largest force the spring's wire feels: no more than that
+        "F_c": lambda kw: kw["R"] * np.maximum(
+            kw["L0"] - hc.solid_length(kw["d_max"], kw["n_t"], kw["ends"]), 0.0),
+        "F_reached": lambda kw: np.minimum(kw["F_max"], kw["F_c"]),
     },
     "extension": {
         **_COMMON_DERIVED,
@@ -157,10 +162,8 @@ def prepare(kind: str, **kw) -> dict:
 def _static(place):
     def value(kw):
         rule = static_rule(kw["mat"], place, kw["method"])
-        F = kw["F_max"]
-        if place == "solid":
-            F = kw["R"] * (kw["L0"] - hc.solid_length(kw["d_max"], kw["n_t"], kw["ends"]))
-        return hx.shear_stress(F, kw["d"], kw["D"], kw["correction"] or rule.correction)
+        F = {"solid": "F_c", "compression": "F_reached"}.get(place, "F_max")
+        return hx.shear_stress(kw[F], kw["d"], kw["D"], kw["correction"] or rule.correction)
 
     def limit(kw):
         override = kw["allowable"] if place in ("compression", "extension") else None
@@ -181,30 +184,47 @@ def _static(place):
 DATA_CYCLES = 1e7
 
 
-def _life_note(kw, cycles_of_data):
+def _life_note(kw, cycles_of_data, body: bool = False):
     if kw["cycles"] > cycles_of_data:
         return (f"; required life {kw['cycles']:.3g} cycles exceeds the data's "
                 f"{cycles_of_data:.3g} (fatigue strength assumed constant beyond)")
+    if kw["cycles"] < cycles_of_data and body:
+        return (f"; at the required life {kw['cycles']:.3g} cycles: the strength on Basquin's "
+                f"line from 0.9 S_su at 1e3 to the data's {cycles_of_data:.3g} cycles (Shigley "
+                "9th ed. section 6-7)")
+    if kw["cycles"] < cycles_of_data:
+        return (f"; at the data's {cycles_of_data:.3g} cycles (a required life of "
+                f"{kw['cycles']:.3g} is shorter: on the safe side)")
     return ""
 
 
 def _body_fatigue(kw):
+    """The body's fatigue safety at the required life: at the data's life (the grade's EN
+    13906-1 diagram, else Zimmerli's), times the S-N line's strength ratio where the required
+    life is shorter (:func:`govopt.springs.fatigue.life_factor`)."""
     diagram = kw["mat"].fatigue_diagram(kw["peened"]) if kw["method"] == "EN13906" else None
     if diagram is not None:
-        return fat.en13906_fatigue_safety(kw["F1"], kw["F2"], kw["d"], kw["D"], diagram)
-    Fa, Fm = np.abs(kw["F2"] - kw["F1"]) / 2.0, (kw["F2"] + kw["F1"]) / 2.0
-    tau_a = hx.shear_stress(Fa, kw["d"], kw["D"], "bergstrasser")
-    tau_m = hx.shear_stress(Fm, kw["d"], kw["D"], "bergstrasser")
-    return fat.shigley_fatigue_safety(tau_a, tau_m, kw["Rm"], kw["peened"], kw["criterion"])
+        safety = fat.en13906_fatigue_safety(kw["F1"], kw["F2"], kw["d"], kw["D"], diagram)
+    else:
+        Fa, Fm = np.abs(kw["F2"] - kw["F1"]) / 2.0, (kw["F2"] + kw["F1"]) / 2.0
+        tau_a = hx.shear_stress(Fa, kw["d"], kw["D"], "bergstrasser")
+        tau_m = hx.shear_stress(Fm, kw["d"], kw["D"], "bergstrasser")
+        safety = fat.shigley_fatigue_safety(tau_a, tau_m, kw["Rm"], kw["peened"],
+                                            kw["criterion"])
+    if np.all(np.asarray(kw["cycles"]) >= DATA_CYCLES):
+        return safety
+    Sse, Ssu = fat.reversed_endurance(kw["mat"], kw["d"], kw["method"], kw["peened"],
+                                      kw["criterion"])
+    return safety * fat.life_factor(kw["cycles"], Sse, Ssu, DATA_CYCLES)
 
 
 def _body_fatigue_source(kw):
     diagram = kw["mat"].fatigue_diagram(kw["peened"]) if kw["method"] == "EN13906" else None
+    note = _life_note(kw, DATA_CYCLES, body=True)
     if diagram is not None:
-        return diagram.source + ", Bergstraesser-corrected stresses" + _life_note(kw, DATA_CYCLES)
+        return diagram.source + ", Bergstraesser-corrected stresses" + note
     return (f"{fat.ZIMMERLI_SOURCE}; {kw['criterion'].capitalize()} line through "
-            f"S_su = 0.67 S_ut (Shigley §10-9), K_B-corrected stresses"
-            + _life_note(kw, DATA_CYCLES))
+            f"S_su = 0.67 S_ut (Shigley §10-9), K_B-corrected stresses" + note)
 
 
 def _hook_fatigue(point):
@@ -256,7 +276,14 @@ COMMON = (
         _surge_source),
 )
 
+#: the row that says where a compression spring goes solid (its force there)
+SOLID = "largest force <= force at solid length"
+
 COMPRESSION = (
+    Row(SOLID, "<=", "N", lambda kw: kw["F_max"], lambda kw: kw["F_c"],
+        "EN 13906-1: the spring is solid at L_c (with d_max), at the force R (L0 - L_c); a "
+        "larger force does not compress it further, and the static stress is taken at the "
+        "smaller of the two"),
     Row("static shear stress", "<=", "Pa", _static_c[0], _static_c[1], _static_c[2]),
     Row("shear stress at solid length", "<=", "Pa", _static_s[0], _static_s[1], _static_s[2]),
     Row("working length >= least length (coil clash)", ">=", "m",
@@ -264,9 +291,10 @@ COMPRESSION = (
         lambda kw: hc.min_working_length(kw["d"], kw["D"], kw["n"], kw["n_t"], kw["ends"],
                                          kw["dynamic"], kw["ends"].startswith("hot"),
                                          kw["d_max"]),
-        "EN 13906-1: L_n = L_c + S_a, L_c with the largest wire diameter d_max, S_a = n "
-        "(0.0015 D^2/d + 0.1 d) (x1.5 dynamic), at the largest deflection including the "
-        "overspeed margin"),
+        lambda kw: "EN 13906-1: L_n = L_c + S_a, L_c with the largest wire diameter d_max, "
+                   "S_a = n (0.0015 D^2/d + 0.1 d) "
+                   + ("x1.5 (dynamic load)" if kw["dynamic"] else "(static load; x1.5 dynamic)")
+                   + ", at the largest deflection including the overspeed margin"),
     Row("deflection / buckling deflection", "<=", "",
         lambda kw: _over(kw["s_max"], hc.buckling_deflection(kw["L0"], kw["D"], kw["G"], kw["E"],
                                                              hc.SEATING[kw["seating"]])),
@@ -319,8 +347,8 @@ EXTENSION = (
 #: they hold for a spring whose ``[material]`` gives an allowable stress and no wire grade too
 #: (``only=GEOMETRY``). A free length far beyond the installed length (the article's "longer
 #: spring" for a narrow speed range, 003) buckles long before it is compressed into place.
-GEOMETRY = ("working length >= least length (coil clash)", "deflection / buckling deflection",
-            "free pitch > wire diameter", PITCH_MAX)
+GEOMETRY = (SOLID, "working length >= least length (coil clash)",
+            "deflection / buckling deflection", "free pitch > wire diameter", PITCH_MAX)
 
 _SPACE = Row("free length <= space", "<=", "m", lambda kw: kw["L0"], lambda kw: kw["L0_max"],
              "installation space given in the spec")
@@ -463,7 +491,7 @@ def feasible(kind: str, only=None, **kw) -> np.ndarray:
     ok = True
     for r in _rows(kind, kw, only):
         value, limit = r.value(kw), r.limit(kw)
-        ok = ok & (value <= limit if r.sense == "<=" else value >= limit)
+        ok = ok & holds(value, limit, r.sense)  # as each Check passes
     return np.asarray(ok)
 
 

@@ -439,6 +439,50 @@ def finite_life(safety, Sse, Ssu, data_cycles: float = 1e7):
     return np.where(safety >= 1.0, np.inf, np.where(life >= low, life, np.nan))
 
 
+def life_factor(cycles, Sse, Ssu, data_cycles: float = 1e7):
+    """The fatigue strength at a required life ``cycles`` over the strength at the data's life
+    ``data_cycles``, on the S-N line :func:`finite_life` reads (Basquin's ``S_f = a N^b``
+    through ``f S_su`` at :data:`LOW_CYCLES` and ``S_se`` at ``data_cycles``): ``(N /
+    data_cycles)^b`` with ``N`` held within ``[LOW_CYCLES, data_cycles]`` (1 at and beyond the
+    data's life, where the strength is held constant; the line's end below 1e3 cycles). A
+    safety factor at the data's life times this factor is the safety at the required life: at
+    least 1 exactly where :func:`finite_life` estimates at least ``cycles``.
+
+    Parameters
+    ----------
+    cycles : float or array [-]
+        Required life (number of load cycles).
+    Sse : float or array [Pa]
+        Fully reversed shear endurance at ``data_cycles`` (:func:`reversed_endurance`).
+    Ssu : float or array [Pa]
+        Torsional ultimate strength.
+    data_cycles : float [-]
+        Cycles at which the endurance data hold (number of cycles).
+
+    Returns
+    -------
+    float or array [-]
+        The strength ratio, at least 1.
+
+    References
+    ----------
+    [shigley] 9th ed. §6-7, eqs. (6-13)-(6-16).
+
+    Examples
+    --------
+    The case of :func:`finite_life` (``S_se = 300``, ``S_su = 1200`` MPa): a safety of 0.8 at
+    1e7 cycles lasts 2.01e6 cycles, where the factor is 1/0.8:
+
+    >>> N = float(finite_life(0.8, 300e6, 1200e6))
+    >>> round(float(life_factor(N, 300e6, 1200e6)) * 0.8, 12), float(life_factor(1e8, 1, 2))
+    (1.0, 1.0)
+    """
+    Sse, Ssu = np.asarray(Sse, dtype=float), np.asarray(Ssu, dtype=float)
+    b = np.log10(Sse / (LOW_CYCLE_FRACTION * Ssu)) / np.log10(data_cycles / LOW_CYCLES)
+    N = np.clip(np.asarray(cycles, dtype=float), LOW_CYCLES, data_cycles)
+    return (N / data_cycles) ** b
+
+
 def body_locus(mat, d, method: str = "EN13906", peened: bool = False,
                criterion: str = "goodman", points: int = 41) -> dict:
     """The fatigue diagram the body's check reads (:mod:`govopt.springs.checks`: the grade's

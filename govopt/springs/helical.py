@@ -18,6 +18,9 @@ import numpy as np
 
 #: Stress-correction factors for :func:`correction_factor`.
 CORRECTIONS = ("none", "wahl", "bergstrasser")
+#: each correction factor by name, as a report names it beside a corrected stress
+CORRECTION_TEXT = {"none": "none (uncorrected)", "wahl": "Wahl's (4w - 1)/(4w - 4) + 0.615/w",
+                   "bergstrasser": "Bergstraesser's (w + 0.5)/(w - 0.75)"}
 
 #: The default correction per use: EN 13906-1/-2 use the uncorrected stress for static and
 #: quasi-static checks and k (Bergstraesser) for fatigue; Shigley uses K_B for both.

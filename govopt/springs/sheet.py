@@ -196,8 +196,8 @@ def _f(x) -> float:
 
 
 def wire_standard(mat: Material) -> str | None:
-    """The wire standard whose diameter tolerances apply to the grade (EN 10270-1 or -2), or
-    None (:func:`govopt.springs.tolerances.wire_standard`).
+    """The wire standard whose diameter tolerances apply to the grade (EN 10270-1 or -2, ASTM
+    A228, A227 or A229), or None (:func:`govopt.springs.tolerances.wire_standard`).
 
     Parameters
     ----------
@@ -207,17 +207,19 @@ def wire_standard(mat: Material) -> str | None:
     Returns
     -------
     str or None [-]
-        ``"EN10270-1"``, ``"EN10270-2"`` or None.
+        A key of :data:`govopt.springs.tolerances.WIRE_TOLERANCE`, or None.
 
     References
     ----------
-    [en10270-1], [en10270-2].
+    [en10270-1], [en10270-2]; ASTM A228, A227, A229 (as their wire makers quote them).
 
     Examples
     --------
     >>> from govopt.springs.materials import material
     >>> wire_standard(material("EN10270-1 DH")), wire_standard(material("Shigley A228"))
-    ('EN10270-1', None)
+    ('EN10270-1', 'ASTM A228')
+    >>> wire_standard(material("Shigley A401")) is None
+    True
     """
     return tol.wire_standard(mat.grade)
 
@@ -266,14 +268,15 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
     Shigley (9th ed.) Example 10-4: music wire d = 0.092 in, OD = 9/16 in, free length 4 3/8 in,
     21 active and 23 total coils, squared and ground, 5 and 35 lbf. The book prints
     k = 48.1 lbf/in; by hand, ``L2 = 111.125 - 155.69 / 8.4233 = 92.64`` mm and the solid length
-    ``n_t d = 23 * 0.092 = 2.116`` in (the ASTM wire has no tabulated tolerance here).
+    with EN 13906-1's largest wire, ``n_t d_max = 23 * 0.093 = 2.139`` in (ASTM A228 holds 0.092
+    in wire to +-0.001 in; the book's ``L_s = d N_t = 2.116`` in takes the nominal wire).
 
     >>> from govopt.springs.materials import material
     >>> inch, lbf = 0.0254, 4.4482216152605
     >>> s = compression_sheet(material("Shigley A228"), 0.092 * inch, (9 / 16 - 0.092) * inch,
     ...                       21, 23, 4.375 * inch, 5 * lbf, 35 * lbf)
     >>> round(s.R / (lbf / inch), 1), round(s.L2 * 1e3, 2), round(s.solid_length / inch, 3)
-    (48.1, 92.64, 2.116)
+    (48.1, 92.64, 2.139)
     """
     G = _f(mat.shear_modulus(d))
     R = _f(hx.stiffness(d, D, n, G))
@@ -287,16 +290,22 @@ def compression_sheet(mat: Material, d, D, n, n_t, L0, F1, F2, *, ends: str = "c
         tols["A_d"] = _f(tol.wire_diameter_tolerance(d, std))
     notes = ("tolerances on F1, F2 (with L0 free) after EN 15800; A_L0 applies if no force "
              "is toleranced",)
+    Lc = _f(hc.solid_length(d_max, n_t, ends))
+    F_c = R * (_f(L0) - Lc)
+
+    def length(F):  # a force past solid: no length (the spring never gets there)
+        return _f(L0) - _f(F) / R if _f(F) <= F_c else float("nan")
+    if _f(F2) > F_c:
+        notes += (f"solid at {F_c:.5g} N, below the working force: no length given past it",)
     return SpringSheet(
         kind="compression", grade=mat.grade, material_standard=mat.standard, d=_f(d), D=_f(D),
         n=_f(n), coils=_f(n_t), ends=ends.replace("_", " "), L0=_f(L0), R=R, F1=_f(F1),
-        L1=_f(L0) - _f(F1) / R, F2=_f(F2), L2=_f(L0) - _f(F2) / R, tolerance_grade=grade,
+        L1=length(F1), F2=_f(F2), L2=length(F2), tolerance_grade=grade,
         surface=surface,
         mass=_f(hx.helix_mass(d, D, n, hc.pitch(L0, d, n, n_t, ends, d_max), _f(n_t) - _f(n),
                               mat.density)),
         surge_frequency=_f(hx.surge_frequency(d, D, n, G, mat.density)),
-        solid_length=_f(hc.solid_length(d_max, n_t, ends)),
-        tolerances=tols, notes=notes)
+        solid_length=Lc, tolerances=tols, notes=notes)
 
 
 def extension_sheet(mat: Material, d, D, n_body, F0, F1, F2, *,

@@ -46,8 +46,15 @@ _AD = np.array([
     [1.20, 1.50, 1.70, 2.10, 2.90, 3.30, 4.20, 5.70, 6.60],
 ])
 
+_IN = 25.4  # mm per inch: the ASTM tables are in inches
+
 #: Wire diameter tolerances (+- mm) by diameter (upper bound of each row, mm): EN 10270-1 and
-#: EN 10270-2, as tabulated in SpringONE ``WIRETOL.csv``.
+#: EN 10270-2, as tabulated in SpringONE ``WIRETOL.csv``; ASTM A228 (music wire: 0.004 to 0.250
+#: in) and ASTM A227 and A229 (hard-drawn and oil-tempered: 0.020 to 0.625 in), the
+#: "permissible variations in wire diameter" of the standards as Insteel Wire / Interwire Group
+#: quote them on their product pages (tinned music wire to A228; bright hard-drawn MB to A227;
+#: oil-tempered MB class I and II to A229: the same table for both). The other grades' standards
+#: (ASTM A232 and A401, EN 10270-3) have no table here: their nominal d is taken, and named so.
 WIRE_TOLERANCE = {
     "EN10270-1": (np.array([0.09, 0.16, 0.25, 0.63, 0.75, 1.0, 1.2, 1.7, 2.6, 4.0, 5.3, 7.0, 9.0,
                             10.0, 11.0, 14.0, 18.0, 20.0]),
@@ -56,6 +63,12 @@ WIRE_TOLERANCE = {
     "EN10270-2": (np.array([0.85, 1.05, 1.7, 3.0, 4.2, 6.0, 7.5, 9.0, 11.0, 13.0, 16.0, 17.0]),
                   np.array([0.010, 0.015, 0.020, 0.025, 0.030, 0.035, 0.040, 0.045, 0.050, 0.070,
                             0.080, 0.090])),
+    "ASTM A228": (np.array([0.010, 0.028, 0.063, 0.080, 0.250]) * _IN,
+                  np.array([0.0002, 0.0003, 0.0004, 0.0005, 0.001]) * _IN),
+    "ASTM A227": (np.array([0.028, 0.075, 0.375, 0.625]) * _IN,
+                  np.array([0.0008, 0.001, 0.002, 0.003]) * _IN),
+    "ASTM A229": (np.array([0.028, 0.075, 0.375, 0.625]) * _IN,
+                  np.array([0.0008, 0.001, 0.002, 0.003]) * _IN),
 }
 
 
@@ -313,7 +326,8 @@ def parallelism(De, grade: int = 2):
 
 
 def wire_diameter_tolerance(d, standard: str = "EN10270-1"):
-    """+- tolerance of the wire diameter (m) after the wire standard (EN 10270-1 or -2).
+    """+- tolerance of the wire diameter (m) after the wire standard (EN 10270-1 or -2, ASTM
+    A228, A227 or A229: :data:`WIRE_TOLERANCE`).
 
     NaN beyond the table.
 
@@ -354,7 +368,8 @@ def wire_diameter_tolerance(d, standard: str = "EN10270-1"):
 
 def wire_standard(grade: str) -> str | None:
     """The wire standard whose diameter tolerances apply to a grade named ``grade`` (EN
-    10270-1 or -2: :data:`WIRE_TOLERANCE`), or None (a grade without tabulated tolerances).
+    10270-1 or -2, ASTM A228, A227 or A229, Shigley's fits of them too:
+    :data:`WIRE_TOLERANCE`), or None (a grade without tabulated tolerances).
 
     Parameters
     ----------
@@ -365,7 +380,7 @@ def wire_standard(grade: str) -> str | None:
     Returns
     -------
     str or None [-]
-        ``"EN10270-1"``, ``"EN10270-2"`` or None.
+        A key of :data:`WIRE_TOLERANCE` (``"EN10270-1"``, ``"ASTM A228"`` ...) or None.
 
     References
     ----------
@@ -373,12 +388,15 @@ def wire_standard(grade: str) -> str | None:
 
     Examples
     --------
-    >>> wire_standard("EN10270-1 SH"), wire_standard("ASTM A228")
-    ('EN10270-1', None)
+    >>> wire_standard("EN10270-1 SH"), wire_standard("Shigley A229"), wire_standard("ASTM A401")
+    ('EN10270-1', 'ASTM A229', None)
     """
     for std in WIRE_TOLERANCE:
         if str(grade).startswith(std):
             return std
+    words = str(grade).split()  # "Shigley A228": the ASTM grade of Shigley's fit
+    if len(words) == 2 and f"ASTM {words[1]}" in WIRE_TOLERANCE:
+        return f"ASTM {words[1]}"
     return None
 
 
@@ -406,12 +424,14 @@ def max_wire_diameter(d, grade: str | None):
 
     Examples
     --------
-    2.8 mm EN 10270-1 wire is held to +-0.030 mm (:func:`wire_diameter_tolerance`); an ASTM
-    grade has no tabulated tolerance here.
+    2.8 mm EN 10270-1 wire is held to +-0.030 mm (:func:`wire_diameter_tolerance`); 0.092 in
+    music wire (ASTM A228, over 0.080 to 0.250 in) to +-0.001 in; ASTM A401 has no table here.
 
     >>> round(float(max_wire_diameter(2.8e-3, "EN10270-1 SH")) * 1e3, 3)  # +-0.030 mm
     2.83
-    >>> float(max_wire_diameter(2.8e-3, "ASTM A228")) * 1e3
+    >>> round(float(max_wire_diameter(0.092 * 0.0254, "ASTM A228")) / 0.0254, 6)
+    0.093
+    >>> float(max_wire_diameter(2.8e-3, "Shigley A401")) * 1e3
     2.8
     """
     d = np.asarray(d, dtype=float)

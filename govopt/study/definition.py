@@ -33,7 +33,7 @@ from ..spec import Spec, parse_spec
 from .errors import StudyError
 from .quantities import number_text, quantity
 from .sampling import SAMPLERS, check_seed, unit_cube
-from .tolerances import Tolerance, fixed_free_length, grade_tolerances, nominal
+from .tolerances import Tolerance, check_bands, fixed_free_length, grade_tolerances, nominal
 
 MODES = ("evaluate", "design")
 COMBINE = ("grid", "zip", *SAMPLERS)
@@ -588,6 +588,7 @@ def _load_study(path, *, sweeps, tolerances, **options) -> Study:
                   str(table.get("name") or spec.name), spec)
     if tols:
         nominal(spec, tols.values())  # each toleranced key has a number in the spec
+        check_bands(spec, tols.values(), study.toml)  # and every part in its band can be made
     return study
 
 

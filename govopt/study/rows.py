@@ -128,6 +128,11 @@ def _text(v):
     return v if isinstance(v, str) else json.dumps(v)
 
 
+#: a design key of the spec as its entries name it: ``design.wire_diameter``,
+#: ``bounds.wire_diameter[0]``, ``bounds.active_turns.low``, ``catalogue.wire_diameters[2]``
+_DESIGN_KEY = re.compile(r"(?:design|bounds|catalogue)\.(\w+)(?:\[\d+\]|\.low|\.high)?")
+
+
 class _Runner:
     """A study's points into rows, in one process: the spec variants and linear maps it has
     parsed kept by what they are made of (the values written), never by object identity."""
@@ -175,6 +180,14 @@ class _Runner:
 
     def _key_unit(self, key: str, si: str) -> tuple[str, float]:
         own = Shown([e for e in self.base.entries if e.key == key]).own.get(si)
+        return own or self.shown(si)
+
+    def _design_unit(self, name: str, si: str) -> tuple[str, float]:
+        """The unit of a design figure: the one the spec writes that design key in (in
+        ``[design]``, ``[bounds]`` or ``[catalogue]``: a wire diameter in mm where the spec's
+        other lengths are in cm), else the spec's unit for the quantity."""
+        own = Shown([e for e in self.base.entries if (m := _DESIGN_KEY.fullmatch(e.key))
+                     and m[1] in (name, f"{name}s")]).own.get(si)
         return own or self.shown(si)
 
     def put_inputs(self, b: _Builder, values: dict) -> None:
@@ -229,8 +242,9 @@ class _Runner:
                           [None if x is None or x is pd.NA else str(x) for x in v])
                 else:
                     b.put(Column("design" if fig.design else "figure", fig.name, fig.unit,
-                                 "REAL", fig.label,
-                                 *self.shown(fig.unit)), pos, _numbers(v))
+                                 "REAL", fig.label, *(self._design_unit(fig.name, fig.unit)
+                                                      if fig.design else self.shown(fig.unit))),
+                          pos, _numbers(v))
 
     # -- evaluate mode --
 
@@ -284,6 +298,11 @@ class _Runner:
             good = np.array([e is None for e in bad], dtype=bool)
             if good.any():
                 cols = {f: a[good] for f, a in arrays.items()}
+                if self.study.tolerances:  # each made governor as the fitter sets it
+                    from ..bulk import design_arrays
+                    from ..made import set_by_the_fitter
+
+                    cols = set_by_the_fitter(spec, cols, design_arrays(spec, [spec.design]))
                 out, units = evaluate_columns(spec, cols, **self.kw)
                 self.put_frame(b, pos[good], self._set_by_the_fitter(spec, cols, out),
                                spec, units)

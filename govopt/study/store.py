@@ -35,6 +35,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ..errors import GovoptError
 from .errors import StudyError
 from .keys import study_digest
 from .rows import Column, Rows, identifier
@@ -61,6 +62,9 @@ SCHEMA = (
     "CREATE TABLE points (point INTEGER PRIMARY KEY, status TEXT NOT NULL, "
     "message TEXT NOT NULL)",
 )
+#: the columns of the ``columns`` table
+_COLUMNS_COLUMNS = ("name", "position", "type", "unit", "role", "label", "about", "shown_unit",
+                    "shown_factor")
 #: the fixed columns' rows of ``columns``
 _FIXED_COLUMNS = (
     ("point", 0, "INTEGER", "", "point", "point", "the point's number in the study's order"),
@@ -264,10 +268,11 @@ class Store:
             self.conn.close()
             self.conn = sqlite3.connect(_uri(self.path, mode="ro", immutable=1), uri=True)
         tables = self._tables()
-        if not {"meta", "points"} <= tables:
+        if not {"meta", "points"} <= tables and header(self.path)[1] != APPLICATION_ID:
             raise StudyError("not a govopt study database (no study tables)", file=self.path,
                              kind="foreign")
         self.require_format()
+        self.validate()
 
     def _tables(self) -> set[str]:
         return {n for (n,) in self.conn.execute(
@@ -327,7 +332,12 @@ class Store:
         if key in self._meta:
             return self._meta[key]
         row = self.conn.execute("SELECT value FROM meta WHERE key = ?", (key,)).fetchone()
-        value = None if row is None else json.loads(row[0])
+        try:
+            value = None if row is None else json.loads(row[0])
+        except (TypeError, ValueError):
+            raise StudyError(f"the study database is damaged: meta {key!r} is not JSON",
+                             file=self.path, kind="damaged", advice="run the study again with "
+                             "--force to start it afresh") from None
         if not self.writable:
             self._meta[key] = value
         return value
@@ -364,6 +374,77 @@ class Store:
                          advice="read it with the govopt that wrote it, or run the study "
                          "again with --force to start afresh")
 
+    # -- its own structure --
+
+    def validate(self) -> None:
+        """Refuse (one line, kind ``"damaged"``) a database whose structure or totals are not
+        what govopt writes, so that nothing is shown, exported, resumed or counted from a row
+        the study did not write: the three tables and the columns of each; every column of
+        ``points`` described in ``columns`` (and only those), each with its type and a finite
+        positive ``shown_factor``; the study's definition with its digest, and its number of
+        points as the definition gives it; each row a point of the study (a number below that
+        total, a status, every input given)."""
+        try:
+            problem = self._problem()
+        except sqlite3.DatabaseError as exc:
+            raise describe(exc, self.path) from None
+        if problem:
+            raise StudyError(f"the study database is damaged: {problem}", file=self.path,
+                             kind="damaged",
+                             advice="run the study again with --force to start it afresh")
+
+    def _problem(self) -> str:
+        """What is wrong with the database's structure or totals, ``""`` if nothing."""
+        tables = self._tables()
+        missing = [t for t in ("meta", "columns", "points") if t not in tables]
+        if missing:
+            return f"no table {', '.join(missing)}"
+        for table, want in (("meta", ("key", "value")), ("columns", _COLUMNS_COLUMNS)):
+            have = self._columns_of(table)
+            if have != list(want):
+                return f"table {table} has columns {', '.join(have)}, not {', '.join(want)}"
+        described = self.conn.execute(
+            "SELECT name, type, shown_factor FROM columns ORDER BY position").fetchall()
+        names = [n for n, _, _ in described]
+        have = self._columns_of("points")
+        if names[:len(FIXED)] != list(FIXED) or sorted(names) != sorted(have):
+            extra = sorted(set(have) - set(names)) or sorted(set(names) - set(have))
+            return (f"the columns of points ({len(have)}) are not those described in columns "
+                    f"({len(names)}): {', '.join(map(str, extra[:3])) or 'their order'}")
+        for name, kind, factor in described:
+            if kind not in ("REAL", "INTEGER", "TEXT"):
+                return f"column {name}: type {kind!r}"
+            if not isinstance(factor, int | float) or not (math.isfinite(factor)
+                                                           and factor > 0):
+                return f"column {name}: shown_factor {factor!r}, expected a number > 0"
+        study = self.meta("study")
+        rows = self.count()
+        if study is None:
+            return f"no study, but {rows} rows" if rows else ""
+        if not isinstance(study, dict) or self.meta("digest") != study_digest(study):
+            return "the study's definition does not match its digest"
+        from .definition import Study
+
+        try:
+            total = Study.from_definition(study).count()
+        except (GovoptError, KeyError, TypeError, ValueError, AttributeError):
+            return "the study's definition cannot be read"
+        if self.meta("total") != total or isinstance(self.meta("total"), bool):
+            return f"total {self.meta('total')!r}, but the study has {total} points"
+        inputs = self.names("input")
+        foreign = self.conn.execute(
+            "SELECT COUNT(*), MIN(point) FROM points WHERE point < 0 OR point >= ? "
+            "OR typeof(point) != 'integer' OR typeof(status) != 'text' OR status = '' "
+            + "".join(f" OR {_quoted(c)} IS NULL" for c in inputs), (total,)).fetchone()
+        if foreign[0]:
+            return (f"{foreign[0]} row{'s' if foreign[0] != 1 else ''} the study did not write, "
+                    f"the first point {foreign[1]} (expected a point number from 0 to "
+                    f"{total - 1}, a status and every input)")
+        return ""
+
+    def _columns_of(self, table: str) -> list[str]:
+        return [row[1] for row in self.conn.execute(f"PRAGMA table_info({_quoted(table)})")]
+
     # -- the study it holds --
 
     def study(self) -> dict:
@@ -398,6 +479,7 @@ class Store:
                 self._create()
                 self._names.clear()
             self.require_format()
+            self.validate()
             old = self.meta("digest")
             if old is not None and old != digest:
                 study = self.study()

@@ -110,6 +110,28 @@ def nominal(spec, tolerances) -> dict[str, tuple[float, str]]:
     return out
 
 
+def check_bands(spec, tolerances, toml) -> None:
+    """Refuse (one line naming the key) a band whose end the spec itself refuses: a part that
+    cannot be made (``±200 %`` of a weight or a wire's diameter reaches below zero), read by
+    the spec's parser at each end of the band (``toml(key, si)``: the value as the spec
+    writes it), so that no sample of the study is an impossible part."""
+    from ..errors import GovoptError
+    from ..spec import with_values
+
+    for t in tolerances:
+        si, unit = nominal(spec, [t])[t.key]
+        half = t.half_si(si, unit)
+        for end in (si - half, si + half):
+            try:
+                with_values(spec, {t.key: toml(t.key, end)})
+            except GovoptError as exc:
+                said = str(exc).removeprefix(f"{spec.path}: ").removeprefix(f"{t.key}: ")
+                band = f"±{t.half * 100:g}%" if t.relative else f"±{t.half:g} {t.unit}".strip()
+                raise StudyError(f"the band {band} reaches a value the spec refuses ({said}): "
+                                 "a part that cannot be made; give a narrower band",
+                                 where=f"tolerance {t.key}") from None
+
+
 def grade_tolerances(spec, grade: int) -> list[Tolerance]:
     """The tolerances of a governor made to EN 15800 quality grade ``grade``, as the tolerance
     model of a made governor states them (:mod:`govopt.analysis.tolerance`: the wire diameter

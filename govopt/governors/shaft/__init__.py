@@ -130,6 +130,9 @@ class ValveGear:
 class ShaftGovernor(Governor):
     """Shaft-governor linkage (Hamabe, Fig. 1) and its valve gear, SI."""
 
+    #: near its stop, arms near the axis or 90 deg, near isochronism (govopt bench)
+    bench_case: ClassVar[tuple] = ("hamabe-a", {}, "analysis.geometry", ("exact", "series"))
+
     type_name: ClassVar[str] = "shaft"
     title: ClassVar[str] = "Hamabe's shaft governor (Disturbing Actions of a Shaft Governor)"
     coordinate: ClassVar[str] = "angle"
