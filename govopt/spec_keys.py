@@ -246,7 +246,7 @@ def requirements_table(kind) -> Table:
             default=_REQ.min_range, nonnegative=True, high=1.0, high_inclusive=True,
             choices=("envelope",),
             range_text="[0, 1], or \"envelope\"",
-            default_text="0.75 where the band is the governor's range of speed and a spring "
+            default_text="0.5 where the band is the governor's range of speed and a spring "
                          "sets it (the textbook's and the traction governors with a spring); "
                          "else \"envelope\"",
             source="textbook Problems 2 (range of speed); traction article (hunting)"),

@@ -548,6 +548,15 @@ def _slide(M, z0, s, t_max, h):
                         break
                 if lo is None:
                     return 0.0, z0.copy()
+            # the stepped state E^k z0 and the exact expm(M t) z0 differ by rounding: where the
+            # exact velocity has not changed sign over (lo, t1) the stroke goes on (or, past
+            # zero already at lo, it ended there)
+            if s * v(lo) <= 0.0:
+                return lo, at(lo)
+            if s * v(t1) > 0.0:
+                started = True
+                t, z = t1, at(t1)
+                continue
             tr = brentq(v, lo, t1, xtol=_XTOL, rtol=_RTOL)
             return tr, at(tr)
         if started and s * (M[1] @ z) < 0.0 < s * (M[1] @ z1) \
