@@ -10,15 +10,18 @@ the same row. Studies (:mod:`govopt.study`) are tables of these rows.
 from __future__ import annotations
 
 import copy
-from typing import NamedTuple
+import sys
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
-import pandas as pd
 
 from .evaluator import DESIGN_FIELDS, core, dashpot_column, design_columns
 from .requirements import CheckTable
 from .result import Result
 from .spec import Design, Spec
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 #: designs evaluated at once (bounds the memory: ~ CHUNK x configurations x 30 arrays)
 CHUNK = 4096
@@ -130,6 +133,8 @@ def result_row(res: Result) -> dict:
     """One flat record of a result (SI): the design, the figures, every check's value, margin
     and verdict, the objective, status and message -- the row :func:`evaluate_many` gives for
     the same design, read from the same columns (:func:`columns` of the evaluator's record)."""
+    import pandas as pd  # imported where a frame is built
+
     row = {}
     for k, v in columns(res.spec, res.evaluation).items():
         x = v[0]
@@ -157,7 +162,8 @@ def design_arrays(spec: Spec, designs) -> dict[str, np.ndarray]:
     :class:`Design`."""
     if isinstance(designs, list | tuple) and designs and isinstance(designs[0], Design):
         return design_columns(designs)
-    if isinstance(designs, pd.DataFrame):
+    pandas = sys.modules.get("pandas")  # a frame is pandas', so pandas is loaded already
+    if pandas is not None and isinstance(designs, pandas.DataFrame):
         given = {c: designs[c].to_numpy(dtype=float) for c in designs.columns}
     else:
         given = {c: np.asarray(v, dtype=float) for c, v in dict(designs).items()}
@@ -182,6 +188,8 @@ def design_arrays(spec: Spec, designs) -> dict[str, np.ndarray]:
 
 def _check_columns(table: CheckTable) -> dict:
     """``value: ``, ``margin: `` and ``passed: `` columns (nullable booleans) of each check."""
+    import pandas as pd  # imported where a frame is built
+
     out = {}
     for name, c in table.columns().items():
         out[value_column(name)] = c.value
@@ -222,6 +230,7 @@ def evaluate_many(spec: Spec, designs, *, dynamics: bool = True, vibration: bool
     than its coil) is a row with ``status = "error"`` and evaluate's own message, never an
     exception.
     """
+
     return evaluate_rows(spec, designs, dynamics=dynamics, vibration=vibration,
                          classic=classic, chunk=chunk)[0]
 
@@ -229,6 +238,8 @@ def evaluate_many(spec: Spec, designs, *, dynamics: bool = True, vibration: bool
 def evaluate_rows(spec: Spec, designs, *, dynamics: bool = True, vibration: bool = True,
                   classic: bool = True, chunk: int = CHUNK) -> tuple[pd.DataFrame, dict]:
     """:func:`evaluate_many` and the SI unit of each of its checks (name -> unit)."""
+    import pandas as pd  # imported where a frame is built
+
     out, units = evaluate_columns(spec, designs, dynamics=dynamics, vibration=vibration,
                                   classic=classic, chunk=chunk)
     return pd.DataFrame(out), units
@@ -238,6 +249,8 @@ def evaluate_columns(spec: Spec, designs, *, dynamics: bool = True, vibration: b
                      classic: bool = True, chunk: int = CHUNK) -> tuple[dict, dict]:
     """:func:`evaluate_rows` as its columns (name -> numpy array, a nullable boolean array for
     a check's verdict), without the frame: what a study's rows are made of."""
+    import pandas as pd  # imported where a frame is built
+
     cols = design_arrays(spec, designs)
     n = len(cols["flying_mass"])
     parts, units = [], {}
@@ -256,6 +269,8 @@ def evaluate_columns(spec: Spec, designs, *, dynamics: bool = True, vibration: b
 
 def _joined(arrays: list):
     """One column of several chunks (a nullable boolean column stays one)."""
+    import pandas as pd  # imported where a frame is built
+
     if isinstance(arrays[0], pd.arrays.BooleanArray):
         return pd.arrays.BooleanArray(
             np.concatenate([a.to_numpy(dtype=bool, na_value=False) for a in arrays]),

@@ -202,10 +202,10 @@ def evaluated(spec, cols: dict, vibration: bool = True) -> Evaluated:
 
 def requirement_checks(frame) -> list[str]:
     """The checks of a bulk frame a made governor must meet (all but the search bounds')."""
+    if isinstance(frame, Evaluated):  # arrays: no pandas on the yield's path
+        return list(frame.names)
     from .bulk import check_names
 
-    if isinstance(frame, Evaluated):
-        return list(frame.names)
     return [c for c in check_names(frame.columns) if not any(b in c for b in BOUND_NAMES)]
 
 
@@ -214,10 +214,10 @@ def check_margins(frame) -> np.ndarray:
     row and where a check fails by its own verdict at a margin >= 0 (so a row holds exactly
     where every entry is >= :data:`govopt.requirements.PASS_TOL`), +inf where a check does not
     apply."""
-    from .bulk import margin_column, passed_column
-
     if isinstance(frame, Evaluated):
         return frame.margins
+    from .bulk import margin_column, passed_column
+
     names = requirement_checks(frame)
     out = np.empty((len(frame), len(names)))
     error = (frame["status"] == "error").to_numpy(dtype=bool)

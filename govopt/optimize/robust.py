@@ -183,9 +183,10 @@ def nut_settings(req: Requirements):
     return tm.fitter_settings(req.adjusting_nut, req.dashpot_valve, NUT_SETTINGS)
 
 
-def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
-    """Every corner of each candidate's box, each at every nut setting: the evaluated frame and
-    its candidate, corner and nut indices (flat arrays), and the corners' sign table."""
+def corners(spec: Spec, req: Requirements, cols: dict, box: Box, arrays: bool = False):
+    """Every corner of each candidate's box, each at every nut setting: the evaluated frame (or,
+    with ``arrays``, the :class:`govopt.made.Evaluated` arrays, no pandas) and its candidate,
+    corner and nut indices (flat arrays), and the corners' sign table."""
     names = box.active()
     dims = names + (["torque_slope"] if box.torque > 0 else [])
     signs = np.array(list(itertools.product((-1.0, 1.0), repeat=len(dims))),
@@ -200,7 +201,8 @@ def corners(spec: Spec, req: Requirements, cols: dict, box: Box):
     rows["free_half_length"] = rows["free_half_length"] + nut[k]
     rows["dashpot"] = rows["dashpot"] * valve[k]
     torque = signs[corner, -1] * box.torque if box.torque > 0 else np.zeros(cand.size)
-    frame = _evaluate(spec, req, rows, torque)
+    frame = (mk.evaluate_arrays(spec, rows, torque, _vibration(spec, req)) if arrays
+             else _evaluate(spec, req, rows, torque))
     return frame, cand, corner, k, signs, dims
 
 
@@ -497,7 +499,7 @@ def _yield_search(spec: Spec, req: Requirements, stats: dict, failing: dict):
 def _holds_at_corners(spec: Spec, req: Requirements, cols: dict, bx: Box) -> bool:
     """Whether one candidate holds every check at every corner of its box (at some setting of
     the fitter's)."""
-    frame, *_, signs, _ = corners(spec, req, cols, bx)
+    frame, *_, signs, _ = corners(spec, req, cols, bx, arrays=True)
     ok, _ = corner_verdict(frame, 1, len(signs), nut_settings(req)[0].size)
     return bool(ok[0])
 
