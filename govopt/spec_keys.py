@@ -232,12 +232,13 @@ def requirements_table(kind) -> Table:
     return Table("requirements", "what govopt design must achieve", (
         Key("objective", "choice", "what the design search minimises", default=_REQ.objective,
             choices=OBJECTIVES),
-        Key("k2_margin", "number", "Hamabe's band: k^2 within margin omega0^2 .. (1 - "
+        Key("k2_margin", "number", "the band on k^2: within margin omega0^2 .. (1 - "
                                    "margin) omega0^2 (stable, and clear of resonance with a "
                                    "forcing at the running speed's harmonics)",
             default=_REQ.k2_margin, nonnegative=True, high=0.5, source="Hamabe Part II",
-            default_text="0.05 where a forcing is modelled (the shaft governor's valve gear); "
-                         "else not applied: only k^2 > 0 (stable, the textbook's criterion)"),
+            default_text="0.05 where the type models a forcing at the running speed's "
+                         "harmonics; else not applied: only k^2 > 0 (stable, the textbook's "
+                         "criterion)"),
         Key("min_range", "number", "the least range of speed (from the sleeve's lowest to its "
                                    "highest position, at nominal, without friction) as a share "
                                    "of the band speed.outer - speed.inner: a narrower range is "

@@ -67,7 +67,9 @@ def unit_words() -> dict[str, list[str]]:
 
 
 @functools.cache
-def _words() -> dict[str, list[str]]:
+def saved_words() -> dict[str, list[str]]:
+    """The unit words of each dimension as saved in :data:`WORDS` (govopt/data/unit_words.json,
+    written by ``--words`` from :func:`unit_words`), read once."""
     return json.loads(WORDS.read_text(encoding="utf-8"))
 
 
@@ -77,10 +79,10 @@ def dimension_pattern(dimension: str) -> str | None:
     expression (a product, quotient, power or sum: the parser alone reads its dimension);
     only an expression where the dimension has no single unit word (an inertia, a damping).
     None for a dimension without units."""
-    if dimension not in _words():
+    if dimension not in saved_words():
         return None
     expression = r".*[*/^()+·²³].*|.*\s-\s.*|.*[A-DF-Za-df-z][0-9].*"
-    words = _words()[dimension]
+    words = saved_words()[dimension]
     if not words:
         return rf"^(?:{expression})$"
     alt = "|".join(re.escape(w) for w in sorted(words, key=len, reverse=True))
@@ -292,7 +294,7 @@ def schema() -> dict:
         "definitions": {d: {"description": f"a quantity of {d.replace('_', ' ')}: a number and "
                                            "its unit",
                             "type": "string", "pattern": dimension_pattern(d)}
-                        for d in _words() if dimension_pattern(d) is not None},
+                        for d in saved_words() if dimension_pattern(d) is not None},
     }
 
 

@@ -6,6 +6,7 @@ in test_excel.py."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import os
@@ -18,6 +19,7 @@ import pytest
 
 import govopt
 from govopt.jsonable import jsonable
+from govopt.made import with_yield
 from govopt.report import sections
 from govopt.report.text import check_name, format_result, format_summary
 from govopt.result import Check
@@ -80,7 +82,9 @@ def test_piped_report_is_plain_text(tmp_path, shaft):
     assert run.returncode == 1, run.stderr  # case a fails its irregularity: exit 1
     assert not ANSI.search(run.stdout)
     assert not re.search("[\u2500-\u257f]", run.stdout)  # ASCII rules, no box drawing
-    assert run.stdout.strip() == format_result(shaft, colour=False).strip()
+    # the CLI attaches the made governors' yield (the new default "made" verdict,
+    # govopt.made.with_yield), which govopt.evaluate leaves to the caller
+    assert run.stdout.strip() == format_result(with_yield(shaft), colour=False).strip()
     assert "Checks" in run.stdout.splitlines()
 
 
@@ -269,7 +273,12 @@ def test_json_writes_each_section_once(designed):
     assert lists == ["checks"] and "constraints" not in d
     o = d["optimisation"]  # the optimiser's record: the value and its unit, fields of their own
     assert o["objective"]["unit"] == "kg" and "value" not in o["objective"]
-    assert o["value"] >= o["bound"]
+    # The default verdict is now "made": the made (robust) search proves no continuous bound,
+    # and says so; the continuous bound is the nominal search's, checked on the nominal verdict.
+    assert o["bound"] is None and o["claim"].startswith("no certified bound")
+    spec = govopt.load_spec(SPECS / "hamabe-design.toml")
+    n = govopt.design(dataclasses.replace(spec, verdict="nominal")).to_dict()["optimisation"]
+    assert n["objective"]["unit"] == "kg" and n["value"] >= n["bound"]
 
 
 # ------------------------------------------------------------------------------------------

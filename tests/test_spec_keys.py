@@ -252,10 +252,10 @@ def test_the_unit_words_are_govopts():
     names its angle (rpm, not Hz), and the patterns take the bundled specs' units."""
     import re as regex
 
-    from govopt.spec_schema import _words, dimension_pattern
+    from govopt.spec_schema import dimension_pattern, saved_words
     from govopt.units import parse_quantity
 
-    words = _words()
+    words = saved_words()
     for dimension, listed in words.items():
         for word in listed:
             parse_quantity(f"1 {word}", dimension)

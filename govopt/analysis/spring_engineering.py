@@ -802,7 +802,9 @@ def geometry_table(spec, d, D, n, kappa, l0, F1, F2) -> list:
     A Hartnell governor's compression spring (the bundled ``hartnell-design`` spec, no wire
     grade) of 3 mm wire, D 40 mm, 8 active coils, closed ends (10 in all), free length 209.7 mm,
     working between 180.9 and 230.3 N at 1648 N/m.
-    The buckling row cites its clause (the spring buckles: 1.06 of the buckling deflection).
+    The buckling row cites its clause (the spring buckles: 1.06 of the buckling deflection);
+    it is the third row, after the force at solid (a geometry row since every material checks
+    it, graded or not) and the coil clash.
 
     >>> import tomllib
     >>> import govopt
@@ -816,7 +818,7 @@ def geometry_table(spec, d, D, n, kappa, l0, F1, F2) -> list:
     >>> sd = statics.spring_design(spec)
     >>> F1, F2 = static_range(spec, sd.kappa, sd.l0)
     >>> table = geometry_table(spec, sd.d, 2 * sd.r, sd.n, sd.kappa, sd.l0, F1, F2)
-    >>> row, value, limit, source = table[1]
+    >>> row, value, limit, source = table[2]
     >>> row.name, round(float(value), 2), source.split(":")[0]
     ('deflection / buckling deflection', 1.06, 'EN 13906-1, 9.14')
     """

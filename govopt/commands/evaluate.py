@@ -44,7 +44,7 @@ evaluate_app = typer.Typer(add_completion=False)
 design_app = typer.Typer(add_completion=False)
 
 
-Nominal = Annotated[bool, typer.Option(
+Nominal = Annotated[bool, flag(
     "--nominal", help="The nominal design's verdict alone: its checks, not the governors made "
     "to the tolerances and set by the fitter (as requirements.verdict = \"nominal\").")]
 

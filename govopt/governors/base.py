@@ -36,13 +36,16 @@ from __future__ import annotations
 
 from abc import ABC, abstractmethod
 from dataclasses import dataclass, field, fields, replace
-from typing import Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
 from ..keys import Key, Table
 from ..references import REFERENCES, cite, found_in
 from ..springs.kinds import KINDS, SpringKind
+
+if TYPE_CHECKING:
+    from .drawing import Drawing
 
 #: The SI units of the quantities measured at the coordinate ``x``, as JSON keys write them
 #: (govopt's rule: every key's unit in its name), by the coordinate's dimension: ``x`` itself
@@ -285,71 +288,6 @@ class Coordinate:
     value: Any
 
 
-@dataclass(frozen=True)
-class Part:
-    """One part of a governor's drawing in its own plane (SI, m): ``kind`` is ``"link"``
-    (a polyline of bars or arms), ``"mass"`` (a ball or pendulum: a circle of ``size`` radius
-    at the one point), ``"pivot"`` (a fulcrum or hinge: a point), ``"sleeve"`` (a closed
-    polyline), ``"spring"`` (a coil's zigzag polyline) or ``"frame"`` (the spindle, the shaft,
-    fixed collars and caps)."""
-
-    kind: str
-    points: tuple[tuple[float, float], ...]
-    size: float = 0.0
-
-
-@dataclass(frozen=True)
-class Drawing:
-    """A governor drawn to scale at one configuration: its parts in the plane the type states
-    (``plane``: the meridian plane of the spindle, ``r`` across and height up, or the shaft
-    governor's plane of rotation), with axis titles ``axes``."""
-
-    parts: tuple[Part, ...]
-    plane: str = "meridian plane: radius from the spindle's axis, height"
-    axes: tuple[str, str] = ("radius (mm)", "height (mm)")
-
-
-def zigzag(start, end, width: float, coils: float = 6.0) -> tuple[tuple[float, float], ...]:
-    """A spring drawn from ``start`` to ``end``: a zigzag of ``coils`` turns, ``width`` across
-    (its coil diameter), straight ends of a tenth of its length.
-
-    A drawing convention of govopt's (no source).
-
-    Parameters
-    ----------
-    start, end : tuple of float [m]
-        The spring's ends in the drawing's plane.
-    width : float [m]
-        Its coil diameter.
-    coils : float [-]
-        Turns drawn (two zigs each).
-
-    Returns
-    -------
-    tuple of (float, float) [m]
-        The polyline's points.
-
-    Examples
-    --------
-    Three turns: the two ends, two points where the straight ends meet the coil, six zigs:
-
-    >>> len(zigzag((0.0, 0.0), (0.0, 1.0), 0.1, coils=3))
-    10
-    """
-    p, q = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
-    axis = q - p
-    length = float(np.hypot(*axis))
-    if length == 0.0:
-        return (tuple(p), tuple(q))
-    across = np.array([-axis[1], axis[0]]) / length * 0.5 * width
-    n = max(1, int(round(2 * coils)))
-    points = [p, p + 0.1 * axis]
-    for k in range(n):
-        points.append(p + (0.1 + 0.8 * (k + 0.5) / n) * axis + (1 if k % 2 == 0 else -1) * across)
-    points += [p + 0.9 * axis, q]
-    return tuple((float(x), float(y)) for x, y in points)
-
-
 def solve_monotone(f, value: float, lo: float, hi: float, samples: int = 257) -> float:
     """The ``u`` in ``(lo, hi)`` where ``f(u) = value``: ``f`` sampled at ``samples`` points
     (its non-finite values skipped), the first sign change bracketed and closed by Brent's
@@ -397,63 +335,6 @@ def solve_monotone(f, value: float, lo: float, hi: float, samples: int = 257) ->
     i = int(cross[0])
     return float(brentq(lambda v: float(f(v)) - value, u[i], u[i + 1], xtol=1e-15 * max(
         abs(hi), abs(lo), 1e-300), rtol=4 * np.finfo(float).eps))
-
-
-def ball_radius(mass: float, density: float = 7850.0) -> float:
-    """The radius [m] of a steel ball of ``mass``: how the drawings show a flying mass,
-    ``r = (3 m / (4 pi rho))^(1/3)``.
-
-    A drawing convention of govopt's (the volume of a sphere; no source sizes the balls).
-
-    Parameters
-    ----------
-    mass : float [kg]
-        The flying mass (a negative one is drawn as a point).
-    density : float [kg/m^3]
-        The ball's density (steel, 7850).
-
-    Returns
-    -------
-    float [m]
-        The ball's radius.
-
-    Examples
-    --------
-    By hand: 4 kg of steel gives ``r^3 = 3 x 4 / (4 pi 7850) = 1.2165e-4`` m^3, r = 49.5 mm:
-
-    >>> round(ball_radius(4.0) * 1e3, 1)
-    49.5
-    """
-    return float((3.0 * max(mass, 0.0) / (4.0 * np.pi * density)) ** (1.0 / 3.0))
-
-
-def mirrored(parts) -> tuple[Part, ...]:
-    """``parts`` and their mirror images across the spindle's axis (``r -> -r``): the other
-    half of a governor drawn in its meridian plane (the frame is drawn once).
-
-    A drawing convention of govopt's (no source).
-
-    Parameters
-    ----------
-    parts : sequence of Part [m]
-        One half of the drawing, points in metres.
-
-    Returns
-    -------
-    tuple of Part [m]
-        The parts, then the mirror images of those that are not ``"frame"``.
-
-    Examples
-    --------
-    >>> half = (Part("mass", ((0.1, 0.2),), 0.02), Part("frame", ((0.0, 0.0), (0.0, 0.3))))
-    >>> [(p.kind, p.points) for p in mirrored(half)][2]
-    ('mass', ((-0.1, 0.2),))
-    """
-    out = list(parts)
-    for p in parts:
-        if p.kind != "frame":
-            out.append(Part(p.kind, tuple((-x, y) for x, y in p.points), p.size))
-    return tuple(out)
 
 
 @dataclass(frozen=True)
@@ -1098,7 +979,7 @@ class Governor(ABC):
     def drawing(self, x, sd) -> Drawing | None:
         """The governor drawn to scale at configuration ``x`` (SI) for the design ``sd`` (a
         :class:`govopt.analysis.statics.SpringDesign`: the flying masses drawn as steel balls
-        of their mass, :func:`ball_radius`; the coil spring at its mean diameter ``2 r``):
-        a :class:`Drawing` from the same geometry the type's statics use. Default: None (the
-        type draws nothing)."""
+        of their mass, :func:`~govopt.governors.drawing.ball_radius`; the coil spring at its
+        mean diameter ``2 r``): a :class:`~govopt.governors.drawing.Drawing` from the same
+        geometry the type's statics use. Default: None (the type draws nothing)."""
         return None

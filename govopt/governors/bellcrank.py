@@ -60,18 +60,8 @@ import numpy as np
 
 from ..keys import Key
 from ..units import G_STANDARD
-from .base import (
-    Coordinate,
-    Drawing,
-    Equation,
-    Governor,
-    Part,
-    Setting,
-    Terms,
-    ball_radius,
-    mirrored,
-    zigzag,
-)
+from .base import Coordinate, Equation, Governor, Setting, Terms
+from .drawing import Drawing, Part, ball_radius, mirrored, zigzag
 from .porter import RANGE
 
 OBLIQUITIES = ("exact", "small_angle")

@@ -48,19 +48,8 @@ import numpy as np
 
 from ..keys import Key
 from ..units import G_STANDARD
-from .base import (
-    Coordinate,
-    Drawing,
-    Equation,
-    Governor,
-    Part,
-    Setting,
-    Terms,
-    ball_radius,
-    mirrored,
-    solve_monotone,
-    zigzag,
-)
+from .base import Coordinate, Equation, Governor, Setting, Terms, solve_monotone
+from .drawing import Drawing, Part, ball_radius, mirrored, zigzag
 
 K_MODES = ("exact", "unity")
 SPRING_KINDS = ("tension", "compression")
@@ -303,6 +292,12 @@ class BallGovernor(Governor):
     friction_key: ClassVar[str] = "governor.sleeve_friction"
     range_keys: ClassVar[tuple[str, str] | None] = ("governor.radius_inner",
                                                     "governor.radius_outer")
+    #: each end of the range given once: by the ball's radius or by one other coordinate of
+    #: :data:`BY` (``radius_inner`` or ``angle_inner`` ...; a lift gives the outer end only)
+    key_alternatives: ClassVar[tuple] = tuple(
+        tuple((f"{name}_{end}",) for name in ("radius", *BY)
+              if not (name == "lift" and end == "inner"))
+        for end in ENDS[:2])
     coordinate_name: ClassVar[str] = "ball radius"
     travel: ClassVar[str] = "length"
     mass_key: ClassVar[str] = "ball"

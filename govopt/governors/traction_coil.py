@@ -36,17 +36,8 @@ from typing import ClassVar
 import numpy as np
 
 from ..keys import Key
-from .base import (
-    Adjustment,
-    Drawing,
-    Equation,
-    Governor,
-    Part,
-    Terms,
-    ball_radius,
-    mirrored,
-    zigzag,
-)
+from .base import Adjustment, Equation, Governor, Terms
+from .drawing import Drawing, Part, ball_radius, mirrored, zigzag
 
 #: what both traction governors read (:class:`FlyWeights`)
 N_WEIGHTS = Key("n_weights", "count", "the number of fly weights", source="article 003",

@@ -56,7 +56,8 @@ import numpy as np
 from ..keys import Key
 from ..springs import leaf
 from ..verdict import Check
-from .base import Drawing, Equation, Part, Setting, Terms, ball_radius, mirrored
+from .base import Equation, Setting, Terms
+from .drawing import Drawing, Part, ball_radius, mirrored
 from .traction_coil import HINGE_RADIUS, N_WEIGHTS, ROD_FRICTION, FlyWeights, centrifugal_force
 
 #: the ways a spec gives the range: chords ``l`` (the valve's positions), bows ``x`` (measured

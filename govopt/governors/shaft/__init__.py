@@ -29,7 +29,8 @@ from ...inputs import Analysis
 from ...keys import Key, Table
 from ...springs import helical as hx
 from ...units import G_STANDARD
-from ..base import Drawing, Equation, Governor, Part, Setting, Terms, ball_radius, zigzag
+from ..base import Equation, Governor, Setting, Terms
+from ..drawing import Drawing, Part, ball_radius, zigzag
 from . import linkage, valvegear
 
 ANGLE_RANGE = dict(low=0.0, high=np.pi, range_text="(0 deg, 180 deg)")
