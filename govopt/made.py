@@ -299,6 +299,20 @@ def sample_count(spec, req=None) -> int:
     return n if n >= MIN_SAMPLES else 0
 
 
+def _by_torque_level(spec, cols: dict, torque, vibration: bool):
+    """The rows of design columns ``cols`` grouped by their relative torque-slope change
+    ``torque`` (None: the spec's), the running work charged first: per level, the spec at that
+    slope, its rows' columns and their indices."""
+    n = len(cols["flying_mass"])
+    torque = np.zeros(n) if torque is None else np.asarray(torque, dtype=float)
+    limits.charge(n * row_seconds(spec, vibration), n)
+    for level in np.unique(torque):
+        sel = np.nonzero(torque == level)[0]
+        s = spec if level == 0 else replace(spec, engine=replace(
+            spec.engine, torque_slope=spec.engine.torque_slope * (1.0 + level)))
+        yield s, {k: np.asarray(v, dtype=float)[sel] for k, v in cols.items()}, sel
+
+
 def evaluate_at(spec, cols: dict, torque=None, vibration: bool = True):
     """The bulk frame of design columns ``cols``, each row at its relative torque-slope change
     ``torque`` (a few levels, one evaluation each; None: the spec's), rows in order; the running
@@ -307,16 +321,9 @@ def evaluate_at(spec, cols: dict, torque=None, vibration: bool = True):
 
     from .bulk import evaluate_many
 
-    n = len(cols["flying_mass"])
-    torque = np.zeros(n) if torque is None else np.asarray(torque, dtype=float)
-    limits.charge(n * row_seconds(spec, vibration), n)
     frames, index = [], []
-    for level in np.unique(torque):
-        sel = np.nonzero(torque == level)[0]
-        s = spec if level == 0 else replace(spec, engine=replace(
-            spec.engine, torque_slope=spec.engine.torque_slope * (1.0 + level)))
-        frames.append(evaluate_many(s, {k: v[sel] for k, v in cols.items()},
-                                    vibration=vibration, classic=False))
+    for s, part, sel in _by_torque_level(spec, cols, torque, vibration):
+        frames.append(evaluate_many(s, part, vibration=vibration, classic=False))
         index.append(sel)
     frame = pd.concat(frames, ignore_index=True)
     return frame.iloc[np.argsort(np.concatenate(index), kind="stable")].reset_index(drop=True)
@@ -325,19 +332,11 @@ def evaluate_at(spec, cols: dict, torque=None, vibration: bool = True):
 def evaluate_arrays(spec, cols: dict, torque=None, vibration: bool = True) -> Evaluated:
     """:func:`evaluate_at` as arrays (:class:`Evaluated`, no pandas frame): the rows in
     order, the running work charged first."""
-    n = len(cols["flying_mass"])
-    torque = np.zeros(n) if torque is None else np.asarray(torque, dtype=float)
-    limits.charge(n * row_seconds(spec, vibration), n)
     parts, index = [], []
-    for level in np.unique(torque):
-        sel = np.nonzero(torque == level)[0]
-        s = spec if level == 0 else replace(spec, engine=replace(
-            spec.engine, torque_slope=spec.engine.torque_slope * (1.0 + level)))
-        parts.append(evaluated(s, {k: np.asarray(v, dtype=float)[sel] for k, v in cols.items()},
-                               vibration))
+    for s, part, sel in _by_torque_level(spec, cols, torque, vibration):
+        parts.append(evaluated(s, part, vibration))
         index.append(sel)
-    out = Evaluated.concat(parts)
-    return out.take(np.argsort(np.concatenate(index), kind="stable"))
+    return Evaluated.concat(parts).take(np.argsort(np.concatenate(index), kind="stable"))
 
 
 # ---------------------------------------------------------------------------------------------
